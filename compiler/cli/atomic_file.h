@@ -1,0 +1,16 @@
+// Writing outputs so that a reader (or a killed matc) only ever sees the old or the new file.
+#pragma once
+
+#include <filesystem>
+#include <string_view>
+
+namespace matc::cli {
+
+enum class WriteOutcome { written, unchanged };
+
+// Leaves the file untouched when it already holds `bytes` (so build systems see no change);
+// otherwise writes a temporary file beside it and renames it into place.
+// Throws std::runtime_error with a readable reason on failure, leaving no temporary behind.
+WriteOutcome write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+
+}  // namespace matc::cli

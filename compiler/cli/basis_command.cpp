@@ -1,0 +1,62 @@
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include "atomic_file.h"
+#include "commands.h"
+#include "matc/basis/basis_fit.h"
+#include "matc/runtime/basis.h"
+
+namespace matc::cli {
+
+int run_basis(const BasisOptions& options) {
+  const runtime::BasisView basis = runtime::paper_basis();
+  if (!options.json) {
+    fmt::print("basis: paper (Belcour, Bati, Barla 2020), b_0 = 1 and b_1..b_3 tabulated\n");
+    fmt::print("samples: {} cosines mu_j = j / {}\n", basis.samples(), basis.samples() - 1);
+    fmt::print("probes: mu_1 = {:.4f} (theta {:.3f} rad), mu_2 = {:.4f} (theta {:.3f} rad)\n",
+               basis.probe_mu(0), std::acos(basis.probe_mu(0)), basis.probe_mu(1),
+               std::acos(basis.probe_mu(1)));
+    return kExitSuccess;
+  }
+  nlohmann::ordered_json out;
+  auto& mu = out["mu"] = nlohmann::ordered_json::array();
+  auto& b = out["b"] = nlohmann::ordered_json::array();
+  for (std::size_t i = 0; i < runtime::kBasisSize; ++i)
+    b.push_back(nlohmann::ordered_json::array());
+  for (std::size_t j = 0; j < basis.samples(); ++j) {
+    mu.push_back(basis.mu_at(j));
+    const auto values = basis.at_index(j);
+    for (std::size_t i = 0; i < runtime::kBasisSize; ++i)
+      b[i].push_back(values[i]);
+  }
+  out["probes"] = {basis.probe_mu(0), basis.probe_mu(1)};
+  fmt::print("{}\n", out.dump());
+  return kExitSuccess;
+}
+
+int run_basis_fit(const BasisFitOptions& options) {
+  const PaperBasisOptions fit_options;
+  const FittedBasis basis = fit_paper_basis(fit_options);
+  const std::string source = basis_table_source(basis, fit_options);
+  fmt::print(stderr, "matc: fitted basis: probes mu_1 = {:.4f}, mu_2 = {:.4f}\n",
+             basis.view().probe_mu(0), basis.view().probe_mu(1));
+  if (options.output.empty()) {
+    fmt::print("{}", source);
+    return kExitSuccess;
+  }
+  try {
+    const WriteOutcome outcome = write_file_atomically(options.output, source);
+    fmt::print(stderr, "matc: {} {}\n", outcome == WriteOutcome::written ? "wrote" : "unchanged",
+               options.output);
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "{}: error: {}\n", options.output, error.what());
+    return kExitInputError;
+  }
+  return kExitSuccess;
+}
+
+}  // namespace matc::cli

@@ -1,0 +1,38 @@
+// The matc sub-commands. Each returns the process exit code (see kExit* below).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace matc::cli {
+
+inline constexpr int kExitSuccess = 0;
+inline constexpr int kExitInputError = 1;  // a material or data file is invalid
+inline constexpr int kExitUsageError = 2;  // the command line is invalid
+inline constexpr int kExitInternalError = 3;
+
+struct CompileOptions {
+  std::vector<std::string> files;
+  std::string output_directory = "matc-out";
+  bool keep_going = false;
+  bool quiet = false;
+};
+int run_compile(const CompileOptions& options);
+
+struct EvalOptions {
+  std::string file;
+  std::vector<double> mu;
+};
+int run_eval(const EvalOptions& options);
+
+struct BasisOptions {
+  bool json = false;
+};
+int run_basis(const BasisOptions& options);
+
+struct BasisFitOptions {
+  std::string output;  // empty: standard output
+};
+int run_basis_fit(const BasisFitOptions& options);
+
+}  // namespace matc::cli

@@ -1,0 +1,50 @@
+// A validated material: what a material file says, with its spectral data loaded.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "matc/diagnostics.h"
+#include "matc/optics/spectrum.h"
+#include "matc/runtime/fresnel.h"
+
+namespace matc {
+
+using runtime::Rgb;
+
+// Gulbrandsen 2014 reflectivity r in [0, 1) and edge tint g in [0, 1] per channel.
+struct ArtisticInput {
+  Rgb reflectivity{};
+  Rgb edge_tint{};
+};
+
+// Complex index of refraction n + i k per channel.
+struct IorInput {
+  Rgb n{};
+  Rgb k{};
+};
+
+// Measured n(lambda), k(lambda): a shipped preset or a CSV file.
+struct SpectralInput {
+  std::string preset;         // preset symbol such as "Au"; empty when `file` is used
+  std::string file;           // the path as written in the material; empty when `preset` is used
+  std::string resolved_file;  // `file` resolved against the material's folder
+  Spectrum spectrum;
+};
+
+using MaterialModel = std::variant<ArtisticInput, IorInput, SpectralInput>;
+
+struct Material {
+  std::string name;  // validated identifier, see docs/material-format.md
+  MaterialModel model;
+  std::optional<double> roughness;  // perceptual; alpha = roughness^2
+  std::string source_path;          // the material file as named on the command line
+  SourceLocation name_location;     // where the name is written, for batch-level diagnostics
+};
+
+// "artistic", "ior" or "spectral": the key that selects the model in a material file.
+std::string_view model_key(const MaterialModel& model);
+
+}  // namespace matc

@@ -1,0 +1,26 @@
+// Spectral Fresnel to linear sRGB: F_c(mu) = sum_lambda w_c(lambda) F(mu; n(lambda), k(lambda)),
+// with w_c from the CIE 1931 2-degree observer under D65, converted by the IEC 61966-2-1
+// XYZ -> linear sRGB matrix and normalised so that a perfect mirror maps to (1, 1, 1).
+#pragma once
+
+#include <vector>
+
+#include "matc/optics/reflectance_curve.h"
+#include "matc/optics/spectrum.h"
+
+namespace matc {
+
+// The integration grid: the CIE tables' 1 nm samples.
+inline constexpr int kCieFirstNm = 360;
+inline constexpr int kCieLastNm = 830;
+
+class SpectralCurve final : public ReflectanceCurve {
+ public:
+  explicit SpectralCurve(const Spectrum& spectrum);
+  Rgb at(double mu) const override;
+
+ private:
+  std::vector<ComplexIor> ior_;  // the spectrum resampled on the integration grid
+};
+
+}  // namespace matc

@@ -1,0 +1,71 @@
+#include "matc/diagnostics.h"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+namespace matc {
+
+std::string_view severity_name(Severity severity) {
+  switch (severity) {
+    case Severity::error:
+      return "error";
+    case Severity::warning:
+      return "warning";
+    case Severity::note:
+      return "note";
+  }
+  return "error";
+}
+
+std::string format_diagnostic(const Diagnostic& diagnostic) {
+  std::string out = diagnostic.location.path;
+  if (diagnostic.location.line > 0) {
+    out += fmt::format(":{}:{}", diagnostic.location.line, diagnostic.location.column);
+  }
+  out += fmt::format(": {}: ", severity_name(diagnostic.severity));
+  if (!diagnostic.field.empty()) out += diagnostic.field + ": ";
+  out += diagnostic.message;
+  if (!diagnostic.allowed.empty()) out += "; " + diagnostic.allowed;
+  return out;
+}
+
+void Diagnostics::error(SourceLocation location, std::string field, std::string message,
+                        std::string allowed) {
+  add({Severity::error, std::move(location), std::move(field), std::move(message),
+       std::move(allowed)});
+}
+
+void Diagnostics::warning(SourceLocation location, std::string field, std::string message,
+                          std::string allowed) {
+  add({Severity::warning, std::move(location), std::move(field), std::move(message),
+       std::move(allowed)});
+}
+
+void Diagnostics::append(const Diagnostics& other) {
+  items_.insert(items_.end(), other.items_.begin(), other.items_.end());
+}
+
+bool Diagnostics::has_errors() const {
+  return error_count() > 0;
+}
+
+std::size_t Diagnostics::error_count() const {
+  return static_cast<std::size_t>(std::count_if(
+      items_.begin(), items_.end(), [](const auto& d) { return d.severity == Severity::error; }));
+}
+
+TextLocator::TextLocator(std::string path, std::string_view text) : path_(std::move(path)) {
+  line_starts_.push_back(0);
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\n') line_starts_.push_back(i + 1);
+  }
+}
+
+SourceLocation TextLocator::at(std::size_t offset) const {
+  const auto next_line = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
+  const auto line = static_cast<std::size_t>(next_line - line_starts_.begin());
+  return {path_, line, offset - line_starts_[line - 1] + 1};
+}
+
+}  // namespace matc

@@ -1,0 +1,66 @@
+#include "matc/fit/accuracy.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "matc/optics/fresnel.h"
+
+namespace matc {
+namespace {
+
+class ErrorAccumulator {
+ public:
+  void add(const Rgb& approximation, const Rgb& exact) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double error = std::abs(approximation[c] - exact[c]);
+      stats_.max_abs[c] = std::max(stats_.max_abs[c], error);
+      sum_squares_[c] += error * error;
+    }
+    ++count_;
+  }
+  ErrorStats finish() const {
+    ErrorStats result = stats_;
+    for (std::size_t c = 0; c < 3; ++c) {
+      result.rms[c] = std::sqrt(sum_squares_[c] / static_cast<double>(count_));
+    }
+    return result;
+  }
+
+ private:
+  ErrorStats stats_;
+  Rgb sum_squares_{};
+  std::size_t count_ = 0;
+};
+
+}  // namespace
+
+FitAccuracy measure_accuracy(const ReflectanceCurve& curve,
+                             const runtime::Coefficients& coefficients,
+                             const runtime::BasisView& basis, std::size_t samples) {
+  const Rgb f0 = curve.at(1.0);
+  const Rgb f82 = curve.at(kF82MuBar);
+  ErrorAccumulator ours;
+  ErrorAccumulator schlick;
+  ErrorAccumulator f82_tint;
+  for (std::size_t j = 0; j < samples; ++j) {
+    const double mu = static_cast<double>(j) / static_cast<double>(samples - 1);
+    const Rgb exact = curve.at(mu);
+    Rgb schlick_value{};
+    Rgb f82_value{};
+    for (std::size_t c = 0; c < 3; ++c) {
+      schlick_value[c] = fresnel_schlick(mu, f0[c]);
+      f82_value[c] = fresnel_f82_tint(mu, f0[c], f82[c]);
+    }
+    ours.add(runtime::evaluate_fresnel(coefficients, basis, mu), exact);
+    schlick.add(schlick_value, exact);
+    f82_tint.add(f82_value, exact);
+  }
+  FitAccuracy result;
+  result.samples = samples;
+  result.decomposition = ours.finish();
+  result.schlick = schlick.finish();
+  result.f82_tint = f82_tint.finish();
+  return result;
+}
+
+}  // namespace matc

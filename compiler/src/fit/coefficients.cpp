@@ -1,0 +1,32 @@
+#include "matc/fit/coefficients.h"
+
+#include <stdexcept>
+
+namespace matc {
+
+runtime::Coefficients solve_coefficients(const ReflectanceCurve& curve,
+                                         const runtime::BasisView& basis) {
+  const Rgb f0 = curve.at(1.0);
+  const auto probe1 = basis.at_index(basis.probe_indices[0]);
+  const auto probe2 = basis.at_index(basis.probe_indices[1]);
+  const Rgb f_probe1 = curve.at(basis.probe_mu(0));
+  const Rgb f_probe2 = curve.at(basis.probe_mu(1));
+
+  // [b2(p1) b3(p1); b2(p2) b3(p2)] [c2 c3]^T = residual at the probes (Cramer's rule).
+  const double determinant = probe1[2] * probe2[3] - probe1[3] * probe2[2];
+  if (determinant == 0.0) throw std::logic_error("basis probes do not separate b_2 and b_3");
+
+  runtime::Coefficients coefficients{};
+  for (std::size_t c = 0; c < 3; ++c) {
+    const double c0 = f0[c];
+    const double c1 = 1.0 - c0;
+    const double y1 = f_probe1[c] - c0 - c1 * probe1[1];
+    const double y2 = f_probe2[c] - c0 - c1 * probe2[1];
+    const double c2 = (y1 * probe2[3] - probe1[3] * y2) / determinant;
+    const double c3 = (probe1[2] * y2 - y1 * probe2[2]) / determinant;
+    coefficients[c] = {c0, c1, c2, c3};
+  }
+  return coefficients;
+}
+
+}  // namespace matc

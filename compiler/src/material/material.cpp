@@ -1,0 +1,14 @@
+#include "matc/material/material.h"
+
+namespace matc {
+
+std::string_view model_key(const MaterialModel& model) {
+  struct Visitor {
+    std::string_view operator()(const ArtisticInput&) const { return "artistic"; }
+    std::string_view operator()(const IorInput&) const { return "ior"; }
+    std::string_view operator()(const SpectralInput&) const { return "spectral"; }
+  };
+  return std::visit(Visitor{}, model);
+}
+
+}  // namespace matc

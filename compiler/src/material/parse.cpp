@@ -1,0 +1,447 @@
+#include "matc/material/parse.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <tuple>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "matc/material/located_json.h"
+#include "matc/optics/presets.h"
+#include "suggestion.h"
+
+namespace matc {
+namespace {
+
+using nlohmann::json;
+
+constexpr std::array<std::string_view, 3> kModelKeys = {"artistic", "ior", "spectral"};
+constexpr std::array<std::string_view, 7> kTopLevelFields = {
+    "$schema", "name", "description", "artistic", "ior", "spectral", "roughness"};
+constexpr std::array<std::string_view, 2> kArtisticFields = {"reflectivity", "edge_tint"};
+constexpr std::array<std::string_view, 2> kIorFields = {"n", "k"};
+constexpr std::array<std::string_view, 2> kSpectralFields = {"preset", "file"};
+constexpr std::string_view kNameRule =
+    "a name matching [A-Za-z][A-Za-z0-9_]*, at most 64 characters, without '__'";
+
+// A closed or half-open interval with the wording used in diagnostics.
+struct Range {
+  double min;
+  double max;
+  bool max_inclusive = true;
+
+  bool contains(double value) const {
+    return value >= min && (max_inclusive ? value <= max : value < max);
+  }
+  std::string describe() const {
+    return fmt::format("[{}, {}{}", min, max, max_inclusive ? "]" : ")");
+  }
+};
+
+constexpr Range kReflectivityRange{0.0, 1.0, false};
+constexpr Range kUnitRange{0.0, 1.0};
+constexpr Range kIorRange{0.0, kMaxIorComponent};
+
+std::string describe_type(const json& value) {
+  switch (value.type()) {
+    case json::value_t::null:
+      return "null";
+    case json::value_t::boolean:
+      return "a boolean";
+    case json::value_t::string:
+      return "a string";
+    case json::value_t::array:
+      return "an array";
+    case json::value_t::object:
+      return "an object";
+    default:
+      return "a number";
+  }
+}
+
+std::string child(const std::string& pointer, std::string_view key) {
+  return pointer + "/" + std::string(key);
+}
+
+class MaterialReader {
+ public:
+  MaterialReader(const LocatedJson& document, const TextLocator& locator, Diagnostics& diagnostics,
+                 const FileLoader& loader, std::filesystem::path base_directory)
+      : document_(document),
+        locator_(locator),
+        diagnostics_(diagnostics),
+        loader_(loader),
+        base_directory_(std::move(base_directory)) {}
+
+  std::optional<Material> read() {
+    report_duplicate_keys();
+    const json& root = document_.value;
+    if (!root.is_object()) {
+      error("", fmt::format("the file holds {}", describe_type(root)),
+            "a JSON object with the fields name and one of artistic, ior, spectral");
+      return std::nullopt;
+    }
+    warn_unknown_fields(root, "", kTopLevelFields);
+
+    Material material;
+    material.source_path = locator_.path();
+    if (auto name = read_name(root)) {
+      material.name = std::move(*name);
+      material.name_location = at_value("/name");
+    }
+    if (root.contains("roughness")) {
+      material.roughness = read_number(root["roughness"], "/roughness", kUnitRange);
+    }
+    if (root.contains("description") && !root["description"].is_string()) {
+      error("/description", fmt::format("is {}", describe_type(root["description"])), "a string");
+    }
+    if (root.contains("$schema") && !root["$schema"].is_string()) {
+      error("/$schema", fmt::format("is {}", describe_type(root["$schema"])), "a string");
+    }
+    if (auto model = read_model(root)) material.model = std::move(*model);
+
+    if (diagnostics_.has_errors()) return std::nullopt;
+    return material;
+  }
+
+ private:
+  SourceLocation at_value(const std::string& pointer) const {
+    return locator_.at(document_.value_offset(pointer));
+  }
+  SourceLocation at_key(const std::string& pointer) const {
+    return locator_.at(document_.key_or_value_offset(pointer));
+  }
+  void error(const std::string& pointer, std::string message, std::string allowed) {
+    diagnostics_.error(at_value(pointer), field_path(pointer), std::move(message),
+                       std::move(allowed));
+  }
+  void missing(const std::string& parent, std::string_view key, std::string allowed) {
+    diagnostics_.error(at_value(parent), field_path(child(parent, key)), "is missing",
+                       std::move(allowed));
+  }
+  std::string where(std::size_t offset) const {
+    const SourceLocation location = locator_.at(offset);
+    return fmt::format("{}:{}", location.line, location.column);
+  }
+
+  void report_duplicate_keys() {
+    for (const DuplicateKey& duplicate : document_.duplicates) {
+      diagnostics_.error(locator_.at(duplicate.offset), field_path(duplicate.pointer),
+                         fmt::format("is given twice (first at {})", where(duplicate.first_offset)),
+                         "each field at most once");
+    }
+  }
+
+  void warn_unknown_fields(const json& object, const std::string& pointer,
+                           std::span<const std::string_view> known) {
+    for (const auto& [key, value] : object.items()) {
+      if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+      const auto suggestion = closest_match(key, known);
+      diagnostics_.warning(
+          at_key(child(pointer, key)), field_path(child(pointer, key)),
+          suggestion ? fmt::format("unknown field, ignored (did you mean '{}'?)", *suggestion)
+                     : "unknown field, ignored",
+          fmt::format("known fields here: {}", join(known)));
+    }
+  }
+
+  std::optional<std::string> read_name(const json& root) {
+    if (!root.contains("name")) {
+      missing("", "name", std::string(kNameRule));
+      return std::nullopt;
+    }
+    const json& name = root["name"];
+    if (!name.is_string()) {
+      error("/name", fmt::format("is {}", describe_type(name)), std::string(kNameRule));
+      return std::nullopt;
+    }
+    if (auto problem = material_name_problem(name.get<std::string>())) {
+      error("/name", *problem, std::string(kNameRule));
+      return std::nullopt;
+    }
+    return name.get<std::string>();
+  }
+
+  std::optional<double> read_number(const json& value, const std::string& pointer,
+                                    const Range& range) {
+    const std::string allowed = fmt::format("a number in {}", range.describe());
+    if (!value.is_number()) {
+      error(pointer, fmt::format("is {}", describe_type(value)), allowed);
+      return std::nullopt;
+    }
+    const double number = value.get<double>();
+    if (!std::isfinite(number)) {
+      error(pointer, "is too large to be represented", allowed);
+      return std::nullopt;
+    }
+    if (!range.contains(number)) {
+      error(pointer, fmt::format("{} is out of range", number), allowed);
+      return std::nullopt;
+    }
+    return number;
+  }
+
+  // A number (grey) or an array of three (R, G, B).
+  std::optional<Rgb> read_rgb(const json& value, const std::string& pointer, const Range& range) {
+    if (value.is_number()) {
+      const auto grey = read_number(value, pointer, range);
+      if (!grey) return std::nullopt;
+      return Rgb{*grey, *grey, *grey};
+    }
+    const std::string allowed = fmt::format(
+        "a number in {} (grey) or an array of 3 such numbers (R, G, B)", range.describe());
+    if (!value.is_array()) {
+      error(pointer, fmt::format("is {}", describe_type(value)), allowed);
+      return std::nullopt;
+    }
+    if (value.size() != 3) {
+      error(pointer, fmt::format("has {} elements", value.size()), allowed);
+      return std::nullopt;
+    }
+    Rgb rgb{};
+    bool ok = true;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const auto component = read_number(value[c], pointer + "/" + std::to_string(c), range);
+      ok = ok && component.has_value();
+      if (component) rgb[c] = *component;
+    }
+    if (!ok) return std::nullopt;
+    return rgb;
+  }
+
+  // Reads `key` of `object` at `pointer`; reports it missing if absent.
+  std::optional<Rgb> read_rgb_field(const json& object, const std::string& pointer,
+                                    std::string_view key, const Range& range) {
+    if (!object.contains(key)) {
+      missing(pointer, key,
+              fmt::format("a number in {} or an array of 3 such numbers", range.describe()));
+      return std::nullopt;
+    }
+    return read_rgb(object[std::string(key)], child(pointer, key), range);
+  }
+
+  // Returns the object at `key`, or reports that it is not one.
+  const json* object_field(const json& root, std::string_view key,
+                           std::span<const std::string_view> fields) {
+    const json& value = root[std::string(key)];
+    const std::string pointer = child("", key);
+    if (!value.is_object()) {
+      error(pointer, fmt::format("is {}", describe_type(value)),
+            fmt::format("an object with the fields {}", join(fields)));
+      return nullptr;
+    }
+    warn_unknown_fields(value, pointer, fields);
+    return &value;
+  }
+
+  std::optional<MaterialModel> read_model(const json& root) {
+    std::vector<std::string_view> given;
+    for (const std::string_view key : kModelKeys) {
+      if (root.contains(key)) given.push_back(key);
+    }
+    if (given.empty()) {
+      diagnostics_.error(at_value(""), "", "no material model is given",
+                         "exactly one of artistic, ior, spectral");
+      return std::nullopt;
+    }
+    if (given.size() > 1) {
+      std::sort(given.begin(), given.end(), [&](std::string_view a, std::string_view b) {
+        return document_.key_or_value_offset(child("", a)) <
+               document_.key_or_value_offset(child("", b));
+      });
+      for (std::size_t i = 1; i < given.size(); ++i) {
+        diagnostics_.error(at_key(child("", given[i])), std::string(given[i]),
+                           fmt::format("a second material model ('{}' is given at {})", given[0],
+                                       where(document_.key_or_value_offset(child("", given[0])))),
+                           "exactly one of artistic, ior, spectral");
+      }
+    }
+    // Each model given is still checked, so that one run reports every problem in the file.
+    std::optional<MaterialModel> model;
+    for (const std::string_view key : given)
+      model = read_model(root, key);
+    if (given.size() > 1) return std::nullopt;
+    return model;
+  }
+
+  std::optional<MaterialModel> read_model(const json& root, std::string_view key) {
+    if (key == "artistic") return read_artistic(root);
+    if (key == "ior") return read_ior(root);
+    return read_spectral(root);
+  }
+
+  std::optional<MaterialModel> read_artistic(const json& root) {
+    const json* object = object_field(root, "artistic", kArtisticFields);
+    if (!object) return std::nullopt;
+    const auto r = read_rgb_field(*object, "/artistic", "reflectivity", kReflectivityRange);
+    const auto g = read_rgb_field(*object, "/artistic", "edge_tint", kUnitRange);
+    if (!r || !g) return std::nullopt;
+    return ArtisticInput{*r, *g};
+  }
+
+  std::optional<MaterialModel> read_ior(const json& root) {
+    const json* object = object_field(root, "ior", kIorFields);
+    if (!object) return std::nullopt;
+    const auto n = read_rgb_field(*object, "/ior", "n", kIorRange);
+    const auto k = read_rgb_field(*object, "/ior", "k", kIorRange);
+    if (!n || !k) return std::nullopt;
+    bool ok = true;
+    for (std::size_t c = 0; c < 3; ++c) {
+      if ((*n)[c] == 0.0 && (*k)[c] == 0.0) {
+        const json& n_value = (*object)["n"];
+        error(n_value.is_array() ? "/ior/n/" + std::to_string(c) : "/ior/n",
+              fmt::format("n = k = 0 in the {} channel is not a material", "RGB"[c]),
+              "n > 0 or k > 0 in every channel");
+        ok = false;
+      }
+    }
+    if (!ok) return std::nullopt;
+    return IorInput{*n, *k};
+  }
+
+  std::optional<MaterialModel> read_spectral(const json& root) {
+    const json* object = object_field(root, "spectral", kSpectralFields);
+    if (!object) return std::nullopt;
+    const bool has_preset = object->contains("preset");
+    const bool has_file = object->contains("file");
+    if (has_preset == has_file) {
+      error("/spectral",
+            has_preset ? "gives both preset and file" : "gives neither preset nor file",
+            "exactly one of preset (a metal symbol such as \"Au\") or file (a CSV path)");
+      return std::nullopt;
+    }
+    return has_preset ? read_spectral_preset((*object)["preset"])
+                      : read_spectral_file((*object)["file"]);
+  }
+
+  std::optional<MaterialModel> read_spectral_preset(const json& value) {
+    const std::string pointer = "/spectral/preset";
+    std::vector<std::string_view> symbols;
+    for (const MetalPreset& preset : metal_presets())
+      symbols.push_back(preset.symbol);
+    const std::string allowed = fmt::format("one of {}", join(symbols));
+    if (!value.is_string()) {
+      error(pointer, fmt::format("is {}", describe_type(value)), allowed);
+      return std::nullopt;
+    }
+    const std::string symbol = value.get<std::string>();
+    const MetalPreset* preset = find_metal_preset(symbol);
+    if (!preset) {
+      const auto suggestion = closest_match(symbol, symbols);
+      error(pointer,
+            suggestion
+                ? fmt::format("unknown preset '{}' (did you mean '{}'?)", symbol, *suggestion)
+                : fmt::format("unknown preset '{}'", symbol),
+            allowed);
+      return std::nullopt;
+    }
+    if (!preset->caveat.empty()) {
+      diagnostics_.warning(at_value(pointer), field_path(pointer),
+                           fmt::format("preset '{}' is unreliable: {}", symbol, preset->caveat),
+                           "prefer an ior or artistic material for this metal");
+    }
+    SpectralInput input;
+    input.preset = symbol;
+    input.spectrum = preset_spectrum(*preset);
+    return input;
+  }
+
+  std::optional<MaterialModel> read_spectral_file(const json& value) {
+    const std::string pointer = "/spectral/file";
+    const std::string allowed = "a path to a CSV of wavelength_nm,n,k, relative to this file";
+    if (!value.is_string() || value.get<std::string>().empty()) {
+      error(pointer, value.is_string() ? "is empty" : fmt::format("is {}", describe_type(value)),
+            allowed);
+      return std::nullopt;
+    }
+    SpectralInput input;
+    input.file = value.get<std::string>();
+    const std::filesystem::path resolved = base_directory_ / input.file;
+    input.resolved_file = resolved.lexically_normal().generic_string();
+    const LoadedFile loaded = loader_(resolved, kMaxSpectrumFileBytes);
+    if (!loaded.bytes) {
+      error(pointer, fmt::format("cannot read '{}': {}", input.resolved_file, loaded.error),
+            allowed);
+      return std::nullopt;
+    }
+    const TextLocator csv_locator(input.resolved_file, *loaded.bytes);
+    auto spectrum = parse_nk_csv(*loaded.bytes, csv_locator, diagnostics_);
+    if (!spectrum) return std::nullopt;
+    input.spectrum = std::move(*spectrum);
+    return input;
+  }
+
+  const LocatedJson& document_;
+  const TextLocator& locator_;
+  Diagnostics& diagnostics_;
+  const FileLoader& loader_;
+  std::filesystem::path base_directory_;
+};
+
+}  // namespace
+
+std::optional<std::string> material_name_problem(std::string_view name) {
+  if (name.empty()) return "is empty";
+  if (name.size() > kMaxMaterialNameLength) {
+    return fmt::format("is {} characters long", name.size());
+  }
+  const auto is_letter = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); };
+  const auto is_digit = [](char c) { return c >= '0' && c <= '9'; };
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    const char c = name[i];
+    if (is_letter(c) || c == '_' || (i > 0 && is_digit(c))) continue;
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) {
+      return fmt::format("contains a non-ASCII or control byte at position {}", i + 1);
+    }
+    return fmt::format("'{}' is not an identifier ('{}' at position {})", name, c, i + 1);
+  }
+  // Generated identifiers are "matc_<kind>_<name>"; GLSL reserves every name containing "__".
+  if (name.front() == '_' || name.find("__") != std::string_view::npos) {
+    return fmt::format(
+        "'{}' would make generated names such as matc_fresnel_{} contain '__', "
+        "which GLSL reserves",
+        name, name);
+  }
+  return std::nullopt;
+}
+
+ParseResult parse_material(std::string_view text, const std::string& path,
+                           const FileLoader& loader) {
+  ParseResult result;
+  const TextLocator locator(path, text);
+  auto parsed = parse_located_json(text);
+  if (const auto* syntax = std::get_if<JsonSyntaxError>(&parsed)) {
+    result.diagnostics.error(locator.at(syntax->offset), "", syntax->message,
+                             "a JSON object (RFC 8259, UTF-8, no comments)");
+    return result;
+  }
+  const std::filesystem::path base_directory = std::filesystem::path(path).parent_path();
+  MaterialReader reader(std::get<LocatedJson>(parsed), locator, result.diagnostics, loader,
+                        base_directory);
+  result.material = reader.read();
+  // Report in reading order: the material file's problems by position, then its data files'.
+  std::stable_sort(result.diagnostics.items().begin(), result.diagnostics.items().end(),
+                   [&](const Diagnostic& a, const Diagnostic& b) {
+                     const auto key = [&](const Diagnostic& d) {
+                       return std::tuple(d.location.path != path, d.location.line,
+                                         d.location.column);
+                     };
+                     return key(a) < key(b);
+                   });
+  return result;
+}
+
+ParseResult read_material_file(const std::string& path, const FileLoader& loader) {
+  const LoadedFile loaded = loader(path, kMaxMaterialFileBytes);
+  if (!loaded.bytes) {
+    ParseResult result;
+    result.diagnostics.error({path, 0, 0}, "", fmt::format("cannot read: {}", loaded.error),
+                             "a material JSON file of at most 1 MiB");
+    return result;
+  }
+  return parse_material(*loaded.bytes, path, loader);
+}
+
+}  // namespace matc

@@ -1,0 +1,40 @@
+#include "matc/optics/fresnel.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace matc {
+
+double fresnel_exact(double mu, ComplexIor ior) {
+  const double cos_i = std::clamp(mu, 0.0, 1.0);
+  // At grazing incidence both amplitudes tend to magnitude 1 for any eta != 1; the formula below
+  // would divide 0 by 0 when cos_t also vanishes (n < 1, k = 0), so return the limit directly.
+  if (cos_i == 0.0) return 1.0;
+  const std::complex<double> eta = ior.eta();
+  const double sin2_i = 1.0 - cos_i * cos_i;
+  // Snell's law with a complex index; the principal square root keeps |r| <= 1 and is continuous
+  // as k -> 0+, including beyond the critical angle when n < 1.
+  const std::complex<double> cos_t = std::sqrt(1.0 - sin2_i / (eta * eta));
+  const std::complex<double> r_parallel = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+  const std::complex<double> r_perpendicular = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+  return 0.5 * (std::norm(r_parallel) + std::norm(r_perpendicular));
+}
+
+double fresnel_normal_incidence(ComplexIor ior) {
+  const double k2 = ior.k * ior.k;
+  return ((ior.n - 1.0) * (ior.n - 1.0) + k2) / ((ior.n + 1.0) * (ior.n + 1.0) + k2);
+}
+
+double fresnel_schlick(double mu, double f0) {
+  const double m = 1.0 - std::clamp(mu, 0.0, 1.0);
+  const double m2 = m * m;
+  return f0 + (1.0 - f0) * m2 * m2 * m;
+}
+
+double fresnel_f82_tint(double mu, double f0, double f_at_mu_bar) {
+  const auto lobe = [](double x) { return x * std::pow(1.0 - x, 6.0); };
+  const double a = (fresnel_schlick(kF82MuBar, f0) - f_at_mu_bar) / lobe(kF82MuBar);
+  return fresnel_schlick(mu, f0) - a * lobe(std::clamp(mu, 0.0, 1.0));
+}
+
+}  // namespace matc

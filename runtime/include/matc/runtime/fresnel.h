@@ -1,0 +1,19 @@
+// Evaluating the decomposed Fresnel reflectance from compiled coefficients.
+#pragma once
+
+#include <array>
+
+#include "matc/runtime/basis.h"
+
+namespace matc::runtime {
+
+using Rgb = std::array<double, 3>;
+// c_0..c_3 of one colour channel.
+using ChannelCoefficients = std::array<double, kBasisSize>;
+// One row of coefficients per channel: R, G, B.
+using Coefficients = std::array<ChannelCoefficients, 3>;
+
+// F(mu) = max(0, sum_i c_i b_i(mu)) per channel, as the generated shaders compute it.
+Rgb evaluate_fresnel(const Coefficients& coefficients, const BasisView& basis, double mu);
+
+}  // namespace matc::runtime

@@ -1,0 +1,25 @@
+#include "matc/runtime/basis.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace matc::runtime {
+
+std::array<double, kBasisSize> BasisView::at_index(std::size_t index) const {
+  return {1.0, tables[0][index], tables[1][index], tables[2][index]};
+}
+
+std::array<double, kBasisSize> BasisView::evaluate(double mu) const {
+  const double last = static_cast<double>(samples() - 1);
+  const double position = std::clamp(mu, 0.0, 1.0) * last;
+  // Clamp the left index so that mu = 1 interpolates inside the last interval.
+  const std::size_t left = std::min(static_cast<std::size_t>(std::floor(position)), samples() - 2);
+  const double t = position - static_cast<double>(left);
+  std::array<double, kBasisSize> values{1.0, 0.0, 0.0, 0.0};
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    values[i + 1] = tables[i][left] + t * (tables[i][left + 1] - tables[i][left]);
+  }
+  return values;
+}
+
+}  // namespace matc::runtime

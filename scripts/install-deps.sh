@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package matc needs to build, test and benchmark.
+# Idempotent; safe to run as root on a fresh machine. Waits for the dpkg lock
+# instead of failing when another apt process is running.
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++ pkg-config clang-format
+  glslang-dev glslang-tools spirv-tools spirv-headers spirv-cross libspirv-cross-c-shared-dev
+  nlohmann-json3-dev libeigen3-dev libcli11-dev libfmt-dev
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
+  googletest libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "install-deps.sh: must run as root (apt-get install)" >&2
+  exit 1
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps.sh: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+
+echo "install-deps.sh: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get -o DPkg::Lock::Timeout=600 update -qq
+apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends "${missing[@]}"
