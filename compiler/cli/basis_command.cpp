@@ -1,6 +1,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <vector>
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
@@ -22,17 +23,19 @@ int run_basis(const BasisOptions& options) {
                std::acos(basis.probe_mu(1)));
     return kExitSuccess;
   }
-  nlohmann::ordered_json out;
-  auto& mu = out["mu"] = nlohmann::ordered_json::array();
-  auto& b = out["b"] = nlohmann::ordered_json::array();
-  for (std::size_t i = 0; i < runtime::kBasisSize; ++i)
-    b.push_back(nlohmann::ordered_json::array());
+  // Built apart and moved in: ordered_json keeps members in a vector, so references into `out`
+  // would dangle as members are added.
+  nlohmann::ordered_json mu = nlohmann::ordered_json::array();
+  std::vector<nlohmann::ordered_json> b(runtime::kBasisSize, nlohmann::ordered_json::array());
   for (std::size_t j = 0; j < basis.samples(); ++j) {
     mu.push_back(basis.mu_at(j));
     const auto values = basis.at_index(j);
     for (std::size_t i = 0; i < runtime::kBasisSize; ++i)
       b[i].push_back(values[i]);
   }
+  nlohmann::ordered_json out;
+  out["mu"] = std::move(mu);
+  out["b"] = std::move(b);
   out["probes"] = {basis.probe_mu(0), basis.probe_mu(1)};
   fmt::print("{}\n", out.dump());
   return kExitSuccess;

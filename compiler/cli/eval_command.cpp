@@ -19,15 +19,17 @@ int run_eval(const EvalOptions& options) {
   const auto curve = make_reflectance_curve(*parsed.material);
   const runtime::Coefficients coefficients = solve_coefficients(*curve, basis);
 
-  nlohmann::ordered_json out;
-  out["name"] = parsed.material->name;
-  out["mu"] = options.mu;
-  auto& decomposed = out["F"] = nlohmann::ordered_json::array();
-  auto& exact = out["F_exact"] = nlohmann::ordered_json::array();
+  nlohmann::ordered_json decomposed = nlohmann::ordered_json::array();
+  nlohmann::ordered_json exact = nlohmann::ordered_json::array();
   for (const double mu : options.mu) {
     decomposed.push_back(runtime::evaluate_fresnel(coefficients, basis, mu));
     exact.push_back(curve->at(mu));
   }
+  nlohmann::ordered_json out;
+  out["name"] = parsed.material->name;
+  out["mu"] = options.mu;
+  out["F"] = std::move(decomposed);
+  out["F_exact"] = std::move(exact);
   fmt::print("{}", format_json(out));
   return kExitSuccess;
 }

@@ -1,0 +1,245 @@
+// End-to-end tests of the matc binary: outputs, exit codes, determinism, and safety.
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void write_file(const fs::path& path, const std::string& text) {
+  fs::create_directories(path.parent_path());
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+// Single-quotes a word for the shell. Built with append(): GCC 12 warns falsely (-Wrestrict,
+// PR 105329) on chains of std::string operator+.
+std::string quote(const std::string& word) {
+  std::string out = "'";
+  for (const char c : word) {
+    if (c == '\'') {
+      out.append("'\\''");
+    } else {
+      out.push_back(c);
+    }
+  }
+  out.push_back('\'');
+  return out;
+}
+
+std::vector<std::string> example_materials() {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(MATC_EXAMPLES_DIR)) {
+    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+class MatcCli : public testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / (std::string("matc_cli_") + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  CommandResult run(const std::vector<std::string>& args) const {
+    std::string command = "cd ";
+    command.append(quote(dir_.string())).append(" && ").append(quote(MATC_BINARY));
+    for (const auto& arg : args)
+      command.append(" ").append(quote(arg));
+    command.append(" >").append(quote((dir_ / ".stdout").string()));
+    command.append(" 2>").append(quote((dir_ / ".stderr").string()));
+    const int status = std::system(command.c_str());
+    CommandResult result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = read_file(dir_ / ".stdout");
+    result.err = read_file(dir_ / ".stderr");
+    return result;
+  }
+
+  fs::path dir_;
+};
+
+constexpr const char* kGood = R"({"name": "good", "ior": {"n": 1.5, "k": 0}})";
+constexpr const char* kBad = "{\n  \"name\": \"bad\",\n  \"ior\": {\"n\": -1, \"k\": 0}\n}\n";
+
+TEST_F(MatcCli, CompilesEveryExample) {
+  std::vector<std::string> args = {"-o", "out"};
+  const auto files = example_materials();
+  ASSERT_GE(files.size(), 11u);
+  args.insert(args.end(), files.begin(), files.end());
+  const CommandResult result = run(args);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.err.find(std::to_string(files.size()) + " compiled"), std::string::npos)
+      << result.err;
+  for (const auto& file : files) {
+    const auto input = nlohmann::json::parse(read_file(file));
+    const fs::path output = dir_ / "out" / (input["name"].get<std::string>() + ".json");
+    ASSERT_TRUE(fs::exists(output)) << output;
+    const auto compiled = nlohmann::json::parse(read_file(output));
+    EXPECT_EQ(compiled["name"], input["name"]);
+    ASSERT_EQ(compiled["coefficients"].size(), 3u);
+    for (const auto& row : compiled["coefficients"]) {
+      ASSERT_EQ(row.size(), 4u);
+      EXPECT_NEAR(row[0].get<double>() + row[1].get<double>(), 1.0, 1e-12);
+    }
+    for (const char* model : {"decomposition", "schlick", "f82_tint"}) {
+      EXPECT_EQ(compiled["accuracy"][model]["max"].size(), 3u);
+    }
+  }
+}
+
+TEST_F(MatcCli, SameInputsGiveSameBytesAndUnchangedFilesAreNotRewritten) {
+  write_file(dir_ / "m" / "good.json", kGood);
+  ASSERT_EQ(run({"-o", "a", "m/good.json"}).exit_code, 0);
+  const auto first_time = fs::last_write_time(dir_ / "a" / "good.json");
+  const CommandResult again = run({"-o", "a", "m/good.json"});
+  ASSERT_EQ(again.exit_code, 0);
+  EXPECT_NE(again.err.find("0 written, 1 unchanged"), std::string::npos) << again.err;
+  EXPECT_EQ(fs::last_write_time(dir_ / "a" / "good.json"), first_time);
+  ASSERT_EQ(run({"-o", "b", "m/good.json"}).exit_code, 0);
+  EXPECT_EQ(read_file(dir_ / "a" / "good.json"), read_file(dir_ / "b" / "good.json"));
+  // No temporary files are left behind.
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "a"), fs::directory_iterator()), 1);
+}
+
+TEST_F(MatcCli, BadMaterialExitsOneWithLocatedErrorAndWritesNothing) {
+  write_file(dir_ / "bad.json", kBad);
+  const CommandResult result = run({"-o", "out", "bad.json"});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(
+      result.err.find("bad.json:3:16: error: ior.n: -1 is out of range; a number in [0, 1000]"),
+      std::string::npos)
+      << result.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "bad.json"));
+}
+
+TEST_F(MatcCli, StopsAtTheFirstFailureUnlessKeepGoing) {
+  write_file(dir_ / "bad.json", kBad);
+  write_file(dir_ / "good.json", kGood);
+  const CommandResult stopped = run({"-o", "out", "bad.json", "good.json"});
+  EXPECT_EQ(stopped.exit_code, 1);
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "good.json"));
+  EXPECT_NE(stopped.err.find("1 not attempted"), std::string::npos) << stopped.err;
+
+  const CommandResult kept_going = run({"-o", "out", "--keep-going", "bad.json", "good.json"});
+  EXPECT_EQ(kept_going.exit_code, 1);
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "good.json"));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "bad.json"));
+}
+
+TEST_F(MatcCli, NamesMustBeUniqueIgnoringCase) {
+  write_file(dir_ / "one.json", R"({"name": "Gold", "ior": {"n": 1.5, "k": 0}})");
+  write_file(dir_ / "two.json", R"({"name": "gold", "ior": {"n": 1.6, "k": 0}})");
+  const CommandResult result = run({"-o", "out", "-k", "one.json", "two.json"});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(
+      result.err.find("two.json:1:10: error: name: 'gold' is already used by one.json (1:10)"),
+      std::string::npos)
+      << result.err;
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "Gold.json"));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "gold.json"));
+}
+
+TEST_F(MatcCli, NeverOverwritesAnInputFile) {
+  write_file(dir_ / "good.json", kGood);
+  const CommandResult result = run({"-o", ".", "good.json"});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find("would overwrite the input good.json"), std::string::npos)
+      << result.err;
+  EXPECT_EQ(read_file(dir_ / "good.json"), kGood);
+}
+
+TEST_F(MatcCli, UnwritableOutputDirectoryIsAnError) {
+  write_file(dir_ / "good.json", kGood);
+  write_file(dir_ / "not_a_dir", "x");
+  const CommandResult result = run({"-o", "not_a_dir", "good.json"});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find("error:"), std::string::npos) << result.err;
+  EXPECT_EQ(read_file(dir_ / "not_a_dir"), "x");
+}
+
+TEST_F(MatcCli, MissingOrDirectoryInputIsAnError) {
+  fs::create_directories(dir_ / "a_directory.json");
+  const CommandResult missing = run({"-o", "out", "missing.json"});
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.err.find("missing.json: error: cannot read: no such file"), std::string::npos)
+      << missing.err;
+  const CommandResult directory = run({"-o", "out", "a_directory.json"});
+  EXPECT_EQ(directory.exit_code, 1);
+  EXPECT_NE(directory.err.find("is a directory"), std::string::npos) << directory.err;
+}
+
+TEST_F(MatcCli, EvalPrintsDecomposedAndExactFresnel) {
+  const CommandResult result =
+      run({"eval", std::string(MATC_EXAMPLES_DIR) + "/chromium.json", "--mu", "0,0.25,0.5,1"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto json = nlohmann::json::parse(result.out);
+  EXPECT_EQ(json["name"], "chromium");
+  ASSERT_EQ(json["mu"].size(), 4u);
+  ASSERT_EQ(json["F"].size(), 4u);
+  ASSERT_EQ(json["F_exact"].size(), 4u);
+  for (std::size_t c = 0; c < 3; ++c) {
+    EXPECT_EQ(json["F"][0][c].get<double>(), 1.0);
+    EXPECT_NEAR(json["F"][3][c].get<double>(), json["F_exact"][3][c].get<double>(), 1e-12);
+    EXPECT_NEAR(json["F"][1][c].get<double>(), json["F_exact"][1][c].get<double>(), 0.02);
+  }
+}
+
+TEST_F(MatcCli, EvalRejectsCosinesOutsideTheUnitInterval) {
+  const CommandResult result =
+      run({"eval", std::string(MATC_EXAMPLES_DIR) + "/gold.json", "--mu", "0.5,1.5"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("--mu"), std::string::npos) << result.err;
+}
+
+TEST_F(MatcCli, BasisJsonHasTheDocumentedShape) {
+  const CommandResult result = run({"basis", "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto json = nlohmann::json::parse(result.out);
+  ASSERT_EQ(json["mu"].size(), 1000u);
+  ASSERT_EQ(json["b"].size(), 4u);
+  for (const auto& b : json["b"])
+    EXPECT_EQ(b.size(), 1000u);
+  EXPECT_EQ(json["b"][0][500], 1.0);
+  ASSERT_EQ(json["probes"].size(), 2u);
+  EXPECT_NEAR(json["probes"][0].get<double>(), 0.126, 0.005);
+  EXPECT_NEAR(json["probes"][1].get<double>(), 0.43, 0.01);
+}
+
+TEST_F(MatcCli, UsageErrorsExitTwo) {
+  EXPECT_EQ(run({}).exit_code, 2);
+  EXPECT_EQ(run({"--no-such-flag", "x.json"}).exit_code, 2);
+  EXPECT_EQ(run({"eval"}).exit_code, 2);
+  const CommandResult version = run({"--version"});
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_EQ(version.out, "matc " MATC_VERSION "\n");
+}
+
+}  // namespace
