@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs every Debian 12 package matc needs to build, test and benchmark.
+# Installs every Debian 12 package matc needs to build, test and benchmark, and the npm
+# validator the schema test uses (tests/schema, pinned by its package-lock.json).
 # Idempotent; safe to run as root on a fresh machine. Waits for the dpkg lock
 # instead of failing when another apt process is running.
 set -euo pipefail
@@ -21,13 +22,20 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# Node.js runs the independent JSON Schema check (tests/schema); any recent node with npm will do.
+command -v npm >/dev/null 2>&1 || missing+=(nodejs npm)
 
 if [ ${#missing[@]} -eq 0 ]; then
-  echo "install-deps.sh: all ${#packages[@]} packages already installed"
-  exit 0
+  echo "install-deps.sh: all Debian packages already installed"
+else
+  echo "install-deps.sh: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get -o DPkg::Lock::Timeout=600 update -qq
+  apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-echo "install-deps.sh: installing ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-apt-get -o DPkg::Lock::Timeout=600 update -qq
-apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends "${missing[@]}"
+# The schema test's validator (Ajv), pinned by tests/schema/package-lock.json.
+repo=$(cd "$(dirname "$0")/.." && pwd)
+if [ ! -d "$repo/tests/schema/node_modules/ajv" ]; then
+  npm ci --prefix "$repo/tests/schema" --no-audit --no-fund --loglevel=error
+fi

@@ -3,6 +3,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <ostream>
 
 #include "matc/material/located_json.h"
 #include "matc/material/parse.h"
@@ -120,6 +121,11 @@ struct BadInput {
   std::string text;
   std::string expected;  // substring of the reported diagnostics
 };
+
+// Names the case in test output instead of dumping its bytes.
+void PrintTo(const BadInput& c, std::ostream* os) {
+  *os << c.name;
+}
 
 class MaterialErrors : public testing::TestWithParam<BadInput> {};
 

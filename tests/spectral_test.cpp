@@ -3,6 +3,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <ostream>
 
 #include "matc/optics/presets.h"
 #include "matc/optics/spectral.h"
@@ -74,6 +75,11 @@ struct CsvCase {
   std::string text;
   std::string expected;  // a substring of the first diagnostic, position included
 };
+
+// Names the case in test output instead of dumping its bytes.
+void PrintTo(const CsvCase& c, std::ostream* os) {
+  *os << c.name;
+}
 
 class NkCsvErrors : public testing::TestWithParam<CsvCase> {};
 

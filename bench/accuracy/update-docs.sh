@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Regenerates the measured tables in docs/accuracy.md and the summary in README.md.
+#   bench/accuracy/update-docs.sh [BUILD_DIR]   (default: build)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+build=${1:-$root/build}
+cmake --build "$build" --target matc_accuracy_table >/dev/null
+tool="$build/bench/matc_accuracy_table"
+"$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" accuracy-tables "$tool"
+"$root/tests/check_docs_block.sh" --update "$root/README.md" accuracy-summary "$tool" --summary

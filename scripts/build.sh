@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Installs what matc needs, builds it, and compiles the example materials into build/examples/.
+# Extra CMake arguments can be passed in MATC_CMAKE_ARGS.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+
+bash scripts/install-deps.sh
+# shellcheck disable=SC2086  # MATC_CMAKE_ARGS is a list of words
+cmake -S . -B build -G Ninja ${MATC_CMAKE_ARGS:-}
+cmake --build build
+./build/matc -o build/examples examples/materials/*.json
