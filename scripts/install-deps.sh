@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package matc needs to build, test and benchmark, and the npm
-# validator the schema test uses (tests/schema, pinned by its package-lock.json).
+# validators the tests use (tests/js, pinned by its package-lock.json).
 # Idempotent; safe to run as root on a fresh machine. Waits for the dpkg lock
 # instead of failing when another apt process is running.
 set -euo pipefail
@@ -22,7 +22,7 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-# Node.js runs the independent JSON Schema check (tests/schema); any recent node with npm will do.
+# Node.js runs the independent JSON Schema check (tests/js); any recent node with npm will do.
 command -v npm >/dev/null 2>&1 || missing+=(nodejs npm)
 
 if [ ${#missing[@]} -eq 0 ]; then
@@ -34,8 +34,9 @@ else
   apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-# The schema test's validator (Ajv), pinned by tests/schema/package-lock.json.
+# The independent validators the tests use (Ajv, ktx-parse, parse-dds), pinned by
+# tests/js/package-lock.json; reinstalled when missing or out of date.
 repo=$(cd "$(dirname "$0")/.." && pwd)
-if [ ! -d "$repo/tests/schema/node_modules/ajv" ]; then
-  npm ci --prefix "$repo/tests/schema" --no-audit --no-fund --loglevel=error
+if ! npm ls --prefix "$repo/tests/js" >/dev/null 2>&1; then
+  npm ci --prefix "$repo/tests/js" --no-audit --no-fund --loglevel=error
 fi

@@ -121,7 +121,7 @@ TEST_F(MatcCli, SameInputsGiveSameBytesAndUnchangedFilesAreNotRewritten) {
   const auto first_time = fs::last_write_time(dir_ / "a" / "good.json");
   const CommandResult again = run({"-o", "a", "m/good.json"});
   ASSERT_EQ(again.exit_code, 0);
-  EXPECT_NE(again.err.find("0 written, 1 unchanged"), std::string::npos) << again.err;
+  EXPECT_NE(again.err.find("0 files written, 1 unchanged"), std::string::npos) << again.err;
   EXPECT_EQ(fs::last_write_time(dir_ / "a" / "good.json"), first_time);
   ASSERT_EQ(run({"-o", "b", "m/good.json"}).exit_code, 0);
   EXPECT_EQ(read_file(dir_ / "a" / "good.json"), read_file(dir_ / "b" / "good.json"));
@@ -240,6 +240,68 @@ TEST_F(MatcCli, UsageErrorsExitTwo) {
   const CommandResult version = run({"--version"});
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_EQ(version.out, "matc " MATC_VERSION "\n");
+}
+
+TEST_F(MatcCli, LutWritesTheTableAndItsManifest) {
+  const CommandResult result =
+      run({"lut", "-o", "tables/lut.ktx2", "--size", "16", "--samples", "64"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(read_file(dir_ / "tables" / "lut.ktx2").substr(1, 6), "KTX 20");
+  const auto manifest = nlohmann::json::parse(read_file(dir_ / "tables" / "lut.ktx2.json"));
+  EXPECT_EQ(manifest["size"], nlohmann::json::array({16, 16}));
+  EXPECT_EQ(manifest["precision"], "f32");
+  EXPECT_EQ(manifest["energy_compensation"]["average_albedo"].size(), 16u);
+  EXPECT_EQ(manifest["energy_compensation"]["basis_hemispherical_averages"].size(), 4u);
+}
+
+TEST_F(MatcCli, LutFormatFollowsTheExtensionUnlessGiven) {
+  ASSERT_EQ(run({"lut", "-o", "t.dds", "--size", "8", "--samples", "16"}).exit_code, 0);
+  EXPECT_EQ(read_file(dir_ / "t.dds").substr(0, 4), "DDS ");
+  ASSERT_EQ(
+      run({"lut", "-o", "t.bin", "--size", "8", "--samples", "16", "--precision", "f16"}).exit_code,
+      0);
+  EXPECT_EQ(fs::file_size(dir_ / "t.bin"), 8u * 8u * 4u * 2u);
+  const CommandResult unknown = run({"lut", "-o", "t.png"});
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("cannot infer the format"), std::string::npos) << unknown.err;
+  EXPECT_FALSE(fs::exists(dir_ / "t.png"));
+  EXPECT_EQ(run({"lut", "-o", "t.ktx2", "--size", "1"}).exit_code, 2);
+  EXPECT_EQ(run({"lut", "-o", "t.ktx2", "--precision", "f64"}).exit_code, 2);
+}
+
+TEST_F(MatcCli, BatchBuildCanEmitTheLut) {
+  write_file(dir_ / "good.json", kGood);
+  const std::vector<std::string> args = {"-o", "out",           "--lut", "dds",      "--lut-size",
+                                         "8",  "--lut-samples", "32",    "good.json"};
+  const CommandResult first = run(args);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "matc_lut.dds"));
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "matc_lut.dds.json"));
+  const CommandResult second = run(args);
+  EXPECT_NE(second.err.find("0 files written, 3 unchanged"), std::string::npos) << second.err;
+  const auto compiled = nlohmann::json::parse(read_file(dir_ / "out" / "good.json"));
+  EXPECT_EQ(compiled["energy_compensation"]["F_avg"].size(), 3u);
+}
+
+TEST_F(MatcCli, EvalPrintsFbarFromTheTableBesideTheReference) {
+  const CommandResult result = run({"eval", std::string(MATC_EXAMPLES_DIR) + "/beryllium.json",
+                                    "--ndotv", "0.2,0.9", "--roughness", "0.3,0.7"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto json = nlohmann::json::parse(result.out);
+  EXPECT_FALSE(json.contains("F"));
+  ASSERT_EQ(json["Fbar"].size(), 2u);
+  ASSERT_EQ(json["Fbar_reference"].size(), 2u);
+  EXPECT_EQ(json["lut"]["size"], 128);
+  for (std::size_t i = 0; i < 2; ++i) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      EXPECT_NEAR(json["Fbar"][i][c].get<double>(), json["Fbar_reference"][i][c].get<double>(),
+                  0.02);
+    }
+  }
+  const CommandResult mismatched = run({"eval", std::string(MATC_EXAMPLES_DIR) + "/gold.json",
+                                        "--ndotv", "0.2,0.9", "--roughness", "0.3"});
+  EXPECT_EQ(mismatched.exit_code, 2);
+  EXPECT_NE(mismatched.err.find("pair up"), std::string::npos) << mismatched.err;
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "lut_options.h"
+
 namespace matc::cli {
 
 inline constexpr int kExitSuccess = 0;
@@ -16,12 +18,17 @@ struct CompileOptions {
   std::string output_directory = "matc-out";
   bool keep_going = false;
   bool quiet = false;
+  std::string lut_format;  // empty: no LUT; else also write matc_lut.<ext> and its manifest
+  LutCliOptions lut;
 };
 int run_compile(const CompileOptions& options);
 
 struct EvalOptions {
   std::string file;
   std::vector<double> mu;
+  std::vector<double> ndotv;
+  std::vector<double> roughness;
+  LutCliOptions lut;
 };
 int run_eval(const EvalOptions& options);
 
@@ -34,5 +41,12 @@ struct BasisFitOptions {
   std::string output;  // empty: standard output
 };
 int run_basis_fit(const BasisFitOptions& options);
+
+struct LutCommandOptions {
+  std::string output;
+  std::string format;  // empty: from the output's extension
+  LutCliOptions lut;
+};
+int run_lut(const LutCommandOptions& options);
 
 }  // namespace matc::cli

@@ -94,9 +94,26 @@ int run_compile(const CompileOptions& options) {
     }
   }
 
+  if (!options.lut_format.empty() && (summary.failed == 0 || options.keep_going)) {
+    const LutFormat format = *lut_format_from_name(options.lut_format);
+    const fs::path path = output_directory / ("matc_lut" + std::string(lut_file_extension(format)));
+    try {
+      fs::create_directories(output_directory);
+      const std::size_t written = write_lut_files(path, bake_lut(basis, options.lut.bake), format,
+                                                  precision_of(options.lut));
+      summary.written += written;
+      summary.unchanged += 2 - written;
+    } catch (const std::exception& error) {
+      fmt::print(stderr, "{}: error: {}\n", path.string(), error.what());
+      ++summary.failed;
+    }
+  }
+
   if (!options.quiet) {
-    const std::size_t skipped = options.files.size() - summary.compiled - summary.failed;
-    fmt::print(stderr, "matc: {} compiled ({} written, {} unchanged), {} failed{}\n",
+    const std::size_t attempted = summary.compiled + summary.failed;
+    const std::size_t skipped =
+        options.files.size() > attempted ? options.files.size() - attempted : 0;
+    fmt::print(stderr, "matc: {} compiled ({} files written, {} unchanged), {} failed{}\n",
                summary.compiled, summary.written, summary.unchanged, summary.failed,
                skipped > 0 ? fmt::format(", {} not attempted (use --keep-going)", skipped) : "");
   }

@@ -23,15 +23,31 @@ int main(int argc, char** argv) {
   app.add_flag("-k,--keep-going", compile.keep_going,
                "Compile the remaining files after one fails (still exits 1)");
   app.add_flag("-q,--quiet", compile.quiet, "Do not print the summary line");
+  app.add_option("--lut", compile.lut_format,
+                 "Also write the preintegrated table as DIR/matc_lut.<ext> (+ .json manifest)")
+      ->check(CLI::IsMember({"ktx2", "dds", "raw", "header"}));
+  add_lut_options(app, compile.lut, "lut-");
 
   EvalOptions eval;
   CLI::App* eval_command =
       app.add_subcommand("eval", "Evaluate a material's decomposed and exact Fresnel as JSON");
   eval_command->add_option("file", eval.file, "Material file")->required();
-  eval_command->add_option("--mu", eval.mu, "Cosines of the angle of incidence, comma-separated")
-      ->required()
+  eval_command->add_option("--mu", eval.mu, "Cosines of incidence, comma-separated: F")
       ->delimiter(',')
       ->check(CLI::Range(0.0, 1.0));
+  CLI::Option* ndotv_option =
+      eval_command->add_option("--ndotv", eval.ndotv, "NdotV values, comma-separated: Fbar")
+          ->delimiter(',')
+          ->check(CLI::Range(0.0, 1.0));
+  CLI::Option* roughness_option =
+      eval_command
+          ->add_option("--roughness", eval.roughness,
+                       "Perceptual roughness for each --ndotv value, comma-separated")
+          ->delimiter(',')
+          ->check(CLI::Range(0.0, 1.0));
+  ndotv_option->needs(roughness_option);
+  roughness_option->needs(ndotv_option);
+  add_lut_options(*eval_command, eval.lut, "lut-");
 
   BasisOptions basis;
   CLI::App* basis_command = app.add_subcommand("basis", "Show the Fresnel basis b_0..b_3");
@@ -41,6 +57,15 @@ int main(int argc, char** argv) {
       "fit", "Refit the basis from its training set and write the C++ table source");
   fit_command->add_option("-o,--output", basis_fit.output,
                           "Where to write (runtime/src/paper_basis_table.cpp); default stdout");
+
+  LutCommandOptions lut;
+  CLI::App* lut_command = app.add_subcommand(
+      "lut", "Bake the preintegrated basis table (KTX2, DDS, raw or C++ header)");
+  lut_command->add_option("-o,--output", lut.output, "Output file; a .json manifest goes beside it")
+      ->required();
+  lut_command->add_option("--format", lut.format, "File format (default: from the extension)")
+      ->check(CLI::IsMember({"ktx2", "dds", "raw", "header"}));
+  add_lut_options(*lut_command, lut.lut, "");
 
   try {
     app.parse(argc, argv);
@@ -58,6 +83,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*eval_command) return run_eval(eval);
+    if (*lut_command) return run_lut(lut);
     if (*fit_command) return run_basis_fit(basis_fit);
     if (*basis_command) return run_basis(basis);
     if (compile.files.empty()) {

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "matc/fit/coefficients.h"
+#include "matc/lut/energy.h"
 #include "matc/optics/spectral.h"
 #include "matc/version.h"
 
@@ -64,6 +65,8 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
   compiled.accuracy = measure_accuracy(*curve, compiled.coefficients, basis);
   compiled.f0 = curve->at(1.0);
   compiled.f82 = curve->at(kF82MuBar);
+  compiled.average_fresnel =
+      average_fresnel(compiled.coefficients, basis_hemispherical_averages(basis));
   if (!std::holds_alternative<SpectralInput>(material.model)) {
     compiled.ior = per_channel_ior(material.model);
     std::array<ArtisticParameters, 3> artistic{};
@@ -117,6 +120,7 @@ ordered_json compiled_material_json(const CompiledMaterial& compiled,
     coefficients.push_back({channel[0], channel[1], channel[2], channel[3]});
   }
   out["coefficients"] = coefficients;
+  out["energy_compensation"] = {{"F_avg", rgb_json(compiled.average_fresnel)}};
   out["accuracy"] = {{"samples", compiled.accuracy.samples},
                      {"metric",
                       "absolute error vs the exact Fresnel curve over mu = cos(theta) "

@@ -22,6 +22,8 @@ struct CompiledMaterial {
   FitAccuracy accuracy;
   Rgb f0{};   // exact reflectance at normal incidence
   Rgb f82{};  // exact reflectance at mu = 1/7 (about 82 degrees)
+  // Cosine-weighted average of the decomposed Fresnel, for multiple-scattering compensation.
+  Rgb average_fresnel{};
   // The complex IOR per channel and its Gulbrandsen equivalent; absent for spectral materials,
   // whose RGB curve is an integral over many IORs.
   std::optional<std::array<ComplexIor, 3>> ior;

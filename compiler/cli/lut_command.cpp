@@ -1,0 +1,39 @@
+#include <fmt/core.h>
+
+#include "commands.h"
+#include "lut_options.h"
+#include "matc/runtime/basis.h"
+
+namespace matc::cli {
+
+int run_lut(const LutCommandOptions& options) {
+  const std::filesystem::path output(options.output);
+  std::optional<LutFormat> format = lut_format_from_name(options.format);
+  if (options.format.empty()) {
+    const std::string extension = output.extension().string();
+    for (const LutFormat candidate :
+         {LutFormat::ktx2, LutFormat::dds, LutFormat::raw, LutFormat::header}) {
+      if (extension == lut_file_extension(candidate)) format = candidate;
+    }
+    if (!format) {
+      fmt::print(stderr,
+                 "matc lut: error: --format: cannot infer the format from '{}'; give --format "
+                 "ktx2|dds|raw|header or an extension .ktx2, .dds, .bin or .h\n",
+                 output.string());
+      return kExitUsageError;
+    }
+  }
+  const BakedLut baked = bake_lut(runtime::paper_basis(), options.lut.bake);
+  try {
+    const std::size_t written = write_lut_files(output, baked, *format, precision_of(options.lut));
+    fmt::print(stderr, "matc lut: {} ({}x{}, {} samples per texel, {}, {}): {} file(s) written\n",
+               output.string(), baked.lut.size, baked.lut.size, baked.lut.samples,
+               lut_format_name(*format), options.lut.precision, written);
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "{}: error: {}\n", output.string(), error.what());
+    return kExitInputError;
+  }
+  return kExitSuccess;
+}
+
+}  // namespace matc::cli

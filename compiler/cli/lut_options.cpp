@@ -1,0 +1,37 @@
+#include "lut_options.h"
+
+#include "atomic_file.h"
+#include "matc/json_format.h"
+
+namespace matc::cli {
+
+void add_lut_options(CLI::App& app, LutCliOptions& options, const std::string& prefix) {
+  app.add_option("--" + prefix + "size", options.bake.size, "LUT width and height in texels")
+      ->capture_default_str()
+      ->check(CLI::Range(kMinLutSize, kMaxLutSize));
+  app.add_option("--" + prefix + "samples", options.bake.samples, "Hammersley samples per texel")
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t{1}, kMaxLutSamples));
+  app.add_option("--" + prefix + "precision", options.precision, "Texel precision")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"f16", "f32"}));
+}
+
+LutPrecision precision_of(const LutCliOptions& options) {
+  return *lut_precision_from_name(options.precision);
+}
+
+std::size_t write_lut_files(const std::filesystem::path& path, const BakedLut& baked,
+                            LutFormat format, LutPrecision precision) {
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  std::size_t written = 0;
+  written +=
+      write_file_atomically(path, encode_lut(baked, format, precision)) == WriteOutcome::written;
+  std::filesystem::path manifest = path;
+  manifest += ".json";
+  written += write_file_atomically(manifest, format_json(lut_manifest(baked, format, precision))) ==
+             WriteOutcome::written;
+  return written;
+}
+
+}  // namespace matc::cli

@@ -1,0 +1,47 @@
+// The LUT as files an engine loads: KTX2, DDS, raw texels or a C++ header, plus a JSON manifest.
+// Layouts are described in docs/lut.md.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "matc/lut/preintegrate.h"
+
+namespace matc {
+
+enum class LutFormat { ktx2, dds, raw, header };
+enum class LutPrecision { f16, f32 };
+
+std::optional<LutFormat> lut_format_from_name(std::string_view name);
+std::optional<LutPrecision> lut_precision_from_name(std::string_view name);
+std::string_view lut_format_name(LutFormat format);
+std::string_view lut_precision_name(LutPrecision precision);
+std::string_view lut_file_extension(LutFormat format);  // ".ktx2", ".dds", ".bin", ".h"
+
+// A baked table with its energy-compensation companions.
+struct BakedLut {
+  Lut lut;
+  std::vector<double> average_albedo;                        // E_avg per roughness row
+  std::array<double, runtime::kBasisSize> basis_averages{};  // m_i
+};
+
+BakedLut bake_lut(const runtime::BasisView& basis, const LutOptions& options);
+
+// The table as a file of this precision stores it (texels rounded through half for f16), so CPU
+// evaluation can sample exactly what a renderer loads.
+Lut stored_as(Lut lut, LutPrecision precision);
+
+// The file's bytes. The header format embeds the texels as C++ constexpr arrays (rounded through
+// half precision when `precision` is f16, so they equal what the texture formats store).
+std::string encode_lut(const BakedLut& baked, LutFormat format, LutPrecision precision);
+
+// What a renderer needs besides the texels: axes, texel-centre convention, energy tables.
+nlohmann::ordered_json lut_manifest(const BakedLut& baked, LutFormat format,
+                                    LutPrecision precision);
+
+}  // namespace matc

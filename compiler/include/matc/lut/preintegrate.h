@@ -1,0 +1,42 @@
+// Baking the RGBA lookup table bbar_i(NdotV, roughness) (layout: matc/runtime/lut.h).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "matc/runtime/basis.h"
+#include "matc/runtime/lut.h"
+
+namespace matc {
+
+// 128: bilinear reconstruction error 0.002 (64: 0.009); see docs/lut.md.
+inline constexpr std::size_t kDefaultLutSize = 128;
+inline constexpr std::size_t kDefaultLutSamples = 1024;
+inline constexpr std::size_t kMinLutSize = 2;
+inline constexpr std::size_t kMaxLutSize = 4096;
+inline constexpr std::size_t kMaxLutSamples = 1u << 20;
+
+struct LutOptions {
+  std::size_t size = kDefaultLutSize;        // width = height, in texels
+  std::size_t samples = kDefaultLutSamples;  // Hammersley points per texel
+  unsigned threads = 0;                      // 0: one per hardware thread
+};
+
+// An owning table; the same inputs give the same bytes whatever the thread count.
+struct Lut {
+  std::size_t size = 0;
+  std::size_t samples = 0;
+  std::vector<float> texels;  // size * size * 4, rows by roughness, RGBA = bbar_0..bbar_3
+
+  runtime::LutView view() const { return {size, texels}; }
+};
+
+// The split-sum averages bbar_0..bbar_3 of `basis` at one (NdotV, roughness).
+std::array<double, runtime::kBasisSize> preintegrate_basis(const runtime::BasisView& basis,
+                                                           double ndotv, double roughness,
+                                                           std::size_t samples);
+
+Lut preintegrate_lut(const runtime::BasisView& basis, const LutOptions& options = {});
+
+}  // namespace matc

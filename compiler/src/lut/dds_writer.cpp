@@ -1,0 +1,60 @@
+// DirectDraw Surface with the DX10 extension header (Microsoft, "DDS file layout"): one 2D
+// texture, DXGI_FORMAT_R16G16B16A16_FLOAT or DXGI_FORMAT_R32G32B32A32_FLOAT, no mipmaps.
+#include "lut_writers.h"
+#include "texel_bytes.h"
+
+namespace matc::lut_writers {
+namespace {
+
+using namespace lut_bytes;
+
+constexpr std::uint32_t kDdsdCaps = 0x1, kDdsdHeight = 0x2, kDdsdWidth = 0x4, kDdsdPitch = 0x8;
+constexpr std::uint32_t kDdsdPixelFormat = 0x1000;
+constexpr std::uint32_t kDdpfFourCc = 0x4;
+constexpr std::uint32_t kDdsCapsTexture = 0x1000;
+constexpr std::uint32_t kDxgiR32G32B32A32Float = 2;
+constexpr std::uint32_t kDxgiR16G16B16A16Float = 10;
+constexpr std::uint32_t kResourceDimensionTexture2d = 3;
+
+std::uint32_t four_cc(const char (&code)[5]) {
+  return static_cast<std::uint32_t>(code[0]) | (static_cast<std::uint32_t>(code[1]) << 8) |
+         (static_cast<std::uint32_t>(code[2]) << 16) | (static_cast<std::uint32_t>(code[3]) << 24);
+}
+
+}  // namespace
+
+std::string encode_dds(const Lut& lut, LutPrecision precision) {
+  const std::uint32_t texel_size = precision == LutPrecision::f16 ? 8 : 16;
+  const auto size = static_cast<std::uint32_t>(lut.size);
+  std::string out;
+  put_u32(out, four_cc("DDS "));
+  // DDS_HEADER
+  put_u32(out, 124);
+  put_u32(out, kDdsdCaps | kDdsdHeight | kDdsdWidth | kDdsdPitch | kDdsdPixelFormat);
+  put_u32(out, size);               // height
+  put_u32(out, size);               // width
+  put_u32(out, size * texel_size);  // pitch: bytes per row
+  put_u32(out, 0);                  // depth
+  put_u32(out, 1);                  // mipMapCount
+  for (int i = 0; i < 11; ++i)
+    put_u32(out, 0);  // reserved1
+  // DDS_PIXELFORMAT: the format lives in the DX10 header.
+  put_u32(out, 32);
+  put_u32(out, kDdpfFourCc);
+  put_u32(out, four_cc("DX10"));
+  for (int i = 0; i < 5; ++i)
+    put_u32(out, 0);  // bit count and masks
+  put_u32(out, kDdsCapsTexture);
+  for (int i = 0; i < 4; ++i)
+    put_u32(out, 0);  // caps2..4, reserved2
+  // DDS_HEADER_DXT10
+  put_u32(out, precision == LutPrecision::f16 ? kDxgiR16G16B16A16Float : kDxgiR32G32B32A32Float);
+  put_u32(out, kResourceDimensionTexture2d);
+  put_u32(out, 0);  // miscFlag
+  put_u32(out, 1);  // arraySize
+  put_u32(out, 0);  // miscFlags2: alpha mode unknown
+  out += texel_bytes(lut.texels, precision);
+  return out;
+}
+
+}  // namespace matc::lut_writers

@@ -1,0 +1,99 @@
+// KTX 2.0 (Khronos, https://registry.khronos.org/KTX/specs/2.0/ktxspec.v2.html): one 2D level,
+// VK_FORMAT_R16G16B16A16_SFLOAT or VK_FORMAT_R32G32B32A32_SFLOAT, a basic data format descriptor
+// and a KTXwriter key.
+#include "lut_writers.h"
+#include "matc/version.h"
+#include "texel_bytes.h"
+
+namespace matc::lut_writers {
+namespace {
+
+using namespace lut_bytes;
+
+constexpr unsigned char kIdentifier[12] = {0xAB, 0x4B, 0x54, 0x58, 0x20, 0x32,
+                                           0x30, 0xBB, 0x0D, 0x0A, 0x1A, 0x0A};
+constexpr std::uint32_t kVkFormatR16G16B16A16Sfloat = 97;
+constexpr std::uint32_t kVkFormatR32G32B32A32Sfloat = 109;
+constexpr std::size_t kHeaderAndIndexBytes = 80;
+constexpr std::size_t kLevelIndexBytes = 24;
+
+// Khronos Data Format 1.3 basic descriptor for 4 little-endian signed-float channels.
+std::string data_format_descriptor(std::uint32_t channel_bytes) {
+  constexpr std::uint32_t kSamples = 4;
+  constexpr std::uint32_t kBlockBytes = 24 + 16 * kSamples;
+  std::string out;
+  put_u32(out, 4 + kBlockBytes);           // dfdTotalSize
+  put_u32(out, 0);                         // vendorId KHRONOS, descriptorType BASICFORMAT
+  put_u32(out, 2u | (kBlockBytes << 16));  // versionNumber 1.3, descriptorBlockSize
+  // colorModel RGBSDA, colorPrimaries BT709, transferFunction LINEAR, flags ALPHA_STRAIGHT.
+  put_u32(out, 1u | (1u << 8) | (1u << 16));
+  put_u32(out, 0);                                                // texelBlockDimension 1x1x1x1
+  put_u32(out, 4 * channel_bytes);                                // bytesPlane0
+  put_u32(out, 0);                                                // bytesPlane4..7
+  constexpr std::uint32_t kChannelIds[kSamples] = {0, 1, 2, 15};  // R, G, B, A
+  constexpr std::uint32_t kFloatSigned = 0x80 | 0x40;
+  for (std::uint32_t s = 0; s < kSamples; ++s) {
+    put_u32(out, (s * channel_bytes * 8) | ((channel_bytes * 8 - 1) << 16) |
+                     ((kChannelIds[s] | kFloatSigned) << 24));
+    put_u32(out, 0);           // samplePosition
+    put_u32(out, 0xBF800000);  // sampleLower: -1.0f, as KTX-Software writes for SFLOAT
+    put_u32(out, 0x3F800000);  // sampleUpper: 1.0f
+  }
+  return out;
+}
+
+std::string key_value_data() {
+  const std::string key = "KTXwriter";
+  const std::string value = std::string("matc ") + kVersion;
+  std::string out;
+  put_u32(out, static_cast<std::uint32_t>(key.size() + 1 + value.size() + 1));
+  out += key;
+  out.push_back('\0');
+  out += value;
+  out.push_back('\0');
+  pad_to(out, 4);
+  return out;
+}
+
+}  // namespace
+
+std::string encode_ktx2(const Lut& lut, LutPrecision precision) {
+  const std::uint32_t channel_bytes = precision == LutPrecision::f16 ? 2 : 4;
+  const std::string dfd = data_format_descriptor(channel_bytes);
+  const std::string kvd = key_value_data();
+  const std::string texels = texel_bytes(lut.texels, precision);
+
+  const std::size_t dfd_offset = kHeaderAndIndexBytes + kLevelIndexBytes;
+  const std::size_t kvd_offset = dfd_offset + dfd.size();
+  // Level data is aligned to lcm(texel block size, 4) = the texel size (8 or 16 bytes).
+  const std::size_t texel_size = 4 * channel_bytes;
+  std::size_t level_offset = kvd_offset + kvd.size();
+  level_offset += (texel_size - level_offset % texel_size) % texel_size;
+
+  std::string out(reinterpret_cast<const char*>(kIdentifier), sizeof kIdentifier);
+  put_u32(out, channel_bytes == 2 ? kVkFormatR16G16B16A16Sfloat : kVkFormatR32G32B32A32Sfloat);
+  put_u32(out, channel_bytes);                         // typeSize
+  put_u32(out, static_cast<std::uint32_t>(lut.size));  // pixelWidth
+  put_u32(out, static_cast<std::uint32_t>(lut.size));  // pixelHeight
+  put_u32(out, 0);                                     // pixelDepth
+  put_u32(out, 0);                                     // layerCount
+  put_u32(out, 1);                                     // faceCount
+  put_u32(out, 1);                                     // levelCount
+  put_u32(out, 0);                                     // supercompressionScheme
+  put_u32(out, static_cast<std::uint32_t>(dfd_offset));
+  put_u32(out, static_cast<std::uint32_t>(dfd.size()));
+  put_u32(out, static_cast<std::uint32_t>(kvd_offset));
+  put_u32(out, static_cast<std::uint32_t>(kvd.size()));
+  put_u64(out, 0);  // sgdByteOffset
+  put_u64(out, 0);  // sgdByteLength
+  put_u64(out, level_offset);
+  put_u64(out, texels.size());  // byteLength
+  put_u64(out, texels.size());  // uncompressedByteLength
+  out += dfd;
+  out += kvd;
+  pad_to(out, texel_size);
+  out += texels;
+  return out;
+}
+
+}  // namespace matc::lut_writers

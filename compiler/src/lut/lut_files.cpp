@@ -1,0 +1,113 @@
+#include "matc/lut/lut_files.h"
+
+#include "lut_writers.h"
+#include "matc/lut/energy.h"
+#include "matc/version.h"
+#include "texel_bytes.h"
+
+namespace matc {
+
+std::optional<LutFormat> lut_format_from_name(std::string_view name) {
+  if (name == "ktx2") return LutFormat::ktx2;
+  if (name == "dds") return LutFormat::dds;
+  if (name == "raw") return LutFormat::raw;
+  if (name == "header") return LutFormat::header;
+  return std::nullopt;
+}
+
+std::optional<LutPrecision> lut_precision_from_name(std::string_view name) {
+  if (name == "f16") return LutPrecision::f16;
+  if (name == "f32") return LutPrecision::f32;
+  return std::nullopt;
+}
+
+std::string_view lut_format_name(LutFormat format) {
+  switch (format) {
+    case LutFormat::ktx2:
+      return "ktx2";
+    case LutFormat::dds:
+      return "dds";
+    case LutFormat::raw:
+      return "raw";
+    case LutFormat::header:
+      return "header";
+  }
+  return "ktx2";
+}
+
+std::string_view lut_precision_name(LutPrecision precision) {
+  return precision == LutPrecision::f16 ? "f16" : "f32";
+}
+
+std::string_view lut_file_extension(LutFormat format) {
+  switch (format) {
+    case LutFormat::ktx2:
+      return ".ktx2";
+    case LutFormat::dds:
+      return ".dds";
+    case LutFormat::raw:
+      return ".bin";
+    case LutFormat::header:
+      return ".h";
+  }
+  return ".ktx2";
+}
+
+Lut stored_as(Lut lut, LutPrecision precision) {
+  if (precision == LutPrecision::f16) {
+    for (float& value : lut.texels)
+      value = lut_bytes::round_to_half(value);
+  }
+  return lut;
+}
+
+BakedLut bake_lut(const runtime::BasisView& basis, const LutOptions& options) {
+  BakedLut baked;
+  baked.lut = preintegrate_lut(basis, options);
+  baked.average_albedo = average_albedo(baked.lut);
+  baked.basis_averages = basis_hemispherical_averages(basis);
+  return baked;
+}
+
+std::string encode_lut(const BakedLut& baked, LutFormat format, LutPrecision precision) {
+  switch (format) {
+    case LutFormat::ktx2:
+      return lut_writers::encode_ktx2(baked.lut, precision);
+    case LutFormat::dds:
+      return lut_writers::encode_dds(baked.lut, precision);
+    case LutFormat::raw:
+      return lut_bytes::texel_bytes(baked.lut.texels, precision);
+    case LutFormat::header:
+      return lut_writers::encode_header(baked, precision);
+  }
+  return {};
+}
+
+nlohmann::ordered_json lut_manifest(const BakedLut& baked, LutFormat format,
+                                    LutPrecision precision) {
+  const Lut& lut = baked.lut;
+  nlohmann::ordered_json manifest;
+  manifest["matc_version"] = kVersion;
+  manifest["kind"] = "matc preintegrated Fresnel basis table";
+  manifest["format"] = lut_format_name(format);
+  manifest["precision"] = lut_precision_name(precision);
+  manifest["size"] = {lut.size, lut.size};
+  manifest["samples_per_texel"] = lut.samples;
+  manifest["basis"] = "paper";
+  manifest["channels"] = {"bbar_0", "bbar_1", "bbar_2", "bbar_3"};
+  manifest["layout"] = {
+      {"rows", "roughness (perceptual; GGX alpha = roughness^2), first row = 0"},
+      {"columns", "u = sqrt(NdotV), first column = 0"},
+      {"texel_centres", "texel (x, y) holds u = x / (size - 1), roughness = y / (size - 1)"},
+      {"sampling", "linear filtering, clamp to edge, at (u * (size - 1) + 0.5) / size per axis"},
+      {"raw", "row-major, RGBA interleaved, little-endian, tightly packed"}};
+  manifest["energy_compensation"] = {
+      {"directional_albedo", "channel 0 (bbar_0) is E(NdotV, roughness)"},
+      {"average_albedo", baked.average_albedo},
+      {"average_albedo_rows", "E_avg at roughness = y / (size - 1)"},
+      {"basis_hemispherical_averages", baked.basis_averages},
+      {"average_fresnel", "F_avg = sum_i c_i * basis_hemispherical_averages[i] per channel"}};
+  return manifest;
+}
+
+}  // namespace matc

@@ -1,0 +1,109 @@
+#include "matc/lut/preintegrate.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+#include "matc/lut/microfacet_samples.h"
+
+namespace matc {
+namespace {
+
+// The basis as float4 rows, so one lookup fetches all four elements at a cosine.
+class InterleavedBasis {
+ public:
+  explicit InterleavedBasis(const runtime::BasisView& basis) : last_(basis.samples() - 1) {
+    rows_.reserve(basis.samples());
+    for (std::size_t j = 0; j < basis.samples(); ++j) {
+      const auto b = basis.at_index(j);
+      rows_.push_back({static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2]),
+                       static_cast<float>(b[3])});
+    }
+  }
+
+  // Adds weight * b_i(mu) to `sums`, with the same linear interpolation as BasisView::evaluate.
+  void accumulate(float mu, float weight, std::array<float, 4>& sums) const {
+    const float position = mu * static_cast<float>(last_);
+    const std::size_t left = std::min(static_cast<std::size_t>(position), last_ - 1);
+    const float t = position - static_cast<float>(left);
+    const auto& a = rows_[left];
+    const auto& b = rows_[left + 1];
+    for (std::size_t i = 0; i < 4; ++i)
+      sums[i] += weight * (a[i] + t * (b[i] - a[i]));
+  }
+
+ private:
+  std::size_t last_;
+  std::vector<std::array<float, 4>> rows_;
+};
+
+std::array<double, 4> integrate_texel(const InterleavedBasis& basis, const HammersleySet& set,
+                                      double ndotv, double roughness, std::vector<float>& vdoth,
+                                      std::vector<float>& weight) {
+  sample_microfacet_reflections(set, ndotv, roughness, vdoth.data(), weight.data());
+  // Float partial sums over short blocks (fast, and their rounding stays near float epsilon),
+  // carried in double across blocks.
+  constexpr std::size_t kBlock = 64;
+  std::array<double, 4> sums{};
+  for (std::size_t start = 0; start < set.size(); start += kBlock) {
+    std::array<float, 4> partial{};
+    const std::size_t end = std::min(start + kBlock, set.size());
+    for (std::size_t k = start; k < end; ++k)
+      basis.accumulate(vdoth[k], weight[k], partial);
+    for (std::size_t i = 0; i < 4; ++i)
+      sums[i] += partial[i];
+  }
+  for (double& sum : sums)
+    sum /= static_cast<double>(set.size());
+  return sums;
+}
+
+}  // namespace
+
+std::array<double, runtime::kBasisSize> preintegrate_basis(const runtime::BasisView& basis,
+                                                           double ndotv, double roughness,
+                                                           std::size_t samples) {
+  const HammersleySet set(samples);
+  std::vector<float> vdoth(samples);
+  std::vector<float> weight(samples);
+  return integrate_texel(InterleavedBasis(basis), set, ndotv, roughness, vdoth, weight);
+}
+
+Lut preintegrate_lut(const runtime::BasisView& basis, const LutOptions& options) {
+  Lut lut;
+  lut.size = std::clamp(options.size, kMinLutSize, kMaxLutSize);
+  lut.samples = std::clamp<std::size_t>(options.samples, 1, kMaxLutSamples);
+  lut.texels.resize(lut.size * lut.size * runtime::kBasisSize);
+
+  const InterleavedBasis interleaved(basis);
+  const HammersleySet set(lut.samples);
+  const double last = static_cast<double>(lut.size - 1);
+  // Rows are handed out one at a time; each texel depends only on its own coordinates, so the
+  // result does not depend on how rows are spread over threads.
+  std::atomic<std::size_t> next_row{0};
+  const auto worker = [&] {
+    std::vector<float> vdoth(lut.samples);
+    std::vector<float> weight(lut.samples);
+    for (std::size_t y = next_row++; y < lut.size; y = next_row++) {
+      const double roughness = static_cast<double>(y) / last;
+      for (std::size_t x = 0; x < lut.size; ++x) {
+        const double ndotv = runtime::lut_ndotv_from_u(static_cast<double>(x) / last);
+        const auto bbar = integrate_texel(interleaved, set, ndotv, roughness, vdoth, weight);
+        float* texel = &lut.texels[(y * lut.size + x) * runtime::kBasisSize];
+        for (std::size_t i = 0; i < runtime::kBasisSize; ++i)
+          texel[i] = static_cast<float>(bbar[i]);
+      }
+    }
+  };
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads = std::min<unsigned>(options.threads == 0 ? hardware : options.threads,
+                                              static_cast<unsigned>(lut.size));
+  std::vector<std::jthread> pool;
+  for (unsigned t = 1; t < threads; ++t)
+    pool.emplace_back(worker);
+  worker();
+  return lut;
+}
+
+}  // namespace matc

@@ -1,0 +1,23 @@
+// Little-endian byte encoding shared by the LUT file writers.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include "matc/lut/lut_files.h"
+
+namespace matc::lut_bytes {
+
+void put_u16(std::string& out, std::uint16_t value);
+void put_u32(std::string& out, std::uint32_t value);
+void put_u64(std::string& out, std::uint64_t value);
+void pad_to(std::string& out, std::size_t alignment);
+
+// A float rounded to IEEE half precision (round to nearest even), as a float.
+float round_to_half(float value);
+
+// Every texel component, tightly packed, in the given precision.
+std::string texel_bytes(std::span<const float> texels, LutPrecision precision);
+
+}  // namespace matc::lut_bytes

@@ -1,0 +1,60 @@
+#include "matc/runtime/lut.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace matc::runtime {
+
+double lut_u_from_ndotv(double ndotv) {
+  return std::sqrt(std::clamp(ndotv, 0.0, 1.0));
+}
+double lut_ndotv_from_u(double u) {
+  return u * u;
+}
+
+std::array<float, kBasisSize> LutView::texel(std::size_t x, std::size_t y) const {
+  const std::size_t offset = (y * size + x) * kBasisSize;
+  return {texels[offset], texels[offset + 1], texels[offset + 2], texels[offset + 3]};
+}
+
+namespace {
+
+// Left texel index and blend weight along one axis for a coordinate u in [0, 1].
+std::pair<std::size_t, double> axis_position(double u, std::size_t size) {
+  const double position = std::clamp(u, 0.0, 1.0) * static_cast<double>(size - 1);
+  const std::size_t left = std::min(static_cast<std::size_t>(position), size - 2);
+  return {left, position - static_cast<double>(left)};
+}
+
+}  // namespace
+
+std::array<double, kBasisSize> sample_lut(const LutView& lut, double ndotv, double roughness) {
+  const auto [x, tx] = axis_position(lut_u_from_ndotv(ndotv), lut.size);
+  const auto [y, ty] = axis_position(roughness, lut.size);
+  const auto t00 = lut.texel(x, y);
+  const auto t10 = lut.texel(x + 1, y);
+  const auto t01 = lut.texel(x, y + 1);
+  const auto t11 = lut.texel(x + 1, y + 1);
+  std::array<double, kBasisSize> result{};
+  for (std::size_t i = 0; i < kBasisSize; ++i) {
+    const double bottom = t00[i] + tx * (t10[i] - t00[i]);
+    const double top = t01[i] + tx * (t11[i] - t01[i]);
+    result[i] = bottom + ty * (top - bottom);
+  }
+  return result;
+}
+
+Rgb evaluate_fbar(const Coefficients& coefficients, const LutView& lut, double ndotv,
+                  double roughness) {
+  const auto bbar = sample_lut(lut, ndotv, roughness);
+  Rgb result{};
+  for (std::size_t channel = 0; channel < 3; ++channel) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < kBasisSize; ++i)
+      sum += coefficients[channel][i] * bbar[i];
+    result[channel] = std::max(0.0, sum);
+  }
+  return result;
+}
+
+}  // namespace matc::runtime
