@@ -3,6 +3,8 @@
 // Run through bench/accuracy/update-docs.sh; tests/check_docs_block.sh keeps the docs in sync.
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -11,6 +13,8 @@
 
 #include "matc/fit/accuracy.h"
 #include "matc/fit/coefficients.h"
+#include "matc/lut/preintegrate.h"
+#include "matc/lut/split_sum_reference.h"
 #include "matc/optics/gulbrandsen.h"
 #include "matc/optics/presets.h"
 #include "matc/optics/spectral.h"
@@ -107,11 +111,138 @@ void print_artistic_grid() {
   }
 }
 
+// How well a bilinearly filtered table reproduces the integral it samples: the worst difference
+// over bbar_0..bbar_3 between the filtered value and a direct 4096-sample integral, at 400 points
+// that crowd towards grazing. `to_u` maps NdotV to the table's horizontal axis.
+double reconstruction_error(std::size_t size, const std::function<double(double)>& to_u,
+                            const std::function<double(double)>& from_u) {
+  const auto basis = matc::runtime::paper_basis();
+  const double last = static_cast<double>(size - 1);
+  std::vector<std::array<double, 4>> table(size * size);
+  for (std::size_t y = 0; y < size; ++y) {
+    for (std::size_t x = 0; x < size; ++x) {
+      table[y * size + x] = matc::preintegrate_basis(basis, from_u(static_cast<double>(x) / last),
+                                                     static_cast<double>(y) / last, 1024);
+    }
+  }
+  double worst = 0.0;
+  for (int i = 0; i < 400; ++i) {
+    const double mu = std::pow((i % 20 + 0.37) / 20.0, 3.0);
+    const double roughness = (i / 20 + 0.61) / 20.0;
+    const double px = to_u(mu) * last;
+    const double py = roughness * last;
+    const std::size_t x = std::min(static_cast<std::size_t>(px), size - 2);
+    const std::size_t y = std::min(static_cast<std::size_t>(py), size - 2);
+    const double tx = px - static_cast<double>(x);
+    const double ty = py - static_cast<double>(y);
+    const auto direct = matc::preintegrate_basis(basis, mu, roughness, 4096);
+    for (std::size_t c = 0; c < 4; ++c) {
+      const auto at = [&](std::size_t xx, std::size_t yy) { return table[yy * size + xx][c]; };
+      const double filtered = (1 - ty) * ((1 - tx) * at(x, y) + tx * at(x + 1, y)) +
+                              ty * ((1 - tx) * at(x, y + 1) + tx * at(x + 1, y + 1));
+      worst = std::max(worst, std::abs(filtered - direct[c]));
+    }
+  }
+  return worst;
+}
+
+void print_reconstruction() {
+  fmt::print(
+      "| table size | u = NdotV (linear) | u = sqrt(NdotV) (shipped) |\n"
+      "|---:|---:|---:|\n");
+  const auto identity = [](double x) { return x; };
+  const auto square_root = [](double x) { return std::sqrt(x); };
+  const auto square = [](double x) { return x * x; };
+  for (const std::size_t size : {32, 64, 128}) {
+    fmt::print("| {}x{} | {:.4f} | {:.4f} |\n", size, size,
+               reconstruction_error(size, identity, identity),
+               reconstruction_error(size, square_root, square));
+  }
+}
+
+// A basis view over Schlick's and F82-tint's lobes, so that their split sums are baked and sampled
+// exactly like ours: b_1 = (1 - mu)^5, b_2 = mu (1 - mu)^6.
+struct LobeTables {
+  std::vector<double> schlick;
+  std::vector<double> f82;
+  std::vector<double> zero;
+  explicit LobeTables(std::size_t n) : schlick(n), f82(n), zero(n, 0.0) {
+    for (std::size_t j = 0; j < n; ++j) {
+      const double mu = static_cast<double>(j) / static_cast<double>(n - 1);
+      schlick[j] = std::pow(1.0 - mu, 5.0);
+      f82[j] = mu * std::pow(1.0 - mu, 6.0);
+    }
+  }
+  matc::runtime::BasisView view() const { return {{schlick, f82, zero}, {1, 2}}; }
+};
+
+void print_preintegrated() {
+  const auto basis = matc::runtime::paper_basis();
+  const matc::Lut ours = matc::preintegrate_lut(basis, {});
+  const LobeTables lobes(basis.samples());
+  const matc::Lut lobe_lut = matc::preintegrate_lut(lobes.view(), {});
+  constexpr std::array<double, 9> kNdotV = {0.02, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9, 1.0};
+  std::vector<matc::SplitSumEstimator> estimators;
+  std::vector<std::pair<double, double>> points;
+  for (const double ndotv : kNdotV) {
+    for (int j = 0; j < 10; ++j) {
+      const double roughness = (j + 0.5) / 10.0;
+      estimators.emplace_back(ndotv, roughness, 16384);
+      points.emplace_back(ndotv, roughness);
+    }
+  }
+  fmt::print(
+      "| metal | ours (4 terms) | Schlick split sum (2 terms) | F82-tint split sum (3 terms) |\n"
+      "|---|---:|---:|---:|\n");
+  Totals totals[3];
+  for (const matc::MetalPreset& preset : matc::metal_presets()) {
+    if (!preset.caveat.empty()) continue;
+    const matc::TabulatedCurve curve(matc::SpectralCurve(matc::preset_spectrum(preset)));
+    const auto c = matc::solve_coefficients(curve, basis);
+    const matc::Rgb f0 = curve.at(1.0);
+    const matc::Rgb f82 = curve.at(matc::kF82MuBar);
+    ErrorStats errors[3];
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      const auto [ndotv, roughness] = points[p];
+      const matc::Rgb reference = estimators[p].integrate(curve);
+      const matc::Rgb decomposed = matc::runtime::evaluate_fbar(c, ours.view(), ndotv, roughness);
+      const auto lobe = matc::runtime::sample_lut(lobe_lut.view(), ndotv, roughness);
+      for (std::size_t ch = 0; ch < 3; ++ch) {
+        const double mu_bar = matc::kF82MuBar;
+        const double a = (matc::fresnel_schlick(mu_bar, f0[ch]) - f82[ch]) /
+                         (mu_bar * std::pow(1.0 - mu_bar, 6.0));
+        const double schlick = f0[ch] * lobe[0] + (1.0 - f0[ch]) * lobe[1];
+        const double values[3] = {decomposed[ch], schlick, schlick - a * lobe[2]};
+        for (std::size_t m = 0; m < 3; ++m) {
+          errors[m].max_abs[ch] =
+              std::max(errors[m].max_abs[ch], std::abs(values[m] - reference[ch]));
+        }
+      }
+    }
+    fmt::print("| {} {} | {:.4f} | {:.4f} | {:.4f} |\n", preset.symbol, preset.name,
+               worst(errors[0].max_abs), worst(errors[1].max_abs), worst(errors[2].max_abs));
+    for (std::size_t m = 0; m < 3; ++m)
+      totals[m].add(errors[m]);
+  }
+  fmt::print("| **worst channel, all metals** | **{:.4f}** | **{:.4f}** | **{:.4f}** |\n",
+             totals[0].worst, totals[1].worst, totals[2].worst);
+  fmt::print("| mean of per-curve max | {:.4f} | {:.4f} | {:.4f} |\n", totals[0].mean(),
+             totals[1].mean(), totals[2].mean());
+}
+
 }  // namespace
 
-// No arguments: every table of docs/accuracy.md. --summary: the summary the README quotes.
+// No arguments: the curve tables of docs/accuracy.md. --summary: the summary the README quotes.
+// --lut: the preintegrated tables (table reconstruction, then Fbar against a direct reference).
 int main(int argc, char** argv) {
-  const bool summary_only = argc > 1 && std::string_view(argv[1]) == "--summary";
+  const std::string_view mode = argc > 1 ? argv[1] : "";
+  if (mode == "--lut") {
+    print_reconstruction();
+    fmt::print("\n");
+    print_preintegrated();
+    return 0;
+  }
+  const bool summary_only = mode == "--summary";
   print_metals(summary_only);
   if (!summary_only) print_artistic_grid();
   return 0;

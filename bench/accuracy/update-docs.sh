@@ -7,4 +7,5 @@ build=${1:-$root/build}
 cmake --build "$build" --target matc_accuracy_table >/dev/null
 tool="$build/bench/matc_accuracy_table"
 "$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" accuracy-tables "$tool"
+"$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" lut-accuracy "$tool" --lut
 "$root/tests/check_docs_block.sh" --update "$root/README.md" accuracy-summary "$tool" --summary
