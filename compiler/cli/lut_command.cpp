@@ -10,11 +10,7 @@ int run_lut(const LutCommandOptions& options) {
   const std::filesystem::path output(options.output);
   std::optional<LutFormat> format = lut_format_from_name(options.format);
   if (options.format.empty()) {
-    const std::string extension = output.extension().string();
-    for (const LutFormat candidate :
-         {LutFormat::ktx2, LutFormat::dds, LutFormat::raw, LutFormat::header}) {
-      if (extension == lut_file_extension(candidate)) format = candidate;
-    }
+    format = lut_format_from_extension(output.extension().string());
     if (!format) {
       fmt::print(stderr,
                  "matc lut: error: --format: cannot infer the format from '{}'; give --format "

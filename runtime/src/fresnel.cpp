@@ -4,17 +4,19 @@
 
 namespace matc::runtime {
 
-Rgb evaluate_fresnel(const Coefficients& coefficients, const BasisView& basis, double mu) {
-  const auto b = basis.evaluate(mu);
+Rgb combine(const Coefficients& coefficients, const std::array<double, kBasisSize>& values) {
   Rgb result{};
   for (std::size_t channel = 0; channel < 3; ++channel) {
     double sum = 0.0;
     for (std::size_t i = 0; i < kBasisSize; ++i)
-      sum += coefficients[channel][i] * b[i];
-    // The truncated basis can dip slightly below zero for strong dielectric-like curves.
+      sum += coefficients[channel][i] * values[i];
     result[channel] = std::max(0.0, sum);
   }
   return result;
+}
+
+Rgb evaluate_fresnel(const Coefficients& coefficients, const BasisView& basis, double mu) {
+  return combine(coefficients, basis.evaluate(mu));
 }
 
 }  // namespace matc::runtime

@@ -46,15 +46,7 @@ std::array<double, kBasisSize> sample_lut(const LutView& lut, double ndotv, doub
 
 Rgb evaluate_fbar(const Coefficients& coefficients, const LutView& lut, double ndotv,
                   double roughness) {
-  const auto bbar = sample_lut(lut, ndotv, roughness);
-  Rgb result{};
-  for (std::size_t channel = 0; channel < 3; ++channel) {
-    double sum = 0.0;
-    for (std::size_t i = 0; i < kBasisSize; ++i)
-      sum += coefficients[channel][i] * bbar[i];
-    result[channel] = std::max(0.0, sum);
-  }
-  return result;
+  return combine(coefficients, sample_lut(lut, ndotv, roughness));
 }
 
 }  // namespace matc::runtime

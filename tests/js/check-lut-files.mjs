@@ -7,20 +7,12 @@ import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { read as readKtx2 } from "ktx-parse";
 import parseDds from "parse-dds";
+import { check, finish } from "./report.mjs";
 
 const matc = process.argv[2];
 const dir = mkdtempSync(join(tmpdir(), "matc-lut-"));
 const size = 16;
-let passed = 0;
-let failed = 0;
-function check(ok, message) {
-  if (ok) {
-    passed += 1;
-  } else {
-    failed += 1;
-    console.log(`FAIL ${message}`);
-  }
-}
+
 function bake(name, format, precision) {
   const path = join(dir, name);
   const run = spawnSync(matc, ["lut", "-o", path, "--format", format, "--precision", precision,
@@ -80,5 +72,4 @@ try {
 } finally {
   rmSync(dir, { recursive: true, force: true });
 }
-console.log(`${passed} passed, ${failed} failed`);
-process.exit(failed === 0 ? 0 : 1);
+finish();

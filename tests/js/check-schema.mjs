@@ -6,6 +6,7 @@ import { mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from "n
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import Ajv from "ajv";
+import { check, finish } from "./report.mjs";
 
 const [schemaPath, examplesDir, matc] = process.argv.slice(2);
 // strictRequired would reject the standard `oneOf: [{required: [...]}]` idiom used for "exactly one of".
@@ -55,17 +56,6 @@ const cases = [
   ["string number", `{"name": "a", "ior": {"n": "1.5", "k": 0}}`, false],
 ];
 
-let passed = 0;
-let failed = 0;
-function check(ok, message) {
-  if (ok) {
-    passed += 1;
-  } else {
-    failed += 1;
-    console.log(`FAIL ${message}`);
-  }
-}
-
 for (const file of readdirSync(examplesDir).filter((f) => f.endsWith(".json")).sort()) {
   const valid = validate(JSON.parse(readFileSync(join(examplesDir, file), "utf8")));
   check(valid, `example ${file} violates the schema: ${ajv.errorsText(validate.errors)}`);
@@ -76,5 +66,4 @@ for (const [description, text, expected] of cases) {
   const matcValid = matcAccepts(text);
   check(matcValid === expected, `matc ${matcValid ? "accepts" : "rejects"} '${description}'`);
 }
-console.log(`${passed} passed, ${failed} failed`);
-process.exit(failed === 0 ? 0 : 1);
+finish();

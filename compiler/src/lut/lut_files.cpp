@@ -1,5 +1,7 @@
 #include "matc/lut/lut_files.h"
 
+#include <algorithm>
+
 #include "lut_writers.h"
 #include "matc/lut/energy.h"
 #include "matc/version.h"
@@ -7,11 +9,39 @@
 
 namespace matc {
 
+namespace {
+
+struct FormatInfo {
+  LutFormat format;
+  std::string_view name;
+  std::string_view extension;
+};
+
+constexpr std::array<FormatInfo, 4> kFormats = {{
+    {LutFormat::ktx2, "ktx2", ".ktx2"},
+    {LutFormat::dds, "dds", ".dds"},
+    {LutFormat::raw, "raw", ".bin"},
+    {LutFormat::header, "header", ".h"},
+}};
+
+const FormatInfo& info(LutFormat format) {
+  return *std::find_if(kFormats.begin(), kFormats.end(),
+                       [&](const FormatInfo& f) { return f.format == format; });
+}
+
+}  // namespace
+
 std::optional<LutFormat> lut_format_from_name(std::string_view name) {
-  if (name == "ktx2") return LutFormat::ktx2;
-  if (name == "dds") return LutFormat::dds;
-  if (name == "raw") return LutFormat::raw;
-  if (name == "header") return LutFormat::header;
+  for (const FormatInfo& f : kFormats) {
+    if (f.name == name) return f.format;
+  }
+  return std::nullopt;
+}
+
+std::optional<LutFormat> lut_format_from_extension(std::string_view extension) {
+  for (const FormatInfo& f : kFormats) {
+    if (f.extension == extension) return f.format;
+  }
   return std::nullopt;
 }
 
@@ -22,17 +52,7 @@ std::optional<LutPrecision> lut_precision_from_name(std::string_view name) {
 }
 
 std::string_view lut_format_name(LutFormat format) {
-  switch (format) {
-    case LutFormat::ktx2:
-      return "ktx2";
-    case LutFormat::dds:
-      return "dds";
-    case LutFormat::raw:
-      return "raw";
-    case LutFormat::header:
-      return "header";
-  }
-  return "ktx2";
+  return info(format).name;
 }
 
 std::string_view lut_precision_name(LutPrecision precision) {
@@ -40,17 +60,7 @@ std::string_view lut_precision_name(LutPrecision precision) {
 }
 
 std::string_view lut_file_extension(LutFormat format) {
-  switch (format) {
-    case LutFormat::ktx2:
-      return ".ktx2";
-    case LutFormat::dds:
-      return ".dds";
-    case LutFormat::raw:
-      return ".bin";
-    case LutFormat::header:
-      return ".h";
-  }
-  return ".ktx2";
+  return info(format).extension;
 }
 
 Lut stored_as(Lut lut, LutPrecision precision) {

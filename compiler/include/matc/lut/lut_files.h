@@ -18,6 +18,7 @@ enum class LutFormat { ktx2, dds, raw, header };
 enum class LutPrecision { f16, f32 };
 
 std::optional<LutFormat> lut_format_from_name(std::string_view name);
+std::optional<LutFormat> lut_format_from_extension(std::string_view extension);
 std::optional<LutPrecision> lut_precision_from_name(std::string_view name);
 std::string_view lut_format_name(LutFormat format);
 std::string_view lut_precision_name(LutPrecision precision);

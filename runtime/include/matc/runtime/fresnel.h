@@ -13,6 +13,10 @@ using ChannelCoefficients = std::array<double, kBasisSize>;
 // One row of coefficients per channel: R, G, B.
 using Coefficients = std::array<ChannelCoefficients, 3>;
 
+// max(0, sum_i c_i v_i) per channel: F when v is the basis at a cosine, Fbar when v is the
+// preintegrated basis. The clamp matters where the truncated basis dips below zero.
+Rgb combine(const Coefficients& coefficients, const std::array<double, kBasisSize>& values);
+
 // F(mu) = max(0, sum_i c_i b_i(mu)) per channel, as the generated shaders compute it.
 Rgb evaluate_fresnel(const Coefficients& coefficients, const BasisView& basis, double mu);
 
