@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <stdexcept>
 #include <thread>
 
 #include "matc/lut/microfacet_samples.h"
@@ -71,9 +72,15 @@ std::array<double, runtime::kBasisSize> preintegrate_basis(const runtime::BasisV
 }
 
 Lut preintegrate_lut(const runtime::BasisView& basis, const LutOptions& options) {
+  if (options.size < kMinLutSize || options.size > kMaxLutSize) {
+    throw std::invalid_argument("LUT size must be within [2, 4096]");
+  }
+  if (options.samples < 1 || options.samples > kMaxLutSamples) {
+    throw std::invalid_argument("LUT samples per texel must be within [1, 1048576]");
+  }
   Lut lut;
-  lut.size = std::clamp(options.size, kMinLutSize, kMaxLutSize);
-  lut.samples = std::clamp<std::size_t>(options.samples, 1, kMaxLutSamples);
+  lut.size = options.size;
+  lut.samples = options.samples;
   lut.texels.resize(lut.size * lut.size * runtime::kBasisSize);
 
   const InterleavedBasis interleaved(basis);

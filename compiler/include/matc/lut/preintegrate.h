@@ -10,7 +10,7 @@
 
 namespace matc {
 
-// 128: bilinear reconstruction error 0.002 (64: 0.009); see docs/lut.md.
+// 128: the table's reconstruction error stays well under the basis' own (docs/accuracy.md).
 inline constexpr std::size_t kDefaultLutSize = 128;
 inline constexpr std::size_t kDefaultLutSamples = 1024;
 inline constexpr std::size_t kMinLutSize = 2;
@@ -37,6 +37,7 @@ std::array<double, runtime::kBasisSize> preintegrate_basis(const runtime::BasisV
                                                            double ndotv, double roughness,
                                                            std::size_t samples);
 
+// Throws std::invalid_argument when size or samples are outside the limits above.
 Lut preintegrate_lut(const runtime::BasisView& basis, const LutOptions& options = {});
 
 }  // namespace matc
