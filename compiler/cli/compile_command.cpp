@@ -99,10 +99,10 @@ int run_compile(const CompileOptions& options) {
     const fs::path path = output_directory / ("matc_lut" + std::string(lut_file_extension(format)));
     try {
       fs::create_directories(output_directory);
-      const std::size_t written = write_lut_files(path, bake_lut(basis, options.lut.bake), format,
-                                                  precision_of(options.lut));
-      summary.written += written;
-      summary.unchanged += 2 - written;
+      const LutWriteCounts counts = write_lut_files(path, bake_lut(basis, options.lut.bake), format,
+                                                    precision_of(options.lut));
+      summary.written += counts.written;
+      summary.unchanged += counts.unchanged;
     } catch (const std::exception& error) {
       fmt::print(stderr, "{}: error: {}\n", path.string(), error.what());
       ++summary.failed;

@@ -21,10 +21,12 @@ int run_lut(const LutCommandOptions& options) {
   }
   const BakedLut baked = bake_lut(runtime::paper_basis(), options.lut.bake);
   try {
-    const std::size_t written = write_lut_files(output, baked, *format, precision_of(options.lut));
-    fmt::print(stderr, "matc lut: {} ({}x{}, {} samples per texel, {}, {}): {} file(s) written\n",
+    const LutWriteCounts counts =
+        write_lut_files(output, baked, *format, precision_of(options.lut));
+    fmt::print(stderr,
+               "matc lut: {} ({}x{}, {} samples per texel, {}, {}): {} written, {} unchanged\n",
                output.string(), baked.lut.size, baked.lut.size, baked.lut.samples,
-               lut_format_name(*format), options.lut.precision, written);
+               lut_format_name(*format), options.lut.precision, counts.written, counts.unchanged);
   } catch (const std::exception& error) {
     fmt::print(stderr, "{}: error: {}\n", output.string(), error.what());
     return kExitInputError;

@@ -21,17 +21,18 @@ LutPrecision precision_of(const LutCliOptions& options) {
   return *lut_precision_from_name(options.precision);
 }
 
-std::size_t write_lut_files(const std::filesystem::path& path, const BakedLut& baked,
-                            LutFormat format, LutPrecision precision) {
+LutWriteCounts write_lut_files(const std::filesystem::path& path, const BakedLut& baked,
+                               LutFormat format, LutPrecision precision) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  std::size_t written = 0;
-  written +=
-      write_file_atomically(path, encode_lut(baked, format, precision)) == WriteOutcome::written;
   std::filesystem::path manifest = path;
   manifest += ".json";
-  written += write_file_atomically(manifest, format_json(lut_manifest(baked, format, precision))) ==
-             WriteOutcome::written;
-  return written;
+  LutWriteCounts counts;
+  for (const auto outcome :
+       {write_file_atomically(path, encode_lut(baked, format, precision)),
+        write_file_atomically(manifest, format_json(lut_manifest(baked, format, precision)))}) {
+    ++(outcome == WriteOutcome::written ? counts.written : counts.unchanged);
+  }
+  return counts;
 }
 
 }  // namespace matc::cli

@@ -20,9 +20,14 @@ void add_lut_options(CLI::App& app, LutCliOptions& options, const std::string& p
 
 LutPrecision precision_of(const LutCliOptions& options);
 
-// Writes `path` and its manifest `path + ".json"` atomically; returns how many files changed.
+struct LutWriteCounts {
+  std::size_t written = 0;
+  std::size_t unchanged = 0;  // already held the same bytes, left untouched
+};
+
+// Writes `path` and its manifest `path + ".json"` atomically.
 // Throws std::runtime_error on failure.
-std::size_t write_lut_files(const std::filesystem::path& path, const BakedLut& baked,
-                            LutFormat format, LutPrecision precision);
+LutWriteCounts write_lut_files(const std::filesystem::path& path, const BakedLut& baked,
+                               LutFormat format, LutPrecision precision);
 
 }  // namespace matc::cli

@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
   app.add_flag("-q,--quiet", compile.quiet, "Do not print the summary line");
   app.add_option("--lut", compile.lut_format,
                  "Also write the preintegrated table as DIR/matc_lut.<ext> (+ .json manifest)")
-      ->check(CLI::IsMember({"ktx2", "dds", "raw", "header"}));
+      ->check(CLI::IsMember(matc::lut_format_names()));
   add_lut_options(app, compile.lut, "lut-");
 
   EvalOptions eval;
@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
   lut_command->add_option("-o,--output", lut.output, "Output file; a .json manifest goes beside it")
       ->required();
   lut_command->add_option("--format", lut.format, "File format (default: from the extension)")
-      ->check(CLI::IsMember({"ktx2", "dds", "raw", "header"}));
+      ->check(CLI::IsMember(matc::lut_format_names()));
   add_lut_options(*lut_command, lut.lut, "");
 
   try {

@@ -31,6 +31,13 @@ const FormatInfo& info(LutFormat format) {
 
 }  // namespace
 
+std::vector<std::string> lut_format_names() {
+  std::vector<std::string> names;
+  for (const FormatInfo& f : kFormats)
+    names.emplace_back(f.name);
+  return names;
+}
+
 std::optional<LutFormat> lut_format_from_name(std::string_view name) {
   for (const FormatInfo& f : kFormats) {
     if (f.name == name) return f.format;

@@ -17,6 +17,8 @@ namespace matc {
 enum class LutFormat { ktx2, dds, raw, header };
 enum class LutPrecision { f16, f32 };
 
+// "ktx2", "dds", "raw", "header": the names --format and --lut accept.
+std::vector<std::string> lut_format_names();
 std::optional<LutFormat> lut_format_from_name(std::string_view name);
 std::optional<LutFormat> lut_format_from_extension(std::string_view extension);
 std::optional<LutPrecision> lut_precision_from_name(std::string_view name);
