@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "matc/basis/basis_fit.h"
+#include "matc/basis/basis_polynomial_fit.h"
 #include "matc/runtime/basis.h"
+#include "matc/runtime/basis_polynomial.h"
 
 namespace matc {
 namespace {
@@ -93,6 +95,55 @@ TEST(PaperBasis, RegenerationReproducesTheCheckedInTable) {
           << "runtime/src/paper_basis_table.cpp`";
     }
   }
+  // The polynomial is refitted from the refitted tables; a float ulp of drift is tolerated.
+  const runtime::BasisPolynomial& shipped_polynomial = runtime::paper_basis_polynomial();
+  for (std::size_t s = 0; s < runtime::kPolynomialSegments; ++s) {
+    for (std::size_t p = 0; p <= runtime::kPolynomialDegree; ++p) {
+      for (std::size_t i = 0; i < 3; ++i) {
+        const double shipped_value = shipped_polynomial[s][p][i];
+        ASSERT_NEAR(fitted.polynomial[s][p][i], shipped_value,
+                    1e-7 * std::abs(shipped_value) + 1e-12)
+            << "segment " << s << ", t^" << runtime::kPolynomialDegree - p << ", b_" << i + 1;
+      }
+    }
+  }
+}
+
+// The bound for the shaders' basis: within 1e-4 of the shipped table where the table holds
+// data. Between samples the table is a linear interpolation, itself ~1.7e-4 off the smooth curve
+// for b_3 near grazing (where it bends fastest, measured with higher-degree fits), so the two may
+// differ by up to 3e-4 there.
+TEST(BasisPolynomial, MatchesTheShippedTableWithin1e4) {
+  const PolynomialFitError error =
+      polynomial_fit_error(runtime::paper_basis_polynomial(), runtime::paper_basis());
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_LE(error.at_grid_points[i], 1e-4) << "b_" << i + 1;
+    EXPECT_LE(error.between_grid_points[i], 3e-4) << "b_" << i + 1;
+  }
+}
+
+TEST(BasisPolynomial, KeepsTheBasisEndpointsThatTheCoefficientsRelyOn) {
+  const auto& polynomial = runtime::paper_basis_polynomial();
+  const auto grazing = runtime::evaluate_basis_polynomial(polynomial, 0.0);
+  const auto normal = runtime::evaluate_basis_polynomial(polynomial, 1.0);
+  EXPECT_EQ(grazing[0], 1.0);
+  EXPECT_NEAR(grazing[1], 1.0, 1e-4);
+  EXPECT_NEAR(normal[1], 0.0, 1e-4);
+  for (std::size_t i = 2; i < 4; ++i) {
+    EXPECT_NEAR(grazing[i], 0.0, 1e-4);
+    EXPECT_NEAR(normal[i], 0.0, 1e-4);
+  }
+}
+
+TEST(BasisPolynomial, SegmentsSplitTheSquareRootOfTheCosineEvenly) {
+  EXPECT_EQ(runtime::polynomial_position(0.0).segment, 0u);
+  EXPECT_EQ(runtime::polynomial_position(0.0).t, -1.0);
+  EXPECT_EQ(runtime::polynomial_position(1.0 / 16.0).segment, 1u);
+  EXPECT_EQ(runtime::polynomial_position(1.0 / 16.0).t, -1.0);
+  EXPECT_EQ(runtime::polynomial_position(1.0).segment, 3u);
+  EXPECT_EQ(runtime::polynomial_position(1.0).t, 1.0);
+  EXPECT_EQ(runtime::polynomial_position(-0.5).segment, 0u);
+  EXPECT_EQ(runtime::polynomial_position(2.0).t, 1.0);
 }
 
 TEST(PaperBasis, GeneratedSourceRoundTripsEveryDigit) {

@@ -9,6 +9,7 @@
 #include "atomic_file.h"
 #include "commands.h"
 #include "matc/basis/basis_fit.h"
+#include "matc/basis/basis_polynomial_fit.h"
 #include "matc/runtime/basis.h"
 
 namespace matc::cli {
@@ -21,6 +22,14 @@ int run_basis(const BasisOptions& options) {
     fmt::print("probes: mu_1 = {:.4f} (theta {:.3f} rad), mu_2 = {:.4f} (theta {:.3f} rad)\n",
                basis.probe_mu(0), std::acos(basis.probe_mu(0)), basis.probe_mu(1),
                std::acos(basis.probe_mu(1)));
+    const PolynomialFitError error = polynomial_fit_error(runtime::paper_basis_polynomial(), basis);
+    fmt::print(
+        "shader form: {} polynomials of degree {} in sqrt(mu); max |polynomial - table| for "
+        "b_1, b_2, b_3: {:.1e}, {:.1e}, {:.1e} at the samples, {:.1e}, {:.1e}, {:.1e} between "
+        "them\n",
+        runtime::kPolynomialSegments, runtime::kPolynomialDegree, error.at_grid_points[0],
+        error.at_grid_points[1], error.at_grid_points[2], error.between_grid_points[0],
+        error.between_grid_points[1], error.between_grid_points[2]);
     return kExitSuccess;
   }
   // Built apart and moved in: ordered_json keeps members in a vector, so references into `out`

@@ -19,4 +19,8 @@ Rgb evaluate_fresnel(const Coefficients& coefficients, const BasisView& basis, d
   return combine(coefficients, basis.evaluate(mu));
 }
 
+Rgb evaluate_fresnel(const Coefficients& coefficients, const BasisPolynomial& basis, double mu) {
+  return combine(coefficients, evaluate_basis_polynomial(basis, mu));
+}
+
 }  // namespace matc::runtime

@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 #include <Eigen/SVD>
 
+#include "matc/basis/basis_polynomial_fit.h"
 #include "matc/optics/fresnel.h"
 #include "matc/optics/gulbrandsen.h"
 #include "matc/version.h"
@@ -88,6 +89,7 @@ FittedBasis fit_paper_basis(const PaperBasisOptions& options) {
   const std::size_t b3_min = index_of_min(basis.tables[2]);
   const std::size_t probe2 = distance(b3_max, probe1) > distance(b3_min, probe1) ? b3_max : b3_min;
   basis.probe_indices = {probe1, probe2};
+  basis.polynomial = fit_basis_polynomial(basis.view());
   return basis;
 }
 
@@ -97,7 +99,8 @@ std::string basis_table_source(const FittedBasis& basis, const PaperBasisOptions
       "// Training set: {} dielectrics (eta in [{}, {}]) and {} Gulbrandsen conductors (g = 1),\n"
       "// {} samples of mu = cos(theta) in [0, 1].\n"
       "// clang-format off\n"
-      "#include \"matc/runtime/basis.h\"\n\n"
+      "#include \"matc/runtime/basis.h\"\n"
+      "#include \"matc/runtime/basis_polynomial.h\"\n\n"
       "namespace matc::runtime {{\n"
       "namespace {{\n\n",
       kVersion, options.dielectric_curves, options.eta_min, options.eta_max,
@@ -112,8 +115,20 @@ std::string basis_table_source(const FittedBasis& basis, const PaperBasisOptions
     out += "};\n\n";
   }
   out += fmt::format(
+      "// The shaders' form: per segment, (b_1, b_2, b_3) coefficients of t^{} .. t^0.\n"
+      "constexpr BasisPolynomial kPolynomial = {{{{\n",
+      runtime::kPolynomialDegree);
+  for (const runtime::PolynomialSegment& segment : basis.polynomial) {
+    out += "  {{\n";
+    for (const auto& triple : segment)
+      out += fmt::format("    {{{}, {}, {}}},\n", triple[0], triple[1], triple[2]);
+    out += "  }},\n";
+  }
+  out += fmt::format(
+      "}}}};\n\n"
       "}}  // namespace\n\n"
       "BasisView paper_basis() {{ return {{{{kB1, kB2, kB3}}, {{{}, {}}}}}; }}\n\n"
+      "const BasisPolynomial& paper_basis_polynomial() {{ return kPolynomial; }}\n\n"
       "}}  // namespace matc::runtime\n",
       basis.probe_indices[0], basis.probe_indices[1]);
   return out;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "matc/runtime/basis.h"
+#include "matc/runtime/basis_polynomial.h"
 
 namespace matc {
 
@@ -26,6 +27,8 @@ struct PaperBasisOptions {
 struct FittedBasis {
   std::array<std::vector<double>, runtime::kBasisSize - 1> tables;  // b_1, b_2, b_3
   std::array<std::size_t, 2> probe_indices{};
+  // The shaders' form of the tables (fit_basis_polynomial).
+  runtime::BasisPolynomial polynomial{};
 
   runtime::BasisView view() const;
 };
@@ -33,7 +36,7 @@ struct FittedBasis {
 // Each curve is normalised to (F - F0) / (1 - F0). b_1 = |first right singular vector| scaled to
 // max 1; b_2, b_3 = first two right singular vectors of the residual (normalised curve - b_1),
 // each scaled so that its largest-magnitude entry is +1. Probes: mu_1 = argmax b_2, mu_2 = the
-// extremum of b_3 farther from mu_1.
+// extremum of b_3 farther from mu_1. The polynomial form is fitted to the resulting tables.
 FittedBasis fit_paper_basis(const PaperBasisOptions& options = {});
 
 // The C++ source of runtime/src/paper_basis_table.cpp for `basis` (what `matc basis fit` writes).

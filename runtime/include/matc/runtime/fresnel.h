@@ -4,6 +4,7 @@
 #include <array>
 
 #include "matc/runtime/basis.h"
+#include "matc/runtime/basis_polynomial.h"
 
 namespace matc::runtime {
 
@@ -17,7 +18,10 @@ using Coefficients = std::array<ChannelCoefficients, 3>;
 // preintegrated basis. The clamp matters where the truncated basis dips below zero.
 Rgb combine(const Coefficients& coefficients, const std::array<double, kBasisSize>& values);
 
-// F(mu) = max(0, sum_i c_i b_i(mu)) per channel, as the generated shaders compute it.
+// F(mu) = max(0, sum_i c_i b_i(mu)) per channel with the tabulated basis (what the coefficient
+// solve sees).
 Rgb evaluate_fresnel(const Coefficients& coefficients, const BasisView& basis, double mu);
+// ... and with the shaders' polynomial basis: what the generated shaders compute.
+Rgb evaluate_fresnel(const Coefficients& coefficients, const BasisPolynomial& basis, double mu);
 
 }  // namespace matc::runtime
