@@ -121,12 +121,16 @@ TEST_F(MatcCli, SameInputsGiveSameBytesAndUnchangedFilesAreNotRewritten) {
   const auto first_time = fs::last_write_time(dir_ / "a" / "good.json");
   const CommandResult again = run({"-o", "a", "m/good.json"});
   ASSERT_EQ(again.exit_code, 0);
-  EXPECT_NE(again.err.find("0 files written, 1 unchanged"), std::string::npos) << again.err;
+  // good.{json,glsl,hlsl,spv,h}, matc_fresnel.{glsl,hlsl,spv}, matc_lut.ktx2(.json), the manifest.
+  EXPECT_NE(again.err.find("0 files written, 11 unchanged"), std::string::npos) << again.err;
   EXPECT_EQ(fs::last_write_time(dir_ / "a" / "good.json"), first_time);
   ASSERT_EQ(run({"-o", "b", "m/good.json"}).exit_code, 0);
-  EXPECT_EQ(read_file(dir_ / "a" / "good.json"), read_file(dir_ / "b" / "good.json"));
+  for (const auto& entry : fs::directory_iterator(dir_ / "a")) {
+    const fs::path name = entry.path().filename();
+    EXPECT_EQ(read_file(entry.path()), read_file(dir_ / "b" / name)) << name;
+  }
   // No temporary files are left behind.
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "a"), fs::directory_iterator()), 1);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "a"), fs::directory_iterator()), 11);
 }
 
 TEST_F(MatcCli, BadMaterialExitsOneWithLocatedErrorAndWritesNothing) {
@@ -271,14 +275,17 @@ TEST_F(MatcCli, LutFormatFollowsTheExtensionUnlessGiven) {
 
 TEST_F(MatcCli, BatchBuildCanEmitTheLut) {
   write_file(dir_ / "good.json", kGood);
-  const std::vector<std::string> args = {"-o", "out",           "--lut", "dds",      "--lut-size",
-                                         "8",  "--lut-samples", "32",    "good.json"};
+  const std::vector<std::string> args = {
+      "-o",         "out", "--emit",        "json,lut", "--lut",    "dds",
+      "--lut-size", "8",   "--lut-samples", "32",       "good.json"};
   const CommandResult first = run(args);
   ASSERT_EQ(first.exit_code, 0) << first.err;
   EXPECT_TRUE(fs::exists(dir_ / "out" / "matc_lut.dds"));
   EXPECT_TRUE(fs::exists(dir_ / "out" / "matc_lut.dds.json"));
   const CommandResult second = run(args);
-  EXPECT_NE(second.err.find("0 files written, 3 unchanged"), std::string::npos) << second.err;
+  // good.json, matc_lut.dds and its .json, matc_manifest.json.
+  EXPECT_NE(second.err.find("0 files written, 4 unchanged"), std::string::npos) << second.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "good.glsl"));
   const auto compiled = nlohmann::json::parse(read_file(dir_ / "out" / "good.json"));
   EXPECT_EQ(compiled["energy_compensation"]["F_avg"].size(), 3u);
 }

@@ -75,8 +75,8 @@ Summary summarise(ErrorStats FitAccuracy::*model) {
   for (const MetalPreset& preset : metal_presets()) {
     if (!preset.caveat.empty()) continue;
     const SpectralCurve curve(preset_spectrum(preset));
-    const FitAccuracy accuracy =
-        measure_accuracy(curve, solve_coefficients(curve, kBasis), kBasis, 501);
+    const FitAccuracy accuracy = measure_accuracy(curve, solve_coefficients(curve, kBasis),
+                                                  runtime::paper_basis_polynomial(), 501);
     for (const double max_error : (accuracy.*model).max_abs) {
       summary.worst = std::max(summary.worst, max_error);
       summary.mean_of_max += max_error;
@@ -105,7 +105,8 @@ TEST(Accuracy, ReproducesThePublishedFiguresOnMeasuredMetals) {
 
 TEST(Accuracy, RmsNeverExceedsMax) {
   const SpectralCurve curve(preset_spectrum(*find_metal_preset("Cr")));
-  const FitAccuracy accuracy = measure_accuracy(curve, solve_coefficients(curve, kBasis), kBasis);
+  const FitAccuracy accuracy =
+      measure_accuracy(curve, solve_coefficients(curve, kBasis), runtime::paper_basis_polynomial());
   for (const ErrorStats* stats : {&accuracy.decomposition, &accuracy.schlick, &accuracy.f82_tint}) {
     for (std::size_t ch = 0; ch < 3; ++ch) {
       EXPECT_GT(stats->rms[ch], 0.0);

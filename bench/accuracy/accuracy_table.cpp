@@ -44,7 +44,8 @@ struct Totals {
 
 FitAccuracy measure(const matc::ReflectanceCurve& curve) {
   const auto basis = matc::runtime::paper_basis();
-  return matc::measure_accuracy(curve, matc::solve_coefficients(curve, basis), basis);
+  return matc::measure_accuracy(curve, matc::solve_coefficients(curve, basis),
+                                matc::runtime::paper_basis_polynomial());
 }
 
 // The per-metal table (unless summary_only) and the summary over the reliable metals.

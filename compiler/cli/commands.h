@@ -18,8 +18,11 @@ struct CompileOptions {
   std::string output_directory = "matc-out";
   bool keep_going = false;
   bool quiet = false;
-  std::string lut_format;  // empty: no LUT; else also write matc_lut.<ext> and its manifest
+  std::vector<std::string> emit;  // output kinds; empty: all
+  std::string lut_format = "ktx2";
   LutCliOptions lut;
+  bool embed_lut = false;
+  std::size_t embed_lut_size = 32;
 };
 int run_compile(const CompileOptions& options);
 

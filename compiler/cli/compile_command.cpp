@@ -2,6 +2,7 @@
 #include <cctype>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 #include <fmt/core.h>
@@ -9,6 +10,7 @@
 #include "atomic_file.h"
 #include "commands.h"
 #include "matc/compile.h"
+#include "matc/emit/build.h"
 #include "matc/json_format.h"
 #include "matc/material/parse.h"
 #include "print_diagnostics.h"
@@ -31,16 +33,47 @@ std::string identity(const fs::path& path) {
   return error ? path.lexically_normal().string() : canonical.string();
 }
 
+// Stems of the files every build writes once; a material of that name would overwrite them.
+const std::set<std::string>& reserved_names() {
+  static const std::set<std::string> names = {"matc_fresnel", "matc_lut", "matc_manifest"};
+  return names;
+}
+
+// Every file a material of this name may write, whatever --emit says.
+std::vector<fs::path> possible_outputs(const fs::path& directory, const std::string& name) {
+  std::vector<fs::path> paths;
+  for (const char* extension : {".json", ".glsl", ".hlsl", ".spv", ".h"})
+    paths.push_back(directory / (name + extension));
+  return paths;
+}
+
+BuildOptions build_options(const CompileOptions& options) {
+  BuildOptions build;
+  if (!options.emit.empty()) {
+    build.emit.clear();
+    for (const std::string& name : options.emit)
+      build.emit.insert(*output_kind_from_name(name));
+  }
+  build.lut = options.lut.bake;
+  build.lut_format = *lut_format_from_name(options.lut_format);
+  build.lut_precision = precision_of(options.lut);
+  build.embedded_lut_size = options.embed_lut ? options.embed_lut_size : 0;
+  return build;
+}
+
 struct BatchSummary {
   std::size_t compiled = 0;
   std::size_t written = 0;
   std::size_t unchanged = 0;
   std::size_t failed = 0;
+
+  void count(WriteOutcome outcome) { ++(outcome == WriteOutcome::written ? written : unchanged); }
 };
 
 }  // namespace
 
 int run_compile(const CompileOptions& options) {
+  const Build build(build_options(options));
   const runtime::BasisView basis = runtime::paper_basis();
   const fs::path output_directory(options.output_directory);
   std::map<std::string, std::string> inputs_by_identity;
@@ -51,6 +84,7 @@ int run_compile(const CompileOptions& options) {
   std::map<std::string, const Material*> names_in_use;
   std::vector<Material> materials;
   materials.reserve(options.files.size());
+  std::vector<MaterialOutputs> written_materials;
   BatchSummary summary;
 
   for (const std::string& file : options.files) {
@@ -58,32 +92,42 @@ int run_compile(const CompileOptions& options) {
     Diagnostics diagnostics = std::move(parsed.diagnostics);
     if (parsed.material) {
       const Material& material = materials.emplace_back(std::move(*parsed.material));
-      const fs::path output = output_directory / (material.name + ".json");
-      if (const auto clash = names_in_use.find(lowercase(material.name));
-          clash != names_in_use.end()) {
+      const std::vector<fs::path> outputs = possible_outputs(output_directory, material.name);
+      const auto overwritten = std::find_if(outputs.begin(), outputs.end(), [&](const fs::path& p) {
+        return inputs_by_identity.contains(identity(p));
+      });
+      if (reserved_names().contains(lowercase(material.name))) {
+        diagnostics.error(material.name_location, "name",
+                          fmt::format("'{}' names a file every build writes", material.name),
+                          "a name other than matc_fresnel, matc_lut and matc_manifest "
+                          "(ignoring case)");
+      } else if (const auto clash = names_in_use.find(lowercase(material.name));
+                 clash != names_in_use.end()) {
         diagnostics.error(material.name_location, "name",
                           fmt::format("'{}' is already used by {} ({}:{})", material.name,
                                       clash->second->source_path, clash->second->name_location.line,
                                       clash->second->name_location.column),
                           "names unique within a build, ignoring case (they name output files)");
-      } else if (const auto input = inputs_by_identity.find(identity(output));
-                 input != inputs_by_identity.end()) {
+      } else if (overwritten != outputs.end()) {
         diagnostics.error(
             material.name_location, "name",
-            fmt::format("output '{}' would overwrite the input {}", output.string(), input->second),
+            fmt::format("output '{}' would overwrite the input {}", overwritten->string(),
+                        inputs_by_identity.at(identity(*overwritten))),
             "an output directory (-o) that holds no input file");
       } else {
         names_in_use.emplace(lowercase(material.name), &material);
         try {
-          const CompiledMaterial compiled = compile_material(material, basis);
-          const std::string bytes = format_json(compiled_material_json(compiled, basis));
+          // Every byte is generated before the first file is written: a failure leaves no
+          // partial set of outputs for this material.
+          MaterialOutputs outputs_of_material =
+              build.material_outputs(compile_material(material, basis));
           fs::create_directories(output_directory);
-          const WriteOutcome outcome = write_file_atomically(output, bytes);
+          for (const OutputFile& output : outputs_of_material.files)
+            summary.count(write_file_atomically(output_directory / output.name, output.bytes));
           ++summary.compiled;
-          ++(outcome == WriteOutcome::written ? summary.written : summary.unchanged);
+          written_materials.push_back(std::move(outputs_of_material));
         } catch (const std::exception& error) {
-          diagnostics.error({output.string(), 0, 0}, "", error.what(),
-                            "a writable output directory (-o)");
+          diagnostics.error({file, 0, 0}, "", error.what(), "a writable output directory (-o)");
         }
       }
     }
@@ -94,17 +138,19 @@ int run_compile(const CompileOptions& options) {
     }
   }
 
-  if (!options.lut_format.empty() && (summary.failed == 0 || options.keep_going)) {
-    const LutFormat format = *lut_format_from_name(options.lut_format);
-    const fs::path path = output_directory / ("matc_lut" + std::string(lut_file_extension(format)));
+  if (summary.failed == 0 || options.keep_going) {
     try {
       fs::create_directories(output_directory);
-      const LutWriteCounts counts = write_lut_files(path, bake_lut(basis, options.lut.bake), format,
-                                                    precision_of(options.lut));
-      summary.written += counts.written;
-      summary.unchanged += counts.unchanged;
+      std::vector<OutputFile> shared = build.shared_outputs();
+      for (const OutputFile& output : shared)
+        summary.count(write_file_atomically(output_directory / output.name, output.bytes));
+      if (build.options().emit.contains(OutputKind::json)) {
+        summary.count(
+            write_file_atomically(output_directory / manifest_file_name(),
+                                  format_json(build.manifest(shared, written_materials))));
+      }
     } catch (const std::exception& error) {
-      fmt::print(stderr, "{}: error: {}\n", path.string(), error.what());
+      fmt::print(stderr, "{}: error: {}\n", output_directory.string(), error.what());
       ++summary.failed;
     }
   }

@@ -1,4 +1,4 @@
-// matc: compiles material files into Fresnel coefficients (and, later, shaders and LUTs).
+// matc: compiles material files into Fresnel coefficients, shaders, SPIR-V, headers and the LUT.
 #include <cstdio>
 #include <exception>
 
@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
+#include "matc/emit/build.h"
 #include "matc/version.h"
 
 int main(int argc, char** argv) {
@@ -17,15 +18,24 @@ int main(int argc, char** argv) {
 
   CompileOptions compile;
   app.add_option("files", compile.files, "Material files (.json) to compile");
-  app.add_option("-o,--output", compile.output_directory,
-                 "Directory for <name>.json outputs (created if missing)")
+  app.add_option("-o,--output", compile.output_directory, "Output directory (created if missing)")
       ->capture_default_str();
   app.add_flag("-k,--keep-going", compile.keep_going,
                "Compile the remaining files after one fails (still exits 1)");
   app.add_flag("-q,--quiet", compile.quiet, "Do not print the summary line");
-  app.add_option("--lut", compile.lut_format,
-                 "Also write the preintegrated table as DIR/matc_lut.<ext> (+ .json manifest)")
+  app.add_option("--emit", compile.emit,
+                 "Outputs to write, comma-separated (default: all): shader snippets, SPIR-V, "
+                 "C headers, JSON manifests, the LUT")
+      ->delimiter(',')
+      ->check(CLI::IsMember(matc::output_kind_names()));
+  app.add_option("--lut", compile.lut_format, "File format of the table DIR/matc_lut.<ext>")
+      ->capture_default_str()
       ->check(CLI::IsMember(matc::lut_format_names()));
+  app.add_flag("--embed-lut", compile.embed_lut,
+               "Also embed a small table in matc_fresnel.glsl/.hlsl as a constant array");
+  app.add_option("--embed-lut-size", compile.embed_lut_size, "Width and height of that table")
+      ->capture_default_str()
+      ->check(CLI::Range(matc::kMinLutSize, matc::kMaxEmbeddedLutSize));
   add_lut_options(app, compile.lut, "lut-");
 
   EvalOptions eval;

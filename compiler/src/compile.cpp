@@ -62,7 +62,8 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
   CompiledMaterial compiled;
   compiled.material = material;
   compiled.coefficients = solve_coefficients(*curve, basis);
-  compiled.accuracy = measure_accuracy(*curve, compiled.coefficients, basis);
+  compiled.accuracy =
+      measure_accuracy(*curve, compiled.coefficients, runtime::paper_basis_polynomial());
   compiled.f0 = curve->at(1.0);
   compiled.f82 = curve->at(kF82MuBar);
   compiled.average_fresnel =

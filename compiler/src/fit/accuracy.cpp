@@ -36,7 +36,7 @@ class ErrorAccumulator {
 
 FitAccuracy measure_accuracy(const ReflectanceCurve& curve,
                              const runtime::Coefficients& coefficients,
-                             const runtime::BasisView& basis, std::size_t samples) {
+                             const runtime::BasisPolynomial& shader_basis, std::size_t samples) {
   const Rgb f0 = curve.at(1.0);
   const Rgb f82 = curve.at(kF82MuBar);
   ErrorAccumulator ours;
@@ -51,7 +51,7 @@ FitAccuracy measure_accuracy(const ReflectanceCurve& curve,
       schlick_value[c] = fresnel_schlick(mu, f0[c]);
       f82_value[c] = fresnel_f82_tint(mu, f0[c], f82[c]);
     }
-    ours.add(runtime::evaluate_fresnel(coefficients, basis, mu), exact);
+    ours.add(runtime::evaluate_fresnel(coefficients, shader_basis, mu), exact);
     schlick.add(schlick_value, exact);
     f82_tint.add(f82_value, exact);
   }

@@ -4,7 +4,7 @@
 #include <cstddef>
 
 #include "matc/optics/reflectance_curve.h"
-#include "matc/runtime/basis.h"
+#include "matc/runtime/basis_polynomial.h"
 #include "matc/runtime/fresnel.h"
 
 namespace matc {
@@ -28,7 +28,7 @@ struct FitAccuracy {
 
 FitAccuracy measure_accuracy(const ReflectanceCurve& curve,
                              const runtime::Coefficients& coefficients,
-                             const runtime::BasisView& basis,
+                             const runtime::BasisPolynomial& shader_basis,
                              std::size_t samples = kAccuracySamples);
 
 }  // namespace matc

@@ -1,0 +1,108 @@
+// Everything one `matc` run writes: the shared library, the LUT, and per material its snippets,
+// SPIR-V, C header and manifest. The CLI decides where files go; this decides their bytes.
+#pragma once
+
+#include <optional>
+#include <set>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "matc/compile.h"
+#include "matc/emit/c_header.h"
+#include "matc/emit/shader_literals.h"
+#include "matc/lut/lut_files.h"
+#include "matc/spirv/shader_compiler.h"
+
+namespace matc {
+
+enum class OutputKind { glsl, hlsl, spirv, header, json, lut };
+
+// "glsl", "hlsl", "spirv", "header", "json", "lut": the names --emit accepts.
+std::vector<std::string> output_kind_names();
+std::optional<OutputKind> output_kind_from_name(std::string_view name);
+
+inline constexpr std::size_t kMaxEmbeddedLutSize = 64;
+
+struct BuildOptions {
+  std::set<OutputKind> emit = {OutputKind::glsl,   OutputKind::hlsl, OutputKind::spirv,
+                               OutputKind::header, OutputKind::json, OutputKind::lut};
+  LutOptions lut;
+  LutFormat lut_format = LutFormat::ktx2;
+  LutPrecision lut_precision = LutPrecision::f32;
+  std::size_t embedded_lut_size = 0;  // --embed-lut: 0 for none, else 2..kMaxEmbeddedLutSize
+};
+
+struct OutputFile {
+  std::string name;  // a plain file name inside the output directory
+  std::string bytes;
+};
+
+struct MaterialOutputs {
+  std::string name;
+  std::string source_path;
+  std::string inputs_hash;
+  std::vector<OutputFile> files;
+};
+
+class Build {
+ public:
+  // Bakes the table(s) and generates the shared library. Throws std::invalid_argument for options
+  // out of range.
+  explicit Build(BuildOptions options);
+
+  const BuildOptions& options() const { return options_; }
+  const BakedLut& lut() const { return lut_; }
+  // The table as the written file stores it (f16 rounding), what a renderer samples.
+  const Lut& stored_lut() const { return stored_lut_; }
+  const Lut* embedded_lut() const { return embedded_lut_ ? &*embedded_lut_ : nullptr; }
+  const std::string& inputs_hash() const { return inputs_hash_; }
+
+  const std::string& library_source(ShaderLanguage language) const;
+  std::string material_source(ShaderLanguage language, const CompiledMaterial& compiled) const;
+
+  // The hash of what a material's outputs derive from: matc's version, these options, the
+  // material file and any spectral file it names. Throws std::runtime_error if one is unreadable.
+  std::string material_inputs_hash(const Material& material) const;
+
+  // The files matc_fresnel.{glsl,hlsl,spv} and matc_lut.<ext> (+ .json) the options select.
+  std::vector<OutputFile> shared_outputs() const;
+  // <name>.{glsl,hlsl,spv,h,json} as selected.
+  MaterialOutputs material_outputs(const CompiledMaterial& compiled) const;
+
+  // The linkable library module of one material (exports matc_fresnel_<name> and
+  // matc_fresnel_preintegrated_<name>), optimised and validated.
+  SpirvWords material_library_module(const CompiledMaterial& compiled) const;
+  // The complete compute module (emit/validation_kernel.h) from either front end, optimised and
+  // validated for Vulkan 1.1.
+  SpirvWords validation_module(ShaderLanguage language, const CompiledMaterial& compiled) const;
+
+  // matc_manifest.json: version, options, and every file written with its hash.
+  nlohmann::ordered_json manifest(const std::vector<OutputFile>& shared,
+                                  std::span<const MaterialOutputs> materials) const;
+
+ private:
+  LutReference lut_reference() const;
+  std::string options_key() const;
+
+  BuildOptions options_;
+  BakedLut lut_;
+  Lut stored_lut_;
+  std::optional<Lut> embedded_lut_;
+  std::string inputs_hash_;
+  std::string lut_file_bytes_;
+  std::string glsl_library_;
+  std::string hlsl_library_;
+};
+
+// "matc_manifest.json".
+std::string_view manifest_file_name();
+
+// The names a library module exports.
+std::vector<std::string> shared_library_exports(bool embedded_lut);
+std::vector<std::string> material_library_exports(std::string_view material_name);
+
+}  // namespace matc

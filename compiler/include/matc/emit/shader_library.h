@@ -1,0 +1,24 @@
+// The shared shader library matc_fresnel.glsl / .hlsl: basis, F, LUT lookup, energy compensation.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "matc/emit/shader_literals.h"
+#include "matc/lut/preintegrate.h"
+#include "matc/runtime/basis_polynomial.h"
+
+namespace matc {
+
+struct ShaderLibraryOptions {
+  std::size_t lut_size = LutOptions{}.size;  // the table the build writes (MATC_LUT_SIZE)
+  // A small table to embed as a constant array (--embed-lut); null for none.
+  const Lut* embedded_lut = nullptr;
+};
+
+std::string shader_library_source(ShaderLanguage language,
+                                  const runtime::BasisPolynomial& polynomial,
+                                  const ShaderLibraryOptions& options,
+                                  std::string_view inputs_hash);
+
+}  // namespace matc

@@ -1,0 +1,21 @@
+// The compute kernel that runs one material's generated code on a Vulkan device (templates/
+// */validate.*): bindings 0 queries (vec4 mu, NdotV, roughness, -), 1 results (three vec4 per
+// query: F, Fbar through the sampler, Fbar from the embedded table or zero), 2 the table as a
+// sampled image, 3 its sampler; 64 invocations per group, one query each.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "matc/emit/shader_literals.h"
+
+namespace matc {
+
+inline constexpr std::size_t kValidationGroupSize = 64;
+inline constexpr std::size_t kValidationResultsPerQuery = 3;
+
+// `library` and `material` are the sources of matc_fresnel.* and <name>.* in `language`.
+std::string validation_kernel_source(ShaderLanguage language, std::string_view library,
+                                     std::string_view material, std::string_view material_name);
+
+}  // namespace matc

@@ -1,0 +1,247 @@
+#include "matc/emit/build.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "matc/emit/content_hash.h"
+#include "matc/emit/material_snippet.h"
+#include "matc/emit/shader_library.h"
+#include "matc/emit/validation_kernel.h"
+#include "matc/json_format.h"
+#include "matc/material/parse.h"
+#include "matc/runtime/basis_polynomial.h"
+#include "matc/spirv/linkage.h"
+#include "matc/spirv/spirv_tools.h"
+#include "matc/version.h"
+
+namespace matc {
+namespace {
+
+constexpr std::string_view kLibraryStem = "matc_fresnel";
+constexpr std::string_view kLutStem = "matc_lut";
+constexpr std::string_view kManifestFile = "matc_manifest.json";
+
+constexpr std::array<std::pair<OutputKind, std::string_view>, 6> kOutputKinds = {{
+    {OutputKind::glsl, "glsl"},
+    {OutputKind::hlsl, "hlsl"},
+    {OutputKind::spirv, "spirv"},
+    {OutputKind::header, "header"},
+    {OutputKind::json, "json"},
+    {OutputKind::lut, "lut"},
+}};
+
+std::string read_input(const std::string& path, std::uintmax_t max_bytes) {
+  LoadedFile loaded = load_file(path, max_bytes);
+  if (!loaded.bytes) throw std::runtime_error(fmt::format("{}: {}", path, loaded.error));
+  return std::move(*loaded.bytes);
+}
+
+// A library module from GLSL: the source with a placeholder entry point, then exports.
+SpirvWords library_module(std::string source, std::string name,
+                          std::span<const std::string> exports) {
+  source.insert(0, "#version 450\n");
+  source.append("\nvoid main() {}\n");
+  const SpirvWords compiled = compile_to_spirv(
+      {ShaderLanguage::glsl, std::move(source), name, "main", /*keep_uncalled_functions=*/true});
+  const SpirvWords library = export_functions(compiled, exports);
+  validate_spirv(library, SpirvTarget::universal_1_3, name);
+  return optimize_spirv(library, SpirvTarget::universal_1_3, name);
+}
+
+std::string spirv_bytes(const SpirvWords& words) {
+  std::string bytes(words.size() * sizeof(std::uint32_t), '\0');
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    for (std::size_t b = 0; b < 4; ++b)  // SPIR-V files are little-endian words
+      bytes[4 * i + b] = static_cast<char>((words[i] >> (8 * b)) & 0xffu);
+  }
+  return bytes;
+}
+
+}  // namespace
+
+std::vector<std::string> output_kind_names() {
+  std::vector<std::string> names;
+  for (const auto& [kind, name] : kOutputKinds)
+    names.emplace_back(name);
+  return names;
+}
+
+std::optional<OutputKind> output_kind_from_name(std::string_view name) {
+  for (const auto& [kind, kind_name] : kOutputKinds)
+    if (kind_name == name) return kind;
+  return std::nullopt;
+}
+
+std::vector<std::string> shared_library_exports(bool embedded_lut) {
+  std::vector<std::string> names = {"matc_basis", "matc_fresnel", "matc_lut_texcoord",
+                                    "matc_fresnel_preintegrated", "matc_energy_compensation"};
+  if (embedded_lut) names.emplace_back("matc_preintegrated_basis_embedded");
+  return names;
+}
+
+std::vector<std::string> material_library_exports(std::string_view material_name) {
+  return {fmt::format("matc_fresnel_{}", material_name),
+          fmt::format("matc_fresnel_preintegrated_{}", material_name)};
+}
+
+Build::Build(BuildOptions options) : options_(std::move(options)) {
+  if (options_.embedded_lut_size != 0 && (options_.embedded_lut_size < kMinLutSize ||
+                                          options_.embedded_lut_size > kMaxEmbeddedLutSize)) {
+    throw std::invalid_argument(fmt::format("embedded LUT size {} outside [{}, {}]",
+                                            options_.embedded_lut_size, kMinLutSize,
+                                            kMaxEmbeddedLutSize));
+  }
+  const runtime::BasisView basis = runtime::paper_basis();
+  lut_ = bake_lut(basis, options_.lut);
+  stored_lut_ = stored_as(lut_.lut, options_.lut_precision);
+  lut_file_bytes_ = encode_lut(lut_, options_.lut_format, options_.lut_precision);
+  if (options_.embedded_lut_size != 0) {
+    embedded_lut_ = preintegrate_lut(basis, {options_.embedded_lut_size, options_.lut.samples});
+  }
+  inputs_hash_ = ContentHash().add(options_key()).hex();
+  ShaderLibraryOptions library_options{options_.lut.size, embedded_lut()};
+  const runtime::BasisPolynomial& polynomial = runtime::paper_basis_polynomial();
+  glsl_library_ =
+      shader_library_source(ShaderLanguage::glsl, polynomial, library_options, inputs_hash_);
+  hlsl_library_ =
+      shader_library_source(ShaderLanguage::hlsl, polynomial, library_options, inputs_hash_);
+}
+
+std::string Build::options_key() const {
+  return fmt::format("lut {}x{} samples {} {} {} embed {}", options_.lut.size, options_.lut.size,
+                     options_.lut.samples, lut_format_name(options_.lut_format),
+                     lut_precision_name(options_.lut_precision), options_.embedded_lut_size);
+}
+
+const std::string& Build::library_source(ShaderLanguage language) const {
+  return language == ShaderLanguage::glsl ? glsl_library_ : hlsl_library_;
+}
+
+std::string Build::material_source(ShaderLanguage language,
+                                   const CompiledMaterial& compiled) const {
+  return material_snippet_source(language, compiled, material_inputs_hash(compiled.material));
+}
+
+std::string Build::material_inputs_hash(const Material& material) const {
+  ContentHash hash;
+  hash.add(options_key()).add(read_input(material.source_path, kMaxMaterialFileBytes));
+  if (const auto* spectral = std::get_if<SpectralInput>(&material.model);
+      spectral && !spectral->resolved_file.empty()) {
+    hash.add(read_input(spectral->resolved_file, kMaxSpectrumFileBytes));
+  }
+  return hash.hex();
+}
+
+LutReference Build::lut_reference() const {
+  return {fmt::format("{}{}", kLutStem, lut_file_extension(options_.lut_format)), options_.lut.size,
+          hash_of_bytes(lut_file_bytes_)};
+}
+
+std::vector<OutputFile> Build::shared_outputs() const {
+  std::vector<OutputFile> files;
+  const auto& emit = options_.emit;
+  if (emit.contains(OutputKind::glsl))
+    files.push_back({fmt::format("{}.glsl", kLibraryStem), glsl_library_});
+  if (emit.contains(OutputKind::hlsl))
+    files.push_back({fmt::format("{}.hlsl", kLibraryStem), hlsl_library_});
+  if (emit.contains(OutputKind::spirv)) {
+    const std::string name = fmt::format("{}.spv", kLibraryStem);
+    files.push_back(
+        {name, spirv_bytes(library_module(glsl_library_, name,
+                                          shared_library_exports(embedded_lut_.has_value())))});
+  }
+  if (emit.contains(OutputKind::lut)) {
+    const LutReference lut = lut_reference();
+    files.push_back({lut.file, lut_file_bytes_});
+    files.push_back({lut.file + ".json",
+                     format_json(lut_manifest(lut_, options_.lut_format, options_.lut_precision))});
+  }
+  return files;
+}
+
+SpirvWords Build::material_library_module(const CompiledMaterial& compiled) const {
+  const std::string& name = compiled.material.name;
+  return library_module(glsl_library_ + material_source(ShaderLanguage::glsl, compiled),
+                        fmt::format("{}.spv", name), material_library_exports(name));
+}
+
+SpirvWords Build::validation_module(ShaderLanguage language,
+                                    const CompiledMaterial& compiled) const {
+  const std::string& name = compiled.material.name;
+  const std::string source_name =
+      fmt::format("{}.validate{}", name, shader_file_extension(language));
+  const std::string source = validation_kernel_source(language, library_source(language),
+                                                      material_source(language, compiled), name);
+  const SpirvWords words = compile_to_spirv({language, source, source_name});
+  validate_spirv(words, SpirvTarget::vulkan_1_1, source_name);
+  return optimize_spirv(words, SpirvTarget::vulkan_1_1, source_name);
+}
+
+MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const {
+  const std::string& name = compiled.material.name;
+  MaterialOutputs out{
+      name, compiled.material.source_path, material_inputs_hash(compiled.material), {}};
+  const auto& emit = options_.emit;
+  for (const ShaderLanguage language : {ShaderLanguage::glsl, ShaderLanguage::hlsl}) {
+    if (emit.contains(language == ShaderLanguage::glsl ? OutputKind::glsl : OutputKind::hlsl)) {
+      out.files.push_back({fmt::format("{}{}", name, shader_file_extension(language)),
+                           material_snippet_source(language, compiled, out.inputs_hash)});
+    }
+  }
+  if (emit.contains(OutputKind::spirv) || emit.contains(OutputKind::header)) {
+    const SpirvWords module = material_library_module(compiled);
+    if (emit.contains(OutputKind::spirv))
+      out.files.push_back({fmt::format("{}.spv", name), spirv_bytes(module)});
+    if (emit.contains(OutputKind::header)) {
+      out.files.push_back({fmt::format("{}.h", name),
+                           material_c_header(compiled, out.inputs_hash, lut_reference(), module)});
+    }
+  }
+  if (emit.contains(OutputKind::json)) {
+    nlohmann::ordered_json json = compiled_material_json(compiled, runtime::paper_basis());
+    json["inputs_hash"] = out.inputs_hash;
+    out.files.push_back({fmt::format("{}.json", name), format_json(json)});
+  }
+  return out;
+}
+
+nlohmann::ordered_json Build::manifest(const std::vector<OutputFile>& shared,
+                                       std::span<const MaterialOutputs> materials) const {
+  const auto files_json = [](const std::vector<OutputFile>& files) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const OutputFile& file : files)
+      list.push_back({{"file", file.name}, {"hash", hash_of_bytes(file.bytes)}});
+    return list;
+  };
+  nlohmann::ordered_json manifest;
+  manifest["matc_version"] = kVersion;
+  manifest["inputs_hash"] = inputs_hash_;
+  std::vector<std::string> emitted;
+  for (const OutputKind kind : options_.emit)
+    emitted.emplace_back(kOutputKinds[static_cast<std::size_t>(kind)].second);
+  manifest["emit"] = emitted;
+  manifest["lut"] = {{"file", lut_reference().file},
+                     {"size", options_.lut.size},
+                     {"samples_per_texel", options_.lut.samples},
+                     {"precision", lut_precision_name(options_.lut_precision)},
+                     {"hash", lut_reference().hash},
+                     {"embedded_size", options_.embedded_lut_size}};
+  manifest["shared_files"] = files_json(shared);
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const MaterialOutputs& material : materials) {
+    list.push_back({{"name", material.name},
+                    {"source", material.source_path},
+                    {"inputs_hash", material.inputs_hash},
+                    {"files", files_json(material.files)}});
+  }
+  manifest["materials"] = std::move(list);
+  return manifest;
+}
+
+std::string_view manifest_file_name() {
+  return kManifestFile;
+}
+
+}  // namespace matc

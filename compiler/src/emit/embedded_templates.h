@@ -1,0 +1,16 @@
+// The files under templates/, compiled in by matc_embed_files() (see compiler/CMakeLists.txt).
+#pragma once
+
+#include <span>
+#include <string_view>
+
+#include "matc/embedded_file.h"
+
+namespace matc::embedded_templates {
+
+std::span<const EmbeddedFile> files();
+
+// The bytes of one embedded template; throws std::logic_error if it was not embedded (a build bug).
+std::string_view file(std::string_view path);
+
+}  // namespace matc::embedded_templates

@@ -1,0 +1,18 @@
+#include "matc/emit/validation_kernel.h"
+
+#include "matc/emit/template.h"
+#include "matc/version.h"
+
+namespace matc {
+
+std::string validation_kernel_source(ShaderLanguage language, std::string_view library,
+                                     std::string_view material, std::string_view material_name) {
+  return fill_template(
+      language == ShaderLanguage::glsl ? "glsl/validate.comp" : "hlsl/validate.hlsl",
+      {{"version", kVersion},
+       {"name", std::string(material_name)},
+       {"library", std::string(library)},
+       {"material", std::string(material)}});
+}
+
+}  // namespace matc

@@ -1,0 +1,65 @@
+// matc {{version}}: the Fresnel decomposition of Belcour, Bati and Barla (SIGGRAPH 2020),
+// F(mu) = sum_i c_i b_i(mu). Generated (inputs {{inputs_hash}}); do not edit, rerun matc.
+// GLSL 3.30+, GLSL ES 3.00+ and Vulkan GLSL; every name starts with matc_ / Matc / MATC_.
+#ifndef MATC_FRESNEL_GLSL
+#define MATC_FRESNEL_GLSL
+
+// Material snippets check this to refuse a library from another matc version.
+#define MATC_VERSION {{version_number}}
+// Width and height of the preintegrated table this build wrote (matc_lut.*).
+#define MATC_LUT_SIZE {{lut_size}}
+
+// A material's coefficients c_0..c_3, one row per colour channel. 48 bytes with std140 and
+// std430 layouts, so it can sit in a uniform or storage buffer as is.
+struct MatcFresnelCoefficients {
+  vec4 red;
+  vec4 green;
+  vec4 blue;
+};
+
+// b_1..b_3 as {{segments}} polynomials of degree {{degree}} in u = sqrt(mu), highest power first.
+const vec3 MATC_BASIS_POLYNOMIAL[{{polynomial_terms}}] = vec3[{{polynomial_terms}}](
+{{basis_polynomial}});
+
+// The basis b_0..b_3 at mu = cos(theta).
+vec4 matc_basis(float mu) {
+  float scaled = sqrt(clamp(mu, 0.0, 1.0)) * {{segments}}.0;
+  int segment = min(int(scaled), {{last_segment}});
+  float t = 2.0 * (scaled - float(segment)) - 1.0;
+  int first = segment * {{terms_per_segment}};
+  vec3 b = MATC_BASIS_POLYNOMIAL[first];  // Horner's rule, unrolled
+{{horner_steps}}
+  return vec4(1.0, b);
+}
+
+// sum_i c_i v_i per channel, clamped at 0 where the truncated basis dips below it.
+vec3 matc_combine(MatcFresnelCoefficients c, vec4 v) {
+  return max(vec3(dot(c.red, v), dot(c.green, v), dot(c.blue, v)), vec3(0.0));
+}
+
+// F for a direct light: mu = dot(V, H).
+vec3 matc_fresnel(MatcFresnelCoefficients c, float mu) {
+  return matc_combine(c, matc_basis(mu));
+}
+
+// Where to sample the preintegrated table, with linear filtering and clamp-to-edge addressing:
+// u = sqrt(NdotV) across, perceptual roughness down, texel centres on the ends of both axes.
+vec2 matc_lut_texcoord(float NdotV, float roughness) {
+  vec2 axes = vec2(sqrt(clamp(NdotV, 0.0, 1.0)), clamp(roughness, 0.0, 1.0));
+  return (axes * float(MATC_LUT_SIZE - 1) + 0.5) / float(MATC_LUT_SIZE);
+}
+
+// The preintegrated Fresnel from the table's texel bbar at matc_lut_texcoord(NdotV, roughness).
+vec3 matc_fresnel_preintegrated(MatcFresnelCoefficients c, vec4 bbar) {
+  return matc_combine(c, bbar);
+}
+
+// Turquin (2019)'s multiple-scattering scale for the specular lobe, 1 + F0 (1 - E) / E, with
+// E = bbar.x the directional albedo of the GGX lobe (F = 1).
+vec3 matc_energy_compensation(MatcFresnelCoefficients c, vec4 bbar) {
+  vec3 f0 = vec3(c.red.x, c.green.x, c.blue.x);
+  float albedo = max(bbar.x, 1e-4);  // guards the NdotV = 0 column
+  return vec3(1.0) + f0 * ((1.0 - albedo) / albedo);
+}
+{{embedded_lut}}
+#endif  // MATC_FRESNEL_GLSL

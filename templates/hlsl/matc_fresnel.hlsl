@@ -1,0 +1,65 @@
+// matc {{version}}: the Fresnel decomposition of Belcour, Bati and Barla (SIGGRAPH 2020),
+// F(mu) = sum_i c_i b_i(mu). Generated (inputs {{inputs_hash}}); do not edit, rerun matc.
+// HLSL shader model 5.0+ (DXC, FXC, glslang); every name starts with matc_ / Matc / MATC_.
+#ifndef MATC_FRESNEL_HLSL
+#define MATC_FRESNEL_HLSL
+
+// Material snippets check this to refuse a library from another matc version.
+#define MATC_VERSION {{version_number}}
+// Width and height of the preintegrated table this build wrote (matc_lut.*).
+#define MATC_LUT_SIZE {{lut_size}}
+
+// A material's coefficients c_0..c_3, one row per colour channel: 48 bytes, three float4
+// registers in a constant buffer.
+struct MatcFresnelCoefficients {
+  float4 red;
+  float4 green;
+  float4 blue;
+};
+
+// b_1..b_3 as {{segments}} polynomials of degree {{degree}} in u = sqrt(mu), highest power first.
+static const float3 MATC_BASIS_POLYNOMIAL[{{polynomial_terms}}] = {
+{{basis_polynomial}}};
+
+// The basis b_0..b_3 at mu = cos(theta).
+float4 matc_basis(float mu) {
+  float scaled = sqrt(saturate(mu)) * {{segments}}.0;
+  int segment = min(int(scaled), {{last_segment}});
+  float t = 2.0 * (scaled - float(segment)) - 1.0;
+  int first = segment * {{terms_per_segment}};
+  float3 b = MATC_BASIS_POLYNOMIAL[first];  // Horner's rule, unrolled
+{{horner_steps}}
+  return float4(1.0, b);
+}
+
+// sum_i c_i v_i per channel, clamped at 0 where the truncated basis dips below it.
+float3 matc_combine(MatcFresnelCoefficients c, float4 v) {
+  return max(float3(dot(c.red, v), dot(c.green, v), dot(c.blue, v)), 0.0);
+}
+
+// F for a direct light: mu = dot(V, H).
+float3 matc_fresnel(MatcFresnelCoefficients c, float mu) {
+  return matc_combine(c, matc_basis(mu));
+}
+
+// Where to sample the preintegrated table, with linear filtering and clamp-to-edge addressing:
+// u = sqrt(NdotV) across, perceptual roughness down, texel centres on the ends of both axes.
+float2 matc_lut_texcoord(float NdotV, float roughness) {
+  float2 axes = float2(sqrt(saturate(NdotV)), saturate(roughness));
+  return (axes * float(MATC_LUT_SIZE - 1) + 0.5) / float(MATC_LUT_SIZE);
+}
+
+// The preintegrated Fresnel from the table's texel bbar at matc_lut_texcoord(NdotV, roughness).
+float3 matc_fresnel_preintegrated(MatcFresnelCoefficients c, float4 bbar) {
+  return matc_combine(c, bbar);
+}
+
+// Turquin (2019)'s multiple-scattering scale for the specular lobe, 1 + F0 (1 - E) / E, with
+// E = bbar.x the directional albedo of the GGX lobe (F = 1).
+float3 matc_energy_compensation(MatcFresnelCoefficients c, float4 bbar) {
+  float3 f0 = float3(c.red.x, c.green.x, c.blue.x);
+  float albedo = max(bbar.x, 1e-4);  // guards the NdotV = 0 column
+  return 1.0 + f0 * ((1.0 - albedo) / albedo);
+}
+{{embedded_lut}}
+#endif  // MATC_FRESNEL_HLSL
