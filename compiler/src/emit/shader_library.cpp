@@ -31,10 +31,21 @@ std::string embedded_lut_source(ShaderLanguage language, const Lut& lut) {
        {"embedded_texel_values", vector_rows(language, texels, runtime::kBasisSize)}});
 }
 
-std::string horner_steps() {
+// Horner's rule for b_1..b_3, unrolled, each coefficient selected by segment
+// (matc_basis_coefficient in the templates, written for four segments).
+std::string horner_steps(ShaderLanguage language, const runtime::BasisPolynomial& polynomial) {
+  static_assert(runtime::kPolynomialSegments == 4, "matc_basis_coefficient selects among four");
   std::string out;
-  for (std::size_t power = 1; power <= runtime::kPolynomialDegree; ++power) {
-    out.append(fmt::format("  b = b * t + MATC_BASIS_POLYNOMIAL[first + {}];", power));
+  for (std::size_t power = 0; power <= runtime::kPolynomialDegree; ++power) {
+    out.append(power == 0
+                   ? fmt::format("  {} b = ", language == ShaderLanguage::glsl ? "vec3" : "float3")
+                   : "  b = b * t + ");
+    out.append("matc_basis_coefficient(segment,");
+    for (std::size_t segment = 0; segment < runtime::kPolynomialSegments; ++segment) {
+      out.append(segment % 2 == 0 ? "\n      " : " ");
+      out.append(vector_literal(language, polynomial[segment][power]));
+      out.append(segment + 1 < runtime::kPolynomialSegments ? "," : ");");
+    }
     if (power < runtime::kPolynomialDegree) out.append("\n");
   }
   return out;
@@ -46,12 +57,6 @@ std::string shader_library_source(ShaderLanguage language,
                                   const runtime::BasisPolynomial& polynomial,
                                   const ShaderLibraryOptions& options,
                                   std::string_view inputs_hash) {
-  constexpr std::size_t kTerms = runtime::kPolynomialDegree + 1;
-  std::vector<double> coefficients;
-  for (const runtime::PolynomialSegment& segment : polynomial) {
-    for (const std::array<double, 3>& triple : segment)
-      coefficients.insert(coefficients.end(), triple.begin(), triple.end());
-  }
   return fill_template(
       language == ShaderLanguage::glsl ? "glsl/matc_fresnel.glsl" : "hlsl/matc_fresnel.hlsl",
       {{"version", kVersion},
@@ -61,10 +66,7 @@ std::string shader_library_source(ShaderLanguage language,
        {"segments", std::to_string(runtime::kPolynomialSegments)},
        {"last_segment", std::to_string(runtime::kPolynomialSegments - 1)},
        {"degree", std::to_string(runtime::kPolynomialDegree)},
-       {"terms_per_segment", std::to_string(kTerms)},
-       {"horner_steps", horner_steps()},
-       {"polynomial_terms", std::to_string(runtime::kPolynomialSegments * kTerms)},
-       {"basis_polynomial", vector_rows(language, coefficients, 3)},
+       {"horner_steps", horner_steps(language, polynomial)},
        {"embedded_lut",
         options.embedded_lut ? embedded_lut_source(language, *options.embedded_lut) : ""}});
 }

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Regenerates the measured tables in docs/shaders.md (SPIR-V cost against Schlick, embedded table).
+#   bench/update-shader-docs.sh [BUILD_DIR]   (default: build)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$root/build}
+cmake --build "$build" --target matc_shader_cost matc >/dev/null
+tool="$build/bench/matc_shader_cost"
+"$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" shader-cost "$tool"
+"$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" embedded-lut "$tool" --embedded
+"$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" basis-polynomial \
+  "$root/bench/fenced.sh" "$build/matc" basis
