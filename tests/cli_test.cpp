@@ -133,6 +133,75 @@ TEST_F(MatcCli, SameInputsGiveSameBytesAndUnchangedFilesAreNotRewritten) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "a"), fs::directory_iterator()), 11);
 }
 
+TEST_F(MatcCli, NamesOfTheSharedOutputsAreReserved) {
+  write_file(dir_ / "lut.json", R"({"name": "Matc_Lut", "ior": {"n": 1.5, "k": 0}})");
+  const CommandResult result = run({"-o", "out", "lut.json"});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find("lut.json:1:10: error: name: 'Matc_Lut' names a file every build "
+                            "writes"),
+            std::string::npos)
+      << result.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "Matc_Lut.glsl"));
+}
+
+TEST_F(MatcCli, OutputsThatWouldOverwriteAnInputAreRefused) {
+  // out/good.h is a material file (named "other") that compiling "good" into out/ would replace.
+  write_file(dir_ / "m" / "x.json", kGood);
+  const std::string other = R"({"name": "other", "ior": {"n": 1.5, "k": 0}})";
+  write_file(dir_ / "out" / "good.h", other);
+  const CommandResult result = run({"-o", "out", "m/x.json", "out/good.h"});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find("would overwrite the input out/good.h"), std::string::npos)
+      << result.err;
+  EXPECT_EQ(read_file(dir_ / "out" / "good.h"), other);
+}
+
+TEST_F(MatcCli, EmitSelectsTheOutputKinds) {
+  write_file(dir_ / "good.json", kGood);
+  const CommandResult result = run({"-o", "out", "--emit", "glsl,spirv", "good.json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir_ / "out"))
+    names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"good.glsl", "good.spv", "matc_fresnel.glsl",
+                                             "matc_fresnel.spv"}));
+  const CommandResult unknown = run({"-o", "out2", "--emit", "glsl,msl", "good.json"});
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("msl"), std::string::npos) << unknown.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out2"));
+}
+
+TEST_F(MatcCli, EmbedLutPutsTheTableInTheSharedLibrary) {
+  write_file(dir_ / "good.json", kGood);
+  ASSERT_EQ(
+      run({"-o", "out", "--emit", "hlsl", "--embed-lut", "--embed-lut-size", "4", "good.json"})
+          .exit_code,
+      0);
+  const std::string library = read_file(dir_ / "out" / "matc_fresnel.hlsl");
+  EXPECT_NE(library.find("#define MATC_EMBEDDED_LUT_SIZE 4"), std::string::npos);
+  EXPECT_NE(library.find("MATC_EMBEDDED_LUT[16]"), std::string::npos);
+  EXPECT_EQ(run({"-o", "out", "--embed-lut", "--embed-lut-size", "65", "good.json"}).exit_code, 2);
+}
+
+TEST_F(MatcCli, ManifestListsTheBuildAndGeneratedFilesNameTheirInputs) {
+  write_file(dir_ / "good.json", kGood);
+  ASSERT_EQ(run({"-o", "out", "--lut-size", "8", "--lut-samples", "16", "good.json"}).exit_code, 0);
+  const auto manifest = nlohmann::json::parse(read_file(dir_ / "out" / "matc_manifest.json"));
+  EXPECT_EQ(manifest["matc_version"], MATC_VERSION);
+  ASSERT_EQ(manifest["materials"].size(), 1u);
+  const std::string hash = manifest["materials"][0]["inputs_hash"];
+  EXPECT_EQ(manifest["materials"][0]["files"].size(), 5u);
+  for (const char* file : {"good.glsl", "good.hlsl", "good.h"})
+    EXPECT_NE(read_file(dir_ / "out" / file).find(hash), std::string::npos) << file;
+  EXPECT_EQ(nlohmann::json::parse(read_file(dir_ / "out" / "good.json"))["inputs_hash"], hash);
+  // Changing the material changes the hash.
+  write_file(dir_ / "good.json", R"({"name": "good", "ior": {"n": 1.6, "k": 0}})");
+  ASSERT_EQ(run({"-o", "out", "--lut-size", "8", "--lut-samples", "16", "good.json"}).exit_code, 0);
+  const auto changed = nlohmann::json::parse(read_file(dir_ / "out" / "matc_manifest.json"));
+  EXPECT_NE(changed["materials"][0]["inputs_hash"], hash);
+}
+
 TEST_F(MatcCli, BadMaterialExitsOneWithLocatedErrorAndWritesNothing) {
   write_file(dir_ / "bad.json", kBad);
   const CommandResult result = run({"-o", "out", "bad.json"});

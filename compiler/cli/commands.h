@@ -18,13 +18,16 @@ struct CompileOptions {
   std::string output_directory = "matc-out";
   bool keep_going = false;
   bool quiet = false;
-  std::vector<std::string> emit;  // output kinds; empty: all
+  std::string emit;  // comma-separated output kinds; empty: all
   std::string lut_format = "ktx2";
   LutCliOptions lut;
   bool embed_lut = false;
   std::size_t embed_lut_size = 32;
 };
 int run_compile(const CompileOptions& options);
+
+// "a,b,c" -> {"a", "b", "c"}.
+std::vector<std::string> split_list(const std::string& list);
 
 struct EvalOptions {
   std::string file;

@@ -51,7 +51,7 @@ BuildOptions build_options(const CompileOptions& options) {
   BuildOptions build;
   if (!options.emit.empty()) {
     build.emit.clear();
-    for (const std::string& name : options.emit)
+    for (const std::string& name : split_list(options.emit))
       build.emit.insert(*output_kind_from_name(name));
   }
   build.lut = options.lut.bake;
@@ -71,6 +71,17 @@ struct BatchSummary {
 };
 
 }  // namespace
+
+std::vector<std::string> split_list(const std::string& list) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    const std::size_t comma = std::min(list.find(',', start), list.size());
+    items.push_back(list.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return items;
+}
 
 int run_compile(const CompileOptions& options) {
   const Build build(build_options(options));

@@ -26,8 +26,17 @@ int main(int argc, char** argv) {
   app.add_option("--emit", compile.emit,
                  "Outputs to write, comma-separated (default: all): shader snippets, SPIR-V, "
                  "C headers, JSON manifests, the LUT")
-      ->delimiter(',')
-      ->check(CLI::IsMember(matc::output_kind_names()));
+      ->check(CLI::Validator(
+          [](std::string& list) -> std::string {
+            for (const std::string& name : split_list(list)) {
+              if (!matc::output_kind_from_name(name)) {
+                return "'" + name + "' is not one of " +
+                       CLI::detail::join(matc::output_kind_names(), ",");
+              }
+            }
+            return {};
+          },
+          "LIST", "output kinds"));
   app.add_option("--lut", compile.lut_format, "File format of the table DIR/matc_lut.<ext>")
       ->capture_default_str()
       ->check(CLI::IsMember(matc::lut_format_names()));
