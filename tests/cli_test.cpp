@@ -278,9 +278,10 @@ TEST_F(MatcCli, EvalPrintsDecomposedAndExactFresnel) {
   ASSERT_EQ(json["mu"].size(), 4u);
   ASSERT_EQ(json["F"].size(), 4u);
   ASSERT_EQ(json["F_exact"].size(), 4u);
+  // F as the shaders compute it: the polynomial basis holds the ends to its fit (1e-4), not exactly.
   for (std::size_t c = 0; c < 3; ++c) {
-    EXPECT_EQ(json["F"][0][c].get<double>(), 1.0);
-    EXPECT_NEAR(json["F"][3][c].get<double>(), json["F_exact"][3][c].get<double>(), 1e-12);
+    EXPECT_NEAR(json["F"][0][c].get<double>(), 1.0, 1e-4);
+    EXPECT_NEAR(json["F"][3][c].get<double>(), json["F_exact"][3][c].get<double>(), 1e-5);
     EXPECT_NEAR(json["F"][1][c].get<double>(), json["F_exact"][1][c].get<double>(), 0.02);
   }
 }

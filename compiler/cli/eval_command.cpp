@@ -18,12 +18,12 @@ using nlohmann::ordered_json;
 
 // F at each cosine as the shaders compute it, beside the exact curve.
 void add_direct_fresnel(const EvalOptions& options, const ReflectanceCurve& curve,
-                        const runtime::Coefficients& coefficients, const runtime::BasisView& basis,
-                        ordered_json& out) {
+                        const runtime::Coefficients& coefficients, ordered_json& out) {
   ordered_json decomposed = ordered_json::array();
   ordered_json exact = ordered_json::array();
   for (const double mu : options.mu) {
-    decomposed.push_back(runtime::evaluate_fresnel(coefficients, basis, mu));
+    decomposed.push_back(
+        runtime::evaluate_fresnel(coefficients, runtime::paper_basis_polynomial(), mu));
     exact.push_back(curve.at(mu));
   }
   out["mu"] = options.mu;
@@ -77,7 +77,7 @@ int run_eval(const EvalOptions& options) {
 
   ordered_json out;
   out["name"] = parsed.material->name;
-  if (!options.mu.empty()) add_direct_fresnel(options, *curve, coefficients, basis, out);
+  if (!options.mu.empty()) add_direct_fresnel(options, *curve, coefficients, out);
   if (!options.ndotv.empty()) add_preintegrated_fresnel(options, *curve, coefficients, basis, out);
   fmt::print("{}", format_json(out));
   return kExitSuccess;
