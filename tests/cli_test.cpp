@@ -278,7 +278,7 @@ TEST_F(MatcCli, EvalPrintsDecomposedAndExactFresnel) {
   ASSERT_EQ(json["mu"].size(), 4u);
   ASSERT_EQ(json["F"].size(), 4u);
   ASSERT_EQ(json["F_exact"].size(), 4u);
-  // F as the shaders compute it: the polynomial basis holds the ends to its fit (1e-4), not exactly.
+  // F as the shaders compute it: the polynomial basis holds the ends to 1e-4, not exactly.
   for (std::size_t c = 0; c < 3; ++c) {
     EXPECT_NEAR(json["F"][0][c].get<double>(), 1.0, 1e-4);
     EXPECT_NEAR(json["F"][3][c].get<double>(), json["F_exact"][3][c].get<double>(), 1e-5);
