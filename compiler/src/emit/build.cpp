@@ -162,9 +162,15 @@ std::vector<OutputFile> Build::shared_outputs() const {
 }
 
 SpirvWords Build::material_library_module(const CompiledMaterial& compiled) const {
+  return material_library_module(compiled, material_inputs_hash(compiled.material));
+}
+
+SpirvWords Build::material_library_module(const CompiledMaterial& compiled,
+                                          std::string_view inputs_hash) const {
   const std::string& name = compiled.material.name;
-  return library_module(glsl_library_ + material_source(ShaderLanguage::glsl, compiled),
-                        fmt::format("{}.spv", name), material_library_exports(name));
+  return library_module(
+      glsl_library_ + material_snippet_source(ShaderLanguage::glsl, compiled, inputs_hash),
+      fmt::format("{}.spv", name), material_library_exports(name));
 }
 
 SpirvWords Build::validation_module(ShaderLanguage language,
@@ -191,7 +197,8 @@ MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const 
     }
   }
   if (emit.contains(OutputKind::spirv) || emit.contains(OutputKind::header)) {
-    const SpirvWords module = material_library_module(compiled);
+    // The hash is computed once: it reads the material's input files.
+    const SpirvWords module = material_library_module(compiled, out.inputs_hash);
     if (emit.contains(OutputKind::spirv))
       out.files.push_back({fmt::format("{}.spv", name), spirv_bytes(module)});
     if (emit.contains(OutputKind::header)) {

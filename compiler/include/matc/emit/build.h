@@ -86,6 +86,8 @@ class Build {
 
  private:
   LutReference lut_reference() const;
+  SpirvWords material_library_module(const CompiledMaterial& compiled,
+                                     std::string_view inputs_hash) const;
   std::string options_key() const;
 
   BuildOptions options_;
