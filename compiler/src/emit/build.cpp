@@ -97,6 +97,9 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
   lut_ = bake_lut(basis, options_.lut);
   stored_lut_ = stored_as(lut_.lut, options_.lut_precision);
   lut_file_bytes_ = encode_lut(lut_, options_.lut_format, options_.lut_precision);
+  // Hashed once here: every material header and the manifest name the same table.
+  lut_reference_ = {fmt::format("{}{}", kLutStem, lut_file_extension(options_.lut_format)),
+                    options_.lut.size, hash_of_bytes(lut_file_bytes_)};
   if (options_.embedded_lut_size != 0) {
     embedded_lut_ = preintegrate_lut(basis, {options_.embedded_lut_size, options_.lut.samples});
   }
@@ -134,11 +137,6 @@ std::string Build::material_inputs_hash(const Material& material) const {
   return hash.hex();
 }
 
-LutReference Build::lut_reference() const {
-  return {fmt::format("{}{}", kLutStem, lut_file_extension(options_.lut_format)), options_.lut.size,
-          hash_of_bytes(lut_file_bytes_)};
-}
-
 std::vector<OutputFile> Build::shared_outputs() const {
   std::vector<OutputFile> files;
   const auto& emit = options_.emit;
@@ -153,7 +151,7 @@ std::vector<OutputFile> Build::shared_outputs() const {
                                           shared_library_exports(embedded_lut_.has_value())))});
   }
   if (emit.contains(OutputKind::lut)) {
-    const LutReference lut = lut_reference();
+    const LutReference& lut = lut_reference_;
     files.push_back({lut.file, lut_file_bytes_});
     files.push_back({lut.file + ".json",
                      format_json(lut_manifest(lut_, options_.lut_format, options_.lut_precision))});
@@ -203,7 +201,7 @@ MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const 
       out.files.push_back({fmt::format("{}.spv", name), spirv_bytes(module)});
     if (emit.contains(OutputKind::header)) {
       out.files.push_back({fmt::format("{}.h", name),
-                           material_c_header(compiled, out.inputs_hash, lut_reference(), module)});
+                           material_c_header(compiled, out.inputs_hash, lut_reference_, module)});
     }
   }
   if (emit.contains(OutputKind::json)) {
@@ -229,11 +227,11 @@ nlohmann::ordered_json Build::manifest(const std::vector<OutputFile>& shared,
   for (const OutputKind kind : options_.emit)
     emitted.emplace_back(kOutputKinds[static_cast<std::size_t>(kind)].second);
   manifest["emit"] = emitted;
-  manifest["lut"] = {{"file", lut_reference().file},
+  manifest["lut"] = {{"file", lut_reference_.file},
                      {"size", options_.lut.size},
                      {"samples_per_texel", options_.lut.samples},
                      {"precision", lut_precision_name(options_.lut_precision)},
-                     {"hash", lut_reference().hash},
+                     {"hash", lut_reference_.hash},
                      {"embedded_size", options_.embedded_lut_size}};
   manifest["shared_files"] = files_json(shared);
   nlohmann::ordered_json list = nlohmann::ordered_json::array();

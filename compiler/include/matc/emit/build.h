@@ -85,7 +85,6 @@ class Build {
                                   std::span<const MaterialOutputs> materials) const;
 
  private:
-  LutReference lut_reference() const;
   SpirvWords material_library_module(const CompiledMaterial& compiled,
                                      std::string_view inputs_hash) const;
   std::string options_key() const;
@@ -96,6 +95,7 @@ class Build {
   std::optional<Lut> embedded_lut_;
   std::string inputs_hash_;
   std::string lut_file_bytes_;
+  LutReference lut_reference_;  // names and hashes lut_file_bytes_
   std::string glsl_library_;
   std::string hlsl_library_;
 };
