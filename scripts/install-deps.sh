@@ -9,7 +9,7 @@ packages=(
   cmake ninja-build g++ pkg-config clang-format
   glslang-dev glslang-tools spirv-tools spirv-headers spirv-cross libspirv-cross-c-shared-dev
   nlohmann-json3-dev libeigen3-dev libcli11-dev libfmt-dev libxxhash-dev
-  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers libstb-dev
   googletest libgtest-dev libgmock-dev libbenchmark-dev
 )
 

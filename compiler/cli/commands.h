@@ -12,6 +12,14 @@ inline constexpr int kExitSuccess = 0;
 inline constexpr int kExitInputError = 1;  // a material or data file is invalid
 inline constexpr int kExitUsageError = 2;  // the command line is invalid
 inline constexpr int kExitInternalError = 3;
+inline constexpr int kExitValidationFailed = 4;  // device results differ from the CPU runtime's
+inline constexpr int kExitNoDevice = 5;          // no usable Vulkan driver or device
+
+// Where `matc validate` and `matc --validate` run the generated shaders.
+struct DeviceCliOptions {
+  bool layers = false;  // --vk-validation: Khronos validation layer on, any message fails
+  std::string name;     // --device: a substring of the device's name
+};
 
 struct CompileOptions {
   std::vector<std::string> files;
@@ -23,8 +31,19 @@ struct CompileOptions {
   LutCliOptions lut;
   bool embed_lut = false;
   std::size_t embed_lut_size = 32;
+  bool validate = false;  // run each material's shaders on a device before writing its files
+  DeviceCliOptions device;
 };
 int run_compile(const CompileOptions& options);
+
+struct ValidateOptions {
+  std::vector<std::string> files;
+  LutCliOptions lut;
+  bool embed_lut = false;
+  std::size_t embed_lut_size = 32;
+  DeviceCliOptions device;
+};
+int run_validate(const ValidateOptions& options);
 
 // "a,b,c" -> {"a", "b", "c"}.
 std::vector<std::string> split_list(const std::string& list);

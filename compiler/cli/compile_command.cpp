@@ -9,6 +9,7 @@
 
 #include "atomic_file.h"
 #include "commands.h"
+#include "device_validation_report.h"
 #include "matc/compile.h"
 #include "matc/emit/build.h"
 #include "matc/json_format.h"
@@ -66,6 +67,7 @@ struct BatchSummary {
   std::size_t written = 0;
   std::size_t unchanged = 0;
   std::size_t failed = 0;
+  std::size_t failed_on_device = 0;
 
   void count(WriteOutcome outcome) { ++(outcome == WriteOutcome::written ? written : unchanged); }
 };
@@ -85,6 +87,11 @@ std::vector<std::string> split_list(const std::string& list) {
 
 int run_compile(const CompileOptions& options) {
   const Build build(build_options(options));
+  std::unique_ptr<DeviceValidator> validator;
+  if (options.validate) {
+    validator = open_device_validator(build, options.device);
+    if (!validator) return kExitNoDevice;
+  }
   const runtime::BasisView basis = runtime::paper_basis();
   const fs::path output_directory(options.output_directory);
   std::map<std::string, std::string> inputs_by_identity;
@@ -130,13 +137,20 @@ int run_compile(const CompileOptions& options) {
         try {
           // Every byte is generated before the first file is written: a failure leaves no
           // partial set of outputs for this material.
-          MaterialOutputs outputs_of_material =
-              build.material_outputs(compile_material(material, basis));
-          fs::create_directories(output_directory);
-          for (const OutputFile& output : outputs_of_material.files)
-            summary.count(write_file_atomically(output_directory / output.name, output.bytes));
-          ++summary.compiled;
-          written_materials.push_back(std::move(outputs_of_material));
+          const CompiledMaterial compiled = compile_material(material, basis);
+          MaterialOutputs outputs_of_material = build.material_outputs(compiled);
+          if (validator && !validate_and_report(*validator, compiled)) {
+            ++summary.failed_on_device;
+            diagnostics.error({file, 0, 0}, "",
+                              "its shaders differ from the CPU runtime on the Vulkan device "
+                              "(lines above); nothing written for it");
+          } else {
+            fs::create_directories(output_directory);
+            for (const OutputFile& output : outputs_of_material.files)
+              summary.count(write_file_atomically(output_directory / output.name, output.bytes));
+            ++summary.compiled;
+            written_materials.push_back(std::move(outputs_of_material));
+          }
         } catch (const std::exception& error) {
           diagnostics.error({file, 0, 0}, "", error.what(), "a writable output directory (-o)");
         }
@@ -174,6 +188,7 @@ int run_compile(const CompileOptions& options) {
                summary.compiled, summary.written, summary.unchanged, summary.failed,
                skipped > 0 ? fmt::format(", {} not attempted (use --keep-going)", skipped) : "");
   }
+  if (summary.failed_on_device > 0) return kExitValidationFailed;
   return summary.failed > 0 ? kExitInputError : kExitSuccess;
 }
 

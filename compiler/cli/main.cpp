@@ -14,7 +14,9 @@ int main(int argc, char** argv) {
   CLI::App app{"matc: compiles materials into an accurate, preintegrable Fresnel decomposition",
                "matc"};
   app.set_version_flag("--version", std::string("matc ") + matc::kVersion);
-  app.footer("Exit status: 0 success, 1 invalid input, 2 invalid command line, 3 internal error.");
+  app.footer(
+      "Exit status: 0 success, 1 invalid input, 2 invalid command line, 3 internal error, "
+      "4 shaders differ from the CPU runtime on the device, 5 no usable Vulkan device.");
 
   CompileOptions compile;
   app.add_option("files", compile.files, "Material files (.json) to compile");
@@ -46,6 +48,17 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(matc::kMinLutSize, matc::kMaxEmbeddedLutSize));
   add_lut_options(app, compile.lut, "lut-");
+  app.add_flag("--validate", compile.validate,
+               "Run each material's GLSL and HLSL shaders on a Vulkan device (lavapipe) against "
+               "the CPU runtime before writing its files");
+  const auto add_device_options = [](CLI::App& command, DeviceCliOptions& device) {
+    command.add_flag("--vk-validation", device.layers,
+                     "Enable the Khronos validation layer; any message it reports fails");
+    command.add_option("--device", device.name,
+                       "Use the Vulkan device whose name contains this (default: a GPU if any, "
+                       "else lavapipe)");
+  };
+  add_device_options(app, compile.device);
 
   EvalOptions eval;
   CLI::App* eval_command =
@@ -67,6 +80,21 @@ int main(int argc, char** argv) {
   ndotv_option->needs(roughness_option);
   roughness_option->needs(ndotv_option);
   add_lut_options(*eval_command, eval.lut, "lut-");
+
+  ValidateOptions validate;
+  CLI::App* validate_command = app.add_subcommand(
+      "validate",
+      "Run materials' generated shaders (GLSL and HLSL paths) on a Vulkan device and compare "
+      "them with the CPU runtime; writes nothing");
+  validate_command->add_option("files", validate.files, "Material files (.json)")->required();
+  validate_command->add_flag("--embed-lut", validate.embed_lut,
+                             "Also check the embedded-table path");
+  validate_command
+      ->add_option("--embed-lut-size", validate.embed_lut_size, "Width and height of that table")
+      ->capture_default_str()
+      ->check(CLI::Range(matc::kMinLutSize, matc::kMaxEmbeddedLutSize));
+  add_lut_options(*validate_command, validate.lut, "lut-");
+  add_device_options(*validate_command, validate.device);
 
   BasisOptions basis;
   CLI::App* basis_command = app.add_subcommand("basis", "Show the Fresnel basis b_0..b_3");
@@ -103,6 +131,7 @@ int main(int argc, char** argv) {
   try {
     if (*eval_command) return run_eval(eval);
     if (*lut_command) return run_lut(lut);
+    if (*validate_command) return run_validate(validate);
     if (*fit_command) return run_basis_fit(basis_fit);
     if (*basis_command) return run_basis(basis);
     if (compile.files.empty()) {

@@ -1,0 +1,21 @@
+// Running materials' shaders on a Vulkan device for `matc validate` and `matc --validate`, and
+// printing what was found.
+#pragma once
+
+#include <memory>
+
+#include "commands.h"
+#include "matc/validate/device_validation.h"
+
+namespace matc::cli {
+
+// Opens the device and prints which one and the tolerances; on failure prints why and returns
+// null (the caller exits with kExitNoDevice).
+std::unique_ptr<DeviceValidator> open_device_validator(const Build& build,
+                                                       const DeviceCliOptions& options);
+
+// Validates one material's GLSL and HLSL paths and prints a line for each (standard output);
+// prints the validation layer's new messages. False when a path failed or the layer spoke.
+bool validate_and_report(const DeviceValidator& validator, const CompiledMaterial& compiled);
+
+}  // namespace matc::cli

@@ -1,0 +1,42 @@
+// `matc validate FILES...`: compile each material in memory (nothing is written) and prove its
+// shaders on a Vulkan device.
+#include <fmt/core.h>
+
+#include "commands.h"
+#include "device_validation_report.h"
+#include "matc/compile.h"
+#include "matc/material/parse.h"
+#include "print_diagnostics.h"
+
+namespace matc::cli {
+
+int run_validate(const ValidateOptions& options) {
+  BuildOptions build_options;
+  build_options.lut = options.lut.bake;
+  build_options.lut_precision = precision_of(options.lut);
+  build_options.embedded_lut_size = options.embed_lut ? options.embed_lut_size : 0;
+  const Build build(build_options);
+  const std::unique_ptr<DeviceValidator> validator = open_device_validator(build, options.device);
+  if (!validator) return kExitNoDevice;
+
+  const runtime::BasisView basis = runtime::paper_basis();
+  std::size_t invalid_inputs = 0;
+  std::size_t failed = 0;
+  for (const std::string& file : options.files) {
+    const ParseResult parsed = read_material_file(file);
+    print_diagnostics(parsed.diagnostics);
+    if (!parsed.material) {
+      ++invalid_inputs;
+      continue;
+    }
+    if (!validate_and_report(*validator, compile_material(*parsed.material, basis))) ++failed;
+  }
+  const std::size_t validated = options.files.size() - invalid_inputs;
+  fmt::print("matc validate: {} of {} materials passed on both front ends{}\n", validated - failed,
+             validated,
+             invalid_inputs > 0 ? fmt::format(", {} files invalid", invalid_inputs) : "");
+  if (failed > 0) return kExitValidationFailed;
+  return invalid_inputs > 0 ? kExitInputError : kExitSuccess;
+}
+
+}  // namespace matc::cli

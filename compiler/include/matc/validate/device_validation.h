@@ -1,0 +1,89 @@
+// Proof that generated shaders compute what the CPU runtime computes: each material's validation
+// kernel (emit/validation_kernel.h), built from the GLSL and from the HLSL path, runs on a Vulkan
+// device (lavapipe in CI) over a grid of queries, and its results are compared with runtime/.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "matc/compile.h"
+#include "matc/emit/build.h"
+#include "matc/emit/shader_literals.h"
+#include "matc/vulkan/context.h"
+
+namespace matc {
+
+// Largest differences allowed between device and CPU (docs/validation.md says why these).
+struct ValidationTolerance {
+  // F(mu): float32 arithmetic on the same polynomial and coefficients.
+  double fresnel = 1e-5;
+  // Fbar through the device's sampler: hardware bilinear weights may carry as few as 8 bits.
+  double preintegrated = 1e-4;
+  // Fbar from the embedded table: bilinear filtering in float32 shader code.
+  double embedded = 1e-5;
+};
+
+// One query of the kernel: mu for F, (NdotV, roughness) for Fbar.
+struct ValidationQuery {
+  float mu = 0.0f;
+  float ndotv = 0.0f;
+  float roughness = 0.0f;
+};
+
+// A 41 x 41 grid of (NdotV, roughness) over [0, 1]^2 (table edges, texel centres and points in
+// between), paired with as many cosines mu evenly spread over [0, 1].
+std::vector<ValidationQuery> validation_queries();
+
+// The largest difference over the queries and channels, and where it happened.
+struct Discrepancy {
+  double max_abs = 0.0;
+  ValidationQuery where;
+};
+
+struct PathValidation {
+  ShaderLanguage language = ShaderLanguage::glsl;
+  Discrepancy fresnel;
+  Discrepancy preintegrated;
+  std::optional<Discrepancy> embedded;  // with an embedded table only
+  bool passed = false;
+};
+
+struct MaterialValidation {
+  std::string name;
+  std::vector<PathValidation> paths;  // GLSL, then HLSL
+  bool passed() const;
+};
+
+class DeviceValidator {
+ public:
+  // Opens the device and uploads the build's stored table once. Throws vulkan::VulkanError
+  // (vulkan::NoDeviceError without a usable device).
+  DeviceValidator(const Build& build, const vulkan::ContextOptions& device,
+                  ValidationTolerance tolerance = {});
+  ~DeviceValidator();
+  DeviceValidator(const DeviceValidator&) = delete;
+  DeviceValidator& operator=(const DeviceValidator&) = delete;
+
+  // Runs both front ends' kernels for one material.
+  MaterialValidation validate(const CompiledMaterial& compiled) const;
+
+  std::string device_name() const;
+  const ValidationTolerance& tolerance() const { return tolerance_; }
+  // Warnings and errors from the validation layer so far (with ContextOptions::validation).
+  std::vector<std::string> layer_messages() const;
+
+ private:
+  PathValidation run(ShaderLanguage language, const CompiledMaterial& compiled) const;
+
+  struct Device;
+  const Build& build_;
+  ValidationTolerance tolerance_;
+  std::vector<ValidationQuery> queries_;
+  std::unique_ptr<Device> device_;
+};
+
+}  // namespace matc
