@@ -72,19 +72,36 @@ std::string describe_compile_errors(std::string_view log, std::string_view sourc
   return out;
 }
 
+namespace {
+
+EShLanguage glslang_stage(ShaderStage stage) {
+  switch (stage) {
+    case ShaderStage::vertex:
+      return EShLangVertex;
+    case ShaderStage::fragment:
+      return EShLangFragment;
+    case ShaderStage::compute:
+      break;
+  }
+  return EShLangCompute;
+}
+
+}  // namespace
+
 SpirvWords compile_to_spirv(const ShaderSource& source) {
   const std::lock_guard lock(glslang_mutex());
   initialize_glslang_once();
 
   const bool hlsl = source.language == ShaderLanguage::hlsl;
-  glslang::TShader shader(EShLangCompute);
+  const EShLanguage stage = glslang_stage(source.stage);
+  glslang::TShader shader(stage);
   const char* text = source.text.c_str();
   const int length = static_cast<int>(source.text.size());
   const char* name = source.name.c_str();
   shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
   shader.setEntryPoint(source.entry_point.c_str());
   shader.setSourceEntryPoint(source.entry_point.c_str());
-  shader.setEnvInput(hlsl ? glslang::EShSourceHlsl : glslang::EShSourceGlsl, EShLangCompute,
+  shader.setEnvInput(hlsl ? glslang::EShSourceHlsl : glslang::EShSourceGlsl, stage,
                      glslang::EShClientVulkan, 100);
   shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
   // SPIR-V 1.3 for both front ends: glslang 12's HLSL output uses BufferBlock, invalid in 1.4+.
@@ -110,7 +127,7 @@ SpirvWords compile_to_spirv(const ShaderSource& source) {
   glslang::SpvOptions options;
   // glslang's own legalisation: HLSL needs it (resources in function scope); later passes are ours.
   options.disableOptimizer = !hlsl;
-  glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), words, &logger, &options);
+  glslang::GlslangToSpv(*program.getIntermediate(stage), words, &logger, &options);
   if (const std::string messages_text = logger.getAllMessages();
       messages_text.find("error") != std::string::npos) {
     throw ShaderCompileError(fmt::format("generated shader {}: SPIR-V generation failed: {}",

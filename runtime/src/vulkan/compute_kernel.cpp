@@ -39,8 +39,10 @@ void ComputeKernel::dispatch(std::uint32_t groups_x, std::uint32_t groups_y,
   context_.submit([&](VkCommandBuffer commands) {
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     const VkDescriptorSet set = descriptors_.set();
-    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 0,
-                            nullptr);
+    if (set != VK_NULL_HANDLE) {  // a shader without resources has no set to bind
+      vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 0,
+                              nullptr);
+    }
     vkCmdDispatch(commands, groups_x, groups_y, groups_z);
     // Shader writes become visible to the host once the fence signals.
     VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};

@@ -203,8 +203,10 @@ FrameTime FullscreenPass::draw(std::span<const std::byte> push_constants) {
     vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
     const VkDescriptorSet set = descriptors_.set();
-    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set, 0,
-                            nullptr);
+    if (set != VK_NULL_HANDLE) {  // a shader without resources has no set to bind
+      vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set, 0,
+                              nullptr);
+    }
     if (push_constant_size_ > 0) {
       vkCmdPushConstants(commands, layout_, VK_SHADER_STAGE_FRAGMENT_BIT, 0, push_constant_size_,
                          push_constants.data());

@@ -1,4 +1,4 @@
-// GLSL and HLSL to SPIR-V, in-process with glslang (compute stage, Vulkan rules, SPIR-V 1.3).
+// GLSL and HLSL to SPIR-V, in-process with glslang (Vulkan rules, SPIR-V 1.3).
 #pragma once
 
 #include <cstdint>
@@ -20,6 +20,10 @@ class ShaderCompileError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Generated kernels are compute shaders; renders and benchmarks add a full-screen vertex and
+// fragment pair.
+enum class ShaderStage { compute, vertex, fragment };
+
 struct ShaderSource {
   ShaderLanguage language = ShaderLanguage::glsl;
   std::string text;  // GLSL must start with #version; HLSL has none
@@ -27,9 +31,10 @@ struct ShaderSource {
   std::string entry_point = "main";
   // Keep functions nothing calls (library modules export them).
   bool keep_uncalled_functions = false;
+  ShaderStage stage = ShaderStage::compute;
 };
 
-// Compiles a compute shader. Thread-safe (calls are serialised: glslang's globals are not).
+// Compiles one shader stage. Thread-safe (calls are serialised: glslang's globals are not).
 SpirvWords compile_to_spirv(const ShaderSource& source);
 
 // The error message for glslang's info log `log` about `source`: each "ERROR: <n>:<line>:" entry

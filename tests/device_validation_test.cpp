@@ -1,0 +1,70 @@
+// DeviceValidator: generated kernels on the Vulkan device against the CPU runtime.
+#include <gtest/gtest.h>
+
+#include "matc/compile.h"
+#include "matc/material/parse.h"
+#include "matc/validate/device_validation.h"
+
+namespace {
+
+// The talk's Figure 2 material (r = 0.44, g = [0, 1, 0]), from the examples: the build hashes the
+// material's file into its shaders.
+matc::CompiledMaterial figure2() {
+  const matc::ParseResult parsed =
+      matc::read_material_file(MATC_EXAMPLES_DIR "/figure2_edge_tint.json");
+  EXPECT_TRUE(parsed.material.has_value());
+  return matc::compile_material(*parsed.material, matc::runtime::paper_basis());
+}
+
+matc::BuildOptions small_build(std::size_t embedded = 0) {
+  matc::BuildOptions options;
+  options.lut.size = 32;
+  options.lut.samples = 256;
+  options.embedded_lut_size = embedded;
+  return options;
+}
+
+TEST(DeviceValidation, QueriesCoverTheTableEdgesAndBothEndsOfMu) {
+  const auto queries = matc::validation_queries();
+  ASSERT_EQ(queries.size(), 41u * 41u);
+  EXPECT_EQ(queries.front().mu, 0.0f);
+  EXPECT_EQ(queries.back().mu, 1.0f);
+  EXPECT_EQ(queries.back().ndotv, 1.0f);
+  EXPECT_EQ(queries.back().roughness, 1.0f);
+  EXPECT_EQ(queries[40].ndotv, 1.0f);
+  EXPECT_EQ(queries[40].roughness, 0.0f);
+}
+
+TEST(DeviceValidation, BothFrontEndsMatchTheCpuRuntime) {
+  const matc::Build build(small_build());
+  const matc::DeviceValidator validator(build, {true, ""});
+  const matc::MaterialValidation result = validator.validate(figure2());
+  ASSERT_EQ(result.paths.size(), 2u);
+  EXPECT_TRUE(result.passed());
+  for (const matc::PathValidation& path : result.paths) {
+    EXPECT_LE(path.fresnel.max_abs, 1e-5);
+    EXPECT_LE(path.preintegrated.max_abs, 1e-4);
+    EXPECT_FALSE(path.embedded.has_value());
+  }
+  EXPECT_EQ(result.paths[0].language, matc::ShaderLanguage::glsl);
+  EXPECT_EQ(result.paths[1].language, matc::ShaderLanguage::hlsl);
+  EXPECT_TRUE(validator.layer_messages().empty());
+}
+
+// The comparison can fail: float32 shaders are not bit-identical to the double CPU mirror, so a
+// zero tolerance must reject them, and says where the worst difference was.
+TEST(DeviceValidation, ZeroToleranceFails) {
+  const matc::Build build(small_build(4));
+  const matc::DeviceValidator validator(build, {false, ""}, {0.0, 0.0, 0.0});
+  const matc::MaterialValidation result = validator.validate(figure2());
+  EXPECT_FALSE(result.passed());
+  for (const matc::PathValidation& path : result.paths) {
+    EXPECT_FALSE(path.passed);
+    EXPECT_GT(path.fresnel.max_abs, 0.0);
+    EXPECT_LT(path.fresnel.max_abs, 1e-5);
+    ASSERT_TRUE(path.embedded.has_value());
+    EXPECT_LT(path.embedded->max_abs, 1e-5);
+  }
+}
+
+}  // namespace
