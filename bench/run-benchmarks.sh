@@ -26,3 +26,9 @@ for (const b of report.benchmarks.filter((b) => b.aggregate_name === "median")) 
 }
 JS
 "$root/tests/check_docs_block.sh" --update "$root/docs/performance.md" lut-bake cat "$report.md"
+
+# Our Fresnel against Schlick's in a 720p full-screen pass on Vulkan (lavapipe unless
+# MATC_BENCH_DEVICE names another device).
+cmake --build "$build" --target matc_fullscreen_cost >/dev/null
+"$build/bench/matc_fullscreen_cost" ${MATC_BENCH_DEVICE:+--device "$MATC_BENCH_DEVICE"} >"$report.md"
+"$root/tests/check_docs_block.sh" --update "$root/docs/performance.md" fullscreen-720p cat "$report.md"

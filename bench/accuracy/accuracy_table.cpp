@@ -13,6 +13,7 @@
 
 #include "matc/fit/accuracy.h"
 #include "matc/fit/coefficients.h"
+#include "matc/lut/comparison_lobes.h"
 #include "matc/lut/preintegrate.h"
 #include "matc/lut/split_sum_reference.h"
 #include "matc/optics/gulbrandsen.h"
@@ -177,27 +178,11 @@ void print_reconstruction() {
   }
 }
 
-// A basis view over Schlick's and F82-tint's lobes, so that their split sums are baked and sampled
-// exactly like ours: b_1 = (1 - mu)^5, b_2 = mu (1 - mu)^6.
-struct LobeTables {
-  std::vector<double> schlick;
-  std::vector<double> f82;
-  std::vector<double> zero;
-  explicit LobeTables(std::size_t n) : schlick(n), f82(n), zero(n, 0.0) {
-    for (std::size_t j = 0; j < n; ++j) {
-      const double mu = static_cast<double>(j) / static_cast<double>(n - 1);
-      schlick[j] = std::pow(1.0 - mu, 5.0);
-      f82[j] = mu * std::pow(1.0 - mu, 6.0);
-    }
-  }
-  matc::runtime::BasisView view() const { return {{schlick, f82, zero}, {1, 2}}; }
-};
-
 // Per-metal rows (unless summary_only), then the worst and mean rows.
 void print_preintegrated(bool summary_only) {
   const auto basis = matc::runtime::paper_basis();
   const matc::Lut ours = matc::preintegrate_lut(basis, {});
-  const LobeTables lobes(basis.samples());
+  const matc::ComparisonLobes lobes(basis.samples());
   const matc::Lut lobe_lut = matc::preintegrate_lut(lobes.view(), {});
   constexpr std::array<double, 9> kNdotV = {0.02, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9, 1.0};
   std::vector<matc::SplitSumEstimator> estimators;

@@ -1,0 +1,122 @@
+// The cost of our Fresnel against Schlick's in a 1280x720 full-screen fragment pass on a Vulkan
+// device (lavapipe unless --device picks another): the same table fetch, target and pass for both,
+// only the Fresnel differs. Prints the table of docs/performance.md (bench/run-benchmarks.sh).
+//   matc_fullscreen_cost [--device NAME] [--frames N] [--warmup N]
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <fmt/core.h>
+#include <CLI/CLI.hpp>
+
+#include "matc/compile.h"
+#include "matc/emit/build.h"
+#include "matc/emit/fullscreen_shaders.h"
+#include "matc/lut/comparison_lobes.h"
+#include "matc/material/parse.h"
+#include "matc/spirv/shader_compiler.h"
+#include "matc/spirv/spirv_tools.h"
+#include "matc/vulkan/fullscreen_pass.h"
+#include "matc/vulkan/sampler.h"
+
+namespace {
+
+constexpr std::uint32_t kWidth = 1280;
+constexpr std::uint32_t kHeight = 720;
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+matc::SpirvWords compile(const std::string& text, matc::ShaderStage stage, const char* name) {
+  const matc::SpirvWords words =
+      matc::compile_to_spirv({matc::ShaderLanguage::glsl, text, name, "main", false, stage});
+  return matc::optimize_spirv(words, matc::SpirvTarget::vulkan_1_1, name);
+}
+
+struct Timings {
+  std::vector<double> device_ms;
+  std::vector<double> wall_ms;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"720p full-screen pass: our Fresnel against Schlick's on a Vulkan device"};
+  std::string device_name;
+  int frames = 200;
+  int warmup = 20;
+  app.add_option("--device", device_name, "A substring of the Vulkan device's name");
+  app.add_option("--frames", frames, "Timed frames per variant")->check(CLI::Range(5, 100000));
+  app.add_option("--warmup", warmup, "Untimed frames first")->check(CLI::Range(1, 1000));
+  CLI11_PARSE(app, argc, argv);
+
+  const matc::ParseResult parsed =
+      matc::read_material_file(MATC_EXAMPLES_DIR "/figure2_edge_tint.json");
+  const matc::CompiledMaterial material =
+      matc::compile_material(*parsed.material, matc::runtime::paper_basis());
+  const matc::Build build(matc::BuildOptions{});
+  const matc::ComparisonLobes lobes(matc::runtime::paper_basis().samples());
+  const matc::Lut lobe_lut = matc::preintegrate_lut(lobes.view(), {});
+
+  const matc::vulkan::Context context(matc::vulkan::ContextOptions{false, device_name});
+  const auto size = static_cast<std::uint32_t>(build.stored_lut().size);
+  const matc::vulkan::Image ours_table(context, size, size, build.stored_lut().texels);
+  const matc::vulkan::Image schlick_table(context, size, size, lobe_lut.texels);
+  const matc::vulkan::LutSampler sampler(context);
+  const matc::SpirvWords vertex =
+      compile(matc::fullscreen_vertex_source(), matc::ShaderStage::vertex, "fullscreen.vert");
+
+  struct Variant {
+    const char* label;
+    matc::FresnelQuantity quantity;
+  };
+  const std::array<Variant, 2> variants = {
+      Variant{"Fbar, image-based light (one RGBA32F fetch)", matc::FresnelQuantity::preintegrated},
+      Variant{"F, one direct light (no fetch)", matc::FresnelQuantity::direct}};
+
+  fmt::print(
+      "Measured on {}, {} CPU thread(s) on the host ({} frames after {} warm-up frames per variant, interleaved; medians):\n\n"
+      "| pass (1280x720, material figure2_edge_tint) | Schlick (ms) | ours (ms) | ours / "
+      "Schlick | host: Schlick (ms) | host: ours (ms) | host: ours / Schlick |\n"
+      "|---|---:|---:|---:|---:|---:|---:|\n",
+      context.device_name(), std::thread::hardware_concurrency(), frames, warmup);
+  for (const Variant& variant : variants) {
+    std::array<std::unique_ptr<matc::vulkan::FullscreenPass>, 2> passes;
+    for (const matc::FresnelModel model : {matc::FresnelModel::schlick, matc::FresnelModel::ours}) {
+      const bool ours = model == matc::FresnelModel::ours;
+      const matc::SpirvWords fragment =
+          compile(matc::cost_pass_source(build, material, model, variant.quantity, kWidth, kHeight),
+                  matc::ShaderStage::fragment, "cost_pass.frag");
+      const std::array bindings = {
+          matc::vulkan::Binding::sampled_image(0, ours ? ours_table : schlick_table),
+          matc::vulkan::Binding::separate_sampler(1, sampler)};
+      passes[ours ? 1 : 0] = std::make_unique<matc::vulkan::FullscreenPass>(
+          context, vertex, fragment, bindings, kWidth, kHeight);
+    }
+    std::array<Timings, 2> timings;
+    for (int frame = 0; frame < warmup + frames; ++frame) {
+      for (std::size_t which = 0; which < 2; ++which) {
+        const matc::vulkan::FrameTime time = passes[which]->draw();
+        if (frame < warmup) continue;
+        timings[which].device_ms.push_back(time.device_ms);
+        timings[which].wall_ms.push_back(time.wall_ms);
+      }
+    }
+    // Device timestamps around the pass (NaN where the queue has none), then the host's
+    // submit-to-fence time, which adds the same submission overhead to both.
+    const double schlick = median(timings[0].device_ms);
+    const double ours = median(timings[1].device_ms);
+    const double schlick_host = median(timings[0].wall_ms);
+    const double ours_host = median(timings[1].wall_ms);
+    fmt::print("| {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} |\n", variant.label,
+               schlick, ours, ours / schlick, schlick_host, ours_host, ours_host / schlick_host);
+  }
+  return 0;
+}

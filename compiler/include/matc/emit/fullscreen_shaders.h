@@ -1,0 +1,35 @@
+// Full-screen GLSL passes that put our Fresnel beside Schlick's on a device: the cost benchmark
+// (bench/fullscreen_cost.cpp) and the comparison renders (examples/render). Not part of what
+// `matc` writes; built from templates/glsl/{fullscreen.vert,cost_pass.frag,comparison_render.frag}.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "matc/compile.h"
+#include "matc/emit/build.h"
+
+namespace matc {
+
+enum class FresnelModel { schlick, ours };
+// F per light (mu = V.H), or preintegrated Fbar from one table fetch.
+enum class FresnelQuantity { direct, preintegrated };
+
+// One triangle covering the viewport, from gl_VertexIndex.
+std::string fullscreen_vertex_source();
+
+// The benchmark's fragment shader: per pixel, one quantity of `compiled` with one model. Binds
+// the table at (set 0) binding 0 and the sampler at binding 1; for Schlick's preintegrated
+// variant the table must be the ComparisonLobes bake.
+std::string cost_pass_source(const Build& build, const CompiledMaterial& compiled,
+                             FresnelModel model, FresnelQuantity quantity, std::uint32_t width,
+                             std::uint32_t height);
+
+// The comparison render's fragment shader (method and samples in push constants; see the
+// template for the bindings). curve_size: entries of the exact-curve buffer.
+std::string comparison_render_source(const Build& build, const CompiledMaterial& compiled,
+                                     std::size_t curve_size, std::uint32_t width,
+                                     std::uint32_t height);
+
+}  // namespace matc

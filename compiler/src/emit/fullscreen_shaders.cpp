@@ -1,0 +1,54 @@
+#include "matc/emit/fullscreen_shaders.h"
+
+#include <fmt/core.h>
+
+#include "matc/emit/template.h"
+#include "matc/version.h"
+
+namespace matc {
+namespace {
+
+std::string f0_list(const CompiledMaterial& compiled) {
+  return float_list(std::span<const double>(compiled.f0.data(), compiled.f0.size()));
+}
+
+}  // namespace
+
+std::string fullscreen_vertex_source() {
+  return fill_template("glsl/fullscreen.vert", {{"version", kVersion}});
+}
+
+std::string cost_pass_source(const Build& build, const CompiledMaterial& compiled,
+                             FresnelModel model, FresnelQuantity quantity, std::uint32_t width,
+                             std::uint32_t height) {
+  const bool ours = model == FresnelModel::ours;
+  const bool direct = quantity == FresnelQuantity::direct;
+  return fill_template(
+      "glsl/cost_pass.frag",
+      {{"version", kVersion},
+       {"variant", fmt::format("{} {}", ours ? "ours" : "Schlick's", direct ? "F" : "Fbar")},
+       {"defines", fmt::format("#define MATC_COST_OURS {}\n#define MATC_COST_DIRECT {}",
+                               ours ? 1 : 0, direct ? 1 : 0)},
+       {"library", build.library_source(ShaderLanguage::glsl)},
+       {"material", build.material_source(ShaderLanguage::glsl, compiled)},
+       {"name", compiled.material.name},
+       {"f0", f0_list(compiled)},
+       {"width", std::to_string(width)},
+       {"height", std::to_string(height)}});
+}
+
+std::string comparison_render_source(const Build& build, const CompiledMaterial& compiled,
+                                     std::size_t curve_size, std::uint32_t width,
+                                     std::uint32_t height) {
+  return fill_template("glsl/comparison_render.frag",
+                       {{"version", kVersion},
+                        {"library", build.library_source(ShaderLanguage::glsl)},
+                        {"material", build.material_source(ShaderLanguage::glsl, compiled)},
+                        {"name", compiled.material.name},
+                        {"f0", f0_list(compiled)},
+                        {"curve_size", std::to_string(curve_size)},
+                        {"width", std::to_string(width)},
+                        {"height", std::to_string(height)}});
+}
+
+}  // namespace matc

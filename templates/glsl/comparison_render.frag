@@ -1,0 +1,156 @@
+#version 450
+// matc {{version}}: one panel of the comparison renders (examples/render) for material {{name}}:
+// a sphere under a procedural sky, seen head-on, GGX with roughness from the push constants.
+//   method 0: Monte-Carlo reference, visible-normal sampling, exact Fresnel (tabulated curve)
+//   method 1: split sum, Karis' prefiltered radiance x Schlick's preintegrated Fresnel
+//   method 2: split sum, the same radiance x ours (matc_fresnel_preintegrated_{{name}})
+// Each pass writes (sum, weight) for its share of the samples; the host adds passes up and
+// divides. Background pixels write a negative weight.
+{{library}}
+{{material}}
+layout(set = 0, binding = 0) uniform texture2D matc_lut;
+layout(set = 0, binding = 1) uniform texture2D lobe_lut;  // ComparisonLobes: x albedo, y Schlick
+layout(set = 0, binding = 2) uniform sampler matc_lut_sampler;
+// The exact RGB curve at mu_j = j / (n - 1), linearly interpolated.
+layout(std430, set = 0, binding = 3) readonly buffer ExactCurve { vec4 exact_curve[]; };
+layout(push_constant) uniform Panel {
+  int method;
+  uint first_sample;
+  uint sample_count;
+  uint total_samples;
+  float roughness;
+} panel;
+layout(location = 0) out vec4 result;
+
+const float PI = 3.14159265358979;
+const vec3 F0 = vec3({{f0}});
+const uint CURVE_SIZE = {{curve_size}}u;
+const vec2 SIZE = vec2({{width}}.0, {{height}}.0);
+const float SPHERE_RADIUS = 0.92;  // of the half-width
+
+// Radiance arriving from direction d (y up): sky, ground and two large soft lights, one behind
+// the sphere so that its rim, where Fresnel differs most, reflects something bright.
+vec3 environment(vec3 d) {
+  vec3 horizon = vec3(0.85, 0.82, 0.78);
+  vec3 sky = mix(horizon, vec3(0.18, 0.32, 0.65), sqrt(max(d.y, 0.0)));
+  vec3 ground = mix(horizon * 0.5, vec3(0.16, 0.14, 0.12), sqrt(max(-d.y, 0.0)));
+  vec3 c = d.y >= 0.0 ? sky : ground;
+  c += vec3(5.0) * smoothstep(0.80, 0.95, dot(d, normalize(vec3(0.25, 0.45, -1.0))));
+  c += vec3(3.0, 2.9, 2.7) * smoothstep(0.92, 0.98, dot(d, normalize(vec3(-1.0, 0.35, 0.25))));
+  return c;
+}
+
+vec3 exact_fresnel(float mu) {
+  float x = clamp(mu, 0.0, 1.0) * float(CURVE_SIZE - 1u);
+  uint i = min(uint(x), CURVE_SIZE - 2u);
+  return mix(exact_curve[i].rgb, exact_curve[i + 1u].rgb, x - float(i));
+}
+
+uint hash(uint x) {  // PCG output permutation
+  x = x * 747796405u + 2891336453u;
+  x = ((x >> ((x >> 28u) + 4u)) ^ x) * 277803737u;
+  return (x >> 22u) ^ x;
+}
+
+// Hammersley point i of n, shifted per pixel (Cranley-Patterson rotation).
+vec2 sample_point(uint i, uint n, vec2 shift) {
+  vec2 u = vec2((float(i) + 0.5) / float(n), float(bitfieldReverse(i)) * 2.3283064365386963e-10);
+  return fract(u + shift);
+}
+
+// An orthonormal frame around unit n (Duff et al. 2017).
+void frame(vec3 n, out vec3 t, out vec3 b) {
+  float s = n.z >= 0.0 ? 1.0 : -1.0;
+  float a = -1.0 / (s + n.z);
+  float c = n.x * n.y * a;
+  t = vec3(1.0 + s * n.x * n.x * a, s * c, -s * n.x);
+  b = vec3(c, s + n.y * n.y * a, -n.y);
+}
+
+// Smith's Lambda for GGX.
+float smith_lambda(float cos_theta, float alpha) {
+  float c2 = cos_theta * cos_theta;
+  return 0.5 * (sqrt(1.0 + alpha * alpha * (1.0 - c2) / c2) - 1.0);
+}
+
+// Heitz 2018, "Sampling the GGX Distribution of Visible Normals"; v in the frame of the normal.
+vec3 sample_visible_normal(vec3 v, float alpha, vec2 u) {
+  vec3 vh = normalize(vec3(alpha * v.x, alpha * v.y, v.z));
+  float length2 = vh.x * vh.x + vh.y * vh.y;
+  vec3 t1 = length2 > 0.0 ? vec3(-vh.y, vh.x, 0.0) * inversesqrt(length2) : vec3(1.0, 0.0, 0.0);
+  vec3 t2 = cross(vh, t1);
+  float r = sqrt(u.x);
+  float phi = 2.0 * PI * u.y;
+  float p1 = r * cos(phi);
+  float s = 0.5 * (1.0 + vh.z);
+  float p2 = (1.0 - s) * sqrt(1.0 - p1 * p1) + s * r * sin(phi);
+  vec3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;
+  return normalize(vec3(alpha * nh.x, alpha * nh.y, max(0.0, nh.z)));
+}
+
+// A GGX normal with density D(h) cos(theta_h), in the frame of the normal.
+vec3 sample_normal(float alpha, vec2 u) {
+  float cos2 = (1.0 - u.x) / (1.0 + (alpha * alpha - 1.0) * u.x);
+  float sin_theta = sqrt(max(0.0, 1.0 - cos2));
+  float phi = 2.0 * PI * u.y;
+  return vec3(sin_theta * cos(phi), sin_theta * sin(phi), sqrt(cos2));
+}
+
+void main() {
+  vec2 p = (gl_FragCoord.xy / SIZE * 2.0 - 1.0) / SPHERE_RADIUS;
+  p.y = -p.y;
+  float r2 = dot(p, p);
+  if (r2 >= 1.0) {
+    result = vec4(-0.04, -0.04, -0.045, -1.0);
+    return;
+  }
+  vec3 n = vec3(p, sqrt(1.0 - r2));
+  vec3 v = vec3(0.0, 0.0, 1.0);
+  float alpha = max(panel.roughness * panel.roughness, 1e-3);
+  uvec2 pixel = uvec2(gl_FragCoord.xy);
+  vec2 shift = vec2(hash(pixel.x + 4096u * pixel.y), hash(pixel.y + 4096u * pixel.x + 17u)) *
+               2.3283064365386963e-10;
+  vec3 sum = vec3(0.0);
+  float weight = 0.0;
+  uint last = panel.first_sample + panel.sample_count;
+  if (panel.method == 0) {
+    vec3 t, b;
+    frame(n, t, b);
+    vec3 view = vec3(dot(v, t), dot(v, b), max(dot(v, n), 1e-4));
+    float lambda_v = smith_lambda(view.z, alpha);
+    for (uint i = panel.first_sample; i < last; ++i) {
+      vec3 h = sample_visible_normal(view, alpha, sample_point(i, panel.total_samples, shift));
+      vec3 l = reflect(-view, h);
+      if (l.z > 0.0) {
+        // E[L F G2/G1] with height-correlated Smith G2, as the table is baked.
+        float g2_over_g1 = (1.0 + lambda_v) / (1.0 + lambda_v + smith_lambda(l.z, alpha));
+        sum += environment(l.x * t + l.y * b + l.z * n) * exact_fresnel(dot(view, h)) * g2_over_g1;
+      }
+    }
+    weight = float(panel.sample_count);
+  } else {
+    // Karis 2013: radiance prefiltered around the mirror direction with N = V = R.
+    vec3 r = reflect(-v, n);
+    vec3 t, b;
+    frame(r, t, b);
+    for (uint i = panel.first_sample; i < last; ++i) {
+      vec3 h = sample_normal(alpha, sample_point(i, panel.total_samples, shift));
+      vec3 l = 2.0 * h.z * h - vec3(0.0, 0.0, 1.0);
+      if (l.z > 0.0) {
+        sum += environment(l.x * t + l.y * b + l.z * r) * l.z;
+        weight += l.z;
+      }
+    }
+    vec2 texcoord = matc_lut_texcoord(n.z, panel.roughness);
+    vec3 fbar;
+    if (panel.method == 1) {
+      vec4 lobes = textureLod(sampler2D(lobe_lut, matc_lut_sampler), texcoord, 0.0);
+      fbar = F0 * lobes.x + (vec3(1.0) - F0) * lobes.y;
+    } else {
+      fbar = matc_fresnel_preintegrated_{{name}}(
+          textureLod(sampler2D(matc_lut, matc_lut_sampler), texcoord, 0.0));
+    }
+    sum *= fbar;
+  }
+  result = vec4(sum, weight);
+}
