@@ -1,11 +1,15 @@
 #version 450
 // matc {{version}}: one panel of the comparison renders (examples/render) for material {{name}}:
 // a sphere under a procedural sky, seen head-on, GGX with roughness from the push constants.
-//   method 0: Monte-Carlo reference, visible-normal sampling, exact Fresnel (tabulated curve)
-//   method 1: split sum, Karis' prefiltered radiance x Schlick's preintegrated Fresnel
-//   method 2: split sum, the same radiance x ours (matc_fresnel_preintegrated_{{name}})
+// Each method writes one estimate per pixel:
+//   0: the Monte-Carlo reference, visible-normal sampling, exact Fresnel (tabulated curve)
+//   1: Karis' prefiltered radiance (the split sum's first factor)
+//   2: the exact preintegrated Fresnel, by visible-normal sampling (the best any split sum does)
+//   3: Schlick's preintegrated Fresnel, from the ComparisonLobes table
+//   4: ours, matc_fresnel_preintegrated_{{name}} from our table
 // Each pass writes (sum, weight) for its share of the samples; the host adds passes up and
-// divides. Background pixels write a negative weight.
+// divides, and multiplies radiance by a Fresnel factor for the split-sum images. Background
+// pixels write a negative weight.
 {{library}}
 {{material}}
 layout(set = 0, binding = 0) uniform texture2D matc_lut;
@@ -113,8 +117,8 @@ void main() {
   vec3 sum = vec3(0.0);
   float weight = 0.0;
   uint last = panel.first_sample + panel.sample_count;
-  if (panel.method == 0) {
-    vec3 t, b;
+  vec3 t, b;
+  if (panel.method == 0 || panel.method == 2) {
     frame(n, t, b);
     vec3 view = vec3(dot(v, t), dot(v, b), max(dot(v, n), 1e-4));
     float lambda_v = smith_lambda(view.z, alpha);
@@ -124,14 +128,14 @@ void main() {
       if (l.z > 0.0) {
         // E[L F G2/G1] with height-correlated Smith G2, as the table is baked.
         float g2_over_g1 = (1.0 + lambda_v) / (1.0 + lambda_v + smith_lambda(l.z, alpha));
-        sum += environment(l.x * t + l.y * b + l.z * n) * exact_fresnel(dot(view, h)) * g2_over_g1;
+        vec3 f = exact_fresnel(dot(view, h)) * g2_over_g1;
+        sum += panel.method == 0 ? environment(l.x * t + l.y * b + l.z * n) * f : f;
       }
     }
     weight = float(panel.sample_count);
-  } else {
+  } else if (panel.method == 1) {
     // Karis 2013: radiance prefiltered around the mirror direction with N = V = R.
     vec3 r = reflect(-v, n);
-    vec3 t, b;
     frame(r, t, b);
     for (uint i = panel.first_sample; i < last; ++i) {
       vec3 h = sample_normal(alpha, sample_point(i, panel.total_samples, shift));
@@ -141,16 +145,16 @@ void main() {
         weight += l.z;
       }
     }
+  } else {
     vec2 texcoord = matc_lut_texcoord(n.z, panel.roughness);
-    vec3 fbar;
-    if (panel.method == 1) {
+    if (panel.method == 3) {
       vec4 lobes = textureLod(sampler2D(lobe_lut, matc_lut_sampler), texcoord, 0.0);
-      fbar = F0 * lobes.x + (vec3(1.0) - F0) * lobes.y;
+      sum = F0 * lobes.x + (vec3(1.0) - F0) * lobes.y;
     } else {
-      fbar = matc_fresnel_preintegrated_{{name}}(
+      sum = matc_fresnel_preintegrated_{{name}}(
           textureLod(sampler2D(matc_lut, matc_lut_sampler), texcoord, 0.0));
     }
-    sum *= fbar;
+    weight = 1.0;
   }
   result = vec4(sum, weight);
 }

@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Renders the comparison images into docs/images/ and writes their error table into
+# docs/rendering.md (the talk's Figure 2 material and beryllium).
+#   examples/render/update-images.sh [BUILD_DIR]   (default: build)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+build=${1:-$root/build}
+cmake --build "$build" --target matc_render >/dev/null
+table=$(mktemp)
+trap 'rm -f "$table"' EXIT
+"$build/examples/render/matc_render" --size 256 --samples 4096 -o "$root/docs/images" \
+  "$root/examples/materials/figure2_edge_tint.json" "$root/examples/materials/beryllium.json" \
+  >"$table"
+"$root/tests/check_docs_block.sh" --update "$root/docs/rendering.md" comparison-renders cat "$table"
