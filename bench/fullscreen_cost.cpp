@@ -82,7 +82,8 @@ int main(int argc, char** argv) {
       Variant{"F, one direct light (no fetch)", matc::FresnelQuantity::direct}};
 
   fmt::print(
-      "Measured on {}, {} CPU thread(s) on the host ({} frames after {} warm-up frames per variant, interleaved; medians):\n\n"
+      "Measured on {}, {} CPU thread(s) on the host ({} frames after {} warm-up frames per "
+      "variant, interleaved; medians):\n\n"
       "| pass (1280x720, material figure2_edge_tint) | Schlick (ms) | ours (ms) | ours / "
       "Schlick | host: Schlick (ms) | host: ours (ms) | host: ours / Schlick |\n"
       "|---|---:|---:|---:|---:|---:|---:|\n",

@@ -9,4 +9,5 @@ bash scripts/install-deps.sh
 # shellcheck disable=SC2086  # MATC_CMAKE_ARGS is a list of words
 cmake -S . -B build -G Ninja ${MATC_CMAKE_ARGS:-}
 cmake --build build
-./build/matc -o build/examples examples/materials/*.json
+# --validate: every material's GLSL and HLSL shaders run on lavapipe against the CPU runtime first.
+./build/matc --validate -o build/examples examples/materials/*.json

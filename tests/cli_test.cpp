@@ -415,8 +415,8 @@ TEST_F(MatcCli, BatchValidatesBeforeWriting) {
   write_file(dir_ / "good.json", kGood);
   const CommandResult result = run({"--validate", "-o", "out", "good.json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  EXPECT_NE(result.out.find("good             GLSL  F "), std::string::npos) << result.out;
-  EXPECT_NE(result.out.find("good             HLSL  F "), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("good                 GLSL  F "), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("good                 HLSL  F "), std::string::npos) << result.out;
   EXPECT_TRUE(fs::exists(dir_ / "out" / "good.spv"));
 }
 

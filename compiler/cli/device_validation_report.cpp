@@ -38,7 +38,7 @@ bool validate_and_report(const DeviceValidator& validator, const CompiledMateria
   const MaterialValidation result = validator.validate(compiled);
   const ValidationTolerance& tolerance = validator.tolerance();
   for (const PathValidation& path : result.paths) {
-    std::string line = fmt::format("{:<16} {}", result.name,
+    std::string line = fmt::format("{:<20} {}", result.name,
                                    path.language == ShaderLanguage::glsl ? "GLSL" : "HLSL");
     line += describe("F", path.fresnel, tolerance.fresnel, true);
     line += describe("Fbar", path.preintegrated, tolerance.preintegrated, false);
