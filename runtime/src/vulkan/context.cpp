@@ -272,6 +272,16 @@ std::uint32_t Context::memory_type(std::uint32_t type_bits, VkMemoryPropertyFlag
   throw VulkanError("no memory type with the required properties on " + device_name());
 }
 
+VkDeviceMemory Context::allocate_memory(const VkMemoryRequirements& requirements,
+                                        VkMemoryPropertyFlags flags) const {
+  VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  allocate.allocationSize = requirements.size;
+  allocate.memoryTypeIndex = memory_type(requirements.memoryTypeBits, flags);
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  check(vkAllocateMemory(state_->device, &allocate, nullptr, &memory), "vkAllocateMemory");
+  return memory;
+}
+
 void Context::submit(const std::function<void(VkCommandBuffer)>& record) const {
   VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   allocate.commandPool = state_->command_pool;

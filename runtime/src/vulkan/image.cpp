@@ -51,10 +51,7 @@ Image::Image(const Context& context, std::uint32_t width, std::uint32_t height, 
   try {
     VkMemoryRequirements requirements;
     vkGetImageMemoryRequirements(device_, image_, &requirements);
-    VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    allocate.allocationSize = requirements.size;
-    allocate.memoryTypeIndex = context.memory_type(requirements.memoryTypeBits, 0);
-    check(vkAllocateMemory(device_, &allocate, nullptr, &memory_), "vkAllocateMemory (image)");
+    memory_ = context.allocate_memory(requirements, 0);
     check(vkBindImageMemory(device_, image_, memory_, 0), "vkBindImageMemory");
     VkImageViewCreateInfo view_info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     view_info.image = image_;

@@ -53,6 +53,9 @@ class Context {
 
   // A memory type allowed by type_bits with all of `flags`; throws VulkanError if none.
   std::uint32_t memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags flags) const;
+  // Device memory meeting `requirements` with all of `flags`; the caller frees it.
+  VkDeviceMemory allocate_memory(const VkMemoryRequirements& requirements,
+                                 VkMemoryPropertyFlags flags) const;
 
   // Records commands into a one-time command buffer, submits it and waits for it to finish.
   void submit(const std::function<void(VkCommandBuffer)>& record) const;
