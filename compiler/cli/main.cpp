@@ -88,7 +88,8 @@ int main(int argc, char** argv) {
       "them with the CPU runtime; writes nothing");
   validate_command->add_option("files", validate.files, "Material files (.json)")->required();
   validate_command->add_flag("--embed-lut", validate.embed_lut,
-                             "Also check the embedded-table path");
+                             "Also check the embedded-table path (lavapipe compiles tables "
+                             "above 8x8 slowly: docs/validation.md)");
   validate_command
       ->add_option("--embed-lut-size", validate.embed_lut_size, "Width and height of that table")
       ->capture_default_str()
