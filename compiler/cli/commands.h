@@ -26,7 +26,8 @@ struct CompileOptions {
   std::string output_directory = "matc-out";
   bool keep_going = false;
   bool quiet = false;
-  std::string emit;  // comma-separated output kinds; empty: all
+  unsigned jobs = 0;  // -j: materials compiled at once; 0: one per hardware thread
+  std::string emit;   // comma-separated output kinds; empty: all
   std::string lut_format = "ktx2";
   LutCliOptions lut;
   bool embed_lut = false;

@@ -1,9 +1,16 @@
+#include <unistd.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <set>
 #include <stdexcept>
+#include <thread>
 
 #include <fmt/core.h>
 
@@ -68,9 +75,99 @@ struct BatchSummary {
   std::size_t unchanged = 0;
   std::size_t failed = 0;
   std::size_t failed_on_device = 0;
+  std::size_t not_attempted = 0;
 
   void count(WriteOutcome outcome) { ++(outcome == WriteOutcome::written ? written : unchanged); }
 };
+
+// One input file through the batch: parsed and checked in order, then compiled by any worker.
+struct Job {
+  std::string file;
+  std::optional<Material> material;
+  Diagnostics diagnostics;
+  // Filled by the worker that compiles it: the manifest entry, not the bytes (memory stays flat
+  // however long the batch).
+  std::optional<nlohmann::ordered_json> manifest_entry;
+  std::size_t written = 0;
+  std::size_t unchanged = 0;
+  bool failed_on_device = false;
+  bool attempted = false;
+};
+
+// Reads and checks every file in order: name rules need all names, and a batch without
+// --keep-going compiles nothing when an input is invalid.
+std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& output_directory) {
+  std::map<std::string, std::string> inputs_by_identity;
+  for (const std::string& file : options.files)
+    inputs_by_identity[identity(file)] = file;
+  // Output names must be unique even on case-insensitive file systems.
+  std::map<std::string, std::size_t> names_in_use;  // lowercase name -> job
+  std::vector<Job> jobs(options.files.size());
+  for (std::size_t index = 0; index < jobs.size(); ++index) {
+    Job& job = jobs[index];
+    job.file = options.files[index];
+    ParseResult parsed = read_material_file(job.file);
+    job.diagnostics = std::move(parsed.diagnostics);
+    if (!parsed.material) continue;
+    const Material& material = *parsed.material;
+    const std::vector<fs::path> outputs = possible_outputs(output_directory, material.name);
+    const auto overwritten = std::find_if(outputs.begin(), outputs.end(), [&](const fs::path& p) {
+      return inputs_by_identity.contains(identity(p));
+    });
+    if (reserved_names().contains(lowercase(material.name))) {
+      job.diagnostics.error(material.name_location, "name",
+                            fmt::format("'{}' names a file every build writes", material.name),
+                            "a name other than matc_fresnel, matc_lut and matc_manifest "
+                            "(ignoring case)");
+    } else if (const auto clash = names_in_use.find(lowercase(material.name));
+               clash != names_in_use.end()) {
+      const Material& first = *jobs[clash->second].material;
+      job.diagnostics.error(
+          material.name_location, "name",
+          fmt::format("'{}' is already used by {} ({}:{})", material.name, first.source_path,
+                      first.name_location.line, first.name_location.column),
+          "names unique within a build, ignoring case (they name output files)");
+    } else if (overwritten != outputs.end()) {
+      job.diagnostics.error(
+          material.name_location, "name",
+          fmt::format("output '{}' would overwrite the input {}", overwritten->string(),
+                      inputs_by_identity.at(identity(*overwritten))),
+          "an output directory (-o) that holds no input file");
+    } else {
+      names_in_use.emplace(lowercase(material.name), index);
+    }
+    if (!job.diagnostics.has_errors()) job.material = std::move(parsed.material);
+  }
+  return jobs;
+}
+
+// "[12/1000] gold" on one terminal line, redrawn as materials finish; nothing when not a TTY.
+class ProgressLine {
+ public:
+  ProgressLine(std::size_t total, bool enabled) : total_(total), enabled_(enabled) {}
+  void finished(const std::string& name) {
+    if (!enabled_) return;
+    const std::lock_guard lock(mutex_);
+    ++done_;
+    fmt::print(stderr, "\r\x1b[K[{}/{}] {}", done_, total_, name);
+    std::fflush(stderr);
+  }
+  void clear() {
+    if (enabled_ && done_ > 0) fmt::print(stderr, "\r\x1b[K");
+  }
+
+ private:
+  std::mutex mutex_;
+  std::size_t total_;
+  std::size_t done_ = 0;
+  bool enabled_;
+};
+
+unsigned worker_count(unsigned requested, std::size_t jobs) {
+  const unsigned available = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned wanted = requested == 0 ? available : requested;
+  return static_cast<unsigned>(std::clamp<std::size_t>(jobs, 1, wanted));
+}
 
 }  // namespace
 
@@ -94,72 +191,80 @@ int run_compile(const CompileOptions& options) {
   }
   const runtime::BasisView basis = runtime::paper_basis();
   const fs::path output_directory(options.output_directory);
-  std::map<std::string, std::string> inputs_by_identity;
-  for (const std::string& file : options.files)
-    inputs_by_identity[identity(file)] = file;
+  std::vector<Job> jobs = parse_jobs(options, output_directory);
+  const bool inputs_valid = std::all_of(jobs.begin(), jobs.end(),
+                                        [](const Job& job) { return job.material.has_value(); });
 
-  // Output names must be unique even on case-insensitive file systems.
-  std::map<std::string, const Material*> names_in_use;
-  std::vector<Material> materials;
-  materials.reserve(options.files.size());
-  std::vector<MaterialOutputs> written_materials;
-  BatchSummary summary;
-
-  for (const std::string& file : options.files) {
-    ParseResult parsed = read_material_file(file);
-    Diagnostics diagnostics = std::move(parsed.diagnostics);
-    if (parsed.material) {
-      const Material& material = materials.emplace_back(std::move(*parsed.material));
-      const std::vector<fs::path> outputs = possible_outputs(output_directory, material.name);
-      const auto overwritten = std::find_if(outputs.begin(), outputs.end(), [&](const fs::path& p) {
-        return inputs_by_identity.contains(identity(p));
-      });
-      if (reserved_names().contains(lowercase(material.name))) {
-        diagnostics.error(material.name_location, "name",
-                          fmt::format("'{}' names a file every build writes", material.name),
-                          "a name other than matc_fresnel, matc_lut and matc_manifest "
-                          "(ignoring case)");
-      } else if (const auto clash = names_in_use.find(lowercase(material.name));
-                 clash != names_in_use.end()) {
-        diagnostics.error(material.name_location, "name",
-                          fmt::format("'{}' is already used by {} ({}:{})", material.name,
-                                      clash->second->source_path, clash->second->name_location.line,
-                                      clash->second->name_location.column),
-                          "names unique within a build, ignoring case (they name output files)");
-      } else if (overwritten != outputs.end()) {
-        diagnostics.error(
-            material.name_location, "name",
-            fmt::format("output '{}' would overwrite the input {}", overwritten->string(),
-                        inputs_by_identity.at(identity(*overwritten))),
-            "an output directory (-o) that holds no input file");
-      } else {
-        names_in_use.emplace(lowercase(material.name), &material);
-        try {
-          // Every byte is generated before the first file is written: a failure leaves no
-          // partial set of outputs for this material.
-          const CompiledMaterial compiled = compile_material(material, basis);
-          MaterialOutputs outputs_of_material = build.material_outputs(compiled);
-          if (validator && !validate_and_report(*validator, compiled)) {
-            ++summary.failed_on_device;
-            diagnostics.error({file, 0, 0}, "",
-                              "its shaders differ from the CPU runtime on the Vulkan device "
-                              "(lines above); nothing written for it");
-          } else {
-            fs::create_directories(output_directory);
-            for (const OutputFile& output : outputs_of_material.files)
-              summary.count(write_file_atomically(output_directory / output.name, output.bytes));
-            ++summary.compiled;
-            written_materials.push_back(std::move(outputs_of_material));
-          }
-        } catch (const std::exception& error) {
-          diagnostics.error({file, 0, 0}, "", error.what(), "a writable output directory (-o)");
+  // Workers take the next valid job; without --keep-going the first failure stops new ones.
+  std::vector<std::size_t> queue;
+  if (inputs_valid || options.keep_going) {
+    for (std::size_t i = 0; i < jobs.size(); ++i)
+      if (jobs[i].material) queue.push_back(i);
+  }
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
+  std::mutex device_mutex;  // one Vulkan queue: validations run one at a time
+  ProgressLine progress(queue.size(), !options.quiet && isatty(fileno(stderr)) != 0);
+  const auto work = [&] {
+    for (std::size_t slot = next++; slot < queue.size() && !stop; slot = next++) {
+      Job& job = jobs[queue[slot]];
+      job.attempted = true;
+      try {
+        // Every byte is generated before the first file is written: a failure leaves no
+        // partial set of outputs for this material.
+        const CompiledMaterial compiled = compile_material(*job.material, basis);
+        MaterialOutputs outputs = build.material_outputs(compiled);
+        bool valid_on_device = true;
+        if (validator) {
+          const std::lock_guard lock(device_mutex);
+          valid_on_device = validate_and_report(*validator, compiled);
         }
+        if (!valid_on_device) {
+          job.failed_on_device = true;
+          job.diagnostics.error({job.file, 0, 0}, "",
+                                "its shaders differ from the CPU runtime on the Vulkan device "
+                                "(lines above); nothing written for it");
+        } else {
+          fs::create_directories(output_directory);
+          for (const OutputFile& output : outputs.files) {
+            const WriteOutcome outcome =
+                write_file_atomically(output_directory / output.name, output.bytes);
+            ++(outcome == WriteOutcome::written ? job.written : job.unchanged);
+          }
+          job.manifest_entry = build.manifest_entry(outputs);
+        }
+      } catch (const std::exception& error) {
+        job.diagnostics.error({job.file, 0, 0}, "", error.what(),
+                              "a writable output directory (-o)");
       }
+      if (job.diagnostics.has_errors() && !options.keep_going) stop = true;
+      progress.finished(job.material->name);
     }
-    print_diagnostics(diagnostics);
-    if (diagnostics.has_errors()) {
+  };
+  std::vector<std::thread> workers;
+  const unsigned threads = worker_count(options.jobs, queue.size());
+  for (unsigned t = 1; t < threads; ++t)
+    workers.emplace_back(work);
+  work();
+  for (std::thread& worker : workers)
+    worker.join();
+  progress.clear();
+
+  // Reported in input order, whatever order the workers finished in.
+  BatchSummary summary;
+  std::vector<nlohmann::ordered_json> manifest_entries;
+  for (Job& job : jobs) {
+    print_diagnostics(job.diagnostics);
+    summary.written += job.written;
+    summary.unchanged += job.unchanged;
+    if (job.failed_on_device) ++summary.failed_on_device;
+    if (job.diagnostics.has_errors()) {
       ++summary.failed;
-      if (!options.keep_going) break;
+    } else if (job.manifest_entry) {
+      ++summary.compiled;
+      manifest_entries.push_back(std::move(*job.manifest_entry));
+    } else {
+      ++summary.not_attempted;
     }
   }
 
@@ -170,9 +275,8 @@ int run_compile(const CompileOptions& options) {
       for (const OutputFile& output : shared)
         summary.count(write_file_atomically(output_directory / output.name, output.bytes));
       if (build.options().emit.contains(OutputKind::json)) {
-        summary.count(
-            write_file_atomically(output_directory / manifest_file_name(),
-                                  format_json(build.manifest(shared, written_materials))));
+        summary.count(write_file_atomically(output_directory / manifest_file_name(),
+                                            format_json(build.manifest(shared, manifest_entries))));
       }
     } catch (const std::exception& error) {
       fmt::print(stderr, "{}: error: {}\n", output_directory.string(), error.what());
@@ -181,12 +285,11 @@ int run_compile(const CompileOptions& options) {
   }
 
   if (!options.quiet) {
-    const std::size_t attempted = summary.compiled + summary.failed;
-    const std::size_t skipped =
-        options.files.size() > attempted ? options.files.size() - attempted : 0;
     fmt::print(stderr, "matc: {} compiled ({} files written, {} unchanged), {} failed{}\n",
                summary.compiled, summary.written, summary.unchanged, summary.failed,
-               skipped > 0 ? fmt::format(", {} not attempted (use --keep-going)", skipped) : "");
+               summary.not_attempted > 0
+                   ? fmt::format(", {} not attempted (use --keep-going)", summary.not_attempted)
+                   : "");
   }
   if (summary.failed_on_device > 0) return kExitValidationFailed;
   return summary.failed > 0 ? kExitInputError : kExitSuccess;

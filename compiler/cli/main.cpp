@@ -24,7 +24,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_flag("-k,--keep-going", compile.keep_going,
                "Compile the remaining files after one fails (still exits 1)");
-  app.add_flag("-q,--quiet", compile.quiet, "Do not print the summary line");
+  app.add_flag("-q,--quiet", compile.quiet, "Do not print the progress and summary lines");
+  app.add_option("-j,--jobs", compile.jobs,
+                 "Materials compiled at once (default: one per hardware thread)")
+      ->check(CLI::Range(1u, 1024u));
   app.add_option("--emit", compile.emit,
                  "Outputs to write, comma-separated (default: all): shader snippets, SPIR-V, "
                  "C headers, JSON manifests, the LUT")

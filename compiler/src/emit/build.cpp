@@ -212,14 +212,34 @@ MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const 
   return out;
 }
 
+namespace {
+
+nlohmann::ordered_json files_json(const std::vector<OutputFile>& files) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const OutputFile& file : files)
+    list.push_back({{"file", file.name}, {"hash", hash_of_bytes(file.bytes)}});
+  return list;
+}
+
+}  // namespace
+
+nlohmann::ordered_json Build::manifest_entry(const MaterialOutputs& material) const {
+  return {{"name", material.name},
+          {"source", material.source_path},
+          {"inputs_hash", material.inputs_hash},
+          {"files", files_json(material.files)}};
+}
+
 nlohmann::ordered_json Build::manifest(const std::vector<OutputFile>& shared,
                                        std::span<const MaterialOutputs> materials) const {
-  const auto files_json = [](const std::vector<OutputFile>& files) {
-    nlohmann::ordered_json list = nlohmann::ordered_json::array();
-    for (const OutputFile& file : files)
-      list.push_back({{"file", file.name}, {"hash", hash_of_bytes(file.bytes)}});
-    return list;
-  };
+  std::vector<nlohmann::ordered_json> entries;
+  for (const MaterialOutputs& material : materials)
+    entries.push_back(manifest_entry(material));
+  return manifest(shared, entries);
+}
+
+nlohmann::ordered_json Build::manifest(const std::vector<OutputFile>& shared,
+                                       std::span<const nlohmann::ordered_json> entries) const {
   nlohmann::ordered_json manifest;
   manifest["matc_version"] = kVersion;
   manifest["inputs_hash"] = inputs_hash_;
@@ -235,12 +255,8 @@ nlohmann::ordered_json Build::manifest(const std::vector<OutputFile>& shared,
                      {"embedded_size", options_.embedded_lut_size}};
   manifest["shared_files"] = files_json(shared);
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (const MaterialOutputs& material : materials) {
-    list.push_back({{"name", material.name},
-                    {"source", material.source_path},
-                    {"inputs_hash", material.inputs_hash},
-                    {"files", files_json(material.files)}});
-  }
+  for (const nlohmann::ordered_json& entry : entries)
+    list.push_back(entry);
   manifest["materials"] = std::move(list);
   return manifest;
 }

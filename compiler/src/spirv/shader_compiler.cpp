@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <charconv>
-#include <mutex>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -13,13 +12,10 @@
 namespace matc {
 namespace {
 
-std::mutex& glslang_mutex() {
-  static std::mutex mutex;
-  return mutex;
-}
-
-// glslang keeps its built-in symbol tables in process-wide state: set up once, never torn down
-// (matc is a short-lived process and tests compile many shaders).
+// glslang keeps its built-in symbol tables in process-wide state: set up once (a function-local
+// static, so the first caller initialises and the others wait), never torn down. After that,
+// compiles on different threads are independent (each TShader has its own pool allocator), which
+// is what `matc -j` relies on; see docs/scaling.md.
 void initialize_glslang_once() {
   static const bool initialized = glslang::InitializeProcess();
   if (!initialized) throw std::runtime_error("glslang failed to initialise");
@@ -89,7 +85,6 @@ EShLanguage glslang_stage(ShaderStage stage) {
 }  // namespace
 
 SpirvWords compile_to_spirv(const ShaderSource& source) {
-  const std::lock_guard lock(glslang_mutex());
   initialize_glslang_once();
 
   const bool hlsl = source.language == ShaderLanguage::hlsl;

@@ -83,6 +83,12 @@ class Build {
   // matc_manifest.json: version, options, and every file written with its hash.
   nlohmann::ordered_json manifest(const std::vector<OutputFile>& shared,
                                   std::span<const MaterialOutputs> materials) const;
+  // The same from each material's manifest_entry(), so that a batch need not keep every
+  // material's bytes until the end.
+  nlohmann::ordered_json manifest(const std::vector<OutputFile>& shared,
+                                  std::span<const nlohmann::ordered_json> entries) const;
+  // {name, source, inputs_hash, files: [{file, hash}]} for one material.
+  nlohmann::ordered_json manifest_entry(const MaterialOutputs& material) const;
 
  private:
   SpirvWords material_library_module(const CompiledMaterial& compiled,

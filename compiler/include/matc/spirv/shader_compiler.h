@@ -34,7 +34,7 @@ struct ShaderSource {
   ShaderStage stage = ShaderStage::compute;
 };
 
-// Compiles one shader stage. Thread-safe (calls are serialised: glslang's globals are not).
+// Compiles one shader stage. Thread-safe: calls on different threads run concurrently.
 SpirvWords compile_to_spirv(const ShaderSource& source);
 
 // The error message for glslang's info log `log` about `source`: each "ERROR: <n>:<line>:" entry
