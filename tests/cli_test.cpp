@@ -175,6 +175,25 @@ TEST_F(MatcCli, InvalidInputsReportedInOrderWhateverTheJobs) {
   EXPECT_NE(result.err.find("2 failed"), std::string::npos) << result.err;
 }
 
+// The depfile lists every output as a target and every input as a dependency, absolute, with
+// spaces escaped for Ninja; -MD puts it in the output directory.
+TEST_F(MatcCli, DepfileListsOutputsAndEveryInput) {
+  write_file(dir_ / "in put" / "good.json", kGood);
+  const CommandResult result = run({"-MD", "--emit", "glsl,json", "-o", "out", "in put/good.json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::string depfile = read_file(dir_ / "out" / "matc.d");
+  const std::string out = (dir_ / "out").string();
+  EXPECT_EQ(depfile.find(out + "/matc_fresnel.glsl \\\n"), 0u) << depfile;
+  EXPECT_NE(depfile.find(out + "/good.glsl"), std::string::npos) << depfile;
+  EXPECT_NE(depfile.find(out + "/matc_manifest.json"), std::string::npos) << depfile;
+  EXPECT_NE(depfile.find((dir_ / "in\\ put" / "good.json").string()), std::string::npos) << depfile;
+  EXPECT_NE(depfile.find("/matc\n"), std::string::npos) << depfile;  // the binary, last
+
+  write_file(dir_ / "bad.json", kBad);
+  EXPECT_EQ(run({"--depfile", "bad.d", "-o", "out2", "bad.json"}).exit_code, 1);
+  EXPECT_FALSE(fs::exists(dir_ / "bad.d"));
+}
+
 TEST_F(MatcCli, NamesOfTheSharedOutputsAreReserved) {
   write_file(dir_ / "lut.json", R"({"name": "Matc_Lut", "ior": {"n": 1.5, "k": 0}})");
   const CommandResult result = run({"-o", "out", "lut.json"});

@@ -26,8 +26,10 @@ struct CompileOptions {
   std::string output_directory = "matc-out";
   bool keep_going = false;
   bool quiet = false;
-  unsigned jobs = 0;  // -j: materials compiled at once; 0: one per hardware thread
-  std::string emit;   // comma-separated output kinds; empty: all
+  unsigned jobs = 0;           // -j: materials compiled at once; 0: one per hardware thread
+  std::string depfile;         // --depfile FILE: Make-syntax dependencies of every output
+  bool write_depfile = false;  // -MD: the same, as <output directory>/matc.d
+  std::string emit;            // comma-separated output kinds; empty: all
   std::string lut_format = "ktx2";
   LutCliOptions lut;
   bool embed_lut = false;
@@ -36,6 +38,8 @@ struct CompileOptions {
   DeviceCliOptions device;
 };
 int run_compile(const CompileOptions& options);
+
+inline constexpr const char* kDepfileName = "matc.d";
 
 struct ValidateOptions {
   std::vector<std::string> files;

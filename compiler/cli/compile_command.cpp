@@ -16,6 +16,7 @@
 
 #include "atomic_file.h"
 #include "commands.h"
+#include "depfile.h"
 #include "device_validation_report.h"
 #include "matc/compile.h"
 #include "matc/emit/build.h"
@@ -88,6 +89,7 @@ struct Job {
   // Filled by the worker that compiles it: the manifest entry, not the bytes (memory stays flat
   // however long the batch).
   std::optional<nlohmann::ordered_json> manifest_entry;
+  std::vector<std::string> written_files;  // names in the output directory
   std::size_t written = 0;
   std::size_t unchanged = 0;
   bool failed_on_device = false;
@@ -232,6 +234,8 @@ int run_compile(const CompileOptions& options) {
             ++(outcome == WriteOutcome::written ? job.written : job.unchanged);
           }
           job.manifest_entry = build.manifest_entry(outputs);
+          for (const OutputFile& output : outputs.files)
+            job.written_files.push_back(output.name);
         }
       } catch (const std::exception& error) {
         job.diagnostics.error({job.file, 0, 0}, "", error.what(),
@@ -271,12 +275,32 @@ int run_compile(const CompileOptions& options) {
   if (summary.failed == 0 || options.keep_going) {
     try {
       fs::create_directories(output_directory);
+      std::vector<fs::path> targets;
       std::vector<OutputFile> shared = build.shared_outputs();
-      for (const OutputFile& output : shared)
-        summary.count(write_file_atomically(output_directory / output.name, output.bytes));
       if (build.options().emit.contains(OutputKind::json)) {
-        summary.count(write_file_atomically(output_directory / manifest_file_name(),
-                                            format_json(build.manifest(shared, manifest_entries))));
+        shared.push_back({std::string(manifest_file_name()),
+                          format_json(build.manifest(shared, manifest_entries))});
+      }
+      for (const OutputFile& output : shared) {
+        summary.count(write_file_atomically(output_directory / output.name, output.bytes));
+        targets.push_back(output_directory / output.name);
+      }
+      const fs::path depfile = !options.depfile.empty() ? fs::path(options.depfile)
+                               : options.write_depfile  ? output_directory / kDepfileName
+                                                        : fs::path();
+      if (!depfile.empty() && summary.failed == 0) {
+        std::vector<fs::path> dependencies;
+        for (const Job& job : jobs) {
+          for (const std::string& name : job.written_files)
+            targets.push_back(output_directory / name);
+          dependencies.push_back(job.file);
+          if (const auto* spectral = std::get_if<SpectralInput>(&job.material->model);
+              spectral && !spectral->resolved_file.empty()) {
+            dependencies.push_back(spectral->resolved_file);
+          }
+        }
+        if (const fs::path self = matc_executable(); !self.empty()) dependencies.push_back(self);
+        write_file_atomically(depfile, depfile_text(targets, dependencies));
       }
     } catch (const std::exception& error) {
       fmt::print(stderr, "{}: error: {}\n", output_directory.string(), error.what());

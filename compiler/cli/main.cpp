@@ -1,6 +1,9 @@
 // matc: compiles material files into Fresnel coefficients, shaders, SPIR-V, headers and the LUT.
+#include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <string>
+#include <vector>
 
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
@@ -28,6 +31,10 @@ int main(int argc, char** argv) {
   app.add_option("-j,--jobs", compile.jobs,
                  "Materials compiled at once (default: one per hardware thread)")
       ->check(CLI::Range(1u, 1024u));
+  app.add_option("--depfile", compile.depfile,
+                 "Write the outputs' dependencies (inputs, spectral files, the matc binary) to "
+                 "FILE in the Makefile syntax Ninja and CMake read");
+  app.add_flag("--MD", compile.write_depfile, "The same, as DIR/matc.d (also spelled -MD)");
   app.add_option("--emit", compile.emit,
                  "Outputs to write, comma-separated (default: all): shader snippets, SPIR-V, "
                  "C headers, JSON manifests, the LUT")
@@ -118,8 +125,12 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember(matc::lut_format_names()));
   add_lut_options(*lut_command, lut.lut, "");
 
+  // -MD, as compilers spell it: CLI11 only takes one-letter names after a single dash.
+  std::vector<std::string> arguments(argv + 1, argv + argc);
+  std::replace(arguments.begin(), arguments.end(), std::string("-MD"), std::string("--MD"));
+  std::reverse(arguments.begin(), arguments.end());  // CLI11's order for a vector
   try {
-    app.parse(argc, argv);
+    app.parse(arguments);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
