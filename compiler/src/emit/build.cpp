@@ -32,12 +32,6 @@ constexpr std::array<std::pair<OutputKind, std::string_view>, 6> kOutputKinds = 
     {OutputKind::lut, "lut"},
 }};
 
-std::string read_input(const std::string& path, std::uintmax_t max_bytes) {
-  LoadedFile loaded = load_file(path, max_bytes);
-  if (!loaded.bytes) throw std::runtime_error(fmt::format("{}: {}", path, loaded.error));
-  return std::move(*loaded.bytes);
-}
-
 // A library module from GLSL: the source with a placeholder entry point, then exports.
 SpirvWords library_module(std::string source, std::string name,
                           std::span<const std::string> exports) {
@@ -129,10 +123,10 @@ std::string Build::material_source(ShaderLanguage language,
 
 std::string Build::material_inputs_hash(const Material& material) const {
   ContentHash hash;
-  hash.add(options_key()).add(read_input(material.source_path, kMaxMaterialFileBytes));
+  hash.add(options_key()).add(material.source_text);
   if (const auto* spectral = std::get_if<SpectralInput>(&material.model);
       spectral && !spectral->resolved_file.empty()) {
-    hash.add(read_input(spectral->resolved_file, kMaxSpectrumFileBytes));
+    hash.add(spectral->file_bytes);
   }
   return hash.hex();
 }

@@ -370,6 +370,7 @@ class MaterialReader {
     auto spectrum = parse_nk_csv(*loaded.bytes, csv_locator, diagnostics_);
     if (!spectrum) return std::nullopt;
     input.spectrum = std::move(*spectrum);
+    input.file_bytes = *loaded.bytes;
     return input;
   }
 
@@ -421,6 +422,7 @@ ParseResult parse_material(std::string_view text, const std::string& path,
   MaterialReader reader(std::get<LocatedJson>(parsed), locator, result.diagnostics, loader,
                         base_directory);
   result.material = reader.read();
+  if (result.material) result.material->source_text = std::string(text);
   // Report in reading order: the material file's problems by position, then its data files'.
   std::stable_sort(result.diagnostics.items().begin(), result.diagnostics.items().end(),
                    [&](const Diagnostic& a, const Diagnostic& b) {

@@ -65,7 +65,8 @@ class Build {
   std::string material_source(ShaderLanguage language, const CompiledMaterial& compiled) const;
 
   // The hash of what a material's outputs derive from: matc's version, these options, the
-  // material file and any spectral file it names. Throws std::runtime_error if one is unreadable.
+  // material's JSON and any spectral file it names, as parsed (nothing is read again: a material
+  // parsed from memory works the same).
   std::string material_inputs_hash(const Material& material) const;
 
   // The files matc_fresnel.{glsl,hlsl,spv} and matc_lut.<ext> (+ .json) the options select.

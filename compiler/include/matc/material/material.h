@@ -31,6 +31,7 @@ struct SpectralInput {
   std::string preset;         // preset symbol such as "Au"; empty when `file` is used
   std::string file;           // the path as written in the material; empty when `preset` is used
   std::string resolved_file;  // `file` resolved against the material's folder
+  std::string file_bytes;     // that file as read (it is part of the outputs' inputs hash)
   Spectrum spectrum;
 };
 
@@ -42,6 +43,7 @@ struct Material {
   std::optional<double> roughness;  // perceptual; alpha = roughness^2
   std::string source_path;          // the material file as named on the command line
   SourceLocation name_location;     // where the name is written, for batch-level diagnostics
+  std::string source_text;          // the JSON as parsed: outputs hash it, never re-read
 };
 
 // "artistic", "ior" or "spectral": the key that selects the model in a material file.
