@@ -1,0 +1,89 @@
+# matc_add_materials(TARGET <target> OUTPUT_DIR <dir> MATERIALS <files...>
+#                    [EMIT <kinds...>] [LUT_FORMAT ktx2|dds|raw|header] [OPTIONS <matc args...>])
+#
+# Adds one build step that runs `matc` over MATERIALS into OUTPUT_DIR (in parallel inside matc),
+# with a depfile so that editing a material, a spectral file it names, or updating matc reruns it,
+# and nothing else does. The generated per-material headers become sources of TARGET and
+# OUTPUT_DIR one of its include directories, so `#include "<name>.h"` works and the target is built
+# after its materials. EMIT selects outputs (glsl hlsl spirv header json lut; default all).
+# Use one OUTPUT_DIR per call: every call writes the shared files matc_fresnel.* and matc_lut.*.
+# Material names are read from the files at configure time (changing one reconfigures).
+function(matc_add_materials)
+  cmake_parse_arguments(ARG "" "TARGET;OUTPUT_DIR;LUT_FORMAT" "MATERIALS;EMIT;OPTIONS" ${ARGN})
+  if(NOT ARG_TARGET OR NOT TARGET "${ARG_TARGET}")
+    message(FATAL_ERROR "matc_add_materials: TARGET must name an existing target")
+  endif()
+  if(NOT ARG_OUTPUT_DIR OR NOT ARG_MATERIALS)
+    message(FATAL_ERROR "matc_add_materials: OUTPUT_DIR and MATERIALS are required")
+  endif()
+  if(NOT ARG_EMIT)
+    set(ARG_EMIT glsl hlsl spirv header json lut)
+  endif()
+  if(NOT ARG_LUT_FORMAT)
+    set(ARG_LUT_FORMAT ktx2)
+  endif()
+  set(_lut_extension_ktx2 ktx2)
+  set(_lut_extension_dds dds)
+  set(_lut_extension_raw bin)
+  set(_lut_extension_header h)
+  if(NOT DEFINED _lut_extension_${ARG_LUT_FORMAT})
+    message(FATAL_ERROR "matc_add_materials: LUT_FORMAT '${ARG_LUT_FORMAT}' is not one of ktx2, dds, raw, header")
+  endif()
+  set(_per_material_extension_glsl glsl)
+  set(_per_material_extension_hlsl hlsl)
+  set(_per_material_extension_spirv spv)
+  set(_per_material_extension_header h)
+  set(_per_material_extension_json json)
+  get_filename_component(_dir "${ARG_OUTPUT_DIR}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_BINARY_DIR}")
+
+  foreach(_kind IN LISTS ARG_EMIT)
+    if(NOT DEFINED _per_material_extension_${_kind} AND NOT _kind STREQUAL "lut")
+      message(FATAL_ERROR "matc_add_materials: EMIT '${_kind}' is not one of glsl, hlsl, spirv, header, json, lut")
+    endif()
+  endforeach()
+
+  # Outputs in the order matc's depfile names them (Ninja checks the first): the shared files,
+  # then each material's in input order.
+  set(_outputs "")
+  foreach(_kind IN ITEMS glsl hlsl spirv)
+    if(_kind IN_LIST ARG_EMIT)
+      list(APPEND _outputs "${_dir}/matc_fresnel.${_per_material_extension_${_kind}}")
+    endif()
+  endforeach()
+  if("lut" IN_LIST ARG_EMIT)
+    set(_lut "${_dir}/matc_lut.${_lut_extension_${ARG_LUT_FORMAT}}")
+    list(APPEND _outputs "${_lut}" "${_lut}.json")
+  endif()
+  if("json" IN_LIST ARG_EMIT)
+    list(APPEND _outputs "${_dir}/matc_manifest.json")
+  endif()
+  set(_materials "")
+  foreach(_material IN LISTS ARG_MATERIALS)
+    get_filename_component(_path "${_material}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+    file(READ "${_path}" _json)
+    string(JSON _name ERROR_VARIABLE _error GET "${_json}" name)
+    if(_error)
+      message(FATAL_ERROR "matc_add_materials: ${_path}: no material name (${_error}); run matc on it for details")
+    endif()
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${_path}")
+    list(APPEND _materials "${_path}")
+    foreach(_kind IN ITEMS glsl hlsl spirv header json)
+      if(_kind IN_LIST ARG_EMIT)
+        list(APPEND _outputs "${_dir}/${_name}.${_per_material_extension_${_kind}}")
+      endif()
+    endforeach()
+  endforeach()
+
+  list(JOIN ARG_EMIT "," _emit)
+  list(LENGTH _materials _count)
+  add_custom_command(
+    OUTPUT ${_outputs}
+    COMMAND matc::cli -q --emit ${_emit} --lut ${ARG_LUT_FORMAT} ${ARG_OPTIONS}
+            --depfile "${_dir}/matc.d" -o "${_dir}" ${_materials}
+    DEPENDS ${_materials} matc::cli
+    DEPFILE "${_dir}/matc.d"
+    COMMENT "matc: compiling ${_count} material(s) into ${_dir}"
+    VERBATIM)
+  target_sources(${ARG_TARGET} PRIVATE ${_outputs})
+  target_include_directories(${ARG_TARGET} PRIVATE "${_dir}")
+endfunction()

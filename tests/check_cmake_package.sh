@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# The installed CMake package works for a consumer: install this build, build examples/engine
+# against it (matc_add_materials, generated headers, SPIR-V linking, libmatc from memory), run it;
+# then a second build is a no-op and touching a material reruns matc.
+#   check_cmake_package.sh BUILD_DIR SOURCE_DIR
+set -euo pipefail
+build=$1
+source=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cmake --install "$build" --prefix "$work/prefix" >/dev/null
+mkdir -p "$work/engine-src"
+cp -r "$source/examples/engine/." "$work/engine-src/"
+mkdir -p "$work/materials"  # the example names ../materials/*.json
+cp "$source/examples/materials/gold.json" "$source/examples/materials/figure2_edge_tint.json" \
+  "$work/materials/"
+cmake -S "$work/engine-src" -B "$work/engine" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
+cmake --build "$work/engine" >/dev/null
+"$work/engine/engine"
+ninja -C "$work/engine" -n | grep -q "no work to do" || { echo "second build is not a no-op"; exit 1; }
+sleep 1
+touch "$work/materials/gold.json"
+ninja -C "$work/engine" | grep -q "matc: compiling" || { echo "touching a material did not rerun matc"; exit 1; }
+echo "cmake package: consumer built, ran, and rebuilds only when its materials change"
