@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# Batch throughput: N generated artistic materials (default 1000) compiled with every output at
+# -j 1 and -j 2, beside the glslangValidator CLI compiling the same emitted GLSL and HLSL one file
+# at a time (what a user would script without matc's in-process compile). Also peak memory at
+# N/10 and N materials. Prints the Markdown table of docs/performance.md.
+#   bench/batch-throughput.sh [BUILD_DIR] [N]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$root/build}
+count=${2:-1000}
+matc=$build/matc
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# Deterministic materials: reflectivity in [0.05, 0.9), edge tint in [0, 1), per channel.
+generate() {  # directory count
+  mkdir -p "$1"
+  awk -v dir="$1" -v n="$2" 'BEGIN {
+    seed = 12345
+    for (i = 0; i < n; ++i) {
+      for (c = 0; c < 6; ++c) { seed = (seed * 1103515245 + 12345) % 2147483648; v[c] = seed / 2147483648 }
+      file = sprintf("%s/m%05d.json", dir, i)
+      printf("{\"name\": \"m%05d\", \"artistic\": {\"reflectivity\": [%.3f, %.3f, %.3f], ", i,
+             0.05 + 0.85 * v[0], 0.05 + 0.85 * v[1], 0.05 + 0.85 * v[2]) > file
+      printf("\"edge_tint\": [%.3f, %.3f, %.3f]}}\n", v[3], v[4], v[5]) > file
+      close(file)
+    }
+  }'
+}
+
+# Seconds and peak resident memory (MiB) of a command.
+measure() {  # label command...
+  local label=$1
+  shift
+  /usr/bin/time -f "%e %M" -o "$work/time" "$@" >/dev/null 2>&1
+  read -r seconds kilobytes <"$work/time"
+  echo "$label $seconds $((kilobytes / 1024))"
+}
+
+generate "$work/materials" "$count"
+generate "$work/small" $((count / 10))
+"$matc" -q -o "$work/warm" "$work/small/m00000.json"  # page in the binary once
+
+j1=$(measure j1 "$matc" -q -j 1 -o "$work/out1" "$work"/materials/*.json)
+j2=$(measure j2 "$matc" -q -j 2 -o "$work/out2" "$work"/materials/*.json)
+small=$(measure small "$matc" -q -j 2 -o "$work/out3" "$work"/small/*.json)
+single=$(measure single "$matc" -q -j 1 -o "$work/out4" "$work/small/m00001.json")
+
+# The CLI baseline: per material, a GLSL and an HLSL compile of the shared library plus its
+# snippet to SPIR-V, one glslangValidator process each; over the first tenth of the materials
+# (each process costs the same, about 0.1 s of start-up, so the rate does not depend on how many).
+cli() {
+  cd "$work/out1"
+  for snippet in $(ls m*.glsl | head -n "$baseline_count"); do
+    name=${snippet%.glsl}
+    { echo "#version 450"; cat matc_fresnel.glsl "$snippet"
+      echo "layout(local_size_x = 64) in; void main() {}"; } >"$work/$name.comp"
+    glslangValidator -V --target-env vulkan1.1 "$work/$name.comp" -o "$work/$name.comp.spv"
+    { cat matc_fresnel.hlsl "$name.hlsl"; echo "[numthreads(64, 1, 1)] void main() {}"; } \
+      >"$work/$name.hlsl"
+    glslangValidator -V -D -e main -S comp --target-env vulkan1.1 "$work/$name.hlsl" \
+      -o "$work/$name.hlsl.spv"
+  done
+}
+baseline_count=$((count / 10))
+export -f cli
+export work baseline_count
+baseline=$(measure cli bash -c cli)
+
+read -r _ j1_s j1_mb <<<"$j1"
+read -r _ j2_s j2_mb <<<"$j2"
+read -r _ small_s small_mb <<<"$small"
+read -r _ single_s single_mb <<<"$single"
+read -r _ cli_s _ <<<"$baseline"
+rate() { awk -v n="$1" -v s="$2" 'BEGIN { printf("%.0f", n / s) }'; }
+echo "Measured on $(nproc) CPU(s), $count generated artistic materials, every output (GLSL, HLSL,"
+echo "SPIR-V, C header, JSON, the 128x128 table, the manifest):"
+echo
+echo "| run | time (s) | materials/s | peak memory (MiB) |"
+echo "|---|---:|---:|---:|"
+echo "| \`matc -j 1\` | $j1_s | $(rate "$count" "$j1_s") | $j1_mb |"
+echo "| \`matc -j 2\` | $j2_s | $(rate "$count" "$j2_s") | $j2_mb |"
+echo "| \`matc -j 2\`, $((count / 10)) materials | $small_s | $(rate $((count / 10)) "$small_s") | $small_mb |"
+echo "| \`matc\`, one material (process start, table bake, compile) | $single_s | $(rate 1 "$single_s") | $single_mb |"
+echo "| \`glslangValidator\`, GLSL + HLSL, one process per file (SPIR-V only), $baseline_count materials | $cli_s | $(rate "$baseline_count" "$cli_s") | - |"
+echo
+ratio=$(awk -v n="$count" -v s="$j2_s" -v m="$baseline_count" -v c="$cli_s" \
+  'BEGIN { printf("%.0f", (n / s) / (m / c)) }')
+echo "\`matc -j 2\` has ${ratio}x the CLI loop's throughput in materials per second, while also"
+echo "fitting, baking, optimising, validating and writing every output."
