@@ -93,7 +93,6 @@ struct Job {
   std::size_t written = 0;
   std::size_t unchanged = 0;
   bool failed_on_device = false;
-  bool attempted = false;
 };
 
 // Reads and checks every file in order: name rules need all names, and a batch without
@@ -210,7 +209,6 @@ int run_compile(const CompileOptions& options) {
   const auto work = [&] {
     for (std::size_t slot = next++; slot < queue.size() && !stop; slot = next++) {
       Job& job = jobs[queue[slot]];
-      job.attempted = true;
       try {
         // Every byte is generated before the first file is written: a failure leaves no
         // partial set of outputs for this material.
