@@ -6,7 +6,8 @@
 # and nothing else does. The generated per-material headers become sources of TARGET and
 # OUTPUT_DIR one of its include directories, so `#include "<name>.h"` works and the target is built
 # after its materials. EMIT selects outputs (glsl hlsl spirv header json lut; default all).
-# Use one OUTPUT_DIR per call: every call writes the shared files matc_fresnel.* and matc_lut.*.
+# Use one OUTPUT_DIR per call (a second call with the same one is an error): every call writes the
+# shared files matc_fresnel.* and matc_lut.*.
 # Material names are read from the files at configure time (changing one reconfigures).
 function(matc_add_materials)
   cmake_parse_arguments(ARG "" "TARGET;OUTPUT_DIR;LUT_FORMAT" "MATERIALS;EMIT;OPTIONS" ${ARGN})
@@ -35,6 +36,12 @@ function(matc_add_materials)
   set(_per_material_extension_header h)
   set(_per_material_extension_json json)
   get_filename_component(_dir "${ARG_OUTPUT_DIR}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_BINARY_DIR}")
+  get_property(_used GLOBAL PROPERTY MATC_ADD_MATERIALS_OUTPUT_DIRS)
+  if("${_dir}" IN_LIST _used)
+    message(FATAL_ERROR "matc_add_materials: OUTPUT_DIR ${_dir} is already used by another call; "
+                        "every call writes matc_fresnel.* and matc_lut.*, so give each its own")
+  endif()
+  set_property(GLOBAL APPEND PROPERTY MATC_ADD_MATERIALS_OUTPUT_DIRS "${_dir}")
 
   foreach(_kind IN LISTS ARG_EMIT)
     if(NOT DEFINED _per_material_extension_${_kind} AND NOT _kind STREQUAL "lut")
