@@ -4,8 +4,8 @@
 # that a failed run wrote nothing.
 #   check_bad_input.sh MATC CATALOGUE_DIR CASE
 set -euo pipefail
-matc=$1
-catalogue=$2
+matc=$(realpath "$1")
+catalogue=$(cd "$2" && pwd)
 case=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
