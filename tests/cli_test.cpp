@@ -194,6 +194,30 @@ TEST_F(MatcCli, DepfileListsOutputsAndEveryInput) {
   EXPECT_FALSE(fs::exists(dir_ / "bad.d"));
 }
 
+// --diagnostics-format=json: every line on standard error is one JSON object, diagnostics with
+// their position and parts, then the summary.
+TEST_F(MatcCli, DiagnosticsAsJsonLines) {
+  write_file(dir_ / "bad.json", kBad);
+  write_file(dir_ / "good.json", kGood);
+  const CommandResult result =
+      run({"--diagnostics-format=json", "-k", "-o", "out", "bad.json", "good.json"});
+  EXPECT_EQ(result.exit_code, 1);
+  std::istringstream lines(result.err);
+  std::vector<nlohmann::json> objects;
+  for (std::string line; std::getline(lines, line);)
+    objects.push_back(nlohmann::json::parse(line));  // throws, failing the test, if not JSON
+  ASSERT_EQ(objects.size(), 2u) << result.err;
+  EXPECT_EQ(objects[0]["file"], "bad.json");
+  EXPECT_EQ(objects[0]["line"], 3);
+  EXPECT_EQ(objects[0]["column"], 16);
+  EXPECT_EQ(objects[0]["severity"], "error");
+  EXPECT_EQ(objects[0]["field"], "ior.n");
+  EXPECT_EQ(objects[0]["message"], "-1 is out of range");
+  EXPECT_EQ(objects[0]["allowed"], "a number in [0, 1000]");
+  EXPECT_EQ(objects[1]["summary"]["compiled"], 1);
+  EXPECT_EQ(objects[1]["summary"]["failed"], 1);
+}
+
 TEST_F(MatcCli, NamesOfTheSharedOutputsAreReserved) {
   write_file(dir_ / "lut.json", R"({"name": "Matc_Lut", "ior": {"n": 1.5, "k": 0}})");
   const CommandResult result = run({"-o", "out", "lut.json"});

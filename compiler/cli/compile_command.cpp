@@ -306,7 +306,16 @@ int run_compile(const CompileOptions& options) {
     }
   }
 
-  if (!options.quiet) {
+  if (!options.quiet && diagnostics_format() == DiagnosticsFormat::json) {
+    // Standard error stays JSON Lines for tools: the summary is one more object.
+    const nlohmann::ordered_json line = {{"summary",
+                                          {{"compiled", summary.compiled},
+                                           {"written", summary.written},
+                                           {"unchanged", summary.unchanged},
+                                           {"failed", summary.failed},
+                                           {"not_attempted", summary.not_attempted}}}};
+    fmt::print(stderr, "{}\n", line.dump());
+  } else if (!options.quiet) {
     fmt::print(stderr, "matc: {} compiled ({} files written, {} unchanged), {} failed{}\n",
                summary.compiled, summary.written, summary.unchanged, summary.failed,
                summary.not_attempted > 0

@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "matc/emit/build.h"
 #include "matc/version.h"
+#include "print_diagnostics.h"
 
 int main(int argc, char** argv) {
   using namespace matc::cli;
@@ -129,6 +130,14 @@ int main(int argc, char** argv) {
   std::vector<std::string> arguments(argv + 1, argv + argc);
   std::replace(arguments.begin(), arguments.end(), std::string("-MD"), std::string("--MD"));
   std::reverse(arguments.begin(), arguments.end());  // CLI11's order for a vector
+  std::string diagnostics_format = "text";
+  for (CLI::App* command : {&app, eval_command, validate_command}) {
+    command
+        ->add_option("--diagnostics-format", diagnostics_format,
+                     "How problems in inputs are reported on standard error: text "
+                     "(file:line:col: error: ...) or json (one object per line)")
+        ->check(CLI::IsMember({"text", "json"}));
+  }
   try {
     app.parse(arguments);
   } catch (const CLI::CallForHelp& e) {
@@ -143,6 +152,8 @@ int main(int argc, char** argv) {
     return kExitUsageError;
   }
 
+  set_diagnostics_format(diagnostics_format == "json" ? DiagnosticsFormat::json
+                                                      : DiagnosticsFormat::text);
   try {
     if (*eval_command) return run_eval(eval);
     if (*lut_command) return run_lut(lut);

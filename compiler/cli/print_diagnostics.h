@@ -4,7 +4,13 @@
 
 namespace matc::cli {
 
-// Writes each diagnostic on its own line to standard error.
+// text: `path:line:col: error: field: problem; allowed`. json: one JSON object per line
+// (JSON Lines) with file, line, column, severity, field, message, allowed, for tools.
+enum class DiagnosticsFormat { text, json };
+void set_diagnostics_format(DiagnosticsFormat format);
+DiagnosticsFormat diagnostics_format();
+
+// Writes each diagnostic on its own line to standard error, in the format set above.
 void print_diagnostics(const Diagnostics& diagnostics);
 
 }  // namespace matc::cli
