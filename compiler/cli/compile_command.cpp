@@ -213,6 +213,7 @@ int run_compile(const CompileOptions& options) {
         // Every byte is generated before the first file is written: a failure leaves no
         // partial set of outputs for this material.
         const CompiledMaterial compiled = compile_material(*job.material, basis);
+        warn_if_poor_fit(compiled, job.diagnostics);
         MaterialOutputs outputs = build.material_outputs(compiled);
         bool valid_on_device = true;
         if (validator) {

@@ -29,7 +29,11 @@ int run_validate(const ValidateOptions& options) {
       ++invalid_inputs;
       continue;
     }
-    if (!validate_and_report(*validator, compile_material(*parsed.material, basis))) ++failed;
+    const CompiledMaterial compiled = compile_material(*parsed.material, basis);
+    Diagnostics fit;
+    warn_if_poor_fit(compiled, fit);
+    print_diagnostics(fit);
+    if (!validate_and_report(*validator, compiled)) ++failed;
   }
   const std::size_t validated = options.files.size() - invalid_inputs;
   fmt::print("matc validate: {} of {} materials passed on both front ends{}\n", validated - failed,

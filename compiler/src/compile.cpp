@@ -1,6 +1,10 @@
 #include "matc/compile.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <variant>
+
+#include <fmt/core.h>
 
 #include "matc/fit/coefficients.h"
 #include "matc/lut/energy.h"
@@ -130,6 +134,39 @@ ordered_json compiled_material_json(const CompiledMaterial& compiled,
                      {"schlick", error_stats_json(compiled.accuracy.schlick)},
                      {"f82_tint", error_stats_json(compiled.accuracy.f82_tint)}};
   return out;
+}
+
+}  // namespace matc
+
+namespace matc {
+
+void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics) {
+  const FitAccuracy& accuracy = compiled.accuracy;
+  const auto worst = [](const ErrorStats& stats) {
+    return *std::max_element(stats.max_abs.begin(), stats.max_abs.end());
+  };
+  const double ours = worst(accuracy.decomposition);
+  if (ours <= kPoorFitMaxError) return;
+  const double schlick = worst(accuracy.schlick);
+  const double f82 = worst(accuracy.f82_tint);
+  std::string advice;
+  if (std::holds_alternative<ArtisticInput>(compiled.material.model)) {
+    advice =
+        "high reflectivity with a low edge tint makes curves like a high-index dielectric's, which "
+        "no 4-term basis follows: lower the reflectivity or raise the edge tint, or give the "
+        "measured n, k (\"ior\" or \"spectral\")";
+  } else {
+    advice = "check the n, k values; curves this far from measured metals fit poorly";
+  }
+  if (f82 < ours || schlick < ours) {
+    advice += fmt::format("; for this curve {} is closer", f82 <= schlick ? "F82-tint" : "Schlick");
+  }
+  diagnostics.warning(
+      compiled.material.name_location, std::string(model_key(compiled.material.model)),
+      fmt::format("poor fit: max |F - exact| = {:.3f} (Schlick {:.3f}, F82-tint {:.3f}; the "
+                  "measured metals stay under 0.02)",
+                  ours, schlick, f82),
+      advice);
 }
 
 }  // namespace matc

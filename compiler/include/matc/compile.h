@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "matc/diagnostics.h"
 #include "matc/fit/accuracy.h"
 #include "matc/material/material.h"
 #include "matc/optics/gulbrandsen.h"
@@ -34,6 +35,14 @@ struct CompiledMaterial {
 std::unique_ptr<ReflectanceCurve> make_reflectance_curve(const Material& material);
 
 CompiledMaterial compile_material(const Material& material, const runtime::BasisView& basis);
+
+// Above this max |F - exact| (2.5x the worst of the 23 measured metals, docs/accuracy.md) a fit
+// is called poor.
+inline constexpr double kPoorFitMaxError = 0.05;
+
+// A warning, at the material's name, when the decomposition misses the exact curve by more than
+// kPoorFitMaxError: the measured error, Schlick's and F82-tint's beside it, and what to try.
+void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics);
 
 // The per-material output `<name>.json` (field reference: docs/material-format.md).
 nlohmann::ordered_json compiled_material_json(const CompiledMaterial& compiled,
