@@ -218,6 +218,22 @@ TEST_F(MatcCli, DiagnosticsAsJsonLines) {
   EXPECT_EQ(objects[1]["summary"]["failed"], 1);
 }
 
+// A symlink planted in the output directory is replaced by the new file, never written through:
+// nothing outside the output directory changes.
+TEST_F(MatcCli, SymlinksInTheOutputDirectoryAreReplacedNotFollowed) {
+  write_file(dir_ / "good.json", kGood);
+  write_file(dir_ / "victim.txt", "precious");
+  fs::create_directories(dir_ / "out");
+  fs::create_symlink(dir_ / "victim.txt", dir_ / "out" / "good.glsl");
+  fs::create_symlink(dir_ / "victim.txt", dir_ / "out" / "matc_fresnel.hlsl");
+  const CommandResult result = run({"-o", "out", "good.json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(read_file(dir_ / "victim.txt"), "precious");
+  EXPECT_FALSE(fs::is_symlink(dir_ / "out" / "good.glsl"));
+  EXPECT_FALSE(fs::is_symlink(dir_ / "out" / "matc_fresnel.hlsl"));
+  EXPECT_NE(read_file(dir_ / "out" / "good.glsl").find("matc_fresnel_good"), std::string::npos);
+}
+
 TEST_F(MatcCli, NamesOfTheSharedOutputsAreReserved) {
   write_file(dir_ / "lut.json", R"({"name": "Matc_Lut", "ior": {"n": 1.5, "k": 0}})");
   const CommandResult result = run({"-o", "out", "lut.json"});
