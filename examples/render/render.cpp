@@ -88,20 +88,21 @@ matc::SpirvWords compile(const std::string& text, matc::ShaderStage stage, const
       matc::SpirvTarget::vulkan_1_1, name);
 }
 
-// Narkowicz's fit of the ACES filmic curve, then the sRGB transfer function, to 8 bits.
-std::uint8_t display(double linear) {
-  const double x = std::max(linear, 0.0);
-  const double mapped =
-      std::clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
-  const double encoded =
-      mapped <= 0.0031308 ? 12.92 * mapped : 1.055 * std::pow(mapped, 1.0 / 2.4) - 0.055;
+// A value in [0, 1] through the sRGB transfer function, to 8 bits.
+std::uint8_t srgb_8bit(double value) {
+  const double x = std::clamp(value, 0.0, 1.0);
+  const double encoded = x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
   return static_cast<std::uint8_t>(std::lround(encoded * 255.0));
 }
 
+// Narkowicz's fit of the ACES filmic curve, then sRGB.
+std::uint8_t display(double linear) {
+  const double x = std::max(linear, 0.0);
+  return srgb_8bit(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14));
+}
+
 std::uint8_t display_difference(double difference) {
-  const double x = std::clamp(difference * kDifferenceScale, 0.0, 1.0);
-  const double encoded = x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
-  return static_cast<std::uint8_t>(std::lround(encoded * 255.0));
+  return srgb_8bit(difference * kDifferenceScale);
 }
 
 void write_png(const fs::path& path, std::uint32_t width, std::uint32_t height,
