@@ -18,8 +18,6 @@
 #include "matc/emit/fullscreen_shaders.h"
 #include "matc/lut/comparison_lobes.h"
 #include "matc/material/parse.h"
-#include "matc/spirv/shader_compiler.h"
-#include "matc/spirv/spirv_tools.h"
 #include "matc/vulkan/fullscreen_pass.h"
 #include "matc/vulkan/sampler.h"
 
@@ -32,12 +30,6 @@ double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const std::size_t n = values.size();
   return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-matc::SpirvWords compile(const std::string& text, matc::ShaderStage stage, const char* name) {
-  const matc::SpirvWords words =
-      matc::compile_to_spirv({matc::ShaderLanguage::glsl, text, name, "main", false, stage});
-  return matc::optimize_spirv(words, matc::SpirvTarget::vulkan_1_1, name);
 }
 
 struct Timings {
@@ -70,8 +62,8 @@ int main(int argc, char** argv) {
   const matc::vulkan::Image ours_table(context, size, size, build.stored_lut().texels);
   const matc::vulkan::Image schlick_table(context, size, size, lobe_lut.texels);
   const matc::vulkan::LutSampler sampler(context);
-  const matc::SpirvWords vertex =
-      compile(matc::fullscreen_vertex_source(), matc::ShaderStage::vertex, "fullscreen.vert");
+  const matc::SpirvWords vertex = matc::compile_fullscreen_stage(
+      matc::fullscreen_vertex_source(), matc::ShaderStage::vertex, "fullscreen.vert");
 
   struct Variant {
     const char* label;
@@ -92,9 +84,9 @@ int main(int argc, char** argv) {
     std::array<std::unique_ptr<matc::vulkan::FullscreenPass>, 2> passes;
     for (const matc::FresnelModel model : {matc::FresnelModel::schlick, matc::FresnelModel::ours}) {
       const bool ours = model == matc::FresnelModel::ours;
-      const matc::SpirvWords fragment =
-          compile(matc::cost_pass_source(build, material, model, variant.quantity, kWidth, kHeight),
-                  matc::ShaderStage::fragment, "cost_pass.frag");
+      const matc::SpirvWords fragment = matc::compile_fullscreen_stage(
+          matc::cost_pass_source(build, material, model, variant.quantity, kWidth, kHeight),
+          matc::ShaderStage::fragment, "cost_pass.frag");
       const std::array bindings = {
           matc::vulkan::Binding::sampled_image(0, ours ? ours_table : schlick_table),
           matc::vulkan::Binding::separate_sampler(1, sampler)};

@@ -25,8 +25,6 @@
 #include "matc/lut/comparison_lobes.h"
 #include "matc/lut/split_sum_reference.h"
 #include "matc/material/parse.h"
-#include "matc/spirv/shader_compiler.h"
-#include "matc/spirv/spirv_tools.h"
 #include "matc/vulkan/buffer.h"
 #include "matc/vulkan/fullscreen_pass.h"
 #include "matc/vulkan/sampler.h"
@@ -81,12 +79,6 @@ struct ErrorStats {
   double max = 0.0;
   double relative_mean = 0.0;  // mean |difference| / mean reference
 };
-
-matc::SpirvWords compile(const std::string& text, matc::ShaderStage stage, const char* name) {
-  return matc::optimize_spirv(
-      matc::compile_to_spirv({matc::ShaderLanguage::glsl, text, name, "main", false, stage}),
-      matc::SpirvTarget::vulkan_1_1, name);
-}
 
 // A value in [0, 1] through the sRGB transfer function, to 8 bits.
 std::uint8_t srgb_8bit(double value) {
@@ -191,8 +183,8 @@ class Renderer {
         lobe_table_(context_, table_size_, table_size_, lobe_lut_.texels),
         sampler_(context_),
         curve_(context_, kCurveSize * 4 * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-        vertex_(compile(matc::fullscreen_vertex_source(), matc::ShaderStage::vertex,
-                        "fullscreen.vert")) {}
+        vertex_(matc::compile_fullscreen_stage(matc::fullscreen_vertex_source(),
+                                               matc::ShaderStage::vertex, "fullscreen.vert")) {}
 
   const matc::vulkan::Context& context() const { return context_; }
 
@@ -206,10 +198,10 @@ class Renderer {
         curve[4 * j + c] = static_cast<float>(value[c]);
     }
     curve_.write<float>(curve);
-    const matc::SpirvWords fragment =
-        compile(matc::comparison_render_source(build_, compiled, kCurveSize, settings_.size,
-                                               settings_.size),
-                matc::ShaderStage::fragment, "comparison_render.frag");
+    const matc::SpirvWords fragment = matc::compile_fullscreen_stage(
+        matc::comparison_render_source(build_, compiled, kCurveSize, settings_.size,
+                                       settings_.size),
+        matc::ShaderStage::fragment, "comparison_render.frag");
     const std::array bindings = {matc::vulkan::Binding::sampled_image(0, ours_table_),
                                  matc::vulkan::Binding::sampled_image(1, lobe_table_),
                                  matc::vulkan::Binding::separate_sampler(2, sampler_),

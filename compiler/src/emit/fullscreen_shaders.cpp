@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "matc/emit/template.h"
+#include "matc/spirv/spirv_tools.h"
 #include "matc/version.h"
 
 namespace matc {
@@ -49,6 +50,13 @@ std::string comparison_render_source(const Build& build, const CompiledMaterial&
                         {"curve_size", std::to_string(curve_size)},
                         {"width", std::to_string(width)},
                         {"height", std::to_string(height)}});
+}
+
+SpirvWords compile_fullscreen_stage(const std::string& source, ShaderStage stage,
+                                    const std::string& name) {
+  return optimize_spirv(
+      compile_to_spirv({ShaderLanguage::glsl, source, name, "main", false, stage}),
+      SpirvTarget::vulkan_1_1, name);
 }
 
 }  // namespace matc

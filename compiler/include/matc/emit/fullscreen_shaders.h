@@ -9,6 +9,7 @@
 
 #include "matc/compile.h"
 #include "matc/emit/build.h"
+#include "matc/spirv/shader_compiler.h"
 
 namespace matc {
 
@@ -31,5 +32,9 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
 std::string comparison_render_source(const Build& build, const CompiledMaterial& compiled,
                                      std::size_t curve_size, std::uint32_t width,
                                      std::uint32_t height);
+
+// One of the sources above as SPIR-V: compiled (GLSL), optimised and validated for Vulkan 1.1.
+SpirvWords compile_fullscreen_stage(const std::string& source, ShaderStage stage,
+                                    const std::string& name);
 
 }  // namespace matc
