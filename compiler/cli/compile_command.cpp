@@ -57,16 +57,13 @@ std::vector<fs::path> possible_outputs(const fs::path& directory, const std::str
 }
 
 BuildOptions build_options(const CompileOptions& options) {
-  BuildOptions build;
+  BuildOptions build = table_build_options(options.lut, options.embed_lut, options.embed_lut_size);
   if (!options.emit.empty()) {
     build.emit.clear();
     for (const std::string& name : split_list(options.emit))
       build.emit.insert(*output_kind_from_name(name));
   }
-  build.lut = options.lut.bake;
   build.lut_format = *lut_format_from_name(options.lut_format);
-  build.lut_precision = precision_of(options.lut);
-  build.embedded_lut_size = options.embed_lut ? options.embed_lut_size : 0;
   return build;
 }
 

@@ -35,4 +35,13 @@ LutWriteCounts write_lut_files(const std::filesystem::path& path, const BakedLut
   return counts;
 }
 
+BuildOptions table_build_options(const LutCliOptions& lut, bool embed_lut,
+                                 std::size_t embed_lut_size) {
+  BuildOptions build;
+  build.lut = lut.bake;
+  build.lut_precision = precision_of(lut);
+  build.embedded_lut_size = embed_lut ? embed_lut_size : 0;
+  return build;
+}
+
 }  // namespace matc::cli

@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "matc/emit/build.h"
 #include "matc/lut/lut_files.h"
 
 namespace matc::cli {
@@ -19,6 +20,10 @@ struct LutCliOptions {
 void add_lut_options(CLI::App& app, LutCliOptions& options, const std::string& prefix);
 
 LutPrecision precision_of(const LutCliOptions& options);
+
+// The table and embedded-table settings of a build, shared by `matc` and `matc validate`.
+BuildOptions table_build_options(const LutCliOptions& lut, bool embed_lut,
+                                 std::size_t embed_lut_size);
 
 struct LutWriteCounts {
   std::size_t written = 0;

@@ -11,11 +11,7 @@
 namespace matc::cli {
 
 int run_validate(const ValidateOptions& options) {
-  BuildOptions build_options;
-  build_options.lut = options.lut.bake;
-  build_options.lut_precision = precision_of(options.lut);
-  build_options.embedded_lut_size = options.embed_lut ? options.embed_lut_size : 0;
-  const Build build(build_options);
+  const Build build(table_build_options(options.lut, options.embed_lut, options.embed_lut_size));
   const std::unique_ptr<DeviceValidator> validator = open_device_validator(build, options.device);
   if (!validator) return kExitNoDevice;
 
