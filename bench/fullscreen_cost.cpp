@@ -52,9 +52,9 @@ int main(int argc, char** argv) {
   const matc::ParseResult parsed =
       matc::read_material_file(MATC_EXAMPLES_DIR "/figure2_edge_tint.json");
   const matc::CompiledMaterial material =
-      matc::compile_material(*parsed.material, matc::runtime::paper_basis());
+      matc::compile_material(*parsed.material, matc::runtime::shipped_basis());
   const matc::Build build(matc::BuildOptions{});
-  const matc::ComparisonLobes lobes(matc::runtime::paper_basis().samples());
+  const matc::ComparisonLobes lobes(matc::runtime::shipped_basis().samples());
   const matc::Lut lobe_lut = matc::preintegrate_lut(lobes.view(), {});
 
   const matc::vulkan::Context context(matc::vulkan::ContextOptions{false, device_name});

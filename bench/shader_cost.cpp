@@ -109,7 +109,7 @@ void print_instruction_counts(const matc::Build& build, const matc::CompiledMate
 // Fbar from an embedded table of each size against the 128x128 texture, over the measured metals
 // and a 65x65 grid of (NdotV, roughness).
 void print_embedded_accuracy(const matc::LutOptions& texture_options) {
-  const matc::runtime::BasisView basis = matc::runtime::paper_basis();
+  const matc::runtime::BasisView basis = matc::runtime::shipped_basis();
   const matc::Lut texture = matc::preintegrate_lut(basis, texture_options);
   std::vector<matc::runtime::Coefficients> metals;
   for (const matc::MetalPreset& preset : matc::metal_presets()) {
@@ -164,7 +164,7 @@ int main(int argc, char** argv) {
   }
   const matc::ParseResult parsed = matc::read_material_file(MATC_EXAMPLES_DIR "/gold.json");
   if (!parsed.material) return 1;
-  print_instruction_counts(build,
-                           matc::compile_material(*parsed.material, matc::runtime::paper_basis()));
+  print_instruction_counts(
+      build, matc::compile_material(*parsed.material, matc::runtime::shipped_basis()));
   return 0;
 }

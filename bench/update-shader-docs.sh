@@ -10,3 +10,5 @@ tool="$build/bench/matc_shader_cost"
 "$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" embedded-lut "$tool" --embedded
 "$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" basis-polynomial \
   "$root/bench/fenced.sh" "$build/matc" basis
+"$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" basis-polynomial-paper \
+  "$root/bench/fenced.sh" "$build/matc" basis --basis paper

@@ -404,8 +404,18 @@ TEST_F(MatcCli, BasisJsonHasTheDocumentedShape) {
     EXPECT_EQ(b.size(), 1000u);
   EXPECT_EQ(json["b"][0][500], 1.0);
   ASSERT_EQ(json["probes"].size(), 2u);
+  // The default (weighted) basis' probes; its coefficients do not use them.
+  EXPECT_NEAR(json["probes"][0].get<double>(), 0.111, 0.005);
+  EXPECT_NEAR(json["probes"][1].get<double>(), 0.375, 0.01);
+}
+
+TEST_F(MatcCli, PaperBasisKeepsTheAuthorsProbes) {
+  const CommandResult result = run({"basis", "--json", "--basis", "paper"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto json = nlohmann::json::parse(result.out);
   EXPECT_NEAR(json["probes"][0].get<double>(), 0.126, 0.005);
   EXPECT_NEAR(json["probes"][1].get<double>(), 0.43, 0.01);
+  EXPECT_EQ(run({"basis", "--basis", "schlick"}).exit_code, 2);
 }
 
 TEST_F(MatcCli, UsageErrorsExitTwo) {
@@ -459,6 +469,40 @@ TEST_F(MatcCli, BatchBuildCanEmitTheLut) {
   EXPECT_FALSE(fs::exists(dir_ / "out" / "good.glsl"));
   const auto compiled = nlohmann::json::parse(read_file(dir_ / "out" / "good.json"));
   EXPECT_EQ(compiled["energy_compensation"]["F_avg"].size(), 3u);
+}
+
+TEST_F(MatcCli, BasisOptionSelectsTheBasisEverywhereItIsRecorded) {
+  write_file(dir_ / "good.json", kGood);
+  const auto build = [&](const std::string& out, std::vector<std::string> extra) {
+    std::vector<std::string> args = {"-o",         out, "--emit",        "json,lut,glsl",
+                                     "--lut-size", "8", "--lut-samples", "32"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    args.push_back("good.json");
+    const CommandResult result = run(args);
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+  };
+  build("default", {});
+  build("paper", {"--basis", "paper"});
+  const auto material = [&](const std::string& out) {
+    return nlohmann::json::parse(read_file(dir_ / out / "good.json"));
+  };
+  const auto lut = [&](const std::string& out) {
+    return nlohmann::json::parse(read_file(dir_ / out / "matc_lut.ktx2.json"));
+  };
+  EXPECT_EQ(material("default")["basis"]["name"], "weighted");
+  EXPECT_EQ(material("default")["basis"]["solve"], "minimax");
+  EXPECT_EQ(lut("default")["basis"], "weighted");
+  EXPECT_EQ(material("paper")["basis"]["name"], "paper");
+  EXPECT_EQ(material("paper")["basis"]["solve"], "probes");
+  EXPECT_EQ(lut("paper")["basis"], "paper");
+  // Same F0 (c_0), different shape coefficients, different tables and shader polynomials.
+  EXPECT_EQ(material("default")["coefficients"][0][0], material("paper")["coefficients"][0][0]);
+  EXPECT_NE(material("default")["coefficients"][0][2], material("paper")["coefficients"][0][2]);
+  EXPECT_NE(read_file(dir_ / "default" / "matc_lut.ktx2"),
+            read_file(dir_ / "paper" / "matc_lut.ktx2"));
+  EXPECT_NE(read_file(dir_ / "default" / "matc_fresnel.glsl"),
+            read_file(dir_ / "paper" / "matc_fresnel.glsl"));
+  EXPECT_EQ(run({"--basis", "schlick", "good.json"}).exit_code, 2);
 }
 
 TEST_F(MatcCli, EvalPrintsFbarFromTheTableBesideTheReference) {

@@ -13,7 +13,7 @@ matc::CompiledMaterial figure2() {
   const matc::ParseResult parsed =
       matc::read_material_file(MATC_EXAMPLES_DIR "/figure2_edge_tint.json");
   EXPECT_TRUE(parsed.material.has_value());
-  return matc::compile_material(*parsed.material, matc::runtime::paper_basis());
+  return matc::compile_material(*parsed.material, matc::runtime::shipped_basis());
 }
 
 matc::BuildOptions small_build(std::size_t embedded = 0) {

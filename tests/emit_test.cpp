@@ -32,7 +32,7 @@ std::vector<CompiledMaterial> example_materials() {
   for (const fs::path& file : files) {
     ParseResult parsed = read_material_file(file.string());
     if (!parsed.material) throw std::runtime_error("example does not parse: " + file.string());
-    compiled.push_back(compile_material(*parsed.material, runtime::paper_basis()));
+    compiled.push_back(compile_material(*parsed.material, runtime::shipped_basis()));
   }
   return compiled;
 }

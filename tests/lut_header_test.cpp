@@ -8,7 +8,7 @@
 namespace {
 
 TEST(LutHeader, HoldsTheSameTexelsAsTheLibrary) {
-  const matc::Lut lut = matc::preintegrate_lut(matc::runtime::paper_basis(), {16, 64, 1});
+  const matc::Lut lut = matc::preintegrate_lut(matc::runtime::shipped_basis(), {16, 64, 1});
   ASSERT_EQ(matc_lut::kSize, lut.size);
   ASSERT_EQ(std::size(matc_lut::kTexels), lut.texels.size());
   for (std::size_t i = 0; i < lut.texels.size(); ++i) {

@@ -19,6 +19,7 @@
 #include "matc/optics/gulbrandsen.h"
 #include "matc/optics/presets.h"
 #include "matc/optics/spectral.h"
+#include "random_artistic.h"
 
 namespace {
 
@@ -34,45 +35,54 @@ struct Totals {
   double sum_of_max = 0.0;
   std::size_t curves = 0;
   void add(const ErrorStats& stats) {
-    for (const double value : stats.max_abs) {
-      worst = std::max(worst, value);
-      sum_of_max += value;
-      ++curves;
-    }
+    for (const double value : stats.max_abs)
+      add_one(value);
+  }
+  void add_one(double max_error) {
+    worst = std::max(worst, max_error);
+    sum_of_max += max_error;
+    ++curves;
   }
   double mean() const { return sum_of_max / static_cast<double>(curves); }
 };
 
-FitAccuracy measure(const matc::ReflectanceCurve& curve) {
-  const auto basis = matc::runtime::paper_basis();
-  return matc::measure_accuracy(curve, matc::solve_coefficients(curve, basis),
-                                matc::runtime::paper_basis_polynomial());
+using matc::runtime::BasisKind;
+
+FitAccuracy measure(const matc::ReflectanceCurve& curve, BasisKind kind = BasisKind::weighted) {
+  return matc::measure_accuracy(curve,
+                                matc::solve_coefficients(curve, matc::runtime::shipped_basis(kind)),
+                                matc::runtime::shipped_basis_polynomial(kind));
 }
 
 // The per-metal table (unless summary_only) and the summary over the reliable metals.
 void print_metals(bool summary_only) {
   if (!summary_only) {
     fmt::print(
-        "| metal | F0 (linear sRGB) | ours max | ours RMS | Schlick max | F82-tint max |\n"
-        "|---|---|---:|---:|---:|---:|\n");
+        "| metal | F0 (linear sRGB) | ours max | ours RMS | paper basis max | Schlick max | "
+        "F82-tint max |\n"
+        "|---|---|---:|---:|---:|---:|---:|\n");
   }
   Totals ours;
+  Totals paper;
   Totals schlick;
   Totals f82;
   for (const matc::MetalPreset& preset : matc::metal_presets()) {
     const matc::SpectralCurve curve(matc::preset_spectrum(preset));
     const FitAccuracy accuracy = measure(curve);
+    const FitAccuracy paper_accuracy = measure(curve, BasisKind::paper);
     const matc::Rgb f0 = curve.at(1.0);
     const bool counted = preset.caveat.empty();
     if (!summary_only) {
-      fmt::print("| {} {}{} | {:.3f}, {:.3f}, {:.3f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} |\n",
-                 preset.symbol, preset.name, counted ? "" : " (unreliable, not counted)", f0[0],
-                 f0[1], f0[2], worst(accuracy.decomposition.max_abs),
-                 worst(accuracy.decomposition.rms), worst(accuracy.schlick.max_abs),
-                 worst(accuracy.f82_tint.max_abs));
+      fmt::print(
+          "| {} {}{} | {:.3f}, {:.3f}, {:.3f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} |\n",
+          preset.symbol, preset.name, counted ? "" : " (unreliable, not counted)", f0[0], f0[1],
+          f0[2], worst(accuracy.decomposition.max_abs), worst(accuracy.decomposition.rms),
+          worst(paper_accuracy.decomposition.max_abs), worst(accuracy.schlick.max_abs),
+          worst(accuracy.f82_tint.max_abs));
     }
     if (counted) {
       ours.add(accuracy.decomposition);
+      paper.add(paper_accuracy.decomposition);
       schlick.add(accuracy.schlick);
       f82.add(accuracy.f82_tint);
     }
@@ -82,7 +92,8 @@ void print_metals(bool summary_only) {
   fmt::print(
       "| model | worst-channel max error | mean of per-curve max |\n"
       "|---|---:|---:|\n");
-  fmt::print("| ours (paper basis) | {:.4f} | {:.4f} |\n", ours.worst, ours.mean());
+  fmt::print("| ours (weighted basis, the default) | {:.4f} | {:.4f} |\n", ours.worst, ours.mean());
+  fmt::print("| ours with `--basis paper` | {:.4f} | {:.4f} |\n", paper.worst, paper.mean());
   fmt::print("| Schlick | {:.4f} | {:.4f} |\n", schlick.worst, schlick.mean());
   fmt::print("| F82-tint | {:.4f} | {:.4f} |\n", f82.worst, f82.mean());
 }
@@ -113,12 +124,41 @@ void print_artistic_grid() {
   }
 }
 
+// 500 random grey artistic inputs (the study's draws): worst and mean max error per model.
+void print_random_artistic() {
+  fmt::print(
+      "\n| 500 random artistic inputs | ours | ours with `--basis paper` | Schlick | F82-tint |\n"
+      "|---|---:|---:|---:|---:|\n");
+  for (const double r_max : {0.8, 1.0}) {
+    Totals ours;
+    Totals paper;
+    Totals schlick;
+    Totals f82;
+    for (const auto& [r, g] : matc::bench::random_artistic_inputs(500, r_max)) {
+      const matc::ComplexIor ior = matc::gulbrandsen_to_ior({r, g});
+      const matc::IorCurve curve({ior, ior, ior});
+      const FitAccuracy accuracy = measure(curve);
+      const FitAccuracy paper_accuracy = measure(curve, BasisKind::paper);
+      // Grey: one channel stands for all three.
+      ours.add_one(accuracy.decomposition.max_abs[0]);
+      paper.add_one(paper_accuracy.decomposition.max_abs[0]);
+      schlick.add_one(accuracy.schlick.max_abs[0]);
+      f82.add_one(accuracy.f82_tint.max_abs[0]);
+    }
+    fmt::print(
+        "| r <= {:.1f}: worst / mean | {:.4f} / {:.4f} | {:.4f} / {:.4f} | {:.4f} / {:.4f} | "
+        "{:.4f} / {:.4f} |\n",
+        r_max, ours.worst, ours.mean(), paper.worst, paper.mean(), schlick.worst, schlick.mean(),
+        f82.worst, f82.mean());
+  }
+}
+
 // How well a bilinearly filtered table reproduces the integral it samples: the worst difference
 // over bbar_0..bbar_3 between the filtered value and a direct 4096-sample integral, at 400 points
 // that crowd towards grazing. `to_u` maps NdotV to the table's horizontal axis.
 double reconstruction_error(std::size_t size, const std::function<double(double)>& to_u,
                             const std::function<double(double)>& from_u) {
-  const auto basis = matc::runtime::paper_basis();
+  const auto basis = matc::runtime::shipped_basis();
   const double last = static_cast<double>(size - 1);
   std::vector<std::array<double, 4>> table(size * size);
   for (std::size_t y = 0; y < size; ++y) {
@@ -151,7 +191,7 @@ double reconstruction_error(std::size_t size, const std::function<double(double)
 // Sampling error of the default 1024 samples per texel: the worst difference from a 65536-sample
 // integral over bbar_0..bbar_3 on a 9 x 9 grid (NdotV = (i/8)^2, roughness = j/8).
 void print_convergence() {
-  const auto basis = matc::runtime::paper_basis();
+  const auto basis = matc::runtime::shipped_basis();
   double worst = 0.0;
   for (int i = 0; i <= 8; ++i) {
     for (int j = 0; j <= 8; ++j) {
@@ -180,8 +220,10 @@ void print_reconstruction() {
 
 // Per-metal rows (unless summary_only), then the worst and mean rows.
 void print_preintegrated(bool summary_only) {
-  const auto basis = matc::runtime::paper_basis();
+  const auto basis = matc::runtime::shipped_basis();
   const matc::Lut ours = matc::preintegrate_lut(basis, {});
+  const auto paper_basis = matc::runtime::shipped_basis(BasisKind::paper);
+  const matc::Lut paper = matc::preintegrate_lut(paper_basis, {});
   const matc::ComparisonLobes lobes(basis.samples());
   const matc::Lut lobe_lut = matc::preintegrate_lut(lobes.view(), {});
   constexpr std::array<double, 9> kNdotV = {0.02, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9, 1.0};
@@ -195,47 +237,53 @@ void print_preintegrated(bool summary_only) {
     }
   }
   fmt::print(
-      "{}| metal | ours (4 terms) | Schlick split sum (2 terms) | F82-tint split sum (3 "
-      "terms) |\n|---|---:|---:|---:|\n",
+      "{}| metal | ours (4 terms) | ours with `--basis paper` | Schlick split sum (2 terms) | "
+      "F82-tint split sum (3 terms) |\n|---|---:|---:|---:|---:|\n",
       summary_only ? "\nPreintegrated for image-based lighting (128x128 table, one fetch), "
                      "against the exact split-sum integral:\n\n"
                    : "");
-  Totals totals[3];
+  Totals totals[4];
   for (const matc::MetalPreset& preset : matc::metal_presets()) {
     if (!preset.caveat.empty()) continue;
     const matc::TabulatedCurve curve(matc::SpectralCurve(matc::preset_spectrum(preset)));
     const auto c = matc::solve_coefficients(curve, basis);
+    const auto c_paper = matc::solve_coefficients(curve, paper_basis);
     const matc::Rgb f0 = curve.at(1.0);
     const matc::Rgb f82 = curve.at(matc::kF82MuBar);
-    ErrorStats errors[3];
+    ErrorStats errors[4];
     for (std::size_t p = 0; p < points.size(); ++p) {
       const auto [ndotv, roughness] = points[p];
       const matc::Rgb reference = estimators[p].integrate(curve);
       const matc::Rgb decomposed = matc::runtime::evaluate_fbar(c, ours.view(), ndotv, roughness);
+      const matc::Rgb decomposed_paper =
+          matc::runtime::evaluate_fbar(c_paper, paper.view(), ndotv, roughness);
       const auto lobe = matc::runtime::sample_lut(lobe_lut.view(), ndotv, roughness);
       for (std::size_t ch = 0; ch < 3; ++ch) {
         const double mu_bar = matc::kF82MuBar;
         const double a = (matc::fresnel_schlick(mu_bar, f0[ch]) - f82[ch]) /
                          (mu_bar * std::pow(1.0 - mu_bar, 6.0));
         const double schlick = f0[ch] * lobe[0] + (1.0 - f0[ch]) * lobe[1];
-        const double values[3] = {decomposed[ch], schlick, schlick - a * lobe[2]};
-        for (std::size_t m = 0; m < 3; ++m) {
+        const double values[4] = {decomposed[ch], decomposed_paper[ch], schlick,
+                                  schlick - a * lobe[2]};
+        for (std::size_t m = 0; m < 4; ++m) {
           errors[m].max_abs[ch] =
               std::max(errors[m].max_abs[ch], std::abs(values[m] - reference[ch]));
         }
       }
     }
     if (!summary_only) {
-      fmt::print("| {} {} | {:.4f} | {:.4f} | {:.4f} |\n", preset.symbol, preset.name,
-                 worst(errors[0].max_abs), worst(errors[1].max_abs), worst(errors[2].max_abs));
+      fmt::print("| {} {} | {:.4f} | {:.4f} | {:.4f} | {:.4f} |\n", preset.symbol, preset.name,
+                 worst(errors[0].max_abs), worst(errors[1].max_abs), worst(errors[2].max_abs),
+                 worst(errors[3].max_abs));
     }
-    for (std::size_t m = 0; m < 3; ++m)
+    for (std::size_t m = 0; m < 4; ++m)
       totals[m].add(errors[m]);
   }
-  fmt::print("| **worst channel, all metals** | **{:.4f}** | **{:.4f}** | **{:.4f}** |\n",
-             totals[0].worst, totals[1].worst, totals[2].worst);
-  fmt::print("| mean of per-curve max | {:.4f} | {:.4f} | {:.4f} |\n", totals[0].mean(),
-             totals[1].mean(), totals[2].mean());
+  fmt::print(
+      "| **worst channel, all metals** | **{:.4f}** | **{:.4f}** | **{:.4f}** | **{:.4f}** |\n",
+      totals[0].worst, totals[1].worst, totals[2].worst, totals[3].worst);
+  fmt::print("| mean of per-curve max | {:.4f} | {:.4f} | {:.4f} | {:.4f} |\n", totals[0].mean(),
+             totals[1].mean(), totals[2].mean(), totals[3].mean());
 }
 
 }  // namespace
@@ -254,6 +302,9 @@ int main(int argc, char** argv) {
   const bool summary_only = mode == "--summary";
   print_metals(summary_only);
   if (summary_only) print_preintegrated(true);
-  if (!summary_only) print_artistic_grid();
+  if (!summary_only) {
+    print_artistic_grid();
+    print_random_artistic();
+  }
   return 0;
 }

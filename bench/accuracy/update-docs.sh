@@ -9,3 +9,8 @@ tool="$build/bench/matc_accuracy_table"
 "$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" accuracy-tables "$tool"
 "$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" lut-accuracy "$tool" --lut
 "$root/tests/check_docs_block.sh" --update "$root/README.md" accuracy-summary "$tool" --summary
+# The basis study (about 1.5 minutes on 2 cores; no test reruns it, the unit tests hold the
+# shipped basis to the targets it was chosen for).
+cmake --build "$build" --target matc_basis_study >/dev/null
+"$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" basis-study \
+  "$build/bench/matc_basis_study"

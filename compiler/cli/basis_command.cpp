@@ -15,14 +15,20 @@
 namespace matc::cli {
 
 int run_basis(const BasisOptions& options) {
-  const runtime::BasisView basis = runtime::paper_basis();
+  const runtime::BasisKind kind = basis_of(options.basis);
+  const runtime::BasisView basis = runtime::shipped_basis(kind);
   if (!options.json) {
-    fmt::print("basis: paper (Belcour, Bati, Barla 2020), b_0 = 1 and b_1..b_3 tabulated\n");
+    fmt::print("basis: {} ({}), b_0 = 1 and b_1..b_3 tabulated\n", runtime::basis_name(kind),
+               kind == runtime::BasisKind::paper
+                   ? "Belcour, Bati, Barla 2020; coefficients matched at the probes"
+                   : "the authors' training set with curves weighted by 1 - F0; near-minimax "
+                     "coefficients");
     fmt::print("samples: {} cosines mu_j = j / {}\n", basis.samples(), basis.samples() - 1);
     fmt::print("probes: mu_1 = {:.4f} (theta {:.3f} rad), mu_2 = {:.4f} (theta {:.3f} rad)\n",
                basis.probe_mu(0), std::acos(basis.probe_mu(0)), basis.probe_mu(1),
                std::acos(basis.probe_mu(1)));
-    const PolynomialFitError error = polynomial_fit_error(runtime::paper_basis_polynomial(), basis);
+    const PolynomialFitError error =
+        polynomial_fit_error(runtime::shipped_basis_polynomial(kind), basis);
     fmt::print(
         "shader form: {} polynomials of degree {} in sqrt(mu); max |polynomial - table| for "
         "b_1, b_2, b_3: {:.1e}, {:.1e}, {:.1e} at the samples, {:.1e}, {:.1e}, {:.1e} between "
@@ -51,9 +57,8 @@ int run_basis(const BasisOptions& options) {
 }
 
 int run_basis_fit(const BasisFitOptions& options) {
-  const PaperBasisOptions fit_options;
-  const FittedBasis basis = fit_paper_basis(fit_options);
-  const std::string source = basis_table_source(basis, fit_options);
+  const FittedBasis basis = fit_shipped_basis(basis_of(options.basis));
+  const std::string source = basis_table_source(basis);
   fmt::print(stderr, "matc: fitted basis: probes mu_1 = {:.4f}, mu_2 = {:.4f}\n",
              basis.view().probe_mu(0), basis.view().probe_mu(1));
   if (options.output.empty()) {

@@ -64,11 +64,13 @@ int run_eval(const EvalOptions& options);
 
 struct BasisOptions {
   bool json = false;
+  std::string basis{runtime::basis_name(runtime::kDefaultBasis)};
 };
 int run_basis(const BasisOptions& options);
 
 struct BasisFitOptions {
   std::string output;  // empty: standard output
+  std::string basis{runtime::basis_name(runtime::kDefaultBasis)};
 };
 int run_basis_fit(const BasisFitOptions& options);
 

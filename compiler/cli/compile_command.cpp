@@ -187,7 +187,7 @@ int run_compile(const CompileOptions& options) {
     validator = open_device_validator(build, options.device);
     if (!validator) return kExitNoDevice;
   }
-  const runtime::BasisView basis = runtime::paper_basis();
+  const runtime::BasisView basis = build.basis();
   const fs::path output_directory(options.output_directory);
   std::vector<Job> jobs = parse_jobs(options, output_directory);
   const bool inputs_valid = std::all_of(jobs.begin(), jobs.end(),

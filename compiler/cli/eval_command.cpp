@@ -22,8 +22,8 @@ void add_direct_fresnel(const EvalOptions& options, const ReflectanceCurve& curv
   ordered_json decomposed = ordered_json::array();
   ordered_json exact = ordered_json::array();
   for (const double mu : options.mu) {
-    decomposed.push_back(
-        runtime::evaluate_fresnel(coefficients, runtime::paper_basis_polynomial(), mu));
+    decomposed.push_back(runtime::evaluate_fresnel(
+        coefficients, runtime::shipped_basis_polynomial(basis_of(options.lut.basis)), mu));
     exact.push_back(curve.at(mu));
   }
   out["mu"] = options.mu;
@@ -71,7 +71,7 @@ int run_eval(const EvalOptions& options) {
   print_diagnostics(parsed.diagnostics);
   if (!parsed.material) return kExitInputError;
 
-  const runtime::BasisView basis = runtime::paper_basis();
+  const runtime::BasisView basis = runtime::shipped_basis(basis_of(options.lut.basis));
   const auto curve = make_reflectance_curve(*parsed.material);
   const runtime::Coefficients coefficients = solve_coefficients(*curve, basis);
 

@@ -19,7 +19,8 @@ int run_lut(const LutCommandOptions& options) {
       return kExitUsageError;
     }
   }
-  const BakedLut baked = bake_lut(runtime::paper_basis(), options.lut.bake);
+  const BakedLut baked =
+      bake_lut(runtime::shipped_basis(basis_of(options.lut.basis)), options.lut.bake);
   try {
     const LutWriteCounts counts =
         write_lut_files(output, baked, *format, precision_of(options.lut));

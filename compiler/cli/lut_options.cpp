@@ -5,6 +5,16 @@
 
 namespace matc::cli {
 
+void add_basis_option(CLI::App& app, std::string& basis) {
+  app.add_option("--basis", basis,
+                 "Fresnel basis: weighted (default; fitted with curves weighted by 1 - F0, "
+                 "near-minimax coefficients) or paper (the authors' construction, coefficients "
+                 "matched at two angles); docs/accuracy.md compares them")
+      ->capture_default_str()
+      ->check(CLI::IsMember({std::string(runtime::basis_name(runtime::BasisKind::weighted)),
+                             std::string(runtime::basis_name(runtime::BasisKind::paper))}));
+}
+
 void add_lut_options(CLI::App& app, LutCliOptions& options, const std::string& prefix) {
   app.add_option("--" + prefix + "size", options.bake.size, "LUT width and height in texels")
       ->capture_default_str()
@@ -15,6 +25,11 @@ void add_lut_options(CLI::App& app, LutCliOptions& options, const std::string& p
   app.add_option("--" + prefix + "precision", options.precision, "Texel precision")
       ->capture_default_str()
       ->check(CLI::IsMember({"f16", "f32"}));
+  add_basis_option(app, options.basis);
+}
+
+runtime::BasisKind basis_of(const std::string& basis) {
+  return *runtime::basis_from_name(basis);
 }
 
 LutPrecision precision_of(const LutCliOptions& options) {
@@ -41,6 +56,7 @@ BuildOptions table_build_options(const LutCliOptions& lut, bool embed_lut,
   build.lut = lut.bake;
   build.lut_precision = precision_of(lut);
   build.embedded_lut_size = embed_lut ? embed_lut_size : 0;
+  build.basis = basis_of(lut.basis);
   return build;
 }
 

@@ -14,12 +14,17 @@ namespace matc::cli {
 struct LutCliOptions {
   LutOptions bake;
   std::string precision = "f32";
+  std::string basis{runtime::basis_name(runtime::kDefaultBasis)};  // the table integrates it
 };
 
-// Adds --<prefix>size, --<prefix>samples and --<prefix>precision to `app`.
+// Adds --basis to `app`: which shipped basis the coefficients and tables use.
+void add_basis_option(CLI::App& app, std::string& basis);
+
+// Adds --<prefix>size, --<prefix>samples, --<prefix>precision and --basis to `app`.
 void add_lut_options(CLI::App& app, LutCliOptions& options, const std::string& prefix);
 
 LutPrecision precision_of(const LutCliOptions& options);
+runtime::BasisKind basis_of(const std::string& basis);
 
 // The table and embedded-table settings of a build, shared by `matc` and `matc validate`.
 BuildOptions table_build_options(const LutCliOptions& lut, bool embed_lut,

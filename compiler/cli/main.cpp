@@ -111,11 +111,13 @@ int main(int argc, char** argv) {
   BasisOptions basis;
   CLI::App* basis_command = app.add_subcommand("basis", "Show the Fresnel basis b_0..b_3");
   basis_command->add_flag("--json", basis.json, "Print {mu, b, probes} as JSON");
+  add_basis_option(*basis_command, basis.basis);
   BasisFitOptions basis_fit;
   CLI::App* fit_command = basis_command->add_subcommand(
       "fit", "Refit the basis from its training set and write the C++ table source");
   fit_command->add_option("-o,--output", basis_fit.output,
-                          "Where to write (runtime/src/paper_basis_table.cpp); default stdout");
+                          "Where to write (runtime/src/<basis>_basis_table.cpp); default stdout");
+  add_basis_option(*fit_command, basis_fit.basis);
 
   LutCommandOptions lut;
   CLI::App* lut_command = app.add_subcommand(

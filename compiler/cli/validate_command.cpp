@@ -15,7 +15,7 @@ int run_validate(const ValidateOptions& options) {
   const std::unique_ptr<DeviceValidator> validator = open_device_validator(build, options.device);
   if (!validator) return kExitNoDevice;
 
-  const runtime::BasisView basis = runtime::paper_basis();
+  const runtime::BasisView basis = build.basis();
   std::size_t invalid_inputs = 0;
   std::size_t failed = 0;
   for (const std::string& file : options.files) {

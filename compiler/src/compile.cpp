@@ -66,8 +66,8 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
   CompiledMaterial compiled;
   compiled.material = material;
   compiled.coefficients = solve_coefficients(*curve, basis);
-  compiled.accuracy =
-      measure_accuracy(*curve, compiled.coefficients, runtime::paper_basis_polynomial());
+  compiled.accuracy = measure_accuracy(*curve, compiled.coefficients,
+                                       runtime::shipped_basis_polynomial(basis.kind));
   compiled.f0 = curve->at(1.0);
   compiled.f82 = curve->at(kF82MuBar);
   compiled.average_fresnel =
@@ -117,9 +117,16 @@ ordered_json compiled_material_json(const CompiledMaterial& compiled,
   resolved["F82"] = rgb_json(compiled.f82);
   out["resolved"] = resolved;
 
-  out["basis"] = {{"name", "paper"},
-                  {"samples", basis.samples()},
-                  {"probes_mu", {basis.probe_mu(0), basis.probe_mu(1)}}};
+  ordered_json basis_json = {{"name", runtime::basis_name(basis.kind)},
+                             {"samples", basis.samples()}};
+  if (basis.kind == runtime::BasisKind::paper) {
+    basis_json["solve"] = "probes";
+    basis_json["probes_mu"] = {basis.probe_mu(0), basis.probe_mu(1)};
+  } else {
+    basis_json["solve"] = "minimax";
+    basis_json["minimax_cosines"] = kMinimaxCosines;
+  }
+  out["basis"] = std::move(basis_json);
   ordered_json coefficients = ordered_json::array();
   for (const auto& channel : compiled.coefficients) {
     coefficients.push_back({channel[0], channel[1], channel[2], channel[3]});

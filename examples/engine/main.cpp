@@ -45,7 +45,7 @@ std::optional<matc::CompiledMaterial> compile_in_memory(const std::string& json)
   for (const matc::Diagnostic& diagnostic : parsed.diagnostics.items())
     std::fprintf(stderr, "%s\n", matc::format_diagnostic(diagnostic).c_str());
   if (!parsed.material) return std::nullopt;
-  return matc::compile_material(*parsed.material, matc::runtime::paper_basis());
+  return matc::compile_material(*parsed.material, matc::runtime::shipped_basis());
 }
 
 void emit_in_memory(const matc::CompiledMaterial& material) {
@@ -65,11 +65,11 @@ int main() {
   //    header's F0 comment's claim that F(1) = F0.
   const auto gold = from_header(matc_coefficients_gold);
   const auto f_normal =
-      matc::runtime::evaluate_fresnel(gold, matc::runtime::paper_basis_polynomial(), 1.0);
+      matc::runtime::evaluate_fresnel(gold, matc::runtime::shipped_basis_polynomial(), 1.0);
   expect(f_normal[0] > 0.9 && f_normal[2] < 0.5, "gold.h: F(0 degrees) is gold's (reddish-yellow)");
   const auto tint = from_header(matc_coefficients_figure2_edge_tint);
   const auto f_grazing =
-      matc::runtime::evaluate_fresnel(tint, matc::runtime::paper_basis_polynomial(), 0.05);
+      matc::runtime::evaluate_fresnel(tint, matc::runtime::shipped_basis_polynomial(), 0.05);
   expect(f_grazing[1] > f_grazing[0], "figure2_edge_tint.h: green edge tint near grazing");
   expect(std::string(MATC_gold_LUT_FILE) == "matc_lut.ktx2", "gold.h names the table it needs");
 

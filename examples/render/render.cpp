@@ -176,7 +176,7 @@ class Renderer {
   explicit Renderer(const RenderSettings& settings)
       : settings_(settings),
         context_(matc::vulkan::ContextOptions{settings.validation, settings.device}),
-        lobes_(matc::runtime::paper_basis().samples()),
+        lobes_(matc::runtime::shipped_basis().samples()),
         lobe_lut_(matc::preintegrate_lut(lobes_.view(), {})),
         table_size_(static_cast<std::uint32_t>(build_.stored_lut().size)),
         ours_table_(context_, table_size_, table_size_, build_.stored_lut().texels),
@@ -290,7 +290,7 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "{}\n", matc::format_diagnostic(diagnostic));
       if (!parsed.material) return 1;
       const matc::CompiledMaterial compiled =
-          matc::compile_material(*parsed.material, matc::runtime::paper_basis());
+          matc::compile_material(*parsed.material, matc::runtime::shipped_basis());
       const std::array<Panel, kEstimateCount> estimates = renderer.render(compiled);
       const Panel& reference = estimates[kReference];
       const Panel& radiance = estimates[kPrefilteredRadiance];

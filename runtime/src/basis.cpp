@@ -5,6 +5,20 @@
 
 namespace matc::runtime {
 
+std::string_view basis_name(BasisKind kind) {
+  return kind == BasisKind::paper ? "paper" : "weighted";
+}
+
+std::optional<BasisKind> basis_from_name(std::string_view name) {
+  for (const BasisKind kind : {BasisKind::weighted, BasisKind::paper})
+    if (basis_name(kind) == name) return kind;
+  return std::nullopt;
+}
+
+BasisView shipped_basis(BasisKind kind) {
+  return kind == BasisKind::paper ? paper_basis() : weighted_basis();
+}
+
 std::array<double, kBasisSize> BasisView::at_index(std::size_t index) const {
   return {1.0, tables[0][index], tables[1][index], tables[2][index]};
 }

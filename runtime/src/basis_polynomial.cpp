@@ -26,4 +26,8 @@ std::array<double, kBasisSize> evaluate_basis_polynomial(const BasisPolynomial& 
   return values;
 }
 
+const BasisPolynomial& shipped_basis_polynomial(BasisKind kind) {
+  return kind == BasisKind::paper ? paper_basis_polynomial() : weighted_basis_polynomial();
+}
+
 }  // namespace matc::runtime

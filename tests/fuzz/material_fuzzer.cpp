@@ -35,7 +35,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   matc::ParseResult parsed = matc::parse_material(text, "fuzz/material.json", serve_from_memory);
   if (!parsed.material) return 0;
   const matc::CompiledMaterial compiled =
-      matc::compile_material(*parsed.material, matc::runtime::paper_basis());
+      matc::compile_material(*parsed.material, matc::runtime::shipped_basis());
   matc::Diagnostics warnings;
   matc::warn_if_poor_fit(compiled, warnings);
   const matc::MaterialOutputs outputs = small_build().material_outputs(compiled);

@@ -9,6 +9,7 @@
 #include <Eigen/SVD>
 
 #include "matc/basis/basis_polynomial_fit.h"
+#include "matc/basis/training_set.h"
 #include "matc/optics/fresnel.h"
 #include "matc/optics/gulbrandsen.h"
 #include "matc/version.h"
@@ -18,32 +19,40 @@ namespace {
 
 using Eigen::Index;
 
-double stratum_midpoint(std::size_t i, std::size_t count) {
-  return (static_cast<double>(i) + 0.5) / static_cast<double>(count);
-}
-
 // The training curves, one per row, normalised to run from 1 (mu = 0) to 0 (mu = 1).
-Eigen::MatrixXd normalized_training_curves(const PaperBasisOptions& options) {
-  std::vector<ComplexIor> iors;
-  for (std::size_t i = 0; i < options.dielectric_curves; ++i) {
-    const double t = stratum_midpoint(i, options.dielectric_curves);
-    iors.push_back({options.eta_min + t * (options.eta_max - options.eta_min), 0.0});
-  }
-  for (std::size_t i = 0; i < options.conductor_curves; ++i) {
-    iors.push_back(gulbrandsen_to_ior({stratum_midpoint(i, options.conductor_curves), 1.0}));
-  }
+Eigen::MatrixXd normalized_curves(std::span<const ComplexIor> iors, std::size_t samples,
+                                  Eigen::VectorXd& f0) {
   const auto rows = static_cast<Index>(iors.size());
-  const auto columns = static_cast<Index>(options.samples);
+  const auto columns = static_cast<Index>(samples);
   Eigen::MatrixXd curves(rows, columns);
+  f0.resize(rows);
   for (Index row = 0; row < rows; ++row) {
     const ComplexIor ior = iors[static_cast<std::size_t>(row)];
-    const double f0 = fresnel_exact(1.0, ior);
+    f0(row) = fresnel_exact(1.0, ior);
     for (Index j = 0; j < columns; ++j) {
       const double mu = static_cast<double>(j) / static_cast<double>(columns - 1);
-      curves(row, j) = (fresnel_exact(mu, ior) - f0) / (1.0 - f0);
+      curves(row, j) = (fresnel_exact(mu, ior) - f0(row)) / (1.0 - f0(row));
     }
   }
   return curves;
+}
+
+Eigen::VectorXd curve_weights(const Eigen::VectorXd& f0, CurveWeighting weighting) {
+  if (weighting == CurveWeighting::one_minus_f0) return (1.0 - f0.array()).matrix();
+  return Eigen::VectorXd::Ones(f0.size());
+}
+
+// Square roots of the per-cosine weights, so that the SVD minimises the weighted squared error.
+// mu = 0 keeps the weight of its neighbour: every curve is exactly 1 there.
+Eigen::VectorXd cosine_weight_roots(std::size_t samples, CosineWeighting weighting) {
+  const auto columns = static_cast<Index>(samples);
+  Eigen::VectorXd roots = Eigen::VectorXd::Ones(columns);
+  if (weighting == CosineWeighting::projected_solid_angle) {
+    for (Index j = 0; j < columns; ++j)
+      roots(j) =
+          std::sqrt(static_cast<double>(std::max<Index>(j, 1)) / static_cast<double>(columns - 1));
+  }
+  return roots;
 }
 
 // Scales v so that its largest-magnitude entry becomes +1 (fixes the SVD's arbitrary sign).
@@ -67,22 +76,34 @@ std::size_t distance(std::size_t a, std::size_t b) {
 }  // namespace
 
 runtime::BasisView FittedBasis::view() const {
-  return {{tables[0], tables[1], tables[2]}, probe_indices};
+  return {{tables[0], tables[1], tables[2]}, probe_indices, kind};
 }
 
-FittedBasis fit_paper_basis(const PaperBasisOptions& options) {
-  const Eigen::MatrixXd curves = normalized_training_curves(options);
+FittedBasis fit_basis(std::span<const ComplexIor> training, const BasisConstruction& construction) {
+  Eigen::VectorXd f0;
+  const Eigen::MatrixXd curves = normalized_curves(training, construction.samples, f0);
+  const Eigen::VectorXd rows = curve_weights(f0, construction.curve_weighting);
+  const Eigen::VectorXd columns =
+      cosine_weight_roots(construction.samples, construction.cosine_weighting);
 
   FittedBasis basis;
-  const Eigen::BDCSVD<Eigen::MatrixXd> first(curves, Eigen::ComputeThinV);
-  const Eigen::VectorXd b1 =
-      first.matrixV().col(0).cwiseAbs() / first.matrixV().col(0).cwiseAbs().maxCoeff();
+  Eigen::VectorXd b1;
+  if (construction.mean_shape == MeanShape::mean_curve) {
+    const Eigen::VectorXd squared = rows.cwiseAbs2();
+    b1 = (curves.transpose() * squared) / squared.sum();
+  } else {
+    const Eigen::MatrixXd weighted = rows.asDiagonal() * curves * columns.asDiagonal();
+    const Eigen::BDCSVD<Eigen::MatrixXd> first(weighted, Eigen::ComputeThinV);
+    b1 = first.matrixV().col(0).cwiseQuotient(columns).cwiseAbs();
+    b1 /= b1.maxCoeff();
+  }
   basis.tables[0].assign(b1.data(), b1.data() + b1.size());
 
-  const Eigen::MatrixXd residual = curves.rowwise() - b1.transpose();
+  const Eigen::MatrixXd residual =
+      rows.asDiagonal() * (curves.rowwise() - b1.transpose()) * columns.asDiagonal();
   const Eigen::BDCSVD<Eigen::MatrixXd> second(residual, Eigen::ComputeThinV);
-  basis.tables[1] = scaled_to_unit_peak(second.matrixV().col(0));
-  basis.tables[2] = scaled_to_unit_peak(second.matrixV().col(1));
+  basis.tables[1] = scaled_to_unit_peak(second.matrixV().col(0).cwiseQuotient(columns));
+  basis.tables[2] = scaled_to_unit_peak(second.matrixV().col(1).cwiseQuotient(columns));
 
   const std::size_t probe1 = index_of_max(basis.tables[1]);
   const std::size_t b3_max = index_of_max(basis.tables[2]);
@@ -93,18 +114,48 @@ FittedBasis fit_paper_basis(const PaperBasisOptions& options) {
   return basis;
 }
 
-std::string basis_table_source(const FittedBasis& basis, const PaperBasisOptions& options) {
+std::vector<ComplexIor> paper_training_iors(const PaperBasisOptions& options) {
+  std::vector<ComplexIor> iors =
+      dielectric_training_iors(options.dielectric_curves, options.eta_min, options.eta_max);
+  // The notebook's conductors: Gulbrandsen with edge tint g = 1, r over (0, 1).
+  for (const ComplexIor ior : artistic_training_iors({options.conductor_curves, 1, 1.0, 1.0}))
+    iors.push_back(ior);
+  return iors;
+}
+
+FittedBasis fit_paper_basis(const PaperBasisOptions& options) {
+  FittedBasis basis = fit_basis(paper_training_iors(options), {.samples = options.samples});
+  basis.kind = runtime::BasisKind::paper;
+  return basis;
+}
+
+FittedBasis fit_weighted_basis() {
+  FittedBasis basis = fit_basis(paper_training_iors(), kWeightedConstruction);
+  basis.kind = runtime::BasisKind::weighted;
+  return basis;
+}
+
+FittedBasis fit_shipped_basis(runtime::BasisKind kind) {
+  return kind == runtime::BasisKind::paper ? fit_paper_basis() : fit_weighted_basis();
+}
+
+std::string basis_table_source(const FittedBasis& basis) {
+  const PaperBasisOptions options;
+  const bool paper = basis.kind == runtime::BasisKind::paper;
+  const std::string name(runtime::basis_name(basis.kind));
   std::string out = fmt::format(
-      "// Generated by `matc basis fit` (matc {}). Do not edit: rerun the command instead.\n"
+      "// Generated by `matc basis fit --basis {}` (matc {}). Do not edit: rerun the command "
+      "instead.\n"
       "// Training set: {} dielectrics (eta in [{}, {}]) and {} Gulbrandsen conductors (g = 1),\n"
-      "// {} samples of mu = cos(theta) in [0, 1].\n"
+      "// {} samples of mu = cos(theta) in [0, 1]. {}\n"
       "// clang-format off\n"
       "#include \"matc/runtime/basis.h\"\n"
       "#include \"matc/runtime/basis_polynomial.h\"\n\n"
       "namespace matc::runtime {{\n"
       "namespace {{\n\n",
-      kVersion, options.dielectric_curves, options.eta_min, options.eta_max,
-      options.conductor_curves, options.samples);
+      name, kVersion, options.dielectric_curves, options.eta_min, options.eta_max,
+      options.conductor_curves, options.samples,
+      paper ? "Unweighted SVDs (the authors)." : "SVDs with every curve weighted by 1 - F0.");
   for (std::size_t i = 0; i < basis.tables.size(); ++i) {
     out += fmt::format("constexpr double kB{}[{}] = {{\n", i + 1, basis.tables[i].size());
     for (std::size_t j = 0; j < basis.tables[i].size(); ++j) {
@@ -127,10 +178,10 @@ std::string basis_table_source(const FittedBasis& basis, const PaperBasisOptions
   out += fmt::format(
       "}}}};\n\n"
       "}}  // namespace\n\n"
-      "BasisView paper_basis() {{ return {{{{kB1, kB2, kB3}}, {{{}, {}}}}}; }}\n\n"
-      "const BasisPolynomial& paper_basis_polynomial() {{ return kPolynomial; }}\n\n"
+      "BasisView {0}_basis() {{ return {{{{kB1, kB2, kB3}}, {{{1}, {2}}}, BasisKind::{0}}}; }}\n\n"
+      "const BasisPolynomial& {0}_basis_polynomial() {{ return kPolynomial; }}\n\n"
       "}}  // namespace matc::runtime\n",
-      basis.probe_indices[0], basis.probe_indices[1]);
+      name, basis.probe_indices[0], basis.probe_indices[1]);
   return out;
 }
 

@@ -6,29 +6,14 @@
 
 #include <Eigen/Dense>
 
+#include "fit/minimax.h"
+
 namespace matc {
 namespace {
 
 using Eigen::Index;
 using runtime::kPolynomialDegree;
 using runtime::kPolynomialSegments;
-
-constexpr int kLawsonIterations = 40;
-
-// Lawson's algorithm: reweighting each sample by its error drives least squares towards the
-// minimax fit; the square root damps the update so that 40 iterations converge smoothly.
-Eigen::VectorXd near_minimax_fit(const Eigen::MatrixXd& design, const Eigen::VectorXd& values) {
-  Eigen::VectorXd weights = Eigen::VectorXd::Ones(values.size());
-  Eigen::VectorXd solution;
-  for (int iteration = 0; iteration <= kLawsonIterations; ++iteration) {
-    solution =
-        (weights.asDiagonal() * design).colPivHouseholderQr().solve(weights.asDiagonal() * values);
-    const Eigen::VectorXd error = (design * solution - values).cwiseAbs();
-    weights = weights.cwiseProduct((error.array() + 1e-15).sqrt().matrix());
-    weights /= weights.maxCoeff();
-  }
-  return solution;
-}
 
 }  // namespace
 

@@ -87,7 +87,7 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
                                             options_.embedded_lut_size, kMinLutSize,
                                             kMaxEmbeddedLutSize));
   }
-  const runtime::BasisView basis = runtime::paper_basis();
+  const runtime::BasisView basis = this->basis();
   lut_ = bake_lut(basis, options_.lut);
   stored_lut_ = stored_as(lut_.lut, options_.lut_precision);
   lut_file_bytes_ = encode_lut(lut_, options_.lut_format, options_.lut_precision);
@@ -99,7 +99,7 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
   }
   inputs_hash_ = ContentHash().add(options_key()).hex();
   ShaderLibraryOptions library_options{options_.lut.size, embedded_lut()};
-  const runtime::BasisPolynomial& polynomial = runtime::paper_basis_polynomial();
+  const runtime::BasisPolynomial& polynomial = runtime::shipped_basis_polynomial(options_.basis);
   glsl_library_ =
       shader_library_source(ShaderLanguage::glsl, polynomial, library_options, inputs_hash_);
   hlsl_library_ =
@@ -107,9 +107,14 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
 }
 
 std::string Build::options_key() const {
-  return fmt::format("lut {}x{} samples {} {} {} embed {}", options_.lut.size, options_.lut.size,
-                     options_.lut.samples, lut_format_name(options_.lut_format),
-                     lut_precision_name(options_.lut_precision), options_.embedded_lut_size);
+  return fmt::format("lut {}x{} samples {} {} {} embed {} basis {}", options_.lut.size,
+                     options_.lut.size, options_.lut.samples, lut_format_name(options_.lut_format),
+                     lut_precision_name(options_.lut_precision), options_.embedded_lut_size,
+                     runtime::basis_name(options_.basis));
+}
+
+runtime::BasisView Build::basis() const {
+  return runtime::shipped_basis(options_.basis);
 }
 
 const std::string& Build::library_source(ShaderLanguage language) const {
@@ -199,7 +204,7 @@ MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const 
     }
   }
   if (emit.contains(OutputKind::json)) {
-    nlohmann::ordered_json json = compiled_material_json(compiled, runtime::paper_basis());
+    nlohmann::ordered_json json = compiled_material_json(compiled, basis());
     json["inputs_hash"] = out.inputs_hash;
     out.files.push_back({fmt::format("{}.json", name), format_json(json)});
   }

@@ -2,10 +2,12 @@
 
 #include <stdexcept>
 
+#include "fit/minimax.h"
+
 namespace matc {
 
-runtime::Coefficients solve_coefficients(const ReflectanceCurve& curve,
-                                         const runtime::BasisView& basis) {
+runtime::Coefficients solve_coefficients_at_probes(const ReflectanceCurve& curve,
+                                                   const runtime::BasisView& basis) {
   const Rgb f0 = curve.at(1.0);
   const auto probe1 = basis.at_index(basis.probe_indices[0]);
   const auto probe2 = basis.at_index(basis.probe_indices[1]);
@@ -27,6 +29,38 @@ runtime::Coefficients solve_coefficients(const ReflectanceCurve& curve,
     coefficients[c] = {c0, c1, c2, c3};
   }
   return coefficients;
+}
+
+runtime::Coefficients solve_coefficients_minimax(const ReflectanceCurve& curve,
+                                                 const runtime::BasisPolynomial& shader_basis) {
+  constexpr auto kRows = static_cast<Eigen::Index>(kMinimaxCosines);
+  const Rgb f0 = curve.at(1.0);
+  Eigen::MatrixXd design(kRows, 2);
+  Eigen::MatrixXd residual(kRows, 3);
+  for (Eigen::Index j = 0; j < kRows; ++j) {
+    const double mu = static_cast<double>(j) / static_cast<double>(kRows - 1);
+    const auto b = runtime::evaluate_basis_polynomial(shader_basis, mu);
+    const Rgb exact = curve.at(mu);
+    design(j, 0) = b[2];
+    design(j, 1) = b[3];
+    for (Eigen::Index c = 0; c < 3; ++c) {
+      const double c0 = f0[static_cast<std::size_t>(c)];
+      residual(j, c) = exact[static_cast<std::size_t>(c)] - c0 - (1.0 - c0) * b[1];
+    }
+  }
+  runtime::Coefficients coefficients{};
+  for (std::size_t c = 0; c < 3; ++c) {
+    const Eigen::VectorXd fit =
+        near_minimax_fit(design, residual.col(static_cast<Eigen::Index>(c)));
+    coefficients[c] = {f0[c], 1.0 - f0[c], fit(0), fit(1)};
+  }
+  return coefficients;
+}
+
+runtime::Coefficients solve_coefficients(const ReflectanceCurve& curve,
+                                         const runtime::BasisView& basis) {
+  if (basis.kind == runtime::BasisKind::paper) return solve_coefficients_at_probes(curve, basis);
+  return solve_coefficients_minimax(curve, runtime::shipped_basis_polynomial(basis.kind));
 }
 
 }  // namespace matc

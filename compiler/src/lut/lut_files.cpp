@@ -81,6 +81,7 @@ Lut stored_as(Lut lut, LutPrecision precision) {
 BakedLut bake_lut(const runtime::BasisView& basis, const LutOptions& options) {
   BakedLut baked;
   baked.lut = preintegrate_lut(basis, options);
+  baked.basis = basis.kind;
   baked.average_albedo = average_albedo(baked.lut);
   baked.basis_averages = basis_hemispherical_averages(basis);
   return baked;
@@ -110,7 +111,7 @@ nlohmann::ordered_json lut_manifest(const BakedLut& baked, LutFormat format,
   manifest["precision"] = lut_precision_name(precision);
   manifest["size"] = {lut.size, lut.size};
   manifest["samples_per_texel"] = lut.samples;
-  manifest["basis"] = "paper";
+  manifest["basis"] = runtime::basis_name(baked.basis);
   manifest["channels"] = {"bbar_0", "bbar_1", "bbar_2", "bbar_3"};
   manifest["layout"] = {
       {"rows", "roughness (perceptual; GGX alpha = roughness^2), first row = 0"},

@@ -118,7 +118,8 @@ PathValidation DeviceValidator::run(ShaderLanguage language,
   const std::vector<float> results =
       device_->results.read<float>(queries_.size() * kValidationResultsPerQuery * 4);
 
-  const runtime::BasisPolynomial& polynomial = runtime::paper_basis_polynomial();
+  const runtime::BasisPolynomial& polynomial =
+      runtime::shipped_basis_polynomial(build_.options().basis);
   const runtime::LutView table = build_.stored_lut().view();
   const Lut* embedded = build_.embedded_lut();
   PathValidation path;

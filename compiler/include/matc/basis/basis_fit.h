@@ -3,8 +3,11 @@
 
 #include <array>
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
+
+#include "matc/optics/fresnel.h"
 
 #include "matc/runtime/basis.h"
 #include "matc/runtime/basis_polynomial.h"
@@ -29,17 +32,56 @@ struct FittedBasis {
   std::array<std::size_t, 2> probe_indices{};
   // The shaders' form of the tables (fit_basis_polynomial).
   runtime::BasisPolynomial polynomial{};
+  runtime::BasisKind kind = runtime::BasisKind::paper;  // which coefficient solve it is meant for
 
   runtime::BasisView view() const;
 };
 
-// Each curve is normalised to (F - F0) / (1 - F0). b_1 = |first right singular vector| scaled to
-// max 1; b_2, b_3 = first two right singular vectors of the residual (normalised curve - b_1),
-// each scaled so that its largest-magnitude entry is +1. Probes: mu_1 = argmax b_2, mu_2 = the
-// extremum of b_3 farther from mu_1. The polynomial form is fitted to the resulting tables.
+// How b_1 is taken from the normalised curves (F - F0) / (1 - F0).
+enum class MeanShape {
+  first_singular_vector,  // the authors: |first right singular vector| scaled to max 1
+  mean_curve,             // the (weighted) mean curve: makes b_2, b_3 principal components
+};
+// How much each training curve counts in the SVDs.
+enum class CurveWeighting {
+  equal,         // every normalised curve alike (the authors)
+  one_minus_f0,  // by 1 - F0: the scale the normalisation divided out, so the SVD minimises
+                 // the error in F itself rather than in the normalised curve
+};
+// How much each cosine counts.
+enum class CosineWeighting {
+  solid_angle,            // uniform in mu: every direction of the hemisphere alike
+  projected_solid_angle,  // by mu, as the cosine-weighted split sum weighs them
+};
+
+struct BasisConstruction {
+  std::size_t samples = 1000;
+  MeanShape mean_shape = MeanShape::first_singular_vector;
+  CurveWeighting curve_weighting = CurveWeighting::equal;
+  CosineWeighting cosine_weighting = CosineWeighting::solid_angle;
+};
+
+// b_1 per `construction.mean_shape`; b_2, b_3 = first two right singular vectors of the
+// (weighted) residual normalised curve - b_1, each scaled so that its largest-magnitude entry is
+// +1. Probes: mu_1 = argmax b_2, mu_2 = the extremum of b_3 farther from mu_1. The polynomial form
+// is fitted to the resulting tables.
+FittedBasis fit_basis(std::span<const ComplexIor> training, const BasisConstruction& construction);
+
+// The authors' training set and construction.
+std::vector<ComplexIor> paper_training_iors(const PaperBasisOptions& options = {});
 FittedBasis fit_paper_basis(const PaperBasisOptions& options = {});
 
-// The C++ source of runtime/src/paper_basis_table.cpp for `basis` (what `matc basis fit` writes).
-std::string basis_table_source(const FittedBasis& basis, const PaperBasisOptions& options);
+// The default basis: the authors' training set, each curve weighted by 1 - F0, uniform in mu.
+// bench/accuracy/basis_study.cpp compares it with the other candidates.
+inline constexpr BasisConstruction kWeightedConstruction = {1000, MeanShape::first_singular_vector,
+                                                            CurveWeighting::one_minus_f0,
+                                                            CosineWeighting::solid_angle};
+FittedBasis fit_weighted_basis();
+
+// Refits a shipped basis from scratch (what `matc basis fit --basis NAME` does).
+FittedBasis fit_shipped_basis(runtime::BasisKind kind);
+
+// The C++ source of runtime/src/<name>_basis_table.cpp for a refit shipped basis.
+std::string basis_table_source(const FittedBasis& basis);
 
 }  // namespace matc

@@ -34,6 +34,7 @@ struct BuildOptions {
   LutFormat lut_format = LutFormat::ktx2;
   LutPrecision lut_precision = LutPrecision::f32;
   std::size_t embedded_lut_size = 0;  // --embed-lut: 0 for none, else 2..kMaxEmbeddedLutSize
+  runtime::BasisKind basis = runtime::kDefaultBasis;  // --basis
 };
 
 struct OutputFile {
@@ -55,6 +56,8 @@ class Build {
   explicit Build(BuildOptions options);
 
   const BuildOptions& options() const { return options_; }
+  // The basis every material of this build is compiled against (options().basis).
+  runtime::BasisView basis() const;
   const BakedLut& lut() const { return lut_; }
   // The table as the written file stores it (f16 rounding), what a renderer samples.
   const Lut& stored_lut() const { return stored_lut_; }

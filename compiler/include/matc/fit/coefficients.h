@@ -3,12 +3,25 @@
 
 #include "matc/optics/reflectance_curve.h"
 #include "matc/runtime/basis.h"
+#include "matc/runtime/basis_polynomial.h"
 #include "matc/runtime/fresnel.h"
 
 namespace matc {
 
-// Per channel: c_0 = F(mu = 1), c_1 = 1 - c_0 (so F(mu = 0) = 1), and (c_2, c_3) from the 2x2
-// system that reproduces F exactly at the basis' two probe cosines.
+// Both solves fix c_0 = F(mu = 1) and c_1 = 1 - c_0, so F(mu = 0) = 1 and F(1) = F0 hold exactly
+// (b_2, b_3 vanish at both ends); they differ in how (c_2, c_3) are chosen.
+
+// Collocation (the authors): the 2x2 system that reproduces F exactly at the basis' two probes.
+runtime::Coefficients solve_coefficients_at_probes(const ReflectanceCurve& curve,
+                                                   const runtime::BasisView& basis);
+
+// Near-minimax: (c_2, c_3) that minimise the largest |F - exact| over kMinimaxCosines cosines,
+// measured on the basis as the shaders evaluate it (`shader_basis`).
+inline constexpr std::size_t kMinimaxCosines = 401;
+runtime::Coefficients solve_coefficients_minimax(const ReflectanceCurve& curve,
+                                                 const runtime::BasisPolynomial& shader_basis);
+
+// The basis' own solve: at its probes for the paper basis, near-minimax for the conductor basis.
 runtime::Coefficients solve_coefficients(const ReflectanceCurve& curve,
                                          const runtime::BasisView& basis);
 

@@ -31,6 +31,7 @@ struct BakedLut {
   Lut lut;
   std::vector<double> average_albedo;                        // E_avg per roughness row
   std::array<double, runtime::kBasisSize> basis_averages{};  // m_i
+  runtime::BasisKind basis = runtime::kDefaultBasis;         // which basis was integrated
 };
 
 BakedLut bake_lut(const runtime::BasisView& basis, const LutOptions& options);

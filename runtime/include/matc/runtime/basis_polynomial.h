@@ -32,7 +32,9 @@ PolynomialPosition polynomial_position(double mu);
 std::array<double, kBasisSize> evaluate_basis_polynomial(const BasisPolynomial& polynomial,
                                                          double mu);
 
-// The fit of paper_basis() checked in beside its table.
+// The fits of paper_basis() and weighted_basis() checked in beside their tables.
 const BasisPolynomial& paper_basis_polynomial();
+const BasisPolynomial& weighted_basis_polynomial();
+const BasisPolynomial& shipped_basis_polynomial(BasisKind kind = kDefaultBasis);
 
 }  // namespace matc::runtime

@@ -1,0 +1,309 @@
+// The basis study of issue #8 (docs/accuracy.md, "Choosing the basis"): which training set,
+// weighting and coefficient solve give the most accurate four-term decomposition, measured on
+// curves no fit saw. Every candidate is fitted here from scratch; nothing is read from a table.
+//   matc_basis_study [--quick]     (bench/accuracy/update-docs.sh runs it)
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <future>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "matc/basis/basis_fit.h"
+#include "matc/basis/training_set.h"
+#include "matc/fit/accuracy.h"
+#include "matc/fit/coefficients.h"
+#include "matc/optics/gulbrandsen.h"
+#include "matc/optics/presets.h"
+#include "matc/optics/spectral.h"
+#include "matc/optics/spectrum.h"
+#include "random_artistic.h"
+
+namespace {
+
+using matc::ComplexIor;
+using matc::FittedBasis;
+using matc::ReflectanceCurve;
+using matc::Rgb;
+
+// An exact curve sampled once on the accuracy grid (which contains the minimax grid), so that the
+// many candidates do not integrate the same spectra again.
+class CachedCurve final : public ReflectanceCurve {
+ public:
+  explicit CachedCurve(const ReflectanceCurve& exact) : exact_(exact) {
+    for (std::size_t j = 0; j < matc::kAccuracySamples; ++j)
+      values_.push_back(exact.at(mu_at(j)));
+  }
+  Rgb at(double mu) const override {
+    const double position = mu * static_cast<double>(matc::kAccuracySamples - 1);
+    const double index = std::round(position);
+    if (index >= 0.0 && static_cast<std::size_t>(index) < values_.size() &&
+        mu_at(static_cast<std::size_t>(index)) == mu)
+      return values_[static_cast<std::size_t>(index)];
+    return exact_.at(mu);
+  }
+
+ private:
+  static double mu_at(std::size_t j) {
+    return static_cast<double>(j) / static_cast<double>(matc::kAccuracySamples - 1);
+  }
+  const ReflectanceCurve& exact_;
+  std::vector<Rgb> values_;
+};
+
+struct TestCurve {
+  std::string name;
+  std::unique_ptr<ReflectanceCurve> exact;
+  std::unique_ptr<CachedCurve> cached;
+  std::size_t channels = 3;  // grey curves count once
+};
+
+struct TestSet {
+  std::string name;
+  std::vector<TestCurve> curves;
+  void add(std::string curve_name, std::unique_ptr<ReflectanceCurve> exact, std::size_t channels) {
+    TestCurve curve{std::move(curve_name), std::move(exact), nullptr, channels};
+    curve.cached = std::make_unique<CachedCurve>(*curve.exact);
+    curves.push_back(std::move(curve));
+  }
+};
+
+std::unique_ptr<ReflectanceCurve> grey(ComplexIor ior) {
+  return std::make_unique<matc::IorCurve>(std::array<ComplexIor, 3>{ior, ior, ior});
+}
+
+TestSet measured_metals() {
+  TestSet set{"measured metals (23)", {}};
+  for (const matc::MetalPreset& preset : matc::metal_presets()) {
+    if (!preset.caveat.empty()) continue;
+    set.add(std::string(preset.symbol),
+            std::make_unique<matc::SpectralCurve>(matc::preset_spectrum(preset)), 3);
+  }
+  return set;
+}
+
+TestSet alternative_metals(const std::filesystem::path& directory) {
+  TestSet set{"alternative data sets", {}};
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(directory))
+    if (entry.path().extension() == ".csv") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  for (const auto& file : files) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string content = text.str();
+    matc::Diagnostics diagnostics;
+    const auto spectrum =
+        matc::parse_nk_csv(content, matc::TextLocator(file.string(), content), diagnostics);
+    if (!spectrum) throw std::runtime_error("cannot read " + file.string());
+    set.add(file.parent_path().filename().string() + "/" + file.stem().string(),
+            std::make_unique<matc::SpectralCurve>(*spectrum), 3);
+  }
+  set.name = fmt::format("alternative data sets ({})", set.curves.size());
+  return set;
+}
+
+TestSet artistic(std::size_t count, double r_max) {
+  TestSet set{fmt::format("random artistic, r <= {:.2f} ({})", r_max, count), {}};
+  for (const auto& [r, g] : matc::bench::random_artistic_inputs(count, r_max))
+    set.add(fmt::format("r={:.3f} g={:.3f}", r, g), grey(matc::gulbrandsen_to_ior({r, g})), 1);
+  return set;
+}
+
+TestSet dielectrics() {
+  TestSet set{"dielectrics, eta 1.2-2.5 (14)", {}};
+  for (int i = 0; i <= 13; ++i) {
+    const double eta = 1.2 + 0.1 * i;
+    set.add(fmt::format("eta={:.1f}", eta), grey({eta, 0.0}), 1);
+  }
+  return set;
+}
+
+enum class Solve { probes, minimax };
+
+struct Score {
+  double worst = 0.0;
+  double mean = 0.0;
+};
+
+Score score(const TestSet& set, const FittedBasis& basis, Solve solve) {
+  Score result;
+  std::size_t count = 0;
+  for (const TestCurve& curve : set.curves) {
+    const matc::runtime::Coefficients coefficients =
+        solve == Solve::probes ? matc::solve_coefficients_at_probes(*curve.cached, basis.view())
+                               : matc::solve_coefficients_minimax(*curve.cached, basis.polynomial);
+    const matc::FitAccuracy accuracy =
+        matc::measure_accuracy(*curve.cached, coefficients, basis.polynomial);
+    for (std::size_t c = 0; c < curve.channels; ++c) {
+      result.worst = std::max(result.worst, accuracy.decomposition.max_abs[c]);
+      result.mean += accuracy.decomposition.max_abs[c];
+      ++count;
+    }
+  }
+  result.mean /= static_cast<double>(count);
+  return result;
+}
+
+struct TrainingSet {
+  std::string name;
+  std::vector<ComplexIor> iors;
+};
+
+std::vector<ComplexIor> joined(std::vector<ComplexIor> a, const std::vector<ComplexIor>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+std::vector<TrainingSet> training_sets() {
+  const auto artistic_grid = matc::artistic_training_iors({40, 40, 1.0, 0.0});
+  const auto metal_grid = matc::complex_ior_training_iors({40, 40, 0.05, 4.0, 0.5, 8.0});
+  const auto some_dielectrics = matc::dielectric_training_iors(100, 1.01, 3.0);
+  return {
+      {"paper: 990 dielectrics + 10 conductors (g = 1)", matc::paper_training_iors()},
+      {"artistic r x g grid, 40 x 40", artistic_grid},
+      {"conductor n x k grid, 40 x 40", metal_grid},
+      {"n x k grid + 100 dielectrics", joined(metal_grid, some_dielectrics)},
+      {"n x k grid + r x g grid", joined(metal_grid, artistic_grid)},
+  };
+}
+
+struct Construction {
+  std::string name;
+  matc::BasisConstruction options;
+};
+
+std::vector<Construction> constructions() {
+  using matc::CosineWeighting;
+  using matc::CurveWeighting;
+  using matc::MeanShape;
+  std::vector<Construction> all;
+  for (const MeanShape shape : {MeanShape::first_singular_vector, MeanShape::mean_curve}) {
+    for (const CurveWeighting curves : {CurveWeighting::equal, CurveWeighting::one_minus_f0}) {
+      for (const CosineWeighting cosines :
+           {CosineWeighting::solid_angle, CosineWeighting::projected_solid_angle}) {
+        all.push_back({fmt::format("{}, {}, {}", shape == MeanShape::mean_curve ? "mean" : "SVD",
+                                   curves == CurveWeighting::one_minus_f0 ? "1-F0" : "equal",
+                                   cosines == CosineWeighting::solid_angle ? "dω" : "μ dω"),
+                       {1000, shape, curves, cosines}});
+      }
+    }
+  }
+  return all;
+}
+
+// The IORs of a measured spectrum every 10 nm over 400-700 nm: how a measured metal joins a
+// training set.
+std::vector<ComplexIor> spectrum_samples(const matc::Spectrum& spectrum) {
+  std::vector<ComplexIor> iors;
+  for (int nm = 400; nm <= 700; nm += 10)
+    iors.push_back(spectrum.at(nm));
+  return iors;
+}
+
+Score merged(const std::vector<Score>& parts, const std::vector<std::size_t>& counts) {
+  Score result;
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    result.worst = std::max(result.worst, parts[i].worst);
+    result.mean += parts[i].mean * static_cast<double>(counts[i]);
+    total += counts[i];
+  }
+  result.mean /= static_cast<double>(total);
+  return result;
+}
+
+// Leave-one-out over the measured metals: each metal is scored on a basis fitted to the paper's
+// set plus the spectra of the 22 others, never its own.
+std::array<Score, 2> leave_one_out(const matc::BasisConstruction& construction) {
+  std::vector<const matc::MetalPreset*> metals;
+  for (const matc::MetalPreset& preset : matc::metal_presets())
+    if (preset.caveat.empty()) metals.push_back(&preset);
+  std::array<std::vector<Score>, 2> parts;
+  std::vector<std::size_t> counts;
+  for (const matc::MetalPreset* held_out : metals) {
+    std::vector<ComplexIor> training = matc::paper_training_iors();
+    for (const matc::MetalPreset* other : metals)
+      if (other != held_out)
+        training = joined(std::move(training), spectrum_samples(matc::preset_spectrum(*other)));
+    const FittedBasis basis = matc::fit_basis(training, construction);
+    TestSet one{std::string(held_out->symbol), {}};
+    one.add(one.name, std::make_unique<matc::SpectralCurve>(matc::preset_spectrum(*held_out)), 3);
+    parts[0].push_back(score(one, basis, Solve::probes));
+    parts[1].push_back(score(one, basis, Solve::minimax));
+    counts.push_back(3);
+  }
+  return {merged(parts[0], counts), merged(parts[1], counts)};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::string_view(argv[1]) == "--quick";
+  std::vector<TestSet> tests;
+  tests.push_back(measured_metals());
+  tests.push_back(alternative_metals(MATC_ALT_IOR_DIR));
+  tests.push_back(artistic(500, 0.8));
+  tests.push_back(artistic(500, 1.0));
+  tests.push_back(dielectrics());
+
+  fmt::print("| training set | construction | solve |");
+  for (const TestSet& set : tests)
+    fmt::print(" {} |", set.name);
+  fmt::print("\n|---|---|---|");
+  for (std::size_t i = 0; i < tests.size(); ++i)
+    fmt::print("---:|");
+  fmt::print("\n");
+
+  // Each candidate's rows are computed on their own thread and printed in a fixed order.
+  std::vector<std::future<std::string>> rows;
+  for (const TrainingSet& training : training_sets()) {
+    for (const Construction& construction : constructions()) {
+      if (quick && construction.name != "SVD, equal, dω") continue;
+      rows.push_back(std::async(std::launch::async, [&tests, training, construction] {
+        const FittedBasis basis = matc::fit_basis(training.iors, construction.options);
+        std::string out;
+        for (const Solve solve : {Solve::probes, Solve::minimax}) {
+          out += fmt::format("| {} | {} | {} |", training.name, construction.name,
+                             solve == Solve::probes ? "probes" : "minimax");
+          for (const TestSet& set : tests) {
+            const Score s = score(set, basis, solve);
+            out += fmt::format(" {:.4f} / {:.4f} |", s.worst, s.mean);
+          }
+          out += "\n";
+        }
+        return out;
+      }));
+    }
+  }
+  for (auto& row : rows)
+    fmt::print("{}", row.get());
+  if (quick) return 0;
+
+  const matc::BasisConstruction weighted{1000, matc::MeanShape::first_singular_vector,
+                                         matc::CurveWeighting::one_minus_f0,
+                                         matc::CosineWeighting::solid_angle};
+  const std::array<Score, 2> held_out = leave_one_out(weighted);
+  for (const Solve solve : {Solve::probes, Solve::minimax}) {
+    const Score s = held_out[solve == Solve::probes ? 0 : 1];
+    fmt::print(
+        "| paper + the other 22 metals' spectra (leave one out) | SVD, 1-F0, dω | {} | {:.4f} / "
+        "{:.4f} |",
+        solve == Solve::probes ? "probes" : "minimax", s.worst, s.mean);
+    for (std::size_t i = 1; i < tests.size(); ++i)
+      fmt::print(" |");
+    fmt::print("\n");
+  }
+  return 0;
+}
