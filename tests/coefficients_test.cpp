@@ -107,7 +107,7 @@ TEST(Accuracy, ReproducesThePublishedFiguresOnMeasuredMetals) {
 // Issue #8's targets for the default basis, which never saw a measured metal (its training set
 // is the authors'): worst-channel max <= 0.010, mean per-curve max <= 0.004.
 TEST(Accuracy, DefaultBasisMeetsTheTargetsOnMeasuredMetals) {
-  const Summary ours = summarise(&FitAccuracy::decomposition, runtime::BasisKind::weighted);
+  const Summary ours = summarise(&FitAccuracy::decomposition, runtime::BasisKind::extended);
   EXPECT_LE(ours.worst, 0.010);
   EXPECT_LE(ours.mean_of_max, 0.004);
 }
@@ -122,7 +122,7 @@ TEST(Accuracy, DefaultBasisIsNoWorseThanThePaperOnArtisticInputs) {
       const ComplexIor ior = gulbrandsen_to_ior({0.05 * i, 0.1 * j});
       const IorCurve curve({ior, ior, ior});
       std::size_t b = 0;
-      for (const auto kind : {runtime::BasisKind::weighted, runtime::BasisKind::paper}) {
+      for (const auto kind : {runtime::BasisKind::extended, runtime::BasisKind::paper}) {
         const double error =
             measure_accuracy(curve, solve_coefficients(curve, runtime::shipped_basis(kind)),
                              runtime::shipped_basis_polynomial(kind), 501)
@@ -137,8 +137,8 @@ TEST(Accuracy, DefaultBasisIsNoWorseThanThePaperOnArtisticInputs) {
 }
 
 TEST(Coefficients, MinimaxSolveKeepsBothEndsExact) {
-  const runtime::BasisView basis = runtime::shipped_basis(runtime::BasisKind::weighted);
-  const auto& polynomial = runtime::shipped_basis_polynomial(runtime::BasisKind::weighted);
+  const runtime::BasisView basis = runtime::shipped_basis(runtime::BasisKind::extended);
+  const auto& polynomial = runtime::shipped_basis_polynomial(runtime::BasisKind::extended);
   for (const MetalPreset& preset : metal_presets()) {
     const SpectralCurve curve(preset_spectrum(preset));
     const runtime::Coefficients c = solve_coefficients(curve, basis);
@@ -153,8 +153,8 @@ TEST(Coefficients, MinimaxSolveKeepsBothEndsExact) {
 }
 
 TEST(Coefficients, MinimaxSolveBeatsProbesOnTheSameBasis) {
-  const runtime::BasisView basis = runtime::shipped_basis(runtime::BasisKind::weighted);
-  const auto& polynomial = runtime::shipped_basis_polynomial(runtime::BasisKind::weighted);
+  const runtime::BasisView basis = runtime::shipped_basis(runtime::BasisKind::extended);
+  const auto& polynomial = runtime::shipped_basis_polynomial(runtime::BasisKind::extended);
   const SpectralCurve curve(preset_spectrum(*find_metal_preset("Hg")));
   const double minimax =
       measure_accuracy(curve, solve_coefficients_minimax(curve, polynomial), polynomial)

@@ -21,8 +21,8 @@ int run_basis(const BasisOptions& options) {
     fmt::print("basis: {} ({}), b_0 = 1 and b_1..b_3 tabulated\n", runtime::basis_name(kind),
                kind == runtime::BasisKind::paper
                    ? "Belcour, Bati, Barla 2020; coefficients matched at the probes"
-                   : "the authors' training set with curves weighted by 1 - F0; near-minimax "
-                     "coefficients");
+                   : "the authors' dielectrics extended with conductors, curves weighted by "
+                     "1 - F0; near-minimax coefficients");
     fmt::print("samples: {} cosines mu_j = j / {}\n", basis.samples(), basis.samples() - 1);
     fmt::print("probes: mu_1 = {:.4f} (theta {:.3f} rad), mu_2 = {:.4f} (theta {:.3f} rad)\n",
                basis.probe_mu(0), std::acos(basis.probe_mu(0)), basis.probe_mu(1),

@@ -7,11 +7,12 @@ namespace matc::cli {
 
 void add_basis_option(CLI::App& app, std::string& basis) {
   app.add_option("--basis", basis,
-                 "Fresnel basis: weighted (default; fitted with curves weighted by 1 - F0, "
-                 "near-minimax coefficients) or paper (the authors' construction, coefficients "
+                 "Fresnel basis: extended (default; the authors' dielectrics extended with "
+                 "conductors, curves weighted by 1 - F0, near-minimax coefficients) or paper (the "
+                 "authors' construction, coefficients "
                  "matched at two angles); docs/accuracy.md compares them")
       ->capture_default_str()
-      ->check(CLI::IsMember({std::string(runtime::basis_name(runtime::BasisKind::weighted)),
+      ->check(CLI::IsMember({std::string(runtime::basis_name(runtime::BasisKind::extended)),
                              std::string(runtime::basis_name(runtime::BasisKind::paper))}));
 }
 

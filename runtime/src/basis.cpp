@@ -6,17 +6,17 @@
 namespace matc::runtime {
 
 std::string_view basis_name(BasisKind kind) {
-  return kind == BasisKind::paper ? "paper" : "weighted";
+  return kind == BasisKind::paper ? "paper" : "extended";
 }
 
 std::optional<BasisKind> basis_from_name(std::string_view name) {
-  for (const BasisKind kind : {BasisKind::weighted, BasisKind::paper})
+  for (const BasisKind kind : {BasisKind::extended, BasisKind::paper})
     if (basis_name(kind) == name) return kind;
   return std::nullopt;
 }
 
 BasisView shipped_basis(BasisKind kind) {
-  return kind == BasisKind::paper ? paper_basis() : weighted_basis();
+  return kind == BasisKind::paper ? paper_basis() : extended_basis();
 }
 
 std::array<double, kBasisSize> BasisView::at_index(std::size_t index) const {

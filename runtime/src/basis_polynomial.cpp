@@ -27,7 +27,7 @@ std::array<double, kBasisSize> evaluate_basis_polynomial(const BasisPolynomial& 
 }
 
 const BasisPolynomial& shipped_basis_polynomial(BasisKind kind) {
-  return kind == BasisKind::paper ? paper_basis_polynomial() : weighted_basis_polynomial();
+  return kind == BasisKind::paper ? paper_basis_polynomial() : extended_basis_polynomial();
 }
 
 }  // namespace matc::runtime

@@ -37,8 +37,7 @@ std::unique_ptr<ReflectanceCurve> make_reflectance_curve(const Material& materia
 CompiledMaterial compile_material(const Material& material, const runtime::BasisView& basis);
 
 // Above this max |F - exact| (2.5x the worst of the 23 measured metals with the paper basis,
-// 8x with the default; docs/accuracy.md) a fit
-// is called poor.
+// 8x with the default; docs/accuracy.md) a fit is called poor.
 inline constexpr double kPoorFitMaxError = 0.05;
 
 // A warning, at the material's name, when the decomposition misses the exact curve by more than

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "matc/basis/training_set.h"
 #include "matc/optics/fresnel.h"
 
 #include "matc/runtime/basis.h"
@@ -71,12 +72,17 @@ FittedBasis fit_basis(std::span<const ComplexIor> training, const BasisConstruct
 std::vector<ComplexIor> paper_training_iors(const PaperBasisOptions& options = {});
 FittedBasis fit_paper_basis(const PaperBasisOptions& options = {});
 
-// The default basis: the authors' training set, each curve weighted by 1 - F0, uniform in mu.
-// bench/accuracy/basis_study.cpp compares it with the other candidates.
-inline constexpr BasisConstruction kWeightedConstruction = {1000, MeanShape::first_singular_vector,
+// The default basis' training set: the authors' 990 dielectrics, extended with conductors that
+// cover real metals (the (n, k) grid kExtendedTrainingGrid) and kExtendedTrainingEdgeTintCurves
+// Gulbrandsen conductors with g = 1 (the most strongly tinted edges); each curve weighted by
+// 1 - F0, uniform in mu. bench/accuracy/basis_study.cpp compares it with the other candidates.
+inline constexpr ComplexIorGrid kExtendedTrainingGrid = {40, 40, 0.05, 4.0, 1.0, 8.0};
+inline constexpr std::size_t kExtendedTrainingEdgeTintCurves = 100;
+inline constexpr BasisConstruction kExtendedConstruction = {1000, MeanShape::first_singular_vector,
                                                             CurveWeighting::one_minus_f0,
                                                             CosineWeighting::solid_angle};
-FittedBasis fit_weighted_basis();
+std::vector<ComplexIor> extended_training_iors();
+FittedBasis fit_extended_basis();
 
 // Refits a shipped basis from scratch (what `matc basis fit --basis NAME` does).
 FittedBasis fit_shipped_basis(runtime::BasisKind kind);
