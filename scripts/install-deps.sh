@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs every Debian 12 package matc needs to build, test and benchmark, and the npm
-# validators the tests use (tests/js, pinned by its package-lock.json).
+# Installs every Debian 12 package matc needs to build, test and benchmark (chromium: the report
+# test opens `matc report` in it, headless), and the npm validators the tests use (tests/js,
+# pinned by its package-lock.json).
 # Idempotent; safe to run as root on a fresh machine. Waits for the dpkg lock
 # instead of failing when another apt process is running.
 set -euo pipefail
@@ -11,6 +12,7 @@ packages=(
   nlohmann-json3-dev libeigen3-dev libcli11-dev libfmt-dev libxxhash-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers libstb-dev
   clang libclang-rt-14-dev
+  chromium fonts-dejavu-core
   googletest libgtest-dev libgmock-dev libbenchmark-dev
 )
 

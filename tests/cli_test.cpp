@@ -404,9 +404,9 @@ TEST_F(MatcCli, BasisJsonHasTheDocumentedShape) {
     EXPECT_EQ(b.size(), 1000u);
   EXPECT_EQ(json["b"][0][500], 1.0);
   ASSERT_EQ(json["probes"].size(), 2u);
-  // The default (weighted) basis' probes; its coefficients do not use them.
-  EXPECT_NEAR(json["probes"][0].get<double>(), 0.111, 0.005);
-  EXPECT_NEAR(json["probes"][1].get<double>(), 0.375, 0.01);
+  // The default (extended) basis' probes; its coefficients do not use them.
+  EXPECT_NEAR(json["probes"][0].get<double>(), 0.132, 0.005);
+  EXPECT_NEAR(json["probes"][1].get<double>(), 0.422, 0.01);
 }
 
 TEST_F(MatcCli, PaperBasisKeepsTheAuthorsProbes) {
@@ -489,9 +489,9 @@ TEST_F(MatcCli, BasisOptionSelectsTheBasisEverywhereItIsRecorded) {
   const auto lut = [&](const std::string& out) {
     return nlohmann::json::parse(read_file(dir_ / out / "matc_lut.ktx2.json"));
   };
-  EXPECT_EQ(material("default")["basis"]["name"], "weighted");
+  EXPECT_EQ(material("default")["basis"]["name"], "extended");
   EXPECT_EQ(material("default")["basis"]["solve"], "minimax");
-  EXPECT_EQ(lut("default")["basis"], "weighted");
+  EXPECT_EQ(lut("default")["basis"], "extended");
   EXPECT_EQ(material("paper")["basis"]["name"], "paper");
   EXPECT_EQ(material("paper")["basis"]["solve"], "probes");
   EXPECT_EQ(lut("paper")["basis"], "paper");
@@ -503,6 +503,38 @@ TEST_F(MatcCli, BasisOptionSelectsTheBasisEverywhereItIsRecorded) {
   EXPECT_NE(read_file(dir_ / "default" / "matc_fresnel.glsl"),
             read_file(dir_ / "paper" / "matc_fresnel.glsl"));
   EXPECT_EQ(run({"--basis", "schlick", "good.json"}).exit_code, 2);
+}
+
+TEST_F(MatcCli, ReportWritesAPlotAndSamplesPerMaterialAndAnIndex) {
+  write_file(dir_ / "good.json", kGood);
+  write_file(dir_ / "gold.json", R"({"name": "Gold", "spectral": {"preset": "Au"}})");
+  const CommandResult result = run({"report", "-o", "rep", "good.json", "gold.json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  for (const char* name : {"good.svg", "good.csv", "Gold.svg", "Gold.csv", "index.html"})
+    EXPECT_TRUE(fs::exists(dir_ / "rep" / name)) << name;
+  const std::string index = read_file(dir_ / "rep" / "index.html");
+  EXPECT_NE(index.find("src=\"Gold.svg\""), std::string::npos);
+  EXPECT_NE(index.find("basis <code>extended</code>"), std::string::npos);
+  const std::string first = read_file(dir_ / "rep" / "Gold.svg");
+  ASSERT_EQ(run({"report", "-o", "rep", "good.json", "gold.json"}).exit_code, 0);
+  EXPECT_EQ(read_file(dir_ / "rep" / "Gold.svg"), first) << "same inputs, same bytes";
+  ASSERT_EQ(run({"report", "-o", "paper", "--basis", "paper", "gold.json"}).exit_code, 0);
+  EXPECT_NE(read_file(dir_ / "paper" / "index.html").find("basis <code>paper</code>"),
+            std::string::npos);
+}
+
+TEST_F(MatcCli, ReportWritesNothingWhenAnyInputIsInvalid) {
+  write_file(dir_ / "good.json", kGood);
+  write_file(dir_ / "bad.json", kBad);
+  const CommandResult bad = run({"report", "-o", "rep", "good.json", "bad.json"});
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("bad.json:3:"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir_ / "rep"));
+  write_file(dir_ / "again.json", R"({"name": "GOOD", "ior": {"n": 2, "k": 0}})");
+  const CommandResult clash = run({"report", "-o", "rep", "good.json", "again.json"});
+  EXPECT_EQ(clash.exit_code, 1);
+  EXPECT_NE(clash.err.find("is already used by"), std::string::npos) << clash.err;
+  EXPECT_FALSE(fs::exists(dir_ / "rep"));
 }
 
 TEST_F(MatcCli, EvalPrintsFbarFromTheTableBesideTheReference) {

@@ -74,6 +74,13 @@ struct BasisFitOptions {
 };
 int run_basis_fit(const BasisFitOptions& options);
 
+struct ReportOptions {
+  std::vector<std::string> files;
+  std::string output_directory = "matc-report";
+  std::string basis{runtime::basis_name(runtime::kDefaultBasis)};
+};
+int run_report(const ReportOptions& options);
+
 struct LutCommandOptions {
   std::string output;
   std::string format;  // empty: from the output's extension

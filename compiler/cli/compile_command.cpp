@@ -23,17 +23,12 @@
 #include "matc/json_format.h"
 #include "matc/material/parse.h"
 #include "print_diagnostics.h"
+#include "unique_names.h"
 
 namespace matc::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string lowercase(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
 
 // Canonical form of an existing path, for "would this output overwrite an input?" checks.
 std::string identity(const fs::path& path) {
@@ -98,8 +93,7 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
   std::map<std::string, std::string> inputs_by_identity;
   for (const std::string& file : options.files)
     inputs_by_identity[identity(file)] = file;
-  // Output names must be unique even on case-insensitive file systems.
-  std::map<std::string, std::size_t> names_in_use;  // lowercase name -> job
+  UniqueNames names;
   std::vector<Job> jobs(options.files.size());
   for (std::size_t index = 0; index < jobs.size(); ++index) {
     Job& job = jobs[index];
@@ -117,22 +111,14 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
                             fmt::format("'{}' names a file every build writes", material.name),
                             "a name other than matc_fresnel, matc_lut and matc_manifest "
                             "(ignoring case)");
-    } else if (const auto clash = names_in_use.find(lowercase(material.name));
-               clash != names_in_use.end()) {
-      const Material& first = *jobs[clash->second].material;
-      job.diagnostics.error(
-          material.name_location, "name",
-          fmt::format("'{}' is already used by {} ({}:{})", material.name, first.source_path,
-                      first.name_location.line, first.name_location.column),
-          "names unique within a build, ignoring case (they name output files)");
+    } else if (!names.claim(material, "a build", job.diagnostics)) {
+      // claim() reported the clash.
     } else if (overwritten != outputs.end()) {
       job.diagnostics.error(
           material.name_location, "name",
           fmt::format("output '{}' would overwrite the input {}", overwritten->string(),
                       inputs_by_identity.at(identity(*overwritten))),
           "an output directory (-o) that holds no input file");
-    } else {
-      names_in_use.emplace(lowercase(material.name), index);
     }
     if (!job.diagnostics.has_errors()) job.material = std::move(parsed.material);
   }

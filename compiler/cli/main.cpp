@@ -128,12 +128,22 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember(matc::lut_format_names()));
   add_lut_options(*lut_command, lut.lut, "");
 
+  ReportOptions report;
+  CLI::App* report_command = app.add_subcommand(
+      "report",
+      "Plot each material's Fresnel curves (exact, ours, Schlick, F82-tint) as SVG, with CSV "
+      "samples and an HTML index of the errors");
+  report_command->add_option("files", report.files, "Material files (.json)")->required();
+  report_command->add_option("-o,--output", report.output_directory, "Output directory")
+      ->capture_default_str();
+  add_basis_option(*report_command, report.basis);
+
   // -MD, as compilers spell it: CLI11 only takes one-letter names after a single dash.
   std::vector<std::string> arguments(argv + 1, argv + argc);
   std::replace(arguments.begin(), arguments.end(), std::string("-MD"), std::string("--MD"));
   std::reverse(arguments.begin(), arguments.end());  // CLI11's order for a vector
   std::string diagnostics_format = "text";
-  for (CLI::App* command : {&app, eval_command, validate_command}) {
+  for (CLI::App* command : {&app, eval_command, validate_command, report_command}) {
     command
         ->add_option("--diagnostics-format", diagnostics_format,
                      "How problems in inputs are reported on standard error: text "
@@ -160,6 +170,7 @@ int main(int argc, char** argv) {
     if (*eval_command) return run_eval(eval);
     if (*lut_command) return run_lut(lut);
     if (*validate_command) return run_validate(validate);
+    if (*report_command) return run_report(report);
     if (*fit_command) return run_basis_fit(basis_fit);
     if (*basis_command) return run_basis(basis);
     if (compile.files.empty()) {

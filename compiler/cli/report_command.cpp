@@ -1,0 +1,101 @@
+// `matc report FILES... -o DIR`: per material an SVG plot and a CSV of its curves, and an HTML
+// index with the error tables. All inputs are checked first; with any invalid, nothing is written.
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "atomic_file.h"
+#include "commands.h"
+#include "matc/compile.h"
+#include "matc/material/parse.h"
+#include "matc/report/fresnel_plot.h"
+#include "matc/report/material_curves.h"
+#include "matc/report/report_page.h"
+#include "print_diagnostics.h"
+#include "unique_names.h"
+
+namespace matc::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every material, or none when any file is invalid or two names would share an output file.
+std::optional<std::vector<Material>> read_all(const std::vector<std::string>& files) {
+  std::vector<Material> materials;
+  UniqueNames names;
+  bool ok = true;
+  for (const std::string& file : files) {
+    ParseResult parsed = read_material_file(file);
+    if (parsed.material) names.claim(*parsed.material, "a report", parsed.diagnostics);
+    print_diagnostics(parsed.diagnostics);
+    if (parsed.diagnostics.has_errors() || !parsed.material) {
+      ok = false;
+      continue;
+    }
+    materials.push_back(std::move(*parsed.material));
+  }
+  if (!ok) return std::nullopt;
+  return materials;
+}
+
+}  // namespace
+
+int run_report(const ReportOptions& options) {
+  const std::optional<std::vector<Material>> materials = read_all(options.files);
+  if (!materials) {
+    fmt::print(stderr, "matc report: nothing written: fix the inputs above\n");
+    return kExitInputError;
+  }
+  const runtime::BasisKind kind = basis_of(options.basis);
+  const runtime::BasisView basis = runtime::shipped_basis(kind);
+  const runtime::BasisPolynomial& polynomial = runtime::shipped_basis_polynomial(kind);
+
+  struct Output {
+    std::string name;
+    std::string bytes;
+  };
+  std::vector<Output> outputs;
+  std::vector<ReportEntry> entries;
+  for (const Material& material : *materials) {
+    const CompiledMaterial compiled = compile_material(material, basis);
+    Diagnostics fit;
+    warn_if_poor_fit(compiled, fit);
+    print_diagnostics(fit);
+    const MaterialCurves curves = sample_material_curves(compiled, polynomial);
+    const std::string source = fs::path(material.source_path).filename().string();
+    const std::string subtitle = fmt::format(
+        "{}, basis {}: worst-channel max error ours {:.4f}, Schlick {:.4f}, F82-tint {:.4f}",
+        source, runtime::basis_name(kind),
+        std::max({compiled.accuracy.decomposition.max_abs[0],
+                  compiled.accuracy.decomposition.max_abs[1],
+                  compiled.accuracy.decomposition.max_abs[2]}),
+        std::max({compiled.accuracy.schlick.max_abs[0], compiled.accuracy.schlick.max_abs[1],
+                  compiled.accuracy.schlick.max_abs[2]}),
+        std::max({compiled.accuracy.f82_tint.max_abs[0], compiled.accuracy.f82_tint.max_abs[1],
+                  compiled.accuracy.f82_tint.max_abs[2]}));
+    outputs.push_back({material.name + ".svg", fresnel_plot_svg(curves, material.name, subtitle)});
+    outputs.push_back({material.name + ".csv", material_curves_csv(curves)});
+    entries.push_back({material.name, source, compiled.f0, compiled.accuracy});
+  }
+  outputs.push_back({"index.html", report_index_html(entries, runtime::basis_name(kind))});
+
+  const fs::path directory(options.output_directory);
+  fs::create_directories(directory);
+  std::size_t written = 0;
+  for (const Output& output : outputs) {
+    if (write_file_atomically(directory / output.name, output.bytes) == WriteOutcome::written)
+      ++written;
+  }
+  fmt::print(stderr, "matc report: {} materials, {} files written, {} unchanged: {}\n",
+             materials->size(), written, outputs.size() - written,
+             (directory / "index.html").string());
+  return kExitSuccess;
+}
+
+}  // namespace matc::cli

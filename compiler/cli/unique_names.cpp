@@ -1,0 +1,29 @@
+#include "unique_names.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include <fmt/core.h>
+
+namespace matc::cli {
+
+std::string lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+bool UniqueNames::claim(const Material& material, std::string_view scope,
+                        Diagnostics& diagnostics) {
+  const auto [first, inserted] = first_use_.try_emplace(
+      lowercase(material.name), FirstUse{material.source_path, material.name_location});
+  if (inserted) return true;
+  diagnostics.error(
+      material.name_location, "name",
+      fmt::format("'{}' is already used by {} ({}:{})", material.name, first->second.path,
+                  first->second.location.line, first->second.location.column),
+      fmt::format("names unique within {}, ignoring case (they name output files)", scope));
+  return false;
+}
+
+}  // namespace matc::cli

@@ -1,0 +1,31 @@
+// Material names name output files, and file systems may ignore case: within one run, names must
+// differ by more than case. Shared by the batch compile and `matc report`.
+#pragma once
+
+#include <map>
+#include <string>
+#include <string_view>
+
+#include "matc/diagnostics.h"
+#include "matc/material/material.h"
+
+namespace matc::cli {
+
+std::string lowercase(std::string text);
+
+class UniqueNames {
+ public:
+  // Records `material`'s name, or, when an earlier material has it (ignoring case), adds an error
+  // at the name pointing to the first one and returns false. `scope` says what the names must be
+  // unique within ("a build", "a report").
+  bool claim(const Material& material, std::string_view scope, Diagnostics& diagnostics);
+
+ private:
+  struct FirstUse {
+    std::string path;
+    SourceLocation location;
+  };
+  std::map<std::string, FirstUse> first_use_;  // lowercase name -> where it was first used
+};
+
+}  // namespace matc::cli

@@ -1,0 +1,51 @@
+#include "matc/report/material_curves.h"
+
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "matc/optics/fresnel.h"
+
+namespace matc {
+
+MaterialCurves sample_material_curves(const CompiledMaterial& compiled,
+                                      const runtime::BasisPolynomial& shader_basis) {
+  const auto exact = make_reflectance_curve(compiled.material);
+  MaterialCurves curves;
+  for (std::size_t i = 0; i < kReportAngles; ++i) {
+    const double theta = 90.0 * static_cast<double>(i) / static_cast<double>(kReportAngles - 1);
+    // cos(90 deg) in floating point is 6e-17, not 0: pin the end so grazing is exactly mu = 0.
+    const double mu = i + 1 == kReportAngles ? 0.0 : std::cos(theta * std::numbers::pi / 180.0);
+    Rgb schlick{};
+    Rgb f82{};
+    for (std::size_t c = 0; c < 3; ++c) {
+      schlick[c] = fresnel_schlick(mu, compiled.f0[c]);
+      f82[c] = fresnel_f82_tint(mu, compiled.f0[c], compiled.f82[c]);
+    }
+    curves.theta_degrees.push_back(theta);
+    curves.exact.push_back(exact->at(mu));
+    curves.ours.push_back(runtime::evaluate_fresnel(compiled.coefficients, shader_basis, mu));
+    curves.schlick.push_back(schlick);
+    curves.f82_tint.push_back(f82);
+  }
+  return curves;
+}
+
+std::string material_curves_csv(const MaterialCurves& curves) {
+  std::string out = "theta_deg";
+  for (const char* model : {"exact", "ours", "schlick", "f82_tint"})
+    for (const char* channel : {"r", "g", "b"})
+      out.append(fmt::format(",{}_{}", model, channel));
+  out += '\n';
+  for (std::size_t i = 0; i < curves.theta_degrees.size(); ++i) {
+    out.append(fmt::format("{:.1f}", curves.theta_degrees[i]));
+    for (const auto* model : {&curves.exact, &curves.ours, &curves.schlick, &curves.f82_tint})
+      for (const double value : (*model)[i])
+        out.append(fmt::format(",{:.6f}", value));
+    out += '\n';
+  }
+  return out;
+}
+
+}  // namespace matc
