@@ -169,12 +169,20 @@ struct RenderSettings {
   bool check = false;
   bool validation = false;
   std::string device;
+  std::string basis{matc::runtime::basis_name(matc::runtime::kDefaultBasis)};
 };
+
+matc::BuildOptions build_options(const RenderSettings& settings) {
+  matc::BuildOptions options;
+  options.basis = *matc::runtime::basis_from_name(settings.basis);
+  return options;
+}
 
 class Renderer {
  public:
   explicit Renderer(const RenderSettings& settings)
       : settings_(settings),
+        build_(build_options(settings)),
         context_(matc::vulkan::ContextOptions{settings.validation, settings.device}),
         lobes_(matc::runtime::shipped_basis().samples()),
         lobe_lut_(matc::preintegrate_lut(lobes_.view(), {})),
@@ -187,6 +195,7 @@ class Renderer {
                                                matc::ShaderStage::vertex, "fullscreen.vert")) {}
 
   const matc::vulkan::Context& context() const { return context_; }
+  matc::runtime::BasisView basis() const { return build_.basis(); }
 
   // Every estimate of one material, linear RGB, indexed by Estimate.
   std::array<Panel, kEstimateCount> render(const matc::CompiledMaterial& compiled) {
@@ -240,7 +249,7 @@ class Renderer {
 
  private:
   RenderSettings settings_;
-  matc::Build build_{matc::BuildOptions{}};
+  matc::Build build_;
   matc::vulkan::Context context_;
   matc::ComparisonLobes lobes_;
   matc::Lut lobe_lut_;
@@ -270,6 +279,9 @@ int main(int argc, char** argv) {
                "Exit 1 unless ours is closer to the reference than Schlick's for every material");
   app.add_flag("--vk-validation", settings.validation, "Enable the Khronos validation layer");
   app.add_option("--device", settings.device, "A substring of the Vulkan device's name");
+  app.add_option("--basis", settings.basis, "The Fresnel basis of ours (see matc --help)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"extended", "paper"}));
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -290,7 +302,7 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "{}\n", matc::format_diagnostic(diagnostic));
       if (!parsed.material) return 1;
       const matc::CompiledMaterial compiled =
-          matc::compile_material(*parsed.material, matc::runtime::shipped_basis());
+          matc::compile_material(*parsed.material, renderer.basis());
       const std::array<Panel, kEstimateCount> estimates = renderer.render(compiled);
       const Panel& reference = estimates[kReference];
       const Panel& radiance = estimates[kPrefilteredRadiance];

@@ -12,3 +12,11 @@ trap 'rm -f "$table"' EXIT
   "$root/examples/materials/figure2_edge_tint.json" "$root/examples/materials/beryllium.json" \
   >"$table"
 "$root/tests/check_docs_block.sh" --update "$root/docs/rendering.md" comparison-renders cat "$table"
+# The same renders with the authors' basis (tables only; the images stay the default basis').
+paper=$(mktemp -d)
+trap 'rm -f "$table"; rm -rf "$paper"' EXIT
+"$build/examples/render/matc_render" --size 256 --samples 4096 --basis paper -o "$paper" \
+  "$root/examples/materials/figure2_edge_tint.json" "$root/examples/materials/beryllium.json" \
+  >"$table"
+"$root/tests/check_docs_block.sh" --update "$root/docs/rendering.md" comparison-renders-paper \
+  cat "$table"
