@@ -474,7 +474,7 @@ TEST_F(MatcCli, BatchBuildCanEmitTheLut) {
 TEST_F(MatcCli, BasisOptionSelectsTheBasisEverywhereItIsRecorded) {
   write_file(dir_ / "good.json", kGood);
   const auto build = [&](const std::string& out, std::vector<std::string> extra) {
-    std::vector<std::string> args = {"-o",         out, "--emit",        "json,lut,glsl",
+    std::vector<std::string> args = {"-o",         out, "--emit",        "json,lut,glsl,header",
                                      "--lut-size", "8", "--lut-samples", "32"};
     args.insert(args.end(), extra.begin(), extra.end());
     args.push_back("good.json");
@@ -495,6 +495,13 @@ TEST_F(MatcCli, BasisOptionSelectsTheBasisEverywhereItIsRecorded) {
   EXPECT_EQ(material("paper")["basis"]["name"], "paper");
   EXPECT_EQ(material("paper")["basis"]["solve"], "probes");
   EXPECT_EQ(lut("paper")["basis"], "paper");
+  for (const std::string out : {"default", "paper"}) {
+    const std::string name = out == "default" ? "extended" : "paper";
+    const auto manifest = nlohmann::json::parse(read_file(dir_ / out / "matc_manifest.json"));
+    EXPECT_EQ(manifest["basis"], name);
+    EXPECT_NE(read_file(dir_ / out / "good.h").find("#define MATC_good_BASIS \"" + name + "\""),
+              std::string::npos);
+  }
   // Same F0 (c_0), different shape coefficients, different tables and shader polynomials.
   EXPECT_EQ(material("default")["coefficients"][0][0], material("paper")["coefficients"][0][0]);
   EXPECT_NE(material("default")["coefficients"][0][2], material("paper")["coefficients"][0][2]);

@@ -93,7 +93,8 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
   lut_file_bytes_ = encode_lut(lut_, options_.lut_format, options_.lut_precision);
   // Hashed once here: every material header and the manifest name the same table.
   lut_reference_ = {fmt::format("{}{}", kLutStem, lut_file_extension(options_.lut_format)),
-                    options_.lut.size, hash_of_bytes(lut_file_bytes_)};
+                    options_.lut.size, hash_of_bytes(lut_file_bytes_),
+                    std::string(runtime::basis_name(options_.basis))};
   if (options_.embedded_lut_size != 0) {
     embedded_lut_ = preintegrate_lut(basis, {options_.embedded_lut_size, options_.lut.samples});
   }
@@ -246,6 +247,7 @@ nlohmann::ordered_json Build::manifest(const std::vector<OutputFile>& shared,
   for (const OutputKind kind : options_.emit)
     emitted.emplace_back(kOutputKinds[static_cast<std::size_t>(kind)].second);
   manifest["emit"] = emitted;
+  manifest["basis"] = lut_reference_.basis;
   manifest["lut"] = {{"file", lut_reference_.file},
                      {"size", options_.lut.size},
                      {"samples_per_texel", options_.lut.samples},

@@ -22,6 +22,7 @@ std::string material_c_header(const CompiledMaterial& compiled, std::string_view
   values.insert({{"lut_file", lut.file},
                  {"lut_size", std::to_string(lut.size)},
                  {"lut_hash", lut.hash},
+                 {"basis", lut.basis},
                  {"spirv_word_count", std::to_string(library_module.size())},
                  {"spirv_words", words}});
   return fill_template("c/material.h", values);

@@ -31,8 +31,11 @@ runtime::Coefficients solve_coefficients_at_probes(const ReflectanceCurve& curve
   return coefficients;
 }
 
-runtime::Coefficients solve_coefficients_minimax(const ReflectanceCurve& curve,
-                                                 const runtime::BasisPolynomial& shader_basis) {
+namespace {
+
+// (c_2, c_3) fitted to the residual after c_0 + c_1 b_1, by Lawson's iterations (0: least squares).
+runtime::Coefficients solve_by_fit(const ReflectanceCurve& curve,
+                                   const runtime::BasisPolynomial& shader_basis, int iterations) {
   constexpr auto kRows = static_cast<Eigen::Index>(kMinimaxCosines);
   const Rgb f0 = curve.at(1.0);
   Eigen::MatrixXd design(kRows, 2);
@@ -51,10 +54,22 @@ runtime::Coefficients solve_coefficients_minimax(const ReflectanceCurve& curve,
   runtime::Coefficients coefficients{};
   for (std::size_t c = 0; c < 3; ++c) {
     const Eigen::VectorXd fit =
-        near_minimax_fit(design, residual.col(static_cast<Eigen::Index>(c)));
+        near_minimax_fit(design, residual.col(static_cast<Eigen::Index>(c)), iterations);
     coefficients[c] = {f0[c], 1.0 - f0[c], fit(0), fit(1)};
   }
   return coefficients;
+}
+
+}  // namespace
+
+runtime::Coefficients solve_coefficients_minimax(const ReflectanceCurve& curve,
+                                                 const runtime::BasisPolynomial& shader_basis) {
+  return solve_by_fit(curve, shader_basis, 40);
+}
+
+runtime::Coefficients solve_coefficients_least_squares(
+    const ReflectanceCurve& curve, const runtime::BasisPolynomial& shader_basis) {
+  return solve_by_fit(curve, shader_basis, 0);
 }
 
 runtime::Coefficients solve_coefficients(const ReflectanceCurve& curve,

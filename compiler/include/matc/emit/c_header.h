@@ -13,7 +13,8 @@ namespace matc {
 struct LutReference {
   std::string file;  // as written beside the header, e.g. "matc_lut.ktx2"
   std::size_t size = 0;
-  std::string hash;  // hash_of_bytes of that file
+  std::string hash;   // hash_of_bytes of that file
+  std::string basis;  // the basis it integrates (and the coefficients were solved for)
 };
 
 std::string material_c_header(const CompiledMaterial& compiled, std::string_view inputs_hash,

@@ -21,6 +21,10 @@ inline constexpr std::size_t kMinimaxCosines = 401;
 runtime::Coefficients solve_coefficients_minimax(const ReflectanceCurve& curve,
                                                  const runtime::BasisPolynomial& shader_basis);
 
+// Least squares over the same cosines (uniform weights): the solve minimax starts from.
+runtime::Coefficients solve_coefficients_least_squares(
+    const ReflectanceCurve& curve, const runtime::BasisPolynomial& shader_basis);
+
 // The basis' own solve: at its probes for the paper basis, near-minimax for the conductor basis.
 runtime::Coefficients solve_coefficients(const ReflectanceCurve& curve,
                                          const runtime::BasisView& basis);
