@@ -121,22 +121,13 @@ TestSet artistic(std::size_t count, double r_max) {
   return set;
 }
 
-TestSet full_edge_tint() {
-  TestSet set{"artistic, g = 1, r 0.05-0.95 (19)", {}};
-  for (int i = 1; i <= 19; ++i) {
-    const double r = 0.05 * i;
-    set.add(fmt::format("r={:.2f} g=1", r), grey(matc::gulbrandsen_to_ior({r, 1.0})), 1);
-  }
-  return set;
-}
-
-// Gulbrandsen's g = 0 is a dielectric whose index grows with r (4.4 at r = 0.4): the red and
-// blue channels of the talk's Figure 2 material.
-TestSet no_edge_tint() {
-  TestSet set{"artistic, g = 0, r 0.2-0.6 (5)", {}};
-  for (int i = 2; i <= 6; ++i) {
-    const double r = 0.1 * i;
-    set.add(fmt::format("r={:.1f} g=0", r), grey(matc::gulbrandsen_to_ior({r, 0.0})), 1);
+// Grey artistic inputs at one edge tint, r = first, first + step, ... up to last.
+TestSet edge_tint_line(double g, double first, double last, double step) {
+  const auto count = static_cast<int>(std::lround((last - first) / step)) + 1;
+  TestSet set{fmt::format("artistic, g = {:g}, r {:g}-{:g} ({})", g, first, last, count), {}};
+  for (int i = 0; i < count; ++i) {
+    const double r = first + step * i;
+    set.add(fmt::format("r={:.2f} g={:g}", r, g), grey(matc::gulbrandsen_to_ior({r, g})), 1);
   }
   return set;
 }
@@ -335,8 +326,10 @@ int main(int argc, char** argv) {
   tests.push_back(alternative_metals(MATC_ALT_IOR_DIR));
   tests.push_back(artistic(500, 0.8));
   tests.push_back(artistic(500, 1.0));
-  tests.push_back(full_edge_tint());
-  tests.push_back(no_edge_tint());
+  tests.push_back(edge_tint_line(1.0, 0.05, 0.95, 0.05));
+  // Gulbrandsen's g = 0 is a dielectric whose index grows with r (4.4 at r = 0.4): the red and
+  // blue channels of the talk's Figure 2 material.
+  tests.push_back(edge_tint_line(0.0, 0.2, 0.6, 0.1));
   tests.push_back(dielectrics());
 
   fmt::print("| training set | construction | solve |");
