@@ -26,10 +26,6 @@ namespace {
 using matc::ErrorStats;
 using matc::FitAccuracy;
 
-double worst(const matc::Rgb& values) {
-  return *std::max_element(values.begin(), values.end());
-}
-
 struct Totals {
   double worst = 0.0;
   double sum_of_max = 0.0;
@@ -76,9 +72,11 @@ void print_metals(bool summary_only) {
       fmt::print(
           "| {} {}{} | {:.3f}, {:.3f}, {:.3f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} |\n",
           preset.symbol, preset.name, counted ? "" : " (unreliable, not counted)", f0[0], f0[1],
-          f0[2], worst(accuracy.decomposition.max_abs), worst(accuracy.decomposition.rms),
-          worst(paper_accuracy.decomposition.max_abs), worst(accuracy.schlick.max_abs),
-          worst(accuracy.f82_tint.max_abs));
+          f0[2], matc::worst_channel(accuracy.decomposition.max_abs),
+          matc::worst_channel(accuracy.decomposition.rms),
+          matc::worst_channel(paper_accuracy.decomposition.max_abs),
+          matc::worst_channel(accuracy.schlick.max_abs),
+          matc::worst_channel(accuracy.f82_tint.max_abs));
     }
     if (counted) {
       ours.add(accuracy.decomposition);
@@ -273,8 +271,8 @@ void print_preintegrated(bool summary_only) {
     }
     if (!summary_only) {
       fmt::print("| {} {} | {:.4f} | {:.4f} | {:.4f} | {:.4f} |\n", preset.symbol, preset.name,
-                 worst(errors[0].max_abs), worst(errors[1].max_abs), worst(errors[2].max_abs),
-                 worst(errors[3].max_abs));
+                 matc::worst_channel(errors[0].max_abs), matc::worst_channel(errors[1].max_abs),
+                 matc::worst_channel(errors[2].max_abs), matc::worst_channel(errors[3].max_abs));
     }
     for (std::size_t m = 0; m < 4; ++m)
       totals[m].add(errors[m]);

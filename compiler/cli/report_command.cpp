@@ -1,9 +1,6 @@
 // `matc report FILES... -o DIR`: per material an SVG plot and a CSV of its curves, and an HTML
 // index with the error tables. All inputs are checked first; with any invalid, nothing is written.
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -71,14 +68,9 @@ int run_report(const ReportOptions& options) {
     const std::string source = fs::path(material.source_path).filename().string();
     const std::string subtitle = fmt::format(
         "{}, basis {}: worst-channel max error ours {:.4f}, Schlick {:.4f}, F82-tint {:.4f}",
-        source, runtime::basis_name(kind),
-        std::max({compiled.accuracy.decomposition.max_abs[0],
-                  compiled.accuracy.decomposition.max_abs[1],
-                  compiled.accuracy.decomposition.max_abs[2]}),
-        std::max({compiled.accuracy.schlick.max_abs[0], compiled.accuracy.schlick.max_abs[1],
-                  compiled.accuracy.schlick.max_abs[2]}),
-        std::max({compiled.accuracy.f82_tint.max_abs[0], compiled.accuracy.f82_tint.max_abs[1],
-                  compiled.accuracy.f82_tint.max_abs[2]}));
+        source, runtime::basis_name(kind), worst_channel(compiled.accuracy.decomposition.max_abs),
+        worst_channel(compiled.accuracy.schlick.max_abs),
+        worst_channel(compiled.accuracy.f82_tint.max_abs));
     outputs.push_back({material.name + ".svg", fresnel_plot_svg(curves, material.name, subtitle)});
     outputs.push_back({material.name + ".csv", material_curves_csv(curves)});
     entries.push_back({material.name, source, compiled.f0, compiled.accuracy});

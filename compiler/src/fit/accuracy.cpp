@@ -34,6 +34,10 @@ class ErrorAccumulator {
 
 }  // namespace
 
+double worst_channel(const Rgb& values) {
+  return std::max({values[0], values[1], values[2]});
+}
+
 FitAccuracy measure_accuracy(const ReflectanceCurve& curve,
                              const runtime::Coefficients& coefficients,
                              const runtime::BasisPolynomial& shader_basis, std::size_t samples) {

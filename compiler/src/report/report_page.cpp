@@ -1,7 +1,5 @@
 #include "matc/report/report_page.h"
 
-#include <algorithm>
-
 #include <fmt/format.h>
 
 #include "matc/report/fresnel_plot.h"
@@ -9,10 +7,6 @@
 
 namespace matc {
 namespace {
-
-double worst(const Rgb& values) {
-  return *std::max_element(values.begin(), values.end());
-}
 
 std::string error_table(const FitAccuracy& accuracy) {
   std::string out =
@@ -60,8 +54,9 @@ std::string report_index_html(std::span<const ReportEntry> entries, std::string_
         "<td>{5:.4f}</td><td>{6:.4f}</td><td>{7:.4f}</td>"
         "<td><a href=\"{0}.svg\">svg</a> <a href=\"{0}.csv\">csv</a></td></tr>\n",
         name, escape_xml(entry.source), entry.f0[0], entry.f0[1], entry.f0[2],
-        worst(entry.accuracy.decomposition.max_abs), worst(entry.accuracy.schlick.max_abs),
-        worst(entry.accuracy.f82_tint.max_abs)));
+        worst_channel(entry.accuracy.decomposition.max_abs),
+        worst_channel(entry.accuracy.schlick.max_abs),
+        worst_channel(entry.accuracy.f82_tint.max_abs)));
   }
   out.append("</table>\n");
   for (const ReportEntry& entry : entries) {

@@ -19,6 +19,9 @@ struct ErrorStats {
   Rgb rms{};      // root mean square over the same points
 };
 
+// The largest of the three channels' values: the "worst channel" the tables report.
+double worst_channel(const Rgb& values);
+
 struct FitAccuracy {
   std::size_t samples = kAccuracySamples;
   ErrorStats decomposition;  // ours: max(0, sum c_i b_i)
