@@ -15,9 +15,10 @@ trap 'rm -rf "$work"' EXIT
 "$matc" report -o "$work/report" "$materials"/*.json
 expected=$(ls "$materials"/*.json | wc -l)
 
-# Root in CI: Chromium's sandbox needs a user namespace it does not get there.
-browser=("$chromium" --headless --no-sandbox --disable-gpu --user-data-dir="$work/profile"
-         --virtual-time-budget=5000)
+# Root in CI: Chromium's sandbox needs a user namespace it does not get there; containers often
+# have a small /dev/shm.
+browser=("$chromium" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage
+         --user-data-dir="$work/profile" --virtual-time-budget=5000)
 dom=$("${browser[@]}" --dump-dom "file://$work/report/index.html" 2>/dev/null)
 loaded=$(grep -o 'data-plots-loaded="[0-9]*"' <<<"$dom" | grep -o '[0-9]*' || true)
 echo "plots decoded by the browser: ${loaded:-none} of $expected"
