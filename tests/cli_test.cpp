@@ -376,6 +376,7 @@ TEST_F(MatcCli, EvalPrintsDecomposedAndExactFresnel) {
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto json = nlohmann::json::parse(result.out);
   EXPECT_EQ(json["name"], "chromium");
+  EXPECT_EQ(json["basis"], "extended");
   ASSERT_EQ(json["mu"].size(), 4u);
   ASSERT_EQ(json["F"].size(), 4u);
   ASSERT_EQ(json["F_exact"].size(), 4u);

@@ -77,6 +77,7 @@ int run_eval(const EvalOptions& options) {
 
   ordered_json out;
   out["name"] = parsed.material->name;
+  out["basis"] = runtime::basis_name(basis.kind);
   if (!options.mu.empty()) add_direct_fresnel(options, *curve, coefficients, out);
   if (!options.ndotv.empty()) add_preintegrated_fresnel(options, *curve, coefficients, basis, out);
   fmt::print("{}", format_json(out));
