@@ -36,35 +36,10 @@ using matc::FittedBasis;
 using matc::ReflectanceCurve;
 using matc::Rgb;
 
-// An exact curve sampled once on the accuracy grid (which contains the minimax grid), so that the
-// many candidates do not integrate the same spectra again.
-class CachedCurve final : public ReflectanceCurve {
- public:
-  explicit CachedCurve(const ReflectanceCurve& exact) : exact_(exact) {
-    for (std::size_t j = 0; j < matc::kAccuracySamples; ++j)
-      values_.push_back(exact.at(mu_at(j)));
-  }
-  Rgb at(double mu) const override {
-    const double position = mu * static_cast<double>(matc::kAccuracySamples - 1);
-    const double index = std::round(position);
-    if (index >= 0.0 && static_cast<std::size_t>(index) < values_.size() &&
-        mu_at(static_cast<std::size_t>(index)) == mu)
-      return values_[static_cast<std::size_t>(index)];
-    return exact_.at(mu);
-  }
-
- private:
-  static double mu_at(std::size_t j) {
-    return static_cast<double>(j) / static_cast<double>(matc::kAccuracySamples - 1);
-  }
-  const ReflectanceCurve& exact_;
-  std::vector<Rgb> values_;
-};
-
 struct TestCurve {
   std::string name;
   std::unique_ptr<ReflectanceCurve> exact;
-  std::unique_ptr<CachedCurve> cached;
+  std::unique_ptr<matc::AccuracyGridCurve> cached;
   std::size_t channels = 3;  // grey curves count once
 };
 
@@ -73,7 +48,7 @@ struct TestSet {
   std::vector<TestCurve> curves;
   void add(std::string curve_name, std::unique_ptr<ReflectanceCurve> exact, std::size_t channels) {
     TestCurve curve{std::move(curve_name), std::move(exact), nullptr, channels};
-    curve.cached = std::make_unique<CachedCurve>(*curve.exact);
+    curve.cached = std::make_unique<matc::AccuracyGridCurve>(*curve.exact);
     curves.push_back(std::move(curve));
   }
 };

@@ -61,15 +61,20 @@ std::unique_ptr<ReflectanceCurve> make_reflectance_curve(const Material& materia
   return std::make_unique<IorCurve>(per_channel_ior(material.model));
 }
 
+static_assert((kAccuracySamples - 1) % (kMinimaxCosines - 1) == 0,
+              "the minimax solve's cosines must lie on the accuracy grid AccuracyGridCurve caches");
+
 CompiledMaterial compile_material(const Material& material, const runtime::BasisView& basis) {
-  const auto curve = make_reflectance_curve(material);
+  const auto exact = make_reflectance_curve(material);
+  // The solve and the accuracy measurement share cosines: evaluate (integrate) the curve once.
+  const AccuracyGridCurve curve(*exact);
   CompiledMaterial compiled;
   compiled.material = material;
-  compiled.coefficients = solve_coefficients(*curve, basis);
-  compiled.accuracy = measure_accuracy(*curve, compiled.coefficients,
-                                       runtime::shipped_basis_polynomial(basis.kind));
-  compiled.f0 = curve->at(1.0);
-  compiled.f82 = curve->at(kF82MuBar);
+  compiled.coefficients = solve_coefficients(curve, basis);
+  compiled.accuracy =
+      measure_accuracy(curve, compiled.coefficients, runtime::shipped_basis_polynomial(basis.kind));
+  compiled.f0 = curve.at(1.0);
+  compiled.f82 = curve.at(kF82MuBar);
   compiled.average_fresnel =
       average_fresnel(compiled.coefficients, basis_hemispherical_averages(basis));
   if (!std::holds_alternative<SpectralInput>(material.model)) {

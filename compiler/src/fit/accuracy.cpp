@@ -32,7 +32,25 @@ class ErrorAccumulator {
   std::size_t count_ = 0;
 };
 
+double accuracy_grid_mu(std::size_t j) {
+  return static_cast<double>(j) / static_cast<double>(kAccuracySamples - 1);
+}
+
 }  // namespace
+
+AccuracyGridCurve::AccuracyGridCurve(const ReflectanceCurve& exact) : exact_(exact) {
+  values_.reserve(kAccuracySamples);
+  for (std::size_t j = 0; j < kAccuracySamples; ++j)
+    values_.push_back(exact.at(accuracy_grid_mu(j)));
+}
+
+Rgb AccuracyGridCurve::at(double mu) const {
+  const double index = std::round(mu * static_cast<double>(kAccuracySamples - 1));
+  if (index >= 0.0 && index < static_cast<double>(kAccuracySamples) &&
+      accuracy_grid_mu(static_cast<std::size_t>(index)) == mu)
+    return values_[static_cast<std::size_t>(index)];
+  return exact_.at(mu);
+}
 
 double worst_channel(const Rgb& values) {
   return std::max({values[0], values[1], values[2]});

@@ -58,7 +58,7 @@ void append_polyline(std::string& out, const Panel& panel, const std::vector<dou
 }
 
 void append_frame(std::string& out, const Panel& panel, const std::vector<double>& y_ticks,
-                  const std::string& title, const std::string& clip_id, bool label_x) {
+                  const std::string& title, const std::string& clip_id) {
   out.append(fmt::format(
       R"(<clipPath id="{}"><rect x="{:.1f}" y="{:.1f}" width="{:.1f}" height="{:.1f}"/></clipPath>)"
       "\n",
@@ -69,12 +69,10 @@ void append_frame(std::string& out, const Panel& panel, const std::vector<double
         R"(<line x1="{0:.1f}" y1="{1:.1f}" x2="{0:.1f}" y2="{2:.1f}" stroke="#dddddd"/>)"
         "\n",
         x, panel.y, panel.y + kPanelHeight));
-    if (label_x) {
-      out.append(
-          fmt::format(R"(<text x="{:.1f}" y="{:.1f}" font-size="11" text-anchor="middle">{}</text>)"
-                      "\n",
-                      x, panel.y + kPanelHeight + 14, degrees));
-    }
+    out.append(
+        fmt::format(R"(<text x="{:.1f}" y="{:.1f}" font-size="11" text-anchor="middle">{}</text>)"
+                    "\n",
+                    x, panel.y + kPanelHeight + 14, degrees));
   }
   for (const double tick : y_ticks) {
     const double y = panel.py(tick);
@@ -190,7 +188,7 @@ std::string fresnel_plot_svg(const MaterialCurves& curves, std::string_view titl
     const Panel top{x, kRowTop[0], 0.0, 1.0};
     const std::string top_clip = fmt::format("f{}", c);
     append_frame(out, top, {0.0, 0.25, 0.5, 0.75, 1.0},
-                 fmt::format("{}: reflectance F", kChannelNames[c]), top_clip, true);
+                 fmt::format("{}: reflectance F", kChannelNames[c]), top_clip);
     for (const Model& model : models(curves)) {
       append_polyline(out, top, curves.theta_degrees, channel(*model.values, c), model,
                       model.values == &curves.exact ? 3.0 : 1.8, top_clip);
@@ -199,7 +197,7 @@ std::string fresnel_plot_svg(const MaterialCurves& curves, std::string_view titl
     const Panel bottom{x, kRowTop[1], -range, range};
     const std::string bottom_clip = fmt::format("e{}", c);
     append_frame(out, bottom, {-range, -range / 2, 0.0, range / 2, range},
-                 fmt::format("{}: F - exact", kChannelNames[c]), bottom_clip, true);
+                 fmt::format("{}: F - exact", kChannelNames[c]), bottom_clip);
     for (const Model& model : models(curves)) {
       if (model.values == &curves.exact) continue;
       append_polyline(out, bottom, curves.theta_degrees, difference(*model.values, curves.exact, c),

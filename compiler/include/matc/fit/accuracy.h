@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "matc/optics/reflectance_curve.h"
 #include "matc/runtime/basis_polynomial.h"
@@ -17,6 +18,19 @@ inline constexpr std::size_t kAccuracySamples = 2001;
 struct ErrorStats {
   Rgb max_abs{};  // max over mu of |approximation - exact|
   Rgb rms{};      // root mean square over the same points
+};
+
+// An exact curve evaluated once at the accuracy grid's cosines, which include the minimax solve's
+// (kMinimaxCosines - 1 divides kAccuracySamples - 1): solving and measuring a spectral material
+// then integrate each spectrum once. Other cosines go to the exact curve, which must outlive this.
+class AccuracyGridCurve final : public ReflectanceCurve {
+ public:
+  explicit AccuracyGridCurve(const ReflectanceCurve& exact);
+  Rgb at(double mu) const override;
+
+ private:
+  const ReflectanceCurve& exact_;
+  std::vector<Rgb> values_;  // at mu_j = j / (kAccuracySamples - 1)
 };
 
 // The largest of the three channels' values: the "worst channel" the tables report.
