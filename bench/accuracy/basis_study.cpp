@@ -27,7 +27,7 @@
 #include "matc/optics/presets.h"
 #include "matc/optics/spectral.h"
 #include "matc/optics/spectrum.h"
-#include "random_artistic.h"
+#include "test_sets.h"
 
 namespace {
 
@@ -35,86 +35,7 @@ using matc::ComplexIor;
 using matc::FittedBasis;
 using matc::ReflectanceCurve;
 using matc::Rgb;
-
-struct TestCurve {
-  std::string name;
-  std::unique_ptr<ReflectanceCurve> exact;
-  std::unique_ptr<matc::AccuracyGridCurve> cached;
-  std::size_t channels = 3;  // grey curves count once
-};
-
-struct TestSet {
-  std::string name;
-  std::vector<TestCurve> curves;
-  void add(std::string curve_name, std::unique_ptr<ReflectanceCurve> exact, std::size_t channels) {
-    TestCurve curve{std::move(curve_name), std::move(exact), nullptr, channels};
-    curve.cached = std::make_unique<matc::AccuracyGridCurve>(*curve.exact);
-    curves.push_back(std::move(curve));
-  }
-};
-
-std::unique_ptr<ReflectanceCurve> grey(ComplexIor ior) {
-  return std::make_unique<matc::IorCurve>(std::array<ComplexIor, 3>{ior, ior, ior});
-}
-
-TestSet measured_metals() {
-  TestSet set{"measured metals (23)", {}};
-  for (const matc::MetalPreset& preset : matc::metal_presets()) {
-    if (!preset.caveat.empty()) continue;
-    set.add(std::string(preset.symbol),
-            std::make_unique<matc::SpectralCurve>(matc::preset_spectrum(preset)), 3);
-  }
-  return set;
-}
-
-TestSet alternative_metals(const std::filesystem::path& directory) {
-  TestSet set{"alternative data sets", {}};
-  std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(directory))
-    if (entry.path().extension() == ".csv") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  for (const auto& file : files) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    const std::string content = text.str();
-    matc::Diagnostics diagnostics;
-    const auto spectrum =
-        matc::parse_nk_csv(content, matc::TextLocator(file.string(), content), diagnostics);
-    if (!spectrum) throw std::runtime_error("cannot read " + file.string());
-    set.add(file.parent_path().filename().string() + "/" + file.stem().string(),
-            std::make_unique<matc::SpectralCurve>(*spectrum), 3);
-  }
-  set.name = fmt::format("alternative data sets ({})", set.curves.size());
-  return set;
-}
-
-TestSet artistic(std::size_t count, double r_max) {
-  TestSet set{fmt::format("random artistic, r <= {:.2f} ({})", r_max, count), {}};
-  for (const auto& [r, g] : matc::bench::random_artistic_inputs(count, r_max))
-    set.add(fmt::format("r={:.3f} g={:.3f}", r, g), grey(matc::gulbrandsen_to_ior({r, g})), 1);
-  return set;
-}
-
-// Grey artistic inputs at one edge tint, r = first, first + step, ... up to last.
-TestSet edge_tint_line(double g, double first, double last, double step) {
-  const auto count = static_cast<int>(std::lround((last - first) / step)) + 1;
-  TestSet set{fmt::format("artistic, g = {:g}, r {:g}-{:g} ({})", g, first, last, count), {}};
-  for (int i = 0; i < count; ++i) {
-    const double r = first + step * i;
-    set.add(fmt::format("r={:.2f} g={:g}", r, g), grey(matc::gulbrandsen_to_ior({r, g})), 1);
-  }
-  return set;
-}
-
-TestSet dielectrics() {
-  TestSet set{"dielectrics, eta 1.2-2.5 (14)", {}};
-  for (int i = 0; i <= 13; ++i) {
-    const double eta = 1.2 + 0.1 * i;
-    set.add(fmt::format("eta={:.1f}", eta), grey({eta, 0.0}), 1);
-  }
-  return set;
-}
+using namespace matc::bench;
 
 enum class Solve { probes, talk_probes, least_squares, minimax };
 
@@ -296,16 +217,7 @@ int main(int argc, char** argv) {
     if (argument == "--quick") quick = true;
     if (argument == "--only" && i + 1 < argc) only = argv[++i];
   }
-  std::vector<TestSet> tests;
-  tests.push_back(measured_metals());
-  tests.push_back(alternative_metals(MATC_ALT_IOR_DIR));
-  tests.push_back(artistic(500, 0.8));
-  tests.push_back(artistic(500, 1.0));
-  tests.push_back(edge_tint_line(1.0, 0.05, 0.95, 0.05));
-  // Gulbrandsen's g = 0 is a dielectric whose index grows with r (4.4 at r = 0.4): the red and
-  // blue channels of the talk's Figure 2 material.
-  tests.push_back(edge_tint_line(0.0, 0.2, 0.6, 0.1));
-  tests.push_back(dielectrics());
+  const std::vector<TestSet> tests = study_test_sets(MATC_ALT_IOR_DIR);
 
   fmt::print("| training set | construction | solve |");
   for (const TestSet& set : tests)

@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "matc/basis/basis_fit.h"
 #include "matc/basis/basis_polynomial_fit.h"
+#include "matc/fit/coefficient_table.h"
 #include "matc/runtime/basis.h"
 
 namespace matc::cli {
@@ -56,24 +57,39 @@ int run_basis(const BasisOptions& options) {
   return kExitSuccess;
 }
 
-int run_basis_fit(const BasisFitOptions& options) {
-  const FittedBasis basis = fit_shipped_basis(basis_of(options.basis));
-  const std::string source = basis_table_source(basis);
-  fmt::print(stderr, "matc: fitted basis: probes mu_1 = {:.4f}, mu_2 = {:.4f}\n",
-             basis.view().probe_mu(0), basis.view().probe_mu(1));
-  if (options.output.empty()) {
+namespace {
+
+// The generated source on standard output, or written atomically to the output file.
+int write_source(const std::string& output, const std::string& source) {
+  if (output.empty()) {
     fmt::print("{}", source);
     return kExitSuccess;
   }
   try {
-    const WriteOutcome outcome = write_file_atomically(options.output, source);
+    const WriteOutcome outcome = write_file_atomically(output, source);
     fmt::print(stderr, "matc: {} {}\n", outcome == WriteOutcome::written ? "wrote" : "unchanged",
-               options.output);
+               output);
   } catch (const std::exception& error) {
-    fmt::print(stderr, "{}: error: {}\n", options.output, error.what());
+    fmt::print(stderr, "{}: error: {}\n", output, error.what());
     return kExitInputError;
   }
   return kExitSuccess;
+}
+
+}  // namespace
+
+int run_basis_fit(const BasisFitOptions& options) {
+  const FittedBasis basis = fit_shipped_basis(basis_of(options.basis));
+  fmt::print(stderr, "matc: fitted basis: probes mu_1 = {:.4f}, mu_2 = {:.4f}\n",
+             basis.view().probe_mu(0), basis.view().probe_mu(1));
+  return write_source(options.output, basis_table_source(basis));
+}
+
+int run_basis_coefficient_table(const BasisFitOptions& options) {
+  const CoefficientTable table = fit_coefficient_table(basis_of(options.basis));
+  fmt::print(stderr, "matc: fitted the {} x {} coefficient table of the {} basis\n", table.size(),
+             table.size(), runtime::basis_name(table.basis));
+  return write_source(options.output, coefficient_table_source(table));
 }
 
 }  // namespace matc::cli

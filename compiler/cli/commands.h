@@ -74,6 +74,9 @@ struct BasisFitOptions {
 };
 int run_basis_fit(const BasisFitOptions& options);
 
+// `matc basis coefficient-table`: refits the shipped coefficient table and writes its C++ source.
+int run_basis_coefficient_table(const BasisFitOptions& options);
+
 struct ReportOptions {
   std::vector<std::string> files;
   std::string output_directory = "matc-report";

@@ -118,6 +118,15 @@ int main(int argc, char** argv) {
   fit_command->add_option("-o,--output", basis_fit.output,
                           "Where to write (runtime/src/<basis>_basis_table.cpp); default stdout");
   add_basis_option(*fit_command, basis_fit.basis);
+  BasisFitOptions table_fit;
+  CLI::App* table_fit_command = basis_command->add_subcommand(
+      "coefficient-table",
+      "Refit the coefficient table (c_2, c_3 over reflectivity and edge tint) and write its C++ "
+      "source");
+  table_fit_command->add_option(
+      "-o,--output", table_fit.output,
+      "Where to write (runtime/src/<basis>_coefficient_table.cpp); default stdout");
+  add_basis_option(*table_fit_command, table_fit.basis);
 
   LutCommandOptions lut;
   CLI::App* lut_command = app.add_subcommand(
@@ -172,6 +181,7 @@ int main(int argc, char** argv) {
     if (*validate_command) return run_validate(validate);
     if (*report_command) return run_report(report);
     if (*fit_command) return run_basis_fit(basis_fit);
+    if (*table_fit_command) return run_basis_coefficient_table(table_fit);
     if (*basis_command) return run_basis(basis);
     if (compile.files.empty()) {
       fmt::print(stderr,

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "texel_axis.h"
+
 namespace matc::runtime {
 
 double lut_u_from_ndotv(double ndotv) {
@@ -17,20 +19,9 @@ std::array<float, kBasisSize> LutView::texel(std::size_t x, std::size_t y) const
   return {texels[offset], texels[offset + 1], texels[offset + 2], texels[offset + 3]};
 }
 
-namespace {
-
-// Left texel index and blend weight along one axis for a coordinate u in [0, 1].
-std::pair<std::size_t, double> axis_position(double u, std::size_t size) {
-  const double position = std::clamp(u, 0.0, 1.0) * static_cast<double>(size - 1);
-  const std::size_t left = std::min(static_cast<std::size_t>(position), size - 2);
-  return {left, position - static_cast<double>(left)};
-}
-
-}  // namespace
-
 std::array<double, kBasisSize> sample_lut(const LutView& lut, double ndotv, double roughness) {
-  const auto [x, tx] = axis_position(lut_u_from_ndotv(ndotv), lut.size);
-  const auto [y, ty] = axis_position(roughness, lut.size);
+  const auto [x, tx] = texel_axis_position(lut_u_from_ndotv(ndotv), lut.size);
+  const auto [y, ty] = texel_axis_position(roughness, lut.size);
   const auto t00 = lut.texel(x, y);
   const auto t10 = lut.texel(x + 1, y);
   const auto t01 = lut.texel(x, y + 1);

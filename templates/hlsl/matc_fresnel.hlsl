@@ -63,5 +63,6 @@ float3 matc_energy_compensation(MatcFresnelCoefficients c, float4 bbar) {
   float albedo = max(bbar.x, 1e-4);  // guards the NdotV = 0 column
   return 1.0 + f0 * ((1.0 - albedo) / albedo);
 }
+{{coefficient_table}}
 {{embedded_lut}}
 #endif  // MATC_FRESNEL_HLSL

@@ -10,6 +10,7 @@
 #include "matc/emit/shader_library.h"
 #include "matc/emit/validation_kernel.h"
 #include "matc/json_format.h"
+#include "matc/lut/coefficient_table_files.h"
 #include "matc/material/parse.h"
 #include "matc/runtime/basis_polynomial.h"
 #include "matc/spirv/linkage.h"
@@ -23,13 +24,14 @@ constexpr std::string_view kLibraryStem = "matc_fresnel";
 constexpr std::string_view kLutStem = "matc_lut";
 constexpr std::string_view kManifestFile = "matc_manifest.json";
 
-constexpr std::array<std::pair<OutputKind, std::string_view>, 6> kOutputKinds = {{
+constexpr std::array<std::pair<OutputKind, std::string_view>, 7> kOutputKinds = {{
     {OutputKind::glsl, "glsl"},
     {OutputKind::hlsl, "hlsl"},
     {OutputKind::spirv, "spirv"},
     {OutputKind::header, "header"},
     {OutputKind::json, "json"},
     {OutputKind::lut, "lut"},
+    {OutputKind::coefficient_table, "coefficient-table"},
 }};
 
 // A library module from GLSL: the source with a placeholder entry point, then exports.
@@ -69,8 +71,15 @@ std::optional<OutputKind> output_kind_from_name(std::string_view name) {
 }
 
 std::vector<std::string> shared_library_exports(bool embedded_lut) {
-  std::vector<std::string> names = {"matc_basis", "matc_fresnel", "matc_lut_texcoord",
-                                    "matc_fresnel_preintegrated", "matc_energy_compensation"};
+  std::vector<std::string> names = {"matc_basis",
+                                    "matc_fresnel",
+                                    "matc_lut_texcoord",
+                                    "matc_fresnel_preintegrated",
+                                    "matc_energy_compensation",
+                                    "matc_coefficient_table_texcoord",
+                                    "matc_channel_coefficients",
+                                    "matc_coefficients_from_table",
+                                    "matc_artistic_from_ior"};
   if (embedded_lut) names.emplace_back("matc_preintegrated_basis_embedded");
   return names;
 }
@@ -98,8 +107,17 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
   if (options_.embedded_lut_size != 0) {
     embedded_lut_ = preintegrate_lut(basis, {options_.embedded_lut_size, options_.lut.samples});
   }
+  const runtime::CoefficientTableView shipped_table =
+      runtime::shipped_coefficient_table(options_.basis);
+  CoefficientTable table{{shipped_table.size}, options_.basis, {}};
+  table.texels.assign(shipped_table.texels.begin(), shipped_table.texels.end());
+  stored_coefficient_table_ = stored_as(std::move(table), options_.lut_precision);
+  coefficient_table_file_ =
+      fmt::format("{}{}", coefficient_table_stem(), lut_file_extension(options_.lut_format));
+  coefficient_table_file_bytes_ = encode_coefficient_table(
+      stored_coefficient_table_, options_.lut_format, options_.lut_precision);
   inputs_hash_ = ContentHash().add(options_key()).hex();
-  ShaderLibraryOptions library_options{options_.lut.size, embedded_lut()};
+  ShaderLibraryOptions library_options{options_.lut.size, shipped_table.size, embedded_lut()};
   const runtime::BasisPolynomial& polynomial = runtime::shipped_basis_polynomial(options_.basis);
   glsl_library_ =
       shader_library_source(ShaderLanguage::glsl, polynomial, library_options, inputs_hash_);
@@ -155,6 +173,12 @@ std::vector<OutputFile> Build::shared_outputs() const {
     files.push_back({lut.file, lut_file_bytes_});
     files.push_back({lut.file + ".json",
                      format_json(lut_manifest(lut_, options_.lut_format, options_.lut_precision))});
+  }
+  if (emit.contains(OutputKind::coefficient_table)) {
+    files.push_back({coefficient_table_file_, coefficient_table_file_bytes_});
+    files.push_back({coefficient_table_file_ + ".json",
+                     format_json(coefficient_table_manifest(
+                         stored_coefficient_table_, options_.lut_format, options_.lut_precision))});
   }
   return files;
 }
@@ -254,6 +278,10 @@ nlohmann::ordered_json Build::manifest(const std::vector<OutputFile>& shared,
                      {"precision", lut_precision_name(options_.lut_precision)},
                      {"hash", lut_reference_.hash},
                      {"embedded_size", options_.embedded_lut_size}};
+  manifest["coefficient_table"] = {{"file", coefficient_table_file_},
+                                   {"size", stored_coefficient_table_.size()},
+                                   {"precision", lut_precision_name(options_.lut_precision)},
+                                   {"hash", hash_of_bytes(coefficient_table_file_bytes_)}};
   manifest["shared_files"] = files_json(shared);
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const nlohmann::ordered_json& entry : entries)

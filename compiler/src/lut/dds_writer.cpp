@@ -1,5 +1,5 @@
 // DirectDraw Surface with the DX10 extension header (Microsoft, "DDS file layout"): one 2D
-// texture, DXGI_FORMAT_R16G16B16A16_FLOAT or DXGI_FORMAT_R32G32B32A32_FLOAT, no mipmaps.
+// texture, DXGI_FORMAT_R16G16[B16A16]_FLOAT or DXGI_FORMAT_R32G32[B32A32]_FLOAT, no mipmaps.
 #include "lut_writers.h"
 #include "texel_bytes.h"
 
@@ -14,6 +14,8 @@ constexpr std::uint32_t kDdpfFourCc = 0x4;
 constexpr std::uint32_t kDdsCapsTexture = 0x1000;
 constexpr std::uint32_t kDxgiR32G32B32A32Float = 2;
 constexpr std::uint32_t kDxgiR16G16B16A16Float = 10;
+constexpr std::uint32_t kDxgiR32G32Float = 16;
+constexpr std::uint32_t kDxgiR16G16Float = 34;
 constexpr std::uint32_t kResourceDimensionTexture2d = 3;
 
 std::uint32_t four_cc(const char (&code)[5]) {
@@ -23,19 +25,20 @@ std::uint32_t four_cc(const char (&code)[5]) {
 
 }  // namespace
 
-std::string encode_dds(const Lut& lut, LutPrecision precision) {
-  const std::uint32_t texel_size = precision == LutPrecision::f16 ? 8 : 16;
-  const auto size = static_cast<std::uint32_t>(lut.size);
+std::string encode_dds(const TexelImage& image, LutPrecision precision) {
+  const bool half = precision == LutPrecision::f16;
+  const auto texel_size = static_cast<std::uint32_t>(image.channels * (half ? 2 : 4));
+  const auto width = static_cast<std::uint32_t>(image.width);
   std::string out;
   put_u32(out, four_cc("DDS "));
   // DDS_HEADER
   put_u32(out, 124);
   put_u32(out, kDdsdCaps | kDdsdHeight | kDdsdWidth | kDdsdPitch | kDdsdPixelFormat);
-  put_u32(out, size);               // height
-  put_u32(out, size);               // width
-  put_u32(out, size * texel_size);  // pitch: bytes per row
-  put_u32(out, 0);                  // depth
-  put_u32(out, 1);                  // mipMapCount
+  put_u32(out, static_cast<std::uint32_t>(image.height));
+  put_u32(out, width);
+  put_u32(out, width * texel_size);  // pitch: bytes per row
+  put_u32(out, 0);                   // depth
+  put_u32(out, 1);                   // mipMapCount
   for (int i = 0; i < 11; ++i)
     put_u32(out, 0);  // reserved1
   // DDS_PIXELFORMAT: the format lives in the DX10 header.
@@ -48,12 +51,15 @@ std::string encode_dds(const Lut& lut, LutPrecision precision) {
   for (int i = 0; i < 4; ++i)
     put_u32(out, 0);  // caps2..4, reserved2
   // DDS_HEADER_DXT10
-  put_u32(out, precision == LutPrecision::f16 ? kDxgiR16G16B16A16Float : kDxgiR32G32B32A32Float);
+  if (image.channels == 2)
+    put_u32(out, half ? kDxgiR16G16Float : kDxgiR32G32Float);
+  else
+    put_u32(out, half ? kDxgiR16G16B16A16Float : kDxgiR32G32B32A32Float);
   put_u32(out, kResourceDimensionTexture2d);
   put_u32(out, 0);  // miscFlag
   put_u32(out, 1);  // arraySize
   put_u32(out, 0);  // miscFlags2: alpha mode unknown
-  out += texel_bytes(lut.texels, precision);
+  out += texel_bytes(image.texels, precision);
   return out;
 }
 

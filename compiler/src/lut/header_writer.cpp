@@ -1,37 +1,11 @@
 // The LUT as a self-contained C++17 header: constexpr arrays, no dependencies.
 #include <fmt/format.h>
 
+#include "header_arrays.h"
 #include "lut_writers.h"
 #include "matc/version.h"
 
 namespace matc::lut_writers {
-namespace {
-
-// Shortest round-trip float literal, so the header reproduces the texels bit for bit.
-std::string float_literal(float value) {
-  std::string text = fmt::format("{}", value);
-  if (text.find_first_of(".e") == std::string::npos) text += ".0";
-  return text + "f";
-}
-
-template <typename Values>
-void append_array(std::string& out, std::string_view name, const Values& values,
-                  std::size_t per_line) {
-  out += fmt::format("inline constexpr float {}[{}] = {{\n", name, values.size());
-  std::size_t column = 0;
-  for (const auto value : values) {
-    out += column == 0 ? "    " : " ";
-    out += float_literal(static_cast<float>(value)) + ",";
-    if (++column == per_line) {
-      out += "\n";
-      column = 0;
-    }
-  }
-  if (column != 0) out += "\n";
-  out += "};\n\n";
-}
-
-}  // namespace
 
 std::string encode_header(const BakedLut& baked, LutPrecision precision) {
   const Lut& lut = baked.lut;
@@ -51,11 +25,12 @@ std::string encode_header(const BakedLut& baked, LutPrecision precision) {
       "inline constexpr std::size_t kSize = {};\n\n",
       kVersion, lut.samples,
       precision == LutPrecision::f16 ? ", values rounded to half precision" : "", lut.size);
-  append_array(out, "kTexels", texels, 8);
+  append_float_array(out, "inline constexpr", "kTexels", texels, 8);
   out += "// E_avg(roughness) per row: the cosine-weighted average of channel 0.\n";
-  append_array(out, "kAverageAlbedo", baked.average_albedo, 8);
+  append_float_array(out, "inline constexpr", "kAverageAlbedo", baked.average_albedo, 8);
   out += "// m_i = 2 * integral b_i(mu) mu dmu; a material's F_avg = sum_i c_i m_i.\n";
-  append_array(out, "kBasisHemisphericalAverages", baked.basis_averages, 4);
+  append_float_array(out, "inline constexpr", "kBasisHemisphericalAverages", baked.basis_averages,
+                     4);
   out += "}  // namespace matc_lut\n";
   return out;
 }

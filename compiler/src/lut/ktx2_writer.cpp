@@ -1,6 +1,6 @@
 // KTX 2.0 (Khronos, https://registry.khronos.org/KTX/specs/2.0/ktxspec.v2.html): one 2D level,
-// VK_FORMAT_R16G16B16A16_SFLOAT or VK_FORMAT_R32G32B32A32_SFLOAT, a basic data format descriptor
-// and a KTXwriter key.
+// VK_FORMAT_R16G16[B16A16]_SFLOAT or VK_FORMAT_R32G32[B32A32]_SFLOAT, a basic data format
+// descriptor and a KTXwriter key.
 #include "lut_writers.h"
 #include "matc/version.h"
 #include "texel_bytes.h"
@@ -12,27 +12,35 @@ using namespace lut_bytes;
 
 constexpr unsigned char kIdentifier[12] = {0xAB, 0x4B, 0x54, 0x58, 0x20, 0x32,
                                            0x30, 0xBB, 0x0D, 0x0A, 0x1A, 0x0A};
+constexpr std::uint32_t kVkFormatR16G16Sfloat = 83;
+constexpr std::uint32_t kVkFormatR32G32Sfloat = 103;
 constexpr std::uint32_t kVkFormatR16G16B16A16Sfloat = 97;
 constexpr std::uint32_t kVkFormatR32G32B32A32Sfloat = 109;
+
+std::uint32_t vk_format(std::size_t channels, std::uint32_t channel_bytes) {
+  if (channels == 2) return channel_bytes == 2 ? kVkFormatR16G16Sfloat : kVkFormatR32G32Sfloat;
+  return channel_bytes == 2 ? kVkFormatR16G16B16A16Sfloat : kVkFormatR32G32B32A32Sfloat;
+}
 constexpr std::size_t kHeaderAndIndexBytes = 80;
 constexpr std::size_t kLevelIndexBytes = 24;
 
-// Khronos Data Format 1.3 basic descriptor for 4 little-endian signed-float channels.
-std::string data_format_descriptor(std::uint32_t channel_bytes) {
-  constexpr std::uint32_t kSamples = 4;
-  constexpr std::uint32_t kBlockBytes = 24 + 16 * kSamples;
+// Khronos Data Format 1.3 basic descriptor for 2 (R, G) or 4 (R, G, B, A) little-endian
+// signed-float channels.
+std::string data_format_descriptor(std::size_t channels, std::uint32_t channel_bytes) {
+  const auto samples = static_cast<std::uint32_t>(channels);
+  const std::uint32_t block_bytes = 24 + 16 * samples;
   std::string out;
-  put_u32(out, 4 + kBlockBytes);           // dfdTotalSize
+  put_u32(out, 4 + block_bytes);           // dfdTotalSize
   put_u32(out, 0);                         // vendorId KHRONOS, descriptorType BASICFORMAT
-  put_u32(out, 2u | (kBlockBytes << 16));  // versionNumber 1.3, descriptorBlockSize
+  put_u32(out, 2u | (block_bytes << 16));  // versionNumber 1.3, descriptorBlockSize
   // colorModel RGBSDA, colorPrimaries BT709, transferFunction LINEAR, flags ALPHA_STRAIGHT.
   put_u32(out, 1u | (1u << 8) | (1u << 16));
-  put_u32(out, 0);                                                // texelBlockDimension 1x1x1x1
-  put_u32(out, 4 * channel_bytes);                                // bytesPlane0
-  put_u32(out, 0);                                                // bytesPlane4..7
-  constexpr std::uint32_t kChannelIds[kSamples] = {0, 1, 2, 15};  // R, G, B, A
+  put_u32(out, 0);                                         // texelBlockDimension 1x1x1x1
+  put_u32(out, samples * channel_bytes);                   // bytesPlane0
+  put_u32(out, 0);                                         // bytesPlane4..7
+  constexpr std::uint32_t kChannelIds[4] = {0, 1, 2, 15};  // R, G, B, A
   constexpr std::uint32_t kFloatSigned = 0x80 | 0x40;
-  for (std::uint32_t s = 0; s < kSamples; ++s) {
+  for (std::uint32_t s = 0; s < samples; ++s) {
     put_u32(out, (s * channel_bytes * 8) | ((channel_bytes * 8 - 1) << 16) |
                      ((kChannelIds[s] | kFloatSigned) << 24));
     put_u32(out, 0);           // samplePosition
@@ -57,29 +65,29 @@ std::string key_value_data() {
 
 }  // namespace
 
-std::string encode_ktx2(const Lut& lut, LutPrecision precision) {
+std::string encode_ktx2(const TexelImage& image, LutPrecision precision) {
   const std::uint32_t channel_bytes = precision == LutPrecision::f16 ? 2 : 4;
-  const std::string dfd = data_format_descriptor(channel_bytes);
+  const std::string dfd = data_format_descriptor(image.channels, channel_bytes);
   const std::string kvd = key_value_data();
-  const std::string texels = texel_bytes(lut.texels, precision);
+  const std::string texels = texel_bytes(image.texels, precision);
 
   const std::size_t dfd_offset = kHeaderAndIndexBytes + kLevelIndexBytes;
   const std::size_t kvd_offset = dfd_offset + dfd.size();
-  // Level data is aligned to lcm(texel block size, 4) = the texel size (8 or 16 bytes).
-  const std::size_t texel_size = 4 * channel_bytes;
+  // Level data is aligned to lcm(texel block size, 4) = the texel size (4 to 16 bytes).
+  const std::size_t texel_size = image.channels * channel_bytes;
   std::size_t level_offset = kvd_offset + kvd.size();
   level_offset += (texel_size - level_offset % texel_size) % texel_size;
 
   std::string out(reinterpret_cast<const char*>(kIdentifier), sizeof kIdentifier);
-  put_u32(out, channel_bytes == 2 ? kVkFormatR16G16B16A16Sfloat : kVkFormatR32G32B32A32Sfloat);
-  put_u32(out, channel_bytes);                         // typeSize
-  put_u32(out, static_cast<std::uint32_t>(lut.size));  // pixelWidth
-  put_u32(out, static_cast<std::uint32_t>(lut.size));  // pixelHeight
-  put_u32(out, 0);                                     // pixelDepth
-  put_u32(out, 0);                                     // layerCount
-  put_u32(out, 1);                                     // faceCount
-  put_u32(out, 1);                                     // levelCount
-  put_u32(out, 0);                                     // supercompressionScheme
+  put_u32(out, vk_format(image.channels, channel_bytes));
+  put_u32(out, channel_bytes);                             // typeSize
+  put_u32(out, static_cast<std::uint32_t>(image.width));   // pixelWidth
+  put_u32(out, static_cast<std::uint32_t>(image.height));  // pixelHeight
+  put_u32(out, 0);                                         // pixelDepth
+  put_u32(out, 0);                                         // layerCount
+  put_u32(out, 1);                                         // faceCount
+  put_u32(out, 1);                                         // levelCount
+  put_u32(out, 0);                                         // supercompressionScheme
   put_u32(out, static_cast<std::uint32_t>(dfd_offset));
   put_u32(out, static_cast<std::uint32_t>(dfd.size()));
   put_u32(out, static_cast<std::uint32_t>(kvd_offset));

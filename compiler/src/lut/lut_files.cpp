@@ -24,6 +24,10 @@ constexpr std::array<FormatInfo, 4> kFormats = {{
     {LutFormat::header, "header", ".h"},
 }};
 
+lut_writers::TexelImage image_of(const Lut& lut) {
+  return {lut.size, lut.size, runtime::kBasisSize, lut.texels};
+}
+
 const FormatInfo& info(LutFormat format) {
   return *std::find_if(kFormats.begin(), kFormats.end(),
                        [&](const FormatInfo& f) { return f.format == format; });
@@ -90,9 +94,9 @@ BakedLut bake_lut(const runtime::BasisView& basis, const LutOptions& options) {
 std::string encode_lut(const BakedLut& baked, LutFormat format, LutPrecision precision) {
   switch (format) {
     case LutFormat::ktx2:
-      return lut_writers::encode_ktx2(baked.lut, precision);
+      return lut_writers::encode_ktx2(image_of(baked.lut), precision);
     case LutFormat::dds:
-      return lut_writers::encode_dds(baked.lut, precision);
+      return lut_writers::encode_dds(image_of(baked.lut), precision);
     case LutFormat::raw:
       return lut_bytes::texel_bytes(baked.lut.texels, precision);
     case LutFormat::header:

@@ -1,14 +1,25 @@
-// One encoder per container format; lut_files.cpp dispatches between them.
+// One encoder per container format; lut_files.cpp and coefficient_table_files.cpp dispatch
+// between them.
 #pragma once
 
+#include <cstddef>
+#include <span>
 #include <string>
 
 #include "matc/lut/lut_files.h"
 
 namespace matc::lut_writers {
 
-std::string encode_ktx2(const Lut& lut, LutPrecision precision);
-std::string encode_dds(const Lut& lut, LutPrecision precision);
+// One level of a float texture: the preintegrated table (4 channels) or the coefficient table (2).
+struct TexelImage {
+  std::size_t width = 0;
+  std::size_t height = 0;
+  std::size_t channels = 4;  // 2 (RG) or 4 (RGBA)
+  std::span<const float> texels;
+};
+
+std::string encode_ktx2(const TexelImage& image, LutPrecision precision);
+std::string encode_dds(const TexelImage& image, LutPrecision precision);
 std::string encode_header(const BakedLut& baked, LutPrecision precision);
 
 }  // namespace matc::lut_writers

@@ -14,22 +14,29 @@
 #include "matc/compile.h"
 #include "matc/emit/c_header.h"
 #include "matc/emit/shader_literals.h"
+#include "matc/fit/coefficient_table.h"
 #include "matc/lut/lut_files.h"
 #include "matc/spirv/shader_compiler.h"
 
 namespace matc {
 
-enum class OutputKind { glsl, hlsl, spirv, header, json, lut };
+enum class OutputKind { glsl, hlsl, spirv, header, json, lut, coefficient_table };
 
-// "glsl", "hlsl", "spirv", "header", "json", "lut": the names --emit accepts.
+// "glsl", "hlsl", "spirv", "header", "json", "lut", "coefficient-table": the names --emit
+// accepts.
 std::vector<std::string> output_kind_names();
 std::optional<OutputKind> output_kind_from_name(std::string_view name);
 
 inline constexpr std::size_t kMaxEmbeddedLutSize = 64;
 
 struct BuildOptions {
-  std::set<OutputKind> emit = {OutputKind::glsl,   OutputKind::hlsl, OutputKind::spirv,
-                               OutputKind::header, OutputKind::json, OutputKind::lut};
+  std::set<OutputKind> emit = {OutputKind::glsl,
+                               OutputKind::hlsl,
+                               OutputKind::spirv,
+                               OutputKind::header,
+                               OutputKind::json,
+                               OutputKind::lut,
+                               OutputKind::coefficient_table};
   LutOptions lut;
   LutFormat lut_format = LutFormat::ktx2;
   LutPrecision lut_precision = LutPrecision::f32;
@@ -62,6 +69,9 @@ class Build {
   // The table as the written file stores it (f16 rounding), what a renderer samples.
   const Lut& stored_lut() const { return stored_lut_; }
   const Lut* embedded_lut() const { return embedded_lut_ ? &*embedded_lut_ : nullptr; }
+  // The basis' coefficient table as the written file stores it (same format and precision as the
+  // preintegrated table): what a shader samples for textured metals.
+  const CoefficientTable& stored_coefficient_table() const { return stored_coefficient_table_; }
   const std::string& inputs_hash() const { return inputs_hash_; }
 
   const std::string& library_source(ShaderLanguage language) const;
@@ -72,7 +82,8 @@ class Build {
   // parsed from memory works the same).
   std::string material_inputs_hash(const Material& material) const;
 
-  // The files matc_fresnel.{glsl,hlsl,spv} and matc_lut.<ext> (+ .json) the options select.
+  // The files matc_fresnel.{glsl,hlsl,spv}, matc_lut.<ext> and matc_coefficient_table.<ext> (each
+  // with its .json) the options select.
   std::vector<OutputFile> shared_outputs() const;
   // <name>.{glsl,hlsl,spv,h,json} as selected.
   MaterialOutputs material_outputs(const CompiledMaterial& compiled) const;
@@ -106,6 +117,9 @@ class Build {
   std::string inputs_hash_;
   std::string lut_file_bytes_;
   LutReference lut_reference_;  // names and hashes lut_file_bytes_
+  CoefficientTable stored_coefficient_table_;
+  std::string coefficient_table_file_;
+  std::string coefficient_table_file_bytes_;
   std::string glsl_library_;
   std::string hlsl_library_;
 };

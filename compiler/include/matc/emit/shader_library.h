@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "matc/emit/shader_literals.h"
+#include "matc/fit/coefficient_table.h"
 #include "matc/lut/preintegrate.h"
 #include "matc/runtime/basis_polynomial.h"
 
@@ -12,6 +13,8 @@ namespace matc {
 
 struct ShaderLibraryOptions {
   std::size_t lut_size = LutOptions{}.size;  // the table the build writes (MATC_LUT_SIZE)
+  // The coefficient table's width and height (MATC_COEFFICIENT_TABLE_SIZE).
+  std::size_t coefficient_table_size = kDefaultCoefficientTableSize;
   // A small table to embed as a constant array (--embed-lut); null for none.
   const Lut* embedded_lut = nullptr;
 };

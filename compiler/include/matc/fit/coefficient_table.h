@@ -1,0 +1,89 @@
+// Fitting the coefficient table (layout: matc/runtime/coefficient_table.h): every texel is the
+// per-material coefficient solve of one Gulbrandsen conductor (r, g), so a shader that samples
+// the table gets what compiling that material would give, up to filtering.
+//
+// The shipped layout is one point of a small design space that bench/accuracy/table_study.cpp
+// explores (docs/accuracy.md, "The coefficient table"); the variants exist for that study.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "matc/runtime/basis.h"
+#include "matc/runtime/coefficient_table.h"
+#include "matc/runtime/fresnel.h"
+
+namespace matc {
+
+// Where the texel columns sit along the reflectivity axis.
+enum class ReflectivityAxis {
+  square_root,  // u = sqrt(r): more texels at low r, where curves change fastest (shipped)
+  linear,       // u = r
+  cube_root,    // u = r^(1/3): more texels still at the lowest r
+};
+
+// Where the texel rows sit along the edge-tint axis.
+enum class EdgeTintAxis {
+  log_ior,  // v = log(n_max / n) / log(n_max / n_min): even in the curves' change (shipped)
+  linear,   // v = g
+};
+
+// What a texel stores.
+enum class TableValues {
+  raw,         // (c_2, c_3) (shipped)
+  normalised,  // (c_2, c_3) / (1 - r), the normalised curve's coefficients
+};
+
+// Which solve fills the texels.
+enum class TableSolve {
+  basis,  // the basis' own (near-minimax for extended, probes for paper): what compiling does
+  least_squares,  // smooth in (r, g), but further from the per-material compile
+};
+
+// 96: the smallest size the study (docs/accuracy.md) finds within 0.002 of the per-material
+// compile above r = 0.002; 36 KiB in f16, 72 KiB in f32.
+inline constexpr std::size_t kDefaultCoefficientTableSize = 96;
+inline constexpr std::size_t kMinCoefficientTableSize = 2;
+inline constexpr std::size_t kMaxCoefficientTableSize = 1024;
+
+struct CoefficientTableOptions {
+  std::size_t size = kDefaultCoefficientTableSize;
+  ReflectivityAxis axis = ReflectivityAxis::square_root;
+  EdgeTintAxis edge_tint_axis = EdgeTintAxis::log_ior;
+  TableValues values = TableValues::raw;
+  TableSolve solve = TableSolve::basis;
+  unsigned threads = 0;  // 0: one per hardware thread; the bytes do not depend on it
+};
+
+// An owning table of any layout; only the shipped layout can be viewed by the runtime.
+struct CoefficientTable {
+  CoefficientTableOptions options;
+  runtime::BasisKind basis = runtime::kDefaultBasis;
+  std::vector<float> texels;  // size * size * 2, rows by g
+
+  std::size_t size() const { return options.size; }
+  bool shipped_layout() const;
+  // Throws std::logic_error for another layout.
+  runtime::CoefficientTableView view() const;
+};
+
+// The reflectivity at (fractional) texel column x, and the edge tint of row y in that column.
+double coefficient_table_column_reflectivity(const CoefficientTableOptions& options, double x);
+double coefficient_table_row_edge_tint(const CoefficientTableOptions& options, double reflectivity,
+                                       std::size_t y);
+
+// Throws std::invalid_argument for a size outside [kMinCoefficientTableSize,
+// kMaxCoefficientTableSize].
+CoefficientTable fit_coefficient_table(runtime::BasisKind basis,
+                                       const CoefficientTableOptions& options = {});
+
+// One channel's c_0..c_3 read from a table of any layout, bilinearly filtered like a sampler
+// (the shipped layout through the runtime's own function).
+runtime::ChannelCoefficients channel_coefficients(const CoefficientTable& table,
+                                                  double reflectivity, double edge_tint);
+
+// The C++ source of runtime/src/<basis>_coefficient_table.cpp (the shipped layout).
+std::string coefficient_table_source(const CoefficientTable& table);
+
+}  // namespace matc

@@ -1,0 +1,167 @@
+#include "matc/fit/coefficient_table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "lut/header_arrays.h"
+#include "matc/fit/coefficients.h"
+#include "matc/optics/gulbrandsen.h"
+#include "matc/optics/reflectance_curve.h"
+#include "matc/runtime/basis_polynomial.h"
+#include "matc/version.h"
+
+namespace matc {
+namespace {
+
+double u_coordinate(const CoefficientTableOptions& options, double reflectivity) {
+  switch (options.axis) {
+    case ReflectivityAxis::square_root:
+      return runtime::coefficient_table_u_from_reflectivity(reflectivity);
+    case ReflectivityAxis::cube_root:
+      return std::cbrt(std::clamp(reflectivity, 0.0, 1.0));
+    case ReflectivityAxis::linear:
+      break;
+  }
+  return std::clamp(reflectivity, 0.0, 1.0);
+}
+
+double v_coordinate(const CoefficientTableOptions& options, double reflectivity, double edge_tint) {
+  return options.edge_tint_axis == EdgeTintAxis::log_ior
+             ? runtime::coefficient_table_v_from_edge_tint(reflectivity, edge_tint)
+             : std::clamp(edge_tint, 0.0, 1.0);
+}
+
+runtime::Coefficients solve(const ReflectanceCurve& curve, runtime::BasisKind basis,
+                            TableSolve method) {
+  if (method == TableSolve::least_squares) {
+    return solve_coefficients_least_squares(curve, runtime::shipped_basis_polynomial(basis));
+  }
+  return solve_coefficients(curve, runtime::shipped_basis(basis));
+}
+
+// Solves the texels of one row, three columns at a time (one per colour channel of an IorCurve).
+void fit_row(CoefficientTable& table, std::size_t y) {
+  const std::size_t size = table.size();
+  for (std::size_t x0 = 0; x0 < size; x0 += 3) {
+    std::array<ComplexIor, 3> ior{};
+    std::array<double, 3> solved_r{};
+    for (std::size_t c = 0; c < 3; ++c) {
+      const std::size_t x = std::min(x0 + c, size - 1);
+      solved_r[c] = coefficient_table_column_reflectivity(table.options, static_cast<double>(x));
+      const double g = coefficient_table_row_edge_tint(table.options, solved_r[c], y);
+      // The last column (r = 1, F = 1 at every angle) is not solved: it stays zero. Its slot in
+      // the batch gets a harmless placeholder.
+      ior[c] = x < size - 1 ? gulbrandsen_to_ior({solved_r[c], g}) : ComplexIor{1.5, 0.0};
+    }
+    const runtime::Coefficients coefficients =
+        solve(IorCurve(ior), table.basis, table.options.solve);
+    for (std::size_t c = 0; c < 3 && x0 + c < size - 1; ++c) {
+      const double scale =
+          table.options.values == TableValues::normalised ? 1.0 / (1.0 - solved_r[c]) : 1.0;
+      const std::size_t offset = (y * size + x0 + c) * runtime::kCoefficientTableChannels;
+      table.texels[offset] = static_cast<float>(coefficients[c][2] * scale);
+      table.texels[offset + 1] = static_cast<float>(coefficients[c][3] * scale);
+    }
+  }
+}
+
+}  // namespace
+
+bool CoefficientTable::shipped_layout() const {
+  return options.axis == ReflectivityAxis::square_root &&
+         options.edge_tint_axis == EdgeTintAxis::log_ior && options.values == TableValues::raw;
+}
+
+runtime::CoefficientTableView CoefficientTable::view() const {
+  if (!shipped_layout()) throw std::logic_error("only the shipped table layout has a runtime view");
+  return {options.size, texels};
+}
+
+double coefficient_table_column_reflectivity(const CoefficientTableOptions& options, double x) {
+  const double u = x / static_cast<double>(options.size - 1);
+  switch (options.axis) {
+    case ReflectivityAxis::square_root:
+      return runtime::coefficient_table_reflectivity_from_u(u);
+    case ReflectivityAxis::cube_root:
+      return u * u * u;
+    case ReflectivityAxis::linear:
+      break;
+  }
+  return u;
+}
+
+double coefficient_table_row_edge_tint(const CoefficientTableOptions& options, double reflectivity,
+                                       std::size_t y) {
+  const double v = static_cast<double>(y) / static_cast<double>(options.size - 1);
+  if (options.edge_tint_axis == EdgeTintAxis::linear) return v;
+  return std::clamp(runtime::coefficient_table_edge_tint_from_v(reflectivity, v), 0.0, 1.0);
+}
+
+CoefficientTable fit_coefficient_table(runtime::BasisKind basis,
+                                       const CoefficientTableOptions& options) {
+  if (options.size < kMinCoefficientTableSize || options.size > kMaxCoefficientTableSize) {
+    throw std::invalid_argument(fmt::format("coefficient table size {} outside [{}, {}]",
+                                            options.size, kMinCoefficientTableSize,
+                                            kMaxCoefficientTableSize));
+  }
+  CoefficientTable table{options, basis, {}};
+  table.texels.assign(options.size * options.size * runtime::kCoefficientTableChannels, 0.0f);
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads = std::min<unsigned>(options.threads == 0 ? hardware : options.threads,
+                                              static_cast<unsigned>(options.size));
+  // Rows are interleaved over threads; each texel is written by exactly one of them.
+  const auto work = [&](unsigned first) {
+    for (std::size_t y = first; y < options.size; y += threads)
+      fit_row(table, y);
+  };
+  std::vector<std::jthread> pool;
+  for (unsigned t = 1; t < threads; ++t)
+    pool.emplace_back(work, t);
+  work(0);
+  return table;
+}
+
+runtime::ChannelCoefficients channel_coefficients(const CoefficientTable& table,
+                                                  double reflectivity, double edge_tint) {
+  if (table.shipped_layout()) {
+    return runtime::channel_coefficients_from_table(table.view(), reflectivity, edge_tint);
+  }
+  // The same bilinear read at this layout's coordinates.
+  const double r = std::clamp(reflectivity, 0.0, 1.0);
+  const auto sampled = runtime::sample_coefficient_table_at(
+      {table.size(), table.texels}, u_coordinate(table.options, r),
+      v_coordinate(table.options, r, edge_tint));
+  const double scale = table.options.values == TableValues::normalised ? 1.0 - r : 1.0;
+  return {r, 1.0 - r, scale * sampled[0], scale * sampled[1]};
+}
+
+std::string coefficient_table_source(const CoefficientTable& table) {
+  const std::string name(runtime::basis_name(table.basis));
+  std::string out = fmt::format(
+      "// Generated by `matc basis coefficient-table --basis {}` (matc {}). Do not edit: rerun "
+      "it.\n"
+      "// (c_2, c_3) of Gulbrandsen conductors, {} x {} texels: columns r = (x / {})^2, rows "
+      "log n from\n// n_max(r) to n_min(r) in {} steps (layout: matc/runtime/coefficient_table.h), "
+      "each texel the basis'\n// own coefficient solve.\n"
+      "// clang-format off\n"
+      "#include \"matc/runtime/coefficient_table.h\"\n\n"
+      "namespace matc::runtime {{\n"
+      "namespace {{\n\n"
+      "constexpr std::size_t kSize = {};\n",
+      name, kVersion, table.size(), table.size(), table.size() - 1, table.size() - 1, table.size());
+  lut_writers::append_float_array(out, "constexpr", "kTexels", table.texels, 8);
+  out += fmt::format(
+      "}}  // namespace\n\n"
+      "CoefficientTableView {}_coefficient_table() {{\n"
+      "  return {{kSize, kTexels}};\n"
+      "}}\n\n"
+      "}}  // namespace matc::runtime\n",
+      name);
+  return out;
+}
+
+}  // namespace matc

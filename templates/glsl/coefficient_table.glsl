@@ -1,0 +1,68 @@
+
+// ---- Textured and animated metals: coefficients at run time from the coefficient table. ----
+// Width and height of the coefficient table this build writes (matc_coefficient_table.*).
+#define MATC_COEFFICIENT_TABLE_SIZE {{coefficient_table_size}}
+
+// Where to sample the coefficient table for one colour channel's reflectivity r and edge tint g
+// (Gulbrandsen 2014), with linear filtering and clamp-to-edge addressing, texel centres on the
+// ends of both axes: u = sqrt(r) across; down, how far g moves the index of refraction from
+// n_max(r) towards n_min(r) in log n, v = log(1 - g delta) / log(1 - delta) with
+// delta = 1 - n_min / n_max = 2 sqrt(r) / (1 + r). Below delta = 0.01 (r < 2.5e-5) v is its
+// series in delta, which float logs of numbers that close to 1 could not resolve.
+vec2 matc_coefficient_table_texcoord(float r, float g) {
+  float reflectivity = clamp(r, 0.0, 1.0);
+  float edge_tint = clamp(g, 0.0, 1.0);
+  float sqrt_r = sqrt(reflectivity);
+  float delta = 2.0 * sqrt_r / (1.0 + reflectivity);
+  float series = edge_tint * (1.0 + edge_tint * delta * (0.5 + edge_tint * delta / 3.0)) /
+                 (1.0 + delta * (0.5 + delta / 3.0));
+  float logs = log(max(1.0 - edge_tint * delta, 1e-30)) / log(max(1.0 - delta, 1e-30));
+  vec2 axes = vec2(sqrt_r, clamp(delta < 0.01 ? series : logs, 0.0, 1.0));
+  return (axes * float(MATC_COEFFICIENT_TABLE_SIZE - 1) + 0.5) /
+         float(MATC_COEFFICIENT_TABLE_SIZE);
+}
+
+// One channel's c_0..c_3: c_0 = r, c_1 = 1 - r, and (c_2, c_3) the table's texel (its .xy) at
+// matc_coefficient_table_texcoord(r, g).
+vec4 matc_channel_coefficients(float r, vec2 texel) {
+  float reflectivity = clamp(r, 0.0, 1.0);
+  return vec4(reflectivity, 1.0 - reflectivity, texel);
+}
+
+// A textured metal's coefficients from per-channel reflectivity r (its base colour) and the
+// three channels' table texels; everything downstream (matc_fresnel, matc_fresnel_preintegrated,
+// matc_energy_compensation) takes the result as it takes a compiled material's.
+MatcFresnelCoefficients matc_coefficients_from_table(vec3 r, vec2 red, vec2 green, vec2 blue) {
+  return MatcFresnelCoefficients(matc_channel_coefficients(r.x, red),
+                                 matc_channel_coefficients(r.y, green),
+                                 matc_channel_coefficients(r.z, blue));
+}
+
+// The same with the three fetches: TABLE is a sampler2D expression (in Vulkan GLSL
+// sampler2D(texture, sampler), which must appear at its point of use, hence a macro).
+// R and G (vec3) are evaluated more than once: pass variables.
+#define MATC_COEFFICIENTS_FROM_TABLE(TABLE, R, G)                                                 \
+  matc_coefficients_from_table(                                                                  \
+      (R), textureLod(TABLE, matc_coefficient_table_texcoord((R).x, (G).x), 0.0).xy,             \
+      textureLod(TABLE, matc_coefficient_table_texcoord((R).y, (G).y), 0.0).xy,                  \
+      textureLod(TABLE, matc_coefficient_table_texcoord((R).z, (G).z), 0.0).xy)
+
+// Reflectivity and edge tint per colour channel.
+struct MatcArtistic {
+  vec3 reflectivity;
+  vec3 edge_tint;
+};
+
+// Gulbrandsen's inverse mapping: a complex IOR n + ik per channel (e.g. from n and k textures)
+// to r = F0 and g = (n_max(r) - n) / (n_max(r) - n_min(r)), both clamped to [0, 1]; written
+// without the division by 1 - sqrt(r) so that r -> 1 stays finite.
+MatcArtistic matc_artistic_from_ior(vec3 n, vec3 k) {
+  vec3 k2 = k * k;
+  vec3 r = clamp(((n - 1.0) * (n - 1.0) + k2) / ((n + 1.0) * (n + 1.0) + k2), 0.0, 1.0);
+  vec3 sqrt_r = sqrt(r);
+  vec3 above = (1.0 + sqrt_r) * (1.0 + r) - n * (1.0 - sqrt_r) * (1.0 + r);
+  vec3 span = (1.0 + sqrt_r) * (1.0 + r) - (1.0 - r) * (1.0 - sqrt_r);
+  vec3 g = mix(vec3(0.0), clamp(above / max(span, vec3(1e-30)), 0.0, 1.0),
+               greaterThan(span, vec3(0.0)));
+  return MatcArtistic(r, g);
+}
