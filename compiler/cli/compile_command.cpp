@@ -172,6 +172,13 @@ int run_compile(const CompileOptions& options) {
   if (options.validate) {
     validator = open_device_validator(build, options.device);
     if (!validator) return kExitNoDevice;
+    if (build.options().emit.contains(OutputKind::coefficient_table) &&
+        !validate_coefficient_table_and_report(*validator)) {
+      fmt::print(stderr,
+                 "matc: error: the coefficient-table path differs from the CPU runtime on the "
+                 "Vulkan device (lines above); nothing written\n");
+      return kExitValidationFailed;
+    }
   }
   const runtime::BasisView basis = build.basis();
   const fs::path output_directory(options.output_directory);

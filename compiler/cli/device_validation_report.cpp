@@ -33,6 +33,48 @@ std::unique_ptr<DeviceValidator> open_device_validator(const Build& build,
   }
 }
 
+namespace {
+
+// Prints the validation layer's messages since `messages_before`; false when there were any.
+bool report_layer_messages(const DeviceValidator& validator, std::size_t messages_before,
+                           std::string_view subject) {
+  const std::vector<std::string> messages = validator.layer_messages();
+  for (std::size_t i = messages_before; i < messages.size(); ++i)
+    fmt::print(stderr, "{}: validation layer: {}\n", subject, messages[i]);
+  return messages.size() == messages_before;
+}
+
+std::string describe_table(const char* label, const TableDiscrepancy& found, double tolerance,
+                           const std::vector<TableQuery>& queries, bool from_ior) {
+  if (found.max_abs <= tolerance) return fmt::format("  {} {:.2e}", label, found.max_abs);
+  const TableQuery& q = queries[found.query];
+  const auto& first = from_ior ? q.n : q.reflectivity;
+  const auto& second = from_ior ? q.k : q.edge_tint;
+  return fmt::format(
+      "  {} {:.2e} > {:.0e} at {} ({:.4f}, {:.4f}, {:.4f}), {} ({:.4f}, {:.4f}, "
+      "{:.4f}), mu {:.4f}, NdotV {:.4f}, roughness {:.4f}",
+      label, found.max_abs, tolerance, from_ior ? "n" : "r", first[0], first[1], first[2],
+      from_ior ? "k" : "g", second[0], second[1], second[2], q.mu, q.ndotv, q.roughness);
+}
+
+}  // namespace
+
+bool validate_coefficient_table_and_report(const DeviceValidator& validator) {
+  const std::size_t messages_before = validator.layer_messages().size();
+  const TableValidation result = validator.validate_coefficient_table();
+  const std::vector<TableQuery> queries = table_validation_queries();
+  const double tolerance = validator.tolerance().preintegrated;
+  for (const TablePathValidation& path : result.paths) {
+    std::string line = fmt::format("{:<20} {}", "coefficient table",
+                                   path.language == ShaderLanguage::glsl ? "GLSL" : "HLSL");
+    line += describe_table("F(r, g)", path.fresnel, tolerance, queries, false);
+    line += describe_table("Fbar(r, g)", path.preintegrated, tolerance, queries, false);
+    line += describe_table("F(n, k)", path.from_ior, tolerance, queries, true);
+    fmt::print("{}  {}\n", line, path.passed ? "ok" : "FAILED");
+  }
+  return report_layer_messages(validator, messages_before, "coefficient table") && result.passed();
+}
+
 bool validate_and_report(const DeviceValidator& validator, const CompiledMaterial& compiled) {
   const std::size_t messages_before = validator.layer_messages().size();
   const MaterialValidation result = validator.validate(compiled);
@@ -45,10 +87,7 @@ bool validate_and_report(const DeviceValidator& validator, const CompiledMateria
     if (path.embedded) line += describe("embedded Fbar", *path.embedded, tolerance.embedded, false);
     fmt::print("{}  {}\n", line, path.passed ? "ok" : "FAILED");
   }
-  const std::vector<std::string> messages = validator.layer_messages();
-  for (std::size_t i = messages_before; i < messages.size(); ++i)
-    fmt::print(stderr, "{}: validation layer: {}\n", result.name, messages[i]);
-  return result.passed() && messages.size() == messages_before;
+  return report_layer_messages(validator, messages_before, result.name) && result.passed();
 }
 
 }  // namespace matc::cli

@@ -18,4 +18,8 @@ std::unique_ptr<DeviceValidator> open_device_validator(const Build& build,
 // prints the validation layer's new messages. False when a path failed or the layer spoke.
 bool validate_and_report(const DeviceValidator& validator, const CompiledMaterial& compiled);
 
+// Validates the coefficient-table path (textured metals) from GLSL and HLSL and prints a line
+// for each. False when a path failed or the layer spoke.
+bool validate_coefficient_table_and_report(const DeviceValidator& validator);
+
 }  // namespace matc::cli

@@ -18,6 +18,7 @@ int run_validate(const ValidateOptions& options) {
   const runtime::BasisView basis = build.basis();
   std::size_t invalid_inputs = 0;
   std::size_t failed = 0;
+  const bool table_passed = validate_coefficient_table_and_report(*validator);
   for (const std::string& file : options.files) {
     const ParseResult parsed = read_material_file(file);
     print_diagnostics(parsed.diagnostics);
@@ -35,7 +36,8 @@ int run_validate(const ValidateOptions& options) {
   fmt::print("matc validate: {} of {} materials passed on both front ends{}\n", validated - failed,
              validated,
              invalid_inputs > 0 ? fmt::format(", {} files invalid", invalid_inputs) : "");
-  if (failed > 0) return kExitValidationFailed;
+  if (!table_passed) fmt::print("matc validate: the coefficient-table path FAILED\n");
+  if (failed > 0 || !table_passed) return kExitValidationFailed;
   return invalid_inputs > 0 ? kExitInputError : kExitSuccess;
 }
 

@@ -16,7 +16,9 @@ vec2 matc_coefficient_table_texcoord(float r, float g) {
   float delta = 2.0 * sqrt_r / (1.0 + reflectivity);
   float series = edge_tint * (1.0 + edge_tint * delta * (0.5 + edge_tint * delta / 3.0)) /
                  (1.0 + delta * (0.5 + delta / 3.0));
-  float logs = log(max(1.0 - edge_tint * delta, 1e-30)) / log(max(1.0 - delta, 1e-30));
+  // 1 - delta and 1 - g delta written so that r -> 1 does not cancel.
+  float rest = (1.0 - sqrt_r) * (1.0 - sqrt_r) / (1.0 + reflectivity);
+  float logs = log(max((1.0 - edge_tint) + edge_tint * rest, 1e-30)) / log(max(rest, 1e-30));
   vec2 axes = vec2(sqrt_r, clamp(delta < 0.01 ? series : logs, 0.0, 1.0));
   return (axes * float(MATC_COEFFICIENT_TABLE_SIZE - 1) + 0.5) /
          float(MATC_COEFFICIENT_TABLE_SIZE);
@@ -41,11 +43,8 @@ MatcFresnelCoefficients matc_coefficients_from_table(vec3 r, vec2 red, vec2 gree
 // The same with the three fetches: TABLE is a sampler2D expression (in Vulkan GLSL
 // sampler2D(texture, sampler), which must appear at its point of use, hence a macro).
 // R and G (vec3) are evaluated more than once: pass variables.
-#define MATC_COEFFICIENTS_FROM_TABLE(TABLE, R, G)                                                 \
-  matc_coefficients_from_table(                                                                  \
-      (R), textureLod(TABLE, matc_coefficient_table_texcoord((R).x, (G).x), 0.0).xy,             \
-      textureLod(TABLE, matc_coefficient_table_texcoord((R).y, (G).y), 0.0).xy,                  \
-      textureLod(TABLE, matc_coefficient_table_texcoord((R).z, (G).z), 0.0).xy)
+// (One line: GLSL 3.30 and GLSL ES 3.00 have no line continuation.)
+#define MATC_COEFFICIENTS_FROM_TABLE(TABLE, R, G) matc_coefficients_from_table((R), textureLod(TABLE, matc_coefficient_table_texcoord((R).x, (G).x), 0.0).xy, textureLod(TABLE, matc_coefficient_table_texcoord((R).y, (G).y), 0.0).xy, textureLod(TABLE, matc_coefficient_table_texcoord((R).z, (G).z), 0.0).xy)
 
 // Reflectivity and edge tint per colour channel.
 struct MatcArtistic {

@@ -46,6 +46,14 @@ SpirvWords library_module(std::string source, std::string name,
   return optimize_spirv(library, SpirvTarget::universal_1_3, name);
 }
 
+// A compute kernel compiled, validated and optimised for Vulkan 1.1.
+SpirvWords vulkan_compute_module(ShaderLanguage language, std::string source,
+                                 const std::string& source_name) {
+  const SpirvWords words = compile_to_spirv({language, std::move(source), source_name});
+  validate_spirv(words, SpirvTarget::vulkan_1_1, source_name);
+  return optimize_spirv(words, SpirvTarget::vulkan_1_1, source_name);
+}
+
 std::string spirv_bytes(const SpirvWords& words) {
   std::string bytes(words.size() * sizeof(std::uint32_t), '\0');
   for (std::size_t i = 0; i < words.size(); ++i) {
@@ -200,11 +208,17 @@ SpirvWords Build::validation_module(ShaderLanguage language,
   const std::string& name = compiled.material.name;
   const std::string source_name =
       fmt::format("{}.validate{}", name, shader_file_extension(language));
-  const std::string source = validation_kernel_source(language, library_source(language),
-                                                      material_source(language, compiled), name);
-  const SpirvWords words = compile_to_spirv({language, source, source_name});
-  validate_spirv(words, SpirvTarget::vulkan_1_1, source_name);
-  return optimize_spirv(words, SpirvTarget::vulkan_1_1, source_name);
+  return vulkan_compute_module(language,
+                               validation_kernel_source(language, library_source(language),
+                                                        material_source(language, compiled), name),
+                               source_name);
+}
+
+SpirvWords Build::table_validation_module(ShaderLanguage language) const {
+  const std::string source_name =
+      fmt::format("matc_coefficient_table.validate{}", shader_file_extension(language));
+  return vulkan_compute_module(
+      language, table_validation_kernel_source(language, library_source(language)), source_name);
 }
 
 MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const {

@@ -15,4 +15,10 @@ std::string validation_kernel_source(ShaderLanguage language, std::string_view l
        {"material", std::string(material)}});
 }
 
+std::string table_validation_kernel_source(ShaderLanguage language, std::string_view library) {
+  return fill_template(
+      language == ShaderLanguage::glsl ? "glsl/validate_table.comp" : "hlsl/validate_table.hlsl",
+      {{"version", kVersion}, {"library", std::string(library)}});
+}
+
 }  // namespace matc

@@ -7,16 +7,13 @@
 #include "matc/runtime/basis_polynomial.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/lut.h"
-#include "matc/vulkan/buffer.h"
 #include "matc/vulkan/compute_kernel.h"
-#include "matc/vulkan/image.h"
-#include "matc/vulkan/sampler.h"
+#include "validator_device.h"
 
 namespace matc {
 namespace {
 
 constexpr std::size_t kGridSteps = 40;  // 41 points per axis
-constexpr std::uint32_t kWorkgroupSize = 64;
 
 void record(Discrepancy& discrepancy, const runtime::Rgb& expected, const float* actual,
             const ValidationQuery& query) {
@@ -52,30 +49,14 @@ bool MaterialValidation::passed() const {
          std::all_of(paths.begin(), paths.end(), [](const PathValidation& p) { return p.passed; });
 }
 
-struct DeviceValidator::Device {
-  vulkan::Context context;
-  vulkan::Image lut;
-  vulkan::LutSampler sampler;
-  vulkan::Buffer queries;
-  vulkan::Buffer results;
-
-  Device(const vulkan::ContextOptions& options, const Lut& table, std::size_t query_count)
-      : context(options),
-        lut(context, static_cast<std::uint32_t>(table.size), static_cast<std::uint32_t>(table.size),
-            table.texels),
-        sampler(context),
-        queries(context, query_count * 4 * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-        results(context, query_count * kValidationResultsPerQuery * 4 * sizeof(float),
-                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {}
-};
-
 DeviceValidator::DeviceValidator(const Build& build, const vulkan::ContextOptions& device,
                                  ValidationTolerance tolerance)
     : build_(build), tolerance_(tolerance), queries_(validation_queries()) {
   // Whole workgroups: the padding queries (zeros) are computed but not compared.
   const std::size_t padded =
       (queries_.size() + kWorkgroupSize - 1) / kWorkgroupSize * kWorkgroupSize;
-  device_ = std::make_unique<Device>(device, build.stored_lut(), padded);
+  device_ = std::make_unique<Device>(device, build.stored_lut(), build.stored_coefficient_table(),
+                                     padded);
   std::vector<float> packed(padded * 4, 0.0f);
   for (std::size_t i = 0; i < queries_.size(); ++i) {
     packed[4 * i] = queries_[i].mu;

@@ -95,6 +95,9 @@ class Build {
   // validated for Vulkan 1.1.
   SpirvWords validation_module(ShaderLanguage language, const CompiledMaterial& compiled) const;
 
+  // The coefficient-table path's compute module (emit/validation_kernel.h), likewise.
+  SpirvWords table_validation_module(ShaderLanguage language) const;
+
   // matc_manifest.json: version, options, and every file written with its hash.
   nlohmann::ordered_json manifest(const std::vector<OutputFile>& shared,
                                   std::span<const MaterialOutputs> materials) const;

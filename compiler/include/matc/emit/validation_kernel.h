@@ -18,4 +18,12 @@ inline constexpr std::size_t kValidationResultsPerQuery = 3;
 std::string validation_kernel_source(ShaderLanguage language, std::string_view library,
                                      std::string_view material, std::string_view material_name);
 
+// The coefficient-table path's kernel (templates/*/validate_table.*): bindings 0 queries (four vec4
+// each: r.rgb and mu, g.rgb and NdotV, n.rgb and roughness, k.rgb), 1 results (three vec4: F and
+// Fbar from (r, g), F from (n, k)), 2 the preintegrated table, 3 the sampler of both tables, 4 the
+// coefficient table (its .xy).
+inline constexpr std::size_t kTableValidationQueryVectors = 4;
+inline constexpr std::size_t kTableValidationResultsPerQuery = 3;
+std::string table_validation_kernel_source(ShaderLanguage language, std::string_view library);
+
 }  // namespace matc

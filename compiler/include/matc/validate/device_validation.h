@@ -58,6 +58,38 @@ struct MaterialValidation {
   bool passed() const;
 };
 
+// The coefficient-table path (textured metals): per query a reflectivity, edge tint, n and k per
+// channel, a cosine mu and (NdotV, roughness). table_validation_queries() spreads them over
+// [0, 1] (table edges included) and n in [0.05, 4], k in [0, 8].
+struct TableQuery {
+  std::array<float, 3> reflectivity{};
+  std::array<float, 3> edge_tint{};
+  std::array<float, 3> n{};
+  std::array<float, 3> k{};
+  float mu = 0.0f;
+  float ndotv = 0.0f;
+  float roughness = 0.0f;
+};
+std::vector<TableQuery> table_validation_queries();
+
+struct TableDiscrepancy {
+  double max_abs = 0.0;
+  std::size_t query = 0;  // index into table_validation_queries()
+};
+
+struct TablePathValidation {
+  ShaderLanguage language = ShaderLanguage::glsl;
+  TableDiscrepancy fresnel;        // F(mu) from (r, g)
+  TableDiscrepancy preintegrated;  // Fbar from (r, g)
+  TableDiscrepancy from_ior;       // F(mu) from (n, k)
+  bool passed = false;
+};
+
+struct TableValidation {
+  std::vector<TablePathValidation> paths;  // GLSL, then HLSL
+  bool passed() const;
+};
+
 class DeviceValidator {
  public:
   // Opens the device and uploads the build's stored table once. Throws vulkan::VulkanError
@@ -70,6 +102,9 @@ class DeviceValidator {
 
   // Runs both front ends' kernels for one material.
   MaterialValidation validate(const CompiledMaterial& compiled) const;
+  // Runs both front ends' coefficient-table kernels against the CPU runtime (tolerance: the
+  // preintegrated one, since every result goes through a sampler).
+  TableValidation validate_coefficient_table() const;
 
   std::string device_name() const;
   const ValidationTolerance& tolerance() const { return tolerance_; }
@@ -78,6 +113,7 @@ class DeviceValidator {
 
  private:
   PathValidation run(ShaderLanguage language, const CompiledMaterial& compiled) const;
+  TablePathValidation run_table(ShaderLanguage language) const;
 
   struct Device;
   const Build& build_;

@@ -1,0 +1,131 @@
+// DeviceValidator::validate_coefficient_table: the textured-metal path, run from GLSL and HLSL.
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "matc/emit/validation_kernel.h"
+#include "matc/runtime/basis_polynomial.h"
+#include "matc/runtime/coefficient_table.h"
+#include "matc/runtime/lut.h"
+#include "matc/validate/device_validation.h"
+#include "matc/vulkan/compute_kernel.h"
+#include "validator_device.h"
+
+namespace matc {
+namespace {
+
+constexpr std::size_t kTableQueries = 4096;
+
+void record(TableDiscrepancy& discrepancy, const runtime::Rgb& expected, const float* actual,
+            std::size_t query) {
+  for (std::size_t channel = 0; channel < 3; ++channel) {
+    const double difference = std::abs(static_cast<double>(actual[channel]) - expected[channel]);
+    // A NaN from the device must fail, not compare false and pass.
+    if (std::isnan(difference) || difference > discrepancy.max_abs) {
+      discrepancy.max_abs = std::isnan(difference) ? INFINITY : difference;
+      discrepancy.query = query;
+    }
+  }
+}
+
+runtime::Rgb as_rgb(const std::array<float, 3>& values) {
+  return {values[0], values[1], values[2]};
+}
+
+}  // namespace
+
+std::vector<TableQuery> table_validation_queries() {
+  // Fixed-seed draws (mt19937_64's output is specified by the standard), with every eighth query
+  // on the table's edges: r and g of 0 or 1 in some channel.
+  std::mt19937_64 generator(14);
+  const auto unit = [&] {
+    return static_cast<float>(static_cast<double>(generator() >> 40) * 0x1.0p-24);
+  };
+  std::vector<TableQuery> queries(kTableQueries);
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    TableQuery& q = queries[i];
+    for (std::size_t c = 0; c < 3; ++c) {
+      q.reflectivity[c] = unit();
+      q.edge_tint[c] = unit();
+      q.n[c] = 0.05f * std::pow(80.0f, unit());
+      q.k[c] = 8.0f * unit();
+    }
+    if (i % 8 == 0) {
+      q.reflectivity[i / 8 % 3] = static_cast<float>(i / 24 % 2);
+      q.edge_tint[(i / 8 + 1) % 3] = static_cast<float>(i / 48 % 2);
+    }
+    q.mu = unit();
+    q.ndotv = unit();
+    q.roughness = unit();
+  }
+  return queries;
+}
+
+bool TableValidation::passed() const {
+  return !paths.empty() && std::all_of(paths.begin(), paths.end(),
+                                       [](const TablePathValidation& p) { return p.passed; });
+}
+
+TableValidation DeviceValidator::validate_coefficient_table() const {
+  TableValidation validation;
+  for (const ShaderLanguage language : {ShaderLanguage::glsl, ShaderLanguage::hlsl})
+    validation.paths.push_back(run_table(language));
+  return validation;
+}
+
+TablePathValidation DeviceValidator::run_table(ShaderLanguage language) const {
+  const std::vector<TableQuery> queries = table_validation_queries();
+  std::vector<float> packed;
+  packed.reserve(queries.size() * kTableValidationQueryVectors * 4);
+  for (const TableQuery& q : queries) {
+    packed.insert(packed.end(), {q.reflectivity[0], q.reflectivity[1], q.reflectivity[2], q.mu});
+    packed.insert(packed.end(), {q.edge_tint[0], q.edge_tint[1], q.edge_tint[2], q.ndotv});
+    packed.insert(packed.end(), {q.n[0], q.n[1], q.n[2], q.roughness});
+    packed.insert(packed.end(), {q.k[0], q.k[1], q.k[2], 0.0f});
+  }
+  const vulkan::Context& context = device_->context;
+  vulkan::Buffer query_buffer(context, packed.size() * sizeof(float),
+                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  query_buffer.write<float>(packed);
+  vulkan::Buffer result_buffer(context,
+                               queries.size() * kTableValidationResultsPerQuery * 4 * sizeof(float),
+                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  const std::array bindings = {
+      vulkan::Binding::storage_buffer(0, query_buffer),
+      vulkan::Binding::storage_buffer(1, result_buffer),
+      vulkan::Binding::sampled_image(2, device_->lut),
+      vulkan::Binding::separate_sampler(3, device_->sampler),
+      vulkan::Binding::sampled_image(4, device_->coefficient_table),
+  };
+  const vulkan::ComputeKernel kernel(context, build_.table_validation_module(language), bindings);
+  static_assert(kTableQueries % kWorkgroupSize == 0, "whole workgroups");
+  kernel.dispatch(static_cast<std::uint32_t>(queries.size() / kWorkgroupSize));
+  const std::vector<float> results =
+      result_buffer.read<float>(queries.size() * kTableValidationResultsPerQuery * 4);
+
+  const runtime::BasisPolynomial& polynomial =
+      runtime::shipped_basis_polynomial(build_.options().basis);
+  const runtime::CoefficientTableView table = build_.stored_coefficient_table().view();
+  const runtime::LutView lut = build_.stored_lut().view();
+  TablePathValidation path;
+  path.language = language;
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const TableQuery& q = queries[i];
+    const float* result = &results[i * kTableValidationResultsPerQuery * 4];
+    const runtime::Coefficients coefficients =
+        runtime::coefficients_from_table(table, as_rgb(q.reflectivity), as_rgb(q.edge_tint));
+    record(path.fresnel, runtime::evaluate_fresnel(coefficients, polynomial, q.mu), result, i);
+    record(path.preintegrated, runtime::evaluate_fbar(coefficients, lut, q.ndotv, q.roughness),
+           result + 4, i);
+    const runtime::ArtisticRgb artistic = runtime::artistic_from_ior(as_rgb(q.n), as_rgb(q.k));
+    const runtime::Coefficients from_ior =
+        runtime::coefficients_from_table(table, artistic.reflectivity, artistic.edge_tint);
+    record(path.from_ior, runtime::evaluate_fresnel(from_ior, polynomial, q.mu), result + 8, i);
+  }
+  const double tolerance = tolerance_.preintegrated;
+  path.passed = path.fresnel.max_abs <= tolerance && path.preintegrated.max_abs <= tolerance &&
+                path.from_ior.max_abs <= tolerance;
+  return path;
+}
+
+}  // namespace matc

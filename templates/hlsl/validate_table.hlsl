@@ -1,0 +1,33 @@
+// matc {{version}}: the compute kernel that checks the coefficient-table path (textured metals) on
+// a Vulkan device against the CPU runtime. Each query is four float4: (r.rgb, mu),
+// (g.rgb, NdotV), (n.rgb, roughness), (k.rgb, -); it writes F(mu) and the preintegrated F from
+// the (r, g) coefficients, and F(mu) from the (n, k) ones through matc_artistic_from_ior.
+{{library}}
+[[vk::binding(0, 0)]] StructuredBuffer<float4> matc_queries : register(t0);
+[[vk::binding(1, 0)]] RWStructuredBuffer<float4> matc_results : register(u1);
+[[vk::binding(2, 0)]] Texture2D<float4> matc_lut : register(t2);
+[[vk::binding(3, 0)]] SamplerState matc_linear_sampler : register(s3);
+[[vk::binding(4, 0)]] Texture2D<float4> matc_coefficient_table : register(t4);
+
+[numthreads(64, 1, 1)]
+void main(uint3 id : SV_DispatchThreadID) {
+  uint i = id.x;
+  float4 reflectivity_mu = matc_queries[4 * i];
+  float4 edge_tint_ndotv = matc_queries[4 * i + 1];
+  float4 n_roughness = matc_queries[4 * i + 2];
+  float4 k = matc_queries[4 * i + 3];
+  float3 r = reflectivity_mu.xyz;
+  float3 g = edge_tint_ndotv.xyz;
+  MatcFresnelCoefficients c =
+      MATC_COEFFICIENTS_FROM_TABLE(matc_coefficient_table, matc_linear_sampler, r, g);
+  float4 bbar = matc_lut.SampleLevel(matc_linear_sampler,
+                                     matc_lut_texcoord(edge_tint_ndotv.w, n_roughness.w), 0.0);
+  MatcArtistic artistic = matc_artistic_from_ior(n_roughness.xyz, k.xyz);
+  float3 ior_r = artistic.reflectivity;
+  float3 ior_g = artistic.edge_tint;
+  MatcFresnelCoefficients from_ior =
+      MATC_COEFFICIENTS_FROM_TABLE(matc_coefficient_table, matc_linear_sampler, ior_r, ior_g);
+  matc_results[3 * i] = float4(matc_fresnel(c, reflectivity_mu.w), 1.0);
+  matc_results[3 * i + 1] = float4(matc_fresnel_preintegrated(c, bbar), 1.0);
+  matc_results[3 * i + 2] = float4(matc_fresnel(from_ior, reflectivity_mu.w), 1.0);
+}
