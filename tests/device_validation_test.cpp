@@ -68,3 +68,50 @@ TEST(DeviceValidation, ZeroToleranceFails) {
 }
 
 }  // namespace
+
+// The coefficient-table path (textured metals) from both front ends, with the validation layer
+// on, for both shipped bases and an f16 table.
+TEST(DeviceValidation, CoefficientTablePathMatchesTheCpuRuntime) {
+  for (const auto basis : {matc::runtime::BasisKind::extended, matc::runtime::BasisKind::paper}) {
+    for (const auto precision : {matc::LutPrecision::f32, matc::LutPrecision::f16}) {
+      matc::BuildOptions options = small_build();
+      options.basis = basis;
+      options.lut_precision = precision;
+      const matc::Build build(options);
+      const matc::DeviceValidator validator(build, {true, ""});
+      const matc::TableValidation result = validator.validate_coefficient_table();
+      ASSERT_EQ(result.paths.size(), 2u);
+      EXPECT_TRUE(result.passed()) << matc::runtime::basis_name(basis);
+      for (const matc::TablePathValidation& path : result.paths) {
+        EXPECT_LE(path.fresnel.max_abs, 1e-4);
+        EXPECT_LE(path.preintegrated.max_abs, 1e-4);
+        EXPECT_LE(path.from_ior.max_abs, 1e-4);
+      }
+      EXPECT_TRUE(validator.layer_messages().empty());
+    }
+  }
+}
+
+TEST(DeviceValidation, CoefficientTableQueriesReachTheTableEdges) {
+  const auto queries = matc::table_validation_queries();
+  ASSERT_EQ(queries.size(), 4096u);
+  bool r0 = false, r1 = false, g0 = false, g1 = false;
+  for (const matc::TableQuery& q : queries) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      r0 |= q.reflectivity[c] == 0.0f;
+      r1 |= q.reflectivity[c] == 1.0f;
+      g0 |= q.edge_tint[c] == 0.0f;
+      g1 |= q.edge_tint[c] == 1.0f;
+      EXPECT_GE(q.n[c], 0.05f);
+      EXPECT_LE(q.k[c], 8.0f);
+    }
+  }
+  EXPECT_TRUE(r0 && r1 && g0 && g1);
+}
+
+// A zero tolerance fails the table path too: the check can fail.
+TEST(DeviceValidation, CoefficientTableZeroToleranceFails) {
+  const matc::Build build(small_build());
+  const matc::DeviceValidator validator(build, {false, ""}, {0.0, 0.0, 0.0});
+  EXPECT_FALSE(validator.validate_coefficient_table().passed());
+}

@@ -54,7 +54,9 @@ int run_validate(const ValidateOptions& options);
 std::vector<std::string> split_list(const std::string& list);
 
 struct EvalOptions {
-  std::string file;
+  std::string file;          // a material file, or:
+  std::string reflectivity;  // --reflectivity and --edge-tint: the coefficient-table path
+  std::string edge_tint;
   std::vector<double> mu;
   std::vector<double> ndotv;
   std::vector<double> roughness;

@@ -74,7 +74,13 @@ int main(int argc, char** argv) {
   EvalOptions eval;
   CLI::App* eval_command =
       app.add_subcommand("eval", "Evaluate a material's decomposed and exact Fresnel as JSON");
-  eval_command->add_option("file", eval.file, "Material file")->required();
+  eval_command->add_option("file", eval.file,
+                           "Material file (or give --reflectivity and --edge-tint)");
+  eval_command->add_option("--reflectivity", eval.reflectivity,
+                           "Gulbrandsen reflectivity r per channel (R,G,B or one grey value in "
+                           "[0, 1]): F from the coefficient table beside the per-material compile");
+  eval_command->add_option("--edge-tint", eval.edge_tint,
+                           "Gulbrandsen edge tint g per channel, with --reflectivity");
   eval_command->add_option("--mu", eval.mu, "Cosines of incidence, comma-separated: F")
       ->delimiter(',')
       ->check(CLI::Range(0.0, 1.0));

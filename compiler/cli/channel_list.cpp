@@ -1,0 +1,40 @@
+#include "channel_list.h"
+
+#include <charconv>
+#include <cmath>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "commands.h"
+
+namespace matc::cli {
+
+std::optional<std::array<double, 3>> parse_channel_list(const std::string& option,
+                                                        const std::string& text) {
+  const auto fail = [&](const std::string& problem) -> std::optional<std::array<double, 3>> {
+    fmt::print(stderr,
+               "matc eval: error: {}: {}; give one value (grey) or three (R,G,B), each in [0, 1], "
+               "comma-separated\n",
+               option, problem);
+    return std::nullopt;
+  };
+  const std::vector<std::string> items = split_list(text);
+  if (items.size() != 1 && items.size() != 3)
+    return fail(fmt::format("{} values given", items.size()));
+  std::array<double, 3> values{};
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string& item = items[i];
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), value);
+    if (item.empty() || error != std::errc() || end != item.data() + item.size())
+      return fail(fmt::format("'{}' is not a number", item));
+    if (!std::isfinite(value) || value < 0.0 || value > 1.0)
+      return fail(fmt::format("{} is outside [0, 1]", item));
+    values[i] = value;
+  }
+  if (items.size() == 1) values = {values[0], values[0], values[0]};
+  return values;
+}
+
+}  // namespace matc::cli

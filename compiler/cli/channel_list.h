@@ -1,0 +1,15 @@
+// Parsing a per-channel option such as `--reflectivity 0.9,0.6,0.3`: one value (grey) or three
+// (R, G, B), each a number in [0, 1].
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+
+namespace matc::cli {
+
+// The three values, or nullopt after printing `matc eval: error: OPTION: ...` on standard error.
+std::optional<std::array<double, 3>> parse_channel_list(const std::string& option,
+                                                        const std::string& text);
+
+}  // namespace matc::cli
