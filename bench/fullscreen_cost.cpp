@@ -61,6 +61,15 @@ int main(int argc, char** argv) {
   const auto size = static_cast<std::uint32_t>(build.stored_lut().size);
   const matc::vulkan::Image ours_table(context, size, size, build.stored_lut().texels);
   const matc::vulkan::Image schlick_table(context, size, size, lobe_lut.texels);
+  // The coefficient table as RGBA32F (.xy used): the same filtering as an RG texture.
+  const matc::CoefficientTable& coefficients = build.stored_coefficient_table();
+  std::vector<float> coefficient_texels(coefficients.size() * coefficients.size() * 4, 0.0f);
+  for (std::size_t i = 0; i < coefficients.size() * coefficients.size(); ++i) {
+    coefficient_texels[4 * i] = coefficients.texels[2 * i];
+    coefficient_texels[4 * i + 1] = coefficients.texels[2 * i + 1];
+  }
+  const auto table_size = static_cast<std::uint32_t>(coefficients.size());
+  const matc::vulkan::Image coefficient_table(context, table_size, table_size, coefficient_texels);
   const matc::vulkan::LutSampler sampler(context);
   const matc::SpirvWords vertex = matc::compile_fullscreen_stage(
       matc::fullscreen_vertex_source(), matc::ShaderStage::vertex, "fullscreen.vert");
@@ -77,25 +86,32 @@ int main(int argc, char** argv) {
       "Measured on {}, {} CPU thread(s) on the host ({} frames after {} warm-up frames per "
       "variant, interleaved; medians):\n\n"
       "| pass (1280x720, material figure2_edge_tint) | Schlick (ms) | ours (ms) | ours / "
-      "Schlick | host: Schlick (ms) | host: ours (ms) | host: ours / Schlick |\n"
-      "|---|---:|---:|---:|---:|---:|---:|\n",
+      "Schlick | ours, coefficient table (ms) | table / Schlick | host: Schlick (ms) | host: ours "
+      "(ms) | host: ours / Schlick | host: table (ms) | host: table / Schlick |\n"
+      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
       context.device_name(), std::thread::hardware_concurrency(), frames, warmup);
   for (const Variant& variant : variants) {
-    std::array<std::unique_ptr<matc::vulkan::FullscreenPass>, 2> passes;
-    for (const matc::FresnelModel model : {matc::FresnelModel::schlick, matc::FresnelModel::ours}) {
-      const bool ours = model == matc::FresnelModel::ours;
-      const matc::SpirvWords fragment = matc::compile_fullscreen_stage(
-          matc::cost_pass_source(build, material, model, variant.quantity, kWidth, kHeight),
-          matc::ShaderStage::fragment, "cost_pass.frag");
-      const std::array bindings = {
-          matc::vulkan::Binding::sampled_image(0, ours ? ours_table : schlick_table),
+    // Schlick, ours (compiled), ours (coefficient table), in that order.
+    constexpr std::array kModels = {matc::FresnelModel::schlick, matc::FresnelModel::ours,
+                                    matc::FresnelModel::table};
+    std::array<std::unique_ptr<matc::vulkan::FullscreenPass>, kModels.size()> passes;
+    for (std::size_t which = 0; which < kModels.size(); ++which) {
+      const bool schlick = kModels[which] == matc::FresnelModel::schlick;
+      const matc::SpirvWords fragment =
+          matc::compile_fullscreen_stage(matc::cost_pass_source(build, material, kModels[which],
+                                                                variant.quantity, kWidth, kHeight),
+                                         matc::ShaderStage::fragment, "cost_pass.frag");
+      std::vector<matc::vulkan::Binding> bindings = {
+          matc::vulkan::Binding::sampled_image(0, schlick ? schlick_table : ours_table),
           matc::vulkan::Binding::separate_sampler(1, sampler)};
-      passes[ours ? 1 : 0] = std::make_unique<matc::vulkan::FullscreenPass>(
-          context, vertex, fragment, bindings, kWidth, kHeight);
+      if (kModels[which] == matc::FresnelModel::table)
+        bindings.push_back(matc::vulkan::Binding::sampled_image(2, coefficient_table));
+      passes[which] = std::make_unique<matc::vulkan::FullscreenPass>(context, vertex, fragment,
+                                                                     bindings, kWidth, kHeight);
     }
-    std::array<Timings, 2> timings;
+    std::array<Timings, kModels.size()> timings;
     for (int frame = 0; frame < warmup + frames; ++frame) {
-      for (std::size_t which = 0; which < 2; ++which) {
+      for (std::size_t which = 0; which < kModels.size(); ++which) {
         const matc::vulkan::FrameTime time = passes[which]->draw();
         if (frame < warmup) continue;
         timings[which].device_ms.push_back(time.device_ms);
@@ -106,10 +122,15 @@ int main(int argc, char** argv) {
     // submit-to-fence time, which adds the same submission overhead to both.
     const double schlick = median(timings[0].device_ms);
     const double ours = median(timings[1].device_ms);
+    const double table = median(timings[2].device_ms);
     const double schlick_host = median(timings[0].wall_ms);
     const double ours_host = median(timings[1].wall_ms);
-    fmt::print("| {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} |\n", variant.label,
-               schlick, ours, ours / schlick, schlick_host, ours_host, ours_host / schlick_host);
+    const double table_host = median(timings[2].wall_ms);
+    fmt::print(
+        "| {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | "
+        "{:.3f} |\n",
+        variant.label, schlick, ours, ours / schlick, table, table / schlick, schlick_host,
+        ours_host, ours_host / schlick_host, table_host, table_host / schlick_host);
   }
   return 0;
 }

@@ -219,6 +219,10 @@ std::vector<Design> designs() {
                    "above)",
                    shipped.size()),
        kib(shipped.size(), 2), from_table(matc::stored_as(shipped, matc::LutPrecision::f16))});
+  for (const std::size_t size : {64u, 96u}) {
+    all.push_back({fmt::format("{}², sqrt r, **1/n**, c_2 c_3, minimax, f32", size), kib(size, 4),
+                   from_table(table(size, kSqrt, EdgeTintAxis::inverse_ior, kRaw, kMinimax))});
+  }
   all.push_back({"64², sqrt r, **g**, c_2 c_3, minimax, f32", kib(64, 4),
                  from_table(table(64, kSqrt, EdgeTintAxis::linear, kRaw, kMinimax))});
   for (const std::size_t size : {96u}) {

@@ -1,12 +1,16 @@
 #version 450
-// matc {{version}}: the full-screen pass of the cost benchmark (bench/fullscreen_cost.cpp). Both
-// variants read the same RGBA32F table once through the same texture coordinates and write the
-// same target; only the Fresnel differs: {{variant}}.
+// matc {{version}}: the full-screen pass of the cost benchmark (bench/fullscreen_cost.cpp). Every
+// variant reads the same RGBA32F table once through the same texture coordinates and writes the
+// same target; only the Fresnel differs: {{variant}}. The coefficient-table variant also fetches
+// its coefficients, three times, from the table bound at binding 2.
 {{defines}}
 {{library}}
 {{material}}
 layout(set = 0, binding = 0) uniform texture2D matc_lut;
 layout(set = 0, binding = 1) uniform sampler matc_lut_sampler;
+#if MATC_COST_TABLE
+layout(set = 0, binding = 2) uniform texture2D matc_coefficient_table;
+#endif
 layout(location = 0) out vec4 colour;
 
 const vec3 F0 = vec3({{f0}});
@@ -14,9 +18,19 @@ const vec3 F0 = vec3({{f0}});
 void main() {
   // Every pixel a different (NdotV, roughness), like the pixels of a shaded object.
   vec2 uv = gl_FragCoord.xy / vec2({{width}}.0, {{height}}.0);
+#if MATC_COST_TABLE
+  // A textured metal: r and g change from pixel to pixel (a few multiply-adds stand in for the
+  // texture reads every model would make for its base colour).
+  vec3 r = fract(uv.xyx * vec3(3.1, 5.3, 7.7)) * 0.95;
+  vec3 g = fract(uv.yxy * vec3(2.3, 4.1, 6.7));
+  MatcFresnelCoefficients c =
+      MATC_COEFFICIENTS_FROM_TABLE(sampler2D(matc_coefficient_table, matc_lut_sampler), r, g);
+#endif
 #if MATC_COST_DIRECT
   float mu = uv.x;
-#if MATC_COST_OURS
+#if MATC_COST_TABLE
+  vec3 f = matc_fresnel(c, mu);
+#elif MATC_COST_OURS
   vec3 f = matc_fresnel_{{name}}(mu);
 #else
   vec3 f = F0 + (vec3(1.0) - F0) * pow(1.0 - mu, 5.0);
@@ -24,7 +38,9 @@ void main() {
   colour = vec4(f * uv.y, 1.0);
 #else
   vec4 texel = textureLod(sampler2D(matc_lut, matc_lut_sampler), matc_lut_texcoord(uv.x, uv.y), 0.0);
-#if MATC_COST_OURS
+#if MATC_COST_TABLE
+  vec3 f = matc_fresnel_preintegrated(c, texel);
+#elif MATC_COST_OURS
   vec3 f = matc_fresnel_preintegrated_{{name}}(texel);
 #else
   // The table baked from ComparisonLobes: x = albedo, y = Schlick's lobe.

@@ -18,7 +18,7 @@ float2 matc_coefficient_table_texcoord(float r, float g) {
                  (1.0 + delta * (0.5 + delta / 3.0));
   // 1 - delta and 1 - g delta written so that r -> 1 does not cancel.
   float rest = (1.0 - sqrt_r) * (1.0 - sqrt_r) / (1.0 + reflectivity);
-  float logs = log(max((1.0 - edge_tint) + edge_tint * rest, 1e-30)) / log(max(rest, 1e-30));
+  float logs = log2(max((1.0 - edge_tint) + edge_tint * rest, 1e-30)) / log2(max(rest, 1e-30));
   float2 axes = float2(sqrt_r, saturate(delta < 0.01 ? series : logs));
   return (axes * float(MATC_COEFFICIENT_TABLE_SIZE - 1) + 0.5) /
          float(MATC_COEFFICIENT_TABLE_SIZE);

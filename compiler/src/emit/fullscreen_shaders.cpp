@@ -22,14 +22,17 @@ std::string fullscreen_vertex_source() {
 std::string cost_pass_source(const Build& build, const CompiledMaterial& compiled,
                              FresnelModel model, FresnelQuantity quantity, std::uint32_t width,
                              std::uint32_t height) {
-  const bool ours = model == FresnelModel::ours;
+  const bool ours = model != FresnelModel::schlick;
+  const bool table = model == FresnelModel::table;
   const bool direct = quantity == FresnelQuantity::direct;
+  const char* model_name = table ? "ours from the coefficient table" : ours ? "ours" : "Schlick's";
   return fill_template(
       "glsl/cost_pass.frag",
       {{"version", kVersion},
-       {"variant", fmt::format("{} {}", ours ? "ours" : "Schlick's", direct ? "F" : "Fbar")},
-       {"defines", fmt::format("#define MATC_COST_OURS {}\n#define MATC_COST_DIRECT {}",
-                               ours ? 1 : 0, direct ? 1 : 0)},
+       {"variant", fmt::format("{} {}", model_name, direct ? "F" : "Fbar")},
+       {"defines", fmt::format("#define MATC_COST_OURS {}\n#define MATC_COST_TABLE {}\n#define "
+                               "MATC_COST_DIRECT {}",
+                               ours ? 1 : 0, table ? 1 : 0, direct ? 1 : 0)},
        {"library", build.library_source(ShaderLanguage::glsl)},
        {"material", build.material_source(ShaderLanguage::glsl, compiled)},
        {"name", compiled.material.name},

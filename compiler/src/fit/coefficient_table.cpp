@@ -30,9 +30,18 @@ double u_coordinate(const CoefficientTableOptions& options, double reflectivity)
 }
 
 double v_coordinate(const CoefficientTableOptions& options, double reflectivity, double edge_tint) {
-  return options.edge_tint_axis == EdgeTintAxis::log_ior
-             ? runtime::coefficient_table_v_from_edge_tint(reflectivity, edge_tint)
-             : std::clamp(edge_tint, 0.0, 1.0);
+  const double g = std::clamp(edge_tint, 0.0, 1.0);
+  switch (options.edge_tint_axis) {
+    case EdgeTintAxis::log_ior:
+      return runtime::coefficient_table_v_from_edge_tint(reflectivity, g);
+    case EdgeTintAxis::inverse_ior: {
+      const double delta = runtime::coefficient_table_ior_span(reflectivity);
+      return delta >= 1.0 ? (g < 1.0 ? 0.0 : 1.0) : g * (1.0 - delta) / (1.0 - g * delta);
+    }
+    case EdgeTintAxis::linear:
+      break;
+  }
+  return g;
 }
 
 runtime::Coefficients solve(const ReflectanceCurve& curve, runtime::BasisKind basis,
@@ -97,8 +106,18 @@ double coefficient_table_column_reflectivity(const CoefficientTableOptions& opti
 double coefficient_table_row_edge_tint(const CoefficientTableOptions& options, double reflectivity,
                                        std::size_t y) {
   const double v = static_cast<double>(y) / static_cast<double>(options.size - 1);
-  if (options.edge_tint_axis == EdgeTintAxis::linear) return v;
-  return std::clamp(runtime::coefficient_table_edge_tint_from_v(reflectivity, v), 0.0, 1.0);
+  switch (options.edge_tint_axis) {
+    case EdgeTintAxis::log_ior:
+      return std::clamp(runtime::coefficient_table_edge_tint_from_v(reflectivity, v), 0.0, 1.0);
+    case EdgeTintAxis::inverse_ior: {
+      // v = g (1 - delta) / (1 - g delta)  <=>  g = v / (1 - delta + v delta).
+      const double delta = runtime::coefficient_table_ior_span(reflectivity);
+      return std::clamp(v / (1.0 - delta + v * delta), 0.0, 1.0);
+    }
+    case EdgeTintAxis::linear:
+      break;
+  }
+  return v;
 }
 
 CoefficientTable fit_coefficient_table(runtime::BasisKind basis,

@@ -13,7 +13,9 @@
 
 namespace matc {
 
-enum class FresnelModel { schlick, ours };
+// Schlick's; ours with a material's compiled coefficients; ours with coefficients from the
+// coefficient table, per pixel (a textured metal).
+enum class FresnelModel { schlick, ours, table };
 // F per light (mu = V.H), or preintegrated Fbar from one table fetch.
 enum class FresnelQuantity { direct, preintegrated };
 
@@ -22,7 +24,8 @@ std::string fullscreen_vertex_source();
 
 // The benchmark's fragment shader: per pixel, one quantity of `compiled` with one model. Binds
 // the table at (set 0) binding 0 and the sampler at binding 1; for Schlick's preintegrated
-// variant the table must be the ComparisonLobes bake.
+// variant the table must be the ComparisonLobes bake; the table model also binds the coefficient
+// table (its .xy) at binding 2.
 std::string cost_pass_source(const Build& build, const CompiledMaterial& compiled,
                              FresnelModel model, FresnelQuantity quantity, std::uint32_t width,
                              std::uint32_t height);

@@ -25,8 +25,9 @@ enum class ReflectivityAxis {
 
 // Where the texel rows sit along the edge-tint axis.
 enum class EdgeTintAxis {
-  log_ior,  // v = log(n_max / n) / log(n_max / n_min): even in the curves' change (shipped)
-  linear,   // v = g
+  log_ior,      // v = log(n_max / n) / log(n_max / n_min): even in the curves' change (shipped)
+  linear,       // v = g
+  inverse_ior,  // v = (1/n - 1/n_max) / (1/n_min - 1/n_max) = g (1 - delta) / (1 - g delta)
 };
 
 // What a texel stores.
