@@ -16,7 +16,6 @@
 #include <vector>
 
 #include <fmt/core.h>
-#include <stb_image_write.h>
 #include <CLI/CLI.hpp>
 
 #include "matc/compile.h"
@@ -28,139 +27,14 @@
 #include "matc/vulkan/buffer.h"
 #include "matc/vulkan/fullscreen_pass.h"
 #include "matc/vulkan/sampler.h"
+#include "panels.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
 constexpr std::size_t kCurveSize = 1024;
-constexpr std::uint32_t kSamplesPerPass = 64;
-constexpr double kDifferenceScale = 4.0;
-constexpr double kDefaultRoughness = 0.3;
-
-// The estimates comparison_render.frag computes, by its `method` number.
-enum Estimate : std::int32_t {
-  kReference = 0,
-  kPrefilteredRadiance = 1,
-  kExactFbar = 2,
-  kSchlickFbar = 3,
-  kOursFbar = 4,
-  kEstimateCount = 5,
-};
-
-// Matches the push-constant block of comparison_render.frag.
-struct PanelConstants {
-  std::int32_t method;
-  std::uint32_t first_sample;
-  std::uint32_t sample_count;
-  std::uint32_t total_samples;
-  float roughness;
-};
-
-// Linear RGB per pixel; background pixels flagged.
-struct Panel {
-  std::vector<std::array<double, 3>> rgb;
-  std::vector<bool> sphere;
-
-  // The split sum: this (prefiltered radiance) times a preintegrated Fresnel, per pixel.
-  Panel times(const Panel& fresnel) const {
-    Panel product = *this;
-    for (std::size_t i = 0; i < rgb.size(); ++i) {
-      if (!sphere[i]) continue;  // the background keeps its colour
-      for (std::size_t c = 0; c < 3; ++c)
-        product.rgb[i][c] *= fresnel.rgb[i][c];
-    }
-    return product;
-  }
-};
-
-struct ErrorStats {
-  double mean = 0.0;
-  double max = 0.0;
-  double relative_mean = 0.0;  // mean |difference| / mean reference
-};
-
-// A value in [0, 1] through the sRGB transfer function, to 8 bits.
-std::uint8_t srgb_8bit(double value) {
-  const double x = std::clamp(value, 0.0, 1.0);
-  const double encoded = x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
-  return static_cast<std::uint8_t>(std::lround(encoded * 255.0));
-}
-
-// Narkowicz's fit of the ACES filmic curve, then sRGB.
-std::uint8_t display(double linear) {
-  const double x = std::max(linear, 0.0);
-  return srgb_8bit(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14));
-}
-
-std::uint8_t display_difference(double difference) {
-  return srgb_8bit(difference * kDifferenceScale);
-}
-
-void write_png(const fs::path& path, std::uint32_t width, std::uint32_t height,
-               const std::vector<std::uint8_t>& rgb) {
-  std::string bytes;
-  stbi_write_png_to_func(
-      [](void* context, void* data, int size) {
-        static_cast<std::string*>(context)->append(static_cast<const char*>(data),
-                                                   static_cast<std::size_t>(size));
-      },
-      &bytes, static_cast<int>(width), static_cast<int>(height), 3, rgb.data(),
-      static_cast<int>(width * 3));
-  if (bytes.empty()) throw std::runtime_error("cannot encode " + path.string());
-  const fs::path temporary = path.string() + ".tmp";
-  std::ofstream(temporary, std::ios::binary)
-      .write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  fs::rename(temporary, path);
-}
-
-// Panels side by side, each through `to_display`.
-template <typename ToDisplay>
-std::vector<std::uint8_t> side_by_side(
-    const std::vector<std::vector<std::array<double, 3>>>& panels, std::uint32_t size,
-    ToDisplay to_display) {
-  const std::size_t width = size * panels.size();
-  std::vector<std::uint8_t> rgb(width * size * 3);
-  for (std::size_t p = 0; p < panels.size(); ++p) {
-    for (std::size_t y = 0; y < size; ++y) {
-      for (std::size_t x = 0; x < size; ++x) {
-        for (std::size_t c = 0; c < 3; ++c)
-          rgb[(y * width + p * size + x) * 3 + c] = to_display(panels[p][y * size + x][c]);
-      }
-    }
-  }
-  return rgb;
-}
-
-// |panel - reference| per pixel and channel; zero on the background.
-std::vector<std::array<double, 3>> difference(const Panel& panel, const Panel& reference) {
-  std::vector<std::array<double, 3>> result(panel.rgb.size(), {0.0, 0.0, 0.0});
-  for (std::size_t i = 0; i < panel.rgb.size(); ++i) {
-    if (!reference.sphere[i]) continue;
-    for (std::size_t c = 0; c < 3; ++c)
-      result[i][c] = std::abs(panel.rgb[i][c] - reference.rgb[i][c]);
-  }
-  return result;
-}
-
-ErrorStats error_against(const Panel& panel, const Panel& reference) {
-  ErrorStats stats;
-  double reference_sum = 0.0;
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < panel.rgb.size(); ++i) {
-    if (!reference.sphere[i]) continue;
-    for (std::size_t c = 0; c < 3; ++c) {
-      const double difference = std::abs(panel.rgb[i][c] - reference.rgb[i][c]);
-      stats.mean += difference;
-      stats.max = std::max(stats.max, difference);
-      reference_sum += reference.rgb[i][c];
-      ++count;
-    }
-  }
-  stats.relative_mean = stats.mean / std::max(reference_sum, 1e-30);
-  stats.mean /= static_cast<double>(std::max<std::size_t>(count, 1));
-  return stats;
-}
+using namespace matc::render;
 
 struct RenderSettings {
   std::uint32_t size = 256;
@@ -219,32 +93,7 @@ class Renderer {
                                       settings_.size, sizeof(PanelConstants));
     const float roughness =
         static_cast<float>(compiled.material.roughness.value_or(kDefaultRoughness));
-    std::array<Panel, kEstimateCount> panels;
-    const std::size_t pixels = std::size_t{settings_.size} * settings_.size;
-    for (std::int32_t method = 0; method < kEstimateCount; ++method) {
-      std::vector<std::array<double, 4>> sums(pixels, {0.0, 0.0, 0.0, 0.0});
-      // Table lookups are exact in one pass; Monte-Carlo estimates take all the samples.
-      const std::uint32_t samples = method >= kSchlickFbar ? 1 : settings_.samples;
-      for (std::uint32_t first = 0; first < samples; first += kSamplesPerPass) {
-        const PanelConstants constants{method, first, std::min(kSamplesPerPass, samples - first),
-                                       samples, roughness};
-        pass.draw(std::as_bytes(std::span(&constants, 1)));
-        const std::vector<float> result = pass.read_pixels();
-        for (std::size_t i = 0; i < pixels; ++i) {
-          for (std::size_t c = 0; c < 4; ++c)
-            sums[i][c] += result[4 * i + c];
-        }
-      }
-      Panel& panel = panels[method];
-      panel.rgb.resize(pixels);
-      panel.sphere.resize(pixels);
-      for (std::size_t i = 0; i < pixels; ++i) {
-        panel.sphere[i] = sums[i][3] > 0.0;
-        for (std::size_t c = 0; c < 3; ++c)
-          panel.rgb[i][c] = sums[i][3] != 0.0 ? sums[i][c] / sums[i][3] : 0.0;
-      }
-    }
-    return panels;
+    return render_estimates(pass, settings_.size, settings_.samples, roughness);
   }
 
  private:
@@ -310,15 +159,14 @@ int main(int argc, char** argv) {
       const Panel ours = radiance.times(estimates[kOursFbar]);
       const Panel exact = radiance.times(estimates[kExactFbar]);
       const std::string& name = compiled.material.name;
-      write_png(settings.output / (name + ".png"), settings.size * 3, settings.size,
-                side_by_side({reference.rgb, schlick.rgb, ours.rgb}, settings.size, display));
-      write_png(settings.output / (name + "_difference.png"), settings.size * 2, settings.size,
-                side_by_side({difference(schlick, reference), difference(ours, reference)},
-                             settings.size, display_difference));
-      write_png(settings.output / (name + "_fresnel_difference.png"), settings.size * 2,
-                settings.size,
-                side_by_side({difference(schlick, exact), difference(ours, exact)}, settings.size,
-                             display_difference));
+      write_panels(settings.output / (name + ".png"), {reference.rgb, schlick.rgb, ours.rgb},
+                   settings.size, display);
+      write_panels(settings.output / (name + "_difference.png"),
+                   {difference(schlick, reference), difference(ours, reference)}, settings.size,
+                   display_difference);
+      write_panels(settings.output / (name + "_fresnel_difference.png"),
+                   {difference(schlick, exact), difference(ours, exact)}, settings.size,
+                   display_difference);
       const double roughness = compiled.material.roughness.value_or(kDefaultRoughness);
       const std::array<std::pair<const char*, const Panel*>, 3> rows = {
           std::pair{"Schlick's Fresnel", &schlick}, std::pair{"ours", &ours},

@@ -20,3 +20,8 @@ trap 'rm -f "$table"; rm -rf "$paper"' EXIT
   >"$table"
 "$root/tests/check_docs_block.sh" --update "$root/docs/rendering.md" comparison-renders-paper \
   cat "$table"
+# The textured render: per-pixel reflectivity and edge tint, the coefficient-table path.
+cmake --build "$build" --target matc_textured_render >/dev/null
+"$build/examples/render/matc_textured_render" --size 256 --samples 4096 -o "$root/docs/images" \
+  >"$table"
+"$root/tests/check_docs_block.sh" --update "$root/docs/rendering.md" textured-render cat "$table"

@@ -46,11 +46,21 @@ std::string comparison_render_source(const Build& build, const CompiledMaterial&
                                      std::uint32_t height) {
   return fill_template("glsl/comparison_render.frag",
                        {{"version", kVersion},
+                        {"render_sampling", fill_template("glsl/render_sampling.glsl", {})},
                         {"library", build.library_source(ShaderLanguage::glsl)},
                         {"material", build.material_source(ShaderLanguage::glsl, compiled)},
                         {"name", compiled.material.name},
                         {"f0", f0_list(compiled)},
                         {"curve_size", std::to_string(curve_size)},
+                        {"width", std::to_string(width)},
+                        {"height", std::to_string(height)}});
+}
+
+std::string textured_render_source(const Build& build, std::uint32_t width, std::uint32_t height) {
+  return fill_template("glsl/textured_render.frag",
+                       {{"version", kVersion},
+                        {"render_sampling", fill_template("glsl/render_sampling.glsl", {})},
+                        {"library", build.library_source(ShaderLanguage::glsl)},
                         {"width", std::to_string(width)},
                         {"height", std::to_string(height)}});
 }

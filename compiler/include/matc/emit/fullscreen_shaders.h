@@ -36,6 +36,10 @@ std::string comparison_render_source(const Build& build, const CompiledMaterial&
                                      std::size_t curve_size, std::uint32_t width,
                                      std::uint32_t height);
 
+// The textured render's fragment shader (templates/glsl/textured_render.frag): a sphere whose
+// reflectivity and edge tint vary per pixel, from a buffer (see the template for the bindings).
+std::string textured_render_source(const Build& build, std::uint32_t width, std::uint32_t height);
+
 // One of the sources above as SPIR-V: compiled (GLSL), optimised and validated for Vulkan 1.1.
 SpirvWords compile_fullscreen_stage(const std::string& source, ShaderStage stage,
                                     const std::string& name);

@@ -1,0 +1,139 @@
+#include "panels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+#include <stb_image_write.h>
+
+namespace matc::render {
+namespace {
+
+constexpr std::uint32_t kSamplesPerPass = 64;
+constexpr double kDifferenceScale = 4.0;
+
+// A value in [0, 1] through the sRGB transfer function, to 8 bits.
+std::uint8_t srgb_8bit(double value) {
+  const double x = std::clamp(value, 0.0, 1.0);
+  const double encoded = x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
+  return static_cast<std::uint8_t>(std::lround(encoded * 255.0));
+}
+
+void write_png(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
+               const std::vector<std::uint8_t>& rgb) {
+  std::string bytes;
+  stbi_write_png_to_func(
+      [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                                   static_cast<std::size_t>(size));
+      },
+      &bytes, static_cast<int>(width), static_cast<int>(height), 3, rgb.data(),
+      static_cast<int>(width * 3));
+  if (bytes.empty()) throw std::runtime_error("cannot encode " + path.string());
+  const std::filesystem::path temporary = path.string() + ".tmp";
+  std::ofstream(temporary, std::ios::binary)
+      .write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  std::filesystem::rename(temporary, path);
+}
+
+}  // namespace
+
+Panel Panel::times(const Panel& fresnel) const {
+  Panel product = *this;
+  for (std::size_t i = 0; i < rgb.size(); ++i) {
+    if (!sphere[i]) continue;  // the background keeps its colour
+    for (std::size_t c = 0; c < 3; ++c)
+      product.rgb[i][c] *= fresnel.rgb[i][c];
+  }
+  return product;
+}
+
+std::array<Panel, kEstimateCount> render_estimates(vulkan::FullscreenPass& pass, std::uint32_t size,
+                                                   std::uint32_t samples, float roughness) {
+  std::array<Panel, kEstimateCount> panels;
+  const std::size_t pixels = std::size_t{size} * size;
+  for (std::int32_t method = 0; method < kEstimateCount; ++method) {
+    std::vector<std::array<double, 4>> sums(pixels, {0.0, 0.0, 0.0, 0.0});
+    // Table lookups are exact in one pass; Monte-Carlo estimates take all the samples.
+    const std::uint32_t method_samples = method >= kSchlickFbar ? 1 : samples;
+    for (std::uint32_t first = 0; first < method_samples; first += kSamplesPerPass) {
+      const PanelConstants constants{method, first,
+                                     std::min(kSamplesPerPass, method_samples - first),
+                                     method_samples, roughness};
+      pass.draw(std::as_bytes(std::span(&constants, 1)));
+      const std::vector<float> result = pass.read_pixels();
+      for (std::size_t i = 0; i < pixels; ++i) {
+        for (std::size_t c = 0; c < 4; ++c)
+          sums[i][c] += result[4 * i + c];
+      }
+    }
+    Panel& panel = panels[method];
+    panel.rgb.resize(pixels);
+    panel.sphere.resize(pixels);
+    for (std::size_t i = 0; i < pixels; ++i) {
+      panel.sphere[i] = sums[i][3] > 0.0;
+      for (std::size_t c = 0; c < 3; ++c)
+        panel.rgb[i][c] = sums[i][3] != 0.0 ? sums[i][c] / sums[i][3] : 0.0;
+    }
+  }
+  return panels;
+}
+
+ErrorStats error_against(const Panel& panel, const Panel& reference) {
+  ErrorStats stats;
+  double reference_sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < panel.rgb.size(); ++i) {
+    if (!reference.sphere[i]) continue;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double difference = std::abs(panel.rgb[i][c] - reference.rgb[i][c]);
+      stats.mean += difference;
+      stats.max = std::max(stats.max, difference);
+      reference_sum += reference.rgb[i][c];
+      ++count;
+    }
+  }
+  stats.relative_mean = stats.mean / std::max(reference_sum, 1e-30);
+  stats.mean /= static_cast<double>(std::max<std::size_t>(count, 1));
+  return stats;
+}
+
+std::vector<std::array<double, 3>> difference(const Panel& panel, const Panel& reference) {
+  std::vector<std::array<double, 3>> result(panel.rgb.size(), {0.0, 0.0, 0.0});
+  for (std::size_t i = 0; i < panel.rgb.size(); ++i) {
+    if (!reference.sphere[i]) continue;
+    for (std::size_t c = 0; c < 3; ++c)
+      result[i][c] = std::abs(panel.rgb[i][c] - reference.rgb[i][c]);
+  }
+  return result;
+}
+
+std::uint8_t display(double linear) {
+  const double x = std::max(linear, 0.0);
+  return srgb_8bit(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14));
+}
+
+std::uint8_t display_difference(double difference) {
+  return srgb_8bit(difference * kDifferenceScale);
+}
+
+void write_panels(const std::filesystem::path& path,
+                  const std::vector<std::vector<std::array<double, 3>>>& panels, std::uint32_t size,
+                  std::uint8_t (*to_display)(double)) {
+  const std::size_t width = size * panels.size();
+  std::vector<std::uint8_t> rgb(width * size * 3);
+  for (std::size_t p = 0; p < panels.size(); ++p) {
+    for (std::size_t y = 0; y < size; ++y) {
+      for (std::size_t x = 0; x < size; ++x) {
+        for (std::size_t c = 0; c < 3; ++c)
+          rgb[(y * width + p * size + x) * 3 + c] = to_display(panels[p][y * size + x][c]);
+      }
+    }
+  }
+  write_png(path, static_cast<std::uint32_t>(width), size, rgb);
+}
+
+}  // namespace matc::render

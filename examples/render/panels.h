@@ -1,0 +1,71 @@
+// What the comparison renders (render.cpp) and the textured render (textured_render.cpp) share:
+// the estimates their fragment shaders compute, accumulating them from a full-screen pass,
+// error statistics, and PNG output.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "matc/vulkan/fullscreen_pass.h"
+
+namespace matc::render {
+
+inline constexpr double kDefaultRoughness = 0.3;
+
+// The estimates comparison_render.frag and textured_render.frag compute, by their `method` number.
+enum Estimate : std::int32_t {
+  kReference = 0,
+  kPrefilteredRadiance = 1,
+  kExactFbar = 2,
+  kSchlickFbar = 3,
+  kOursFbar = 4,
+  kEstimateCount = 5,
+};
+
+// Matches the push-constant block of both fragment shaders.
+struct PanelConstants {
+  std::int32_t method;
+  std::uint32_t first_sample;
+  std::uint32_t sample_count;
+  std::uint32_t total_samples;
+  float roughness;
+};
+
+// Linear RGB per pixel; background pixels flagged.
+struct Panel {
+  std::vector<std::array<double, 3>> rgb;
+  std::vector<bool> sphere;
+
+  // The split sum: this (prefiltered radiance) times a preintegrated Fresnel, per pixel.
+  Panel times(const Panel& fresnel) const;
+};
+
+// Every estimate, linear RGB, indexed by Estimate: Monte-Carlo ones over `samples` samples (in
+// passes of 64), table lookups in one pass.
+std::array<Panel, kEstimateCount> render_estimates(vulkan::FullscreenPass& pass, std::uint32_t size,
+                                                   std::uint32_t samples, float roughness);
+
+struct ErrorStats {
+  double mean = 0.0;
+  double max = 0.0;
+  double relative_mean = 0.0;  // mean |difference| / mean reference
+};
+
+// Over the sphere's pixels and all channels.
+ErrorStats error_against(const Panel& panel, const Panel& reference);
+
+// |panel - reference| per pixel and channel; zero on the background.
+std::vector<std::array<double, 3>> difference(const Panel& panel, const Panel& reference);
+
+// Tone-mapped (Narkowicz's ACES fit) and sRGB-encoded, or a difference times 4, to 8 bits.
+std::uint8_t display(double linear);
+std::uint8_t display_difference(double difference);
+
+// Panels side by side, each pixel through `to_display`, written as an RGB PNG (atomically).
+void write_panels(const std::filesystem::path& path,
+                  const std::vector<std::vector<std::array<double, 3>>>& panels, std::uint32_t size,
+                  std::uint8_t (*to_display)(double));
+
+}  // namespace matc::render
