@@ -5,9 +5,9 @@
 # with a depfile so that editing a material, a spectral file it names, or updating matc reruns it,
 # and nothing else does. The generated per-material headers become sources of TARGET and
 # OUTPUT_DIR one of its include directories, so `#include "<name>.h"` works and the target is built
-# after its materials. EMIT selects outputs (glsl hlsl spirv header json lut; default all).
-# Use one OUTPUT_DIR per call (a second call with the same one is an error): every call writes the
-# shared files matc_fresnel.* and matc_lut.*.
+# after its materials. EMIT selects outputs (glsl hlsl spirv header json lut coefficient-table;
+# default all). Use one OUTPUT_DIR per call (a second call with the same one is an error): every
+# call writes the shared files matc_fresnel.*, matc_lut.* and matc_coefficient_table.*.
 # Material names are read from the files at configure time (changing one reconfigures).
 function(matc_add_materials)
   cmake_parse_arguments(ARG "" "TARGET;OUTPUT_DIR;LUT_FORMAT" "MATERIALS;EMIT;OPTIONS" ${ARGN})
@@ -18,7 +18,7 @@ function(matc_add_materials)
     message(FATAL_ERROR "matc_add_materials: OUTPUT_DIR and MATERIALS are required")
   endif()
   if(NOT ARG_EMIT)
-    set(ARG_EMIT glsl hlsl spirv header json lut)
+    set(ARG_EMIT glsl hlsl spirv header json lut coefficient-table)
   endif()
   if(NOT ARG_LUT_FORMAT)
     set(ARG_LUT_FORMAT ktx2)
@@ -39,13 +39,14 @@ function(matc_add_materials)
   get_property(_used GLOBAL PROPERTY MATC_ADD_MATERIALS_OUTPUT_DIRS)
   if("${_dir}" IN_LIST _used)
     message(FATAL_ERROR "matc_add_materials: OUTPUT_DIR ${_dir} is already used by another call; "
-                        "every call writes matc_fresnel.* and matc_lut.*, so give each its own")
+                        "every call writes matc_fresnel.*, matc_lut.* and matc_coefficient_table.*, so give each its own")
   endif()
   set_property(GLOBAL APPEND PROPERTY MATC_ADD_MATERIALS_OUTPUT_DIRS "${_dir}")
 
   foreach(_kind IN LISTS ARG_EMIT)
-    if(NOT DEFINED _per_material_extension_${_kind} AND NOT _kind STREQUAL "lut")
-      message(FATAL_ERROR "matc_add_materials: EMIT '${_kind}' is not one of glsl, hlsl, spirv, header, json, lut")
+    if(NOT DEFINED _per_material_extension_${_kind} AND NOT _kind STREQUAL "lut"
+       AND NOT _kind STREQUAL "coefficient-table")
+      message(FATAL_ERROR "matc_add_materials: EMIT '${_kind}' is not one of glsl, hlsl, spirv, header, json, lut, coefficient-table")
     endif()
   endforeach()
 
@@ -60,6 +61,10 @@ function(matc_add_materials)
   if("lut" IN_LIST ARG_EMIT)
     set(_lut "${_dir}/matc_lut.${_lut_extension_${ARG_LUT_FORMAT}}")
     list(APPEND _outputs "${_lut}" "${_lut}.json")
+  endif()
+  if("coefficient-table" IN_LIST ARG_EMIT)
+    set(_table "${_dir}/matc_coefficient_table.${_lut_extension_${ARG_LUT_FORMAT}}")
+    list(APPEND _outputs "${_table}" "${_table}.json")
   endif()
   if("json" IN_LIST ARG_EMIT)
     list(APPEND _outputs "${_dir}/matc_manifest.json")

@@ -16,6 +16,12 @@ corpus=$(mktemp -d)
 trap 'rm -rf "$corpus"' EXIT
 build-fuzz/tests/fuzz/matc_material_fuzzer -max_total_time="$fuzz_seconds" -max_len=4096 \
   -print_final_stats=1 "$corpus" tests/fuzz/corpus 2>&1 | tail -n 20
+# The textured-metal inputs (option parser, coefficient-table path): a quarter of that time.
+table_corpus=$(mktemp -d)
+trap 'rm -rf "$corpus" "$table_corpus"' EXIT
+build-fuzz/tests/fuzz/matc_coefficient_table_fuzzer -max_total_time="$((fuzz_seconds / 4 + 1))" \
+  -max_len=256 -print_final_stats=1 "$table_corpus" tests/fuzz/corpus_coefficient_table 2>&1 |
+  tail -n 8
 
 # Mesa's driver, LLVM and the Vulkan loader keep allocations until exit, and lavapipe's
 # JIT-compiled shaders allocate from code LeakSanitizer cannot name: tests that run Vulkan are

@@ -41,12 +41,12 @@ constexpr double kMaxReflectivity = 0.95;  // the issue's range for random and g
 constexpr double kDarkReflectivity = 0.002;
 
 // The shaders' basis at the accuracy grid's cosines, evaluated once.
-std::vector<std::array<double, 4>> basis_at_cosines() {
+std::vector<std::array<double, 4>> basis_at_cosines(matc::runtime::BasisKind kind) {
   std::vector<std::array<double, 4>> values(matc::kAccuracySamples);
   for (std::size_t j = 0; j < values.size(); ++j) {
     const double mu = static_cast<double>(j) / static_cast<double>(values.size() - 1);
-    values[j] = matc::runtime::evaluate_basis_polynomial(
-        matc::runtime::shipped_basis_polynomial(kBasis), mu);
+    values[j] =
+        matc::runtime::evaluate_basis_polynomial(matc::runtime::shipped_basis_polynomial(kind), mu);
   }
   return values;
 }
@@ -64,7 +64,8 @@ struct Input {
 };
 
 std::vector<Input> make_inputs(const std::vector<ArtisticParameters>& parameters,
-                               const std::vector<std::array<double, 4>>& basis) {
+                               const std::vector<std::array<double, 4>>& basis,
+                               matc::runtime::BasisKind kind) {
   std::vector<Input> inputs(parameters.size());
   std::vector<std::future<void>> work;
   constexpr std::size_t kChunk = 64;
@@ -75,7 +76,7 @@ std::vector<Input> make_inputs(const std::vector<ArtisticParameters>& parameters
         input.artistic = parameters[i];
         const matc::ComplexIor ior = matc::gulbrandsen_to_ior(input.artistic);
         const matc::IorCurve curve({ior, ior, ior});
-        input.compiled = matc::solve_coefficients(curve, matc::runtime::shipped_basis(kBasis))[0];
+        input.compiled = matc::solve_coefficients(curve, matc::runtime::shipped_basis(kind))[0];
         input.exact.resize(basis.size());
         for (std::size_t j = 0; j < basis.size(); ++j) {
           const double mu = static_cast<double>(j) / static_cast<double>(basis.size() - 1);
@@ -97,6 +98,7 @@ struct Design {
   std::string name;
   std::string size;  // bytes of the stored table, or "none"
   CoefficientSource source;
+  matc::runtime::BasisKind basis = kBasis;  // scored against this basis' compile
 };
 
 struct DesignScore {
@@ -239,6 +241,16 @@ std::vector<Design> designs() {
        from_table(table(64, kSqrt, EdgeTintAxis::linear, TableValues::normalised, kMinimax))});
   all.push_back({"64², sqrt r, log n, c_2 c_3, **least squares**, f32", kib(64, 4),
                  from_table(table(64, kSqrt, kLog, kRaw, TableSolve::least_squares))});
+  const matc::runtime::CoefficientTableView paper =
+      matc::runtime::shipped_coefficient_table(matc::runtime::BasisKind::paper);
+  all.push_back({fmt::format("{}², sqrt r, log n, c_2 c_3, probes, f32: the **paper basis**' "
+                             "table against its own compile",
+                             paper.size),
+                 kib(paper.size, 4),
+                 [paper](double r, double g) {
+                   return matc::runtime::channel_coefficients_from_table(paper, r, g);
+                 },
+                 matc::runtime::BasisKind::paper});
   const CoefficientTable fine = table(128, kSqrt, kLog, kRaw, kMinimax);
   for (const int degree : {6, 12})
     all.push_back({fmt::format("closed form: degree {} in (sqrt r, log n), no fetch", degree),
@@ -262,11 +274,23 @@ std::vector<ArtisticParameters> grid_parameters() {
   return out;
 }
 
+// Per shipped basis: its shader basis at the cosines, its 128² table, and the compiled inputs.
+struct BasisInputs {
+  std::vector<std::array<double, 4>> basis;
+  matc::Lut lut;
+  std::vector<Input> random_inputs;
+  std::vector<Input> grid_inputs;
+
+  explicit BasisInputs(matc::runtime::BasisKind kind)
+      : basis(basis_at_cosines(kind)),
+        lut(matc::preintegrate_lut(matc::runtime::shipped_basis(kind))),
+        random_inputs(make_inputs(random_parameters(), basis, kind)),
+        grid_inputs(make_inputs(grid_parameters(), basis, kind)) {}
+};
+
 void print_designs() {
-  const auto basis = basis_at_cosines();
-  const matc::Lut lut = matc::preintegrate_lut(matc::runtime::shipped_basis(kBasis));
-  const std::vector<Input> random_inputs = make_inputs(random_parameters(), basis);
-  const std::vector<Input> grid_inputs = make_inputs(grid_parameters(), basis);
+  const BasisInputs extended(matc::runtime::BasisKind::extended);
+  const BasisInputs paper(matc::runtime::BasisKind::paper);
   fmt::print(
       "| table | stored | 2,000 random: F max / mean | F max, r >= {0} | poor fits: excess | F̄ "
       "max / mean | 50 x 50 grid: F max / mean | poor fits: excess | F̄ max / mean |\n"
@@ -275,11 +299,14 @@ void print_designs() {
   std::vector<std::future<std::string>> rows;
   for (const Design& design : designs()) {
     rows.push_back(std::async(std::launch::async, [&, design] {
+      const BasisInputs& inputs_of_basis =
+          design.basis == matc::runtime::BasisKind::paper ? paper : extended;
       std::string row = fmt::format("| {} | {} |", design.name, design.size);
-      for (const auto* inputs : {&random_inputs, &grid_inputs}) {
-        const DesignScore s = score(design, *inputs, basis, lut);
+      for (const auto* inputs : {&inputs_of_basis.random_inputs, &inputs_of_basis.grid_inputs}) {
+        const DesignScore s = score(design, *inputs, inputs_of_basis.basis, inputs_of_basis.lut);
         row += fmt::format(" {:.5f} / {:.1e} |", s.good_max, s.good_mean);
-        if (inputs == &random_inputs) row += fmt::format(" {:.5f} |", s.good_max_not_dark);
+        if (inputs == &inputs_of_basis.random_inputs)
+          row += fmt::format(" {:.5f} |", s.good_max_not_dark);
         row += fmt::format(" {:.4f} | {:.5f} / {:.1e} |", s.poor_excess, s.fbar_max, s.fbar_mean);
       }
       return row + "\n";

@@ -1,14 +1,25 @@
 #include "channel_list.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <vector>
 
 #include <fmt/core.h>
 
-#include "commands.h"
 
 namespace matc::cli {
+
+std::vector<std::string> split_list(const std::string& list) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    const std::size_t comma = std::min(list.find(',', start), list.size());
+    items.push_back(list.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return items;
+}
 
 std::optional<std::array<double, 3>> parse_channel_list(const std::string& option,
                                                         const std::string& text) {

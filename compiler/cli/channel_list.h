@@ -5,8 +5,12 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace matc::cli {
+
+// "a,b,c" -> {"a", "b", "c"} (also declared in commands.h for the other commands).
+std::vector<std::string> split_list(const std::string& list);
 
 // The three values, or nullopt after printing `matc eval: error: OPTION: ...` on standard error.
 std::optional<std::array<double, 3>> parse_channel_list(const std::string& option,

@@ -155,17 +155,6 @@ unsigned worker_count(unsigned requested, std::size_t jobs) {
 
 }  // namespace
 
-std::vector<std::string> split_list(const std::string& list) {
-  std::vector<std::string> items;
-  std::size_t start = 0;
-  while (start <= list.size()) {
-    const std::size_t comma = std::min(list.find(',', start), list.size());
-    items.push_back(list.substr(start, comma - start));
-    start = comma + 1;
-  }
-  return items;
-}
-
 int run_compile(const CompileOptions& options) {
   const Build build(build_options(options));
   std::unique_ptr<DeviceValidator> validator;

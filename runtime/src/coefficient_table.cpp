@@ -6,16 +6,24 @@
 #include "texel_axis.h"
 
 namespace matc::runtime {
+namespace {
+
+// x clamped to [0, 1], NaN read as 0: inputs come from textures and user data.
+double unit_clamp(double x) {
+  return x >= 0.0 ? std::min(x, 1.0) : 0.0;
+}
+
+}  // namespace
 
 double coefficient_table_u_from_reflectivity(double reflectivity) {
-  return std::sqrt(std::clamp(reflectivity, 0.0, 1.0));
+  return std::sqrt(unit_clamp(reflectivity));
 }
 double coefficient_table_reflectivity_from_u(double u) {
   return u * u;
 }
 
 double coefficient_table_v_from_edge_tint(double reflectivity, double edge_tint) {
-  const double g = std::clamp(edge_tint, 0.0, 1.0);
+  const double g = unit_clamp(edge_tint);
   const double delta = coefficient_table_ior_span(reflectivity);
   if (delta <= 0.0) return g;                    // r = 0: n_min = n_max = 1
   if (delta >= 1.0) return g < 1.0 ? 0.0 : 1.0;  // r = 1: n_max is infinite
@@ -29,7 +37,7 @@ double coefficient_table_edge_tint_from_v(double reflectivity, double v) {
 }
 
 double coefficient_table_ior_span(double reflectivity) {
-  const double r = std::clamp(reflectivity, 0.0, 1.0);
+  const double r = unit_clamp(reflectivity);
   return 2.0 * std::sqrt(r) / (1.0 + r);
 }
 
@@ -64,7 +72,7 @@ std::array<double, kCoefficientTableChannels> sample_coefficient_table_at(
 
 ChannelCoefficients channel_coefficients_from_table(const CoefficientTableView& table,
                                                     double reflectivity, double edge_tint) {
-  const double r = std::clamp(reflectivity, 0.0, 1.0);
+  const double r = unit_clamp(reflectivity);
   const auto sampled = sample_coefficient_table(table, r, edge_tint);
   return {r, 1.0 - r, sampled[0], sampled[1]};
 }
@@ -81,15 +89,15 @@ ArtisticRgb artistic_from_ior(const Rgb& n, const Rgb& k) {
   ArtisticRgb out;
   for (std::size_t c = 0; c < 3; ++c) {
     const double k2 = k[c] * k[c];
-    const double r = std::clamp(
-        ((n[c] - 1.0) * (n[c] - 1.0) + k2) / ((n[c] + 1.0) * (n[c] + 1.0) + k2), 0.0, 1.0);
+    const double r =
+        unit_clamp(((n[c] - 1.0) * (n[c] - 1.0) + k2) / ((n[c] + 1.0) * (n[c] + 1.0) + k2));
     const double sqrt_r = std::sqrt(r);
     // n_max(r) - n over n_max(r) - n_min(r), both multiplied through by (1 - sqrt r)(1 + r) so
     // that r -> 1 stays finite: n_max = (1 + sqrt r) / (1 - sqrt r), n_min = (1 - r) / (1 + r).
     const double above = (1.0 + sqrt_r) * (1.0 + r) - n[c] * (1.0 - sqrt_r) * (1.0 + r);
     const double span = (1.0 + sqrt_r) * (1.0 + r) - (1.0 - r) * (1.0 - sqrt_r);
     out.reflectivity[c] = r;
-    out.edge_tint[c] = span > 0.0 ? std::clamp(above / span, 0.0, 1.0) : 0.0;
+    out.edge_tint[c] = span > 0.0 ? unit_clamp(above / span) : 0.0;
   }
   return out;
 }

@@ -52,7 +52,7 @@ std::array<double, kCoefficientTableChannels> sample_coefficient_table_at(
 std::array<double, kCoefficientTableChannels> sample_coefficient_table(
     const CoefficientTableView& table, double reflectivity, double edge_tint);
 
-// One channel's c_0..c_3 from its reflectivity and edge tint (clamped to [0, 1]).
+// One channel's c_0..c_3 from its reflectivity and edge tint (clamped to [0, 1]; NaN reads as 0).
 ChannelCoefficients channel_coefficients_from_table(const CoefficientTableView& table,
                                                     double reflectivity, double edge_tint);
 // All three channels: what the shaders' matc_coefficients_from_table computes.
