@@ -55,19 +55,7 @@ std::array<double, kCoefficientTableChannels> sample_coefficient_table(
 
 std::array<double, kCoefficientTableChannels> sample_coefficient_table_at(
     const CoefficientTableView& table, double u, double v) {
-  const auto [x, tx] = texel_axis_position(u, table.size);
-  const auto [y, ty] = texel_axis_position(v, table.size);
-  const auto t00 = table.texel(x, y);
-  const auto t10 = table.texel(x + 1, y);
-  const auto t01 = table.texel(x, y + 1);
-  const auto t11 = table.texel(x + 1, y + 1);
-  std::array<double, kCoefficientTableChannels> result{};
-  for (std::size_t i = 0; i < kCoefficientTableChannels; ++i) {
-    const double bottom = t00[i] + tx * (t10[i] - t00[i]);
-    const double top = t01[i] + tx * (t11[i] - t01[i]);
-    result[i] = bottom + ty * (top - bottom);
-  }
-  return result;
+  return sample_bilinear<kCoefficientTableChannels>(table, table.size, u, v);
 }
 
 ChannelCoefficients channel_coefficients_from_table(const CoefficientTableView& table,

@@ -20,19 +20,7 @@ std::array<float, kBasisSize> LutView::texel(std::size_t x, std::size_t y) const
 }
 
 std::array<double, kBasisSize> sample_lut(const LutView& lut, double ndotv, double roughness) {
-  const auto [x, tx] = texel_axis_position(lut_u_from_ndotv(ndotv), lut.size);
-  const auto [y, ty] = texel_axis_position(roughness, lut.size);
-  const auto t00 = lut.texel(x, y);
-  const auto t10 = lut.texel(x + 1, y);
-  const auto t01 = lut.texel(x, y + 1);
-  const auto t11 = lut.texel(x + 1, y + 1);
-  std::array<double, kBasisSize> result{};
-  for (std::size_t i = 0; i < kBasisSize; ++i) {
-    const double bottom = t00[i] + tx * (t10[i] - t00[i]);
-    const double top = t01[i] + tx * (t11[i] - t01[i]);
-    result[i] = bottom + ty * (top - bottom);
-  }
-  return result;
+  return sample_bilinear<kBasisSize>(lut, lut.size, lut_u_from_ndotv(ndotv), roughness);
 }
 
 Rgb evaluate_fbar(const Coefficients& coefficients, const LutView& lut, double ndotv,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <utility>
 
@@ -14,6 +15,26 @@ inline std::pair<std::size_t, double> texel_axis_position(double u, std::size_t 
   const double position = (u >= 0.0 ? std::min(u, 1.0) : 0.0) * static_cast<double>(size - 1);
   const std::size_t left = std::min(static_cast<std::size_t>(position), size - 2);
   return {left, position - static_cast<double>(left)};
+}
+
+// Bilinear filtering of a table whose texel(x, y) returns Channels floats, at coordinates (u, v)
+// in [0, 1] along both axes, exactly as a sampler with the convention above reads it.
+template <std::size_t Channels, typename Table>
+std::array<double, Channels> sample_bilinear(const Table& table, std::size_t size, double u,
+                                             double v) {
+  const auto [x, tx] = texel_axis_position(u, size);
+  const auto [y, ty] = texel_axis_position(v, size);
+  const auto t00 = table.texel(x, y);
+  const auto t10 = table.texel(x + 1, y);
+  const auto t01 = table.texel(x, y + 1);
+  const auto t11 = table.texel(x + 1, y + 1);
+  std::array<double, Channels> result{};
+  for (std::size_t i = 0; i < Channels; ++i) {
+    const double bottom = t00[i] + tx * (t10[i] - t00[i]);
+    const double top = t01[i] + tx * (t11[i] - t01[i]);
+    result[i] = bottom + ty * (top - bottom);
+  }
+  return result;
 }
 
 }  // namespace matc::runtime
