@@ -7,7 +7,6 @@
 
 #include <fmt/core.h>
 
-
 namespace matc::cli {
 
 std::vector<std::string> split_list(const std::string& list) {
