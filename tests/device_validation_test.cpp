@@ -76,7 +76,7 @@ TEST(DeviceValidation, CoefficientTablePathMatchesTheCpuRuntime) {
     for (const auto precision : {matc::LutPrecision::f32, matc::LutPrecision::f16}) {
       matc::BuildOptions options = small_build();
       options.basis = basis;
-      options.lut_precision = precision;
+      options.coefficient_table_precision = precision;
       const matc::Build build(options);
       const matc::DeviceValidator validator(build, {true, ""});
       const matc::TableValidation result = validator.validate_coefficient_table();

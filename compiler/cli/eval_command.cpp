@@ -97,10 +97,10 @@ int run_eval_artistic(const EvalOptions& options) {
   const runtime::BasisKind kind = basis_of(options.lut.basis);
   const runtime::BasisView basis = runtime::shipped_basis(kind);
   const IorCurve curve = artistic_curve(*reflectivity, *edge_tint);
-  // The table as the written file stores it (--lut-precision), like the preintegrated one.
+  // The table as the written file stores it (--coefficient-table-precision).
   const runtime::CoefficientTableView shipped = runtime::shipped_coefficient_table(kind);
   CoefficientTable table{{shipped.size}, kind, {shipped.texels.begin(), shipped.texels.end()}};
-  table = stored_as(std::move(table), precision_of(options.lut));
+  table = stored_as(std::move(table), coefficient_table_precision_of(options.lut));
   const LabelledCoefficients coefficients = {
       {"_table", runtime::coefficients_from_table(table.view(), *reflectivity, *edge_tint)},
       {"_compiled", solve_coefficients(curve, basis)}};
@@ -109,7 +109,8 @@ int run_eval_artistic(const EvalOptions& options) {
   out["basis"] = runtime::basis_name(kind);
   out["reflectivity"] = *reflectivity;
   out["edge_tint"] = *edge_tint;
-  out["coefficient_table"] = {{"size", table.size()}, {"precision", options.lut.precision}};
+  out["coefficient_table"] = {{"size", table.size()},
+                              {"precision", options.lut.coefficient_table_precision}};
   if (!options.mu.empty()) add_direct_fresnel(options, curve, coefficients, out);
   if (!options.ndotv.empty()) add_preintegrated_fresnel(options, curve, coefficients, basis, out);
   fmt::print("{}", format_json(out));

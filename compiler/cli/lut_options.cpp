@@ -37,6 +37,17 @@ LutPrecision precision_of(const LutCliOptions& options) {
   return *lut_precision_from_name(options.precision);
 }
 
+void add_coefficient_table_option(CLI::App& app, LutCliOptions& options) {
+  app.add_option("--coefficient-table-precision", options.coefficient_table_precision,
+                 "Texel precision of the coefficient table DIR/matc_coefficient_table.<ext>")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"f16", "f32"}));
+}
+
+LutPrecision coefficient_table_precision_of(const LutCliOptions& options) {
+  return *lut_precision_from_name(options.coefficient_table_precision);
+}
+
 LutWriteCounts write_lut_files(const std::filesystem::path& path, const BakedLut& baked,
                                LutFormat format, LutPrecision precision) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
@@ -56,6 +67,7 @@ BuildOptions table_build_options(const LutCliOptions& lut, bool embed_lut,
   BuildOptions build;
   build.lut = lut.bake;
   build.lut_precision = precision_of(lut);
+  build.coefficient_table_precision = coefficient_table_precision_of(lut);
   build.embedded_lut_size = embed_lut ? embed_lut_size : 0;
   build.basis = basis_of(lut.basis);
   return build;

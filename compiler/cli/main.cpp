@@ -61,6 +61,7 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(matc::kMinLutSize, matc::kMaxEmbeddedLutSize));
   add_lut_options(app, compile.lut, "lut-");
+  add_coefficient_table_option(app, compile.lut);
   app.add_flag("--validate", compile.validate,
                "Run each material's GLSL and HLSL shaders on a Vulkan device (lavapipe) against "
                "the CPU runtime before writing its files");
@@ -99,6 +100,7 @@ int main(int argc, char** argv) {
   ndotv_option->needs(roughness_option);
   roughness_option->needs(ndotv_option);
   add_lut_options(*eval_command, eval.lut, "lut-");
+  add_coefficient_table_option(*eval_command, eval.lut);
 
   ValidateOptions validate;
   CLI::App* validate_command = app.add_subcommand(
@@ -114,6 +116,7 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(matc::kMinLutSize, matc::kMaxEmbeddedLutSize));
   add_lut_options(*validate_command, validate.lut, "lut-");
+  add_coefficient_table_option(*validate_command, validate.lut);
   add_device_options(*validate_command, validate.device);
 
   BasisOptions basis;

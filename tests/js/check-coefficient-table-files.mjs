@@ -16,7 +16,7 @@ const dir = mkdtempSync(join(tmpdir(), "matc-coefficient-table-"));
 function emit(format, precision) {
   const out = join(dir, `${format}_${precision}`);
   const run = spawnSync(matc, ["-q", "-o", out, "--emit", "coefficient-table", "--lut", format,
-                               "--lut-precision", precision, material], { encoding: "utf8" });
+                               "--coefficient-table-precision", precision, material], { encoding: "utf8" });
   if (run.status !== 0) throw new Error(`matc failed: ${run.stderr}`);
   const extension = { raw: "bin", ktx2: "ktx2", dds: "dds" }[format];
   const path = join(out, `matc_coefficient_table.${extension}`);

@@ -119,11 +119,11 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
       runtime::shipped_coefficient_table(options_.basis);
   CoefficientTable table{{shipped_table.size}, options_.basis, {}};
   table.texels.assign(shipped_table.texels.begin(), shipped_table.texels.end());
-  stored_coefficient_table_ = stored_as(std::move(table), options_.lut_precision);
+  stored_coefficient_table_ = stored_as(std::move(table), options_.coefficient_table_precision);
   coefficient_table_file_ =
       fmt::format("{}{}", coefficient_table_stem(), lut_file_extension(options_.lut_format));
   coefficient_table_file_bytes_ = encode_coefficient_table(
-      stored_coefficient_table_, options_.lut_format, options_.lut_precision);
+      stored_coefficient_table_, options_.lut_format, options_.coefficient_table_precision);
   inputs_hash_ = ContentHash().add(options_key()).hex();
   ShaderLibraryOptions library_options{options_.lut.size, shipped_table.size, embedded_lut()};
   const runtime::BasisPolynomial& polynomial = runtime::shipped_basis_polynomial(options_.basis);
@@ -184,9 +184,10 @@ std::vector<OutputFile> Build::shared_outputs() const {
   }
   if (emit.contains(OutputKind::coefficient_table)) {
     files.push_back({coefficient_table_file_, coefficient_table_file_bytes_});
-    files.push_back({coefficient_table_file_ + ".json",
-                     format_json(coefficient_table_manifest(
-                         stored_coefficient_table_, options_.lut_format, options_.lut_precision))});
+    files.push_back(
+        {coefficient_table_file_ + ".json",
+         format_json(coefficient_table_manifest(stored_coefficient_table_, options_.lut_format,
+                                                options_.coefficient_table_precision))});
   }
   return files;
 }
@@ -292,10 +293,11 @@ nlohmann::ordered_json Build::manifest(const std::vector<OutputFile>& shared,
                      {"precision", lut_precision_name(options_.lut_precision)},
                      {"hash", lut_reference_.hash},
                      {"embedded_size", options_.embedded_lut_size}};
-  manifest["coefficient_table"] = {{"file", coefficient_table_file_},
-                                   {"size", stored_coefficient_table_.size()},
-                                   {"precision", lut_precision_name(options_.lut_precision)},
-                                   {"hash", hash_of_bytes(coefficient_table_file_bytes_)}};
+  manifest["coefficient_table"] = {
+      {"file", coefficient_table_file_},
+      {"size", stored_coefficient_table_.size()},
+      {"precision", lut_precision_name(options_.coefficient_table_precision)},
+      {"hash", hash_of_bytes(coefficient_table_file_bytes_)}};
   manifest["shared_files"] = files_json(shared);
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const nlohmann::ordered_json& entry : entries)

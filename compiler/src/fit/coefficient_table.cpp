@@ -23,6 +23,10 @@ double u_coordinate(const CoefficientTableOptions& options, double reflectivity)
       return runtime::coefficient_table_u_from_reflectivity(reflectivity);
     case ReflectivityAxis::cube_root:
       return std::cbrt(std::clamp(reflectivity, 0.0, 1.0));
+    case ReflectivityAxis::stretched_square_root: {
+      const double s = std::sqrt(std::clamp(reflectivity, 0.0, 1.0));
+      return 2.0 * s / (1.0 + s);
+    }
     case ReflectivityAxis::linear:
       break;
   }
@@ -97,6 +101,10 @@ double coefficient_table_column_reflectivity(const CoefficientTableOptions& opti
       return runtime::coefficient_table_reflectivity_from_u(u);
     case ReflectivityAxis::cube_root:
       return u * u * u;
+    case ReflectivityAxis::stretched_square_root: {
+      const double s = u / (2.0 - u);
+      return s * s;
+    }
     case ReflectivityAxis::linear:
       break;
   }

@@ -40,6 +40,8 @@ struct BuildOptions {
   LutOptions lut;
   LutFormat lut_format = LutFormat::ktx2;
   LutPrecision lut_precision = LutPrecision::f32;
+  // The coefficient table's (its format is lut_format's): f16 costs it nothing measurable.
+  LutPrecision coefficient_table_precision = LutPrecision::f16;
   std::size_t embedded_lut_size = 0;  // --embed-lut: 0 for none, else 2..kMaxEmbeddedLutSize
   runtime::BasisKind basis = runtime::kDefaultBasis;  // --basis
 };
@@ -69,8 +71,8 @@ class Build {
   // The table as the written file stores it (f16 rounding), what a renderer samples.
   const Lut& stored_lut() const { return stored_lut_; }
   const Lut* embedded_lut() const { return embedded_lut_ ? &*embedded_lut_ : nullptr; }
-  // The basis' coefficient table as the written file stores it (same format and precision as the
-  // preintegrated table): what a shader samples for textured metals.
+  // The basis' coefficient table as the written file stores it (the preintegrated table's format,
+  // coefficient_table_precision): what a shader samples for textured metals.
   const CoefficientTable& stored_coefficient_table() const { return stored_coefficient_table_; }
   const std::string& inputs_hash() const { return inputs_hash_; }
 

@@ -21,6 +21,7 @@ enum class ReflectivityAxis {
   square_root,  // u = sqrt(r): more texels at low r, where curves change fastest (shipped)
   linear,       // u = r
   cube_root,    // u = r^(1/3): more texels still at the lowest r
+  stretched_square_root,  // u = 2 s / (1 + s), s = sqrt(r): twice the texels at low r, half at 1
 };
 
 // Where the texel rows sit along the edge-tint axis.
