@@ -228,11 +228,10 @@ std::vector<Design> designs() {
   all.push_back({"64², sqrt r, **g**, c_2 c_3, minimax, f32", kib(64, 4),
                  from_table(table(64, kSqrt, EdgeTintAxis::linear, kRaw, kMinimax))});
   for (const std::size_t size : {64u, 96u}) {
-    all.push_back({fmt::format("{}², **2s / (1 + s), s = sqrt r**, log n, c_2 c_3, minimax, f32",
-                               size),
-                   kib(size, 4),
-                   from_table(table(size, ReflectivityAxis::stretched_square_root, kLog, kRaw,
-                                    kMinimax))});
+    all.push_back(
+        {fmt::format("{}², **2s / (1 + s), s = sqrt r**, log n, c_2 c_3, minimax, f32", size),
+         kib(size, 4),
+         from_table(table(size, ReflectivityAxis::stretched_square_root, kLog, kRaw, kMinimax))});
   }
   for (const std::size_t size : {96u}) {
     all.push_back({fmt::format("{}², **r^(1/3)**, log n, c_2 c_3, minimax, f32", size),
