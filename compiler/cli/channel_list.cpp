@@ -20,14 +20,11 @@ std::vector<std::string> split_list(const std::string& list) {
   return items;
 }
 
-std::optional<std::array<double, 3>> parse_channel_list(const std::string& option,
-                                                        const std::string& text) {
-  const auto fail = [&](const std::string& problem) -> std::optional<std::array<double, 3>> {
-    fmt::print(stderr,
-               "matc eval: error: {}: {}; give one value (grey) or three (R,G,B), each in [0, 1], "
-               "comma-separated\n",
-               option, problem);
-    return std::nullopt;
+ChannelList parse_channel_list(const std::string& option, const std::string& text) {
+  const auto fail = [&](const std::string& problem) {
+    return ChannelList{std::nullopt, fmt::format("{}: {}; give one value (grey) or three (R,G,B), "
+                                                 "each in [0, 1], comma-separated",
+                                                 option, problem)};
   };
   const std::vector<std::string> items = split_list(text);
   if (items.size() != 1 && items.size() != 3)
@@ -44,7 +41,7 @@ std::optional<std::array<double, 3>> parse_channel_list(const std::string& optio
     values[i] = value;
   }
   if (items.size() == 1) values = {values[0], values[0], values[0]};
-  return values;
+  return {values, {}};
 }
 
 }  // namespace matc::cli

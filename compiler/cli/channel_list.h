@@ -12,8 +12,12 @@ namespace matc::cli {
 // "a,b,c" -> {"a", "b", "c"} (also declared in commands.h for the other commands).
 std::vector<std::string> split_list(const std::string& list);
 
-// The three values, or nullopt after printing `matc eval: error: OPTION: ...` on standard error.
-std::optional<std::array<double, 3>> parse_channel_list(const std::string& option,
-                                                        const std::string& text);
+struct ChannelList {
+  std::optional<std::array<double, 3>> values;
+  std::string error;  // when values is empty: "OPTION: problem; what to give"
+};
+
+// The three values (one given is a grey triple), or what is wrong with the text.
+ChannelList parse_channel_list(const std::string& option, const std::string& text);
 
 }  // namespace matc::cli

@@ -89,26 +89,31 @@ int run_eval_artistic(const EvalOptions& options) {
     fmt::print(stderr, "matc eval: error: --reflectivity and --edge-tint go together: give both\n");
     return kExitUsageError;
   }
-  const auto reflectivity = parse_channel_list("--reflectivity", options.reflectivity);
-  if (!reflectivity) return kExitInputError;
-  const auto edge_tint = parse_channel_list("--edge-tint", options.edge_tint);
-  if (!edge_tint) return kExitInputError;
+  const ChannelList reflectivity_list = parse_channel_list("--reflectivity", options.reflectivity);
+  const ChannelList edge_tint_list = parse_channel_list("--edge-tint", options.edge_tint);
+  for (const ChannelList* list : {&reflectivity_list, &edge_tint_list}) {
+    if (list->values) continue;
+    fmt::print(stderr, "matc eval: error: {}\n", list->error);
+    return kExitInputError;
+  }
+  const std::array<double, 3>& reflectivity = *reflectivity_list.values;
+  const std::array<double, 3>& edge_tint = *edge_tint_list.values;
 
   const runtime::BasisKind kind = basis_of(options.lut.basis);
   const runtime::BasisView basis = runtime::shipped_basis(kind);
-  const IorCurve curve = artistic_curve(*reflectivity, *edge_tint);
+  const IorCurve curve = artistic_curve(reflectivity, edge_tint);
   // The table as the written file stores it (--coefficient-table-precision).
   const runtime::CoefficientTableView shipped = runtime::shipped_coefficient_table(kind);
   CoefficientTable table{{shipped.size}, kind, {shipped.texels.begin(), shipped.texels.end()}};
   table = stored_as(std::move(table), coefficient_table_precision_of(options.lut));
   const LabelledCoefficients coefficients = {
-      {"_table", runtime::coefficients_from_table(table.view(), *reflectivity, *edge_tint)},
+      {"_table", runtime::coefficients_from_table(table.view(), reflectivity, edge_tint)},
       {"_compiled", solve_coefficients(curve, basis)}};
 
   ordered_json out;
   out["basis"] = runtime::basis_name(kind);
-  out["reflectivity"] = *reflectivity;
-  out["edge_tint"] = *edge_tint;
+  out["reflectivity"] = reflectivity;
+  out["edge_tint"] = edge_tint;
   out["coefficient_table"] = {{"size", table.size()},
                               {"precision", options.lut.coefficient_table_precision}};
   if (!options.mu.empty()) add_direct_fresnel(options, curve, coefficients, out);

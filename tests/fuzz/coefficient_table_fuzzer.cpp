@@ -37,7 +37,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto g = matc::cli::parse_channel_list(
       "--edge-tint", newline == std::string::npos ? std::string() : text.substr(newline + 1));
   const auto table = matc::runtime::shipped_coefficient_table();
-  if (r && g) check_finite(matc::runtime::coefficients_from_table(table, *r, *g));
+  if (r.values && g.values)
+    check_finite(matc::runtime::coefficients_from_table(table, *r.values, *g.values));
+  if ((!r.values && r.error.empty()) || (!g.values && g.error.empty())) __builtin_trap();
 
   // The runtime path on raw doubles: the first 48 bytes as n and k per channel.
   if (size >= 6 * sizeof(double)) {
