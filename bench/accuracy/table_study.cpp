@@ -130,7 +130,10 @@ DesignScore score(const Design& design, const std::vector<Input>& inputs,
         ++good_count;
       }
     }
-    if (!good) s.poor_excess = std::max(s.poor_excess, table_error - input.compiled_error);
+    if (!good) {
+      s.poor_excess = std::max(s.poor_excess, table_error - input.compiled_error);
+      continue;  // Fbar is compared where F is
+    }
     if (input.artistic.reflectivity >= kDarkReflectivity)
       s.good_max_not_dark = std::max(s.good_max_not_dark, good_max);
     for (int a = 0; a <= 16; ++a) {
@@ -198,58 +201,59 @@ std::vector<Design> designs() {
   using matc::TableSolve;
   using matc::TableValues;
   const auto table = [](std::size_t size, ReflectivityAxis axis, EdgeTintAxis edge_tint_axis,
-                        TableValues values, TableSolve solve) {
+                        TableValues values, TableSolve solve,
+                        double first_column_offset = matc::kDefaultFirstColumnOffset) {
     return matc::fit_coefficient_table(
-        kBasis, CoefficientTableOptions{size, axis, edge_tint_axis, values, solve});
+        kBasis,
+        CoefficientTableOptions{size, axis, edge_tint_axis, values, solve, first_column_offset});
   };
   const auto kib = [](std::size_t size, std::size_t bytes) {
     return fmt::format("{:g} KiB", static_cast<double>(size * size * 2 * bytes) / 1024.0);
   };
+  constexpr auto kCube = ReflectivityAxis::cube_root;
   constexpr auto kSqrt = ReflectivityAxis::square_root;
   constexpr auto kLog = EdgeTintAxis::log_ior;
   constexpr auto kRaw = TableValues::raw;
   constexpr auto kMinimax = TableSolve::basis;
+  constexpr std::size_t kShipped = matc::kDefaultCoefficientTableSize;
   std::vector<Design> all;
-  for (const std::size_t size : {16u, 32u, 64u, 96u, 128u}) {
-    all.push_back({fmt::format("{}², sqrt r, log n, c_2 c_3, minimax, f32", size), kib(size, 4),
+  // The shipped layout at several sizes, then one change at a time.
+  for (const std::size_t size : {32u, 64u, 96u, 112u, 128u}) {
+    all.push_back({fmt::format("{}², r^(1/3), log n, c_2 c_3, minimax, f32", size), kib(size, 4),
+                   from_table(table(size, kCube, kLog, kRaw, kMinimax))});
+  }
+  const CoefficientTable shipped = table(kShipped, kCube, kLog, kRaw, kMinimax);
+  all.push_back({fmt::format("{0}², r^(1/3), log n, c_2 c_3, minimax, **f16** (shipped)", kShipped),
+                 kib(kShipped, 2), from_table(matc::stored_as(shipped, matc::LutPrecision::f16))});
+  for (const std::size_t size : {96u, 128u}) {
+    all.push_back({fmt::format("{}², **sqrt r**, log n, c_2 c_3, minimax, f32", size), kib(size, 4),
                    from_table(table(size, kSqrt, kLog, kRaw, kMinimax))});
   }
-  const CoefficientTable shipped =
-      table(matc::kDefaultCoefficientTableSize, kSqrt, kLog, kRaw, kMinimax);
   all.push_back(
-      {fmt::format("{0}², sqrt r, log n, c_2 c_3, minimax, f16 (shipped; f32 is the {0}² row "
-                   "above)",
-                   shipped.size()),
-       kib(shipped.size(), 2), from_table(matc::stored_as(shipped, matc::LutPrecision::f16))});
-  for (const std::size_t size : {64u, 96u}) {
-    all.push_back({fmt::format("{}², sqrt r, **1/n**, c_2 c_3, minimax, f32", size), kib(size, 4),
-                   from_table(table(size, kSqrt, EdgeTintAxis::inverse_ior, kRaw, kMinimax))});
-  }
-  all.push_back({"64², sqrt r, **g**, c_2 c_3, minimax, f32", kib(64, 4),
-                 from_table(table(64, kSqrt, EdgeTintAxis::linear, kRaw, kMinimax))});
-  for (const std::size_t size : {64u, 96u}) {
-    all.push_back(
-        {fmt::format("{}², **2s / (1 + s), s = sqrt r**, log n, c_2 c_3, minimax, f32", size),
-         kib(size, 4),
-         from_table(table(size, ReflectivityAxis::stretched_square_root, kLog, kRaw, kMinimax))});
-  }
-  for (const std::size_t size : {96u}) {
-    all.push_back({fmt::format("{}², **r^(1/3)**, log n, c_2 c_3, minimax, f32", size),
-                   kib(size, 4),
-                   from_table(table(size, ReflectivityAxis::cube_root, kLog, kRaw, kMinimax))});
-  }
+      {"96², **sqrt r**, log n, c_2 c_3, minimax, f32, **first column solved a quarter "
+       "texel in**",
+       kib(96, 4), from_table(table(96, kSqrt, kLog, kRaw, kMinimax, 0.25))});
+  all.push_back(
+      {"96², **2s / (1 + s), s = sqrt r**, log n, c_2 c_3, minimax, f32", kib(96, 4),
+       from_table(table(96, ReflectivityAxis::stretched_square_root, kLog, kRaw, kMinimax))});
   all.push_back({"64², **r**, log n, c_2 c_3, minimax, f32", kib(64, 4),
                  from_table(table(64, ReflectivityAxis::linear, kLog, kRaw, kMinimax))});
-  all.push_back({"64², sqrt r, log n, **(c_2 c_3) / (1 - r)**, minimax, f32", kib(64, 4),
-                 from_table(table(64, kSqrt, kLog, TableValues::normalised, kMinimax))});
+  all.push_back({fmt::format("{}², r^(1/3), **g**, c_2 c_3, minimax, f32", kShipped),
+                 kib(kShipped, 4),
+                 from_table(table(kShipped, kCube, EdgeTintAxis::linear, kRaw, kMinimax))});
+  all.push_back({fmt::format("{}², r^(1/3), **1/n**, c_2 c_3, minimax, f32", kShipped),
+                 kib(kShipped, 4),
+                 from_table(table(kShipped, kCube, EdgeTintAxis::inverse_ior, kRaw, kMinimax))});
   all.push_back(
-      {"64², sqrt r, **g**, **(c_2 c_3) / (1 - r)**, minimax, f32", kib(64, 4),
-       from_table(table(64, kSqrt, EdgeTintAxis::linear, TableValues::normalised, kMinimax))});
-  all.push_back({"64², sqrt r, log n, c_2 c_3, **least squares**, f32", kib(64, 4),
-                 from_table(table(64, kSqrt, kLog, kRaw, TableSolve::least_squares))});
+      {fmt::format("{}², r^(1/3), log n, **(c_2 c_3) / (1 - r)**, minimax, f32", kShipped),
+       kib(kShipped, 4),
+       from_table(table(kShipped, kCube, kLog, TableValues::normalised, kMinimax))});
+  all.push_back({fmt::format("{}², r^(1/3), log n, c_2 c_3, **least squares**, f32", kShipped),
+                 kib(kShipped, 4),
+                 from_table(table(kShipped, kCube, kLog, kRaw, TableSolve::least_squares))});
   const matc::runtime::CoefficientTableView paper =
       matc::runtime::shipped_coefficient_table(matc::runtime::BasisKind::paper);
-  all.push_back({fmt::format("{}², sqrt r, log n, c_2 c_3, probes, f32: the **paper basis**' "
+  all.push_back({fmt::format("{}², r^(1/3), log n, c_2 c_3, probes, f32: the **paper basis**' "
                              "table against its own compile",
                              paper.size),
                  kib(paper.size, 4),
@@ -257,9 +261,9 @@ std::vector<Design> designs() {
                    return matc::runtime::channel_coefficients_from_table(paper, r, g);
                  },
                  matc::runtime::BasisKind::paper});
-  const CoefficientTable fine = table(128, kSqrt, kLog, kRaw, kMinimax);
+  const CoefficientTable fine = table(128, kCube, kLog, kRaw, kMinimax);
   for (const int degree : {6, 12})
-    all.push_back({fmt::format("closed form: degree {} in (sqrt r, log n), no fetch", degree),
+    all.push_back({fmt::format("closed form: degree {} in (r^(1/3), log n), no fetch", degree),
                    "none", closed_form(fine, degree)});
   return all;
 }
@@ -268,6 +272,16 @@ std::vector<ArtisticParameters> random_parameters() {
   std::vector<ArtisticParameters> out;
   for (const auto& [r, g] : random_artistic_inputs(2000, kMaxReflectivity))
     out.push_back({r, g});
+  return out;
+}
+
+// Near-black metals, where curves change fastest with r: 100 reflectivities log-spaced over
+// [1e-5, kDarkReflectivity] by 11 edge tints.
+std::vector<ArtisticParameters> dark_parameters() {
+  std::vector<ArtisticParameters> out;
+  for (int i = 0; i < 100; ++i)
+    for (int j = 0; j <= 10; ++j)
+      out.push_back({1e-5 * std::pow(kDarkReflectivity / 1e-5, i / 99.0), j / 10.0});
   return out;
 }
 
@@ -286,12 +300,14 @@ struct BasisInputs {
   matc::Lut lut;
   std::vector<Input> random_inputs;
   std::vector<Input> grid_inputs;
+  std::vector<Input> dark_inputs;
 
   explicit BasisInputs(matc::runtime::BasisKind kind)
       : basis(basis_at_cosines(kind)),
         lut(matc::preintegrate_lut(matc::runtime::shipped_basis(kind))),
         random_inputs(make_inputs(random_parameters(), basis, kind)),
-        grid_inputs(make_inputs(grid_parameters(), basis, kind)) {}
+        grid_inputs(make_inputs(grid_parameters(), basis, kind)),
+        dark_inputs(make_inputs(dark_parameters(), basis, kind)) {}
 };
 
 void print_designs() {
@@ -299,8 +315,9 @@ void print_designs() {
   const BasisInputs paper(matc::runtime::BasisKind::paper);
   fmt::print(
       "| table | stored | 2,000 random: F max / mean | F max, r >= {0} | poor fits: excess | F̄ "
-      "max / mean | 50 x 50 grid: F max / mean | poor fits: excess | F̄ max / mean |\n"
-      "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+      "max / mean | 50 x 50 grid: F max / mean | poor fits: excess | F̄ max / mean | r < {0}: "
+      "F max |\n"
+      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
       kDarkReflectivity);
   std::vector<std::future<std::string>> rows;
   for (const Design& design : designs()) {
@@ -315,6 +332,9 @@ void print_designs() {
           row += fmt::format(" {:.5f} |", s.good_max_not_dark);
         row += fmt::format(" {:.4f} | {:.5f} / {:.1e} |", s.poor_excess, s.fbar_max, s.fbar_mean);
       }
+      const DesignScore dark =
+          score(design, inputs_of_basis.dark_inputs, inputs_of_basis.basis, inputs_of_basis.lut);
+      row += fmt::format(" {:.5f} |", dark.good_max);
       return row + "\n";
     }));
   }

@@ -16,10 +16,10 @@ double unit_clamp(double x) {
 }  // namespace
 
 double coefficient_table_u_from_reflectivity(double reflectivity) {
-  return std::sqrt(unit_clamp(reflectivity));
+  return std::cbrt(unit_clamp(reflectivity));
 }
 double coefficient_table_reflectivity_from_u(double u) {
-  return u * u;
+  return u * u * u;
 }
 
 double coefficient_table_v_from_edge_tint(double reflectivity, double edge_tint) {

@@ -5,7 +5,7 @@
 
 // Where to sample the coefficient table for one colour channel's reflectivity r and edge tint g
 // (Gulbrandsen 2014), with linear filtering and clamp-to-edge addressing, texel centres on the
-// ends of both axes: u = sqrt(r) across; down, how far g moves the index of refraction from
+// ends of both axes: u = r^(1/3) across; down, how far g moves the index of refraction from
 // n_max(r) towards n_min(r) in log n, v = log(1 - g delta) / log(1 - delta) with
 // delta = 1 - n_min / n_max = 2 sqrt(r) / (1 + r). Below delta = 0.01 (r < 2.5e-5) v is its
 // series in delta, which float logs of numbers that close to 1 could not resolve.
@@ -19,7 +19,7 @@ float2 matc_coefficient_table_texcoord(float r, float g) {
   // 1 - delta and 1 - g delta written so that r -> 1 does not cancel.
   float rest = (1.0 - sqrt_r) * (1.0 - sqrt_r) / (1.0 + reflectivity);
   float logs = log2(max((1.0 - edge_tint) + edge_tint * rest, 1e-30)) / log2(max(rest, 1e-30));
-  float2 axes = float2(sqrt_r, saturate(delta < 0.01 ? series : logs));
+  float2 axes = float2(pow(reflectivity, 1.0 / 3.0), saturate(delta < 0.01 ? series : logs));
   return (axes * float(MATC_COEFFICIENT_TABLE_SIZE - 1) + 0.5) /
          float(MATC_COEFFICIENT_TABLE_SIZE);
 }

@@ -18,9 +18,9 @@ namespace matc {
 
 // Where the texel columns sit along the reflectivity axis.
 enum class ReflectivityAxis {
-  square_root,  // u = sqrt(r): more texels at low r, where curves change fastest (shipped)
+  cube_root,    // u = r^(1/3): texels follow curves that change fastest at low r (shipped)
+  square_root,  // u = sqrt(r): fewer texels near r = 0
   linear,       // u = r
-  cube_root,    // u = r^(1/3): more texels still at the lowest r
   stretched_square_root,  // u = 2 s / (1 + s), s = sqrt(r): twice the texels at low r, half at 1
 };
 
@@ -43,18 +43,25 @@ enum class TableSolve {
   least_squares,  // smooth in (r, g), but further from the per-material compile
 };
 
-// 96: the smallest size the study (docs/accuracy.md) finds within 0.002 of the per-material
-// compile above r = 0.002; 36 KiB in f16, 72 KiB in f32.
-inline constexpr std::size_t kDefaultCoefficientTableSize = 96;
+// 112: the study (docs/accuracy.md) finds it within 0.0015 of the per-material compile on the
+// issue's random and grid inputs, near-black metals included; 49 KiB in f16, 98 KiB in f32.
+inline constexpr std::size_t kDefaultCoefficientTableSize = 112;
 inline constexpr std::size_t kMinCoefficientTableSize = 2;
 inline constexpr std::size_t kMaxCoefficientTableSize = 1024;
 
+// At r = 0 (n = 1, no interface) the curve is 0 at every mu > 0 and its solve is nothing like the
+// limit r -> 0+, which spoils the first cell of a table whose first cell is wide (sqrt(r) axes);
+// the study can solve the first column this fraction of a texel in instead. With the shipped
+// r^(1/3) axis the first cell ends at r = 7e-7 and the column is solved at r = 0.
+inline constexpr double kDefaultFirstColumnOffset = 0.0;
+
 struct CoefficientTableOptions {
   std::size_t size = kDefaultCoefficientTableSize;
-  ReflectivityAxis axis = ReflectivityAxis::square_root;
+  ReflectivityAxis axis = ReflectivityAxis::cube_root;
   EdgeTintAxis edge_tint_axis = EdgeTintAxis::log_ior;
   TableValues values = TableValues::raw;
   TableSolve solve = TableSolve::basis;
+  double first_column_offset = kDefaultFirstColumnOffset;  // in texels
   unsigned threads = 0;  // 0: one per hardware thread; the bytes do not depend on it
 };
 
