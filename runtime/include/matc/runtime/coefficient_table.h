@@ -3,8 +3,8 @@
 // pixel with one small fetch per channel (docs/coefficient-table.md).
 //
 // Layout: a square two-channel float texture, `size` x `size` texels, columns (x) indexed by
-// u = r^(1/3) (the curves change fastest near r = 0) and rows (y) by v, how far g moves the index of refraction from Gulbrandsen's
-// n_max(r) (g = 0) towards n_min(r) (g = 1) in log n:
+// u = r^(1/3) (the curves change fastest near r = 0) and rows (y) by v, how far g moves the index
+// of refraction from Gulbrandsen's n_max(r) (g = 0) towards n_min(r) (g = 1) in log n:
 //     v = log(n_max / n) / log(n_max / n_min) = log(1 - g delta) / log(1 - delta),
 //     delta = 1 - n_min / n_max = 2 sqrt(r) / (1 + r)                       (v = g as delta -> 0),
 // which spreads the rows evenly over the curves' change: in g itself, most of it happens within
