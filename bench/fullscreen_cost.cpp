@@ -63,13 +63,9 @@ int main(int argc, char** argv) {
   const matc::vulkan::Image schlick_table(context, size, size, lobe_lut.texels);
   // The coefficient table as RGBA32F (.xy used): the same filtering as an RG texture.
   const matc::CoefficientTable& coefficients = build.stored_coefficient_table();
-  std::vector<float> coefficient_texels(coefficients.size() * coefficients.size() * 4, 0.0f);
-  for (std::size_t i = 0; i < coefficients.size() * coefficients.size(); ++i) {
-    coefficient_texels[4 * i] = coefficients.texels[2 * i];
-    coefficient_texels[4 * i + 1] = coefficients.texels[2 * i + 1];
-  }
   const auto table_size = static_cast<std::uint32_t>(coefficients.size());
-  const matc::vulkan::Image coefficient_table(context, table_size, table_size, coefficient_texels);
+  const matc::vulkan::Image coefficient_table(context, table_size, table_size,
+                                              matc::rgba_texels(coefficients));
   const matc::vulkan::LutSampler sampler(context);
   const matc::SpirvWords vertex = matc::compile_fullscreen_stage(
       matc::fullscreen_vertex_source(), matc::ShaderStage::vertex, "fullscreen.vert");

@@ -41,6 +41,19 @@ void write_png(const std::filesystem::path& path, std::uint32_t width, std::uint
 
 }  // namespace
 
+void add_render_options(CLI::App& app, RenderSettings& settings, const std::string& check_help) {
+  app.add_option("--size", settings.size, "Width and height of each panel in pixels")
+      ->capture_default_str()
+      ->check(CLI::Range(16, 2048));
+  app.add_option("--samples", settings.samples, "Samples per pixel (reference and prefiltering)")
+      ->capture_default_str()
+      ->check(CLI::Range(16, 1 << 20));
+  app.add_option("-o,--output", settings.output, "Where the PNG files go")->capture_default_str();
+  app.add_flag("--check", settings.check, check_help);
+  app.add_flag("--vk-validation", settings.validation, "Enable the Khronos validation layer");
+  app.add_option("--device", settings.device, "A substring of the Vulkan device's name");
+}
+
 Panel Panel::times(const Panel& fresnel) const {
   Panel product = *this;
   for (std::size_t i = 0; i < rgb.size(); ++i) {

@@ -8,9 +8,26 @@
 #include <filesystem>
 #include <vector>
 
+#include <string>
+
+#include <CLI/CLI.hpp>
+
 #include "matc/vulkan/fullscreen_pass.h"
 
 namespace matc::render {
+
+// What both programs take on the command line.
+struct RenderSettings {
+  std::uint32_t size = 256;      // panel width and height
+  std::uint32_t samples = 1024;  // per pixel, reference and prefiltering
+  std::filesystem::path output = "render-out";
+  bool check = false;
+  bool validation = false;  // the Khronos validation layer
+  std::string device;       // a substring of the Vulkan device's name
+};
+
+// --size, --samples, -o, --check (meaning `check_help`), --vk-validation, --device.
+void add_render_options(CLI::App& app, RenderSettings& settings, const std::string& check_help);
 
 inline constexpr double kDefaultRoughness = 0.3;
 

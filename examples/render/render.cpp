@@ -36,17 +36,11 @@ namespace fs = std::filesystem;
 constexpr std::size_t kCurveSize = 1024;
 using namespace matc::render;
 
-struct RenderSettings {
-  std::uint32_t size = 256;
-  std::uint32_t samples = 1024;
-  fs::path output = "render-out";
-  bool check = false;
-  bool validation = false;
-  std::string device;
+struct ComparisonSettings : RenderSettings {
   std::string basis{matc::runtime::basis_name(matc::runtime::kDefaultBasis)};
 };
 
-matc::BuildOptions build_options(const RenderSettings& settings) {
+matc::BuildOptions build_options(const ComparisonSettings& settings) {
   matc::BuildOptions options;
   options.basis = *matc::runtime::basis_from_name(settings.basis);
   return options;
@@ -54,7 +48,7 @@ matc::BuildOptions build_options(const RenderSettings& settings) {
 
 class Renderer {
  public:
-  explicit Renderer(const RenderSettings& settings)
+  explicit Renderer(const ComparisonSettings& settings)
       : settings_(settings),
         build_(build_options(settings)),
         context_(matc::vulkan::ContextOptions{settings.validation, settings.device}),
@@ -97,7 +91,7 @@ class Renderer {
   }
 
  private:
-  RenderSettings settings_;
+  ComparisonSettings settings_;
   matc::Build build_;
   matc::vulkan::Context context_;
   matc::ComparisonLobes lobes_;
@@ -114,20 +108,12 @@ class Renderer {
 
 int main(int argc, char** argv) {
   CLI::App app{"Comparison renders: Monte-Carlo reference, Schlick's split sum, ours"};
-  RenderSettings settings;
+  ComparisonSettings settings;
   std::vector<std::string> files;
   app.add_option("files", files, "Material files (.json)")->required();
-  app.add_option("--size", settings.size, "Width and height of each panel in pixels")
-      ->capture_default_str()
-      ->check(CLI::Range(16, 2048));
-  app.add_option("--samples", settings.samples, "Samples per pixel (reference and prefiltering)")
-      ->capture_default_str()
-      ->check(CLI::Range(16, 1 << 20));
-  app.add_option("-o,--output", settings.output, "Where the PNG files go")->capture_default_str();
-  app.add_flag("--check", settings.check,
-               "Exit 1 unless ours is closer to the reference than Schlick's for every material");
-  app.add_flag("--vk-validation", settings.validation, "Enable the Khronos validation layer");
-  app.add_option("--device", settings.device, "A substring of the Vulkan device's name");
+  add_render_options(
+      app, settings,
+      "Exit 1 unless ours is closer to the reference than Schlick's for every material");
   app.add_option("--basis", settings.basis, "The Fresnel basis of ours (see matc --help)")
       ->capture_default_str()
       ->check(CLI::IsMember({"extended", "paper"}));

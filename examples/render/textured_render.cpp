@@ -94,52 +94,32 @@ Panel only_region(Panel panel, std::size_t region, std::uint32_t size) {
   return panel;
 }
 
-std::vector<float> rgba(const matc::CoefficientTable& table) {
-  std::vector<float> texels(table.size() * table.size() * 4, 0.0f);
-  for (std::size_t i = 0; i < table.size() * table.size(); ++i) {
-    texels[4 * i] = table.texels[2 * i];
-    texels[4 * i + 1] = table.texels[2 * i + 1];
-  }
-  return texels;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
       "Textured render: per-pixel reflectivity and edge tint, reference vs Schlick vs ours"};
-  std::uint32_t size = 256;
-  std::uint32_t samples = 1024;
-  fs::path output = "render-out";
-  bool check = false;
-  bool validation = false;
-  std::string device;
-  app.add_option("--size", size, "Width and height of each panel in pixels (even)")
-      ->capture_default_str()
-      ->check(CLI::Range(16, 2048));
-  app.add_option("--samples", samples, "Samples per pixel (reference and prefiltering)")
-      ->capture_default_str()
-      ->check(CLI::Range(16, 1 << 20));
-  app.add_option("-o,--output", output, "Where the PNG files go")->capture_default_str();
-  app.add_flag("--check", check,
-               "Exit 1 unless our Fresnel's error (against the split sum with the exact Fresnel) "
-               "is below Schlick's in every region");
-  app.add_flag("--vk-validation", validation, "Enable the Khronos validation layer");
-  app.add_option("--device", device, "A substring of the Vulkan device's name");
+  RenderSettings settings;
+  add_render_options(app, settings,
+                     "Exit 1 unless our Fresnel's error (against the split sum with the exact "
+                     "Fresnel) is below Schlick's in every region");
   CLI11_PARSE(app, argc, argv);
-  size += size % 2;
+  const std::uint32_t size = settings.size + settings.size % 2;  // four equal quadrants
+  const std::uint32_t samples = settings.samples;
+  const fs::path& output = settings.output;
 
   try {
     const matc::Build build(matc::BuildOptions{});
-    const matc::vulkan::Context context(matc::vulkan::ContextOptions{validation, device});
+    const matc::vulkan::Context context(
+        matc::vulkan::ContextOptions{settings.validation, settings.device});
     const matc::ComparisonLobes lobes(matc::runtime::shipped_basis().samples());
     const matc::Lut lobe_lut = matc::preintegrate_lut(lobes.view(), {});
     const auto lut_size = static_cast<std::uint32_t>(build.stored_lut().size);
     const matc::vulkan::Image ours_lut(context, lut_size, lut_size, build.stored_lut().texels);
     const matc::vulkan::Image schlick_lut(context, lut_size, lut_size, lobe_lut.texels);
     const auto table_size = static_cast<std::uint32_t>(build.stored_coefficient_table().size());
-    const matc::vulkan::Image coefficient_table(context, table_size, table_size,
-                                                rgba(build.stored_coefficient_table()));
+    const matc::vulkan::Image coefficient_table(
+        context, table_size, table_size, matc::rgba_texels(build.stored_coefficient_table()));
     const matc::vulkan::LutSampler sampler(context);
     const std::vector<float> materials = pixel_materials(size);
     matc::vulkan::Buffer material_buffer(context, materials.size() * sizeof(float),
@@ -203,7 +183,7 @@ int main(int argc, char** argv) {
     for (const std::string& message : context.validation_messages())
       fmt::print(stderr, "validation layer: {}\n", message);
     if (!context.validation_messages().empty()) return 1;
-    if (check && !all_better) {
+    if (settings.check && !all_better) {
       fmt::print(stderr,
                  "matc_textured_render: our Fresnel is not closer to the exact one than "
                  "Schlick's\n");

@@ -153,6 +153,15 @@ CoefficientTable fit_coefficient_table(runtime::BasisKind basis,
   return table;
 }
 
+std::vector<float> rgba_texels(const CoefficientTable& table) {
+  std::vector<float> texels(table.size() * table.size() * 4, 0.0f);
+  for (std::size_t i = 0; i < table.size() * table.size(); ++i) {
+    texels[4 * i] = table.texels[2 * i];
+    texels[4 * i + 1] = table.texels[2 * i + 1];
+  }
+  return texels;
+}
+
 runtime::ChannelCoefficients channel_coefficients(const CoefficientTable& table,
                                                   double reflectivity, double edge_tint) {
   if (table.shipped_layout()) {

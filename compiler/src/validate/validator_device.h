@@ -18,17 +18,6 @@ namespace matc {
 
 inline constexpr std::uint32_t kWorkgroupSize = 64;
 
-// The two-channel coefficient table as RGBA texels (z = w = 0) for the executor's RGBA32F
-// images: the .xy a shader reads filter exactly as from an RG texture.
-inline std::vector<float> rgba_texels(const CoefficientTable& table) {
-  std::vector<float> texels(table.size() * table.size() * 4, 0.0f);
-  for (std::size_t i = 0; i < table.size() * table.size(); ++i) {
-    texels[4 * i] = table.texels[2 * i];
-    texels[4 * i + 1] = table.texels[2 * i + 1];
-  }
-  return texels;
-}
-
 struct DeviceValidator::Device {
   vulkan::Context context;
   vulkan::Image lut;

@@ -87,6 +87,10 @@ double coefficient_table_row_edge_tint(const CoefficientTableOptions& options, d
 CoefficientTable fit_coefficient_table(runtime::BasisKind basis,
                                        const CoefficientTableOptions& options = {});
 
+// The texels as RGBA (z = w = 0), for uploads that take four channels only (the Vulkan
+// executor's RGBA32F images): .xy filter exactly as from an RG texture.
+std::vector<float> rgba_texels(const CoefficientTable& table);
+
 // One channel's c_0..c_3 read from a table of any layout, bilinearly filtered like a sampler
 // (the shipped layout through the runtime's own function).
 runtime::ChannelCoefficients channel_coefficients(const CoefficientTable& table,
