@@ -1,7 +1,8 @@
 // What an engine's asset pipeline does with matc: materials compiled by the build
 // (matc_add_materials), their C headers included, the SPIR-V library module linked into the
-// engine's own shader, and a material compiled from memory with libmatc. Exits non-zero if any
-// check fails.
+// engine's own shader, a material compiled from memory with libmatc, and a textured metal's
+// coefficients from the coefficient table at run time. Exits non-zero if any check fails.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <span>
@@ -14,6 +15,7 @@
 #include "matc/compile.h"
 #include "matc/emit/build.h"
 #include "matc/material/parse.h"
+#include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/spirv/linkage.h"
 #include "matc/spirv/shader_compiler.h"
@@ -107,6 +109,24 @@ void main() {
   if (brass) emit_in_memory(*brass);
   const auto broken = compile_in_memory(R"({"name": "x", "artistic": {"reflectivity": 2}})");
   expect(!broken.has_value(), "a bad in-memory material gives diagnostics, not a crash");
+
+  // 4. A textured metal: a texel's coefficients from its base colour (reflectivity) and edge tint
+  //    through the coefficient table, as MATC_COEFFICIENTS_FROM_TABLE computes them in a shader,
+  //    give the F that compiling that texel's material gives.
+  if (brass) {
+    const matc::runtime::Coefficients texel = matc::runtime::coefficients_from_table(
+        matc::runtime::shipped_coefficient_table(), {0.91, 0.78, 0.42}, {0.95, 0.93, 0.88});
+    double worst = 0.0;
+    for (int i = 0; i <= 100; ++i) {
+      const auto& basis = matc::runtime::shipped_basis_polynomial();
+      const auto table_f = matc::runtime::evaluate_fresnel(texel, basis, i / 100.0);
+      const auto compiled_f =
+          matc::runtime::evaluate_fresnel(brass->coefficients, basis, i / 100.0);
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(table_f[c] - compiled_f[c]));
+    }
+    expect(worst < 0.002, "a textured texel's F from the coefficient table matches its compile");
+  }
 
   std::printf("%s\n",
               failures == 0 ? "engine example: all checks passed" : "engine example: FAILED");
