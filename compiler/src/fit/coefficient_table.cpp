@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <thread>
 
 #include <fmt/format.h>
 
@@ -13,6 +12,7 @@
 #include "matc/optics/reflectance_curve.h"
 #include "matc/runtime/basis_polynomial.h"
 #include "matc/version.h"
+#include "parallel_rows.h"
 
 namespace matc {
 namespace {
@@ -138,18 +138,8 @@ CoefficientTable fit_coefficient_table(runtime::BasisKind basis,
   }
   CoefficientTable table{options, basis, {}};
   table.texels.assign(options.size * options.size * runtime::kCoefficientTableChannels, 0.0f);
-  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
-  const unsigned threads = std::min<unsigned>(options.threads == 0 ? hardware : options.threads,
-                                              static_cast<unsigned>(options.size));
-  // Rows are interleaved over threads; each texel is written by exactly one of them.
-  const auto work = [&](unsigned first) {
-    for (std::size_t y = first; y < options.size; y += threads)
-      fit_row(table, y);
-  };
-  std::vector<std::jthread> pool;
-  for (unsigned t = 1; t < threads; ++t)
-    pool.emplace_back(work, t);
-  work(0);
+  fill_rows_in_parallel(options.size, options.threads,
+                        [&] { return [&](std::size_t y) { fit_row(table, y); }; });
   return table;
 }
 

@@ -1,12 +1,11 @@
 #include "matc/lut/preintegrate.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <stdexcept>
-#include <thread>
 
 #include "matc/lut/microfacet_samples.h"
+#include "parallel_rows.h"
 
 namespace matc {
 namespace {
@@ -86,13 +85,9 @@ Lut preintegrate_lut(const runtime::BasisView& basis, const LutOptions& options)
   const InterleavedBasis interleaved(basis);
   const HammersleySet set(lut.samples);
   const double last = static_cast<double>(lut.size - 1);
-  // Rows are handed out one at a time; each texel depends only on its own coordinates, so the
-  // result does not depend on how rows are spread over threads.
-  std::atomic<std::size_t> next_row{0};
-  const auto worker = [&] {
-    std::vector<float> vdoth(lut.samples);
-    std::vector<float> weight(lut.samples);
-    for (std::size_t y = next_row++; y < lut.size; y = next_row++) {
+  fill_rows_in_parallel(lut.size, options.threads, [&] {
+    return [&, vdoth = std::vector<float>(lut.samples),
+            weight = std::vector<float>(lut.samples)](std::size_t y) mutable {
       const double roughness = static_cast<double>(y) / last;
       for (std::size_t x = 0; x < lut.size; ++x) {
         const double ndotv = runtime::lut_ndotv_from_u(static_cast<double>(x) / last);
@@ -101,15 +96,8 @@ Lut preintegrate_lut(const runtime::BasisView& basis, const LutOptions& options)
         for (std::size_t i = 0; i < runtime::kBasisSize; ++i)
           texel[i] = static_cast<float>(bbar[i]);
       }
-    }
-  };
-  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
-  const unsigned threads = std::min<unsigned>(options.threads == 0 ? hardware : options.threads,
-                                              static_cast<unsigned>(lut.size));
-  std::vector<std::jthread> pool;
-  for (unsigned t = 1; t < threads; ++t)
-    pool.emplace_back(worker);
-  worker();
+    };
+  });
   return lut;
 }
 
