@@ -17,14 +17,7 @@ constexpr std::size_t kGridSteps = 40;  // 41 points per axis
 
 void record(Discrepancy& discrepancy, const runtime::Rgb& expected, const float* actual,
             const ValidationQuery& query) {
-  for (std::size_t channel = 0; channel < 3; ++channel) {
-    const double difference = std::abs(static_cast<double>(actual[channel]) - expected[channel]);
-    // A NaN from the device must fail, not compare false and pass.
-    if (std::isnan(difference) || difference > discrepancy.max_abs) {
-      discrepancy.max_abs = std::isnan(difference) ? INFINITY : difference;
-      discrepancy.where = query;
-    }
-  }
+  record_largest(discrepancy.max_abs, discrepancy.where, expected, actual, query);
 }
 
 }  // namespace

@@ -18,14 +18,7 @@ constexpr std::size_t kTableQueries = 4096;
 
 void record(TableDiscrepancy& discrepancy, const runtime::Rgb& expected, const float* actual,
             std::size_t query) {
-  for (std::size_t channel = 0; channel < 3; ++channel) {
-    const double difference = std::abs(static_cast<double>(actual[channel]) - expected[channel]);
-    // A NaN from the device must fail, not compare false and pass.
-    if (std::isnan(difference) || difference > discrepancy.max_abs) {
-      discrepancy.max_abs = std::isnan(difference) ? INFINITY : difference;
-      discrepancy.query = query;
-    }
-  }
+  record_largest(discrepancy.max_abs, discrepancy.query, expected, actual, query);
 }
 
 runtime::Rgb as_rgb(const std::array<float, 3>& values) {

@@ -2,12 +2,14 @@
 // coefficient-table validations).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "matc/emit/validation_kernel.h"
 #include "matc/fit/coefficient_table.h"
 #include "matc/lut/preintegrate.h"
+#include "matc/runtime/fresnel.h"
 #include "matc/validate/device_validation.h"
 #include "matc/vulkan/buffer.h"
 #include "matc/vulkan/context.h"
@@ -17,6 +19,21 @@
 namespace matc {
 
 inline constexpr std::uint32_t kWorkgroupSize = 64;
+
+// Keeps the largest |actual - expected| over the three channels in `max_abs` and where it
+// happened in `where` (a query or its index).
+template <typename Where>
+void record_largest(double& max_abs, Where& where, const runtime::Rgb& expected,
+                    const float* actual, const Where& here) {
+  for (std::size_t channel = 0; channel < 3; ++channel) {
+    const double difference = std::abs(static_cast<double>(actual[channel]) - expected[channel]);
+    // A NaN from the device must fail, not compare false and pass.
+    if (std::isnan(difference) || difference > max_abs) {
+      max_abs = std::isnan(difference) ? INFINITY : difference;
+      where = here;
+    }
+  }
+}
 
 struct DeviceValidator::Device {
   vulkan::Context context;
