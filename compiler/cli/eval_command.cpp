@@ -103,9 +103,8 @@ int run_eval_artistic(const EvalOptions& options) {
   const runtime::BasisView basis = runtime::shipped_basis(kind);
   const IorCurve curve = artistic_curve(reflectivity, edge_tint);
   // The table as the written file stores it (--coefficient-table-precision).
-  const runtime::CoefficientTableView shipped = runtime::shipped_coefficient_table(kind);
-  CoefficientTable table{{shipped.size}, kind, {shipped.texels.begin(), shipped.texels.end()}};
-  table = stored_as(std::move(table), coefficient_table_precision_of(options.lut));
+  const CoefficientTable table =
+      stored_coefficient_table(kind, coefficient_table_precision_of(options.lut));
   const LabelledCoefficients coefficients = {
       {"_table", runtime::coefficients_from_table(table.view(), reflectivity, edge_tint)},
       {"_compiled", solve_coefficients(curve, basis)}};

@@ -115,17 +115,15 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
   if (options_.embedded_lut_size != 0) {
     embedded_lut_ = preintegrate_lut(basis, {options_.embedded_lut_size, options_.lut.samples});
   }
-  const runtime::CoefficientTableView shipped_table =
-      runtime::shipped_coefficient_table(options_.basis);
-  CoefficientTable table{{shipped_table.size}, options_.basis, {}};
-  table.texels.assign(shipped_table.texels.begin(), shipped_table.texels.end());
-  stored_coefficient_table_ = stored_as(std::move(table), options_.coefficient_table_precision);
+  stored_coefficient_table_ =
+      matc::stored_coefficient_table(options_.basis, options_.coefficient_table_precision);
   coefficient_table_file_ =
       fmt::format("{}{}", coefficient_table_stem(), lut_file_extension(options_.lut_format));
   coefficient_table_file_bytes_ = encode_coefficient_table(
       stored_coefficient_table_, options_.lut_format, options_.coefficient_table_precision);
   inputs_hash_ = ContentHash().add(options_key()).hex();
-  ShaderLibraryOptions library_options{options_.lut.size, shipped_table.size, embedded_lut()};
+  ShaderLibraryOptions library_options{options_.lut.size, stored_coefficient_table_.size(),
+                                       embedded_lut()};
   const runtime::BasisPolynomial& polynomial = runtime::shipped_basis_polynomial(options_.basis);
   glsl_library_ =
       shader_library_source(ShaderLanguage::glsl, polynomial, library_options, inputs_hash_);

@@ -54,6 +54,12 @@ CoefficientTable stored_as(CoefficientTable table, LutPrecision precision) {
   return table;
 }
 
+CoefficientTable stored_coefficient_table(runtime::BasisKind basis, LutPrecision precision) {
+  const runtime::CoefficientTableView shipped = runtime::shipped_coefficient_table(basis);
+  CoefficientTable table{{shipped.size}, basis, {shipped.texels.begin(), shipped.texels.end()}};
+  return stored_as(std::move(table), precision);
+}
+
 std::string encode_coefficient_table(const CoefficientTable& table, LutFormat format,
                                      LutPrecision precision) {
   if (!table.shipped_layout()) throw std::logic_error("only the shipped table layout is written");
