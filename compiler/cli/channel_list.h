@@ -9,7 +9,7 @@
 
 namespace matc::cli {
 
-// "a,b,c" -> {"a", "b", "c"} (also declared in commands.h for the other commands).
+// "a,b,c" -> {"a", "b", "c"}: every comma-separated option (--emit, --reflectivity, ...).
 std::vector<std::string> split_list(const std::string& list);
 
 struct ChannelList {

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "channel_list.h"  // split_list
 #include "lut_options.h"
 
 namespace matc::cli {
@@ -49,9 +50,6 @@ struct ValidateOptions {
   DeviceCliOptions device;
 };
 int run_validate(const ValidateOptions& options);
-
-// "a,b,c" -> {"a", "b", "c"}.
-std::vector<std::string> split_list(const std::string& list);
 
 struct EvalOptions {
   std::string file;          // a material file, or:
