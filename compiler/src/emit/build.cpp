@@ -129,6 +129,9 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
       shader_library_source(ShaderLanguage::glsl, polynomial, library_options, inputs_hash_);
   hlsl_library_ =
       shader_library_source(ShaderLanguage::hlsl, polynomial, library_options, inputs_hash_);
+  library_options.coefficient_table_functions = false;
+  glsl_material_module_library_ =
+      shader_library_source(ShaderLanguage::glsl, polynomial, library_options, inputs_hash_);
 }
 
 std::string Build::options_key() const {
@@ -197,9 +200,9 @@ SpirvWords Build::material_library_module(const CompiledMaterial& compiled) cons
 SpirvWords Build::material_library_module(const CompiledMaterial& compiled,
                                           std::string_view inputs_hash) const {
   const std::string& name = compiled.material.name;
-  return library_module(
-      glsl_library_ + material_snippet_source(ShaderLanguage::glsl, compiled, inputs_hash),
-      fmt::format("{}.spv", name), material_library_exports(name));
+  return library_module(glsl_material_module_library_ +
+                            material_snippet_source(ShaderLanguage::glsl, compiled, inputs_hash),
+                        fmt::format("{}.spv", name), material_library_exports(name));
 }
 
 SpirvWords Build::validation_module(ShaderLanguage language,

@@ -68,10 +68,12 @@ std::string shader_library_source(ShaderLanguage language,
        {"degree", std::to_string(runtime::kPolynomialDegree)},
        {"horner_steps", horner_steps(language, polynomial)},
        {"coefficient_table",
-        fill_template(
-            language == ShaderLanguage::glsl ? "glsl/coefficient_table.glsl"
-                                             : "hlsl/coefficient_table.hlsl",
-            {{"coefficient_table_size", std::to_string(options.coefficient_table_size)}})},
+        options.coefficient_table_functions
+            ? fill_template(
+                  language == ShaderLanguage::glsl ? "glsl/coefficient_table.glsl"
+                                                   : "hlsl/coefficient_table.hlsl",
+                  {{"coefficient_table_size", std::to_string(options.coefficient_table_size)}})
+            : ""},
        {"embedded_lut",
         options.embedded_lut ? embedded_lut_source(language, *options.embedded_lut) : ""}});
 }

@@ -17,6 +17,8 @@ struct ShaderLibraryOptions {
   std::size_t coefficient_table_size = kDefaultCoefficientTableSize;
   // A small table to embed as a constant array (--embed-lut); null for none.
   const Lut* embedded_lut = nullptr;
+  // The textured-metal functions (coefficient table, inverse Gulbrandsen mapping).
+  bool coefficient_table_functions = true;
 };
 
 std::string shader_library_source(ShaderLanguage language,
