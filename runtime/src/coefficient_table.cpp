@@ -6,15 +6,6 @@
 #include "texel_axis.h"
 
 namespace matc::runtime {
-namespace {
-
-// x clamped to [0, 1], NaN read as 0: inputs come from textures and user data.
-double unit_clamp(double x) {
-  return x >= 0.0 ? std::min(x, 1.0) : 0.0;
-}
-
-}  // namespace
-
 double coefficient_table_u_from_reflectivity(double reflectivity) {
   return std::cbrt(unit_clamp(reflectivity));
 }

@@ -9,10 +9,15 @@
 
 namespace matc::runtime {
 
-// Left texel index and blend weight along one axis for a coordinate u in [0, 1] (clamped; NaN
-// reads as 0, where a float-to-index conversion would be undefined).
+// x clamped to [0, 1], NaN read as 0: inputs come from textures and user data, and a NaN
+// reaching a float-to-index conversion would be undefined behaviour.
+inline double unit_clamp(double x) {
+  return x >= 0.0 ? std::min(x, 1.0) : 0.0;
+}
+
+// Left texel index and blend weight along one axis for a coordinate u in [0, 1] (unit_clamp'ed).
 inline std::pair<std::size_t, double> texel_axis_position(double u, std::size_t size) {
-  const double position = (u >= 0.0 ? std::min(u, 1.0) : 0.0) * static_cast<double>(size - 1);
+  const double position = unit_clamp(u) * static_cast<double>(size - 1);
   const std::size_t left = std::min(static_cast<std::size_t>(position), size - 2);
   return {left, position - static_cast<double>(left)};
 }
