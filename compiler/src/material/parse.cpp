@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "located_json_reader.h"
 #include "matc/material/located_json.h"
 #include "matc/optics/presets.h"
 #include "suggestion.h"
@@ -16,6 +17,7 @@ namespace matc {
 namespace {
 
 using nlohmann::json;
+using runtime::Rgb;
 
 constexpr std::array<std::string_view, 3> kModelKeys = {"artistic", "ior", "spectral"};
 constexpr std::array<std::string_view, 7> kTopLevelFields = {
@@ -26,52 +28,15 @@ constexpr std::array<std::string_view, 2> kSpectralFields = {"preset", "file"};
 constexpr std::string_view kNameRule =
     "a name matching [A-Za-z][A-Za-z0-9_]*, at most 64 characters, without '__'";
 
-// A closed or half-open interval with the wording used in diagnostics.
-struct Range {
-  double min;
-  double max;
-  bool max_inclusive = true;
-
-  bool contains(double value) const {
-    return value >= min && (max_inclusive ? value <= max : value < max);
-  }
-  std::string describe() const {
-    return fmt::format("[{}, {}{}", min, max, max_inclusive ? "]" : ")");
-  }
-};
-
 constexpr Range kReflectivityRange{0.0, 1.0, false};
 constexpr Range kUnitRange{0.0, 1.0};
 constexpr Range kIorRange{0.0, kMaxIorComponent};
 
-std::string describe_type(const json& value) {
-  switch (value.type()) {
-    case json::value_t::null:
-      return "null";
-    case json::value_t::boolean:
-      return "a boolean";
-    case json::value_t::string:
-      return "a string";
-    case json::value_t::array:
-      return "an array";
-    case json::value_t::object:
-      return "an object";
-    default:
-      return "a number";
-  }
-}
-
-std::string child(const std::string& pointer, std::string_view key) {
-  return pointer + "/" + std::string(key);
-}
-
-class MaterialReader {
+class MaterialReader : LocatedJsonReader {
  public:
   MaterialReader(const LocatedJson& document, const TextLocator& locator, Diagnostics& diagnostics,
                  const FileLoader& loader, std::filesystem::path base_directory)
-      : document_(document),
-        locator_(locator),
-        diagnostics_(diagnostics),
+      : LocatedJsonReader(document, locator, diagnostics),
         loader_(loader),
         base_directory_(std::move(base_directory)) {}
 
@@ -107,46 +72,6 @@ class MaterialReader {
   }
 
  private:
-  SourceLocation at_value(const std::string& pointer) const {
-    return locator_.at(document_.value_offset(pointer));
-  }
-  SourceLocation at_key(const std::string& pointer) const {
-    return locator_.at(document_.key_or_value_offset(pointer));
-  }
-  void error(const std::string& pointer, std::string message, std::string allowed) {
-    diagnostics_.error(at_value(pointer), field_path(pointer), std::move(message),
-                       std::move(allowed));
-  }
-  void missing(const std::string& parent, std::string_view key, std::string allowed) {
-    diagnostics_.error(at_value(parent), field_path(child(parent, key)), "is missing",
-                       std::move(allowed));
-  }
-  std::string where(std::size_t offset) const {
-    const SourceLocation location = locator_.at(offset);
-    return fmt::format("{}:{}", location.line, location.column);
-  }
-
-  void report_duplicate_keys() {
-    for (const DuplicateKey& duplicate : document_.duplicates) {
-      diagnostics_.error(locator_.at(duplicate.offset), field_path(duplicate.pointer),
-                         fmt::format("is given twice (first at {})", where(duplicate.first_offset)),
-                         "each field at most once");
-    }
-  }
-
-  void warn_unknown_fields(const json& object, const std::string& pointer,
-                           std::span<const std::string_view> known) {
-    for (const auto& [key, value] : object.items()) {
-      if (std::find(known.begin(), known.end(), key) != known.end()) continue;
-      const auto suggestion = closest_match(key, known);
-      diagnostics_.warning(
-          at_key(child(pointer, key)), field_path(child(pointer, key)),
-          suggestion ? fmt::format("unknown field, ignored (did you mean '{}'?)", *suggestion)
-                     : "unknown field, ignored",
-          fmt::format("known fields here: {}", join(known)));
-    }
-  }
-
   std::optional<std::string> read_name(const json& root) {
     if (!root.contains("name")) {
       missing("", "name", std::string(kNameRule));
@@ -162,78 +87,6 @@ class MaterialReader {
       return std::nullopt;
     }
     return name.get<std::string>();
-  }
-
-  std::optional<double> read_number(const json& value, const std::string& pointer,
-                                    const Range& range) {
-    const std::string allowed = fmt::format("a number in {}", range.describe());
-    if (!value.is_number()) {
-      error(pointer, fmt::format("is {}", describe_type(value)), allowed);
-      return std::nullopt;
-    }
-    const double number = value.get<double>();
-    if (!std::isfinite(number)) {
-      error(pointer, "is too large to be represented", allowed);
-      return std::nullopt;
-    }
-    if (!range.contains(number)) {
-      error(pointer, fmt::format("{} is out of range", number), allowed);
-      return std::nullopt;
-    }
-    return number;
-  }
-
-  // A number (grey) or an array of three (R, G, B).
-  std::optional<Rgb> read_rgb(const json& value, const std::string& pointer, const Range& range) {
-    if (value.is_number()) {
-      const auto grey = read_number(value, pointer, range);
-      if (!grey) return std::nullopt;
-      return Rgb{*grey, *grey, *grey};
-    }
-    const std::string allowed = fmt::format(
-        "a number in {} (grey) or an array of 3 such numbers (R, G, B)", range.describe());
-    if (!value.is_array()) {
-      error(pointer, fmt::format("is {}", describe_type(value)), allowed);
-      return std::nullopt;
-    }
-    if (value.size() != 3) {
-      error(pointer, fmt::format("has {} elements", value.size()), allowed);
-      return std::nullopt;
-    }
-    Rgb rgb{};
-    bool ok = true;
-    for (std::size_t c = 0; c < 3; ++c) {
-      const auto component = read_number(value[c], pointer + "/" + std::to_string(c), range);
-      ok = ok && component.has_value();
-      if (component) rgb[c] = *component;
-    }
-    if (!ok) return std::nullopt;
-    return rgb;
-  }
-
-  // Reads `key` of `object` at `pointer`; reports it missing if absent.
-  std::optional<Rgb> read_rgb_field(const json& object, const std::string& pointer,
-                                    std::string_view key, const Range& range) {
-    if (!object.contains(key)) {
-      missing(pointer, key,
-              fmt::format("a number in {} or an array of 3 such numbers", range.describe()));
-      return std::nullopt;
-    }
-    return read_rgb(object[std::string(key)], child(pointer, key), range);
-  }
-
-  // Returns the object at `key`, or reports that it is not one.
-  const json* object_field(const json& root, std::string_view key,
-                           std::span<const std::string_view> fields) {
-    const json& value = root[std::string(key)];
-    const std::string pointer = child("", key);
-    if (!value.is_object()) {
-      error(pointer, fmt::format("is {}", describe_type(value)),
-            fmt::format("an object with the fields {}", join(fields)));
-      return nullptr;
-    }
-    warn_unknown_fields(value, pointer, fields);
-    return &value;
   }
 
   std::optional<MaterialModel> read_model(const json& root) {
@@ -374,9 +227,6 @@ class MaterialReader {
     return input;
   }
 
-  const LocatedJson& document_;
-  const TextLocator& locator_;
-  Diagnostics& diagnostics_;
   const FileLoader& loader_;
   std::filesystem::path base_directory_;
 };
