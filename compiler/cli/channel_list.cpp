@@ -20,11 +20,11 @@ std::vector<std::string> split_list(const std::string& list) {
   return items;
 }
 
-ChannelList parse_channel_list(const std::string& option, const std::string& text) {
+ChannelList parse_channel_list(const std::string& option, const std::string& text, double max) {
   const auto fail = [&](const std::string& problem) {
     return ChannelList{std::nullopt, fmt::format("{}: {}; give one value (grey) or three (R,G,B), "
-                                                 "each in [0, 1], comma-separated",
-                                                 option, problem)};
+                                                 "each in [0, {}], comma-separated",
+                                                 option, problem, max)};
   };
   const std::vector<std::string> items = split_list(text);
   if (items.size() != 1 && items.size() != 3)
@@ -36,8 +36,8 @@ ChannelList parse_channel_list(const std::string& option, const std::string& tex
     const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), value);
     if (item.empty() || error != std::errc() || end != item.data() + item.size())
       return fail(fmt::format("'{}' is not a number", item));
-    if (!std::isfinite(value) || value < 0.0 || value > 1.0)
-      return fail(fmt::format("{} is outside [0, 1]", item));
+    if (!std::isfinite(value) || value < 0.0 || value > max)
+      return fail(fmt::format("{} is outside [0, {}]", item, max));
     values[i] = value;
   }
   if (items.size() == 1) values = {values[0], values[0], values[0]};

@@ -18,6 +18,8 @@ struct ChannelList {
 };
 
 // The three values (one given is a grey triple), or what is wrong with the text.
-ChannelList parse_channel_list(const std::string& option, const std::string& text);
+// Each value must lie in [0, max].
+ChannelList parse_channel_list(const std::string& option, const std::string& text,
+                               double max = 1.0);
 
 }  // namespace matc::cli

@@ -84,6 +84,29 @@ struct ReportOptions {
 };
 int run_report(const ReportOptions& options);
 
+// `matc bake`: asset files, and/or one asset from the map options.
+struct BakeCommandOptions {
+  std::vector<std::string> files;  // asset JSON files
+  std::string reflectivity;        // a map file or constant values, for a command-line asset
+  std::string edge_tint;
+  std::string n;
+  std::string k;
+  std::string name;     // its name (default: the first map file's stem)
+  bool linear = false;  // its 8- and 16-bit map files hold linear values, not sRGB
+  std::string output_directory = "matc-bake";
+  std::string format = "ktx2";
+  std::string precision = "f16";
+  std::string basis{runtime::basis_name(runtime::kDefaultBasis)};
+  bool f0 = false;
+  bool error_map = false;
+  bool keep_going = false;
+  bool quiet = false;
+  unsigned jobs = 0;  // threads; 0: one per hardware thread
+  std::string depfile;
+  bool write_depfile = false;
+};
+int run_bake(const BakeCommandOptions& options);
+
 struct LutCommandOptions {
   std::string output;
   std::string format;  // empty: from the output's extension

@@ -23,6 +23,7 @@
 #include "matc/json_format.h"
 #include "matc/material/parse.h"
 #include "print_diagnostics.h"
+#include "progress_line.h"
 #include "unique_names.h"
 
 namespace matc::cli {
@@ -125,34 +126,6 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
   return jobs;
 }
 
-// "[12/1000] gold" on one terminal line, redrawn as materials finish; nothing when not a TTY.
-class ProgressLine {
- public:
-  ProgressLine(std::size_t total, bool enabled) : total_(total), enabled_(enabled) {}
-  void finished(const std::string& name) {
-    if (!enabled_) return;
-    const std::lock_guard lock(mutex_);
-    ++done_;
-    fmt::print(stderr, "\r\x1b[K[{}/{}] {}", done_, total_, name);
-    std::fflush(stderr);
-  }
-  void clear() {
-    if (enabled_ && done_ > 0) fmt::print(stderr, "\r\x1b[K");
-  }
-
- private:
-  std::mutex mutex_;
-  std::size_t total_;
-  std::size_t done_ = 0;
-  bool enabled_;
-};
-
-unsigned worker_count(unsigned requested, std::size_t jobs) {
-  const unsigned available = std::max(1u, std::thread::hardware_concurrency());
-  const unsigned wanted = requested == 0 ? available : requested;
-  return static_cast<unsigned>(std::clamp<std::size_t>(jobs, 1, wanted));
-}
-
 }  // namespace
 
 int run_compile(const CompileOptions& options) {
@@ -184,7 +157,7 @@ int run_compile(const CompileOptions& options) {
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
   std::mutex device_mutex;  // one Vulkan queue: validations run one at a time
-  ProgressLine progress(queue.size(), !options.quiet && isatty(fileno(stderr)) != 0);
+  ProgressLine progress(queue.size(), !options.quiet && stderr_is_terminal());
   const auto work = [&] {
     for (std::size_t slot = next++; slot < queue.size() && !stop; slot = next++) {
       Job& job = jobs[queue[slot]];

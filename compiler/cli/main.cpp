@@ -148,6 +148,49 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember(matc::lut_format_names()));
   add_lut_options(*lut_command, lut.lut, "");
 
+  BakeCommandOptions bake;
+  CLI::App* bake_command = app.add_subcommand(
+      "bake",
+      "Bake reflectivity and edge-tint maps (or n and k maps) into coefficient textures with mip "
+      "chains computed in coefficient space (KTX2 or DDS)");
+  bake_command->add_option("files", bake.files, "Bake asset files (.json: docs/baking.md)");
+  bake_command->add_option("--reflectivity", bake.reflectivity,
+                           "Reflectivity map (PNG, JPEG, OpenEXR) or constant R,G,B / grey");
+  bake_command->add_option("--edge-tint", bake.edge_tint,
+                           "Edge-tint map or constant, with --reflectivity");
+  bake_command->add_option("--n", bake.n, "Refractive index map (OpenEXR) or constant, with --k");
+  bake_command->add_option("--k", bake.k, "Extinction coefficient map or constant, with --n");
+  bake_command->add_option("--name", bake.name,
+                           "Name of the command-line asset's files (default: the first map's "
+                           "file name without extension)");
+  bake_command->add_flag("--linear", bake.linear,
+                         "The command-line maps hold linear values (default: PNG and JPEG "
+                         "reflectivity and edge tint are sRGB-encoded; n, k are linear)");
+  bake_command->add_option("-o,--output", bake.output_directory, "Output directory")
+      ->capture_default_str();
+  bake_command->add_option("--format", bake.format, "Texture file format")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"ktx2", "dds"}));
+  bake_command->add_option("--precision", bake.precision, "Texel precision")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"f16", "f32"}));
+  add_basis_option(*bake_command, bake.basis);
+  bake_command->add_flag("--f0", bake.f0,
+                         "Also write NAME_f0 (linear F0 with coefficient-space mips), for "
+                         "engines whose base-colour mips are not box averages of linear F0");
+  bake_command->add_flag("--error-map", bake.error_map,
+                         "Also write NAME_error.png: level 0's largest |F - exact| per texel "
+                         "(255 = 0.01 or more)");
+  bake_command->add_flag("-k,--keep-going", bake.keep_going,
+                         "Bake the remaining assets after one fails (still exits 1)");
+  bake_command->add_flag("-q,--quiet", bake.quiet, "Do not print the progress and summary lines");
+  bake_command->add_option("-j,--jobs", bake.jobs, "Threads (default: one per hardware thread)")
+      ->check(CLI::Range(1u, 1024u));
+  bake_command->add_option("--depfile", bake.depfile,
+                           "Write the outputs' dependencies (asset files, maps, the matc "
+                           "binary) to FILE in the Makefile syntax Ninja and CMake read");
+  bake_command->add_flag("--MD", bake.write_depfile, "The same, as DIR/matc_bake.d");
+
   ReportOptions report;
   CLI::App* report_command = app.add_subcommand(
       "report",
@@ -163,7 +206,7 @@ int main(int argc, char** argv) {
   std::replace(arguments.begin(), arguments.end(), std::string("-MD"), std::string("--MD"));
   std::reverse(arguments.begin(), arguments.end());  // CLI11's order for a vector
   std::string diagnostics_format = "text";
-  for (CLI::App* command : {&app, eval_command, validate_command, report_command}) {
+  for (CLI::App* command : {&app, eval_command, validate_command, report_command, bake_command}) {
     command
         ->add_option("--diagnostics-format", diagnostics_format,
                      "How problems in inputs are reported on standard error: text "
@@ -188,6 +231,7 @@ int main(int argc, char** argv) {
                                                       : DiagnosticsFormat::text);
   try {
     if (*eval_command) return run_eval(eval);
+    if (*bake_command) return run_bake(bake);
     if (*lut_command) return run_lut(lut);
     if (*validate_command) return run_validate(validate);
     if (*report_command) return run_report(report);

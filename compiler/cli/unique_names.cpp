@@ -15,12 +15,17 @@ std::string lowercase(std::string text) {
 
 bool UniqueNames::claim(const Material& material, std::string_view scope,
                         Diagnostics& diagnostics) {
-  const auto [first, inserted] = first_use_.try_emplace(
-      lowercase(material.name), FirstUse{material.source_path, material.name_location});
+  return claim(material.name, material.source_path, material.name_location, scope, diagnostics);
+}
+
+bool UniqueNames::claim(const std::string& name, const std::string& path,
+                        const SourceLocation& location, std::string_view scope,
+                        Diagnostics& diagnostics) {
+  const auto [first, inserted] = first_use_.try_emplace(lowercase(name), FirstUse{path, location});
   if (inserted) return true;
   diagnostics.error(
-      material.name_location, "name",
-      fmt::format("'{}' is already used by {} ({}:{})", material.name, first->second.path,
+      location, "name",
+      fmt::format("'{}' is already used by {} ({}:{})", name, first->second.path,
                   first->second.location.line, first->second.location.column),
       fmt::format("names unique within {}, ignoring case (they name output files)", scope));
   return false;

@@ -19,6 +19,9 @@ class UniqueNames {
   // at the name pointing to the first one and returns false. `scope` says what the names must be
   // unique within ("a build", "a report").
   bool claim(const Material& material, std::string_view scope, Diagnostics& diagnostics);
+  // The same for any named thing (a bake asset) given in `path` at `location`.
+  bool claim(const std::string& name, const std::string& path, const SourceLocation& location,
+             std::string_view scope, Diagnostics& diagnostics);
 
  private:
   struct FirstUse {

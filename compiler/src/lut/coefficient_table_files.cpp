@@ -64,10 +64,14 @@ std::string encode_coefficient_table(const CoefficientTable& table, LutFormat fo
                                      LutPrecision precision) {
   if (!table.shipped_layout()) throw std::logic_error("only the shipped table layout is written");
   switch (format) {
-    case LutFormat::ktx2:
-      return lut_writers::encode_ktx2(image_of(table), precision);
-    case LutFormat::dds:
-      return lut_writers::encode_dds(image_of(table), precision);
+    case LutFormat::ktx2: {
+      const lut_writers::TexelImage image = image_of(table);
+      return lut_writers::encode_ktx2({&image, 1}, precision);
+    }
+    case LutFormat::dds: {
+      const lut_writers::TexelImage image = image_of(table);
+      return lut_writers::encode_dds({&image, 1}, precision);
+    }
     case LutFormat::raw:
       return lut_bytes::texel_bytes(table.texels, precision);
     case LutFormat::header:

@@ -1,6 +1,10 @@
-// KTX 2.0 (Khronos, https://registry.khronos.org/KTX/specs/2.0/ktxspec.v2.html): one 2D level,
+// KTX 2.0 (Khronos, https://registry.khronos.org/KTX/specs/2.0/ktxspec.v2.html): a 2D texture
+// with one or more mip levels,
 // VK_FORMAT_R16G16[B16A16]_SFLOAT or VK_FORMAT_R32G32[B32A32]_SFLOAT, a basic data format
 // descriptor and a KTXwriter key.
+#include <utility>
+#include <vector>
+
 #include "lut_writers.h"
 #include "matc/version.h"
 #include "texel_bytes.h"
@@ -65,42 +69,52 @@ std::string key_value_data() {
 
 }  // namespace
 
-std::string encode_ktx2(const TexelImage& image, LutPrecision precision) {
+std::string encode_ktx2(std::span<const TexelImage> levels, LutPrecision precision) {
+  const TexelImage& base = levels.front();
   const std::uint32_t channel_bytes = precision == LutPrecision::f16 ? 2 : 4;
-  const std::string dfd = data_format_descriptor(image.channels, channel_bytes);
+  const std::string dfd = data_format_descriptor(base.channels, channel_bytes);
   const std::string kvd = key_value_data();
-  const std::string texels = texel_bytes(image.texels, precision);
 
-  const std::size_t dfd_offset = kHeaderAndIndexBytes + kLevelIndexBytes;
+  const std::size_t dfd_offset = kHeaderAndIndexBytes + kLevelIndexBytes * levels.size();
   const std::size_t kvd_offset = dfd_offset + dfd.size();
-  // Level data is aligned to lcm(texel block size, 4) = the texel size (4 to 16 bytes).
-  const std::size_t texel_size = image.channels * channel_bytes;
-  std::size_t level_offset = kvd_offset + kvd.size();
-  level_offset += (texel_size - level_offset % texel_size) % texel_size;
+  // Level data is aligned to lcm(texel block size, 4) = the texel size (4 to 16 bytes), and
+  // stored smallest level first (the index lists level 0 first).
+  const std::size_t texel_size = base.channels * channel_bytes;
+  std::vector<std::pair<std::size_t, std::size_t>> placement(levels.size());  // offset, length
+  std::size_t end = kvd_offset + kvd.size();
+  for (std::size_t k = levels.size(); k-- > 0;) {
+    end += (texel_size - end % texel_size) % texel_size;
+    placement[k] = {end, levels[k].texels.size() * channel_bytes};
+    end += placement[k].second;
+  }
 
   std::string out(reinterpret_cast<const char*>(kIdentifier), sizeof kIdentifier);
-  put_u32(out, vk_format(image.channels, channel_bytes));
-  put_u32(out, channel_bytes);                             // typeSize
-  put_u32(out, static_cast<std::uint32_t>(image.width));   // pixelWidth
-  put_u32(out, static_cast<std::uint32_t>(image.height));  // pixelHeight
-  put_u32(out, 0);                                         // pixelDepth
-  put_u32(out, 0);                                         // layerCount
-  put_u32(out, 1);                                         // faceCount
-  put_u32(out, 1);                                         // levelCount
-  put_u32(out, 0);                                         // supercompressionScheme
+  put_u32(out, vk_format(base.channels, channel_bytes));
+  put_u32(out, channel_bytes);                              // typeSize
+  put_u32(out, static_cast<std::uint32_t>(base.width));     // pixelWidth
+  put_u32(out, static_cast<std::uint32_t>(base.height));    // pixelHeight
+  put_u32(out, 0);                                          // pixelDepth
+  put_u32(out, 0);                                          // layerCount
+  put_u32(out, 1);                                          // faceCount
+  put_u32(out, static_cast<std::uint32_t>(levels.size()));  // levelCount
+  put_u32(out, 0);                                          // supercompressionScheme
   put_u32(out, static_cast<std::uint32_t>(dfd_offset));
   put_u32(out, static_cast<std::uint32_t>(dfd.size()));
   put_u32(out, static_cast<std::uint32_t>(kvd_offset));
   put_u32(out, static_cast<std::uint32_t>(kvd.size()));
   put_u64(out, 0);  // sgdByteOffset
   put_u64(out, 0);  // sgdByteLength
-  put_u64(out, level_offset);
-  put_u64(out, texels.size());  // byteLength
-  put_u64(out, texels.size());  // uncompressedByteLength
+  for (const auto& [offset, length] : placement) {
+    put_u64(out, offset);
+    put_u64(out, length);  // byteLength
+    put_u64(out, length);  // uncompressedByteLength
+  }
   out += dfd;
   out += kvd;
-  pad_to(out, texel_size);
-  out += texels;
+  // The texels go straight to their place: textures of `matc bake` run to hundreds of MB.
+  out.resize(end, '\0');
+  for (std::size_t k = 0; k < levels.size(); ++k)
+    write_texel_bytes(levels[k].texels, precision, out.data() + placement[k].first);
   return out;
 }
 

@@ -93,10 +93,14 @@ BakedLut bake_lut(const runtime::BasisView& basis, const LutOptions& options) {
 
 std::string encode_lut(const BakedLut& baked, LutFormat format, LutPrecision precision) {
   switch (format) {
-    case LutFormat::ktx2:
-      return lut_writers::encode_ktx2(image_of(baked.lut), precision);
-    case LutFormat::dds:
-      return lut_writers::encode_dds(image_of(baked.lut), precision);
+    case LutFormat::ktx2: {
+      const lut_writers::TexelImage image = image_of(baked.lut);
+      return lut_writers::encode_ktx2({&image, 1}, precision);
+    }
+    case LutFormat::dds: {
+      const lut_writers::TexelImage image = image_of(baked.lut);
+      return lut_writers::encode_dds({&image, 1}, precision);
+    }
     case LutFormat::raw:
       return lut_bytes::texel_bytes(baked.lut.texels, precision);
     case LutFormat::header:

@@ -18,8 +18,10 @@ struct TexelImage {
   std::span<const float> texels;
 };
 
-std::string encode_ktx2(const TexelImage& image, LutPrecision precision);
-std::string encode_dds(const TexelImage& image, LutPrecision precision);
+// Level 0 first, each level half the size of the one before (rounded down, at least 1): the
+// coefficient textures of `matc bake` carry full mip chains, the tables one level.
+std::string encode_ktx2(std::span<const TexelImage> levels, LutPrecision precision);
+std::string encode_dds(std::span<const TexelImage> levels, LutPrecision precision);
 std::string encode_header(const BakedLut& baked, LutPrecision precision);
 
 }  // namespace matc::lut_writers

@@ -20,6 +20,22 @@ double fresnel_exact(double mu, ComplexIor ior) {
   return 0.5 * (std::norm(r_parallel) + std::norm(r_perpendicular));
 }
 
+double fresnel_conductor(double mu, ComplexIor ior) {
+  const double cos_i = std::clamp(mu, 0.0, 1.0);
+  if (cos_i == 0.0) return 1.0;
+  const double cos2 = cos_i * cos_i, sin2 = 1.0 - cos2;
+  const double n2 = ior.n * ior.n, k2 = ior.k * ior.k;
+  // eta^2 - sin^2 = (a + i b)^2 (the transmitted wave's complex cosine times eta).
+  const double t0 = n2 - k2 - sin2;
+  const double a2_plus_b2 = std::sqrt(t0 * t0 + 4.0 * n2 * k2);
+  const double a = std::sqrt(std::max(0.0, 0.5 * (a2_plus_b2 + t0)));
+  const double t1 = a2_plus_b2 + cos2, t2 = 2.0 * cos_i * a;
+  const double r_perpendicular = (t1 - t2) / (t1 + t2);
+  const double t3 = cos2 * a2_plus_b2 + sin2 * sin2, t4 = t2 * sin2;
+  const double r_parallel = r_perpendicular * (t3 - t4) / (t3 + t4);
+  return 0.5 * (r_parallel + r_perpendicular);
+}
+
 double fresnel_normal_incidence(ComplexIor ior) {
   const double k2 = ior.k * ior.k;
   return ((ior.n - 1.0) * (ior.n - 1.0) + k2) / ((ior.n + 1.0) * (ior.n + 1.0) + k2);

@@ -1,0 +1,253 @@
+// `matc bake`: reflectivity and edge-tint maps (or n and k maps) into coefficient textures with
+// mip chains computed in coefficient space (docs/baking.md).
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <optional>
+
+#include <fmt/core.h>
+
+#include "atomic_file.h"
+#include "commands.h"
+#include "depfile.h"
+#include "matc/bake/bake_inputs.h"
+#include "matc/bake/baked_texture_files.h"
+#include "matc/bake/coefficient_textures.h"
+#include "matc/json_format.h"
+#include "matc/material/parse.h"
+#include "print_diagnostics.h"
+#include "progress_line.h"
+#include "unique_names.h"
+
+namespace matc::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string identity(const fs::path& path) {
+  std::error_code error;
+  const fs::path canonical = fs::weakly_canonical(path, error);
+  return error ? path.lexically_normal().string() : canonical.string();
+}
+
+// A map option's text: constant values ("0.9,0.6,0.3", "0.5") or an image file.
+bool looks_like_values(const std::string& text) {
+  return !text.empty() && text.find_first_not_of("0123456789.,+-eE") == std::string::npos;
+}
+
+struct Asset {
+  std::optional<BakeAsset> asset;
+  Diagnostics diagnostics;
+  std::string label;  // what the summary calls it: the file, or "command line"
+};
+
+// The asset the map options describe, if any are given.
+std::optional<Asset> command_line_asset(const BakeCommandOptions& options) {
+  const bool artistic = !options.reflectivity.empty() || !options.edge_tint.empty();
+  const bool ior = !options.n.empty() || !options.k.empty();
+  if (!artistic && !ior) return std::nullopt;
+  Asset result;
+  result.label = "the command line";
+  const SourceLocation command_line{"matc bake", 0, 0};
+  if (artistic && ior) {
+    result.diagnostics.error(command_line, "", "--reflectivity/--edge-tint and --n/--k are given",
+                             "one pair: --reflectivity and --edge-tint, or --n and --k");
+    return result;
+  }
+  BakeAsset asset;
+  asset.model = artistic ? BakeModel::artistic : BakeModel::ior;
+  const auto read = [&](const std::string& option, const std::string& text, MapQuantity quantity,
+                        MapInput& map) {
+    map.quantity = quantity;
+    map.encoding = options.linear ? MapEncoding::linear : default_map_encoding(quantity);
+    map.encoding_given = options.linear;
+    if (text.empty()) {
+      result.diagnostics.error(command_line, "", fmt::format("{} is missing", option),
+                               "an image file or constant values (R,G,B or one grey value)");
+      return;
+    }
+    if (looks_like_values(text)) {
+      const bool unit = quantity == MapQuantity::reflectivity || quantity == MapQuantity::edge_tint;
+      ChannelList values = parse_channel_list(option, text, unit ? 1.0 : kMaxIorComponent);
+      if (values.values && quantity == MapQuantity::n &&
+          std::find(values.values->begin(), values.values->end(), 0.0) != values.values->end())
+        values = {std::nullopt, fmt::format("{}: n = 0 is not a material; give n > 0", option)};
+      if (!values.values) {
+        result.diagnostics.error(command_line, "", values.error);
+        return;
+      }
+      map.constant = *values.values;
+      return;
+    }
+    map.file = text;
+    map.resolved = fs::path(text).lexically_normal();
+  };
+  if (artistic) {
+    read("--reflectivity", options.reflectivity, MapQuantity::reflectivity, asset.first);
+    read("--edge-tint", options.edge_tint, MapQuantity::edge_tint, asset.second);
+  } else {
+    read("--n", options.n, MapQuantity::n, asset.first);
+    read("--k", options.k, MapQuantity::k, asset.second);
+  }
+  if (result.diagnostics.has_errors()) return result;
+  asset.name = options.name;
+  if (asset.name.empty()) {
+    const MapInput& named = asset.first.is_file() ? asset.first : asset.second;
+    asset.name = named.is_file() ? fs::path(named.file).stem().string() : std::string();
+  }
+  const std::string rule = "a name matching [A-Za-z][A-Za-z0-9_]*, at most 64 characters";
+  if (asset.name.empty()) {
+    result.diagnostics.error(command_line, "--name", "is missing (both maps are constants)", rule);
+  } else if (auto problem = material_name_problem(asset.name)) {
+    result.diagnostics.error(
+        command_line, "--name",
+        fmt::format("{}{}", *problem, options.name.empty() ? " (from the map's file name)" : ""),
+        rule);
+  }
+  if (result.diagnostics.has_errors()) return result;
+  asset.name_location = command_line;
+  result.asset = std::move(asset);
+  return result;
+}
+
+std::vector<Asset> read_assets(const BakeCommandOptions& options) {
+  std::vector<Asset> assets;
+  for (const std::string& file : options.files) {
+    BakeAssetResult parsed = read_bake_asset_file(file);
+    assets.push_back({std::move(parsed.asset), std::move(parsed.diagnostics), file});
+  }
+  if (auto asset = command_line_asset(options)) assets.push_back(std::move(*asset));
+  return assets;
+}
+
+// Names unique within the run, and no output that would overwrite an input.
+void check_outputs(std::vector<Asset>& assets, const fs::path& output_directory) {
+  std::map<std::string, std::string> inputs;  // identity -> as given
+  for (const Asset& entry : assets) {
+    if (!entry.asset) continue;
+    if (!entry.asset->source_path.empty())
+      inputs[identity(entry.asset->source_path)] = entry.asset->source_path;
+    for (const MapInput* map : {&entry.asset->first, &entry.asset->second})
+      if (map->is_file()) inputs[identity(map->resolved)] = map->resolved.string();
+  }
+  UniqueNames names;
+  for (Asset& entry : assets) {
+    if (!entry.asset) continue;
+    const BakeAsset& asset = *entry.asset;
+    if (!names.claim(asset.name, entry.label, asset.name_location, "a bake", entry.diagnostics))
+      continue;
+    for (const std::string& name : possible_bake_outputs(asset.name)) {
+      const auto input = inputs.find(identity(output_directory / name));
+      if (input == inputs.end()) continue;
+      entry.diagnostics.error(asset.name_location, "name",
+                              fmt::format("output '{}' would overwrite the input {}",
+                                          (output_directory / name).string(), input->second),
+                              "an output directory (-o) that holds no input file");
+      break;
+    }
+  }
+}
+
+}  // namespace
+
+int run_bake(const BakeCommandOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const fs::path output_directory(options.output_directory);
+  std::vector<Asset> assets = read_assets(options);
+  if (assets.empty()) {
+    fmt::print(stderr,
+               "matc bake: error: nothing to bake; usage: matc bake --reflectivity FILE "
+               "--edge-tint FILE [-o DIR], or matc bake ASSET.json... (see matc bake --help)\n");
+    return kExitUsageError;
+  }
+  check_outputs(assets, output_directory);
+  const bool inputs_valid = std::all_of(assets.begin(), assets.end(), [](const Asset& entry) {
+    return !entry.diagnostics.has_errors();
+  });
+
+  BakeOptions bake_options;
+  bake_options.basis = basis_of(options.basis);
+  bake_options.f0 = options.f0;
+  bake_options.error_map = options.error_map;
+  bake_options.threads = options.jobs;
+  BakeFileOptions file_options;
+  file_options.format = *lut_format_from_name(options.format);
+  file_options.precision = *lut_precision_from_name(options.precision);
+  file_options.f0 = options.f0;
+  file_options.error_map = options.error_map;
+
+  std::size_t baked_count = 0, failed = 0, not_attempted = 0, written = 0, unchanged = 0;
+  std::vector<fs::path> targets, dependencies;
+  ProgressLine progress(assets.size(), !options.quiet && stderr_is_terminal());
+  bool stop = !inputs_valid && !options.keep_going;
+  for (Asset& entry : assets) {
+    if (entry.diagnostics.has_errors()) {
+      ++failed;
+      print_diagnostics(entry.diagnostics);
+      continue;
+    }
+    if (stop) {
+      ++not_attempted;
+      continue;
+    }
+    const BakeAsset& asset = *entry.asset;
+    try {
+      const std::optional<BakeInputs> inputs = load_bake_inputs(asset, entry.diagnostics);
+      if (inputs) {
+        const BakedCoefficients baked = bake_coefficients(*inputs, bake_options);
+        // Every byte exists before the first file is written: a failure leaves no partial set.
+        const std::vector<OutputFile> files =
+            baked_texture_files(asset, *inputs, baked, file_options);
+        fs::create_directories(output_directory);
+        for (const OutputFile& file : files) {
+          const WriteOutcome outcome =
+              write_file_atomically(output_directory / file.name, file.bytes);
+          ++(outcome == WriteOutcome::written ? written : unchanged);
+          targets.push_back(output_directory / file.name);
+        }
+        if (!asset.source_path.empty()) dependencies.push_back(asset.source_path);
+        for (const MapInput* map : {&asset.first, &asset.second})
+          if (map->is_file()) dependencies.push_back(map->resolved);
+      }
+    } catch (const std::exception& error) {
+      entry.diagnostics.error(asset.name_location, "", error.what(),
+                              "a writable output directory (-o)");
+    }
+    progress.finished(asset.name);
+    print_diagnostics(entry.diagnostics);
+    if (entry.diagnostics.has_errors()) {
+      ++failed;
+      stop = !options.keep_going;
+    } else {
+      ++baked_count;
+    }
+  }
+  progress.clear();
+
+  const fs::path depfile = !options.depfile.empty() ? fs::path(options.depfile)
+                           : options.write_depfile  ? output_directory / "matc_bake.d"
+                                                    : fs::path();
+  if (!depfile.empty() && failed == 0) {
+    if (const fs::path self = matc_executable(); !self.empty()) dependencies.push_back(self);
+    try {
+      write_file_atomically(depfile, depfile_text(targets, dependencies));
+    } catch (const std::exception& error) {
+      fmt::print(stderr, "{}: error: {}\n", depfile.string(), error.what());
+      ++failed;
+    }
+  }
+  if (!options.quiet) {
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    fmt::print(
+        stderr, "matc bake: {} baked ({} files written, {} unchanged), {} failed{} in {:.2f} s\n",
+        baked_count, written, unchanged, failed,
+        not_attempted > 0 ? fmt::format(", {} not attempted (use --keep-going)", not_attempted)
+                          : "",
+        seconds);
+  }
+  return failed > 0 ? kExitInputError : kExitSuccess;
+}
+
+}  // namespace matc::cli

@@ -1,0 +1,252 @@
+#include "matc/bake/coefficient_textures.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+#include "matc/fit/conductor_solver.h"
+#include "matc/optics/gulbrandsen.h"
+#include "matc/runtime/basis_polynomial.h"
+#include "matc/runtime/coefficient_table.h"
+#include "parallel_rows.h"
+
+namespace matc {
+namespace {
+
+constexpr std::size_t kCodes = 256;  // distinct values per channel of an 8-bit map
+// Cosines at which the table path measures its error map (the exact path has the solve's 401).
+constexpr std::size_t kErrorMapCosines = 65;
+
+struct PairSolution {
+  float c2 = 0.0f, c3 = 0.0f, error = 0.0f;
+};
+
+// The index of a texel channel's value among an 8-bit map's codes, or a constant's channels.
+std::size_t value_code(const MapSamples& map, std::size_t texel, std::size_t channel) {
+  return map.image ? map.image->codes[3 * texel + channel] : channel;
+}
+float code_value(const MapSamples& map, std::size_t code) {
+  return map.image ? map.image->code_values[code] : static_cast<float>(map.constant[code]);
+}
+
+void allocate_level(CoefficientLevel& level, std::size_t width, std::size_t height, bool f0) {
+  level.width = width;
+  level.height = height;
+  for (std::vector<float>* plane : {&level.c2, &level.c3})
+    plane->assign(width * height * kCoefficientTextureChannels, 1.0f);
+  if (f0) level.f0.assign(width * height * kCoefficientTextureChannels, 1.0f);
+}
+
+void store(CoefficientLevel& level, std::size_t texel, std::size_t channel, double f0, double c2,
+           double c3) {
+  const std::size_t offset = texel * kCoefficientTextureChannels + channel;
+  if (!level.f0.empty()) level.f0[offset] = static_cast<float>(f0);
+  level.c2[offset] = static_cast<float>(c2);
+  level.c3[offset] = static_cast<float>(c3);
+}
+
+// Level 0 of 8-bit maps and constants: every distinct (r, g) pair present is solved once with
+// the basis' own solve, then looked up per texel.
+void solve_exact(const BakeInputs& inputs, const BakeOptions& options, BakedCoefficients& baked) {
+  const std::size_t texels = inputs.width * inputs.height;
+  std::vector<std::atomic<bool>> present(kCodes * kCodes);
+  fill_rows_in_parallel(inputs.height, options.threads, [&] {
+    return [&](std::size_t y) {
+      for (std::size_t t = y * inputs.width; t < (y + 1) * inputs.width; ++t)
+        for (std::size_t c = 0; c < 3; ++c)
+          present[value_code(inputs.first, t, c) * kCodes + value_code(inputs.second, t, c)].store(
+              true, std::memory_order_relaxed);
+    };
+  });
+  std::vector<std::size_t> pairs;
+  for (std::size_t pair = 0; pair < present.size(); ++pair)
+    if (present[pair].load(std::memory_order_relaxed)) pairs.push_back(pair);
+
+  const ConductorSolver solver(options.basis);
+  std::vector<PairSolution> solutions(kCodes * kCodes);
+  fill_rows_in_parallel(pairs.size(), options.threads, [&] {
+    return [&](std::size_t i) {
+      const std::size_t pair = pairs[i];
+      const ChannelSolution solution = solver.solve(code_value(inputs.first, pair / kCodes),
+                                                    code_value(inputs.second, pair % kCodes));
+      solutions[pair] = {static_cast<float>(solution.coefficients[2]),
+                         static_cast<float>(solution.coefficients[3]),
+                         static_cast<float>(solution.max_error)};
+    };
+  });
+  baked.solved_pairs = pairs.size();
+  for (std::size_t pair : pairs)
+    baked.max_error = std::max(baked.max_error, static_cast<double>(solutions[pair].error));
+
+  CoefficientLevel& level = baked.levels.front();
+  if (options.error_map) baked.error.assign(texels, 0.0f);
+  fill_rows_in_parallel(inputs.height, options.threads, [&] {
+    return [&](std::size_t y) {
+      for (std::size_t t = y * inputs.width; t < (y + 1) * inputs.width; ++t) {
+        float error = 0.0f;
+        for (std::size_t c = 0; c < 3; ++c) {
+          const std::size_t r_code = value_code(inputs.first, t, c);
+          const PairSolution& solution =
+              solutions[r_code * kCodes + value_code(inputs.second, t, c)];
+          store(level, t, c, code_value(inputs.first, r_code), solution.c2, solution.c3);
+          error = std::max(error, solution.error);
+        }
+        if (options.error_map) baked.error[t] = error;
+      }
+    };
+  });
+}
+
+// The largest |F - exact| of one channel's coefficients over kErrorMapCosines cosines.
+double channel_error(const runtime::BasisPolynomial& basis, const runtime::ChannelCoefficients& c,
+                     double reflectivity, double edge_tint) {
+  double largest = 0.0;
+  if (reflectivity >= 1.0) return 0.0;
+  const ComplexIor ior = gulbrandsen_to_ior({reflectivity, edge_tint});
+  for (std::size_t j = 0; j < kErrorMapCosines; ++j) {
+    const double mu = static_cast<double>(j) / static_cast<double>(kErrorMapCosines - 1);
+    const auto b = runtime::evaluate_basis_polynomial(basis, mu);
+    const double f = c[0] * b[0] + c[1] * b[1] + c[2] * b[2] + c[3] * b[3];
+    largest = std::max(largest, std::abs(f - fresnel_exact(mu, ior)));
+  }
+  return largest;
+}
+
+// Level 0 of 16-bit and float maps, and of n and k maps: the coefficient table per texel.
+void solve_with_table(const BakeInputs& inputs, const BakeOptions& options,
+                      BakedCoefficients& baked) {
+  const runtime::CoefficientTableView table = runtime::shipped_coefficient_table(options.basis);
+  const runtime::BasisPolynomial& basis = runtime::shipped_basis_polynomial(options.basis);
+  const std::size_t texels = inputs.width * inputs.height;
+  if (options.error_map) baked.error.assign(texels, 0.0f);
+  CoefficientLevel& level = baked.levels.front();
+  fill_rows_in_parallel(inputs.height, options.threads, [&] {
+    return [&](std::size_t y) {
+      for (std::size_t t = y * inputs.width; t < (y + 1) * inputs.width; ++t) {
+        runtime::Rgb r{}, g{};
+        for (std::size_t c = 0; c < 3; ++c) {
+          r[c] = inputs.first.value(t, c);
+          g[c] = inputs.second.value(t, c);
+        }
+        if (inputs.model == BakeModel::ior) {
+          const runtime::ArtisticRgb artistic = runtime::artistic_from_ior(r, g);
+          r = artistic.reflectivity;
+          g = artistic.edge_tint;
+        }
+        float error = 0.0f;
+        for (std::size_t c = 0; c < 3; ++c) {
+          const runtime::ChannelCoefficients coefficients =
+              runtime::channel_coefficients_from_table(table, r[c], g[c]);
+          store(level, t, c, coefficients[0], coefficients[2], coefficients[3]);
+          if (options.error_map) {
+            error =
+                std::max(error, static_cast<float>(channel_error(basis, coefficients, r[c], g[c])));
+          }
+        }
+        if (options.error_map) baked.error[t] = error;
+      }
+    };
+  });
+  if (options.error_map)
+    baked.max_error = *std::max_element(baked.error.begin(), baked.error.end());
+}
+
+// For each texel of the next level along one axis: the source texels it covers and their
+// weights (overlap of [x * size / next, (x + 1) * size / next) with each texel), summing to 1.
+struct AxisFootprint {
+  std::size_t first = 0;
+  std::vector<double> weights;
+};
+std::vector<AxisFootprint> axis_footprints(std::size_t size, std::size_t next) {
+  std::vector<AxisFootprint> footprints(next);
+  const double scale = static_cast<double>(size) / static_cast<double>(next);
+  for (std::size_t x = 0; x < next; ++x) {
+    const double begin = static_cast<double>(x) * scale, end = begin + scale;
+    AxisFootprint& footprint = footprints[x];
+    footprint.first = static_cast<std::size_t>(std::floor(begin));
+    for (std::size_t s = footprint.first; s < size && static_cast<double>(s) < end; ++s) {
+      const double overlap =
+          std::min(end, static_cast<double>(s + 1)) - std::max(begin, static_cast<double>(s));
+      footprint.weights.push_back(overlap / scale);
+    }
+  }
+  return footprints;
+}
+
+}  // namespace
+
+std::string_view bake_solve_name(BakeSolve solve) {
+  return solve == BakeSolve::exact ? "exact" : "coefficient-table";
+}
+
+std::size_t mip_level_count(std::size_t width, std::size_t height) {
+  std::size_t levels = 1;
+  for (std::size_t size = std::max(width, height); size > 1; size /= 2)
+    ++levels;
+  return levels;
+}
+
+std::vector<float> downsample_level(const std::vector<float>& texels, std::size_t width,
+                                    std::size_t height, std::size_t next_width,
+                                    std::size_t next_height, unsigned threads) {
+  const std::vector<AxisFootprint> columns = axis_footprints(width, next_width);
+  const std::vector<AxisFootprint> rows = axis_footprints(height, next_height);
+  constexpr std::size_t kChannels = kCoefficientTextureChannels;
+  std::vector<float> next(next_width * next_height * kChannels);
+  fill_rows_in_parallel(next_height, threads, [&] {
+    return [&](std::size_t y) {
+      for (std::size_t x = 0; x < next_width; ++x) {
+        double sum[kChannels] = {};
+        for (std::size_t j = 0; j < rows[y].weights.size(); ++j) {
+          for (std::size_t i = 0; i < columns[x].weights.size(); ++i) {
+            const double weight = rows[y].weights[j] * columns[x].weights[i];
+            const float* texel =
+                &texels[((rows[y].first + j) * width + columns[x].first + i) * kChannels];
+            for (std::size_t c = 0; c < kChannels; ++c)
+              sum[c] += weight * texel[c];
+          }
+        }
+        for (std::size_t c = 0; c < kChannels; ++c)
+          next[(y * next_width + x) * kChannels + c] = static_cast<float>(sum[c]);
+      }
+    };
+  });
+  return next;
+}
+
+BakedCoefficients bake_coefficients(const BakeInputs& inputs, const BakeOptions& options) {
+  BakedCoefficients baked;
+  baked.basis = options.basis;
+  baked.levels.resize(mip_level_count(inputs.width, inputs.height));
+  allocate_level(baked.levels.front(), inputs.width, inputs.height, options.f0);
+  const bool exact = inputs.model == BakeModel::artistic && inputs.first.is_quantised() &&
+                     inputs.second.is_quantised();
+  baked.solve = exact ? BakeSolve::exact : BakeSolve::table;
+  if (exact)
+    solve_exact(inputs, options, baked);
+  else
+    solve_with_table(inputs, options, baked);
+
+  for (std::size_t k = 1; k < baked.levels.size(); ++k) {
+    const CoefficientLevel& previous = baked.levels[k - 1];
+    CoefficientLevel& level = baked.levels[k];
+    level.width = std::max<std::size_t>(1, previous.width / 2);
+    level.height = std::max<std::size_t>(1, previous.height / 2);
+    for (std::vector<float> CoefficientLevel::*plane :
+         {&CoefficientLevel::f0, &CoefficientLevel::c2, &CoefficientLevel::c3}) {
+      if ((previous.*plane).empty()) continue;
+      level.*plane = downsample_level(previous.*plane, previous.width, previous.height, level.width,
+                                      level.height, options.threads);
+    }
+  }
+  return baked;
+}
+
+runtime::ChannelCoefficients level_coefficients(const CoefficientLevel& level, std::size_t x,
+                                                std::size_t y, std::size_t channel) {
+  const std::size_t offset = (y * level.width + x) * kCoefficientTextureChannels + channel;
+  const double f0 = level.f0[offset];
+  return {f0, 1.0 - f0, level.c2[offset], level.c3[offset]};
+}
+
+}  // namespace matc
