@@ -72,7 +72,10 @@ std::string shader_library_source(ShaderLanguage language,
             ? fill_template(
                   language == ShaderLanguage::glsl ? "glsl/coefficient_table.glsl"
                                                    : "hlsl/coefficient_table.hlsl",
-                  {{"coefficient_table_size", std::to_string(options.coefficient_table_size)}})
+                  {{"coefficient_table_size", std::to_string(options.coefficient_table_size)}}) +
+                  fill_template(language == ShaderLanguage::glsl ? "glsl/baked_coefficients.glsl"
+                                                                 : "hlsl/baked_coefficients.hlsl",
+                                {})
             : ""},
        {"embedded_lut",
         options.embedded_lut ? embedded_lut_source(language, *options.embedded_lut) : ""}});
