@@ -22,6 +22,20 @@ trap 'rm -rf "$corpus" "$table_corpus"' EXIT
 build-fuzz/tests/fuzz/matc_coefficient_table_fuzzer -max_total_time="$((fuzz_seconds / 4 + 1))" \
   -max_len=256 -print_final_stats=1 "$table_corpus" tests/fuzz/corpus_coefficient_table 2>&1 |
   tail -n 8
+# matc bake's image readers and asset parser: seeds written by matc_catalogue_images (no image is
+# stored in the repository), each once per mode (first byte: sRGB, linear, asset text); 15 s.
+image_corpus=$(mktemp -d)
+image_seeds=$(mktemp -d)
+trap 'rm -rf "$corpus" "$table_corpus" "$image_corpus" "$image_seeds"' EXIT
+build-fuzz/tests/matc_catalogue_images "$image_seeds"
+for seed in "$image_seeds"/*; do
+  for mode in 0 1; do
+    { printf "\\$(printf %03o "$mode")"; cat "$seed"; } >"$image_corpus/$(basename "$seed").$mode"
+  done
+done
+printf '\002{"name": "brass", "artistic": {"reflectivity": {"file": "r.exr", "encoding": "linear"}, "edge_tint": [0.5, 0.6, 0.7]}}' >"$image_corpus/asset.2"
+build-fuzz/tests/fuzz/matc_image_map_fuzzer -max_total_time=15 -max_len=4096 -rss_limit_mb=4096 \
+  -print_final_stats=1 "$image_corpus" 2>&1 | tail -n 8
 
 # Mesa's driver, LLVM and the Vulkan loader keep allocations until exit, and lavapipe's
 # JIT-compiled shaders allocate from code LeakSanitizer cannot name: tests that run Vulkan are

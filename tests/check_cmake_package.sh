@@ -11,9 +11,11 @@ trap 'rm -rf "$work"' EXIT
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
 mkdir -p "$work/engine-src"
 cp -r "$source/examples/engine/." "$work/engine-src/"
-mkdir -p "$work/materials"  # the example names ../materials/*.json
+mkdir -p "$work/materials" "$work/textured"  # the example names ../materials, ../textured
 cp "$source/examples/materials/gold.json" "$source/examples/materials/figure2_edge_tint.json" \
   "$work/materials/"
+cp "$source/examples/textured/make_maps.cpp" "$source/examples/textured/inlaid_metals.json" \
+  "$work/textured/"
 cmake -S "$work/engine-src" -B "$work/engine" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
 cmake --build "$work/engine" >/dev/null
 "$work/engine/engine"
@@ -21,4 +23,8 @@ ninja -C "$work/engine" -n | grep -q "no work to do" || { echo "second build is 
 sleep 1
 touch "$work/materials/gold.json"
 ninja -C "$work/engine" | grep -q "matc: compiling" || { echo "touching a material did not rerun matc"; exit 1; }
-echo "cmake package: consumer built, ran, and rebuilds only when its materials change"
+sleep 1
+touch "$work/engine/maps/inlaid_metals_g.png"
+ninja -C "$work/engine" | grep -q "matc bake: inlaid_metals" ||
+  { echo "touching a map did not rebake its asset"; exit 1; }
+echo "cmake package: consumer built, ran, and rebuilds only when its materials or maps change"

@@ -117,6 +117,26 @@ std::string exr_bytes(int width, int height, int channels, const std::vector<flo
   return output.str();
 }
 
+std::string exr_bytes_with_channels(int width, int height, const std::vector<std::string>& names,
+                                    bool unsigned_integers) {
+  Imf::StdOSStream output;
+  Imf::Header header(width, height);
+  const Imf::PixelType type = unsigned_integers ? Imf::UINT : Imf::FLOAT;
+  for (const std::string& name : names)
+    header.channels().insert(name, Imf::Channel(type));
+  std::vector<std::uint32_t> samples(static_cast<std::size_t>(width * height), 1);
+  {
+    Imf::OutputFile file(output, header);
+    Imf::FrameBuffer frame;
+    for (const std::string& name : names)
+      frame.insert(name, Imf::Slice(type, reinterpret_cast<char*>(samples.data()), 4,
+                                    4 * static_cast<std::size_t>(width)));
+    file.setFrameBuffer(frame);
+    file.writePixels(height);
+  }
+  return output.str();
+}
+
 void write_file(const std::string& path, const std::string& bytes) {
   std::ofstream out(path, std::ios::binary);
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));

@@ -18,6 +18,11 @@ std::string jpeg_bytes(int width, int height, int channels,
 std::string exr_bytes(int width, int height, int channels, const std::vector<float>& values,
                       bool half = false);
 
+// One image of `channels` named channels (e.g. {"Z"}), FLOAT or UINT samples (the unsupported
+// layouts the catalogue checks).
+std::string exr_bytes_with_channels(int width, int height, const std::vector<std::string>& names,
+                                    bool unsigned_integers);
+
 void write_file(const std::string& path, const std::string& bytes);
 
 }  // namespace matc::test

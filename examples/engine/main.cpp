@@ -1,10 +1,15 @@
 // What an engine's asset pipeline does with matc: materials compiled by the build
 // (matc_add_materials), their C headers included, the SPIR-V library module linked into the
 // engine's own shader, a material compiled from memory with libmatc, and a textured metal's
-// coefficients from the coefficient table at run time. Exits non-zero if any check fails.
+// coefficients from the coefficient table at run time, and a textured metal's maps baked by the
+// build (matc_add_baked_textures) into coefficient textures. Exits non-zero if any check fails.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
 #include <span>
 #include <string>
 #include <vector>
@@ -59,6 +64,41 @@ void emit_in_memory(const matc::CompiledMaterial& material) {
     std::printf("     %s: %zu bytes\n", file.name.c_str(), file.bytes.size());
 }
 // END api-example
+
+// A KTX2 file with one RGBA16F 2D texture (what matc bake writes by default): level `level`.
+std::string file_bytes(const char* path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+std::uint32_t ktx2_level_count(const char* path) {
+  const std::string bytes = file_bytes(path);
+  std::uint32_t levels = 0;
+  if (bytes.size() >= 44) std::memcpy(&levels, bytes.data() + 40, 4);
+  return levels;
+}
+float half_to_float(std::uint16_t h) {
+  const int exponent = (h >> 10) & 0x1F, mantissa = h & 0x3FF;
+  const float magnitude = exponent == 0
+                              ? std::ldexp(static_cast<float>(mantissa), -24)
+                              : std::ldexp(static_cast<float>(mantissa | 0x400), exponent - 25);
+  return (h & 0x8000) ? -magnitude : magnitude;
+}
+std::vector<float> ktx2_level(const char* path, std::uint32_t level) {
+  const std::string bytes = file_bytes(path);
+  std::uint64_t offset = 0, length = 0;
+  const std::size_t index = 80 + 24 * static_cast<std::size_t>(level);
+  if (bytes.size() < index + 16) return {};
+  std::memcpy(&offset, bytes.data() + index, 8);
+  std::memcpy(&length, bytes.data() + index + 8, 8);
+  if (offset + length > bytes.size()) return {};
+  std::vector<float> texels(length / 2);
+  for (std::size_t i = 0; i < texels.size(); ++i) {
+    std::uint16_t h = 0;
+    std::memcpy(&h, bytes.data() + offset + 2 * i, 2);
+    texels[i] = half_to_float(h);
+  }
+  return texels;
+}
 
 }  // namespace
 
@@ -126,6 +166,22 @@ void main() {
         worst = std::max(worst, std::abs(table_f[c] - compiled_f[c]));
     }
     expect(worst < 0.002, "a textured texel's F from the coefficient table matches its compile");
+  }
+
+  // 5. Baked coefficient textures: the 1 x 1 top of the C2 mip chain is the mean of level 0, as
+  //    an engine's trilinear sampler at full minification would see it (docs/baking.md).
+  {
+    const std::vector<float> level0 = ktx2_level(MATC_BAKED_C2, 0);
+    const std::vector<float> top = ktx2_level(MATC_BAKED_C2, ktx2_level_count(MATC_BAKED_C2) - 1);
+    double mean = 0.0;
+    for (std::size_t t = 0; t < level0.size() / 4; ++t)
+      mean += level0[4 * t] / static_cast<double>(level0.size() / 4);
+    expect(level0.size() == 512 * 512 * 4 && top.size() == 4,
+           "the baked C2 texture has a full mip chain (512 x 512 down to 1 x 1)");
+    // Each f16 level is rounded on its own: the mean of rounded texels and the rounded mean
+    // differ by about half an f16 step.
+    expect(!top.empty() && std::abs(top[0] - mean) < 1e-3,
+           "its 1 x 1 mip holds the mean coefficient of level 0 (the average curve)");
   }
 
   std::printf("%s\n",
