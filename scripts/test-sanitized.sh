@@ -42,7 +42,7 @@ build-fuzz/tests/fuzz/matc_image_map_fuzzer -max_total_time=15 -max_len=4096 -rs
 # checked by AddressSanitizer and UBSan but without leak detection; every other test with it.
 export LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1"
-vulkan_tests="Vulkan|DeviceValidation|validate_on_device|Validat|comparison_render|textured_render|fullscreen_cost"
+vulkan_tests="Vulkan|DeviceValidation|validate_on_device|Validat|comparison_render|textured_render|baked_render|fullscreen_cost"
 # The package test installs instrumented static libraries, which a plain consumer cannot link.
 ctest --test-dir build-fuzz --output-on-failure --parallel "$(nproc)" \
   -E "cmake_package_engine_example|$vulkan_tests"

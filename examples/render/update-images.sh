@@ -25,3 +25,12 @@ cmake --build "$build" --target matc_textured_render >/dev/null
 "$build/examples/render/matc_textured_render" --size 256 --samples 4096 -o "$root/docs/images" \
   >"$table"
 "$root/tests/check_docs_block.sh" --update "$root/docs/rendering.md" textured-render cat "$table"
+# The baked-texture render: coefficient textures of `matc bake` vs the maps' own mips, on the
+# example maps.
+cmake --build "$build" --target matc_baked_render matc_example_maps >/dev/null
+maps=$(mktemp -d)
+trap 'rm -f "$table"; rm -rf "$paper" "$maps"' EXIT
+"$build/examples/textured/matc_example_maps" --size 512 -o "$maps"
+"$build/examples/render/matc_baked_render" --size 256 -o "$root/docs/images" \
+  --reflectivity "$maps/inlaid_metals_r.png" --edge-tint "$maps/inlaid_metals_g.png" >"$table"
+"$root/tests/check_docs_block.sh" --update "$root/docs/rendering.md" baked-render cat "$table"

@@ -65,6 +65,20 @@ std::string textured_render_source(const Build& build, std::uint32_t width, std:
                         {"height", std::to_string(height)}});
 }
 
+std::string baked_render_source(const Build& build, const PlaneCamera& camera, std::uint32_t width,
+                                std::uint32_t height) {
+  const auto literal = [](double value) { return fmt::format("{:.9f}", value); };
+  return fill_template("glsl/baked_render.frag",
+                       {{"version", kVersion},
+                        {"library", build.library_source(ShaderLanguage::glsl)},
+                        {"width", std::to_string(width)},
+                        {"height", std::to_string(height)},
+                        {"camera_height", literal(camera.height)},
+                        {"pitch", literal(camera.pitch)},
+                        {"tan_half_fov", literal(camera.tan_half_fov)},
+                        {"uv_per_unit", literal(camera.uv_per_unit)}});
+}
+
 SpirvWords compile_fullscreen_stage(const std::string& source, ShaderStage stage,
                                     const std::string& name) {
   return optimize_spirv(

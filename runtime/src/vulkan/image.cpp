@@ -1,6 +1,8 @@
 #include "matc/vulkan/image.h"
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "matc/vulkan/buffer.h"
 
@@ -8,7 +10,8 @@ namespace matc::vulkan {
 
 void transition_image(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
                       VkPipelineStageFlags source_stage, VkAccessFlags source_access,
-                      VkPipelineStageFlags destination_stage, VkAccessFlags destination_access) {
+                      VkPipelineStageFlags destination_stage, VkAccessFlags destination_access,
+                      std::uint32_t mip_levels) {
   VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
   barrier.srcAccessMask = source_access;
   barrier.dstAccessMask = destination_access;
@@ -17,13 +20,17 @@ void transition_image(VkCommandBuffer commands, VkImage image, VkImageLayout fro
   barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = image;
-  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, mip_levels, 0, 1};
   vkCmdPipelineBarrier(commands, source_stage, destination_stage, 0, 0, nullptr, 0, nullptr, 1,
                        &barrier);
 }
 
 Image::Image(const Context& context, std::uint32_t width, std::uint32_t height, ImageUse use)
-    : device_(context.device()), width_(width), height_(height) {
+    : Image(context, width, height, use, 1) {}
+
+Image::Image(const Context& context, std::uint32_t width, std::uint32_t height, ImageUse use,
+             std::uint32_t mip_levels)
+    : device_(context.device()), width_(width), height_(height), mip_levels_(mip_levels) {
   VkFormatProperties format_properties;
   vkGetPhysicalDeviceFormatProperties(context.physical_device(), kFormat, &format_properties);
   const VkFormatFeatureFlags needed = use == ImageUse::texture
@@ -38,7 +45,7 @@ Image::Image(const Context& context, std::uint32_t width, std::uint32_t height, 
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = kFormat;
   info.extent = {width, height, 1};
-  info.mipLevels = 1;
+  info.mipLevels = mip_levels_;
   info.arrayLayers = 1;
   info.samples = VK_SAMPLE_COUNT_1_BIT;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -57,7 +64,7 @@ Image::Image(const Context& context, std::uint32_t width, std::uint32_t height, 
     view_info.image = image_;
     view_info.viewType = VK_IMAGE_VIEW_TYPE_2D;
     view_info.format = kFormat;
-    view_info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    view_info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, mip_levels_, 0, 1};
     check(vkCreateImageView(device_, &view_info, nullptr, &view_), "vkCreateImageView");
   } catch (...) {
     this->~Image();
@@ -77,31 +84,47 @@ Image::~Image() {
 Image::Image(const Context& context, std::uint32_t width, std::uint32_t height,
              std::span<const float> texels)
     : Image(context, width, height, ImageUse::texture) {
-  upload(context, texels);
+  const std::span<const float> level[] = {texels};
+  upload(context, level);
 }
 
-void Image::upload(const Context& context, std::span<const float> texels) {
-  const std::size_t expected = std::size_t{width_} * height_ * 4;
-  if (texels.size() != expected) {
-    throw VulkanError("texture data has " + std::to_string(texels.size()) + " floats, expected " +
-                      std::to_string(expected));
+Image::Image(const Context& context, std::uint32_t width, std::uint32_t height,
+             std::span<const std::span<const float>> levels)
+    : Image(context, width, height, ImageUse::texture, static_cast<std::uint32_t>(levels.size())) {
+  upload(context, levels);
+}
+
+void Image::upload(const Context& context, std::span<const std::span<const float>> levels) {
+  std::vector<float> staged;
+  std::vector<VkBufferImageCopy> regions;
+  for (std::uint32_t k = 0; k < levels.size(); ++k) {
+    const std::uint32_t width = std::max(1u, width_ >> k), height = std::max(1u, height_ >> k);
+    const std::size_t expected = std::size_t{width} * height * 4;
+    if (levels[k].size() != expected) {
+      throw VulkanError("texture level " + std::to_string(k) + " has " +
+                        std::to_string(levels[k].size()) + " floats, expected " +
+                        std::to_string(expected));
+    }
+    VkBufferImageCopy region{};
+    region.bufferOffset = staged.size() * sizeof(float);
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, k, 0, 1};
+    region.imageExtent = {width, height, 1};
+    regions.push_back(region);
+    staged.insert(staged.end(), levels[k].begin(), levels[k].end());
   }
-  Buffer staging(context, texels.size_bytes(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-  staging.write(texels);
+  Buffer staging(context, staged.size() * sizeof(float), VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+  staging.write<float>(staged);
   context.submit([&](VkCommandBuffer commands) {
     transition_image(commands, image_, VK_IMAGE_LAYOUT_UNDEFINED,
                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {width_, height_, 1};
+                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, mip_levels_);
     vkCmdCopyBufferToImage(commands, staging.handle(), image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           1, &region);
+                           static_cast<std::uint32_t>(regions.size()), regions.data());
     transition_image(commands, image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
                      VK_ACCESS_TRANSFER_WRITE_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                     VK_ACCESS_SHADER_READ_BIT);
+                     VK_ACCESS_SHADER_READ_BIT, mip_levels_);
   });
 }
 

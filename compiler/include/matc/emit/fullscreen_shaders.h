@@ -40,6 +40,17 @@ std::string comparison_render_source(const Build& build, const CompiledMaterial&
 // reflectivity and edge tint vary per pixel, from a buffer (see the template for the bindings).
 std::string textured_render_source(const Build& build, std::uint32_t width, std::uint32_t height);
 
+// The baked-texture render's fragment shader (templates/glsl/baked_render.frag): a textured
+// ground plane in perspective, F from the baked coefficient textures or from the maps' own mips.
+struct PlaneCamera {
+  double height = 1.0;        // above the plane
+  double pitch = 0.35;        // radians down from the horizon
+  double tan_half_fov = 0.5;  // vertical
+  double uv_per_unit = 0.5;   // texture coordinates per unit of plane
+};
+std::string baked_render_source(const Build& build, const PlaneCamera& camera, std::uint32_t width,
+                                std::uint32_t height);
+
 // One of the sources above as SPIR-V: compiled (GLSL), optimised and validated for Vulkan 1.1.
 SpirvWords compile_fullscreen_stage(const std::string& source, ShaderStage stage,
                                     const std::string& name);

@@ -27,26 +27,35 @@ class Image {
   // A texture holding `texels` (width * height RGBA floats, rows first), ready to sample.
   Image(const Context& context, std::uint32_t width, std::uint32_t height,
         std::span<const float> texels);
+  // A texture with a mip chain: levels[k] holds level k (max(1, width >> k) x max(1, height >> k)
+  // RGBA floats), as `matc bake` computes them.
+  Image(const Context& context, std::uint32_t width, std::uint32_t height,
+        std::span<const std::span<const float>> levels);
 
   VkImage handle() const { return image_; }
   VkImageView view() const { return view_; }
   std::uint32_t width() const { return width_; }
   std::uint32_t height() const { return height_; }
+  std::uint32_t mip_levels() const { return mip_levels_; }
 
  private:
-  void upload(const Context& context, std::span<const float> texels);
+  Image(const Context& context, std::uint32_t width, std::uint32_t height, ImageUse use,
+        std::uint32_t mip_levels);
+  void upload(const Context& context, std::span<const std::span<const float>> levels);
 
   VkDevice device_;
   std::uint32_t width_;
   std::uint32_t height_;
+  std::uint32_t mip_levels_ = 1;
   VkImage image_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   VkImageView view_ = VK_NULL_HANDLE;
 };
 
-// Records a layout transition of a single-level colour image.
+// Records a layout transition of a colour image's first `mip_levels` levels.
 void transition_image(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
                       VkPipelineStageFlags source_stage, VkAccessFlags source_access,
-                      VkPipelineStageFlags destination_stage, VkAccessFlags destination_access);
+                      VkPipelineStageFlags destination_stage, VkAccessFlags destination_access,
+                      std::uint32_t mip_levels = 1);
 
 }  // namespace matc::vulkan

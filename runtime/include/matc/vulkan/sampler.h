@@ -6,9 +6,15 @@
 
 namespace matc::vulkan {
 
+// trilinear_repeat instead: linear filtering between and within mip levels, repeat addressing,
+// every level: how an engine samples a textured material's maps (the baked coefficient
+// textures of `matc bake`).
+enum class SamplerFiltering { bilinear_clamp, trilinear_repeat };
+
 class LutSampler {
  public:
-  explicit LutSampler(const Context& context);
+  explicit LutSampler(const Context& context,
+                      SamplerFiltering filtering = SamplerFiltering::bilinear_clamp);
   ~LutSampler();
   LutSampler(const LutSampler&) = delete;
   LutSampler& operator=(const LutSampler&) = delete;
