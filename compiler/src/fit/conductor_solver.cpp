@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -21,6 +23,47 @@ Eigen::Map<const Array> as_array(const std::vector<double>& values) {
   return {values.data(), static_cast<Eigen::Index>(values.size())};
 }
 
+// Lawson's iterations as near_minimax_fit runs them (weighted least squares; weights times the
+// square-rooted error, rescaled to a largest weight of 1), with the 2x2 normal equations in place
+// of a QR of the 401 x 2 design, in single precision: F within 1e-5 of solve_coefficients'
+// (tests/bake_test.cpp), twenty times faster. The solve runs once per distinct texel pair, up to
+// 65,536 times a texture: the loops are SIMD reductions, compiled for AVX2 as well as the
+// baseline and picked at load time.
+__attribute__((target_clones("avx2", "default"))) std::pair<double, double> lawson_iterations(
+    const float* b2, const float* b3, const float* y, float* weights, int rows) {
+  for (int j = 0; j < rows; ++j)
+    weights[j] = 1.0f;
+  double c2 = 0.0, c3 = 0.0;
+  for (int iteration = 0; iteration <= kLawsonIterations; ++iteration) {
+    float a00 = 0.0f, a01 = 0.0f, a11 = 0.0f, y0 = 0.0f, y1 = 0.0f;
+#pragma omp simd reduction(+ : a00, a01, a11, y0, y1)
+    for (int j = 0; j < rows; ++j) {
+      const float w2 = weights[j] * weights[j];
+      const float w2b2 = w2 * b2[j], w2b3 = w2 * b3[j];
+      a00 += w2b2 * b2[j];
+      a01 += w2b2 * b3[j];
+      a11 += w2b3 * b3[j];
+      y0 += w2b2 * y[j];
+      y1 += w2b3 * y[j];
+    }
+    const double determinant = double{a00} * a11 - double{a01} * a01;
+    c2 = (double{y0} * a11 - double{a01} * y1) / determinant;
+    c3 = (double{a00} * y1 - double{a01} * y0) / determinant;
+    const auto fc2 = static_cast<float>(c2), fc3 = static_cast<float>(c3);
+#pragma omp simd
+    for (int j = 0; j < rows; ++j)
+      weights[j] *= std::sqrt(std::fabs(fc2 * b2[j] + fc3 * b3[j] - y[j]) + 1e-15f);
+    float largest = 0.0f;
+#pragma omp simd reduction(max : largest)
+    for (int j = 0; j < rows; ++j)
+      largest = largest > weights[j] ? largest : weights[j];
+#pragma omp simd
+    for (int j = 0; j < rows; ++j)
+      weights[j] /= largest;
+  }
+  return {c2, c3};
+}
+
 }  // namespace
 
 ConductorSolver::ConductorSolver(runtime::BasisKind basis) : basis_(basis) {
@@ -32,6 +75,8 @@ ConductorSolver::ConductorSolver(runtime::BasisKind basis) : basis_(basis) {
     b1_.push_back(b[1]);
     b2_.push_back(b[2]);
     b3_.push_back(b[3]);
+    b2_float_.push_back(static_cast<float>(b[2]));
+    b3_float_.push_back(static_cast<float>(b[3]));
   }
 }
 
@@ -55,29 +100,12 @@ ChannelSolution ConductorSolver::solve(double reflectivity, double edge_tint) co
     c2 = probes[0][2];
     c3 = probes[0][3];
   } else {
-    // Lawson's iterations exactly as near_minimax_fit runs them (weighted least squares, weights
-    // times the square-rooted error, rescaled to a largest weight of 1), with the 2x2 normal
-    // equations in place of a QR of the 401 x 2 design: same iterates up to rounding.
-    // Lawson's iterations as near_minimax_fit runs them (weighted least squares; weights times
-    // the square-rooted error, rescaled to a largest weight of 1), with the 2x2 normal equations
-    // in place of a QR of the 401 x 2 design, in single precision (twice the SIMD width): F
-    // within 1e-5 of solve_coefficients', ten times faster (the solve runs once per distinct
-    // texel pair, tens of thousands of times a texture).
-    const Eigen::ArrayXf f2 = b2.cast<float>(), f3 = b3.cast<float>();
-    const Eigen::ArrayXf y = residual.cast<float>();
-    Eigen::ArrayXf weights = Eigen::ArrayXf::Ones(rows);
-    for (int iteration = 0; iteration <= kLawsonIterations; ++iteration) {
-      const Eigen::ArrayXf w2 = weights.square();
-      const Eigen::ArrayXf w2b2 = w2 * f2, w2b3 = w2 * f3;
-      const double a00 = (w2b2 * f2).sum(), a01 = (w2b2 * f3).sum(), a11 = (w2b3 * f3).sum();
-      const double y0 = (w2b2 * y).sum(), y1 = (w2b3 * y).sum();
-      const double determinant = a00 * a11 - a01 * a01;
-      c2 = (y0 * a11 - a01 * y1) / determinant;
-      c3 = (a00 * y1 - a01 * y0) / determinant;
-      weights *=
-          ((static_cast<float>(c2) * f2 + static_cast<float>(c3) * f3 - y).abs() + 1e-15f).sqrt();
-      weights /= weights.maxCoeff();
-    }
+    std::vector<float> y(residual.begin(), residual.end());
+    std::vector<float> weights(y.size());
+    const auto [fit2, fit3] = lawson_iterations(b2_float_.data(), b3_float_.data(), y.data(),
+                                                weights.data(), static_cast<int>(y.size()));
+    c2 = fit2;
+    c3 = fit3;
   }
   const double max_error = (c2 * b2 + c3 * b3 - residual).abs().maxCoeff();
   return {{r, 1.0 - r, c2, c3}, max_error};

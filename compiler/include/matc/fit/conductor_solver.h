@@ -30,6 +30,7 @@ class ConductorSolver {
   runtime::BasisKind basis_;
   std::vector<double> mu_;            // the solve's cosines
   std::vector<double> b1_, b2_, b3_;  // the shader basis there
+  std::vector<float> b2_float_, b3_float_;
 };
 
 }  // namespace matc
