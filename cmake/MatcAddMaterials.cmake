@@ -9,6 +9,18 @@
 # default all). Use one OUTPUT_DIR per call (a second call with the same one is an error): every
 # call writes the shared files matc_fresnel.*, matc_lut.* and matc_coefficient_table.*.
 # Material names are read from the files at configure time (changing one reconfigures).
+# _matc_json_name(<path> <caller> <kind> <out_var>): the "name" field of a JSON file (material or
+# bake asset), read at configure time; a file without one stops CMake with a pointer to matc.
+function(_matc_json_name path caller kind out_var)
+  file(READ "${path}" _json)
+  string(JSON _name ERROR_VARIABLE _error GET "${_json}" name)
+  if(_error)
+    message(FATAL_ERROR "${caller}: ${path}: no ${kind} name (${_error}); run matc on it for details")
+  endif()
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${path}")
+  set(${out_var} "${_name}" PARENT_SCOPE)
+endfunction()
+
 function(matc_add_materials)
   cmake_parse_arguments(ARG "" "TARGET;OUTPUT_DIR;LUT_FORMAT" "MATERIALS;EMIT;OPTIONS" ${ARGN})
   if(NOT ARG_TARGET OR NOT TARGET "${ARG_TARGET}")
@@ -72,12 +84,7 @@ function(matc_add_materials)
   set(_materials "")
   foreach(_material IN LISTS ARG_MATERIALS)
     get_filename_component(_path "${_material}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
-    file(READ "${_path}" _json)
-    string(JSON _name ERROR_VARIABLE _error GET "${_json}" name)
-    if(_error)
-      message(FATAL_ERROR "matc_add_materials: ${_path}: no material name (${_error}); run matc on it for details")
-    endif()
-    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${_path}")
+    _matc_json_name("${_path}" matc_add_materials material _name)
     list(APPEND _materials "${_path}")
     foreach(_kind IN ITEMS glsl hlsl spirv header json)
       if(_kind IN_LIST ARG_EMIT)

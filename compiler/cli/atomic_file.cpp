@@ -54,4 +54,10 @@ WriteOutcome write_file_atomically(const std::filesystem::path& path, std::strin
   return WriteOutcome::written;
 }
 
+std::string path_identity(const std::filesystem::path& path) {
+  std::error_code error;
+  const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
+  return error ? path.lexically_normal().string() : canonical.string();
+}
+
 }  // namespace matc::cli

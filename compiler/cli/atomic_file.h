@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace matc::cli {
@@ -12,5 +13,9 @@ enum class WriteOutcome { written, unchanged };
 // otherwise writes a temporary file beside it and renames it into place.
 // Throws std::runtime_error with a readable reason on failure, leaving no temporary behind.
 WriteOutcome write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+
+// The canonical form of a path (as far as it exists), for "would this output overwrite an
+// input?" checks.
+std::string path_identity(const std::filesystem::path& path);
 
 }  // namespace matc::cli

@@ -25,12 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string identity(const fs::path& path) {
-  std::error_code error;
-  const fs::path canonical = fs::weakly_canonical(path, error);
-  return error ? path.lexically_normal().string() : canonical.string();
-}
-
 // A map option's text: constant values ("0.9,0.6,0.3", "0.5") or an image file.
 bool looks_like_values(const std::string& text) {
   return !text.empty() && text.find_first_not_of("0123456789.,+-eE") == std::string::npos;
@@ -127,9 +121,9 @@ void check_outputs(std::vector<Asset>& assets, const fs::path& output_directory)
   for (const Asset& entry : assets) {
     if (!entry.asset) continue;
     if (!entry.asset->source_path.empty())
-      inputs[identity(entry.asset->source_path)] = entry.asset->source_path;
+      inputs[path_identity(entry.asset->source_path)] = entry.asset->source_path;
     for (const MapInput* map : {&entry.asset->first, &entry.asset->second})
-      if (map->is_file()) inputs[identity(map->resolved)] = map->resolved.string();
+      if (map->is_file()) inputs[path_identity(map->resolved)] = map->resolved.string();
   }
   UniqueNames names;
   for (Asset& entry : assets) {
@@ -138,7 +132,7 @@ void check_outputs(std::vector<Asset>& assets, const fs::path& output_directory)
     if (!names.claim(asset.name, entry.label, asset.name_location, "a bake", entry.diagnostics))
       continue;
     for (const std::string& name : possible_bake_outputs(asset.name)) {
-      const auto input = inputs.find(identity(output_directory / name));
+      const auto input = inputs.find(path_identity(output_directory / name));
       if (input == inputs.end()) continue;
       entry.diagnostics.error(asset.name_location, "name",
                               fmt::format("output '{}' would overwrite the input {}",

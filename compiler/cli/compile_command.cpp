@@ -31,13 +31,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Canonical form of an existing path, for "would this output overwrite an input?" checks.
-std::string identity(const fs::path& path) {
-  std::error_code error;
-  const fs::path canonical = fs::weakly_canonical(path, error);
-  return error ? path.lexically_normal().string() : canonical.string();
-}
-
 // Stems of the files every build writes once; a material of that name would overwrite them.
 const std::set<std::string>& reserved_names() {
   static const std::set<std::string> names = {"matc_fresnel", "matc_lut", "matc_manifest"};
@@ -93,7 +86,7 @@ struct Job {
 std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& output_directory) {
   std::map<std::string, std::string> inputs_by_identity;
   for (const std::string& file : options.files)
-    inputs_by_identity[identity(file)] = file;
+    inputs_by_identity[path_identity(file)] = file;
   UniqueNames names;
   std::vector<Job> jobs(options.files.size());
   for (std::size_t index = 0; index < jobs.size(); ++index) {
@@ -105,7 +98,7 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
     const Material& material = *parsed.material;
     const std::vector<fs::path> outputs = possible_outputs(output_directory, material.name);
     const auto overwritten = std::find_if(outputs.begin(), outputs.end(), [&](const fs::path& p) {
-      return inputs_by_identity.contains(identity(p));
+      return inputs_by_identity.contains(path_identity(p));
     });
     if (reserved_names().contains(lowercase(material.name))) {
       job.diagnostics.error(material.name_location, "name",
@@ -118,7 +111,7 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
       job.diagnostics.error(
           material.name_location, "name",
           fmt::format("output '{}' would overwrite the input {}", overwritten->string(),
-                      inputs_by_identity.at(identity(*overwritten))),
+                      inputs_by_identity.at(path_identity(*overwritten))),
           "an output directory (-o) that holds no input file");
     }
     if (!job.diagnostics.has_errors()) job.material = std::move(parsed.material);

@@ -206,13 +206,9 @@ MapEncoding default_map_encoding(MapQuantity quantity) {
 BakeAssetResult parse_bake_asset(std::string_view text, const std::string& path) {
   BakeAssetResult result;
   const TextLocator locator(path, text);
-  auto parsed = parse_located_json(text);
-  if (const auto* syntax = std::get_if<JsonSyntaxError>(&parsed)) {
-    result.diagnostics.error(locator.at(syntax->offset), "", syntax->message,
-                             "a JSON object (RFC 8259, UTF-8, no comments)");
-    return result;
-  }
-  BakeAssetReader reader(std::get<LocatedJson>(parsed), locator, result.diagnostics,
+  const auto document = parse_located_json_reporting(text, locator, result.diagnostics);
+  if (!document) return result;
+  BakeAssetReader reader(*document, locator, result.diagnostics,
                          std::filesystem::path(path).parent_path());
   result.asset = reader.read();
   return result;

@@ -36,6 +36,18 @@ std::string child(const std::string& pointer, std::string_view key) {
   return pointer + "/" + std::string(key);
 }
 
+std::optional<LocatedJson> parse_located_json_reporting(std::string_view text,
+                                                        const TextLocator& locator,
+                                                        Diagnostics& diagnostics) {
+  auto parsed = parse_located_json(text);
+  if (const auto* syntax = std::get_if<JsonSyntaxError>(&parsed)) {
+    diagnostics.error(locator.at(syntax->offset), "", syntax->message,
+                      "a JSON object (RFC 8259, UTF-8, no comments)");
+    return std::nullopt;
+  }
+  return std::move(std::get<LocatedJson>(parsed));
+}
+
 SourceLocation LocatedJsonReader::at_value(const std::string& pointer) const {
   return locator_.at(document_.value_offset(pointer));
 }

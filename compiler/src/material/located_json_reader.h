@@ -34,6 +34,11 @@ std::string describe_type(const nlohmann::json& value);
 // The JSON pointer of `key` inside the object at `pointer`.
 std::string child(const std::string& pointer, std::string_view key);
 
+// `text` as located JSON, or nullopt with its syntax error reported at its line and column.
+std::optional<LocatedJson> parse_located_json_reporting(std::string_view text,
+                                                        const TextLocator& locator,
+                                                        Diagnostics& diagnostics);
+
 class LocatedJsonReader {
  public:
   LocatedJsonReader(const LocatedJson& document, const TextLocator& locator,

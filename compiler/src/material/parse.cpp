@@ -262,15 +262,10 @@ ParseResult parse_material(std::string_view text, const std::string& path,
                            const FileLoader& loader) {
   ParseResult result;
   const TextLocator locator(path, text);
-  auto parsed = parse_located_json(text);
-  if (const auto* syntax = std::get_if<JsonSyntaxError>(&parsed)) {
-    result.diagnostics.error(locator.at(syntax->offset), "", syntax->message,
-                             "a JSON object (RFC 8259, UTF-8, no comments)");
-    return result;
-  }
+  const auto document = parse_located_json_reporting(text, locator, result.diagnostics);
+  if (!document) return result;
   const std::filesystem::path base_directory = std::filesystem::path(path).parent_path();
-  MaterialReader reader(std::get<LocatedJson>(parsed), locator, result.diagnostics, loader,
-                        base_directory);
+  MaterialReader reader(*document, locator, result.diagnostics, loader, base_directory);
   result.material = reader.read();
   if (result.material) result.material->source_text = std::string(text);
   // Report in reading order: the material file's problems by position, then its data files'.
