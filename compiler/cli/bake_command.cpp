@@ -231,9 +231,19 @@ int run_bake(const BakeCommandOptions& options) {
       ++failed;
     }
   }
-  if (!options.quiet) {
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!options.quiet && diagnostics_format() == DiagnosticsFormat::json) {
+    // Standard error stays JSON Lines for tools: the summary is one more object.
+    const nlohmann::ordered_json line = {{"summary",
+                                          {{"baked", baked_count},
+                                           {"written", written},
+                                           {"unchanged", unchanged},
+                                           {"failed", failed},
+                                           {"not_attempted", not_attempted},
+                                           {"seconds", seconds}}}};
+    fmt::print(stderr, "{}\n", line.dump());
+  } else if (!options.quiet) {
     fmt::print(
         stderr, "matc bake: {} baked ({} files written, {} unchanged), {} failed{} in {:.2f} s\n",
         baked_count, written, unchanged, failed,
