@@ -12,7 +12,7 @@ trap 'rm -rf "$work"' EXIT
 cp -r "$catalogue"/. "$work/"  # cases may name each other's files (spectral CSVs, a second file)
 cd "$work"
 rm -f ./*.expected
-[ -f "$case.setup" ] && bash "$case.setup"
+[ -f "$case.setup" ] && bash -e "$case.setup"  # a setup that fails fails the case
 if [ -f "$case.args" ]; then read -r -a args <"$case.args"; else args=(-o out "$case.json"); fi
 status=0
 "$matc" -q "${args[@]}" 2>stderr >/dev/null || status=$?
