@@ -86,6 +86,7 @@ TEST(DeviceValidation, CoefficientTablePathMatchesTheCpuRuntime) {
         EXPECT_LE(path.fresnel.max_abs, 1e-4);
         EXPECT_LE(path.preintegrated.max_abs, 1e-4);
         EXPECT_LE(path.from_ior.max_abs, 1e-4);
+        EXPECT_LE(path.baked.max_abs, 1e-4);
       }
       EXPECT_TRUE(validator.layer_messages().empty());
     }

@@ -70,6 +70,7 @@ bool validate_coefficient_table_and_report(const DeviceValidator& validator) {
     line += describe_table("F(r, g)", path.fresnel, tolerance, queries, false);
     line += describe_table("Fbar(r, g)", path.preintegrated, tolerance, queries, false);
     line += describe_table("F(n, k)", path.from_ior, tolerance, queries, true);
+    line += describe_table("F(baked)", path.baked, tolerance, queries, false);
     fmt::print("{}  {}\n", line, path.passed ? "ok" : "FAILED");
   }
   return report_layer_messages(validator, messages_before, "coefficient table") && result.passed();

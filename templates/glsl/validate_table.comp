@@ -28,7 +28,10 @@ void main() {
   vec3 ior_g = artistic.edge_tint;
   MatcFresnelCoefficients from_ior = MATC_COEFFICIENTS_FROM_TABLE(
       sampler2D(matc_coefficient_table, matc_linear_sampler), ior_r, ior_g);
-  matc_results[3u * i] = vec4(matc_fresnel(c, reflectivity_mu.w), 1.0);
-  matc_results[3u * i + 1u] = vec4(matc_fresnel_preintegrated(c, bbar), 1.0);
-  matc_results[3u * i + 2u] = vec4(matc_fresnel(from_ior, reflectivity_mu.w), 1.0);
+  MatcFresnelCoefficients baked =
+      matc_coefficients_from_baked(r, g - 0.5, k.xyz * 0.125 - 0.5);
+  matc_results[4u * i] = vec4(matc_fresnel(c, reflectivity_mu.w), 1.0);
+  matc_results[4u * i + 1u] = vec4(matc_fresnel_preintegrated(c, bbar), 1.0);
+  matc_results[4u * i + 2u] = vec4(matc_fresnel(from_ior, reflectivity_mu.w), 1.0);
+  matc_results[4u * i + 3u] = vec4(matc_fresnel(baked, reflectivity_mu.w), 1.0);
 }

@@ -1,7 +1,8 @@
 // matc {{version}}: the compute kernel that checks the coefficient-table path (textured metals) on
 // a Vulkan device against the CPU runtime. Each query is four float4: (r.rgb, mu),
 // (g.rgb, NdotV), (n.rgb, roughness), (k.rgb, -); it writes F(mu) and the preintegrated F from
-// the (r, g) coefficients, and F(mu) from the (n, k) ones through matc_artistic_from_ior.
+// the (r, g) coefficients, F(mu) from the (n, k) ones through matc_artistic_from_ior, and F(mu)
+// from matc_coefficients_from_baked with F0 = r, c_2 = g - 0.5, c_3 = k / 8 - 0.5.
 {{library}}
 [[vk::binding(0, 0)]] StructuredBuffer<float4> matc_queries : register(t0);
 [[vk::binding(1, 0)]] RWStructuredBuffer<float4> matc_results : register(u1);
@@ -27,7 +28,10 @@ void main(uint3 id : SV_DispatchThreadID) {
   float3 ior_g = artistic.edge_tint;
   MatcFresnelCoefficients from_ior =
       MATC_COEFFICIENTS_FROM_TABLE(matc_coefficient_table, matc_linear_sampler, ior_r, ior_g);
-  matc_results[3 * i] = float4(matc_fresnel(c, reflectivity_mu.w), 1.0);
-  matc_results[3 * i + 1] = float4(matc_fresnel_preintegrated(c, bbar), 1.0);
-  matc_results[3 * i + 2] = float4(matc_fresnel(from_ior, reflectivity_mu.w), 1.0);
+  MatcFresnelCoefficients baked =
+      matc_coefficients_from_baked(r, g - 0.5, k.xyz * 0.125 - 0.5);
+  matc_results[4 * i] = float4(matc_fresnel(c, reflectivity_mu.w), 1.0);
+  matc_results[4 * i + 1] = float4(matc_fresnel_preintegrated(c, bbar), 1.0);
+  matc_results[4 * i + 2] = float4(matc_fresnel(from_ior, reflectivity_mu.w), 1.0);
+  matc_results[4 * i + 3] = float4(matc_fresnel(baked, reflectivity_mu.w), 1.0);
 }

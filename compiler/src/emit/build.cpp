@@ -87,7 +87,8 @@ std::vector<std::string> shared_library_exports(bool embedded_lut) {
                                     "matc_coefficient_table_texcoord",
                                     "matc_channel_coefficients",
                                     "matc_coefficients_from_table",
-                                    "matc_artistic_from_ior"};
+                                    "matc_artistic_from_ior",
+                                    "matc_coefficients_from_baked"};
   if (embedded_lut) names.emplace_back("matc_preintegrated_basis_embedded");
   return names;
 }

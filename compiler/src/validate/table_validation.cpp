@@ -1,9 +1,11 @@
-// DeviceValidator::validate_coefficient_table: the textured-metal path, run from GLSL and HLSL.
+// DeviceValidator::validate_coefficient_table: the textured-metal paths (the coefficient table,
+// and the baked coefficient textures' function), run from GLSL and HLSL.
 #include <algorithm>
 #include <cmath>
 #include <random>
 
 #include "matc/emit/validation_kernel.h"
+#include "matc/runtime/baked_coefficients.h"
 #include "matc/runtime/basis_polynomial.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/lut.h"
@@ -114,10 +116,18 @@ TablePathValidation DeviceValidator::run_table(ShaderLanguage language) const {
     const runtime::Coefficients from_ior =
         runtime::coefficients_from_table(table, artistic.reflectivity, artistic.edge_tint);
     record(path.from_ior, runtime::evaluate_fresnel(from_ior, polynomial, q.mu), result + 8, i);
+    runtime::Rgb c2{}, c3{};
+    for (std::size_t c = 0; c < 3; ++c) {
+      c2[c] = static_cast<double>(q.edge_tint[c] - 0.5f);
+      c3[c] = static_cast<double>(q.k[c] * 0.125f - 0.5f);
+    }
+    const runtime::Coefficients baked =
+        runtime::coefficients_from_baked(as_rgb(q.reflectivity), c2, c3);
+    record(path.baked, runtime::evaluate_fresnel(baked, polynomial, q.mu), result + 12, i);
   }
   const double tolerance = tolerance_.preintegrated;
   path.passed = path.fresnel.max_abs <= tolerance && path.preintegrated.max_abs <= tolerance &&
-                path.from_ior.max_abs <= tolerance;
+                path.from_ior.max_abs <= tolerance && path.baked.max_abs <= tolerance;
   return path;
 }
 

@@ -82,6 +82,9 @@ struct TablePathValidation {
   TableDiscrepancy fresnel;        // F(mu) from (r, g)
   TableDiscrepancy preintegrated;  // Fbar from (r, g)
   TableDiscrepancy from_ior;       // F(mu) from (n, k)
+  // F(mu) from matc_coefficients_from_baked (`matc bake`'s textures), with the query's r as F0,
+  // g - 0.5 as c_2 and k / 8 - 0.5 as c_3: values of either sign, as baked texels hold.
+  TableDiscrepancy baked;
   bool passed = false;
 };
 

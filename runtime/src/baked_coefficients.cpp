@@ -1,0 +1,18 @@
+#include "matc/runtime/baked_coefficients.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace matc::runtime {
+
+Coefficients coefficients_from_baked(const Rgb& f0, const Rgb& c2, const Rgb& c3) {
+  Coefficients coefficients{};
+  for (std::size_t c = 0; c < 3; ++c) {
+    // A NaN F0 reads as 0, as the runtime's other inputs do.
+    const double c0 = std::isnan(f0[c]) ? 0.0 : std::clamp(f0[c], 0.0, 1.0);
+    coefficients[c] = {c0, 1.0 - c0, c2[c], c3[c]};
+  }
+  return coefficients;
+}
+
+}  // namespace matc::runtime
