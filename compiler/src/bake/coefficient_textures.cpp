@@ -97,12 +97,13 @@ void solve_exact(const BakeInputs& inputs, const BakeOptions& options, BakedCoef
   });
 }
 
-// The largest |F - exact| of one channel's coefficients over kErrorMapCosines cosines.
+// The largest |F - exact| of one channel's coefficients over kErrorMapCosines cosines, against
+// the curve of the metal the maps describe: the texel's n + ik for n and k maps (so the error of
+// clamping an IOR outside the artistic range to the nearest edge tint shows), Gulbrandsen's
+// conductor of (r, g) otherwise.
 double channel_error(const runtime::BasisPolynomial& basis, const runtime::ChannelCoefficients& c,
-                     double reflectivity, double edge_tint) {
+                     const ComplexIor& ior) {
   double largest = 0.0;
-  if (reflectivity >= 1.0) return 0.0;
-  const ComplexIor ior = gulbrandsen_to_ior({reflectivity, edge_tint});
   for (std::size_t j = 0; j < kErrorMapCosines; ++j) {
     const double mu = static_cast<double>(j) / static_cast<double>(kErrorMapCosines - 1);
     const auto b = runtime::evaluate_basis_polynomial(basis, mu);
@@ -128,6 +129,7 @@ void solve_with_table(const BakeInputs& inputs, const BakeOptions& options,
           r[c] = inputs.first.value(t, c);
           g[c] = inputs.second.value(t, c);
         }
+        const runtime::Rgb first = r, second = g;
         if (inputs.model == BakeModel::ior) {
           const runtime::ArtisticRgb artistic = runtime::artistic_from_ior(r, g);
           r = artistic.reflectivity;
@@ -138,9 +140,11 @@ void solve_with_table(const BakeInputs& inputs, const BakeOptions& options,
           const runtime::ChannelCoefficients coefficients =
               runtime::channel_coefficients_from_table(table, r[c], g[c]);
           store(level, t, c, coefficients[0], coefficients[2], coefficients[3]);
-          if (options.error_map) {
-            error =
-                std::max(error, static_cast<float>(channel_error(basis, coefficients, r[c], g[c])));
+          if (options.error_map && r[c] < 1.0) {
+            const ComplexIor ior = inputs.model == BakeModel::ior
+                                       ? ComplexIor{first[c], second[c]}
+                                       : gulbrandsen_to_ior({r[c], g[c]});
+            error = std::max(error, static_cast<float>(channel_error(basis, coefficients, ior)));
           }
         }
         if (options.error_map) baked.error[t] = error;
