@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what matc needs, builds it, and compiles the example materials into build/examples/.
+# Installs what matc needs, builds it (which also bakes the example textured metal into
+# build/examples/textured/baked/), and compiles the example materials into build/examples/.
 # Extra CMake arguments can be passed in MATC_CMAKE_ARGS.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
