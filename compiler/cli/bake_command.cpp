@@ -105,6 +105,31 @@ std::optional<Asset> command_line_asset(const BakeCommandOptions& options) {
   return result;
 }
 
+// As the compile warns about a material: texels whose curve the basis follows poorly, with the
+// worst one named so an artist can find it.
+void warn_if_poor_fit(const BakeAsset& asset, const BakeInputs& inputs,
+                      const BakedCoefficients& baked, Diagnostics& diagnostics) {
+  if (baked.poor_fit_texels == 0) return;
+  const std::size_t texels = inputs.width * inputs.height;
+  diagnostics.warning(
+      !asset.source_path.empty() || !asset.first.is_file()
+          ? asset.name_location
+          : SourceLocation{asset.first.resolved.string(), 0, 0},
+      asset.model == BakeModel::artistic ? "artistic" : "ior",
+      fmt::format("poor fit in {} of {} texels ({:.1f}%): max |F - exact| = {:.3f} at texel ({}, "
+                  "{}) (the measured metals stay under 0.02)",
+                  baked.poor_fit_texels, texels,
+                  100.0 * static_cast<double>(baked.poor_fit_texels) / static_cast<double>(texels),
+                  baked.max_error, baked.worst_texel % inputs.width,
+                  baked.worst_texel / inputs.width),
+      asset.model == BakeModel::artistic
+          ? "near-black texels (r near 0) and high reflectivity with a low edge tint (curves like "
+            "a high-index dielectric's) are curves no 4-term basis follows; --error-map shows "
+            "where"
+          : "check the n, k values; curves this far from measured metals fit poorly; "
+            "--error-map shows where");
+}
+
 std::vector<Asset> read_assets(const BakeCommandOptions& options) {
   std::vector<Asset> assets;
   for (const std::string& file : options.files) {
@@ -190,6 +215,7 @@ int run_bake(const BakeCommandOptions& options) {
       const std::optional<BakeInputs> inputs = load_bake_inputs(asset, entry.diagnostics);
       if (inputs) {
         const BakedCoefficients baked = bake_coefficients(*inputs, bake_options);
+        warn_if_poor_fit(asset, *inputs, baked, entry.diagnostics);
         // Every byte exists before the first file is written: a failure leaves no partial set.
         const std::vector<OutputFile> files =
             baked_texture_files(asset, *inputs, baked, file_options);

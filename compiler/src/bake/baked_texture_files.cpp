@@ -107,8 +107,10 @@ std::vector<OutputFile> baked_texture_files(const BakeAsset& asset, const BakeIn
   manifest["precision"] = lut_precision_name(options.precision);
   manifest["solve"] = bake_solve_name(baked.solve);
   if (baked.solve == BakeSolve::exact) manifest["solved_pairs"] = baked.solved_pairs;
-  if (baked.solve == BakeSolve::exact || !baked.error.empty())
+  if (baked.solve == BakeSolve::exact || !baked.error.empty()) {
     manifest["max_error_level0"] = baked.max_error;
+    manifest["poor_fit_texels"] = baked.poor_fit_texels;
+  }
   manifest["textures"] = textures;
   manifest["reconstruction"] =
       "per colour channel: c0 = F0 (the F0 texture, or a base colour whose mips are box "

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <utility>
 
+#include "matc/compile.h"  // kPoorFitMaxError
 #include "matc/fit/conductor_solver.h"
 #include "matc/optics/gulbrandsen.h"
 #include "matc/runtime/basis_polynomial.h"
@@ -19,6 +21,30 @@ constexpr std::size_t kErrorMapCosines = 65;
 
 struct PairSolution {
   float c2 = 0.0f, c3 = 0.0f, error = 0.0f;
+};
+
+// Per-row counts of poorly fitted texels and each row's worst, filled by the row workers and
+// summed afterwards (the result does not depend on the thread count).
+class ErrorTally {
+ public:
+  explicit ErrorTally(std::size_t rows) : poor_(rows, 0), worst_(rows, {-1.0f, 0}) {}
+  void add(std::size_t row, std::size_t texel, float error) {
+    if (error > kPoorFitMaxError) ++poor_[row];
+    if (error > worst_[row].first) worst_[row] = {error, texel};
+  }
+  void finish(BakedCoefficients& baked) const {
+    std::pair<float, std::size_t> worst{-1.0f, 0};
+    for (std::size_t row = 0; row < poor_.size(); ++row) {
+      baked.poor_fit_texels += poor_[row];
+      if (worst_[row].first > worst.first) worst = worst_[row];
+    }
+    baked.max_error = std::max(0.0f, worst.first);
+    baked.worst_texel = worst.second;
+  }
+
+ private:
+  std::vector<std::size_t> poor_;
+  std::vector<std::pair<float, std::size_t>> worst_;
 };
 
 // The index of a texel channel's value among an 8-bit map's codes, or a constant's channels.
@@ -75,11 +101,10 @@ void solve_exact(const BakeInputs& inputs, const BakeOptions& options, BakedCoef
     };
   });
   baked.solved_pairs = pairs.size();
-  for (std::size_t pair : pairs)
-    baked.max_error = std::max(baked.max_error, static_cast<double>(solutions[pair].error));
 
   CoefficientLevel& level = baked.levels.front();
   if (options.error_map) baked.error.assign(texels, 0.0f);
+  ErrorTally tally(inputs.height);
   fill_rows_in_parallel(inputs.height, options.threads, [&] {
     return [&](std::size_t y) {
       for (std::size_t t = y * inputs.width; t < (y + 1) * inputs.width; ++t) {
@@ -92,9 +117,11 @@ void solve_exact(const BakeInputs& inputs, const BakeOptions& options, BakedCoef
           error = std::max(error, solution.error);
         }
         if (options.error_map) baked.error[t] = error;
+        tally.add(y, t, error);
       }
     };
   });
+  tally.finish(baked);
 }
 
 // The largest |F - exact| of one channel's coefficients over kErrorMapCosines cosines, against
@@ -121,6 +148,7 @@ void solve_with_table(const BakeInputs& inputs, const BakeOptions& options,
   const std::size_t texels = inputs.width * inputs.height;
   if (options.error_map) baked.error.assign(texels, 0.0f);
   CoefficientLevel& level = baked.levels.front();
+  ErrorTally tally(inputs.height);
   fill_rows_in_parallel(inputs.height, options.threads, [&] {
     return [&](std::size_t y) {
       for (std::size_t t = y * inputs.width; t < (y + 1) * inputs.width; ++t) {
@@ -147,12 +175,14 @@ void solve_with_table(const BakeInputs& inputs, const BakeOptions& options,
             error = std::max(error, static_cast<float>(channel_error(basis, coefficients, ior)));
           }
         }
-        if (options.error_map) baked.error[t] = error;
+        if (options.error_map) {
+          baked.error[t] = error;
+          tally.add(y, t, error);
+        }
       }
     };
   });
-  if (options.error_map)
-    baked.max_error = *std::max_element(baked.error.begin(), baked.error.end());
+  if (options.error_map) tally.finish(baked);
 }
 
 // For each texel of the next level along one axis: the source texels it covers and their

@@ -49,6 +49,10 @@ struct BakedCoefficients {
   // its maximum over the texture (always for the exact solve).
   std::vector<float> error;
   double max_error = 0.0;
+  // Level-0 texels whose error is above kPoorFitMaxError (the compile's poor-fit warning), and
+  // the worst texel (row-major index); known for the exact solve, and with error_map.
+  std::size_t poor_fit_texels = 0;
+  std::size_t worst_texel = 0;
 };
 
 BakedCoefficients bake_coefficients(const BakeInputs& inputs, const BakeOptions& options);
