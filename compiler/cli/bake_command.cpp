@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <future>
 #include <map>
 #include <optional>
 
@@ -220,11 +221,17 @@ int run_bake(const BakeCommandOptions& options) {
         const std::vector<OutputFile> files =
             baked_texture_files(asset, *inputs, baked, file_options);
         fs::create_directories(output_directory);
+        // The textures run to hundreds of MB: written at once, each atomically (copying into
+        // the page cache is most of a write's time, and it runs on the writing thread).
+        std::vector<std::future<WriteOutcome>> writes;
         for (const OutputFile& file : files) {
-          const WriteOutcome outcome =
-              write_file_atomically(output_directory / file.name, file.bytes);
-          ++(outcome == WriteOutcome::written ? written : unchanged);
-          targets.push_back(output_directory / file.name);
+          writes.push_back(std::async(std::launch::async, [&output_directory, &file] {
+            return write_file_atomically(output_directory / file.name, file.bytes);
+          }));
+        }
+        for (std::size_t i = 0; i < files.size(); ++i) {
+          ++(writes[i].get() == WriteOutcome::written ? written : unchanged);
+          targets.push_back(output_directory / files[i].name);
         }
         if (!asset.source_path.empty()) dependencies.push_back(asset.source_path);
         for (const MapInput* map : {&asset.first, &asset.second})
