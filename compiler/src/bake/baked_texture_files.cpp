@@ -9,7 +9,6 @@
 #include "lut/lut_writers.h"
 #include "matc/emit/content_hash.h"
 #include "matc/json_format.h"
-#include "matc/material/parse.h"  // load_file
 #include "matc/runtime/basis.h"
 #include "matc/version.h"
 
@@ -49,9 +48,8 @@ std::string error_map_png(const BakedCoefficients& baked) {
 ordered_json describe_input(const MapInput& map, const MapSamples& samples) {
   if (!map.is_file()) return {{"constant", *map.constant}};
   const ImageMap& image = *samples.image;
-  const LoadedFile file = load_file(map.resolved, kMaxImageFileBytes);
   return {{"file", map.resolved.generic_string()},
-          {"xxh3", file.bytes ? hash_of_bytes(*file.bytes) : std::string()},
+          {"xxh3", image.source_hash},
           {"format", image_file_format_name(image.format)},
           {"bits", image.bits},
           {"channels", image.file_channels},

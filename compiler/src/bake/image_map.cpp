@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <stb/stb_image.h>
 
+#include "matc/emit/content_hash.h"
 #include "matc/material/parse.h"  // load_file
 #include "openexr_decode.h"
 
@@ -133,16 +134,23 @@ double srgb_to_linear(double encoded) {
 ImageReadResult decode_image_map(std::span<const unsigned char> bytes, MapEncoding encoding,
                                  bool encoding_given) {
   if (bytes.empty()) return failure("is empty");
-  if (starts_with(bytes, kPngSignature))
-    return decode_with_stb(bytes, ImageFileFormat::png, encoding);
-  if (starts_with(bytes, kJpegSignature))
-    return decode_with_stb(bytes, ImageFileFormat::jpeg, encoding);
-  if (starts_with(bytes, kOpenExrSignature)) {
-    if (encoding_given && encoding == MapEncoding::srgb)
-      return failure("is an OpenEXR file, which holds linear values: it cannot be sRGB-encoded");
-    return decode_openexr(bytes);
+  ImageReadResult result;
+  if (starts_with(bytes, kPngSignature)) {
+    result = decode_with_stb(bytes, ImageFileFormat::png, encoding);
+  } else if (starts_with(bytes, kJpegSignature)) {
+    result = decode_with_stb(bytes, ImageFileFormat::jpeg, encoding);
+  } else if (!starts_with(bytes, kOpenExrSignature)) {
+    return failure("is not a PNG, JPEG or OpenEXR file (unknown signature)");
+  } else if (encoding_given && encoding == MapEncoding::srgb) {
+    return failure("is an OpenEXR file, which holds linear values: it cannot be sRGB-encoded");
+  } else {
+    result = decode_openexr(bytes);
   }
-  return failure("is not a PNG, JPEG or OpenEXR file (unknown signature)");
+  if (result.map) {
+    result.map->source_hash =
+        hash_of_bytes({reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+  }
+  return result;
 }
 
 ImageReadResult read_image_map(const std::filesystem::path& file, MapEncoding encoding,

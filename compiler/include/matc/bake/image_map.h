@@ -42,6 +42,7 @@ struct ImageMap {
   std::vector<float> code_values;  // 256 entries: the linear value of each code
   // Other files: linear values, 3 per texel.
   std::vector<float> values;
+  std::string source_hash;  // XXH3 of the file's bytes (content_hash.h), for manifests
 
   std::size_t texel_count() const { return width * height; }
   bool is_8_bit() const { return !codes.empty(); }
