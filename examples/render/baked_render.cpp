@@ -123,22 +123,15 @@ Reference reference_panel(const matc::BakeInputs& inputs, const std::vector<Rgb>
   return reference;
 }
 
-// An RGB image as RGBA level 0 with its box-filtered mips.
+// An RGB image as RGBA level 0 with its box-filtered mips (the bake's own mip_chain).
 template <typename Value>
 std::vector<std::vector<float>> mip_chain(std::size_t width, std::size_t height,
                                           const Value& value) {
-  std::vector<std::vector<float>> levels(1, std::vector<float>(width * height * 4, 1));
+  std::vector<float> level0(width * height * 4, 1.0f);
   for (std::size_t t = 0; t < width * height; ++t)
     for (std::size_t c = 0; c < 3; ++c)
-      levels[0][4 * t + c] = static_cast<float>(value(t, c));
-  while (width > 1 || height > 1) {
-    const std::size_t next_width = std::max<std::size_t>(1, width / 2);
-    const std::size_t next_height = std::max<std::size_t>(1, height / 2);
-    levels.push_back(matc::downsample_level(levels.back(), width, height, next_width, next_height));
-    width = next_width;
-    height = next_height;
-  }
-  return levels;
+      level0[4 * t + c] = static_cast<float>(value(t, c));
+  return matc::mip_chain(std::move(level0), width, height);
 }
 
 // The maps (linear r and g) with box-filtered mips: the usual way.

@@ -248,6 +248,21 @@ std::vector<float> downsample_level(const std::vector<float>& texels, std::size_
   return next;
 }
 
+std::vector<std::vector<float>> mip_chain(std::vector<float> level0, std::size_t width,
+                                          std::size_t height, unsigned threads) {
+  std::vector<std::vector<float>> levels;
+  levels.push_back(std::move(level0));
+  while (width > 1 || height > 1) {
+    const std::size_t next_width = std::max<std::size_t>(1, width / 2);
+    const std::size_t next_height = std::max<std::size_t>(1, height / 2);
+    levels.push_back(
+        downsample_level(levels.back(), width, height, next_width, next_height, threads));
+    width = next_width;
+    height = next_height;
+  }
+  return levels;
+}
+
 BakedCoefficients bake_coefficients(const BakeInputs& inputs, const BakeOptions& options) {
   BakedCoefficients baked;
   baked.basis = options.basis;
@@ -262,16 +277,16 @@ BakedCoefficients bake_coefficients(const BakeInputs& inputs, const BakeOptions&
     solve_with_table(inputs, options, baked);
 
   for (std::size_t k = 1; k < baked.levels.size(); ++k) {
-    const CoefficientLevel& previous = baked.levels[k - 1];
-    CoefficientLevel& level = baked.levels[k];
-    level.width = std::max<std::size_t>(1, previous.width / 2);
-    level.height = std::max<std::size_t>(1, previous.height / 2);
-    for (std::vector<float> CoefficientLevel::*plane :
-         {&CoefficientLevel::f0, &CoefficientLevel::c2, &CoefficientLevel::c3}) {
-      if ((previous.*plane).empty()) continue;
-      level.*plane = downsample_level(previous.*plane, previous.width, previous.height, level.width,
-                                      level.height, options.threads);
-    }
+    baked.levels[k].width = std::max<std::size_t>(1, inputs.width >> k);
+    baked.levels[k].height = std::max<std::size_t>(1, inputs.height >> k);
+  }
+  for (std::vector<float> CoefficientLevel::*plane :
+       {&CoefficientLevel::f0, &CoefficientLevel::c2, &CoefficientLevel::c3}) {
+    if ((baked.levels.front().*plane).empty()) continue;
+    std::vector<std::vector<float>> chain = mip_chain(std::move(baked.levels.front().*plane),
+                                                      inputs.width, inputs.height, options.threads);
+    for (std::size_t k = 0; k < chain.size(); ++k)
+      baked.levels[k].*plane = std::move(chain[k]);
   }
   return baked;
 }

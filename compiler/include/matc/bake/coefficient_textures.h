@@ -66,6 +66,11 @@ std::vector<float> downsample_level(const std::vector<float>& texels, std::size_
 // Number of levels of a full chain: floor(log2(max(width, height))) + 1.
 std::size_t mip_level_count(std::size_t width, std::size_t height);
 
+// A full mip chain of an RGBA image: `level0` (width x height), then each level downsampled from
+// the one before (downsample_level), each half the size rounded down, down to 1 x 1.
+std::vector<std::vector<float>> mip_chain(std::vector<float> level0, std::size_t width,
+                                          std::size_t height, unsigned threads = 0);
+
 // One texel's channel of a baked level (baked with f0): c_0 = F0, c_1 = 1 - c_0, c_2, c_3.
 runtime::ChannelCoefficients level_coefficients(const CoefficientLevel& level, std::size_t x,
                                                 std::size_t y, std::size_t channel);
