@@ -1,6 +1,7 @@
 #include "matc/bake/coefficient_textures.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <utility>
@@ -124,18 +125,30 @@ void solve_exact(const BakeInputs& inputs, const BakeOptions& options, BakedCoef
   tally.finish(baked);
 }
 
+// The shader basis at the error map's cosines mu_j = j / (kErrorMapCosines - 1), evaluated once
+// per bake rather than once per texel and channel.
+using ErrorMapBasis = std::array<runtime::ChannelCoefficients, kErrorMapCosines>;
+ErrorMapBasis error_map_basis(runtime::BasisKind kind) {
+  const runtime::BasisPolynomial& polynomial = runtime::shipped_basis_polynomial(kind);
+  ErrorMapBasis basis{};
+  for (std::size_t j = 0; j < kErrorMapCosines; ++j)
+    basis[j] = runtime::evaluate_basis_polynomial(
+        polynomial, static_cast<double>(j) / static_cast<double>(kErrorMapCosines - 1));
+  return basis;
+}
+
 // The largest |F - exact| of one channel's coefficients over kErrorMapCosines cosines, against
 // the curve of the metal the maps describe: the texel's n + ik for n and k maps (so the error of
 // clamping an IOR outside the artistic range to the nearest edge tint shows), Gulbrandsen's
 // conductor of (r, g) otherwise.
-double channel_error(const runtime::BasisPolynomial& basis, const runtime::ChannelCoefficients& c,
+double channel_error(const ErrorMapBasis& basis, const runtime::ChannelCoefficients& c,
                      const ComplexIor& ior) {
   double largest = 0.0;
   for (std::size_t j = 0; j < kErrorMapCosines; ++j) {
     const double mu = static_cast<double>(j) / static_cast<double>(kErrorMapCosines - 1);
-    const auto b = runtime::evaluate_basis_polynomial(basis, mu);
+    const auto& b = basis[j];
     const double f = c[0] * b[0] + c[1] * b[1] + c[2] * b[2] + c[3] * b[3];
-    largest = std::max(largest, std::abs(f - fresnel_exact(mu, ior)));
+    largest = std::max(largest, std::abs(f - fresnel_conductor(mu, ior)));
   }
   return largest;
 }
@@ -144,7 +157,7 @@ double channel_error(const runtime::BasisPolynomial& basis, const runtime::Chann
 void solve_with_table(const BakeInputs& inputs, const BakeOptions& options,
                       BakedCoefficients& baked) {
   const runtime::CoefficientTableView table = runtime::shipped_coefficient_table(options.basis);
-  const runtime::BasisPolynomial& basis = runtime::shipped_basis_polynomial(options.basis);
+  const ErrorMapBasis basis = error_map_basis(options.basis);
   const std::size_t texels = inputs.width * inputs.height;
   if (options.error_map) baked.error.assign(texels, 0.0f);
   CoefficientLevel& level = baked.levels.front();
