@@ -304,9 +304,7 @@ int main(int argc, char** argv) {
                                   matc::render::difference(usual, reference.panel)},
                                  size, matc::render::display_difference);
     }
-    for (const std::string& message : context.validation_messages())
-      fmt::print(stderr, "validation layer: {}\n", message);
-    if (!context.validation_messages().empty()) return 1;
+    if (!matc::render::validation_clean(context)) return 1;
     if (settings.check && !better) {
       fmt::print(stderr,
                  "matc_baked_render: ours is not closer to the reference than the usual "

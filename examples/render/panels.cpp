@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include <fmt/core.h>
 #include <stb_image_write.h>
 
 namespace matc::render {
@@ -147,6 +148,12 @@ void write_panels(const std::filesystem::path& path,
     }
   }
   write_png(path, static_cast<std::uint32_t>(width), size, rgb);
+}
+
+bool validation_clean(const vulkan::Context& context) {
+  for (const std::string& message : context.validation_messages())
+    fmt::print(stderr, "validation layer: {}\n", message);
+  return context.validation_messages().empty();
 }
 
 }  // namespace matc::render

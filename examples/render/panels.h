@@ -80,6 +80,10 @@ std::vector<std::array<double, 3>> difference(const Panel& panel, const Panel& r
 std::uint8_t display(double linear);
 std::uint8_t display_difference(double difference);
 
+// Prints the Khronos validation layer's messages (if it ran) on standard error; true when there
+// were none. The three renders fail on any.
+bool validation_clean(const vulkan::Context& context);
+
 // Panels side by side, each pixel through `to_display`, written as an RGB PNG (atomically).
 void write_panels(const std::filesystem::path& path,
                   const std::vector<std::vector<std::array<double, 3>>>& panels, std::uint32_t size,

@@ -168,9 +168,7 @@ int main(int argc, char** argv) {
       all_better = all_better &&
                    error_against(ours, reference).mean < error_against(schlick, reference).mean;
     }
-    for (const std::string& message : renderer.context().validation_messages())
-      fmt::print(stderr, "validation layer: {}\n", message);
-    if (!renderer.context().validation_messages().empty()) return 1;
+    if (!validation_clean(renderer.context())) return 1;
     if (settings.check && !all_better) {
       fmt::print(stderr, "matc_render: ours is not closer to the reference than Schlick's\n");
       return 1;

@@ -180,9 +180,7 @@ int main(int argc, char** argv) {
       }
       all_better = all_better && means[1] < means[0];
     }
-    for (const std::string& message : context.validation_messages())
-      fmt::print(stderr, "validation layer: {}\n", message);
-    if (!context.validation_messages().empty()) return 1;
+    if (!validation_clean(context)) return 1;
     if (settings.check && !all_better) {
       fmt::print(stderr,
                  "matc_textured_render: our Fresnel is not closer to the exact one than "
