@@ -194,8 +194,6 @@ int run_bake(const BakeCommandOptions& options) {
   BakeFileOptions file_options;
   file_options.format = *lut_format_from_name(options.format);
   file_options.precision = *lut_precision_from_name(options.precision);
-  file_options.f0 = options.f0;
-  file_options.error_map = options.error_map;
 
   std::size_t baked_count = 0, failed = 0, not_attempted = 0, written = 0, unchanged = 0;
   std::vector<fs::path> targets, dependencies;

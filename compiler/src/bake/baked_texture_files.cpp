@@ -83,7 +83,7 @@ std::vector<OutputFile> baked_texture_files(const BakeAsset& asset, const BakeIn
   };
   add_texture("c2", &CoefficientLevel::c2, "c_2 of the red, green and blue curves; alpha 1");
   add_texture("c3", &CoefficientLevel::c3, "c_3 of the red, green and blue curves; alpha 1");
-  if (options.f0) {
+  if (!baked.levels.front().f0.empty()) {
     add_texture("f0", &CoefficientLevel::f0,
                 "c_0 = F0 of red, green and blue (linear; mips are box averages); alpha 1");
   }
@@ -114,7 +114,7 @@ std::vector<OutputFile> baked_texture_files(const BakeAsset& asset, const BakeIn
       "per colour channel: c0 = F0 (the F0 texture, or a base colour whose mips are box "
       "averages of linear F0), c1 = 1 - c0, c2 = C2, c3 = C3; sample every texture with the "
       "same trilinear sampler; matc_coefficients_from_baked(f0, c2, c3) in the shader library";
-  if (options.error_map && !baked.error.empty()) {
+  if (!baked.error.empty()) {
     OutputFile file{fmt::format("{}_error.png", asset.name), error_map_png(baked)};
     manifest["error_map"] = {
         {"file", file.name},

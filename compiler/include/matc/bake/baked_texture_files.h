@@ -1,7 +1,7 @@
 // The files `matc bake` writes for one asset (docs/baking.md): NAME_c2 and NAME_c3 (RGBA float
-// textures with full mip chains, KTX2 or DDS), optionally NAME_f0 (linear F0 with the same mips)
-// and NAME_error.png (level 0's error, for artists), and NAME_bake.json (what was baked, from
-// which inputs, with content hashes).
+// textures with full mip chains, KTX2 or DDS), NAME_f0 (linear F0 with the same mips) and
+// NAME_error.png (level 0's error, for artists) when the bake computed them (BakeOptions::f0,
+// ::error_map), and NAME_bake.json (what was baked, from which inputs, with content hashes).
 #pragma once
 
 #include <string>
@@ -18,8 +18,6 @@ namespace matc {
 struct BakeFileOptions {
   LutFormat format = LutFormat::ktx2;  // ktx2 or dds
   LutPrecision precision = LutPrecision::f16;
-  bool f0 = false;         // write NAME_f0.<ext>
-  bool error_map = false;  // write NAME_error.png (needs BakedCoefficients::error)
 };
 
 // The error map's scale: a texel of 255 has an error of this or more (linear in between).
