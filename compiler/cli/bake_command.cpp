@@ -91,7 +91,7 @@ std::optional<Asset> command_line_asset(const BakeCommandOptions& options) {
     const MapInput& named = asset.first.is_file() ? asset.first : asset.second;
     asset.name = named.is_file() ? fs::path(named.file).stem().string() : std::string();
   }
-  const std::string rule = "a name matching [A-Za-z][A-Za-z0-9_]*, at most 64 characters";
+  const std::string rule(kMaterialNameRule);
   if (asset.name.empty()) {
     result.diagnostics.error(command_line, "--name", "is missing (both maps are constants)", rule);
   } else if (auto problem = material_name_problem(asset.name)) {

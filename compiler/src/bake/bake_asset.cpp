@@ -19,8 +19,6 @@ constexpr std::array<std::string_view, 4> kTopLevelFields = {"$schema", "name", 
 constexpr std::array<std::string_view, 2> kArtisticFields = {"reflectivity", "edge_tint"};
 constexpr std::array<std::string_view, 2> kIorFields = {"n", "k"};
 constexpr std::array<std::string_view, 2> kMapFields = {"file", "encoding"};
-constexpr std::string_view kNameRule =
-    "a name matching [A-Za-z][A-Za-z0-9_]*, at most 64 characters, without '__'";
 
 Range quantity_range(MapQuantity quantity) {
   switch (quantity) {
@@ -52,7 +50,10 @@ class BakeAssetReader : LocatedJsonReader {
     warn_unknown_fields(root, "", kTopLevelFields);
     BakeAsset asset;
     asset.source_path = locator_.path();
-    read_name(root, asset);
+    if (auto name = read_name(root)) {
+      asset.name = std::move(*name);
+      asset.name_location = at_value("/name");
+    }
     if (root.contains("$schema") && !root["$schema"].is_string())
       error("/$schema", fmt::format("is {}", describe_type(root["$schema"])), "a string");
     const bool artistic = root.contains("artistic"), ior = root.contains("ior");
@@ -73,24 +74,6 @@ class BakeAssetReader : LocatedJsonReader {
   }
 
  private:
-  void read_name(const json& root, BakeAsset& asset) {
-    if (!root.contains("name")) {
-      missing("", "name", std::string(kNameRule));
-      return;
-    }
-    const json& name = root["name"];
-    if (!name.is_string()) {
-      error("/name", fmt::format("is {}", describe_type(name)), std::string(kNameRule));
-      return;
-    }
-    if (auto problem = material_name_problem(name.get<std::string>())) {
-      error("/name", *problem, std::string(kNameRule));
-      return;
-    }
-    asset.name = name.get<std::string>();
-    asset.name_location = at_value("/name");
-  }
-
   void read_pair(const json& root, std::string_view key, std::span<const std::string_view> fields,
                  MapQuantity first_quantity, MapQuantity second_quantity, BakeAsset& asset) {
     const json* object = object_field(root, key, fields);

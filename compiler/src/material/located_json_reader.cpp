@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "matc/material/parse.h"  // material_name_problem
 #include "suggestion.h"
 
 namespace matc {
@@ -46,6 +47,24 @@ std::optional<LocatedJson> parse_located_json_reporting(std::string_view text,
     return std::nullopt;
   }
   return std::move(std::get<LocatedJson>(parsed));
+}
+
+std::optional<std::string> LocatedJsonReader::read_name(const json& root) {
+  const std::string rule(kMaterialNameRule);
+  if (!root.contains("name")) {
+    missing("", "name", rule);
+    return std::nullopt;
+  }
+  const json& name = root["name"];
+  if (!name.is_string()) {
+    error("/name", fmt::format("is {}", describe_type(name)), rule);
+    return std::nullopt;
+  }
+  if (auto problem = material_name_problem(name.get<std::string>())) {
+    error("/name", *problem, rule);
+    return std::nullopt;
+  }
+  return name.get<std::string>();
 }
 
 SourceLocation LocatedJsonReader::at_value(const std::string& pointer) const {

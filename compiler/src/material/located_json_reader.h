@@ -64,6 +64,8 @@ class LocatedJsonReader {
   std::optional<runtime::Rgb> read_rgb_field(const nlohmann::json& object,
                                              const std::string& pointer, std::string_view key,
                                              const Range& range);
+  // The root's "name": present, a string, and a valid material name (kMaterialNameRule).
+  std::optional<std::string> read_name(const nlohmann::json& root);
   // The object at `key` of the root, or reports that it is not one.
   const nlohmann::json* object_field(const nlohmann::json& root, std::string_view key,
                                      std::span<const std::string_view> fields);

@@ -25,8 +25,6 @@ constexpr std::array<std::string_view, 7> kTopLevelFields = {
 constexpr std::array<std::string_view, 2> kArtisticFields = {"reflectivity", "edge_tint"};
 constexpr std::array<std::string_view, 2> kIorFields = {"n", "k"};
 constexpr std::array<std::string_view, 2> kSpectralFields = {"preset", "file"};
-constexpr std::string_view kNameRule =
-    "a name matching [A-Za-z][A-Za-z0-9_]*, at most 64 characters, without '__'";
 
 constexpr Range kReflectivityRange{0.0, 1.0, false};
 constexpr Range kUnitRange{0.0, 1.0};
@@ -72,23 +70,6 @@ class MaterialReader : LocatedJsonReader {
   }
 
  private:
-  std::optional<std::string> read_name(const json& root) {
-    if (!root.contains("name")) {
-      missing("", "name", std::string(kNameRule));
-      return std::nullopt;
-    }
-    const json& name = root["name"];
-    if (!name.is_string()) {
-      error("/name", fmt::format("is {}", describe_type(name)), std::string(kNameRule));
-      return std::nullopt;
-    }
-    if (auto problem = material_name_problem(name.get<std::string>())) {
-      error("/name", *problem, std::string(kNameRule));
-      return std::nullopt;
-    }
-    return name.get<std::string>();
-  }
-
   std::optional<MaterialModel> read_model(const json& root) {
     std::vector<std::string_view> given;
     for (const std::string_view key : kModelKeys) {

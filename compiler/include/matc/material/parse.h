@@ -44,6 +44,11 @@ ParseResult parse_material(std::string_view text, const std::string& path,
 // Reads and parses a material file.
 ParseResult read_material_file(const std::string& path, const FileLoader& loader = load_file);
 
+// What material_name_problem accepts, as diagnostics word it (bake assets follow the same rule:
+// names become file stems and generated identifiers).
+inline constexpr std::string_view kMaterialNameRule =
+    "a name matching [A-Za-z][A-Za-z0-9_]*, at most 64 characters, without '__'";
+
 // Why `name` is not a valid material name, or nullopt if it is.
 std::optional<std::string> material_name_problem(std::string_view name);
 
