@@ -18,6 +18,7 @@
 #include "matc/emit/fullscreen_shaders.h"
 #include "matc/lut/comparison_lobes.h"
 #include "matc/material/parse.h"
+#include "matc/runtime/ltc.h"
 #include "matc/vulkan/fullscreen_pass.h"
 #include "matc/vulkan/sampler.h"
 
@@ -66,6 +67,9 @@ int main(int argc, char** argv) {
   const auto table_size = static_cast<std::uint32_t>(coefficients.size());
   const matc::vulkan::Image coefficient_table(context, table_size, table_size,
                                               matc::rgba_texels(coefficients));
+  const matc::runtime::LtcTableView ltc = matc::runtime::shipped_ltc_table();
+  const matc::vulkan::Image ltc_table(context, static_cast<std::uint32_t>(ltc.size),
+                                      static_cast<std::uint32_t>(ltc.size), ltc.texels);
   const matc::vulkan::LutSampler sampler(context);
   const matc::SpirvWords vertex = matc::compile_fullscreen_stage(
       matc::fullscreen_vertex_source(), matc::ShaderStage::vertex, "fullscreen.vert");
@@ -74,9 +78,11 @@ int main(int argc, char** argv) {
     const char* label;
     matc::FresnelQuantity quantity;
   };
-  const std::array<Variant, 2> variants = {
+  const std::array<Variant, 3> variants = {
       Variant{"Fbar, image-based light (one RGBA32F fetch)", matc::FresnelQuantity::preintegrated},
-      Variant{"F, one direct light (no fetch)", matc::FresnelQuantity::direct}};
+      Variant{"F, one direct light (no fetch)", matc::FresnelQuantity::direct},
+      Variant{"one quad light, LTC (two RGBA32F fetches, the polygon integral)",
+              matc::FresnelQuantity::quad_light}};
 
   fmt::print(
       "Measured on {}, {} CPU thread(s) on the host ({} frames after {} warm-up frames per "
@@ -102,6 +108,8 @@ int main(int argc, char** argv) {
           matc::vulkan::Binding::separate_sampler(1, sampler)};
       if (kModels[which] == matc::FresnelModel::table)
         bindings.push_back(matc::vulkan::Binding::sampled_image(2, coefficient_table));
+      if (variant.quantity == matc::FresnelQuantity::quad_light)
+        bindings.push_back(matc::vulkan::Binding::sampled_image(3, ltc_table));
       passes[which] = std::make_unique<matc::vulkan::FullscreenPass>(context, vertex, fragment,
                                                                      bindings, kWidth, kHeight);
     }

@@ -22,11 +22,16 @@ trap 'rm -rf "$corpus" "$table_corpus"' EXIT
 build-fuzz/tests/fuzz/matc_coefficient_table_fuzzer -max_total_time="$((fuzz_seconds / 4 + 1))" \
   -max_len=256 -print_final_stats=1 "$table_corpus" tests/fuzz/corpus_coefficient_table 2>&1 |
   tail -n 8
+# matc eval's --quad-light parser and the area-light integrals on what it accepts: 10 s.
+light_corpus=$(mktemp -d)
+trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus"' EXIT
+build-fuzz/tests/fuzz/matc_polygon_light_fuzzer -max_total_time=10 -max_len=256 \
+  -print_final_stats=1 "$light_corpus" tests/fuzz/corpus_polygon_light 2>&1 | tail -n 8
 # matc bake's image readers and asset parser: seeds written by matc_catalogue_images (no image is
 # stored in the repository), each once per mode (first byte: sRGB, linear, asset text); 15 s.
 image_corpus=$(mktemp -d)
 image_seeds=$(mktemp -d)
-trap 'rm -rf "$corpus" "$table_corpus" "$image_corpus" "$image_seeds"' EXIT
+trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$image_corpus" "$image_seeds"' EXIT
 build-fuzz/tests/matc_catalogue_images "$image_seeds"
 for seed in "$image_seeds"/*; do
   for mode in 0 1; do
@@ -42,7 +47,7 @@ build-fuzz/tests/fuzz/matc_image_map_fuzzer -max_total_time=15 -max_len=4096 -rs
 # checked by AddressSanitizer and UBSan but without leak detection; every other test with it.
 export LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1"
-vulkan_tests="Vulkan|DeviceValidation|validate_on_device|Validat|comparison_render|textured_render|baked_render|fullscreen_cost"
+vulkan_tests="Vulkan|DeviceValidation|validate_on_device|Validat|comparison_render|textured_render|baked_render|area_light_render|fullscreen_cost"
 # The package test installs instrumented static libraries, which a plain consumer cannot link.
 ctest --test-dir build-fuzz --output-on-failure --parallel "$(nproc)" \
   -E "cmake_package_engine_example|$vulkan_tests"

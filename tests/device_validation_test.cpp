@@ -116,3 +116,45 @@ TEST(DeviceValidation, CoefficientTableZeroToleranceFails) {
   const matc::DeviceValidator validator(build, {false, ""}, {0.0, 0.0, 0.0});
   EXPECT_FALSE(validator.validate_coefficient_table().passed());
 }
+
+// The area-light functions (LTC quad and disk lights) from both front ends, with the validation
+// layer on, against the CPU runtime.
+TEST(DeviceValidation, AreaLightsMatchTheCpuRuntime) {
+  const matc::Build build(small_build());
+  const matc::DeviceValidator validator(build, {true, ""});
+  const matc::AreaLightValidation result = validator.validate_area_lights();
+  ASSERT_EQ(result.paths.size(), 2u);
+  for (const matc::AreaLightPathValidation& path : result.paths) {
+    EXPECT_LE(path.radiance.max_abs, 1e-4);
+    EXPECT_LE(path.integral.max_abs, 1e-4);
+  }
+  EXPECT_TRUE(result.passed());
+  EXPECT_TRUE(validator.layer_messages().empty());
+}
+
+TEST(DeviceValidation, AreaLightQueriesCoverQuadsDisksAndTheHorizon) {
+  const auto queries = matc::area_light_validation_queries();
+  ASSERT_EQ(queries.size(), 2048u);
+  std::size_t disks = 0, crossing = 0;
+  for (const matc::AreaLightQuery& q : queries) {
+    disks += q.disk ? 1 : 0;
+    if (q.disk) continue;
+    // A corner below the shading point's horizon: N . p < 0.
+    bool below = false, above = false;
+    for (const auto& p : q.points) {
+      const float height = p[0] * q.normal[0] + p[1] * q.normal[1] + p[2] * q.normal[2];
+      below |= height < 0.0f;
+      above |= height > 0.0f;
+    }
+    crossing += below && above ? 1 : 0;
+  }
+  EXPECT_EQ(disks, 512u);
+  EXPECT_GT(crossing, 100u);
+}
+
+// A zero tolerance fails the area-light path: the check can fail.
+TEST(DeviceValidation, AreaLightZeroToleranceFails) {
+  const matc::Build build(small_build());
+  const matc::DeviceValidator validator(build, {false, ""}, {0.0, 0.0, 0.0});
+  EXPECT_FALSE(validator.validate_area_lights().passed());
+}

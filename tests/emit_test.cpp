@@ -284,7 +284,7 @@ TEST(Build, OutputsAreIdenticalAcrossRuns) {
   }
   const std::vector<OutputFile> shared = small_build().shared_outputs();
   const std::vector<OutputFile> shared_again = again.shared_outputs();
-  ASSERT_EQ(shared.size(), 7u);
+  ASSERT_EQ(shared.size(), 9u);
   for (std::size_t i = 0; i < shared.size(); ++i)
     EXPECT_EQ(shared[i].bytes, shared_again[i].bytes) << shared[i].name;
 }

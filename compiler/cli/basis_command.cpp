@@ -11,6 +11,7 @@
 #include "matc/basis/basis_fit.h"
 #include "matc/basis/basis_polynomial_fit.h"
 #include "matc/fit/coefficient_table.h"
+#include "matc/ltc/ltc_fit.h"
 #include "matc/runtime/basis.h"
 
 namespace matc::cli {
@@ -90,6 +91,33 @@ int run_basis_coefficient_table(const BasisFitOptions& options) {
   fmt::print(stderr, "matc: fitted the {} x {} coefficient table of the {} basis\n", table.size(),
              table.size(), runtime::basis_name(table.basis));
   return write_source(options.output, coefficient_table_source(table));
+}
+
+int run_basis_ltc_table(const LtcTableOptions& options) {
+  const LtcTable table =
+      fit_ltc_table({kDefaultLtcSize, options.jobs,
+                     options.objective == "l3" ? LtcObjective::l3 : LtcObjective::l1});
+  fmt::print(stderr, "matc: fitted the {} x {} LTC table\n", table.size, table.size);
+  if (!options.quality.empty()) {
+    const std::vector<double> polygon =
+        ltc_polygon_errors(table.view(), options.quality_samples, options.jobs);
+    std::string csv = "x,y,ndotv,roughness,l1_distance,cubed_distance,polygon_error\n";
+    for (std::size_t y = 0; y < table.size; ++y) {
+      for (std::size_t x = 0; x < table.size; ++x) {
+        const std::size_t i = y * table.size + x;
+        csv += fmt::format("{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", x, y,
+                           ltc_texel_ndotv(x, table.size), ltc_texel_roughness(y, table.size),
+                           table.l1_distance[i], table.cubed_distance[i], polygon[i]);
+      }
+    }
+    try {
+      write_file_atomically(options.quality, csv);
+    } catch (const std::exception& error) {
+      fmt::print(stderr, "{}: error: {}\n", options.quality, error.what());
+      return kExitInputError;
+    }
+  }
+  return write_source(options.output, ltc_table_source(table));
 }
 
 }  // namespace matc::cli

@@ -58,6 +58,8 @@ struct EvalOptions {
   std::vector<double> mu;
   std::vector<double> ndotv;
   std::vector<double> roughness;
+  std::string quad_light;  // "x,y,z;x,y,z;x,y,z;x,y,z" in the shading frame: area-light radiance
+  std::size_t light_samples = 0;  // reference samples for --quad-light
   LutCliOptions lut;
 };
 int run_eval(const EvalOptions& options);
@@ -76,6 +78,17 @@ int run_basis_fit(const BasisFitOptions& options);
 
 // `matc basis coefficient-table`: refits the shipped coefficient table and writes its C++ source.
 int run_basis_coefficient_table(const BasisFitOptions& options);
+
+// `matc basis ltc-table`: refits the shipped LTC table, writes its C++ source and, on request,
+// each texel's fit quality as CSV.
+struct LtcTableOptions {
+  std::string output;
+  std::string quality;
+  std::size_t quality_samples = 1u << 14;
+  unsigned jobs = 0;
+  std::string objective = "l1";  // "l1" or "l3" (Heitz et al.'s)
+};
+int run_basis_ltc_table(const LtcTableOptions& options);
 
 struct ReportOptions {
   std::vector<std::string> files;

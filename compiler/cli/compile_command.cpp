@@ -134,6 +134,13 @@ int run_compile(const CompileOptions& options) {
                  "Vulkan device (lines above); nothing written\n");
       return kExitValidationFailed;
     }
+    if (build.options().emit.contains(OutputKind::ltc) &&
+        !validate_area_lights_and_report(*validator)) {
+      fmt::print(stderr,
+                 "matc: error: the area-light functions differ from the CPU runtime on the Vulkan "
+                 "device (lines above); nothing written\n");
+      return kExitValidationFailed;
+    }
   }
   const runtime::BasisView basis = build.basis();
   const fs::path output_directory(options.output_directory);

@@ -76,6 +76,20 @@ bool validate_coefficient_table_and_report(const DeviceValidator& validator) {
   return report_layer_messages(validator, messages_before, "coefficient table") && result.passed();
 }
 
+bool validate_area_lights_and_report(const DeviceValidator& validator) {
+  const std::size_t messages_before = validator.layer_messages().size();
+  const AreaLightValidation result = validator.validate_area_lights();
+  const double tolerance = validator.tolerance().preintegrated;
+  for (const AreaLightPathValidation& path : result.paths) {
+    fmt::print(
+        "{:<20} {}  L max |diff| {:.2g}, I_ltc max |diff| {:.2g} (<= {:.0e}) over {} lights  {}\n",
+        "area lights (LTC)", path.language == ShaderLanguage::glsl ? "GLSL" : "HLSL",
+        path.radiance.max_abs, path.integral.max_abs, tolerance,
+        area_light_validation_queries().size(), path.passed ? "ok" : "FAILED");
+  }
+  return report_layer_messages(validator, messages_before, "area lights") && result.passed();
+}
+
 bool validate_and_report(const DeviceValidator& validator, const CompiledMaterial& compiled) {
   const std::size_t messages_before = validator.layer_messages().size();
   const MaterialValidation result = validator.validate(compiled);

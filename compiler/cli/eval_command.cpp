@@ -1,3 +1,6 @@
+#include <optional>
+#include <vector>
+
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
@@ -7,11 +10,15 @@
 #include "matc/fit/coefficient_table.h"
 #include "matc/fit/coefficients.h"
 #include "matc/json_format.h"
+#include "matc/ltc/area_light_reference.h"
+#include "matc/ltc/polygon_light.h"
 #include "matc/lut/coefficient_table_files.h"
+#include "matc/lut/comparison_lobes.h"
 #include "matc/lut/lut_files.h"
 #include "matc/lut/split_sum_reference.h"
 #include "matc/material/parse.h"
 #include "matc/runtime/coefficient_table.h"
+#include "matc/runtime/ltc.h"
 #include "matc/runtime/lut.h"
 #include "print_diagnostics.h"
 
@@ -68,6 +75,66 @@ void add_preintegrated_fresnel(const EvalOptions& options, const ReflectanceCurv
   out["Fbar_reference"] = std::move(reference);
 }
 
+// A quad light's radiance at each (NdotV, roughness): LTC times Fbar as the shaders compute it
+// (ours, per set of coefficients), LTC times Schlick's split sum, LTC times the exact
+// preintegrated Fresnel (LTC's own error alone), and the exact integral.
+void add_quad_light(const EvalOptions& options, const std::vector<Vec3>& quad,
+                    const ReflectanceCurve& curve, const LabelledCoefficients& coefficients,
+                    const runtime::BasisView& basis, ordered_json& out) {
+  const Lut lut = stored_as(preintegrate_lut(basis, options.lut.bake), precision_of(options.lut));
+  const ComparisonLobes lobes(basis.samples());
+  const Lut schlick_lut = preintegrate_lut(lobes.view(), options.lut.bake);
+  const runtime::LtcTableView ltc = runtime::shipped_ltc_table();
+  const TabulatedCurve tabulated(curve);
+  const runtime::Rgb f0 = curve.at(1.0);
+  ordered_json vertices = ordered_json::array();
+  for (const Vec3& vertex : quad)
+    vertices.push_back(vertex);
+  out["quad_light"] = {{"vertices", std::move(vertices)},
+                       {"ltc_table", {{"size", ltc.size}}},
+                       {"reference_samples", options.light_samples}};
+  std::vector<ordered_json> ours(coefficients.size(), ordered_json::array());
+  ordered_json schlick = ordered_json::array(), exact_fresnel = ordered_json::array(),
+               reference = ordered_json::array(), standard_error = ordered_json::array();
+  for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
+    const double ndotv = options.ndotv[i], roughness = options.roughness[i];
+    const double integral =
+        runtime::ltc_polygon_integral(runtime::sample_ltc(ltc, ndotv, roughness), quad);
+    for (std::size_t k = 0; k < coefficients.size(); ++k) {
+      ours[k].push_back(runtime::polygon_light_ltc(coefficients[k].second, lut.view(), ltc, ndotv,
+                                                   roughness, quad));
+    }
+    const auto lobe_values = runtime::sample_lut(schlick_lut.view(), ndotv, roughness);
+    const runtime::Rgb fbar_exact = SplitSumEstimator(ndotv, roughness).integrate(tabulated);
+    runtime::Rgb with_schlick{}, with_exact{};
+    for (std::size_t c = 0; c < 3; ++c) {
+      with_schlick[c] = integral * (f0[c] * lobe_values[0] + (1.0 - f0[c]) * lobe_values[1]);
+      with_exact[c] = integral * fbar_exact[c];
+    }
+    schlick.push_back(with_schlick);
+    exact_fresnel.push_back(with_exact);
+    const AreaLightEstimate estimate = integrate_polygon_light(
+        GgxLobe(ndotv, roughness), quad, [&](double mu) { return tabulated.at(mu); },
+        options.light_samples);
+    reference.push_back(estimate.mean);
+    standard_error.push_back(estimate.standard_error);
+  }
+  for (std::size_t k = 0; k < coefficients.size(); ++k)
+    out["L_ltc" + coefficients[k].first] = std::move(ours[k]);
+  out["L_ltc_schlick"] = std::move(schlick);
+  out["L_ltc_exact_fresnel"] = std::move(exact_fresnel);
+  out["L_reference"] = std::move(reference);
+  out["L_reference_standard_error"] = std::move(standard_error);
+}
+
+// The quad of --quad-light, or the message for a bad one (printed here).
+std::optional<std::vector<Vec3>> quad_light_of(const EvalOptions& options) {
+  const PolygonLightParse parsed = parse_polygon_light(options.quad_light, 4);
+  if (parsed.error.empty()) return parsed.vertices;
+  fmt::print(stderr, "matc eval: error: --quad-light: {}\n", parsed.error);
+  return std::nullopt;
+}
+
 // The material a (--reflectivity, --edge-tint) pair stands for: Gulbrandsen's conductor per
 // channel.
 IorCurve artistic_curve(const std::array<double, 3>& r, const std::array<double, 3>& g) {
@@ -98,6 +165,8 @@ int run_eval_artistic(const EvalOptions& options) {
   }
   const std::array<double, 3>& reflectivity = *reflectivity_list.values;
   const std::array<double, 3>& edge_tint = *edge_tint_list.values;
+  std::optional<std::vector<Vec3>> quad;
+  if (!options.quad_light.empty() && !(quad = quad_light_of(options))) return kExitInputError;
 
   const runtime::BasisKind kind = basis_of(options.lut.basis);
   const runtime::BasisView basis = runtime::shipped_basis(kind);
@@ -117,6 +186,7 @@ int run_eval_artistic(const EvalOptions& options) {
                               {"precision", options.lut.coefficient_table_precision}};
   if (!options.mu.empty()) add_direct_fresnel(options, curve, coefficients, out);
   if (!options.ndotv.empty()) add_preintegrated_fresnel(options, curve, coefficients, basis, out);
+  if (quad) add_quad_light(options, *quad, curve, coefficients, basis, out);
   fmt::print("{}", format_json(out));
   return kExitSuccess;
 }
@@ -142,6 +212,8 @@ int run_eval(const EvalOptions& options) {
                "matc eval: error: give a material file, or --reflectivity with --edge-tint\n");
     return kExitUsageError;
   }
+  std::optional<std::vector<Vec3>> quad;
+  if (!options.quad_light.empty() && !(quad = quad_light_of(options))) return kExitInputError;
   const ParseResult parsed = read_material_file(options.file);
   print_diagnostics(parsed.diagnostics);
   if (!parsed.material) return kExitInputError;
@@ -155,6 +227,7 @@ int run_eval(const EvalOptions& options) {
   out["basis"] = runtime::basis_name(basis.kind);
   if (!options.mu.empty()) add_direct_fresnel(options, *curve, coefficients, out);
   if (!options.ndotv.empty()) add_preintegrated_fresnel(options, *curve, coefficients, basis, out);
+  if (quad) add_quad_light(options, *quad, *curve, coefficients, basis, out);
   fmt::print("{}", format_json(out));
   return kExitSuccess;
 }

@@ -10,6 +10,7 @@
 
 #include "commands.h"
 #include "matc/emit/build.h"
+#include "matc/ltc/area_light_reference.h"
 #include "matc/version.h"
 #include "print_diagnostics.h"
 
@@ -99,6 +100,18 @@ int main(int argc, char** argv) {
           ->check(CLI::Range(0.0, 1.0));
   ndotv_option->needs(roughness_option);
   roughness_option->needs(ndotv_option);
+  eval.light_samples = matc::kDefaultLightSamples;
+  eval_command
+      ->add_option("--quad-light", eval.quad_light,
+                   "A quad light of radiance 1, \"x,y,z;x,y,z;x,y,z;x,y,z\" in the shading frame "
+                   "(normal +z, view in the xz-plane towards +x): radiance by LTC with ours and "
+                   "with Schlick's Fresnel, and the exact integral (docs/ltc.md)")
+      ->needs(ndotv_option);
+  eval_command
+      ->add_option("--light-samples", eval.light_samples,
+                   "Monte-Carlo sample pairs of the --quad-light reference")
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t{16}, std::size_t{1} << 26));
   add_lut_options(*eval_command, eval.lut, "lut-");
   add_coefficient_table_option(*eval_command, eval.lut);
 
@@ -138,6 +151,30 @@ int main(int argc, char** argv) {
       "-o,--output", table_fit.output,
       "Where to write (runtime/src/<basis>_coefficient_table.cpp); default stdout");
   add_basis_option(*table_fit_command, table_fit.basis);
+  LtcTableOptions ltc_table;
+  CLI::App* ltc_table_command = basis_command->add_subcommand(
+      "ltc-table",
+      "Refit the LTC table of GGX (inverse matrices over NdotV and roughness, for area lights) "
+      "and write its C++ source");
+  ltc_table_command->add_option("-o,--output", ltc_table.output,
+                                "Where to write (runtime/src/ltc_table.cpp); default stdout");
+  ltc_table_command
+      ->add_option("--quality", ltc_table.quality,
+                   "Also write each texel's fit quality as CSV (distribution and polygon-light "
+                   "errors: docs/ltc.md)")
+      ->check(CLI::NonexistentPath | CLI::ExistingFile);
+  ltc_table_command
+      ->add_option("--quality-samples", ltc_table.quality_samples,
+                   "Reference samples per polygon for --quality")
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t{64}, std::size_t{1} << 24));
+  ltc_table_command->add_option("-j,--jobs", ltc_table.jobs, "Threads (default: one per core)");
+  ltc_table_command
+      ->add_option("--objective", ltc_table.objective,
+                   "What the fit minimises: l1, the densities' L1 distance (shipped), or l3, "
+                   "Heitz et al.'s cubed difference (for comparison)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"l1", "l3"}));
 
   LutCommandOptions lut;
   CLI::App* lut_command = app.add_subcommand(
@@ -237,6 +274,7 @@ int main(int argc, char** argv) {
     if (*report_command) return run_report(report);
     if (*fit_command) return run_basis_fit(basis_fit);
     if (*table_fit_command) return run_basis_coefficient_table(table_fit);
+    if (*ltc_table_command) return run_basis_ltc_table(ltc_table);
     if (*basis_command) return run_basis(basis);
     if (compile.files.empty()) {
       fmt::print(stderr,

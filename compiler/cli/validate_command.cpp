@@ -19,6 +19,7 @@ int run_validate(const ValidateOptions& options) {
   std::size_t invalid_inputs = 0;
   std::size_t failed = 0;
   const bool table_passed = validate_coefficient_table_and_report(*validator);
+  const bool area_lights_passed = validate_area_lights_and_report(*validator);
   for (const std::string& file : options.files) {
     const ParseResult parsed = read_material_file(file);
     print_diagnostics(parsed.diagnostics);
@@ -37,7 +38,8 @@ int run_validate(const ValidateOptions& options) {
              validated,
              invalid_inputs > 0 ? fmt::format(", {} files invalid", invalid_inputs) : "");
   if (!table_passed) fmt::print("matc validate: the coefficient-table path FAILED\n");
-  if (failed > 0 || !table_passed) return kExitValidationFailed;
+  if (!area_lights_passed) fmt::print("matc validate: the area-light path FAILED\n");
+  if (failed > 0 || !table_passed || !area_lights_passed) return kExitValidationFailed;
   return invalid_inputs > 0 ? kExitInputError : kExitSuccess;
 }
 

@@ -64,5 +64,6 @@ vec3 matc_energy_compensation(MatcFresnelCoefficients c, vec4 bbar) {
   return vec3(1.0) + f0 * ((1.0 - albedo) / albedo);
 }
 {{coefficient_table}}
+{{area_lights}}
 {{embedded_lut}}
 #endif  // MATC_FRESNEL_GLSL

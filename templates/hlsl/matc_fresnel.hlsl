@@ -64,5 +64,6 @@ float3 matc_energy_compensation(MatcFresnelCoefficients c, float4 bbar) {
   return 1.0 + f0 * ((1.0 - albedo) / albedo);
 }
 {{coefficient_table}}
+{{area_lights}}
 {{embedded_lut}}
 #endif  // MATC_FRESNEL_HLSL

@@ -10,9 +10,11 @@
 #include "matc/emit/shader_library.h"
 #include "matc/emit/validation_kernel.h"
 #include "matc/json_format.h"
+#include "matc/ltc/ltc_table_files.h"
 #include "matc/lut/coefficient_table_files.h"
 #include "matc/material/parse.h"
 #include "matc/runtime/basis_polynomial.h"
+#include "matc/runtime/ltc.h"
 #include "matc/spirv/linkage.h"
 #include "matc/spirv/spirv_tools.h"
 #include "matc/version.h"
@@ -24,7 +26,7 @@ constexpr std::string_view kLibraryStem = "matc_fresnel";
 constexpr std::string_view kLutStem = "matc_lut";
 constexpr std::string_view kManifestFile = "matc_manifest.json";
 
-constexpr std::array<std::pair<OutputKind, std::string_view>, 7> kOutputKinds = {{
+constexpr std::array<std::pair<OutputKind, std::string_view>, 8> kOutputKinds = {{
     {OutputKind::glsl, "glsl"},
     {OutputKind::hlsl, "hlsl"},
     {OutputKind::spirv, "spirv"},
@@ -32,6 +34,7 @@ constexpr std::array<std::pair<OutputKind, std::string_view>, 7> kOutputKinds = 
     {OutputKind::json, "json"},
     {OutputKind::lut, "lut"},
     {OutputKind::coefficient_table, "coefficient-table"},
+    {OutputKind::ltc, "ltc"},
 }};
 
 // A library module from GLSL: the source with a placeholder entry point, then exports.
@@ -88,7 +91,13 @@ std::vector<std::string> shared_library_exports(bool embedded_lut) {
                                     "matc_channel_coefficients",
                                     "matc_coefficients_from_table",
                                     "matc_artistic_from_ior",
-                                    "matc_coefficients_from_baked"};
+                                    "matc_coefficients_from_baked",
+                                    "matc_ltc_texcoord",
+                                    "matc_ltc_transform",
+                                    "matc_ltc_quad_integral",
+                                    "matc_ltc_disk_integral",
+                                    "matc_ltc_quad_light",
+                                    "matc_ltc_disk_light"};
   if (embedded_lut) names.emplace_back("matc_preintegrated_basis_embedded");
   return names;
 }
@@ -122,15 +131,19 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
       fmt::format("{}{}", coefficient_table_stem(), lut_file_extension(options_.lut_format));
   coefficient_table_file_bytes_ = encode_coefficient_table(
       stored_coefficient_table_, options_.lut_format, options_.coefficient_table_precision);
+  ltc_file_ = fmt::format("{}{}", ltc_table_stem(), lut_file_extension(options_.lut_format));
+  ltc_file_bytes_ = encode_ltc_table(runtime::shipped_ltc_table(), options_.lut_format);
   inputs_hash_ = ContentHash().add(options_key()).hex();
   ShaderLibraryOptions library_options{options_.lut.size, stored_coefficient_table_.size(),
                                        embedded_lut()};
+  library_options.ltc_size = runtime::shipped_ltc_table().size;
   const runtime::BasisPolynomial& polynomial = runtime::shipped_basis_polynomial(options_.basis);
   glsl_library_ =
       shader_library_source(ShaderLanguage::glsl, polynomial, library_options, inputs_hash_);
   hlsl_library_ =
       shader_library_source(ShaderLanguage::hlsl, polynomial, library_options, inputs_hash_);
   library_options.coefficient_table_functions = false;
+  library_options.area_light_functions = false;
   glsl_material_module_library_ =
       shader_library_source(ShaderLanguage::glsl, polynomial, library_options, inputs_hash_);
 }
@@ -191,6 +204,11 @@ std::vector<OutputFile> Build::shared_outputs() const {
          format_json(coefficient_table_manifest(stored_coefficient_table_, options_.lut_format,
                                                 options_.coefficient_table_precision))});
   }
+  if (emit.contains(OutputKind::ltc)) {
+    files.push_back({ltc_file_, ltc_file_bytes_});
+    files.push_back({ltc_file_ + ".json", format_json(ltc_table_manifest(
+                                              runtime::shipped_ltc_table(), options_.lut_format))});
+  }
   return files;
 }
 
@@ -222,6 +240,14 @@ SpirvWords Build::table_validation_module(ShaderLanguage language) const {
       fmt::format("matc_coefficient_table.validate{}", shader_file_extension(language));
   return vulkan_compute_module(
       language, table_validation_kernel_source(language, library_source(language)), source_name);
+}
+
+SpirvWords Build::area_light_validation_module(ShaderLanguage language) const {
+  const std::string source_name =
+      fmt::format("matc_area_lights.validate{}", shader_file_extension(language));
+  return vulkan_compute_module(
+      language, area_light_validation_kernel_source(language, library_source(language)),
+      source_name);
 }
 
 MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const {
@@ -300,6 +326,10 @@ nlohmann::ordered_json Build::manifest(const std::vector<OutputFile>& shared,
       {"size", stored_coefficient_table_.size()},
       {"precision", lut_precision_name(options_.coefficient_table_precision)},
       {"hash", hash_of_bytes(coefficient_table_file_bytes_)}};
+  manifest["ltc_table"] = {{"file", ltc_file_},
+                           {"size", runtime::shipped_ltc_table().size},
+                           {"precision", "f32"},
+                           {"hash", hash_of_bytes(ltc_file_bytes_)}};
   manifest["shared_files"] = files_json(shared);
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const nlohmann::ordered_json& entry : entries)

@@ -25,14 +25,18 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
   const bool ours = model != FresnelModel::schlick;
   const bool table = model == FresnelModel::table;
   const bool direct = quantity == FresnelQuantity::direct;
+  const bool quad_light = quantity == FresnelQuantity::quad_light;
   const char* model_name = table ? "ours from the coefficient table" : ours ? "ours" : "Schlick's";
   return fill_template(
       "glsl/cost_pass.frag",
       {{"version", kVersion},
-       {"variant", fmt::format("{} {}", model_name, direct ? "F" : "Fbar")},
+       {"variant", fmt::format("{} {}", model_name,
+                               direct       ? "F"
+                               : quad_light ? "quad light (LTC)"
+                                            : "Fbar")},
        {"defines", fmt::format("#define MATC_COST_OURS {}\n#define MATC_COST_TABLE {}\n#define "
-                               "MATC_COST_DIRECT {}",
-                               ours ? 1 : 0, table ? 1 : 0, direct ? 1 : 0)},
+                               "MATC_COST_DIRECT {}\n#define MATC_COST_QUAD_LIGHT {}",
+                               ours ? 1 : 0, table ? 1 : 0, direct ? 1 : 0, quad_light ? 1 : 0)},
        {"library", build.library_source(ShaderLanguage::glsl)},
        {"material", build.material_source(ShaderLanguage::glsl, compiled)},
        {"name", compiled.material.name},
@@ -41,10 +45,14 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
        {"height", std::to_string(height)}});
 }
 
-std::string comparison_render_source(const Build& build, const CompiledMaterial& compiled,
-                                     std::size_t curve_size, std::uint32_t width,
-                                     std::uint32_t height) {
-  return fill_template("glsl/comparison_render.frag",
+namespace {
+
+// A render of one material against its exact curve (comparison_render.frag and
+// area_light_render.frag take the same placeholders).
+std::string material_render_source(std::string_view template_name, const Build& build,
+                                   const CompiledMaterial& compiled, std::size_t curve_size,
+                                   std::uint32_t width, std::uint32_t height) {
+  return fill_template(template_name,
                        {{"version", kVersion},
                         {"render_sampling", fill_template("glsl/render_sampling.glsl", {})},
                         {"library", build.library_source(ShaderLanguage::glsl)},
@@ -54,6 +62,22 @@ std::string comparison_render_source(const Build& build, const CompiledMaterial&
                         {"curve_size", std::to_string(curve_size)},
                         {"width", std::to_string(width)},
                         {"height", std::to_string(height)}});
+}
+
+}  // namespace
+
+std::string comparison_render_source(const Build& build, const CompiledMaterial& compiled,
+                                     std::size_t curve_size, std::uint32_t width,
+                                     std::uint32_t height) {
+  return material_render_source("glsl/comparison_render.frag", build, compiled, curve_size, width,
+                                height);
+}
+
+std::string area_light_render_source(const Build& build, const CompiledMaterial& compiled,
+                                     std::size_t curve_size, std::uint32_t width,
+                                     std::uint32_t height) {
+  return material_render_source("glsl/area_light_render.frag", build, compiled, curve_size, width,
+                                height);
 }
 
 std::string textured_render_source(const Build& build, std::uint32_t width, std::uint32_t height) {

@@ -1,6 +1,8 @@
 #include "matc/emit/shader_library.h"
 
 #include <array>
+#include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -51,6 +53,18 @@ std::string horner_steps(ShaderLanguage language, const runtime::BasisPolynomial
   return out;
 }
 
+std::string area_light_source(ShaderLanguage language, std::size_t ltc_size) {
+  constexpr double kSides = static_cast<double>(runtime::kDiskLightSides);
+  const double step = 2.0 * std::numbers::pi / kSides;
+  return fill_template(
+      language == ShaderLanguage::glsl ? "glsl/area_lights.glsl" : "hlsl/area_lights.hlsl",
+      {{"ltc_size", std::to_string(ltc_size)},
+       {"disk_sides", std::to_string(runtime::kDiskLightSides)},
+       {"disk_angle_step", float_literal(step)},
+       {"disk_circumradius_scale",
+        float_literal(std::sqrt(2.0 * std::numbers::pi / (kSides * std::sin(step))))}});
+}
+
 }  // namespace
 
 std::string shader_library_source(ShaderLanguage language,
@@ -77,6 +91,8 @@ std::string shader_library_source(ShaderLanguage language,
                                                                  : "hlsl/baked_coefficients.hlsl",
                                 {})
             : ""},
+       {"area_lights",
+        options.area_light_functions ? area_light_source(language, options.ltc_size) : ""},
        {"embedded_lut",
         options.embedded_lut ? embedded_lut_source(language, *options.embedded_lut) : ""}});
 }

@@ -21,4 +21,10 @@ std::string table_validation_kernel_source(ShaderLanguage language, std::string_
       {{"version", kVersion}, {"library", std::string(library)}});
 }
 
+std::string area_light_validation_kernel_source(ShaderLanguage language, std::string_view library) {
+  return fill_template(language == ShaderLanguage::glsl ? "glsl/validate_area_lights.comp"
+                                                        : "hlsl/validate_area_lights.hlsl",
+                       {{"version", kVersion}, {"library", std::string(library)}});
+}
+
 }  // namespace matc

@@ -10,6 +10,7 @@
 #include "matc/fit/coefficient_table.h"
 #include "matc/lut/preintegrate.h"
 #include "matc/runtime/fresnel.h"
+#include "matc/runtime/ltc.h"
 #include "matc/validate/device_validation.h"
 #include "matc/vulkan/buffer.h"
 #include "matc/vulkan/context.h"
@@ -39,6 +40,7 @@ struct DeviceValidator::Device {
   vulkan::Context context;
   vulkan::Image lut;
   vulkan::Image coefficient_table;
+  vulkan::Image ltc;
   vulkan::LutSampler sampler;
   vulkan::Buffer queries;
   vulkan::Buffer results;
@@ -51,6 +53,9 @@ struct DeviceValidator::Device {
         coefficient_table(context, static_cast<std::uint32_t>(coefficients.size()),
                           static_cast<std::uint32_t>(coefficients.size()),
                           rgba_texels(coefficients)),
+        ltc(context, static_cast<std::uint32_t>(runtime::shipped_ltc_table().size),
+            static_cast<std::uint32_t>(runtime::shipped_ltc_table().size),
+            runtime::shipped_ltc_table().texels),
         sampler(context),
         queries(context, query_count * 4 * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
         results(context, query_count * kValidationResultsPerQuery * 4 * sizeof(float),

@@ -20,9 +20,9 @@
 
 namespace matc {
 
-enum class OutputKind { glsl, hlsl, spirv, header, json, lut, coefficient_table };
+enum class OutputKind { glsl, hlsl, spirv, header, json, lut, coefficient_table, ltc };
 
-// "glsl", "hlsl", "spirv", "header", "json", "lut", "coefficient-table": the names --emit
+// "glsl", "hlsl", "spirv", "header", "json", "lut", "coefficient-table", "ltc": the names --emit
 // accepts.
 std::vector<std::string> output_kind_names();
 std::optional<OutputKind> output_kind_from_name(std::string_view name);
@@ -36,7 +36,8 @@ struct BuildOptions {
                                OutputKind::header,
                                OutputKind::json,
                                OutputKind::lut,
-                               OutputKind::coefficient_table};
+                               OutputKind::coefficient_table,
+                               OutputKind::ltc};
   LutOptions lut;
   LutFormat lut_format = LutFormat::ktx2;
   LutPrecision lut_precision = LutPrecision::f32;
@@ -84,8 +85,8 @@ class Build {
   // parsed from memory works the same).
   std::string material_inputs_hash(const Material& material) const;
 
-  // The files matc_fresnel.{glsl,hlsl,spv}, matc_lut.<ext> and matc_coefficient_table.<ext> (each
-  // with its .json) the options select.
+  // The files matc_fresnel.{glsl,hlsl,spv}, matc_lut.<ext>, matc_coefficient_table.<ext> and
+  // matc_ltc.<ext> (each with its .json) the options select.
   std::vector<OutputFile> shared_outputs() const;
   // <name>.{glsl,hlsl,spv,h,json} as selected.
   MaterialOutputs material_outputs(const CompiledMaterial& compiled) const;
@@ -99,6 +100,8 @@ class Build {
 
   // The coefficient-table path's compute module (emit/validation_kernel.h), likewise.
   SpirvWords table_validation_module(ShaderLanguage language) const;
+  // The area-light functions' compute module, likewise.
+  SpirvWords area_light_validation_module(ShaderLanguage language) const;
 
   // matc_manifest.json: version, options, and every file written with its hash.
   nlohmann::ordered_json manifest(const std::vector<OutputFile>& shared,
@@ -125,6 +128,8 @@ class Build {
   CoefficientTable stored_coefficient_table_;
   std::string coefficient_table_file_;
   std::string coefficient_table_file_bytes_;
+  std::string ltc_file_;
+  std::string ltc_file_bytes_;
   std::string glsl_library_;
   std::string hlsl_library_;
   // The GLSL library without the textured-metal functions, which no material module calls:

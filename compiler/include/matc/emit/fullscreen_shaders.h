@@ -16,8 +16,9 @@ namespace matc {
 // Schlick's; ours with a material's compiled coefficients; ours with coefficients from the
 // coefficient table, per pixel (a textured metal).
 enum class FresnelModel { schlick, ours, table };
-// F per light (mu = V.H), or preintegrated Fbar from one table fetch.
-enum class FresnelQuantity { direct, preintegrated };
+// F per light (mu = V.H), preintegrated Fbar from one table fetch, or a quad area light (LTC:
+// that fetch, one LTC table fetch, the polygon integral, times Fbar).
+enum class FresnelQuantity { direct, preintegrated, quad_light };
 
 // One triangle covering the viewport, from gl_VertexIndex.
 std::string fullscreen_vertex_source();
@@ -25,7 +26,7 @@ std::string fullscreen_vertex_source();
 // The benchmark's fragment shader: per pixel, one quantity of `compiled` with one model. Binds
 // the table at (set 0) binding 0 and the sampler at binding 1; for Schlick's preintegrated
 // variant the table must be the ComparisonLobes bake; the table model also binds the coefficient
-// table (its .xy) at binding 2.
+// table (its .xy) at binding 2, and the quad-light quantity the LTC table at binding 3.
 std::string cost_pass_source(const Build& build, const CompiledMaterial& compiled,
                              FresnelModel model, FresnelQuantity quantity, std::uint32_t width,
                              std::uint32_t height);
@@ -33,6 +34,12 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
 // The comparison render's fragment shader (method and samples in push constants; see the
 // template for the bindings). curve_size: entries of the exact-curve buffer.
 std::string comparison_render_source(const Build& build, const CompiledMaterial& compiled,
+                                     std::size_t curve_size, std::uint32_t width,
+                                     std::uint32_t height);
+
+// The area-light render's fragment shader (templates/glsl/area_light_render.frag): a sphere on a
+// plane under a rectangular light; the comparison render's bindings plus the LTC table at 4.
+std::string area_light_render_source(const Build& build, const CompiledMaterial& compiled,
                                      std::size_t curve_size, std::uint32_t width,
                                      std::uint32_t height);
 

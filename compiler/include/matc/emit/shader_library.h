@@ -6,6 +6,7 @@
 
 #include "matc/emit/shader_literals.h"
 #include "matc/fit/coefficient_table.h"
+#include "matc/ltc/ltc_fit.h"
 #include "matc/lut/preintegrate.h"
 #include "matc/runtime/basis_polynomial.h"
 
@@ -19,6 +20,9 @@ struct ShaderLibraryOptions {
   const Lut* embedded_lut = nullptr;
   // The textured-metal functions (coefficient table, inverse Gulbrandsen mapping).
   bool coefficient_table_functions = true;
+  // The area-light functions (LTC quad and disk lights) and the LTC table's size (MATC_LTC_SIZE).
+  bool area_light_functions = true;
+  std::size_t ltc_size = kDefaultLtcSize;
 };
 
 std::string shader_library_source(ShaderLanguage language,

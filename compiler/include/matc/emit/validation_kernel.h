@@ -26,4 +26,11 @@ inline constexpr std::size_t kTableValidationQueryVectors = 4;
 inline constexpr std::size_t kTableValidationResultsPerQuery = 4;
 std::string table_validation_kernel_source(ShaderLanguage language, std::string_view library);
 
+// The area-light kernel (templates/*/validate_area_lights.*): bindings 0 queries (eight vec4 each:
+// r.rgb and NdotV, g.rgb and roughness, N and the kind (0 quad, 1 disk), V and a disk's radius,
+// a quad's corners or a disk's centre and normal), 1 results (radiance, I_ltc), 2 the
+// preintegrated table, 3 the sampler, 4 the coefficient table, 5 the LTC table.
+inline constexpr std::size_t kAreaLightQueryVectors = 8;
+std::string area_light_validation_kernel_source(ShaderLanguage language, std::string_view library);
+
 }  // namespace matc

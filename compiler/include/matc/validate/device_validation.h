@@ -93,6 +93,35 @@ struct TableValidation {
   bool passed() const;
 };
 
+// The area-light functions (docs/ltc.md): per query a quad or disk light in world space around a
+// shading point at the origin, a shading frame (N, V) turned by a random rotation, and
+// coefficients from the coefficient table. area_light_validation_queries() draws lights above,
+// across and partly below the horizon, at (NdotV, roughness) over [0, 1]^2.
+struct AreaLightQuery {
+  std::array<float, 3> reflectivity{};
+  std::array<float, 3> edge_tint{};
+  float ndotv = 0.0f;
+  float roughness = 0.0f;
+  std::array<float, 3> normal{};
+  std::array<float, 3> view{};
+  bool disk = false;
+  float radius = 0.0f;                           // disks
+  std::array<std::array<float, 3>, 4> points{};  // a quad's corners, or a disk's centre, normal
+};
+std::vector<AreaLightQuery> area_light_validation_queries();
+
+struct AreaLightPathValidation {
+  ShaderLanguage language = ShaderLanguage::glsl;
+  TableDiscrepancy radiance;  // L = I_ltc * Fbar per channel
+  TableDiscrepancy integral;  // I_ltc alone
+  bool passed = false;
+};
+
+struct AreaLightValidation {
+  std::vector<AreaLightPathValidation> paths;  // GLSL, then HLSL
+  bool passed() const;
+};
+
 class DeviceValidator {
  public:
   // Opens the device and uploads the build's stored table once. Throws vulkan::VulkanError
@@ -108,6 +137,9 @@ class DeviceValidator {
   // Runs both front ends' coefficient-table kernels against the CPU runtime (tolerance: the
   // preintegrated one, since every result goes through a sampler).
   TableValidation validate_coefficient_table() const;
+  // Runs both front ends' area-light kernels against the CPU runtime (tolerance: the
+  // preintegrated one: the LTC matrix and Fbar both come through the sampler).
+  AreaLightValidation validate_area_lights() const;
 
   std::string device_name() const;
   const ValidationTolerance& tolerance() const { return tolerance_; }
@@ -117,6 +149,7 @@ class DeviceValidator {
  private:
   PathValidation run(ShaderLanguage language, const CompiledMaterial& compiled) const;
   TablePathValidation run_table(ShaderLanguage language) const;
+  AreaLightPathValidation run_area_lights(ShaderLanguage language) const;
 
   struct Device;
   const Build& build_;

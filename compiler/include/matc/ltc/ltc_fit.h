@@ -1,0 +1,81 @@
+// Fitting the LTC table for GGX (matc/runtime/ltc.h): per (NdotV, roughness) texel, the matrix
+// whose transformed cosine best matches the GGX lobe normalised by its albedo, with Heitz et al.'s
+// parametrisation M = [X Y Z] [[m11, 0, m13], [0, m22, 0], [0, 0, 1]], minimised by Nelder-Mead
+// over densities integrated with samples from both (balance heuristic). Two departures from
+// their fit, both measured in docs/ltc.md: the frame's angle (Z = (sin, 0, cos)) is a fourth free
+// parameter rather than fixed at the lobe's average direction, and the default objective is the L1
+// distance of the densities (twice the largest error over any light) rather than their cubed
+// difference. Rows (roughness) are
+// independent and each sweeps from normal incidence to grazing, starting every texel from the
+// one before, so the table is the same whatever the thread count.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "matc/runtime/ltc.h"
+
+namespace matc {
+
+inline constexpr std::size_t kDefaultLtcSize = 64;
+inline constexpr std::size_t kLtcFitSamplesPerAxis = 32;  // 32 x 32 points from each density
+
+struct LtcShape {
+  double m11 = 1.0;
+  double m22 = 1.0;
+  double m13 = 0.0;
+  double angle = 0.0;  // of Z from the normal, towards +x
+};
+
+// What one texel's fit reached.
+struct LtcCellFit {
+  runtime::LtcInverse inverse;
+  LtcShape shape;
+  double cubed_distance = 0.0;  // integral of |D_ggx - D_ltc|^3 (Heitz et al.'s objective)
+  double l1_distance = 0.0;     // integral of |D_ggx - D_ltc| over the sphere, in [0, 2]
+};
+
+// What Nelder-Mead minimises: the integral of |D_ggx - D_ltc| (l1) or of its cube (Heitz et
+// al.'s, l3).
+enum class LtcObjective { l1, l3 };
+
+struct LtcFitOptions {
+  std::size_t size = kDefaultLtcSize;
+  unsigned threads = 0;  // 0: one per hardware thread
+  LtcObjective objective = LtcObjective::l1;
+};
+
+struct LtcTable {
+  std::size_t size = 0;
+  std::vector<float> texels;           // size * size * 4: (a, b, c, d) per texel, rows by roughness
+  std::vector<double> cubed_distance;  // per texel
+  std::vector<double> l1_distance;     // per texel
+
+  runtime::LtcTableView view() const { return {size, texels}; }
+};
+
+// The texel's cosine and roughness on the preintegrated table's axes.
+double ltc_texel_ndotv(std::size_t x, std::size_t size);
+double ltc_texel_roughness(std::size_t y, std::size_t size);
+
+// One texel, from a first guess (the previous texel of the row, or isotropic when `isotropic`).
+LtcCellFit fit_ltc_cell(double ndotv, double roughness, const LtcShape& first_guess, bool isotropic,
+                        LtcObjective objective = LtcObjective::l1);
+
+// Rows [first_row, first_row + row_count) of a table of `options.size` (the rest left zero):
+// the whole table by default. Throws std::invalid_argument for a size outside [2, 1024].
+LtcTable fit_ltc_table(const LtcFitOptions& options, std::size_t first_row = 0,
+                       std::size_t row_count = static_cast<std::size_t>(-1));
+
+// The polygon-light error of each texel of a table: for squares seen towards the mirror
+// direction, the normal and the horizon (one crossing it), the largest |E I_ltc(P) -
+// integral over P of f cos| relative to the albedo E, the integral estimated with `samples` pairs
+// (area_light_reference.h).
+std::vector<double> ltc_polygon_errors(const runtime::LtcTableView& table, std::size_t samples,
+                                       unsigned threads = 0);
+
+// The C++ source of runtime/src/ltc_table.cpp for this table.
+std::string ltc_table_source(const LtcTable& table);
+
+}  // namespace matc

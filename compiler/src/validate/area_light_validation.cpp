@@ -1,0 +1,211 @@
+// DeviceValidator::validate_area_lights: the LTC quad and disk lights, run from GLSL and HLSL.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "matc/emit/validation_kernel.h"
+#include "matc/ltc/polygon_light.h"
+#include "matc/runtime/coefficient_table.h"
+#include "matc/runtime/ltc.h"
+#include "matc/runtime/lut.h"
+#include "matc/validate/device_validation.h"
+#include "matc/vulkan/compute_kernel.h"
+#include "validator_device.h"
+
+namespace matc {
+namespace {
+
+constexpr std::size_t kAreaLightQueries = 2048;
+
+using runtime::Vec3;
+
+Vec3 as_vec3(const std::array<float, 3>& v) {
+  return {v[0], v[1], v[2]};
+}
+
+std::array<float, 3> as_float3(const Vec3& v) {
+  return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+}
+
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+double dot(const Vec3& a, const Vec3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+Vec3 normalize(const Vec3& v) {
+  const double length = std::sqrt(dot(v, v));
+  return {v[0] / length, v[1] / length, v[2] / length};
+}
+
+// The shading frame the shaders build from (N, V): T1 towards V, T2 = N x T1.
+struct ShadingFrame {
+  Vec3 t1, t2, n;
+  ShadingFrame(const Vec3& normal, const Vec3& view) : n(normalize(normal)) {
+    const double along = dot(n, view);
+    t1 = normalize({view[0] - n[0] * along, view[1] - n[1] * along, view[2] - n[2] * along});
+    t2 = cross(n, t1);
+  }
+  Vec3 local(const Vec3& w) const { return {dot(t1, w), dot(t2, w), dot(n, w)}; }
+};
+
+// A unit vector from two numbers in [0, 1).
+Vec3 direction(double u1, double u2) {
+  const double z = 2.0 * u1 - 1.0;
+  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+  const double phi = 2.0 * std::numbers::pi * u2;
+  return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+}  // namespace
+
+std::vector<AreaLightQuery> area_light_validation_queries() {
+  // Fixed-seed draws (mt19937_64's output is specified by the standard).
+  std::mt19937_64 generator(16);
+  const auto unit = [&] { return static_cast<double>(generator() >> 11) * 0x1p-53; };
+  std::vector<AreaLightQuery> queries;
+  queries.reserve(kAreaLightQueries);
+  while (queries.size() < kAreaLightQueries) {
+    AreaLightQuery q;
+    for (std::size_t c = 0; c < 3; ++c) {
+      q.reflectivity[c] = static_cast<float>(unit());
+      q.edge_tint[c] = static_cast<float>(unit());
+    }
+    q.ndotv = static_cast<float>(unit());
+    q.roughness = static_cast<float>(unit());
+    // The shading frame turned at random: N, and V at the query's angle to it.
+    const Vec3 n = direction(unit(), unit());
+    const Vec3 helper = normalize(cross(n, direction(unit(), unit())));
+    const double sine = std::sqrt(1.0 - static_cast<double>(q.ndotv) * q.ndotv);
+    Vec3 v{};
+    for (std::size_t k = 0; k < 3; ++k)
+      v[k] = static_cast<double>(q.ndotv) * n[k] + sine * helper[k];
+    q.normal = as_float3(n);
+    q.view = as_float3(v);
+    // The light: its centre at 0.5-3 units in a random direction, a third of them across or
+    // below the horizon, facing a random way.
+    const Vec3 toward = direction(0.2 + 0.8 * unit(), unit());  // local z in [-0.6, 1]
+    const double distance = 0.5 + 2.5 * unit();
+    const Vec3 local_centre{distance * toward[0], distance * toward[1], distance * toward[2]};
+    const Vec3 centre{local_centre[0] * helper[0] + local_centre[1] * cross(n, helper)[0] +
+                          local_centre[2] * n[0],
+                      local_centre[0] * helper[1] + local_centre[1] * cross(n, helper)[1] +
+                          local_centre[2] * n[1],
+                      local_centre[0] * helper[2] + local_centre[1] * cross(n, helper)[2] +
+                          local_centre[2] * n[2]};
+    const Vec3 facing = direction(unit(), unit());
+    q.disk = queries.size() % 4 == 3;
+    if (q.disk) {
+      q.radius = static_cast<float>(0.05 + 0.95 * unit());
+      q.points[0] = as_float3(centre);
+      q.points[1] = as_float3(facing);
+    } else {
+      // A parallelogram in the plane through the centre across `facing`.
+      const Vec3 u = normalize(cross(facing, direction(unit(), unit())));
+      const Vec3 w = cross(facing, u);
+      const double a = 0.05 + 1.5 * unit(), b = 0.05 + 1.5 * unit(), shear = unit() - 0.5;
+      const std::array<std::array<double, 2>, 4> corners = {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}};
+      for (std::size_t i = 0; i < 4; ++i) {
+        Vec3 p{};
+        for (std::size_t k = 0; k < 3; ++k)
+          p[k] = centre[k] + a * (corners[i][0] + shear * corners[i][1]) * u[k] +
+                 b * corners[i][1] * w[k];
+        q.points[i] = as_float3(p);
+      }
+    }
+    // Only lights the tools accept (above the horizon in part, not edge-on, convex).
+    if (!q.disk) {
+      const ShadingFrame frame(as_vec3(q.normal), as_vec3(q.view));
+      std::array<Vec3, 4> local{};
+      for (std::size_t i = 0; i < 4; ++i)
+        local[i] = frame.local(as_vec3(q.points[i]));
+      if (!check_polygon_light(local).empty()) continue;
+    }
+    queries.push_back(q);
+  }
+  return queries;
+}
+
+bool AreaLightValidation::passed() const {
+  return !paths.empty() && std::all_of(paths.begin(), paths.end(),
+                                       [](const AreaLightPathValidation& p) { return p.passed; });
+}
+
+AreaLightValidation DeviceValidator::validate_area_lights() const {
+  AreaLightValidation validation;
+  for (const ShaderLanguage language : {ShaderLanguage::glsl, ShaderLanguage::hlsl})
+    validation.paths.push_back(run_area_lights(language));
+  return validation;
+}
+
+AreaLightPathValidation DeviceValidator::run_area_lights(ShaderLanguage language) const {
+  const std::vector<AreaLightQuery> queries = area_light_validation_queries();
+  std::vector<float> packed;
+  packed.reserve(queries.size() * kAreaLightQueryVectors * 4);
+  for (const AreaLightQuery& q : queries) {
+    const auto& r = q.reflectivity;
+    const auto& g = q.edge_tint;
+    packed.insert(packed.end(), {r[0], r[1], r[2], q.ndotv, g[0], g[1], g[2], q.roughness});
+    packed.insert(packed.end(), {q.normal[0], q.normal[1], q.normal[2], q.disk ? 1.0f : 0.0f});
+    packed.insert(packed.end(), {q.view[0], q.view[1], q.view[2], q.radius});
+    for (const auto& p : q.points)
+      packed.insert(packed.end(), {p[0], p[1], p[2], 0.0f});
+  }
+  const vulkan::Context& context = device_->context;
+  vulkan::Buffer query_buffer(context, packed.size() * sizeof(float),
+                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  query_buffer.write<float>(packed);
+  vulkan::Buffer result_buffer(context, queries.size() * 4 * sizeof(float),
+                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  const std::array bindings = {
+      vulkan::Binding::storage_buffer(0, query_buffer),
+      vulkan::Binding::storage_buffer(1, result_buffer),
+      vulkan::Binding::sampled_image(2, device_->lut),
+      vulkan::Binding::separate_sampler(3, device_->sampler),
+      vulkan::Binding::sampled_image(4, device_->coefficient_table),
+      vulkan::Binding::sampled_image(5, device_->ltc),
+  };
+  const vulkan::ComputeKernel kernel(context, build_.area_light_validation_module(language),
+                                     bindings);
+  static_assert(kAreaLightQueries % kWorkgroupSize == 0, "whole workgroups");
+  kernel.dispatch(static_cast<std::uint32_t>(queries.size() / kWorkgroupSize));
+  const std::vector<float> results = result_buffer.read<float>(queries.size() * 4);
+
+  const runtime::CoefficientTableView table = build_.stored_coefficient_table().view();
+  const runtime::LutView lut = build_.stored_lut().view();
+  const runtime::LtcTableView ltc = runtime::shipped_ltc_table();
+  AreaLightPathValidation path;
+  path.language = language;
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const AreaLightQuery& q = queries[i];
+    const ShadingFrame frame(as_vec3(q.normal), as_vec3(q.view));
+    std::vector<Vec3> local;
+    if (q.disk) {
+      for (const Vec3& p :
+           runtime::disk_light_polygon(as_vec3(q.points[0]), as_vec3(q.points[1]), q.radius))
+        local.push_back(frame.local(p));
+    } else {
+      for (const auto& p : q.points)
+        local.push_back(frame.local(as_vec3(p)));
+    }
+    const runtime::Coefficients coefficients =
+        runtime::coefficients_from_table(table, as_vec3(q.reflectivity), as_vec3(q.edge_tint));
+    const float* result = &results[4 * i];
+    record_largest(path.radiance.max_abs, path.radiance.query,
+                   runtime::polygon_light_ltc(coefficients, lut, ltc, q.ndotv, q.roughness, local),
+                   result, i);
+    const double integral =
+        runtime::ltc_polygon_integral(runtime::sample_ltc(ltc, q.ndotv, q.roughness), local);
+    const float integral_result[3] = {result[3], result[3], result[3]};
+    record_largest(path.integral.max_abs, path.integral.query, {integral, integral, integral},
+                   integral_result, i);
+  }
+  path.passed = path.radiance.max_abs <= tolerance_.preintegrated &&
+                path.integral.max_abs <= tolerance_.preintegrated;
+  return path;
+}
+
+}  // namespace matc

@@ -1,0 +1,124 @@
+#include "matc/runtime/ltc.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "texel_axis.h"
+
+namespace matc::runtime {
+namespace {
+
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+double dot(const Vec3& a, const Vec3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+Vec3 normalize(const Vec3& v) {
+  const double length = std::sqrt(dot(v, v));
+  return {v[0] / length, v[1] / length, v[2] / length};
+}
+
+// The z component of the arc integral from a to b (unit vectors): theta * normalize(a x b).z,
+// theta = angle(a, b) through atan2, which stays accurate for short and near-opposite arcs.
+double edge_integral(const Vec3& a, const Vec3& b) {
+  const Vec3 normal = cross(a, b);
+  const double sine = std::sqrt(dot(normal, normal));
+  const double theta = std::atan2(sine, dot(a, b));
+  return sine > 0.0 ? normal[2] * (theta / sine) : 0.0;
+}
+
+// Where the segment from a (above the horizon) to b (on or below it) meets z = 0, as a unit
+// vector: the arc between their directions meets the horizon on the same ray.
+Vec3 horizon_crossing(const Vec3& a, const Vec3& b) {
+  const double t = a[2] / (a[2] - b[2]);
+  return normalize({a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), 0.0});
+}
+
+}  // namespace
+
+std::array<float, kLtcChannels> LtcTableView::texel(std::size_t x, std::size_t y) const {
+  const std::size_t offset = (y * size + x) * kLtcChannels;
+  return {texels[offset], texels[offset + 1], texels[offset + 2], texels[offset + 3]};
+}
+
+LtcInverse sample_ltc(const LtcTableView& table, double ndotv, double roughness) {
+  const auto m = sample_bilinear<kLtcChannels>(table, table.size, lut_u_from_ndotv(ndotv),
+                                               unit_clamp(roughness));
+  return {m[0], m[1], m[2], m[3]};
+}
+
+double clipped_polygon_form_factor(std::span<const Vec3> vertices) {
+  // Each edge integrated where it is above the horizon; a convex polygon that crosses the horizon
+  // leaves it once and comes back once, and the horizon arc between those points closes it.
+  double sum = 0.0;
+  Vec3 exit{}, entry{};
+  bool exits = false, enters = false;
+  const std::size_t count = vertices.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const Vec3& a = vertices[i];
+    const Vec3& b = vertices[(i + 1) % count];
+    const bool a_above = a[2] > 0.0;
+    const bool b_above = b[2] > 0.0;
+    if (a_above && b_above) {
+      sum += edge_integral(normalize(a), normalize(b));
+    } else if (a_above) {
+      exit = horizon_crossing(a, b);
+      exits = true;
+      sum += edge_integral(normalize(a), exit);
+    } else if (b_above) {
+      entry = horizon_crossing(b, a);
+      enters = true;
+      sum += edge_integral(entry, normalize(b));
+    }
+  }
+  if (exits && enters) sum += edge_integral(exit, entry);
+  return std::min(1.0, std::abs(sum) / (2.0 * std::numbers::pi));
+}
+
+double ltc_polygon_integral(const LtcInverse& inverse, std::span<const Vec3> vertices) {
+  std::array<Vec3, kMaxLightPolygonVertices> transformed{};
+  const std::size_t count = std::min(vertices.size(), transformed.size());
+  for (std::size_t i = 0; i < count; ++i)
+    transformed[i] = inverse.apply(vertices[i]);
+  return clipped_polygon_form_factor({transformed.data(), count});
+}
+
+std::array<Vec3, kDiskLightSides> disk_light_polygon(const Vec3& centre, const Vec3& normal,
+                                                     double radius) {
+  // An orthonormal basis around the normal (Duff et al. 2017), then the polygon whose area is the
+  // disk's: circumradius r sqrt(2 pi / (n sin(2 pi / n))).
+  const Vec3 n = normalize(normal);
+  const double sign = std::copysign(1.0, n[2]);
+  const double a = -1.0 / (sign + n[2]);
+  const double b = n[0] * n[1] * a;
+  const Vec3 tangent{1.0 + sign * n[0] * n[0] * a, sign * b, -sign * n[0]};
+  const Vec3 bitangent{b, sign + n[1] * n[1] * a, -n[1]};
+  constexpr double kSides = static_cast<double>(kDiskLightSides);
+  const double circumradius =
+      radius *
+      std::sqrt(2.0 * std::numbers::pi / (kSides * std::sin(2.0 * std::numbers::pi / kSides)));
+  std::array<Vec3, kDiskLightSides> polygon{};
+  for (std::size_t i = 0; i < kDiskLightSides; ++i) {
+    const double angle = 2.0 * std::numbers::pi * static_cast<double>(i) / kSides;
+    const double x = circumradius * std::cos(angle);
+    const double y = circumradius * std::sin(angle);
+    for (std::size_t k = 0; k < 3; ++k)
+      polygon[i][k] = centre[k] + x * tangent[k] + y * bitangent[k];
+  }
+  return polygon;
+}
+
+Rgb polygon_light_ltc(const Coefficients& coefficients, const LutView& lut, const LtcTableView& ltc,
+                      double ndotv, double roughness, std::span<const Vec3> vertices) {
+  const double integral = ltc_polygon_integral(sample_ltc(ltc, ndotv, roughness), vertices);
+  Rgb radiance = evaluate_fbar(coefficients, lut, ndotv, roughness);
+  for (double& channel : radiance)
+    channel *= integral;
+  return radiance;
+}
+
+}  // namespace matc::runtime

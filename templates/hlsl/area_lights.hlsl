@@ -1,0 +1,135 @@
+
+// ---- Area lights: linearly transformed cosines (Heitz, Dupuy, Hill, Neubelt 2016) ----
+// L = I_ltc(light) * matc_fresnel_preintegrated(c, bbar): the LTC table (matc_ltc.*) gives the
+// lobe's shape, the preintegrated table its magnitude and Fresnel (docs/ltc.md). Lights are
+// two-sided with radiance 1: scale by the light's radiance.
+
+// Width and height of the LTC table this build wrote (matc_ltc.*).
+#define MATC_LTC_SIZE {{ltc_size}}
+
+// Where to sample the LTC table: the preintegrated table's axes, at the LTC table's size.
+float2 matc_ltc_texcoord(float NdotV, float roughness) {
+  float2 axes = float2(sqrt(saturate(NdotV)), saturate(roughness));
+  return (axes * float(MATC_LTC_SIZE - 1) + 0.5) / float(MATC_LTC_SIZE);
+}
+
+// World space to the LTC's cosine space for a shading point: the shading frame (T1 towards the
+// view, T2, N), then M^-1 = ((a, 0, b), (0, 1, 0), (c, 0, d)) from the LTC texel (a, b, c, d).
+float3x3 matc_ltc_transform(float3 N, float3 V, float4 ltc) {
+  float3 tangent = V - N * dot(N, V);
+  float tangent_length = length(tangent);
+  // V along N: the lobe is symmetric about N, any tangent will do.
+  float3 fallback = abs(N.z) < 0.999 ? float3(0.0, 0.0, 1.0) : float3(1.0, 0.0, 0.0);
+  float3 T1 = tangent_length > 1e-6 ? tangent / tangent_length : normalize(cross(N, fallback));
+  float3 T2 = cross(N, T1);
+  float3x3 to_frame = float3x3(T1, T2, N);  // rows
+  float3x3 inverse_m = float3x3(float3(ltc.x, 0.0, ltc.y), float3(0.0, 1.0, 0.0),
+                                float3(ltc.z, 0.0, ltc.w));
+  return mul(inverse_m, to_frame);
+}
+
+// A polygon integrated edge by edge, clipped at the cosine's horizon as it goes: a convex polygon
+// leaves the upper hemisphere once and comes back once, and the horizon arc closes it.
+struct MatcLtcPolygon {
+  float sum;
+  float3 exit_point;
+  float3 entry_point;
+  bool exits;
+  bool enters;
+};
+
+// theta * normalize(a x b).z for unit vectors a, b (atan2 stays accurate for short arcs).
+float matc_ltc_edge(float3 a, float3 b) {
+  float3 n = cross(a, b);
+  float s = length(n);
+  return s > 0.0 ? n.z * (atan2(s, dot(a, b)) / s) : 0.0;
+}
+
+void matc_ltc_add_edge(inout MatcLtcPolygon polygon, float3 a, float3 b) {
+  bool a_above = a.z > 0.0;
+  bool b_above = b.z > 0.0;
+  if (a_above && b_above) {
+    polygon.sum += matc_ltc_edge(normalize(a), normalize(b));
+  } else if (a_above) {
+    float3 p = lerp(a, b, a.z / (a.z - b.z));
+    polygon.exit_point = normalize(float3(p.xy, 0.0));
+    polygon.exits = true;
+    polygon.sum += matc_ltc_edge(normalize(a), polygon.exit_point);
+  } else if (b_above) {
+    float3 p = lerp(b, a, b.z / (b.z - a.z));
+    polygon.entry_point = normalize(float3(p.xy, 0.0));
+    polygon.enters = true;
+    polygon.sum += matc_ltc_edge(polygon.entry_point, normalize(b));
+  }
+}
+
+float matc_ltc_polygon_result(MatcLtcPolygon polygon) {
+  float sum = polygon.sum;
+  if (polygon.exits && polygon.enters) sum += matc_ltc_edge(polygon.exit_point, polygon.entry_point);
+  return min(abs(sum) * 0.15915494309189535, 1.0);  // 1 / (2 pi)
+}
+
+// The LTC's integral over a convex planar quad q0..q3 (world space, either winding) seen from P.
+float matc_ltc_quad_integral(float3x3 transform, float3 P, float3 q0, float3 q1, float3 q2, float3 q3) {
+  float3 a = mul(transform, q0 - P);
+  float3 b = mul(transform, q1 - P);
+  float3 c = mul(transform, q2 - P);
+  float3 d = mul(transform, q3 - P);
+  MatcLtcPolygon polygon;
+  polygon.sum = 0.0;
+  polygon.exit_point = float3(0.0, 0.0, 0.0);
+  polygon.entry_point = float3(0.0, 0.0, 0.0);
+  polygon.exits = false;
+  polygon.enters = false;
+  matc_ltc_add_edge(polygon, a, b);
+  matc_ltc_add_edge(polygon, b, c);
+  matc_ltc_add_edge(polygon, c, d);
+  matc_ltc_add_edge(polygon, d, a);
+  return matc_ltc_polygon_result(polygon);
+}
+
+// A disk light (centre, normal, radius) as a regular {{disk_sides}}-gon of the same area.
+float matc_ltc_disk_integral(float3x3 transform, float3 P, float3 centre, float3 normal, float radius) {
+  // An orthonormal basis around the normal (Duff et al. 2017).
+  float3 n = normalize(normal);
+  float sign_z = n.z >= 0.0 ? 1.0 : -1.0;
+  float a = -1.0 / (sign_z + n.z);
+  float b = n.x * n.y * a;
+  float3 tangent = float3(1.0 + sign_z * n.x * n.x * a, sign_z * b, -sign_z * n.x);
+  float3 bitangent = float3(b, sign_z + n.y * n.y * a, -n.y);
+  float circumradius = radius * {{disk_circumradius_scale}};
+  float3 u = mul(transform, tangent * circumradius);
+  float3 v = mul(transform, bitangent * circumradius);
+  float3 o = mul(transform, centre - P);
+  MatcLtcPolygon polygon;
+  polygon.sum = 0.0;
+  polygon.exit_point = float3(0.0, 0.0, 0.0);
+  polygon.entry_point = float3(0.0, 0.0, 0.0);
+  polygon.exits = false;
+  polygon.enters = false;
+  float3 first = o + u;
+  float3 previous = first;
+  for (int i = 1; i < {{disk_sides}}; ++i) {
+    float angle = float(i) * {{disk_angle_step}};
+    float3 current = o + cos(angle) * u + sin(angle) * v;
+    matc_ltc_add_edge(polygon, previous, current);
+    previous = current;
+  }
+  matc_ltc_add_edge(polygon, previous, first);
+  return matc_ltc_polygon_result(polygon);
+}
+
+// Radiance from a quad light of radiance 1: bbar from matc_lut and ltc from matc_ltc, both at
+// their texcoords for (NdotV, roughness).
+float3 matc_ltc_quad_light(MatcFresnelCoefficients c, float4 bbar, float4 ltc, float3 N, float3 V, float3 P,
+                         float3 q0, float3 q1, float3 q2, float3 q3) {
+  return matc_ltc_quad_integral(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3) *
+         matc_fresnel_preintegrated(c, bbar);
+}
+
+// ... and from a disk light of radiance 1.
+float3 matc_ltc_disk_light(MatcFresnelCoefficients c, float4 bbar, float4 ltc, float3 N, float3 V, float3 P,
+                         float3 centre, float3 normal, float radius) {
+  return matc_ltc_disk_integral(matc_ltc_transform(N, V, ltc), P, centre, normal, radius) *
+         matc_fresnel_preintegrated(c, bbar);
+}
