@@ -124,6 +124,15 @@ TEST(LtcFit, NormalIncidenceIsIsotropicAndTheRowsAreIndependent) {
   EXPECT_THROW(matc::fit_ltc_table({1, 0}), std::invalid_argument);
 }
 
+TEST(LtcFit, EvaluatingAStoredTexelGivesTheFitsDistances) {
+  const matc::LtcCellFit fit = matc::fit_ltc_cell(0.4, 0.5, {0.25, 0.25, 0.0, -1.1}, false);
+  const matc::LtcCellFit again = matc::evaluate_ltc_cell(fit.inverse, 0.4, 0.5);
+  EXPECT_NEAR(again.l1_distance, fit.l1_distance, 1e-9);
+  EXPECT_NEAR(again.cubed_distance, fit.cubed_distance, 1e-9 * fit.cubed_distance);
+  EXPECT_NEAR(again.shape.angle, fit.shape.angle, 1e-9);
+  EXPECT_LT(fit.l1_distance, 0.25);
+}
+
 TEST(GgxLobe, AlbedoMatchesThePreintegratedTable) {
   const matc::runtime::BasisView basis = matc::runtime::shipped_basis();
   for (const double ndotv : {0.1, 0.5, 1.0}) {

@@ -62,6 +62,20 @@ struct LtcMatrix {
   double m11, m22, m13, zx, zz;
 };
 
+// The shape (and frame angle) of the LTC whose normalised inverse is `inverse`: M's xz-block
+// F = [[d, -b], [-c, a]] / (ad - bc) split as rotation times [[u11, u12], [0, u22]] (QR), then
+// scaled so that the corner is 1 (M's scale is free: m22 = 1 / u22 keeps M^-1's middle entry 1).
+LtcShape shape_of(const runtime::LtcInverse& inverse) {
+  const double det = inverse.a * inverse.d - inverse.b * inverse.c;
+  const double f00 = inverse.d / det, f01 = -inverse.b / det;
+  const double f10 = -inverse.c / det, f11 = inverse.a / det;
+  const double u11 = std::hypot(f00, f10);
+  const double zz = f00 / u11, zx = -f10 / u11;
+  const double u12 = zz * f01 - zx * f11;
+  const double u22 = zx * f01 + zz * f11;
+  return {u11 / u22, 1.0 / u22, u12 / u22, std::atan2(zx, zz)};
+}
+
 // The fixed point sets of one texel: cosine directions (LTC samples before M) and the lobe's own
 // samples with their densities.
 struct FitSamples {
@@ -130,6 +144,13 @@ Errors fit_errors(const GgxLobe& lobe, const FitSamples& s, const LtcMatrix& m) 
 }
 
 }  // namespace
+
+LtcCellFit evaluate_ltc_cell(const runtime::LtcInverse& inverse, double ndotv, double roughness) {
+  const GgxLobe lobe(ndotv, roughness);
+  const LtcShape shape = shape_of(inverse);
+  const Errors errors = fit_errors(lobe, make_samples(lobe), LtcMatrix(shape));
+  return {inverse, shape, errors.cubed, errors.absolute};
+}
 
 double ltc_texel_ndotv(std::size_t x, std::size_t size) {
   return runtime::lut_ndotv_from_u(static_cast<double>(x) / static_cast<double>(size - 1));

@@ -63,6 +63,10 @@ double ltc_texel_roughness(std::size_t y, std::size_t size);
 LtcCellFit fit_ltc_cell(double ndotv, double roughness, const LtcShape& first_guess, bool isotropic,
                         LtcObjective objective = LtcObjective::l1);
 
+// The distances of a given LTC (a texel as a file stores it) from the GGX lobe, measured like the
+// fit measures them.
+LtcCellFit evaluate_ltc_cell(const runtime::LtcInverse& inverse, double ndotv, double roughness);
+
 // Rows [first_row, first_row + row_count) of a table of `options.size` (the rest left zero):
 // the whole table by default. Throws std::invalid_argument for a size outside [2, 1024].
 LtcTable fit_ltc_table(const LtcFitOptions& options, std::size_t first_row = 0,
