@@ -5,9 +5,10 @@
 # with a depfile so that editing a material, a spectral file it names, or updating matc reruns it,
 # and nothing else does. The generated per-material headers become sources of TARGET and
 # OUTPUT_DIR one of its include directories, so `#include "<name>.h"` works and the target is built
-# after its materials. EMIT selects outputs (glsl hlsl spirv header json lut coefficient-table;
-# default all). Use one OUTPUT_DIR per call (a second call with the same one is an error): every
-# call writes the shared files matc_fresnel.*, matc_lut.* and matc_coefficient_table.*.
+# after its materials. EMIT selects outputs (glsl hlsl spirv header json lut coefficient-table
+# ltc; default all). Use one OUTPUT_DIR per call (a second call with the same one is an error):
+# every call writes the shared files matc_fresnel.*, matc_lut.*, matc_coefficient_table.* and
+# matc_ltc.*.
 # Material names are read from the files at configure time (changing one reconfigures).
 # _matc_json_name(<path> <caller> <kind> <out_var>): the "name" field of a JSON file (material or
 # bake asset), read at configure time; a file without one stops CMake with a pointer to matc.
@@ -30,7 +31,7 @@ function(matc_add_materials)
     message(FATAL_ERROR "matc_add_materials: OUTPUT_DIR and MATERIALS are required")
   endif()
   if(NOT ARG_EMIT)
-    set(ARG_EMIT glsl hlsl spirv header json lut coefficient-table)
+    set(ARG_EMIT glsl hlsl spirv header json lut coefficient-table ltc)
   endif()
   if(NOT ARG_LUT_FORMAT)
     set(ARG_LUT_FORMAT ktx2)
@@ -51,14 +52,14 @@ function(matc_add_materials)
   get_property(_used GLOBAL PROPERTY MATC_ADD_MATERIALS_OUTPUT_DIRS)
   if("${_dir}" IN_LIST _used)
     message(FATAL_ERROR "matc_add_materials: OUTPUT_DIR ${_dir} is already used by another call; "
-                        "every call writes matc_fresnel.*, matc_lut.* and matc_coefficient_table.*, so give each its own")
+                        "every call writes matc_fresnel.*, matc_lut.*, matc_coefficient_table.* and matc_ltc.*, so give each its own")
   endif()
   set_property(GLOBAL APPEND PROPERTY MATC_ADD_MATERIALS_OUTPUT_DIRS "${_dir}")
 
   foreach(_kind IN LISTS ARG_EMIT)
     if(NOT DEFINED _per_material_extension_${_kind} AND NOT _kind STREQUAL "lut"
-       AND NOT _kind STREQUAL "coefficient-table")
-      message(FATAL_ERROR "matc_add_materials: EMIT '${_kind}' is not one of glsl, hlsl, spirv, header, json, lut, coefficient-table")
+       AND NOT _kind STREQUAL "coefficient-table" AND NOT _kind STREQUAL "ltc")
+      message(FATAL_ERROR "matc_add_materials: EMIT '${_kind}' is not one of glsl, hlsl, spirv, header, json, lut, coefficient-table, ltc")
     endif()
   endforeach()
 
@@ -77,6 +78,10 @@ function(matc_add_materials)
   if("coefficient-table" IN_LIST ARG_EMIT)
     set(_table "${_dir}/matc_coefficient_table.${_lut_extension_${ARG_LUT_FORMAT}}")
     list(APPEND _outputs "${_table}" "${_table}.json")
+  endif()
+  if("ltc" IN_LIST ARG_EMIT)
+    set(_ltc "${_dir}/matc_ltc.${_lut_extension_${ARG_LUT_FORMAT}}")
+    list(APPEND _outputs "${_ltc}" "${_ltc}.json")
   endif()
   if("json" IN_LIST ARG_EMIT)
     list(APPEND _outputs "${_dir}/matc_manifest.json")

@@ -79,13 +79,21 @@ bool validate_coefficient_table_and_report(const DeviceValidator& validator) {
 bool validate_area_lights_and_report(const DeviceValidator& validator) {
   const std::size_t messages_before = validator.layer_messages().size();
   const AreaLightValidation result = validator.validate_area_lights();
+  const std::vector<AreaLightQuery> queries = area_light_validation_queries();
   const double tolerance = validator.tolerance().preintegrated;
+  const auto describe = [&](const char* label, const TableDiscrepancy& found) {
+    if (found.max_abs <= tolerance) return fmt::format("  {} {:.2e}", label, found.max_abs);
+    const AreaLightQuery& q = queries[found.query];
+    return fmt::format("  {} {:.2e} > {:.0e} at light {} (a {}), NdotV {:.4f}, roughness {:.4f}",
+                       label, found.max_abs, tolerance, found.query, q.disk ? "disk" : "quad",
+                       q.ndotv, q.roughness);
+  };
   for (const AreaLightPathValidation& path : result.paths) {
-    fmt::print(
-        "{:<20} {}  L max |diff| {:.2g}, I_ltc max |diff| {:.2g} (<= {:.0e}) over {} lights  {}\n",
-        "area lights (LTC)", path.language == ShaderLanguage::glsl ? "GLSL" : "HLSL",
-        path.radiance.max_abs, path.integral.max_abs, tolerance,
-        area_light_validation_queries().size(), path.passed ? "ok" : "FAILED");
+    std::string line = fmt::format("{:<20} {}", "area lights (LTC)",
+                                   path.language == ShaderLanguage::glsl ? "GLSL" : "HLSL");
+    line += describe("L", path.radiance);
+    line += describe("I_ltc", path.integral);
+    fmt::print("{}  {}\n", line, path.passed ? "ok" : "FAILED");
   }
   return report_layer_messages(validator, messages_before, "area lights") && result.passed();
 }

@@ -34,3 +34,15 @@ trap 'rm -f "$table"; rm -rf "$paper" "$maps"' EXIT
 "$build/examples/render/matc_baked_render" --size 256 -o "$root/docs/images" \
   --reflectivity "$maps/inlaid_metals_r.png" --edge-tint "$maps/inlaid_metals_g.png" >"$table"
 "$root/tests/check_docs_block.sh" --update "$root/docs/rendering.md" baked-render cat "$table"
+# Area lights (LTC): every example material for the table, the Figure 2 material's and
+# beryllium's images into docs/images.
+cmake --build "$build" --target matc_area_light_render >/dev/null
+area=$(mktemp -d)
+trap 'rm -f "$table"; rm -rf "$paper" "$maps" "$area"' EXIT
+"$build/examples/render/matc_area_light_render" --size 256 --samples 4096 -o "$area" \
+  "$root"/examples/materials/*.json >"$table"
+for name in figure2_edge_tint beryllium; do
+  cp "$area/${name}_area.png" "$area/${name}_area_difference.png" \
+    "$area/${name}_area_fresnel_difference.png" "$root/docs/images/"
+done
+"$root/tests/check_docs_block.sh" --update "$root/docs/rendering.md" area-light-render cat "$table"
