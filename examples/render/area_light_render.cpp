@@ -8,6 +8,7 @@
 //   matc_area_light_render [--size N] [--samples N] [-o DIR] [--check] FILES...
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,87 +18,19 @@
 #include "matc/compile.h"
 #include "matc/emit/build.h"
 #include "matc/emit/fullscreen_shaders.h"
-#include "matc/lut/comparison_lobes.h"
 #include "matc/material/parse.h"
-#include "matc/runtime/ltc.h"
-#include "matc/vulkan/buffer.h"
-#include "matc/vulkan/fullscreen_pass.h"
-#include "matc/vulkan/sampler.h"
+#include "material_renderer.h"
 #include "panels.h"
 
 namespace {
 
 using namespace matc::render;
 
-constexpr std::size_t kCurveSize = 1024;
-
 // The estimates of area_light_render.frag by method number (the Estimate slots they occupy).
 constexpr Estimate kLtcExact = kExactFbar;
 constexpr Estimate kExactLobeSplit = kPrefilteredRadiance;
 constexpr Estimate kLtcSchlick = kSchlickFbar;
 constexpr Estimate kLtcOurs = kOursFbar;
-
-class AreaLightRenderer {
- public:
-  explicit AreaLightRenderer(const RenderSettings& settings)
-      : settings_(settings),
-        build_(matc::BuildOptions{}),
-        context_(matc::vulkan::ContextOptions{settings.validation, settings.device}),
-        lobes_(matc::runtime::shipped_basis().samples()),
-        lobe_lut_(matc::preintegrate_lut(lobes_.view(), {})),
-        table_size_(static_cast<std::uint32_t>(build_.stored_lut().size)),
-        ours_table_(context_, table_size_, table_size_, build_.stored_lut().texels),
-        lobe_table_(context_, table_size_, table_size_, lobe_lut_.texels),
-        ltc_table_(context_, static_cast<std::uint32_t>(matc::runtime::shipped_ltc_table().size),
-                   static_cast<std::uint32_t>(matc::runtime::shipped_ltc_table().size),
-                   matc::runtime::shipped_ltc_table().texels),
-        sampler_(context_),
-        curve_(context_, kCurveSize * 4 * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-        vertex_(matc::compile_fullscreen_stage(matc::fullscreen_vertex_source(),
-                                               matc::ShaderStage::vertex, "fullscreen.vert")) {}
-
-  const matc::vulkan::Context& context() const { return context_; }
-  matc::runtime::BasisView basis() const { return build_.basis(); }
-
-  std::array<Panel, kEstimateCount> render(const matc::CompiledMaterial& compiled) {
-    const auto exact = matc::make_reflectance_curve(compiled.material);
-    std::vector<float> curve(kCurveSize * 4, 0.0f);
-    for (std::size_t j = 0; j < kCurveSize; ++j) {
-      const matc::Rgb value = exact->at(static_cast<double>(j) / (kCurveSize - 1));
-      for (std::size_t c = 0; c < 3; ++c)
-        curve[4 * j + c] = static_cast<float>(value[c]);
-    }
-    curve_.write<float>(curve);
-    const matc::SpirvWords fragment = matc::compile_fullscreen_stage(
-        matc::area_light_render_source(build_, compiled, kCurveSize, settings_.size,
-                                       settings_.size),
-        matc::ShaderStage::fragment, "area_light_render.frag");
-    const std::array bindings = {matc::vulkan::Binding::sampled_image(0, ours_table_),
-                                 matc::vulkan::Binding::sampled_image(1, lobe_table_),
-                                 matc::vulkan::Binding::separate_sampler(2, sampler_),
-                                 matc::vulkan::Binding::storage_buffer(3, curve_),
-                                 matc::vulkan::Binding::sampled_image(4, ltc_table_)};
-    matc::vulkan::FullscreenPass pass(context_, vertex_, fragment, bindings, settings_.size,
-                                      settings_.size, sizeof(PanelConstants));
-    const float roughness =
-        static_cast<float>(compiled.material.roughness.value_or(kDefaultRoughness));
-    return render_estimates(pass, settings_.size, settings_.samples, roughness);
-  }
-
- private:
-  RenderSettings settings_;
-  matc::Build build_;
-  matc::vulkan::Context context_;
-  matc::ComparisonLobes lobes_;
-  matc::Lut lobe_lut_;
-  std::uint32_t table_size_;
-  matc::vulkan::Image ours_table_;
-  matc::vulkan::Image lobe_table_;
-  matc::vulkan::Image ltc_table_;
-  matc::vulkan::LutSampler sampler_;
-  matc::vulkan::Buffer curve_;
-  matc::SpirvWords vertex_;
-};
 
 }  // namespace
 
@@ -114,7 +47,8 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
-    AreaLightRenderer renderer(settings);
+    MaterialRenderer renderer(settings, matc::BuildOptions{}, matc::area_light_render_source,
+                              "area_light_render.frag", /*with_ltc=*/true);
     std::filesystem::create_directories(settings.output);
     fmt::print(
         "Rendered on {}, {}x{} pixels per panel, {} samples per pixel. Mean and max absolute "
@@ -127,12 +61,9 @@ int main(int argc, char** argv) {
         renderer.context().device_name(), settings.size, settings.size, settings.samples);
     bool targets_met = true;
     for (const std::string& file : files) {
-      const matc::ParseResult parsed = matc::read_material_file(file);
-      for (const matc::Diagnostic& diagnostic : parsed.diagnostics.items())
-        fmt::print(stderr, "{}\n", matc::format_diagnostic(diagnostic));
-      if (!parsed.material) return 1;
-      const matc::CompiledMaterial compiled =
-          matc::compile_material(*parsed.material, renderer.basis());
+      const std::optional<matc::CompiledMaterial> material = renderer.compile(file);
+      if (!material) return 1;
+      const matc::CompiledMaterial& compiled = *material;
       const std::array<Panel, kEstimateCount> estimates = renderer.render(compiled);
       const Panel& reference = estimates[kReference];
       const Panel& schlick = estimates[kLtcSchlick];

@@ -9,19 +9,6 @@
 namespace matc::runtime {
 namespace {
 
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-double dot(const Vec3& a, const Vec3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-Vec3 normalize(const Vec3& v) {
-  const double length = std::sqrt(dot(v, v));
-  return {v[0] / length, v[1] / length, v[2] / length};
-}
-
 // The z component of the arc integral from a to b (unit vectors): theta * normalize(a x b).z,
 // theta = angle(a, b) through atan2, which stays accurate for short and near-opposite arcs.
 double edge_integral(const Vec3& a, const Vec3& b) {

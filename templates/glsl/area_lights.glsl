@@ -38,6 +38,10 @@ struct MatcLtcPolygon {
   bool enters;
 };
 
+MatcLtcPolygon matc_ltc_polygon_start() {
+  return MatcLtcPolygon(0.0, vec3(0.0), vec3(0.0), false, false);
+}
+
 // theta * normalize(a x b).z for unit vectors a, b (atan2 stays accurate for short arcs).
 float matc_ltc_edge(vec3 a, vec3 b) {
   vec3 n = cross(a, b);
@@ -75,7 +79,7 @@ float matc_ltc_quad_integral(mat3 transform, vec3 P, vec3 q0, vec3 q1, vec3 q2, 
   vec3 b = transform * (q1 - P);
   vec3 c = transform * (q2 - P);
   vec3 d = transform * (q3 - P);
-  MatcLtcPolygon polygon = MatcLtcPolygon(0.0, vec3(0.0), vec3(0.0), false, false);
+  MatcLtcPolygon polygon = matc_ltc_polygon_start();
   matc_ltc_add_edge(polygon, a, b);
   matc_ltc_add_edge(polygon, b, c);
   matc_ltc_add_edge(polygon, c, d);
@@ -96,7 +100,7 @@ float matc_ltc_disk_integral(mat3 transform, vec3 P, vec3 centre, vec3 normal, f
   vec3 u = transform * (tangent * circumradius);
   vec3 v = transform * (bitangent * circumradius);
   vec3 o = transform * (centre - P);
-  MatcLtcPolygon polygon = MatcLtcPolygon(0.0, vec3(0.0), vec3(0.0), false, false);
+  MatcLtcPolygon polygon = matc_ltc_polygon_start();
   vec3 first = o + u;
   vec3 previous = first;
   for (int i = 1; i < {{disk_sides}}; ++i) {

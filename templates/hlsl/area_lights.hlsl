@@ -38,6 +38,16 @@ struct MatcLtcPolygon {
   bool enters;
 };
 
+MatcLtcPolygon matc_ltc_polygon_start() {
+  MatcLtcPolygon polygon;
+  polygon.sum = 0.0;
+  polygon.exit_point = float3(0.0, 0.0, 0.0);
+  polygon.entry_point = float3(0.0, 0.0, 0.0);
+  polygon.exits = false;
+  polygon.enters = false;
+  return polygon;
+}
+
 // theta * normalize(a x b).z for unit vectors a, b (atan2 stays accurate for short arcs).
 float matc_ltc_edge(float3 a, float3 b) {
   float3 n = cross(a, b);
@@ -75,12 +85,7 @@ float matc_ltc_quad_integral(float3x3 transform, float3 P, float3 q0, float3 q1,
   float3 b = mul(transform, q1 - P);
   float3 c = mul(transform, q2 - P);
   float3 d = mul(transform, q3 - P);
-  MatcLtcPolygon polygon;
-  polygon.sum = 0.0;
-  polygon.exit_point = float3(0.0, 0.0, 0.0);
-  polygon.entry_point = float3(0.0, 0.0, 0.0);
-  polygon.exits = false;
-  polygon.enters = false;
+  MatcLtcPolygon polygon = matc_ltc_polygon_start();
   matc_ltc_add_edge(polygon, a, b);
   matc_ltc_add_edge(polygon, b, c);
   matc_ltc_add_edge(polygon, c, d);
@@ -101,12 +106,7 @@ float matc_ltc_disk_integral(float3x3 transform, float3 P, float3 centre, float3
   float3 u = mul(transform, tangent * circumradius);
   float3 v = mul(transform, bitangent * circumradius);
   float3 o = mul(transform, centre - P);
-  MatcLtcPolygon polygon;
-  polygon.sum = 0.0;
-  polygon.exit_point = float3(0.0, 0.0, 0.0);
-  polygon.entry_point = float3(0.0, 0.0, 0.0);
-  polygon.exits = false;
-  polygon.enters = false;
+  MatcLtcPolygon polygon = matc_ltc_polygon_start();
   float3 first = o + u;
   float3 previous = first;
   for (int i = 1; i < {{disk_sides}}; ++i) {

@@ -8,15 +8,9 @@
 namespace matc {
 namespace {
 
-Vec3 minus(const Vec3& a, const Vec3& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec3& a, const Vec3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+using runtime::cross;
+using runtime::dot;
+using runtime::minus;
 
 // A convex planar polygon as a fan of triangles from its first vertex, for uniform area sampling
 // and for ray hits.
@@ -96,34 +90,22 @@ AreaLightEstimate integrate_polygon_light(const GgxLobe& lobe, std::span<const V
   runtime::Rgb sum{}, sum_squares{};
   for (std::size_t k = 0; k < samples; ++k) {
     runtime::Rgb value{};
-    // From the light's area.
-    {
-      const Vec3 p = polygon.sample(uniform(), uniform(), uniform());
-      const double t = std::sqrt(dot(p, p));
-      const Vec3 l{p[0] / t, p[1] / t, p[2] / t};
+    // One direction's share, f F cos / (p_light + p_lobe): the balance heuristic.
+    const auto add = [&](const Vec3& l, double distance) {
       const GgxLobe::Value lobe_value = lobe.evaluate(l);
-      if (lobe_value.lobe > 0.0) {
-        const double weight = lobe_value.lobe / (light_pdf(l, t) + lobe_value.pdf);
-        const runtime::Rgb f = fresnel(lobe_value.vdoth);
-        for (std::size_t c = 0; c < 3; ++c)
-          value[c] += weight * f[c];
-      }
-    }
-    // From the lobe.
-    {
-      const double u1 = uniform(), u2 = uniform();
-      const Vec3 l = lobe.sample(u1, u2);
-      const double t = polygon.hit_distance(l);
-      if (t > 0.0) {
-        const GgxLobe::Value lobe_value = lobe.evaluate(l);
-        if (lobe_value.lobe > 0.0) {
-          const double weight = lobe_value.lobe / (light_pdf(l, t) + lobe_value.pdf);
-          const runtime::Rgb f = fresnel(lobe_value.vdoth);
-          for (std::size_t c = 0; c < 3; ++c)
-            value[c] += weight * f[c];
-        }
-      }
-    }
+      if (lobe_value.lobe <= 0.0) return;
+      const double weight = lobe_value.lobe / (light_pdf(l, distance) + lobe_value.pdf);
+      const runtime::Rgb f = fresnel(lobe_value.vdoth);
+      for (std::size_t c = 0; c < 3; ++c)
+        value[c] += weight * f[c];
+    };
+    // From the light's area, then from the lobe.
+    const Vec3 p = polygon.sample(uniform(), uniform(), uniform());
+    const double t = std::sqrt(dot(p, p));
+    add({p[0] / t, p[1] / t, p[2] / t}, t);
+    const double u1 = uniform(), u2 = uniform();
+    const Vec3 l = lobe.sample(u1, u2);
+    if (const double hit = polygon.hit_distance(l); hit > 0.0) add(l, hit);
     for (std::size_t c = 0; c < 3; ++c) {
       sum[c] += value[c];
       sum_squares[c] += value[c] * value[c];

@@ -62,12 +62,7 @@ nlohmann::ordered_json ltc_table_manifest(const runtime::LtcTableView& table, Lu
   manifest["matrix"] =
       "M^-1 = [[a, 0, b], [0, 1, 0], [c, 0, d]] (rows) in the shading frame: normal +z, view in "
       "the xz-plane towards +x";
-  manifest["layout"] = {
-      {"rows", "roughness (perceptual; GGX alpha = roughness^2), first row = 0"},
-      {"columns", "u = sqrt(NdotV), first column = 0"},
-      {"texel_centres", "texel (x, y) holds u = x / (size - 1), roughness = y / (size - 1)"},
-      {"sampling", "linear filtering, clamp to edge, at (u * (size - 1) + 0.5) / size per axis"},
-      {"raw", "row-major, RGBA interleaved, little-endian, tightly packed"}};
+  manifest["layout"] = preintegrated_axes_layout("RGBA");
   manifest["magnitude"] =
       "the preintegrated table (matc_lut): L = I_ltc(light) * sum_i c_i bbar_i per channel";
   manifest["fit"] =

@@ -9,22 +9,14 @@
 namespace matc {
 namespace {
 
+using runtime::cross;
+using runtime::dot;
+using runtime::length;
+using runtime::minus;
+
 // Relative tolerances, against the polygon's size: what double-precision input can state.
 constexpr double kPlanarTolerance = 1e-6;
 constexpr double kAreaTolerance = 1e-12;
-
-Vec3 minus(const Vec3& a, const Vec3& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec3& a, const Vec3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-double length(const Vec3& a) {
-  return std::sqrt(dot(a, a));
-}
 
 std::string_view trim(std::string_view text) {
   const auto first = text.find_first_not_of(" \t");

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
 #include "lut_writers.h"
 #include "matc/lut/energy.h"
 #include "matc/version.h"
@@ -109,6 +111,15 @@ std::string encode_lut(const BakedLut& baked, LutFormat format, LutPrecision pre
   return {};
 }
 
+nlohmann::ordered_json preintegrated_axes_layout(std::string_view channels) {
+  return {
+      {"rows", "roughness (perceptual; GGX alpha = roughness^2), first row = 0"},
+      {"columns", "u = sqrt(NdotV), first column = 0"},
+      {"texel_centres", "texel (x, y) holds u = x / (size - 1), roughness = y / (size - 1)"},
+      {"sampling", "linear filtering, clamp to edge, at (u * (size - 1) + 0.5) / size per axis"},
+      {"raw", fmt::format("row-major, {} interleaved, little-endian, tightly packed", channels)}};
+}
+
 nlohmann::ordered_json lut_manifest(const BakedLut& baked, LutFormat format,
                                     LutPrecision precision) {
   const Lut& lut = baked.lut;
@@ -121,12 +132,7 @@ nlohmann::ordered_json lut_manifest(const BakedLut& baked, LutFormat format,
   manifest["samples_per_texel"] = lut.samples;
   manifest["basis"] = runtime::basis_name(baked.basis);
   manifest["channels"] = {"bbar_0", "bbar_1", "bbar_2", "bbar_3"};
-  manifest["layout"] = {
-      {"rows", "roughness (perceptual; GGX alpha = roughness^2), first row = 0"},
-      {"columns", "u = sqrt(NdotV), first column = 0"},
-      {"texel_centres", "texel (x, y) holds u = x / (size - 1), roughness = y / (size - 1)"},
-      {"sampling", "linear filtering, clamp to edge, at (u * (size - 1) + 0.5) / size per axis"},
-      {"raw", "row-major, RGBA interleaved, little-endian, tightly packed"}};
+  manifest["layout"] = preintegrated_axes_layout("RGBA");
   manifest["energy_compensation"] = {
       {"directional_albedo", "channel 0 (bbar_0) is E(NdotV, roughness)"},
       {"average_albedo", baked.average_albedo},

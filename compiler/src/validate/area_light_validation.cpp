@@ -18,6 +18,9 @@ namespace {
 
 constexpr std::size_t kAreaLightQueries = 2048;
 
+using runtime::cross;
+using runtime::dot;
+using runtime::normalize;
 using runtime::Vec3;
 
 Vec3 as_vec3(const std::array<float, 3>& v) {
@@ -26,19 +29,6 @@ Vec3 as_vec3(const std::array<float, 3>& v) {
 
 std::array<float, 3> as_float3(const Vec3& v) {
   return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
-}
-
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-double dot(const Vec3& a, const Vec3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-Vec3 normalize(const Vec3& v) {
-  const double length = std::sqrt(dot(v, v));
-  return {v[0] / length, v[1] / length, v[2] / length};
 }
 
 // The shading frame the shaders build from (N, V): T1 towards V, T2 = N x T1.
@@ -154,25 +144,10 @@ AreaLightPathValidation DeviceValidator::run_area_lights(ShaderLanguage language
     for (const auto& p : q.points)
       packed.insert(packed.end(), {p[0], p[1], p[2], 0.0f});
   }
-  const vulkan::Context& context = device_->context;
-  vulkan::Buffer query_buffer(context, packed.size() * sizeof(float),
-                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  query_buffer.write<float>(packed);
-  vulkan::Buffer result_buffer(context, queries.size() * 4 * sizeof(float),
-                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  const std::array bindings = {
-      vulkan::Binding::storage_buffer(0, query_buffer),
-      vulkan::Binding::storage_buffer(1, result_buffer),
-      vulkan::Binding::sampled_image(2, device_->lut),
-      vulkan::Binding::separate_sampler(3, device_->sampler),
-      vulkan::Binding::sampled_image(4, device_->coefficient_table),
-      vulkan::Binding::sampled_image(5, device_->ltc),
-  };
-  const vulkan::ComputeKernel kernel(context, build_.area_light_validation_module(language),
-                                     bindings);
   static_assert(kAreaLightQueries % kWorkgroupSize == 0, "whole workgroups");
-  kernel.dispatch(static_cast<std::uint32_t>(queries.size() / kWorkgroupSize));
-  const std::vector<float> results = result_buffer.read<float>(queries.size() * 4);
+  const std::vector<float> results =
+      device_->run_queries(build_.area_light_validation_module(language), packed, queries.size(),
+                           queries.size() * 4, /*with_ltc=*/true);
 
   const runtime::CoefficientTableView table = build_.stored_coefficient_table().view();
   const runtime::LutView lut = build_.stored_lut().view();

@@ -78,25 +78,10 @@ TablePathValidation DeviceValidator::run_table(ShaderLanguage language) const {
     packed.insert(packed.end(), {q.n[0], q.n[1], q.n[2], q.roughness});
     packed.insert(packed.end(), {q.k[0], q.k[1], q.k[2], 0.0f});
   }
-  const vulkan::Context& context = device_->context;
-  vulkan::Buffer query_buffer(context, packed.size() * sizeof(float),
-                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  query_buffer.write<float>(packed);
-  vulkan::Buffer result_buffer(context,
-                               queries.size() * kTableValidationResultsPerQuery * 4 * sizeof(float),
-                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  const std::array bindings = {
-      vulkan::Binding::storage_buffer(0, query_buffer),
-      vulkan::Binding::storage_buffer(1, result_buffer),
-      vulkan::Binding::sampled_image(2, device_->lut),
-      vulkan::Binding::separate_sampler(3, device_->sampler),
-      vulkan::Binding::sampled_image(4, device_->coefficient_table),
-  };
-  const vulkan::ComputeKernel kernel(context, build_.table_validation_module(language), bindings);
   static_assert(kTableQueries % kWorkgroupSize == 0, "whole workgroups");
-  kernel.dispatch(static_cast<std::uint32_t>(queries.size() / kWorkgroupSize));
-  const std::vector<float> results =
-      result_buffer.read<float>(queries.size() * kTableValidationResultsPerQuery * 4);
+  const std::vector<float> results = device_->run_queries(
+      build_.table_validation_module(language), packed, queries.size(),
+      queries.size() * kTableValidationResultsPerQuery * 4, /*with_ltc=*/false);
 
   const runtime::BasisPolynomial& polynomial =
       runtime::shipped_basis_polynomial(build_.options().basis);

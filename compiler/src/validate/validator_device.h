@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "matc/emit/validation_kernel.h"
@@ -13,6 +14,7 @@
 #include "matc/runtime/ltc.h"
 #include "matc/validate/device_validation.h"
 #include "matc/vulkan/buffer.h"
+#include "matc/vulkan/compute_kernel.h"
 #include "matc/vulkan/context.h"
 #include "matc/vulkan/image.h"
 #include "matc/vulkan/sampler.h"
@@ -60,6 +62,29 @@ struct DeviceValidator::Device {
         queries(context, query_count * 4 * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
         results(context, query_count * kValidationResultsPerQuery * 4 * sizeof(float),
                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {}
+
+  // Runs one query-kernel (the coefficient-table and area-light ones): `packed` queries at
+  // binding 0, `result_floats` results read back from binding 1, the preintegrated table, the
+  // sampler and the coefficient table at 2-4, and the LTC table at 5 when `with_ltc`; one
+  // invocation per query, `query_count` a multiple of kWorkgroupSize.
+  std::vector<float> run_queries(const SpirvWords& module, std::span<const float> packed,
+                                 std::size_t query_count, std::size_t result_floats,
+                                 bool with_ltc) const {
+    vulkan::Buffer query_buffer(context, packed.size() * sizeof(float),
+                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    query_buffer.write<float>(packed);
+    vulkan::Buffer result_buffer(context, result_floats * sizeof(float),
+                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    std::vector<vulkan::Binding> bindings = {vulkan::Binding::storage_buffer(0, query_buffer),
+                                             vulkan::Binding::storage_buffer(1, result_buffer),
+                                             vulkan::Binding::sampled_image(2, lut),
+                                             vulkan::Binding::separate_sampler(3, sampler),
+                                             vulkan::Binding::sampled_image(4, coefficient_table)};
+    if (with_ltc) bindings.push_back(vulkan::Binding::sampled_image(5, ltc));
+    const vulkan::ComputeKernel kernel(context, module, bindings);
+    kernel.dispatch(static_cast<std::uint32_t>(query_count / kWorkgroupSize));
+    return result_buffer.read<float>(result_floats);
+  }
 };
 
 }  // namespace matc

@@ -44,6 +44,10 @@ Lut stored_as(Lut lut, LutPrecision precision);
 // half precision when `precision` is f16, so they equal what the texture formats store).
 std::string encode_lut(const BakedLut& baked, LutFormat format, LutPrecision precision);
 
+// The "layout" of a manifest for a table on the preintegrated table's axes (rows roughness,
+// columns sqrt(NdotV)) with `channels` floats per texel: the LUT's and the LTC table's.
+nlohmann::ordered_json preintegrated_axes_layout(std::string_view channels);
+
 // What a renderer needs besides the texels: axes, texel-centre convention, energy tables.
 nlohmann::ordered_json lut_manifest(const BakedLut& baked, LutFormat format,
                                     LutPrecision precision);

@@ -20,10 +20,9 @@
 
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/lut.h"
+#include "matc/runtime/vec3.h"
 
 namespace matc::runtime {
-
-using Vec3 = std::array<double, 3>;
 
 inline constexpr std::size_t kLtcChannels = 4;  // a, b, c, d per texel
 

@@ -1,0 +1,62 @@
+// What the comparison render (render.cpp) and the area-light render (area_light_render.cpp)
+// share: a device with our table, the ComparisonLobes table, the sampler, the material's exact
+// curve as a buffer, and a full-screen pass of a material's fragment shader whose methods are
+// the Estimate slots of panels.h.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "matc/compile.h"
+#include "matc/emit/build.h"
+#include "matc/lut/comparison_lobes.h"
+#include "matc/vulkan/buffer.h"
+#include "matc/vulkan/image.h"
+#include "matc/vulkan/sampler.h"
+#include "panels.h"
+
+namespace matc::render {
+
+// A material's fragment shader: comparison_render_source or area_light_render_source.
+using MaterialRenderSource = std::string (*)(const Build& build, const CompiledMaterial& compiled,
+                                             std::size_t curve_size, std::uint32_t width,
+                                             std::uint32_t height);
+
+class MaterialRenderer {
+ public:
+  // Bindings: 0 our table, 1 the ComparisonLobes table, 2 the sampler, 3 the exact curve, and with
+  // `with_ltc` 4 the LTC table.
+  MaterialRenderer(const RenderSettings& settings, const BuildOptions& options,
+                   MaterialRenderSource source, std::string fragment_name, bool with_ltc);
+
+  const vulkan::Context& context() const { return context_; }
+  runtime::BasisView basis() const { return build_.basis(); }
+
+  // The material file compiled against this renderer's basis; its diagnostics on standard error,
+  // nothing for an invalid file.
+  std::optional<CompiledMaterial> compile(const std::string& file) const;
+
+  // Every estimate of one material, linear RGB, indexed by Estimate.
+  std::array<Panel, kEstimateCount> render(const CompiledMaterial& compiled);
+
+ private:
+  RenderSettings settings_;
+  MaterialRenderSource source_;
+  std::string fragment_name_;
+  Build build_;
+  vulkan::Context context_;
+  ComparisonLobes lobes_;
+  Lut lobe_lut_;
+  std::uint32_t table_size_;
+  vulkan::Image ours_table_;
+  vulkan::Image lobe_table_;
+  std::optional<vulkan::Image> ltc_table_;
+  vulkan::LutSampler sampler_;
+  vulkan::Buffer curve_;
+  SpirvWords vertex_;
+};
+
+}  // namespace matc::render
