@@ -4,6 +4,7 @@
 // coefficients from the coefficient table at run time, and a textured metal's maps baked by the
 // build (matc_add_baked_textures) into coefficient textures. Exits non-zero if any check fails.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -22,6 +23,8 @@
 #include "matc/material/parse.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/fresnel.h"
+#include "matc/runtime/ltc.h"
+#include "matc/runtime/lut.h"
 #include "matc/spirv/linkage.h"
 #include "matc/spirv/shader_compiler.h"
 #include "matc/spirv/spirv_tools.h"
@@ -83,7 +86,9 @@ float half_to_float(std::uint16_t h) {
                               : std::ldexp(static_cast<float>(mantissa | 0x400), exponent - 25);
   return (h & 0x8000) ? -magnitude : magnitude;
 }
-std::vector<float> ktx2_level(const char* path, std::uint32_t level) {
+// Level `level` of a KTX2 file's RGBA texture, half (matc bake's default) or 32-bit float (the
+// tables matc writes): the level index holds each level's offset and length.
+std::vector<float> ktx2_level(const char* path, std::uint32_t level, bool half = true) {
   const std::string bytes = file_bytes(path);
   std::uint64_t offset = 0, length = 0;
   const std::size_t index = 80 + 24 * static_cast<std::size_t>(level);
@@ -91,8 +96,12 @@ std::vector<float> ktx2_level(const char* path, std::uint32_t level) {
   std::memcpy(&offset, bytes.data() + index, 8);
   std::memcpy(&length, bytes.data() + index + 8, 8);
   if (offset + length > bytes.size()) return {};
-  std::vector<float> texels(length / 2);
+  std::vector<float> texels(length / (half ? 2 : 4));
   for (std::size_t i = 0; i < texels.size(); ++i) {
+    if (!half) {
+      std::memcpy(&texels[i], bytes.data() + offset + 4 * i, 4);
+      continue;
+    }
     std::uint16_t h = 0;
     std::memcpy(&h, bytes.data() + offset + 2 * i, 2);
     texels[i] = half_to_float(h);
@@ -182,6 +191,28 @@ void main() {
     // differ by about half an f16 step.
     expect(!top.empty() && std::abs(top[0] - mean) < 1e-3,
            "its 1 x 1 mip holds the mean coefficient of level 0 (the average curve)");
+  }
+
+  // 6. An area light: the preintegrated table and the LTC table as the build wrote them (RGBA32F
+  //    KTX2), and gold's radiance under a quad light as matc_ltc_quad_light computes it in a
+  //    shader (docs/ltc.md). Vertices in the shading frame: normal +z, the view in the xz-plane.
+  {
+    const std::vector<float> lut_texels = ktx2_level(MATC_LUT_KTX2, 0, /*half=*/false);
+    const std::vector<float> ltc_texels = ktx2_level(MATC_LTC_KTX2, 0, /*half=*/false);
+    const auto lut_size = static_cast<std::size_t>(std::lround(std::sqrt(lut_texels.size() / 4)));
+    const auto ltc_size = static_cast<std::size_t>(std::lround(std::sqrt(ltc_texels.size() / 4)));
+    const matc::runtime::LutView lut{lut_size, lut_texels};
+    const matc::runtime::LtcTableView ltc{ltc_size, ltc_texels};
+    expect(ltc_size == matc::runtime::shipped_ltc_table().size &&
+               std::equal(ltc_texels.begin(), ltc_texels.end(),
+                          matc::runtime::shipped_ltc_table().texels.begin()),
+           "matc_ltc.ktx2 holds the runtime's LTC table");
+    const std::array<matc::runtime::Vec3, 4> quad = {
+        {{-1.0, -1.0, 2.0}, {1.0, -1.0, 2.0}, {1.0, 1.0, 2.0}, {-1.0, 1.0, 2.0}}};
+    const matc::runtime::Rgb radiance =
+        matc::runtime::polygon_light_ltc(gold, lut, ltc, 0.8, 0.3, quad);
+    expect(radiance[0] > radiance[2] && radiance[2] > 0.0 && radiance[0] < 1.0,
+           "gold under a quad light: reddish-yellow, between 0 and the light's radiance");
   }
 
   std::printf("%s\n",
