@@ -1,6 +1,8 @@
 // DeviceValidator: generated kernels on the Vulkan device against the CPU runtime.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "matc/compile.h"
 #include "matc/material/parse.h"
 #include "matc/validate/device_validation.h"
@@ -132,13 +134,18 @@ TEST(DeviceValidation, AreaLightsMatchTheCpuRuntime) {
   EXPECT_TRUE(validator.layer_messages().empty());
 }
 
-TEST(DeviceValidation, AreaLightQueriesCoverQuadsDisksAndTheHorizon) {
+TEST(DeviceValidation, AreaLightQueriesCoverQuadsDisksSpheresAndTheHorizon) {
   const auto queries = matc::area_light_validation_queries();
   ASSERT_EQ(queries.size(), 2048u);
-  std::size_t disks = 0, crossing = 0;
+  std::size_t disks = 0, spheres = 0, crossing = 0;
   for (const matc::AreaLightQuery& q : queries) {
-    disks += q.disk ? 1 : 0;
-    if (q.disk) continue;
+    disks += q.kind == matc::AreaLightQuery::Kind::disk ? 1 : 0;
+    spheres += q.kind == matc::AreaLightQuery::Kind::sphere ? 1 : 0;
+    if (q.kind == matc::AreaLightQuery::Kind::sphere) {
+      const auto& c = q.points[0];
+      EXPECT_LT(q.radius, std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]));
+    }
+    if (q.kind != matc::AreaLightQuery::Kind::quad) continue;
     // A corner below the shading point's horizon: N . p < 0.
     bool below = false, above = false;
     for (const auto& p : q.points) {
@@ -148,7 +155,8 @@ TEST(DeviceValidation, AreaLightQueriesCoverQuadsDisksAndTheHorizon) {
     }
     crossing += below && above ? 1 : 0;
   }
-  EXPECT_EQ(disks, 512u);
+  EXPECT_EQ(disks, 256u);
+  EXPECT_EQ(spheres, 256u);
   EXPECT_GT(crossing, 100u);
 }
 

@@ -91,6 +91,15 @@ TEST(LtcIntegral, DiskPolygonHasTheDisksFormFactor) {
   }
 }
 
+TEST(LtcIntegral, SphereLightFillsTheSpheresCone) {
+  // A sphere of radius R at distance 1 on the normal: the cone's form factor is R^2.
+  for (const double radius : {0.1, 0.5, 0.9}) {
+    const auto disk = matc::runtime::sphere_light_polygon({0, 0, 0}, {0, 0, 1}, radius);
+    EXPECT_NEAR(matc::runtime::clipped_polygon_form_factor(disk), radius * radius,
+                2e-3 * radius * radius);
+  }
+}
+
 // The LTC times the albedo against the GGX lobe's own integral over a light (F = 1), where the
 // fit is good (the per-texel quality is docs/ltc.md's).
 TEST(LtcFit, QuadLightIntegralFollowsTheLobe) {

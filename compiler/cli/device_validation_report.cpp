@@ -76,6 +76,22 @@ bool validate_coefficient_table_and_report(const DeviceValidator& validator) {
   return report_layer_messages(validator, messages_before, "coefficient table") && result.passed();
 }
 
+namespace {
+
+const char* kind_name(AreaLightQuery::Kind kind) {
+  switch (kind) {
+    case AreaLightQuery::Kind::quad:
+      return "quad";
+    case AreaLightQuery::Kind::disk:
+      return "disk";
+    case AreaLightQuery::Kind::sphere:
+      return "sphere";
+  }
+  return "";
+}
+
+}  // namespace
+
 bool validate_area_lights_and_report(const DeviceValidator& validator) {
   const std::size_t messages_before = validator.layer_messages().size();
   const AreaLightValidation result = validator.validate_area_lights();
@@ -85,8 +101,8 @@ bool validate_area_lights_and_report(const DeviceValidator& validator) {
     if (found.max_abs <= tolerance) return fmt::format("  {} {:.2e}", label, found.max_abs);
     const AreaLightQuery& q = queries[found.query];
     return fmt::format("  {} {:.2e} > {:.0e} at light {} (a {}), NdotV {:.4f}, roughness {:.4f}",
-                       label, found.max_abs, tolerance, found.query, q.disk ? "disk" : "quad",
-                       q.ndotv, q.roughness);
+                       label, found.max_abs, tolerance, found.query, kind_name(q.kind), q.ndotv,
+                       q.roughness);
   };
   for (const AreaLightPathValidation& path : result.paths) {
     std::string line = fmt::format("{:<20} {}", "area lights (LTC)",

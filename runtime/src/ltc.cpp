@@ -99,6 +99,15 @@ std::array<Vec3, kDiskLightSides> disk_light_polygon(const Vec3& centre, const V
   return polygon;
 }
 
+std::array<Vec3, kDiskLightSides> sphere_light_polygon(const Vec3& point, const Vec3& centre,
+                                                       double radius) {
+  const Vec3 towards = minus(point, centre);
+  const double distance = length(towards);
+  const double disk_radius =
+      radius * distance / std::sqrt(std::max(distance * distance - radius * radius, 1e-30));
+  return disk_light_polygon(centre, towards, disk_radius);
+}
+
 Rgb polygon_light_ltc(const Coefficients& coefficients, const LutView& lut, const LtcTableView& ltc,
                       double ndotv, double roughness, std::span<const Vec3> vertices) {
   const double integral = ltc_polygon_integral(sample_ltc(ltc, ndotv, roughness), vertices);

@@ -113,6 +113,15 @@ float matc_ltc_disk_integral(mat3 transform, vec3 P, vec3 centre, vec3 normal, f
   return matc_ltc_polygon_result(polygon);
 }
 
+// A sphere light (centre, radius; P outside it): the disk at its centre facing P that fills the
+// same cone of directions, radius * d / sqrt(d^2 - radius^2) for the distance d.
+float matc_ltc_sphere_integral(mat3 transform, vec3 P, vec3 centre, float radius) {
+  vec3 towards = P - centre;
+  float d2 = dot(towards, towards);
+  float disk_radius = radius * sqrt(d2 / max(d2 - radius * radius, 1e-30));
+  return matc_ltc_disk_integral(transform, P, centre, towards, disk_radius);
+}
+
 // Radiance from a quad light of radiance 1: bbar from matc_lut and ltc from matc_ltc, both at
 // their texcoords for (NdotV, roughness).
 vec3 matc_ltc_quad_light(MatcFresnelCoefficients c, vec4 bbar, vec4 ltc, vec3 N, vec3 V, vec3 P,
@@ -125,5 +134,12 @@ vec3 matc_ltc_quad_light(MatcFresnelCoefficients c, vec4 bbar, vec4 ltc, vec3 N,
 vec3 matc_ltc_disk_light(MatcFresnelCoefficients c, vec4 bbar, vec4 ltc, vec3 N, vec3 V, vec3 P,
                          vec3 centre, vec3 normal, float radius) {
   return matc_ltc_disk_integral(matc_ltc_transform(N, V, ltc), P, centre, normal, radius) *
+         matc_fresnel_preintegrated(c, bbar);
+}
+
+// ... and from a sphere light of radiance 1.
+vec3 matc_ltc_sphere_light(MatcFresnelCoefficients c, vec4 bbar, vec4 ltc, vec3 N, vec3 V,
+                           vec3 P, vec3 centre, float radius) {
+  return matc_ltc_sphere_integral(matc_ltc_transform(N, V, ltc), P, centre, radius) *
          matc_fresnel_preintegrated(c, bbar);
 }

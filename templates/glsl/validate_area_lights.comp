@@ -1,8 +1,8 @@
 #version 450
 // matc {{version}}: the compute kernel that checks the area-light functions on a Vulkan device
 // against the CPU runtime. Each query is eight vec4: (r.rgb, NdotV), (g.rgb, roughness),
-// (N, kind), (V, radius), then a quad's four corners (kind 0) or a disk's centre and normal
-// (kind 1), world space, shading point at the origin; it writes the radiance and I_ltc.
+// (N, kind), (V, radius), then a quad's four corners (kind 0), a disk's centre and normal
+// (kind 1) or a sphere's centre (kind 2), world space, shading point at the origin; it writes the radiance and I_ltc.
 {{library}}
 layout(local_size_x = 64) in;
 layout(std430, set = 0, binding = 0) readonly buffer MatcQueries { vec4 matc_queries[]; };
@@ -35,9 +35,12 @@ void main() {
     integral =
         matc_ltc_quad_integral(matc_ltc_transform(N, V, ltc), P, q[4].xyz, q[5].xyz, q[6].xyz,
                                q[7].xyz);
-  } else {
+  } else if (q[2].w == 1.0) {
     radiance = matc_ltc_disk_light(c, bbar, ltc, N, V, P, q[4].xyz, q[5].xyz, q[3].w);
     integral = matc_ltc_disk_integral(matc_ltc_transform(N, V, ltc), P, q[4].xyz, q[5].xyz, q[3].w);
+  } else {
+    radiance = matc_ltc_sphere_light(c, bbar, ltc, N, V, P, q[4].xyz, q[3].w);
+    integral = matc_ltc_sphere_integral(matc_ltc_transform(N, V, ltc), P, q[4].xyz, q[3].w);
   }
   matc_results[i] = vec4(radiance, integral);
 }

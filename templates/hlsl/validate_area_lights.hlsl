@@ -1,7 +1,7 @@
 // matc {{version}}: the compute kernel that checks the area-light functions on a Vulkan device
 // against the CPU runtime. Each query is eight float4: (r.rgb, NdotV), (g.rgb, roughness),
-// (N, kind), (V, radius), then a quad's four corners (kind 0) or a disk's centre and normal
-// (kind 1), world space, shading point at the origin; it writes the radiance and I_ltc.
+// (N, kind), (V, radius), then a quad's four corners (kind 0), a disk's centre and normal
+// (kind 1) or a sphere's centre (kind 2), world space, shading point at the origin; it writes the radiance and I_ltc.
 {{library}}
 [[vk::binding(0, 0)]] StructuredBuffer<float4> matc_queries : register(t0);
 [[vk::binding(1, 0)]] RWStructuredBuffer<float4> matc_results : register(u1);
@@ -31,10 +31,13 @@ void main(uint3 id : SV_DispatchThreadID) {
     radiance = matc_ltc_quad_light(c, bbar, ltc, N, V, P, q[4].xyz, q[5].xyz, q[6].xyz, q[7].xyz);
     integral = matc_ltc_quad_integral(matc_ltc_transform(N, V, ltc), P, q[4].xyz, q[5].xyz,
                                       q[6].xyz, q[7].xyz);
-  } else {
+  } else if (q[2].w == 1.0) {
     radiance = matc_ltc_disk_light(c, bbar, ltc, N, V, P, q[4].xyz, q[5].xyz, q[3].w);
     integral =
         matc_ltc_disk_integral(matc_ltc_transform(N, V, ltc), P, q[4].xyz, q[5].xyz, q[3].w);
+  } else {
+    radiance = matc_ltc_sphere_light(c, bbar, ltc, N, V, P, q[4].xyz, q[3].w);
+    integral = matc_ltc_sphere_integral(matc_ltc_transform(N, V, ltc), P, q[4].xyz, q[3].w);
   }
   matc_results[i] = float4(radiance, integral);
 }

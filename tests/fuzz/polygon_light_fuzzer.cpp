@@ -1,7 +1,8 @@
 // libFuzzer target for area lights: matc eval's --quad-light parser (and the polygon checks behind
 // it) on arbitrary text, then what the tools do with a light it accepts: the clipped form factor
-// and the LTC integral stay finite and within [0, 1], the disk polygon and the Monte-Carlo
-// reference stay finite. Built with -DMATC_BUILD_FUZZERS=ON (clang).
+// and the LTC integral stay finite and within [0, 1], the disk and sphere polygons and the
+// Monte-Carlo reference stay finite. Built with -DMATC_BUILD_FUZZERS=ON (clang).
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -45,6 +46,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (std::hypot(v[1][0], v[1][1], v[1][2]) > 0.0) {
     const auto disk = matc::runtime::disk_light_polygon(v[0], v[1], std::abs(v[2][0]));
     check_unit(matc::runtime::clipped_polygon_form_factor(disk));
+  }
+  // ... and as a sphere's centre, with a radius inside its distance.
+  const double distance = std::hypot(v[0][0], v[0][1], v[0][2]);
+  if (distance > 0.0) {
+    const double radius = distance * std::min(std::abs(v[2][1]), 0.99);
+    check_unit(matc::runtime::clipped_polygon_form_factor(
+        matc::runtime::sphere_light_polygon({0.0, 0.0, 0.0}, v[0], radius)));
   }
   return 0;
 }

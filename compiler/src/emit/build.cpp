@@ -96,8 +96,10 @@ std::vector<std::string> shared_library_exports(bool embedded_lut) {
                                     "matc_ltc_transform",
                                     "matc_ltc_quad_integral",
                                     "matc_ltc_disk_integral",
+                                    "matc_ltc_sphere_integral",
                                     "matc_ltc_quad_light",
-                                    "matc_ltc_disk_light"};
+                                    "matc_ltc_disk_light",
+                                    "matc_ltc_sphere_light"};
   if (embedded_lut) names.emplace_back("matc_preintegrated_basis_embedded");
   return names;
 }

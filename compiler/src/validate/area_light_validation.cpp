@@ -87,9 +87,14 @@ std::vector<AreaLightQuery> area_light_validation_queries() {
                       local_centre[0] * helper[2] + local_centre[1] * cross(n, helper)[2] +
                           local_centre[2] * n[2]};
     const Vec3 facing = direction(unit(), unit());
-    q.disk = queries.size() % 4 == 3;
-    if (q.disk) {
-      q.radius = static_cast<float>(0.05 + 0.95 * unit());
+    // Six quads, then a disk and a sphere, in every eight lights.
+    const std::size_t slot = queries.size() % 8;
+    q.kind = slot == 6   ? AreaLightQuery::Kind::disk
+             : slot == 7 ? AreaLightQuery::Kind::sphere
+                         : AreaLightQuery::Kind::quad;
+    if (q.kind != AreaLightQuery::Kind::quad) {
+      // A sphere stays clear of the shading point: its radius under 0.8 of the distance.
+      q.radius = static_cast<float>(std::min(0.05 + 0.95 * unit(), 0.8 * distance));
       q.points[0] = as_float3(centre);
       q.points[1] = as_float3(facing);
     } else {
@@ -107,7 +112,7 @@ std::vector<AreaLightQuery> area_light_validation_queries() {
       }
     }
     // Only lights the tools accept (above the horizon in part, not edge-on, convex).
-    if (!q.disk) {
+    if (q.kind == AreaLightQuery::Kind::quad) {
       const ShadingFrame frame(as_vec3(q.normal), as_vec3(q.view));
       std::array<Vec3, 4> local{};
       for (std::size_t i = 0; i < 4; ++i)
@@ -139,7 +144,8 @@ AreaLightPathValidation DeviceValidator::run_area_lights(ShaderLanguage language
     const auto& r = q.reflectivity;
     const auto& g = q.edge_tint;
     packed.insert(packed.end(), {r[0], r[1], r[2], q.ndotv, g[0], g[1], g[2], q.roughness});
-    packed.insert(packed.end(), {q.normal[0], q.normal[1], q.normal[2], q.disk ? 1.0f : 0.0f});
+    packed.insert(packed.end(),
+                  {q.normal[0], q.normal[1], q.normal[2], static_cast<float>(q.kind)});
     packed.insert(packed.end(), {q.view[0], q.view[1], q.view[2], q.radius});
     for (const auto& p : q.points)
       packed.insert(packed.end(), {p[0], p[1], p[2], 0.0f});
@@ -158,9 +164,13 @@ AreaLightPathValidation DeviceValidator::run_area_lights(ShaderLanguage language
     const AreaLightQuery& q = queries[i];
     const ShadingFrame frame(as_vec3(q.normal), as_vec3(q.view));
     std::vector<Vec3> local;
-    if (q.disk) {
+    if (q.kind == AreaLightQuery::Kind::disk) {
       for (const Vec3& p :
            runtime::disk_light_polygon(as_vec3(q.points[0]), as_vec3(q.points[1]), q.radius))
+        local.push_back(frame.local(p));
+    } else if (q.kind == AreaLightQuery::Kind::sphere) {
+      for (const Vec3& p :
+           runtime::sphere_light_polygon({0.0, 0.0, 0.0}, as_vec3(q.points[0]), q.radius))
         local.push_back(frame.local(p));
     } else {
       for (const auto& p : q.points)

@@ -93,8 +93,8 @@ struct TableValidation {
   bool passed() const;
 };
 
-// The area-light functions (docs/ltc.md): per query a quad or disk light in world space around a
-// shading point at the origin, a shading frame (N, V) turned by a random rotation, and
+// The area-light functions (docs/ltc.md): per query a quad, disk or sphere light in world space
+// around a shading point at the origin, a shading frame (N, V) turned by a random rotation, and
 // coefficients from the coefficient table. area_light_validation_queries() draws lights above,
 // across and partly below the horizon, at (NdotV, roughness) over [0, 1]^2.
 struct AreaLightQuery {
@@ -104,9 +104,11 @@ struct AreaLightQuery {
   float roughness = 0.0f;
   std::array<float, 3> normal{};
   std::array<float, 3> view{};
-  bool disk = false;
-  float radius = 0.0f;                           // disks
-  std::array<std::array<float, 3>, 4> points{};  // a quad's corners, or a disk's centre, normal
+  enum class Kind { quad, disk, sphere };
+  Kind kind = Kind::quad;
+  float radius = 0.0f;  // disks and spheres
+  // A quad's corners; a disk's centre and normal; a sphere's centre.
+  std::array<std::array<float, 3>, 4> points{};
 };
 std::vector<AreaLightQuery> area_light_validation_queries();
 

@@ -68,6 +68,13 @@ inline constexpr std::size_t kDiskLightSides = 16;
 std::array<Vec3, kDiskLightSides> disk_light_polygon(const Vec3& centre, const Vec3& normal,
                                                      double radius);
 
+// A sphere light as the shaders take it: seen from `point`, a sphere of `radius` at `centre` fills
+// the same cone of directions as the disk at its centre facing the point with radius
+// radius d / sqrt(d^2 - radius^2), d the distance to the centre; that disk's polygon. The point
+// must lie outside the sphere.
+std::array<Vec3, kDiskLightSides> sphere_light_polygon(const Vec3& point, const Vec3& centre,
+                                                       double radius);
+
 // What the shaders compute for a polygonal light of radiance 1 (vertices in the shading frame):
 // I_ltc(polygon) * Fbar per channel, Fbar = sum_i c_i bbar_i from the preintegrated table.
 Rgb polygon_light_ltc(const Coefficients& coefficients, const LutView& lut, const LtcTableView& ltc,
