@@ -39,7 +39,8 @@ int main(int argc, char** argv) {
   app.add_flag("--MD", compile.write_depfile, "The same, as DIR/matc.d (also spelled -MD)");
   app.add_option("--emit", compile.emit,
                  "Outputs to write, comma-separated (default: all): shader snippets, SPIR-V, "
-                 "C headers, JSON manifests, the LUT, the coefficient table of textured metals")
+                 "C headers, JSON manifests, the LUT, the coefficient table of textured metals, "
+                 "the LTC table of area lights")
       ->check(CLI::Validator(
           [](std::string& list) -> std::string {
             for (const std::string& name : split_list(list)) {
@@ -53,7 +54,8 @@ int main(int argc, char** argv) {
           "LIST", "output kinds"));
   app.add_option(
          "--lut", compile.lut_format,
-         "File format of the tables DIR/matc_lut.<ext> and DIR/matc_coefficient_table.<ext>")
+         "File format of the tables DIR/matc_lut.<ext>, DIR/matc_coefficient_table.<ext> and "
+         "DIR/matc_ltc.<ext>")
       ->capture_default_str()
       ->check(CLI::IsMember(matc::lut_format_names()));
   app.add_flag("--embed-lut", compile.embed_lut,
