@@ -49,12 +49,31 @@ void add_direct_fresnel(const EvalOptions& options, const ReflectanceCurve& curv
   out["F_exact"] = std::move(exact);
 }
 
-// Fbar exactly as a renderer samples the table it loads; the reference integrates the exact curve
-// directly, without basis or table.
-void add_preintegrated_fresnel(const EvalOptions& options, const ReflectanceCurve& curve,
-                               const LabelledCoefficients& coefficients,
-                               const runtime::BasisView& basis, ordered_json& out) {
-  const Lut lut = stored_as(preintegrate_lut(basis, options.lut.bake), precision_of(options.lut));
+// What Fbar and the quad light both read, made once: the table as a renderer loads it, the exact
+// curve tabulated, and its split-sum integral at each (NdotV, roughness), without basis or table.
+struct SplitSumInputs {
+  Lut lut;
+  TabulatedCurve tabulated;
+  std::vector<runtime::Rgb> fbar_reference;
+};
+
+SplitSumInputs split_sum_inputs(const EvalOptions& options, const ReflectanceCurve& curve,
+                                const runtime::BasisView& basis) {
+  SplitSumInputs inputs{
+      stored_as(preintegrate_lut(basis, options.lut.bake), precision_of(options.lut)),
+      TabulatedCurve(curve),
+      {}};
+  for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
+    inputs.fbar_reference.push_back(
+        SplitSumEstimator(options.ndotv[i], options.roughness[i]).integrate(inputs.tabulated));
+  }
+  return inputs;
+}
+
+// Fbar exactly as a renderer samples the table it loads, beside the exact split-sum integral.
+void add_preintegrated_fresnel(const EvalOptions& options, const SplitSumInputs& inputs,
+                               const LabelledCoefficients& coefficients, ordered_json& out) {
+  const Lut& lut = inputs.lut;
   out["ndotv"] = options.ndotv;
   out["roughness"] = options.roughness;
   out["lut"] = {{"size", lut.size}, {"samples", lut.samples}, {"precision", options.lut.precision}};
@@ -66,26 +85,21 @@ void add_preintegrated_fresnel(const EvalOptions& options, const ReflectanceCurv
     }
     out["Fbar" + label] = std::move(fbar);
   }
-  const TabulatedCurve tabulated(curve);
-  ordered_json reference = ordered_json::array();
-  for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
-    reference.push_back(
-        SplitSumEstimator(options.ndotv[i], options.roughness[i]).integrate(tabulated));
-  }
-  out["Fbar_reference"] = std::move(reference);
+  out["Fbar_reference"] = inputs.fbar_reference;
 }
 
 // A quad light's radiance at each (NdotV, roughness): LTC times Fbar as the shaders compute it
 // (ours, per set of coefficients), LTC times Schlick's split sum, LTC times the exact
 // preintegrated Fresnel (LTC's own error alone), and the exact integral.
 void add_quad_light(const EvalOptions& options, const std::vector<Vec3>& quad,
-                    const ReflectanceCurve& curve, const LabelledCoefficients& coefficients,
-                    const runtime::BasisView& basis, ordered_json& out) {
-  const Lut lut = stored_as(preintegrate_lut(basis, options.lut.bake), precision_of(options.lut));
+                    const ReflectanceCurve& curve, const SplitSumInputs& inputs,
+                    const LabelledCoefficients& coefficients, const runtime::BasisView& basis,
+                    ordered_json& out) {
+  const Lut& lut = inputs.lut;
+  const TabulatedCurve& tabulated = inputs.tabulated;
   const ComparisonLobes lobes(basis.samples());
   const Lut schlick_lut = preintegrate_lut(lobes.view(), options.lut.bake);
   const runtime::LtcTableView ltc = runtime::shipped_ltc_table();
-  const TabulatedCurve tabulated(curve);
   const runtime::Rgb f0 = curve.at(1.0);
   ordered_json vertices = ordered_json::array();
   for (const Vec3& vertex : quad)
@@ -105,7 +119,7 @@ void add_quad_light(const EvalOptions& options, const std::vector<Vec3>& quad,
                                                    roughness, quad));
     }
     const auto lobe_values = runtime::sample_lut(schlick_lut.view(), ndotv, roughness);
-    const runtime::Rgb fbar_exact = SplitSumEstimator(ndotv, roughness).integrate(tabulated);
+    const runtime::Rgb& fbar_exact = inputs.fbar_reference[i];
     runtime::Rgb with_schlick{}, with_exact{};
     for (std::size_t c = 0; c < 3; ++c) {
       with_schlick[c] = integral * (f0[c] * lobe_values[0] + (1.0 - f0[c]) * lobe_values[1]);
@@ -185,8 +199,11 @@ int run_eval_artistic(const EvalOptions& options) {
   out["coefficient_table"] = {{"size", table.size()},
                               {"precision", options.lut.coefficient_table_precision}};
   if (!options.mu.empty()) add_direct_fresnel(options, curve, coefficients, out);
-  if (!options.ndotv.empty()) add_preintegrated_fresnel(options, curve, coefficients, basis, out);
-  if (quad) add_quad_light(options, *quad, curve, coefficients, basis, out);
+  if (!options.ndotv.empty()) {
+    const SplitSumInputs inputs = split_sum_inputs(options, curve, basis);
+    add_preintegrated_fresnel(options, inputs, coefficients, out);
+    if (quad) add_quad_light(options, *quad, curve, inputs, coefficients, basis, out);
+  }
   fmt::print("{}", format_json(out));
   return kExitSuccess;
 }
@@ -226,8 +243,11 @@ int run_eval(const EvalOptions& options) {
   out["name"] = parsed.material->name;
   out["basis"] = runtime::basis_name(basis.kind);
   if (!options.mu.empty()) add_direct_fresnel(options, *curve, coefficients, out);
-  if (!options.ndotv.empty()) add_preintegrated_fresnel(options, *curve, coefficients, basis, out);
-  if (quad) add_quad_light(options, *quad, *curve, coefficients, basis, out);
+  if (!options.ndotv.empty()) {
+    const SplitSumInputs inputs = split_sum_inputs(options, *curve, basis);
+    add_preintegrated_fresnel(options, inputs, coefficients, out);
+    if (quad) add_quad_light(options, *quad, *curve, inputs, coefficients, basis, out);
+  }
   fmt::print("{}", format_json(out));
   return kExitSuccess;
 }
