@@ -26,34 +26,15 @@
 
 namespace {
 
+using matc::facing_square;
 using matc::Vec3;
 
 constexpr std::array kNdotV = {0.05, 0.15, 0.3, 0.45, 0.6, 0.75, 0.9, 1.0};
 constexpr std::array kRoughness = {0.1, 0.25, 0.4, 0.55, 0.7, 0.9};
 
-// A square of half-size `half` at distance `distance` along `direction`, facing the point.
-std::vector<Vec3> facing_square(const Vec3& direction, double distance, double half) {
-  const double length = std::hypot(direction[0], direction[1], direction[2]);
-  const Vec3 w{direction[0] / length, direction[1] / length, direction[2] / length};
-  Vec3 u = std::abs(w[1]) < 0.9 ? Vec3{w[2], 0.0, -w[0]} : Vec3{1.0, 0.0, 0.0};
-  const double u_length = std::hypot(u[0], u[1], u[2]);
-  for (double& x : u)
-    x /= u_length;
-  const Vec3 v{w[1] * u[2] - w[2] * u[1], w[2] * u[0] - w[0] * u[2], w[0] * u[1] - w[1] * u[0]};
-  std::vector<Vec3> square;
-  for (const auto& [s, t] :
-       std::array<std::array<double, 2>, 4>{{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}}) {
-    Vec3 p{};
-    for (std::size_t k = 0; k < 3; ++k)
-      p[k] = distance * w[k] + half * (s * u[k] + t * v[k]);
-    square.push_back(p);
-  }
-  return square;
-}
-
 // The grid's lights for a view cosine: towards the mirror direction (the highlight), overhead,
 // to the side, and across the horizon on the reflection side.
-std::vector<std::vector<Vec3>> lights_for(double ndotv) {
+std::vector<std::array<Vec3, 4>> lights_for(double ndotv) {
   const double sine = std::sqrt(1.0 - ndotv * ndotv);
   return {facing_square({-sine, 0.0, ndotv}, 2.0, 0.5), facing_square({0.0, 0.0, 1.0}, 2.0, 0.75),
           facing_square({0.0, 1.0, 0.5}, 1.5, 0.5), facing_square({-1.0, 0.0, 0.05}, 2.0, 0.6)};

@@ -10,6 +10,7 @@
 #include "lut/header_arrays.h"
 #include "matc/ltc/area_light_reference.h"
 #include "matc/ltc/ggx_lobe.h"
+#include "matc/ltc/polygon_light.h"
 #include "matc/version.h"
 #include "nelder_mead.h"
 #include "parallel_rows.h"
@@ -236,27 +237,6 @@ LtcTable fit_ltc_table(const LtcFitOptions& options, std::size_t first_row, std:
   return table;
 }
 
-namespace {
-
-// A square of half-size 0.5 at distance 2 along `direction`, facing the shading point.
-std::array<Vec3, 4> facing_square(const Vec3& direction) {
-  const double length = std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
-                                  direction[2] * direction[2]);
-  const Vec3 w{direction[0] / length, direction[1] / length, direction[2] / length};
-  // u in the xz-plane perpendicular to w, v = (0, 1, 0).
-  const Vec3 u{w[2], 0.0, -w[0]};
-  std::array<Vec3, 4> square{};
-  const std::array<std::array<double, 2>, 4> corners = {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}};
-  for (std::size_t i = 0; i < 4; ++i) {
-    for (std::size_t k = 0; k < 3; ++k)
-      square[i][k] = 2.0 * w[k] + 0.5 * corners[i][0] * u[k];
-    square[i][1] += 0.5 * corners[i][1];
-  }
-  return square;
-}
-
-}  // namespace
-
 std::vector<double> ltc_polygon_errors(const runtime::LtcTableView& table, std::size_t samples,
                                        unsigned threads) {
   const std::size_t size = table.size;
@@ -277,7 +257,7 @@ std::vector<double> ltc_polygon_errors(const runtime::LtcTableView& table, std::
         const double albedo = lobe.albedo(kLtcFitSamplesPerAxis);
         double worst = 0.0;
         for (const Vec3& direction : directions) {
-          const std::array<Vec3, 4> square = facing_square(direction);
+          const std::array<Vec3, 4> square = facing_square(direction, 2.0, 0.5);
           const double reference = integrate_polygon_light(lobe, square, one, samples).mean[0];
           const double ltc = runtime::ltc_polygon_integral(inverse, square);
           worst = std::max(worst, std::abs(albedo * ltc - reference) / albedo);

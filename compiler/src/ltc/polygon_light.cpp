@@ -122,4 +122,19 @@ std::string check_polygon_light(std::span<const Vec3> vertices) {
   return {};
 }
 
+std::array<Vec3, 4> facing_square(const Vec3& direction, double distance, double half_size) {
+  const Vec3 w = runtime::normalize(direction);
+  // u horizontal (in the xz-plane) unless w is nearly vertical, v = w x u.
+  const Vec3 u =
+      std::abs(w[1]) < 0.9 ? runtime::normalize({w[2], 0.0, -w[0]}) : Vec3{1.0, 0.0, 0.0};
+  const Vec3 v = cross(w, u);
+  std::array<Vec3, 4> square{};
+  constexpr std::array<std::array<double, 2>, 4> kCorners = {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}};
+  for (std::size_t i = 0; i < 4; ++i) {
+    for (std::size_t k = 0; k < 3; ++k)
+      square[i][k] = distance * w[k] + half_size * (kCorners[i][0] * u[k] + kCorners[i][1] * v[k]);
+  }
+  return square;
+}
+
 }  // namespace matc

@@ -3,6 +3,7 @@
 // radiance 1. Checked once at the edge so that integrators never meet a degenerate polygon.
 #pragma once
 
+#include <array>
 #include <span>
 #include <string>
 #include <string_view>
@@ -28,5 +29,10 @@ PolygonLightParse parse_polygon_light(std::string_view text, std::size_t vertex_
 // a non-convex or self-intersecting outline, the shading point in the light's plane, or every
 // vertex at or below the horizon.
 std::string check_polygon_light(std::span<const Vec3> vertices);
+
+// A square light of half-size `half_size` centred at `distance` along `direction` (any length),
+// facing the shading point, corners in order: the test lights of the fit's quality report and
+// the area-light study.
+std::array<Vec3, 4> facing_square(const Vec3& direction, double distance, double half_size);
 
 }  // namespace matc
