@@ -109,6 +109,48 @@ float light_hit(vec3 p, vec3 d) {
   return abs(s) <= 1.0 && abs(u) <= 1.0 ? t : 0.0;
 }
 
+// One pair of the reference's samples for the Hammersley point u: a point of the light's area (a
+// second point set, rotated by a fixed offset) and a visible normal, each weighted by the balance
+// heuristic; adds f cos / (p_light + p_lobe) with the exact Fresnel to `with_fresnel` and without
+// it to `lobe_only`. Shading frame (t, b, N), view in it.
+void add_light_samples(vec3 P, vec3 t, vec3 b, vec3 N, vec3 view, float alpha, vec2 u,
+                       inout vec3 with_fresnel, inout float lobe_only) {
+  vec2 w = fract(u + vec2(0.5, 0.25));
+  vec3 y = LIGHT_CENTRE + (2.0 * w.x - 1.0) * LIGHT_RIGHT + (2.0 * w.y - 1.0) * LIGHT_UP;
+  float distance = length(y - P);
+  vec3 l_world = (y - P) / distance;
+  vec3 l = vec3(dot(l_world, t), dot(l_world, b), dot(l_world, N));
+  vec2 value = lobe(view, l, alpha);
+  if (value.x > 0.0) {
+    float share = value.x / (light_pdf(l_world, distance) + value.y);
+    with_fresnel += share * exact_fresnel(dot(view, normalize(view + l)));
+    lobe_only += share;
+  }
+  vec3 h = sample_visible_normal(view, alpha, u);
+  l = reflect(-view, h);
+  l_world = l.x * t + l.y * b + l.z * N;
+  float hit = light_hit(P, l_world);
+  if (l.z > 0.0 && hit > 0.0) {
+    value = lobe(view, l, alpha);
+    float share = value.x / (light_pdf(l_world, hit) + value.y);
+    with_fresnel += share * exact_fresnel(dot(view, h));
+    lobe_only += share;
+  }
+}
+
+// One visible-normal sample of the split sum: adds scale F(V.H) G2/G1 to `fresnel_sum` and G2/G1
+// to `albedo_sum` (nothing below the horizon), with height-correlated Smith as the table is baked.
+void add_split_sum_sample(vec3 view, float alpha, float lambda_v, vec2 u, float scale,
+                          inout vec3 fresnel_sum, inout float albedo_sum) {
+  vec3 h = sample_visible_normal(view, alpha, u);
+  vec3 l = reflect(-view, h);
+  if (l.z > 0.0) {
+    float g2_over_g1 = (1.0 + lambda_v) / (1.0 + lambda_v + smith_lambda(l.z, alpha));
+    fresnel_sum += scale * exact_fresnel(dot(view, h)) * g2_over_g1;
+    albedo_sum += g2_over_g1;
+  }
+}
+
 void main() {
   vec2 ndc = (gl_FragCoord.xy / SIZE * 2.0 - 1.0) * vec2(1.0, -1.0);
   vec3 forward = normalize(TARGET - CAMERA);
@@ -151,76 +193,33 @@ void main() {
   vec3 sum = vec3(0.0);
   float weight = 1.0;
   uint last = panel.first_sample + panel.sample_count;
+  float lambda_v = smith_lambda(view.z, alpha);
   if (panel.method == 0) {
-    for (uint i = panel.first_sample; i < last; ++i) {
-      vec2 u = sample_point(i, panel.total_samples, shift);
-      // From the light's area (a second point set, rotated by a fixed offset).
-      vec2 w = fract(u + vec2(0.5, 0.25));
-      vec3 y = LIGHT_CENTRE + (2.0 * w.x - 1.0) * LIGHT_RIGHT + (2.0 * w.y - 1.0) * LIGHT_UP;
-      float distance = length(y - P);
-      vec3 l_world = (y - P) / distance;
-      vec3 l = vec3(dot(l_world, t), dot(l_world, b), dot(l_world, N));
-      vec2 value = lobe(view, l, alpha);
-      if (value.x > 0.0)
-        sum += value.x / (light_pdf(l_world, distance) + value.y) *
-               exact_fresnel(dot(view, normalize(view + l)));
-      // From the lobe.
-      vec3 h = sample_visible_normal(view, alpha, u);
-      l = reflect(-view, h);
-      l_world = l.x * t + l.y * b + l.z * N;
-      float hit = light_hit(P, l_world);
-      if (l.z > 0.0 && hit > 0.0) {
-        value = lobe(view, l, alpha);
-        sum += value.x / (light_pdf(l_world, hit) + value.y) * exact_fresnel(dot(view, h));
-      }
-    }
+    float unused = 0.0;
+    for (uint i = panel.first_sample; i < last; ++i)
+      add_light_samples(P, t, b, N, view, alpha, sample_point(i, panel.total_samples, shift), sum,
+                        unused);
     weight = float(panel.sample_count);
   } else if (panel.method == 1) {
     // Fbar / E from a fixed set of 256 visible normals (the same in every pass).
-    float lambda_v = smith_lambda(view.z, alpha);
     vec3 fresnel_sum = vec3(0.0);
     float albedo_sum = 0.0;
-    for (uint i = 0u; i < 256u; ++i) {
-      vec3 h = sample_visible_normal(view, alpha, sample_point(i, 256u, shift));
-      vec3 l = reflect(-view, h);
-      if (l.z > 0.0) {
-        float g2_over_g1 = (1.0 + lambda_v) / (1.0 + lambda_v + smith_lambda(l.z, alpha));
-        fresnel_sum += exact_fresnel(dot(view, h)) * g2_over_g1;
-        albedo_sum += g2_over_g1;
-      }
-    }
+    for (uint i = 0u; i < 256u; ++i)
+      add_split_sum_sample(view, alpha, lambda_v, sample_point(i, 256u, shift), 1.0, fresnel_sum,
+                           albedo_sum);
     vec3 average_fresnel = fresnel_sum / max(albedo_sum, 1e-8);
+    vec3 unused = vec3(0.0);
     float lobe_sum = 0.0;
-    for (uint i = panel.first_sample; i < last; ++i) {
-      vec2 u = sample_point(i, panel.total_samples, shift);
-      vec2 w = fract(u + vec2(0.5, 0.25));
-      vec3 y = LIGHT_CENTRE + (2.0 * w.x - 1.0) * LIGHT_RIGHT + (2.0 * w.y - 1.0) * LIGHT_UP;
-      float distance = length(y - P);
-      vec3 l_world = (y - P) / distance;
-      vec3 l = vec3(dot(l_world, t), dot(l_world, b), dot(l_world, N));
-      vec2 value = lobe(view, l, alpha);
-      if (value.x > 0.0) lobe_sum += value.x / (light_pdf(l_world, distance) + value.y);
-      vec3 h = sample_visible_normal(view, alpha, u);
-      l = reflect(-view, h);
-      l_world = l.x * t + l.y * b + l.z * N;
-      float hit = light_hit(P, l_world);
-      if (l.z > 0.0 && hit > 0.0) {
-        value = lobe(view, l, alpha);
-        lobe_sum += value.x / (light_pdf(l_world, hit) + value.y);
-      }
-    }
+    for (uint i = panel.first_sample; i < last; ++i)
+      add_light_samples(P, t, b, N, view, alpha, sample_point(i, panel.total_samples, shift),
+                        unused, lobe_sum);
     sum = lobe_sum * average_fresnel;
     weight = float(panel.sample_count);
   } else if (panel.method == 2) {
-    float lambda_v = smith_lambda(view.z, alpha);
-    for (uint i = panel.first_sample; i < last; ++i) {
-      vec3 h = sample_visible_normal(view, alpha, sample_point(i, panel.total_samples, shift));
-      vec3 l = reflect(-view, h);
-      if (l.z > 0.0) {
-        float g2_over_g1 = (1.0 + lambda_v) / (1.0 + lambda_v + smith_lambda(l.z, alpha));
-        sum += integral * exact_fresnel(dot(view, h)) * g2_over_g1;
-      }
-    }
+    float unused = 0.0;
+    for (uint i = panel.first_sample; i < last; ++i)
+      add_split_sum_sample(view, alpha, lambda_v, sample_point(i, panel.total_samples, shift),
+                           integral, sum, unused);
     weight = float(panel.sample_count);
   } else if (panel.method == 3) {
     vec4 lobes = textureLod(sampler2D(lobe_lut, matc_lut_sampler),
