@@ -40,19 +40,19 @@ std::vector<std::string_view> split(std::string_view text, char separator) {
 }  // namespace
 
 PolygonLightParse parse_polygon_light(std::string_view text, std::size_t vertex_count) {
-  PolygonLightParse result;
   const std::vector<std::string_view> vertices = split(text, ';');
   if (vertices.size() != vertex_count) {
-    result.error = fmt::format("expected {} vertices \"x,y,z\" separated by ';', got {}",
-                               vertex_count, vertices.size());
-    return result;
+    return {{},
+            fmt::format("expected {} vertices \"x,y,z\" separated by ';', got {}", vertex_count,
+                        vertices.size())};
   }
+  PolygonLightParse result;
   for (std::size_t v = 0; v < vertices.size(); ++v) {
     const std::vector<std::string_view> coordinates = split(vertices[v], ',');
     if (coordinates.size() != 3) {
-      result.error = fmt::format("vertex {} (\"{}\"): expected 3 numbers x,y,z, got {}", v + 1,
-                                 vertices[v], coordinates.size());
-      return {{}, result.error};
+      return {{},
+              fmt::format("vertex {} (\"{}\"): expected 3 numbers x,y,z, got {}", v + 1,
+                          vertices[v], coordinates.size())};
     }
     Vec3 vertex{};
     for (std::size_t c = 0; c < 3; ++c) {

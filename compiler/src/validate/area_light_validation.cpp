@@ -79,13 +79,12 @@ std::vector<AreaLightQuery> area_light_validation_queries() {
     // below the horizon, facing a random way.
     const Vec3 toward = direction(0.2 + 0.8 * unit(), unit());  // local z in [-0.6, 1]
     const double distance = 0.5 + 2.5 * unit();
+    // From the shading frame (T1 = helper, T2 = N x T1, N) to the world.
     const Vec3 local_centre{distance * toward[0], distance * toward[1], distance * toward[2]};
-    const Vec3 centre{local_centre[0] * helper[0] + local_centre[1] * cross(n, helper)[0] +
-                          local_centre[2] * n[0],
-                      local_centre[0] * helper[1] + local_centre[1] * cross(n, helper)[1] +
-                          local_centre[2] * n[1],
-                      local_centre[0] * helper[2] + local_centre[1] * cross(n, helper)[2] +
-                          local_centre[2] * n[2]};
+    const Vec3 side = cross(n, helper);
+    Vec3 centre{};
+    for (std::size_t k = 0; k < 3; ++k)
+      centre[k] = local_centre[0] * helper[k] + local_centre[1] * side[k] + local_centre[2] * n[k];
     const Vec3 facing = direction(unit(), unit());
     // Six quads, then a disk and a sphere, in every eight lights.
     const std::size_t slot = queries.size() % 8;
