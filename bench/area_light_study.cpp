@@ -49,7 +49,7 @@ struct Sums {
 Sums study_material(const matc::CompiledMaterial& compiled, const matc::Lut& lut,
                     const matc::Lut& lobe_lut, const matc::runtime::LtcTableView& ltc,
                     std::size_t samples) {
-  const auto curve = matc::make_reflectance_curve(compiled.material);
+  const auto curve = matc::make_reflectance_curve(compiled.material, compiled.color);
   const matc::TabulatedCurve tabulated(*curve);
   Sums sums;
   for (const double ndotv : kNdotV) {

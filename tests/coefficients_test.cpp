@@ -38,13 +38,14 @@ TEST(Coefficients, MatchTheExactCurveAtBothEndsAndBothProbes) {
 }
 
 TEST(Coefficients, ArtisticAndEquivalentIorGiveTheSameCoefficients) {
-  Material artistic{"a", ArtisticInput{{0.9, 0.6, 0.3}, {0.2, 0.5, 0.9}}, std::nullopt, "", {}, ""};
+  Material artistic;
+  artistic.name = "a";
+  artistic.model = ArtisticInput{{0.9, 0.6, 0.3}, {0.2, 0.5, 0.9}};
   const CompiledMaterial from_artistic = compile_material(artistic, kBasis);
   const auto& ior = *from_artistic.ior;
-  Material as_ior{
-      "b",          IorInput{{ior[0].n, ior[1].n, ior[2].n}, {ior[0].k, ior[1].k, ior[2].k}},
-      std::nullopt, "",
-      {},           ""};
+  Material as_ior;
+  as_ior.name = "b";
+  as_ior.model = IorInput{{ior[0].n, ior[1].n, ior[2].n}, {ior[0].k, ior[1].k, ior[2].k}};
   const CompiledMaterial from_ior = compile_material(as_ior, kBasis);
   for (std::size_t ch = 0; ch < 3; ++ch) {
     for (std::size_t i = 0; i < 4; ++i) {

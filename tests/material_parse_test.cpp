@@ -78,6 +78,21 @@ TEST(MaterialParse, ErrorsInsideASpectralFileNameThatFile) {
   EXPECT_NE(all_diagnostics(result).find("materials/nk.csv:2:1: error: wavelength_nm"),
             std::string::npos)
       << all_diagnostics(result);
+  // ... and, after them, where the material names that file.
+  EXPECT_NE(all_diagnostics(result).find("\nmaterials/m.json:1:36: note: spectral.file: "
+                                         "'materials/nk.csv' is read here\n"),
+            std::string::npos)
+      << all_diagnostics(result);
+}
+
+TEST(MaterialParse, F82TintAndColourSpace) {
+  const auto result = parse(
+      R"({"name": "m", "color_space": "lin_ap1", "f82_tint": {"f0": [0.9, 0.6, 0.3], "tint": 1}})");
+  ASSERT_TRUE(result.material) << all_diagnostics(result);
+  const auto& f82 = std::get<F82TintInput>(result.material->model);
+  EXPECT_EQ(f82.f0, (Rgb{0.9, 0.6, 0.3}));
+  EXPECT_EQ(f82.tint, (Rgb{1, 1, 1}));
+  EXPECT_EQ(result.material->color_space, ColorSpace::acescg);
 }
 
 TEST(MaterialParse, ZincPresetCompilesWithAWarning) {
@@ -95,7 +110,7 @@ TEST(MaterialParse, UnknownFieldWarnsWithSuggestionAndStillCompiles) {
   EXPECT_EQ(all_diagnostics(result),
             "materials/m.json:2:2: warning: roughnes: unknown field, ignored (did you mean "
             "'roughness'?); known fields here: $schema, name, description, artistic, ior, "
-            "spectral, roughness\n");
+            "spectral, f82_tint, roughness, color_space\n");
 }
 
 TEST(MaterialParse, EveryErrorInAFileIsReportedInOrder) {
@@ -164,7 +179,16 @@ INSTANTIATE_TEST_SUITE_P(
                  "{\"name\": \"" + std::string(65, 'a') + "\", \"ior\": {\"n\": 1.5, \"k\": 0}}",
                  "name: is 65 characters long"},
         BadInput{"NoModel", "{\"name\": \"m\"}",
-                 "error: no material model is given; exactly one of artistic, ior, spectral"},
+                 "error: no material model is given; exactly one of artistic, ior, spectral, "
+                 "f82_tint"},
+        BadInput{"F82TintAboveOne",
+                 "{\"name\": \"m\", \"f82_tint\": {\"f0\": 0.5, \"tint\": [1, 2, 1]}}",
+                 "m.json:1:51: error: f82_tint.tint[1]: 2 is out of range; a number in [0, 1]"},
+        BadInput{
+            "UnknownColourSpace",
+            "{\"name\": \"m\", \"color_space\": \"lin_rec790\", \"ior\": {\"n\": 1, \"k\": 3}}",
+            "m.json:1:30: error: color_space: unknown colour space 'lin_rec790' (did you mean "
+            "'lin_rec709'?)"},
         BadInput{"TwoModels",
                  "{\"name\": \"m\", \"ior\": {\"n\": 1.5, \"k\": 0},\n\"spectral\": {\"preset\": "
                  "\"Au\"}}",

@@ -16,6 +16,7 @@
 #include "matc/lut/comparison_lobes.h"
 #include "matc/lut/preintegrate.h"
 #include "matc/lut/split_sum_reference.h"
+#include "matc/optics/gamut.h"
 #include "matc/optics/gulbrandsen.h"
 #include "matc/optics/presets.h"
 #include "matc/optics/spectral.h"
@@ -288,8 +289,101 @@ void print_preintegrated(bool summary_only) {
 
 // No arguments: the curve tables of docs/accuracy.md. --summary: the summaries the README quotes.
 // --lut: the preintegrated tables (table reconstruction, then Fbar against a direct reference).
+// The F82-tint material model (OpenPBR's metal): our fit against the F82-tint curve it stands
+// for, over a grid of (F0, tint), and for the F82-tint parameters of the measured metals.
+void print_f82_tint() {
+  constexpr std::array<double, 7> kTints = {0.0, 0.5, 0.7, 0.8, 0.9, 0.95, 1.0};
+  fmt::print("| F0 \\ tint |");
+  for (const double tint : kTints)
+    fmt::print(" {:.2f} |", tint);
+  fmt::print("\n|---:|");
+  for (std::size_t i = 0; i < kTints.size(); ++i)
+    fmt::print("---:|");
+  fmt::print("\n");
+  for (const double f0 : {0.02, 0.2, 0.4, 0.6, 0.8, 0.9, 0.95}) {
+    fmt::print("| {:.2f} |", f0);
+    for (const double tint : kTints) {
+      const FitAccuracy accuracy = measure(matc::F82TintCurve({f0, f0, f0}, {tint, tint, tint}));
+      fmt::print(" {:.4f} |", accuracy.decomposition.max_abs[0]);
+    }
+    fmt::print("\n");
+  }
+  // Each measured metal as an F82-tint material: F0 and F(1/7) of its exact curve, so tint =
+  // F(1/7) / Schlick(1/7) per channel (what an OpenPBR look matched to the metal would use).
+  Totals ours;
+  Totals schlick;
+  double tint_min = 1.0;
+  double tint_max = 0.0;
+  for (const matc::MetalPreset& preset : matc::metal_presets()) {
+    if (!preset.caveat.empty()) continue;
+    const matc::SpectralCurve exact(matc::preset_spectrum(preset));
+    const matc::Rgb f0 = exact.at(1.0);
+    const matc::Rgb f82 = exact.at(matc::kF82MuBar);
+    matc::Rgb tint{};
+    for (std::size_t c = 0; c < 3; ++c) {
+      tint[c] = std::min(1.0, f82[c] / matc::fresnel_schlick(matc::kF82MuBar, f0[c]));
+      tint_min = std::min(tint_min, tint[c]);
+      tint_max = std::max(tint_max, tint[c]);
+    }
+    const FitAccuracy accuracy = measure(matc::F82TintCurve(f0, tint));
+    ours.add(accuracy.decomposition);
+    schlick.add(accuracy.schlick);
+  }
+  fmt::print(
+      "\nThe {} reliable measured metals as F82-tint materials (tint = F(1/7) / Schlick(1/7) of "
+      "the exact curve, {:.3f} to {:.3f}), against their F82-tint curves:\n\n"
+      "| model | worst-channel max error | mean of per-curve max |\n|---|---:|---:|\n"
+      "| ours | {:.4f} | {:.4f} |\n| Schlick | {:.4f} | {:.4f} |\n",
+      ours.curves / 3, tint_min, tint_max, ours.worst, ours.mean(), schlick.worst, schlick.mean());
+}
+
+// The measured metals in each working space: the same fits, and how far each space's curves
+// leave [0, 1].
+void print_color_spaces() {
+  fmt::print(
+      "| working space | ours worst | ours mean | Schlick worst | F82-tint worst | metals outside "
+      "[0, 1] | furthest outside |\n|---|---:|---:|---:|---:|---:|---|\n");
+  for (const auto& space : matc::color_spaces()) {
+    Totals ours;
+    Totals schlick;
+    Totals f82;
+    std::size_t outside = 0;
+    double furthest = 0.0;
+    std::string furthest_metal = "-";
+    for (const matc::MetalPreset& preset : matc::metal_presets()) {
+      if (!preset.caveat.empty()) continue;
+      const matc::SpectralCurve curve(matc::preset_spectrum(preset), space.id);
+      const FitAccuracy accuracy = measure(curve);
+      ours.add(accuracy.decomposition);
+      schlick.add(accuracy.schlick);
+      f82.add(accuracy.f82_tint);
+      const matc::CurveRange range = matc::measure_curve_range(curve);
+      if (range.within_unit_range()) continue;
+      ++outside;
+      for (std::size_t c = 0; c < 3; ++c) {
+        const double beyond = std::max(range.max[c] - 1.0, -range.min[c]);
+        if (beyond > furthest) {
+          furthest = beyond;
+          furthest_metal = fmt::format("{} {} {:.4f}", preset.symbol, "RGB"[c],
+                                       range.max[c] > 1.0 ? range.max[c] : range.min[c]);
+        }
+      }
+    }
+    fmt::print("| {} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {} | {} |\n", space.name, ours.worst,
+               ours.mean(), schlick.worst, f82.worst, outside, furthest_metal);
+  }
+}
+
 int main(int argc, char** argv) {
   const std::string_view mode = argc > 1 ? argv[1] : "";
+  if (mode == "--f82-tint") {
+    print_f82_tint();
+    return 0;
+  }
+  if (mode == "--color-spaces") {
+    print_color_spaces();
+    return 0;
+  }
   if (mode == "--lut") {
     print_convergence();
     print_reconstruction();

@@ -9,6 +9,9 @@ tool="$build/bench/matc_accuracy_table"
 "$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" accuracy-tables "$tool"
 "$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" lut-accuracy "$tool" --lut
 "$root/tests/check_docs_block.sh" --update "$root/README.md" accuracy-summary "$tool" --summary
+"$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" f82-tint "$tool" --f82-tint
+"$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" color-spaces "$tool" \
+  --color-spaces
 # The basis study (about 1.5 minutes on 2 cores; no test reruns it, the unit tests hold the
 # shipped basis to the targets it was chosen for).
 cmake --build "$build" --target matc_basis_study >/dev/null

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "channel_list.h"  // split_list
+#include "color_options.h"
 #include "lut_options.h"
 
 namespace matc::cli {
@@ -37,6 +38,7 @@ struct CompileOptions {
   std::size_t embed_lut_size = 32;
   bool validate = false;  // run each material's shaders on a device before writing its files
   DeviceCliOptions device;
+  ColorCliOptions color;
 };
 int run_compile(const CompileOptions& options);
 
@@ -48,6 +50,7 @@ struct ValidateOptions {
   bool embed_lut = false;
   std::size_t embed_lut_size = 32;
   DeviceCliOptions device;
+  ColorCliOptions color;
 };
 int run_validate(const ValidateOptions& options);
 
@@ -61,6 +64,7 @@ struct EvalOptions {
   std::string quad_light;  // "x,y,z;x,y,z;x,y,z;x,y,z" in the shading frame: area-light radiance
   std::size_t light_samples = 0;  // reference samples for --quad-light
   LutCliOptions lut;
+  ColorCliOptions color;
 };
 int run_eval(const EvalOptions& options);
 
@@ -94,6 +98,7 @@ struct ReportOptions {
   std::vector<std::string> files;
   std::string output_directory = "matc-report";
   std::string basis{runtime::basis_name(runtime::kDefaultBasis)};
+  ColorCliOptions color;
 };
 int run_report(const ReportOptions& options);
 

@@ -53,6 +53,7 @@ BuildOptions build_options(const CompileOptions& options) {
       build.emit.insert(*output_kind_from_name(name));
   }
   build.lut_format = *lut_format_from_name(options.lut_format);
+  build.color = color_options_of(options.color);
   return build;
 }
 
@@ -164,8 +165,10 @@ int run_compile(const CompileOptions& options) {
       try {
         // Every byte is generated before the first file is written: a failure leaves no
         // partial set of outputs for this material.
-        const CompiledMaterial compiled = compile_material(*job.material, basis);
+        const CompiledMaterial compiled =
+            compile_material(*job.material, basis, build.options().color);
         warn_if_poor_fit(compiled, job.diagnostics);
+        note_if_out_of_unit_range(compiled, job.diagnostics);
         MaterialOutputs outputs = build.material_outputs(compiled);
         bool valid_on_device = true;
         if (validator) {

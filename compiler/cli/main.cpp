@@ -64,6 +64,7 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(matc::kMinLutSize, matc::kMaxEmbeddedLutSize));
   add_lut_options(app, compile.lut, "lut-");
+  add_color_options(app, compile.color);
   add_coefficient_table_option(app, compile.lut);
   app.add_flag("--validate", compile.validate,
                "Run each material's GLSL and HLSL shaders on a Vulkan device (lavapipe) against "
@@ -116,6 +117,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(std::size_t{16}, std::size_t{1} << 26));
   add_lut_options(*eval_command, eval.lut, "lut-");
   add_coefficient_table_option(*eval_command, eval.lut);
+  add_color_options(*eval_command, eval.color);
 
   ValidateOptions validate;
   CLI::App* validate_command = app.add_subcommand(
@@ -133,6 +135,7 @@ int main(int argc, char** argv) {
   add_lut_options(*validate_command, validate.lut, "lut-");
   add_coefficient_table_option(*validate_command, validate.lut);
   add_device_options(*validate_command, validate.device);
+  add_color_options(*validate_command, validate.color);
 
   BasisOptions basis;
   CLI::App* basis_command = app.add_subcommand("basis", "Show the Fresnel basis b_0..b_3");
@@ -239,6 +242,7 @@ int main(int argc, char** argv) {
   report_command->add_option("-o,--output", report.output_directory, "Output directory")
       ->capture_default_str();
   add_basis_option(*report_command, report.basis);
+  add_color_options(*report_command, report.color);
 
   // -MD, as compilers spell it: CLI11 only takes one-letter names after a single dash.
   std::vector<std::string> arguments(argv + 1, argv + argc);

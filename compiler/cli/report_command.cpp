@@ -60,7 +60,8 @@ int run_report(const ReportOptions& options) {
   std::vector<Output> outputs;
   std::vector<ReportEntry> entries;
   for (const Material& material : *materials) {
-    const CompiledMaterial compiled = compile_material(material, basis);
+    const CompiledMaterial compiled =
+        compile_material(material, basis, color_options_of(options.color));
     Diagnostics fit;
     warn_if_poor_fit(compiled, fit);
     print_diagnostics(fit);

@@ -11,7 +11,10 @@
 namespace matc::cli {
 
 int run_validate(const ValidateOptions& options) {
-  const Build build(table_build_options(options.lut, options.embed_lut, options.embed_lut_size));
+  BuildOptions build_options =
+      table_build_options(options.lut, options.embed_lut, options.embed_lut_size);
+  build_options.color = color_options_of(options.color);
+  const Build build(build_options);
   const std::unique_ptr<DeviceValidator> validator = open_device_validator(build, options.device);
   if (!validator) return kExitNoDevice;
 
@@ -27,7 +30,8 @@ int run_validate(const ValidateOptions& options) {
       ++invalid_inputs;
       continue;
     }
-    const CompiledMaterial compiled = compile_material(*parsed.material, basis);
+    const CompiledMaterial compiled =
+        compile_material(*parsed.material, basis, build.options().color);
     Diagnostics fit;
     warn_if_poor_fit(compiled, fit);
     print_diagnostics(fit);

@@ -16,7 +16,8 @@ namespace {
 
 using nlohmann::ordered_json;
 
-std::array<ComplexIor, 3> per_channel_ior(const MaterialModel& model) {
+// Artistic and ior materials: one complex IOR per channel (F82-tint and spectral have none).
+std::optional<std::array<ComplexIor, 3>> per_channel_ior(const MaterialModel& model) {
   std::array<ComplexIor, 3> ior{};
   if (const auto* artistic = std::get_if<ArtisticInput>(&model)) {
     for (std::size_t c = 0; c < 3; ++c) {
@@ -25,6 +26,8 @@ std::array<ComplexIor, 3> per_channel_ior(const MaterialModel& model) {
   } else if (const auto* input = std::get_if<IorInput>(&model)) {
     for (std::size_t c = 0; c < 3; ++c)
       ior[c] = {input->n[c], input->k[c]};
+  } else {
+    return std::nullopt;
   }
   return ior;
 }
@@ -44,6 +47,8 @@ ordered_json input_json(const Material& material) {
              {"edge_tint", rgb_json(artistic->edge_tint)}};
   } else if (const auto* ior = std::get_if<IorInput>(&material.model)) {
     input = {{"n", rgb_json(ior->n)}, {"k", rgb_json(ior->k)}};
+  } else if (const auto* f82 = std::get_if<F82TintInput>(&material.model)) {
+    input = {{"f0", rgb_json(f82->f0)}, {"tint", rgb_json(f82->tint)}};
   } else {
     const auto& spectral = std::get<SpectralInput>(material.model);
     input = spectral.preset.empty() ? ordered_json{{"file", spectral.file}}
@@ -54,22 +59,59 @@ ordered_json input_json(const Material& material) {
 
 }  // namespace
 
-std::unique_ptr<ReflectanceCurve> make_reflectance_curve(const Material& material) {
+ColorSpace input_color_space(const Material& material, ColorSpace working_space) {
+  return material.color_space.value_or(working_space);
+}
+
+std::unique_ptr<ReflectanceCurve> make_working_space_curve(const Material& material,
+                                                           ColorSpace working_space) {
   if (const auto* spectral = std::get_if<SpectralInput>(&material.model)) {
-    return std::make_unique<SpectralCurve>(spectral->spectrum);
+    return std::make_unique<SpectralCurve>(spectral->spectrum, working_space);
   }
-  return std::make_unique<IorCurve>(per_channel_ior(material.model));
+  std::unique_ptr<ReflectanceCurve> curve;
+  if (const auto* f82 = std::get_if<F82TintInput>(&material.model)) {
+    curve = std::make_unique<F82TintCurve>(f82->f0, f82->tint);
+  } else {
+    curve = std::make_unique<IorCurve>(*per_channel_ior(material.model));
+  }
+  const ColorSpace space = input_color_space(material, working_space);
+  if (space == working_space) return curve;
+  return std::make_unique<TransformedCurve>(std::move(curve), rgb_to_rgb(space, working_space));
+}
+
+std::unique_ptr<ReflectanceCurve> make_reflectance_curve(const Material& material,
+                                                         const ColorOptions& color) {
+  auto curve = make_working_space_curve(material, color.working_space);
+  if (color.gamut_mapping == GamutMapping::none) return curve;
+  const Desaturation mapping =
+      desaturation_into_unit_range(*curve, color.working_space, kAccuracySamples);
+  if (mapping.saturation == 1.0) return curve;
+  return std::make_unique<TransformedCurve>(std::move(curve), mapping.matrix);
 }
 
 static_assert((kAccuracySamples - 1) % (kMinimaxCosines - 1) == 0,
               "the minimax solve's cosines must lie on the accuracy grid AccuracyGridCurve caches");
 
-CompiledMaterial compile_material(const Material& material, const runtime::BasisView& basis) {
-  const auto exact = make_reflectance_curve(material);
-  // The solve and the accuracy measurement share cosines: evaluate (integrate) the curve once.
-  const AccuracyGridCurve curve(*exact);
+CompiledMaterial compile_material(const Material& material, const runtime::BasisView& basis,
+                                  const ColorOptions& color) {
   CompiledMaterial compiled;
   compiled.material = material;
+  compiled.color = color;
+  auto unmapped = make_working_space_curve(material, color.working_space);
+  // The solve and the accuracy measurement share cosines: evaluate (integrate) the curve once.
+  const AccuracyGridCurve unmapped_grid(*unmapped);
+  compiled.range = measure_curve_range(unmapped_grid, kAccuracySamples);
+  std::unique_ptr<ReflectanceCurve> mapped;
+  std::optional<AccuracyGridCurve> mapped_grid;
+  if (color.gamut_mapping == GamutMapping::desaturate && !compiled.range.within_unit_range()) {
+    const Desaturation mapping =
+        desaturation_into_unit_range(unmapped_grid, color.working_space, kAccuracySamples);
+    compiled.saturation = mapping.saturation;
+    // `unmapped` moves into the mapped curve; the object unmapped_grid refers to stays alive.
+    mapped = std::make_unique<TransformedCurve>(std::move(unmapped), mapping.matrix);
+    mapped_grid.emplace(*mapped);
+  }
+  const AccuracyGridCurve& curve = mapped_grid ? *mapped_grid : unmapped_grid;
   compiled.coefficients = solve_coefficients(curve, basis);
   compiled.accuracy =
       measure_accuracy(curve, compiled.coefficients, runtime::shipped_basis_polynomial(basis.kind));
@@ -77,11 +119,15 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
   compiled.f82 = curve.at(kF82MuBar);
   compiled.average_fresnel =
       average_fresnel(compiled.coefficients, basis_hemispherical_averages(basis));
-  if (!std::holds_alternative<SpectralInput>(material.model)) {
-    compiled.ior = per_channel_ior(material.model);
+  // The per-channel IOR describes the curve only where no matrix mixed the channels.
+  const bool channels_kept =
+      input_color_space(material, color.working_space) == color.working_space &&
+      compiled.saturation == 1.0;
+  if (const auto ior = per_channel_ior(material.model); ior && channels_kept) {
+    compiled.ior = *ior;
     std::array<ArtisticParameters, 3> artistic{};
     for (std::size_t c = 0; c < 3; ++c)
-      artistic[c] = ior_to_gulbrandsen((*compiled.ior)[c]);
+      artistic[c] = ior_to_gulbrandsen((*ior)[c]);
     compiled.artistic = artistic;
   }
   return compiled;
@@ -109,15 +155,27 @@ ordered_json compiled_material_json(const CompiledMaterial& compiled,
          rgb_json({artistic[0].reflectivity, artistic[1].reflectivity, artistic[2].reflectivity})},
         {"edge_tint",
          rgb_json({artistic[0].edge_tint, artistic[1].edge_tint, artistic[2].edge_tint})}};
-  } else {
-    const auto& spectrum = std::get<SpectralInput>(material.model).spectrum;
+  } else if (const auto* spectral = std::get_if<SpectralInput>(&material.model)) {
+    const auto& spectrum = spectral->spectrum;
     resolved["spectral"] = {
         {"data_range_nm", {spectrum.wavelength_nm.front(), spectrum.wavelength_nm.back()}},
         {"data_samples", spectrum.wavelength_nm.size()},
         {"integration",
-         "CIE 1931 2-degree observer x D65, 360-830 nm at 1 nm, linear sRGB, "
-         "normalised so a perfect mirror is (1, 1, 1)"}};
+         fmt::format("CIE 1931 2-degree observer x D65, 360-830 nm at 1 nm, Bradford-adapted to "
+                     "{}, normalised so a perfect mirror is (1, 1, 1)",
+                     color_space_name(compiled.color.working_space))}};
   }
+  ordered_json color = {
+      {"working_space", color_space_name(compiled.color.working_space)},
+      {"input_space", std::holds_alternative<SpectralInput>(material.model)
+                          ? ordered_json("spectral")
+                          : ordered_json(color_space_name(
+                                input_color_space(material, compiled.color.working_space)))},
+      {"range", {{"min", rgb_json(compiled.range.min)}, {"max", rgb_json(compiled.range.max)}}},
+      {"within_unit_range", compiled.range.within_unit_range()},
+      {"gamut_mapping", gamut_mapping_name(compiled.color.gamut_mapping)},
+      {"saturation_kept", compiled.saturation}};
+  out["color"] = std::move(color);
   resolved["F0"] = rgb_json(compiled.f0);
   resolved["F82"] = rgb_json(compiled.f82);
   out["resolved"] = resolved;
@@ -162,15 +220,21 @@ void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics
   const double schlick = worst(accuracy.schlick);
   const double f82 = worst(accuracy.f82_tint);
   std::string advice;
+  const bool f82_material = std::holds_alternative<F82TintInput>(compiled.material.model);
   if (std::holds_alternative<ArtisticInput>(compiled.material.model)) {
     advice =
         "high reflectivity with a low edge tint makes curves like a high-index dielectric's, which "
         "no 4-term basis follows: lower the reflectivity or raise the edge tint, or give the "
         "measured n, k (\"ior\" or \"spectral\")";
+  } else if (f82_material) {
+    advice =
+        "a tint well below 1 dips F82-tint's curve near grazing in a shape no 4-term basis "
+        "fitted to conductors follows (docs/accuracy.md): raise the tint, or give the metal's "
+        "n, k (\"ior\" or \"spectral\")";
   } else {
-    advice = "check the n, k values; curves this far from measured metals fit poorly";
+    advice = "check the input values; curves this far from measured metals fit poorly";
   }
-  if (f82 < ours || schlick < ours) {
+  if (!f82_material && (f82 < ours || schlick < ours)) {
     advice += fmt::format("; for this curve {} is closer", f82 <= schlick ? "F82-tint" : "Schlick");
   }
   diagnostics.warning(
@@ -179,6 +243,35 @@ void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics
                   "measured metals stay under 0.02)",
                   ours, schlick, f82),
       advice);
+}
+
+void note_if_out_of_unit_range(const CompiledMaterial& compiled, Diagnostics& diagnostics) {
+  const CurveRange& range = compiled.range;
+  if (range.within_unit_range()) return;
+  const double high = *std::max_element(range.max.begin(), range.max.end());
+  const double low = *std::min_element(range.min.begin(), range.min.end());
+  std::string extent = high > 1.0 ? fmt::format("reaches {:.4f}", high) : "";
+  if (low < 0.0) extent += fmt::format("{}falls to {:.4f}", extent.empty() ? "" : " and ", low);
+  const std::string space(color_space_name(compiled.color.working_space));
+  const bool model_overshoot =
+      low < 0.0 && std::holds_alternative<F82TintInput>(compiled.material.model);
+  std::string message = fmt::format(
+      "its Fresnel curve {} in {} ({})", extent, space,
+      model_overshoot ? "F82-tint's correction term overshoots below 0 for a tint this low"
+                      : "a colour outside the space's gamut, not an error in the data");
+  if (compiled.color.gamut_mapping == GamutMapping::desaturate) {
+    message +=
+        fmt::format("; desaturated to {:.4f} of its chroma at every angle", compiled.saturation);
+  }
+  std::string advice;
+  if (model_overshoot) {
+    advice = "engines clamp it at 0; a tint nearer 1 avoids it";
+  } else if (compiled.color.gamut_mapping == GamutMapping::none) {
+    advice =
+        "keep it for engines that do not clamp; --gamut-mapping desaturate for those that do "
+        "(docs/color-spaces.md)";
+  }
+  diagnostics.note(compiled.material.name_location, "color", std::move(message), std::move(advice));
 }
 
 }  // namespace matc

@@ -42,6 +42,12 @@ void Diagnostics::warning(SourceLocation location, std::string field, std::strin
        std::move(allowed)});
 }
 
+void Diagnostics::note(SourceLocation location, std::string field, std::string message,
+                       std::string allowed) {
+  add({Severity::note, std::move(location), std::move(field), std::move(message),
+       std::move(allowed)});
+}
+
 void Diagnostics::append(const Diagnostics& other) {
   items_.insert(items_.end(), other.items_.begin(), other.items_.end());
 }
@@ -66,6 +72,17 @@ SourceLocation TextLocator::at(std::size_t offset) const {
   const auto next_line = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
   const auto line = static_cast<std::size_t>(next_line - line_starts_.begin());
   return {path_, line, offset - line_starts_[line - 1] + 1};
+}
+
+void note_referenced_from(Diagnostics& diagnostics, const std::string& referenced_path,
+                          const SourceLocation& where, const std::string& field) {
+  auto& items = diagnostics.items();
+  const auto last = std::find_if(items.rbegin(), items.rend(), [&](const Diagnostic& d) {
+    return d.location.path == referenced_path && d.severity != Severity::note;
+  });
+  if (last == items.rend()) return;
+  items.insert(last.base(), Diagnostic{Severity::note, where, field,
+                                       "'" + referenced_path + "' is read here", ""});
 }
 
 }  // namespace matc

@@ -50,7 +50,7 @@ std::optional<CompiledMaterial> MaterialRenderer::compile(const std::string& fil
 }
 
 std::array<Panel, kEstimateCount> MaterialRenderer::render(const CompiledMaterial& compiled) {
-  const auto exact = make_reflectance_curve(compiled.material);
+  const auto exact = make_reflectance_curve(compiled.material, compiled.color);
   std::vector<float> curve(kCurveSize * 4, 0.0f);
   for (std::size_t j = 0; j < kCurveSize; ++j) {
     const Rgb value = exact->at(static_cast<double>(j) / (kCurveSize - 1));

@@ -10,12 +10,20 @@
 #include "matc/diagnostics.h"
 #include "matc/fit/accuracy.h"
 #include "matc/material/material.h"
+#include "matc/optics/gamut.h"
 #include "matc/optics/gulbrandsen.h"
 #include "matc/optics/reflectance_curve.h"
 #include "matc/runtime/basis.h"
 #include "matc/runtime/fresnel.h"
 
 namespace matc {
+
+// The working space a build's outputs are in (--color-space) and what happens to curves that leave
+// [0, 1] in it (--gamut-mapping); docs/color-spaces.md.
+struct ColorOptions {
+  ColorSpace working_space = kDefaultColorSpace;
+  GamutMapping gamut_mapping = GamutMapping::none;
+};
 
 struct CompiledMaterial {
   Material material;
@@ -29,12 +37,25 @@ struct CompiledMaterial {
   // whose RGB curve is an integral over many IORs.
   std::optional<std::array<ComplexIor, 3>> ior;
   std::optional<std::array<ArtisticParameters, 3>> artistic;
+  ColorOptions color;
+  // The exact curve's extent in the working space before any gamut mapping, and the saturation
+  // the mapping kept (1: nothing changed).
+  CurveRange range;
+  double saturation = 1.0;
 };
 
-// The exact RGB Fresnel curve a material describes.
-std::unique_ptr<ReflectanceCurve> make_reflectance_curve(const Material& material);
+// The space a material's RGB values are in: its own color_space, or else the working space.
+ColorSpace input_color_space(const Material& material, ColorSpace working_space);
 
-CompiledMaterial compile_material(const Material& material, const runtime::BasisView& basis);
+// The exact RGB Fresnel curve a material describes in the working space, before gamut mapping.
+std::unique_ptr<ReflectanceCurve> make_working_space_curve(const Material& material,
+                                                           ColorSpace working_space);
+// The same with the gamut mapping applied: what the coefficients are fitted to.
+std::unique_ptr<ReflectanceCurve> make_reflectance_curve(const Material& material,
+                                                         const ColorOptions& color = {});
+
+CompiledMaterial compile_material(const Material& material, const runtime::BasisView& basis,
+                                  const ColorOptions& color = {});
 
 // Above this max |F - exact| (2.5x the worst of the 23 measured metals with the paper basis,
 // 8x with the default; docs/accuracy.md) a fit is called poor.
@@ -43,6 +64,10 @@ inline constexpr double kPoorFitMaxError = 0.05;
 // A warning, at the material's name, when the decomposition misses the exact curve by more than
 // kPoorFitMaxError: the measured error, Schlick's and F82-tint's beside it, and what to try.
 void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics);
+
+// A note, at the material's name, when its curve leaves [0, 1] in the working space: the extent,
+// and what --gamut-mapping desaturate would keep.
+void note_if_out_of_unit_range(const CompiledMaterial& compiled, Diagnostics& diagnostics);
 
 // The per-material output `<name>.json` (field reference: docs/material-format.md).
 nlohmann::ordered_json compiled_material_json(const CompiledMaterial& compiled,

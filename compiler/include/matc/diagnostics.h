@@ -26,6 +26,12 @@ struct Diagnostic {
 };
 
 std::string_view severity_name(Severity severity);
+
+class Diagnostics;
+// When `diagnostics` hold errors or warnings located in `referenced_path`, adds after the last of
+// them a note at `where` (the place that names that file): "<field>: '<path>' is read here".
+void note_referenced_from(Diagnostics& diagnostics, const std::string& referenced_path,
+                          const SourceLocation& where, const std::string& field);
 std::string format_diagnostic(const Diagnostic& diagnostic);
 
 // Collects every diagnostic of one compile so that all problems are reported at once.
@@ -36,6 +42,8 @@ class Diagnostics {
              std::string allowed = {});
   void warning(SourceLocation location, std::string field, std::string message,
                std::string allowed = {});
+  void note(SourceLocation location, std::string field, std::string message,
+            std::string allowed = {});
   void append(const Diagnostics& other);
 
   bool has_errors() const;

@@ -172,7 +172,11 @@ std::string Build::material_source(ShaderLanguage language,
 
 std::string Build::material_inputs_hash(const Material& material) const {
   ContentHash hash;
-  hash.add(options_key()).add(material.source_text);
+  // The working space changes every material's numbers but none of the shared tables.
+  hash.add(options_key())
+      .add(fmt::format("color {} gamut {}", color_space_name(options_.color.working_space),
+                       gamut_mapping_name(options_.color.gamut_mapping)))
+      .add(material.source_text);
   if (const auto* spectral = std::get_if<SpectralInput>(&material.model);
       spectral && !spectral->resolved_file.empty()) {
     hash.add(spectral->file_bytes);
@@ -317,6 +321,8 @@ nlohmann::ordered_json Build::manifest(const std::vector<OutputFile>& shared,
     emitted.emplace_back(kOutputKinds[static_cast<std::size_t>(kind)].second);
   manifest["emit"] = emitted;
   manifest["basis"] = lut_reference_.basis;
+  manifest["color"] = {{"working_space", color_space_name(options_.color.working_space)},
+                       {"gamut_mapping", gamut_mapping_name(options_.color.gamut_mapping)}};
   manifest["lut"] = {{"file", lut_reference_.file},
                      {"size", options_.lut.size},
                      {"samples_per_texel", options_.lut.samples},

@@ -19,9 +19,12 @@ namespace {
 using nlohmann::json;
 using runtime::Rgb;
 
-constexpr std::array<std::string_view, 3> kModelKeys = {"artistic", "ior", "spectral"};
-constexpr std::array<std::string_view, 7> kTopLevelFields = {
-    "$schema", "name", "description", "artistic", "ior", "spectral", "roughness"};
+constexpr std::array<std::string_view, 4> kModelKeys = {"artistic", "ior", "spectral", "f82_tint"};
+constexpr std::string_view kOneModel = "exactly one of artistic, ior, spectral, f82_tint";
+constexpr std::array<std::string_view, 9> kTopLevelFields = {
+    "$schema",  "name",     "description", "artistic",   "ior",
+    "spectral", "f82_tint", "roughness",   "color_space"};
+constexpr std::array<std::string_view, 2> kF82TintFields = {"f0", "tint"};
 constexpr std::array<std::string_view, 2> kArtisticFields = {"reflectivity", "edge_tint"};
 constexpr std::array<std::string_view, 2> kIorFields = {"n", "k"};
 constexpr std::array<std::string_view, 2> kSpectralFields = {"preset", "file"};
@@ -43,7 +46,7 @@ class MaterialReader : LocatedJsonReader {
     const json& root = document_.value;
     if (!root.is_object()) {
       error("", fmt::format("the file holds {}", describe_type(root)),
-            "a JSON object with the fields name and one of artistic, ior, spectral");
+            "a JSON object with the fields name and one of artistic, ior, spectral, f82_tint");
       return std::nullopt;
     }
     warn_unknown_fields(root, "", kTopLevelFields);
@@ -63,6 +66,7 @@ class MaterialReader : LocatedJsonReader {
     if (root.contains("$schema") && !root["$schema"].is_string()) {
       error("/$schema", fmt::format("is {}", describe_type(root["$schema"])), "a string");
     }
+    if (root.contains("color_space")) material.color_space = read_color_space(root["color_space"]);
     if (auto model = read_model(root)) material.model = std::move(*model);
 
     if (diagnostics_.has_errors()) return std::nullopt;
@@ -76,8 +80,7 @@ class MaterialReader : LocatedJsonReader {
       if (root.contains(key)) given.push_back(key);
     }
     if (given.empty()) {
-      diagnostics_.error(at_value(""), "", "no material model is given",
-                         "exactly one of artistic, ior, spectral");
+      diagnostics_.error(at_value(""), "", "no material model is given", std::string(kOneModel));
       return std::nullopt;
     }
     if (given.size() > 1) {
@@ -89,7 +92,7 @@ class MaterialReader : LocatedJsonReader {
         diagnostics_.error(at_key(child("", given[i])), std::string(given[i]),
                            fmt::format("a second material model ('{}' is given at {})", given[0],
                                        where(document_.key_or_value_offset(child("", given[0])))),
-                           "exactly one of artistic, ior, spectral");
+                           std::string(kOneModel));
       }
     }
     // Each model given is still checked, so that one run reports every problem in the file.
@@ -103,7 +106,47 @@ class MaterialReader : LocatedJsonReader {
   std::optional<MaterialModel> read_model(const json& root, std::string_view key) {
     if (key == "artistic") return read_artistic(root);
     if (key == "ior") return read_ior(root);
+    if (key == "f82_tint") return read_f82_tint(root);
     return read_spectral(root);
+  }
+
+  std::optional<MaterialModel> read_f82_tint(const json& root) {
+    const json* object = object_field(root, "f82_tint", kF82TintFields);
+    if (!object) return std::nullopt;
+    const auto f0 = read_rgb_field(*object, "/f82_tint", "f0", kUnitRange);
+    const auto tint = read_rgb_field(*object, "/f82_tint", "tint", kUnitRange);
+    if (!f0 || !tint) return std::nullopt;
+    return F82TintInput{*f0, *tint};
+  }
+
+  std::optional<ColorSpace> read_color_space(const json& value) {
+    const std::string pointer = "/color_space";
+    const std::string allowed =
+        fmt::format("one of {} (the space this file's RGB values are in)", color_space_names());
+    if (!value.is_string()) {
+      error(pointer, fmt::format("is {}", describe_type(value)), allowed);
+      return std::nullopt;
+    }
+    const std::string name = value.get<std::string>();
+    if (const auto space = find_color_space(name)) return space;
+    if (is_encoded_color_space(name)) {
+      error(pointer,
+            fmt::format("'{}' is an encoded (non-linear) space; material values are linear "
+                        "reflectances: decode them, then name the linear space",
+                        name),
+            allowed);
+      return std::nullopt;
+    }
+    std::vector<std::string_view> names;
+    for (const auto& definition : color_spaces())
+      names.push_back(definition.name);
+    const auto suggestion = closest_match(name, names);
+    error(pointer,
+          suggestion
+              ? fmt::format("unknown colour space '{}' (did you mean '{}'?)", name, *suggestion)
+              : fmt::format("unknown colour space '{}'", name),
+          allowed);
+    return std::nullopt;
   }
 
   std::optional<MaterialModel> read_artistic(const json& root) {
@@ -202,14 +245,25 @@ class MaterialReader : LocatedJsonReader {
     }
     const TextLocator csv_locator(input.resolved_file, *loaded.bytes);
     auto spectrum = parse_nk_csv(*loaded.bytes, csv_locator, diagnostics_);
+    references_.push_back({input.resolved_file, at_value(pointer)});
     if (!spectrum) return std::nullopt;
     input.spectrum = std::move(*spectrum);
     input.file_bytes = *loaded.bytes;
     return input;
   }
 
+ public:
+  // Data files this material names, and where: problems inside one also point back here.
+  struct Reference {
+    std::string path;
+    SourceLocation location;
+  };
+  const std::vector<Reference>& references() const { return references_; }
+
+ private:
   const FileLoader& loader_;
   std::filesystem::path base_directory_;
+  std::vector<Reference> references_;
 };
 
 }  // namespace
@@ -258,6 +312,9 @@ ParseResult parse_material(std::string_view text, const std::string& path,
                      };
                      return key(a) < key(b);
                    });
+  // As compilers do for includes: a problem inside a data file names the material that read it.
+  for (const auto& reference : reader.references())
+    note_referenced_from(result.diagnostics, reference.path, reference.location, "spectral.file");
   return result;
 }
 

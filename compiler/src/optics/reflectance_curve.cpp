@@ -6,4 +6,13 @@ Rgb IorCurve::at(double mu) const {
   return {fresnel_exact(mu, ior_[0]), fresnel_exact(mu, ior_[1]), fresnel_exact(mu, ior_[2])};
 }
 
+Rgb F82TintCurve::at(double mu) const {
+  Rgb result{};
+  for (std::size_t c = 0; c < 3; ++c) {
+    const double f82 = tint_[c] * fresnel_schlick(kF82MuBar, f0_[c]);
+    result[c] = fresnel_f82_tint(mu, f0_[c], f82);
+  }
+  return result;
+}
+
 }  // namespace matc

@@ -11,13 +11,6 @@ namespace {
 
 constexpr std::size_t kGridSize = kCieLastNm - kCieFirstNm + 1;
 
-// IEC 61966-2-1 (sRGB), XYZ -> linear RGB.
-constexpr std::array<std::array<double, 3>, 3> kXyzToLinearSrgb = {{
-    {3.2406, -1.5372, -0.4986},
-    {-0.9689, 1.8758, 0.0415},
-    {0.0557, -0.2040, 1.0570},
-}};
-
 // Reads an embedded CIE table into a map from integer wavelength to its columns.
 std::vector<CsvRow> read_cie_table(std::string_view path, std::string_view header) {
   const std::string_view text = embedded_data::file(path);
@@ -36,35 +29,53 @@ const CsvRow& row_at(const std::vector<CsvRow>& rows, int wavelength) {
   return row;
 }
 
-// w_c(lambda) on the integration grid, each channel summing to 1.
-const std::vector<Rgb>& linear_srgb_weights() {
-  static const std::vector<Rgb> weights = [] {
-    const auto cmf = read_cie_table("cie/cie1931_2deg.csv", "wavelength_nm,x_bar,y_bar,z_bar");
-    const auto d65 = read_cie_table("cie/d65.csv", "wavelength_nm,relative_power");
-    std::vector<Rgb> w(kGridSize);
-    Rgb total{};
-    for (std::size_t i = 0; i < kGridSize; ++i) {
-      const int wavelength = kCieFirstNm + static_cast<int>(i);
-      const auto& xyz = row_at(cmf, wavelength).values;
-      const double illuminant = row_at(d65, wavelength).values[1];
-      for (std::size_t c = 0; c < 3; ++c) {
-        const auto& m = kXyzToLinearSrgb[c];
-        w[i][c] = illuminant * (m[0] * xyz[1] + m[1] * xyz[2] + m[2] * xyz[3]);
-        total[c] += w[i][c];
-      }
+// w_c(lambda) on the integration grid for one working space, each channel summing to 1. The
+// tabulated D65 white (x, y = 0.31271, 0.32902) is adapted with Bradford to the space's white, so
+// a perfect mirror is exactly the space's white and converting between spaces afterwards gives
+// the same numbers as integrating into the other space (von Kries transforms compose).
+std::vector<Rgb> weights_for(ColorSpace space) {
+  const auto cmf = read_cie_table("cie/cie1931_2deg.csv", "wavelength_nm,x_bar,y_bar,z_bar");
+  const auto d65 = read_cie_table("cie/d65.csv", "wavelength_nm,relative_power");
+  std::vector<Xyz> lit(kGridSize);
+  Xyz white{};
+  for (std::size_t i = 0; i < kGridSize; ++i) {
+    const int wavelength = kCieFirstNm + static_cast<int>(i);
+    const auto& xyz = row_at(cmf, wavelength).values;
+    const double illuminant = row_at(d65, wavelength).values[1];
+    for (std::size_t c = 0; c < 3; ++c) {
+      lit[i][c] = illuminant * xyz[c + 1];
+      white[c] += lit[i][c];
     }
-    for (auto& wi : w) {
-      for (std::size_t c = 0; c < 3; ++c)
-        wi[c] /= total[c];
-    }
-    return w;
-  }();
-  return weights;
+  }
+  const Xyz space_white = xyz_from_chromaticity(color_space_definition(space).white);
+  const Matrix3 to_rgb =
+      multiply(inverse(rgb_to_xyz(space)),
+               bradford_adaptation({white[0] / white[1], 1.0, white[2] / white[1]}, space_white));
+  std::vector<Rgb> w(kGridSize);
+  Rgb total{};
+  for (std::size_t i = 0; i < kGridSize; ++i) {
+    w[i] = multiply(to_rgb, lit[i]);
+    for (std::size_t c = 0; c < 3; ++c)
+      total[c] += w[i][c];
+  }
+  for (auto& wi : w) {
+    for (std::size_t c = 0; c < 3; ++c)
+      wi[c] /= total[c];
+  }
+  return w;
+}
+
+const std::vector<Rgb>& weights(ColorSpace space) {
+  static const std::array<std::vector<Rgb>, 4> all = {
+      weights_for(ColorSpace::lin_rec709), weights_for(ColorSpace::acescg),
+      weights_for(ColorSpace::lin_rec2020), weights_for(ColorSpace::lin_displayp3)};
+  return all.at(static_cast<std::size_t>(space));
 }
 
 }  // namespace
 
-SpectralCurve::SpectralCurve(const Spectrum& spectrum) {
+SpectralCurve::SpectralCurve(const Spectrum& spectrum, ColorSpace space)
+    : weights_(weights(space)) {
   ior_.reserve(kGridSize);
   for (std::size_t i = 0; i < kGridSize; ++i) {
     ior_.push_back(spectrum.at(static_cast<double>(kCieFirstNm) + static_cast<double>(i)));
@@ -72,12 +83,11 @@ SpectralCurve::SpectralCurve(const Spectrum& spectrum) {
 }
 
 Rgb SpectralCurve::at(double mu) const {
-  const auto& weights = linear_srgb_weights();
   Rgb result{};
   for (std::size_t i = 0; i < kGridSize; ++i) {
     const double f = fresnel_exact(mu, ior_[i]);
     for (std::size_t c = 0; c < 3; ++c)
-      result[c] += weights[i][c] * f;
+      result[c] += weights_[i][c] * f;
   }
   return result;
 }

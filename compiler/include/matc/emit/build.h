@@ -45,6 +45,7 @@ struct BuildOptions {
   LutPrecision coefficient_table_precision = LutPrecision::f16;
   std::size_t embedded_lut_size = 0;  // --embed-lut: 0 for none, else 2..kMaxEmbeddedLutSize
   runtime::BasisKind basis = runtime::kDefaultBasis;  // --basis
+  ColorOptions color;                                 // --color-space, --gamut-mapping
 };
 
 struct OutputFile {

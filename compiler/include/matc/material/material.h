@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "matc/diagnostics.h"
+#include "matc/optics/color_space.h"
 #include "matc/optics/spectrum.h"
 #include "matc/runtime/fresnel.h"
 
@@ -35,7 +36,14 @@ struct SpectralInput {
   Spectrum spectrum;
 };
 
-using MaterialModel = std::variant<ArtisticInput, IorInput, SpectralInput>;
+// The OpenPBR / Adobe Standard Material metal: reflectance F0 at normal incidence and the tint that
+// scales Schlick's curve at mu = 1/7 (about 82 degrees), each in [0, 1] per channel.
+struct F82TintInput {
+  Rgb f0{};
+  Rgb tint{};
+};
+
+using MaterialModel = std::variant<ArtisticInput, IorInput, SpectralInput, F82TintInput>;
 
 struct Material {
   std::string name;  // validated identifier, see docs/material-format.md
@@ -44,9 +52,12 @@ struct Material {
   std::string source_path;          // the material file as named on the command line
   SourceLocation name_location;     // where the name is written, for batch-level diagnostics
   std::string source_text;          // the JSON as parsed: outputs hash it, never re-read
+  // The space the model's RGB values are written in ("color_space"); absent: the build's working
+  // space. Spectral materials have no RGB values and ignore it.
+  std::optional<ColorSpace> color_space;
 };
 
-// "artistic", "ior" or "spectral": the key that selects the model in a material file.
+// "artistic", "ior", "spectral" or "f82_tint": the key that selects the model in a material file.
 std::string_view model_key(const MaterialModel& model);
 
 }  // namespace matc

@@ -2,7 +2,9 @@
 #pragma once
 
 #include <array>
+#include <memory>
 
+#include "matc/optics/color_space.h"
 #include "matc/optics/fresnel.h"
 #include "matc/runtime/fresnel.h"
 
@@ -13,7 +15,7 @@ using runtime::Rgb;
 class ReflectanceCurve {
  public:
   virtual ~ReflectanceCurve() = default;
-  // Reflectance per linear-sRGB channel at mu = cos(theta) in [0, 1].
+  // Reflectance per channel of the working space at mu = cos(theta) in [0, 1].
   virtual Rgb at(double mu) const = 0;
 };
 
@@ -26,6 +28,31 @@ class IorCurve final : public ReflectanceCurve {
 
  private:
   std::array<ComplexIor, 3> ior_;
+};
+
+// The OpenPBR / Adobe Standard Material metal (Kutz et al. 2021): per channel F82-tint with F0 =
+// `f0` and F(1/7) = `tint` x Schlick(1/7), from an `f82_tint` material.
+class F82TintCurve final : public ReflectanceCurve {
+ public:
+  F82TintCurve(const Rgb& f0, const Rgb& tint) : f0_(f0), tint_(tint) {}
+  Rgb at(double mu) const override;
+
+ private:
+  Rgb f0_;
+  Rgb tint_;
+};
+
+// Another curve with a 3x3 matrix applied to its RGB: a change of working space, or a gamut
+// mapping (both linear, so the result is still a curve the basis fits like any other).
+class TransformedCurve final : public ReflectanceCurve {
+ public:
+  TransformedCurve(std::unique_ptr<ReflectanceCurve> curve, const Matrix3& matrix)
+      : curve_(std::move(curve)), matrix_(matrix) {}
+  Rgb at(double mu) const override { return multiply(matrix_, curve_->at(mu)); }
+
+ private:
+  std::unique_ptr<ReflectanceCurve> curve_;
+  Matrix3 matrix_;
 };
 
 }  // namespace matc

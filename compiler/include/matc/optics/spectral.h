@@ -1,10 +1,11 @@
-// Spectral Fresnel to linear sRGB: F_c(mu) = sum_lambda w_c(lambda) F(mu; n(lambda), k(lambda)),
-// with w_c from the CIE 1931 2-degree observer under D65, converted by the IEC 61966-2-1
-// XYZ -> linear sRGB matrix and normalised so that a perfect mirror maps to (1, 1, 1).
+// Spectral Fresnel to a linear RGB working space: F_c(mu) = sum_lambda w_c(lambda) F(mu; n, k),
+// with w_c from the CIE 1931 2-degree observer under D65, adapted (Bradford) to the space's white,
+// converted by its XYZ -> RGB matrix and normalised so that a perfect mirror maps to (1, 1, 1).
 #pragma once
 
 #include <vector>
 
+#include "matc/optics/color_space.h"
 #include "matc/optics/reflectance_curve.h"
 #include "matc/optics/spectrum.h"
 
@@ -16,11 +17,12 @@ inline constexpr int kCieLastNm = 830;
 
 class SpectralCurve final : public ReflectanceCurve {
  public:
-  explicit SpectralCurve(const Spectrum& spectrum);
+  explicit SpectralCurve(const Spectrum& spectrum, ColorSpace space = kDefaultColorSpace);
   Rgb at(double mu) const override;
 
  private:
-  std::vector<ComplexIor> ior_;  // the spectrum resampled on the integration grid
+  const std::vector<Rgb>& weights_;  // w_c(lambda) for the working space
+  std::vector<ComplexIor> ior_;      // the spectrum resampled on the integration grid
 };
 
 }  // namespace matc
