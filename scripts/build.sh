@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what matc needs, builds it (which also bakes the example textured metal into
-# build/examples/textured/baked/), and compiles the example materials into build/examples/.
+# build/examples/textured/baked/), and compiles the example materials and MaterialX documents into
+# build/examples/.
 # Extra CMake arguments can be passed in MATC_CMAKE_ARGS.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -11,4 +12,5 @@ bash scripts/install-deps.sh
 cmake -S . -B build -G Ninja ${MATC_CMAKE_ARGS:-}
 cmake --build build
 # --validate: every material's GLSL and HLSL shaders run on lavapipe against the CPU runtime first.
-./build/matc --validate -o build/examples examples/materials/*.json
+# examples/materialx/*.mtlx: MaterialX documents compiled as they are (docs/interchange.md).
+./build/matc --validate -o build/examples examples/materials/*.json examples/materialx/*.mtlx

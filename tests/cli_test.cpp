@@ -660,3 +660,76 @@ TEST_F(MatcCli, BakeIsDeterministicAndItsDepfileNamesTheMaps) {
 }
 
 }  // namespace
+
+namespace matc_cli_materialx {
+
+const char* const kMetals = R"(<?xml version="1.0"?>
+<materialx version="1.39">
+  <standard_surface name="SR_gold" type="surfaceshader">
+    <input name="base" type="float" value="1" />
+    <input name="base_color" type="color3" value="0.944, 0.776, 0.373" />
+    <input name="metalness" type="float" value="1" />
+    <input name="specular_color" type="color3" value="0.998, 0.981, 0.751" />
+  </standard_surface>
+  <surfacematerial name="Gold" type="material">
+    <input name="surfaceshader" type="surfaceshader" nodename="SR_gold" />
+  </surfacematerial>
+  <open_pbr_surface name="SR_copper" type="surfaceshader">
+    <input name="base_metalness" type="float" value="1" />
+    <input name="base_color" type="color3" value="0.926, 0.721, 0.504" />
+  </open_pbr_surface>
+  <surfacematerial name="Copper" type="material">
+    <input name="surfaceshader" type="surfaceshader" nodename="SR_copper" />
+  </surfacematerial>
+</materialx>
+)";
+
+}  // namespace matc_cli_materialx
+
+// A document compiles directly (beside material files), and its import compiles to the same
+// coefficients: both paths hand the compiler the same material.
+TEST_F(MatcCli, MaterialXCompilesDirectlyAndThroughImportAlike) {
+  write_file(dir_ / "metals.mtlx", matc_cli_materialx::kMetals);
+  write_file(dir_ / "good.json", kGood);
+  const CommandResult direct = run({"-q", "-o", "direct", "metals.mtlx", "good.json"});
+  ASSERT_EQ(direct.exit_code, 0) << direct.err;
+  for (const char* name : {"Gold.json", "Gold.spv", "Copper.glsl", "good.json"})
+    EXPECT_TRUE(fs::exists(dir_ / "direct" / name)) << name;
+  const CommandResult imported = run({"import", "-q", "-o", "imported", "metals.mtlx"});
+  ASSERT_EQ(imported.exit_code, 0) << imported.err;
+  const CommandResult compiled =
+      run({"-q", "-o", "compiled", "imported/Gold.json", "imported/Copper.json"});
+  ASSERT_EQ(compiled.exit_code, 0) << compiled.err;
+  for (const char* name : {"Gold.json", "Copper.json"}) {
+    const auto a = nlohmann::json::parse(read_file(dir_ / "direct" / name));
+    const auto b = nlohmann::json::parse(read_file(dir_ / "compiled" / name));
+    EXPECT_EQ(a["coefficients"], b["coefficients"]) << name;
+    EXPECT_EQ(a["input"], b["input"]) << name;
+    EXPECT_EQ(a["source"], "metals.mtlx");
+  }
+  EXPECT_TRUE(
+      nlohmann::json::parse(read_file(dir_ / "imported" / "Copper.json")).contains("f82_tint"));
+  // Same document, same bytes.
+  const std::string first = read_file(dir_ / "imported" / "Gold.json");
+  ASSERT_EQ(run({"import", "-q", "-o", "imported", "metals.mtlx"}).exit_code, 0);
+  EXPECT_EQ(read_file(dir_ / "imported" / "Gold.json"), first);
+}
+
+TEST_F(MatcCli, ColourSpaceIsRecordedAndChangesSpectralNumbers) {
+  write_file(dir_ / "gold.json", R"({"name": "Gold", "spectral": {"preset": "Au"}})");
+  ASSERT_EQ(run({"-q", "-o", "rec709", "--emit", "json", "gold.json"}).exit_code, 0);
+  const CommandResult acescg =
+      run({"-q", "-o", "acescg", "--emit", "json", "--color-space", "lin_ap1", "gold.json"});
+  ASSERT_EQ(acescg.exit_code, 0) << acescg.err;
+  const auto a = nlohmann::json::parse(read_file(dir_ / "rec709" / "Gold.json"));
+  const auto b = nlohmann::json::parse(read_file(dir_ / "acescg" / "Gold.json"));
+  EXPECT_EQ(a["color"]["working_space"], "lin_rec709");
+  EXPECT_EQ(b["color"]["working_space"], "acescg");
+  EXPECT_FALSE(a["color"]["within_unit_range"].get<bool>());
+  EXPECT_TRUE(b["color"]["within_unit_range"].get<bool>());
+  EXPECT_NE(a["coefficients"], b["coefficients"]);
+  EXPECT_EQ(nlohmann::json::parse(
+                read_file(dir_ / "acescg" / "matc_manifest.json"))["color"]["working_space"],
+            "acescg");
+  EXPECT_EQ(acescg.err.find("note:"), std::string::npos) << "gold is inside ACEScg";
+}

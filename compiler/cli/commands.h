@@ -125,6 +125,15 @@ struct BakeCommandOptions {
 };
 int run_bake(const BakeCommandOptions& options);
 
+// `matc import`: MaterialX documents to matc material files.
+struct ImportOptions {
+  std::vector<std::string> files;
+  std::string output_directory = "matc-import";
+  bool keep_going = false;
+  bool quiet = false;
+};
+int run_import(const ImportOptions& options);
+
 struct LutCommandOptions {
   std::string output;
   std::string format;  // empty: from the output's extension

@@ -21,6 +21,7 @@
 #include "matc/compile.h"
 #include "matc/emit/build.h"
 #include "matc/json_format.h"
+#include "matc/material/materialx_import.h"
 #include "matc/material/parse.h"
 #include "print_diagnostics.h"
 #include "progress_line.h"
@@ -89,33 +90,55 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
   for (const std::string& file : options.files)
     inputs_by_identity[path_identity(file)] = file;
   UniqueNames names;
-  std::vector<Job> jobs(options.files.size());
-  for (std::size_t index = 0; index < jobs.size(); ++index) {
-    Job& job = jobs[index];
-    job.file = options.files[index];
-    ParseResult parsed = read_material_file(job.file);
-    job.diagnostics = std::move(parsed.diagnostics);
-    if (!parsed.material) continue;
-    const Material& material = *parsed.material;
-    const std::vector<fs::path> outputs = possible_outputs(output_directory, material.name);
+  // Name rules, then the job: a material with an error is kept for its diagnostics only.
+  const auto admit = [&](Job& job, std::optional<Material> material) {
+    if (!material) return;
+    const std::vector<fs::path> outputs = possible_outputs(output_directory, material->name);
     const auto overwritten = std::find_if(outputs.begin(), outputs.end(), [&](const fs::path& p) {
       return inputs_by_identity.contains(path_identity(p));
     });
-    if (reserved_names().contains(lowercase(material.name))) {
-      job.diagnostics.error(material.name_location, "name",
-                            fmt::format("'{}' names a file every build writes", material.name),
+    if (reserved_names().contains(lowercase(material->name))) {
+      job.diagnostics.error(material->name_location, "name",
+                            fmt::format("'{}' names a file every build writes", material->name),
                             "a name other than matc_fresnel, matc_lut and matc_manifest "
                             "(ignoring case)");
-    } else if (!names.claim(material, "a build", job.diagnostics)) {
+    } else if (!names.claim(*material, "a build", job.diagnostics)) {
       // claim() reported the clash.
     } else if (overwritten != outputs.end()) {
       job.diagnostics.error(
-          material.name_location, "name",
+          material->name_location, "name",
           fmt::format("output '{}' would overwrite the input {}", overwritten->string(),
                       inputs_by_identity.at(path_identity(*overwritten))),
           "an output directory (-o) that holds no input file");
     }
-    if (!job.diagnostics.has_errors()) job.material = std::move(parsed.material);
+    if (!job.diagnostics.has_errors()) job.material = std::move(material);
+  };
+  std::vector<Job> jobs;
+  for (const std::string& file : options.files) {
+    if (is_materialx_path(file)) {
+      // One job per imported material; the document's own diagnostics go with the first.
+      MaterialXImport imported = read_materialx_file(file);
+      Job first;
+      first.file = file;
+      first.diagnostics = std::move(imported.diagnostics);
+      if (imported.materials.empty()) {
+        jobs.push_back(std::move(first));
+        continue;
+      }
+      for (std::size_t i = 0; i < imported.materials.size(); ++i) {
+        Job job = i == 0 ? std::move(first) : Job{};
+        job.file = file;
+        admit(job, std::move(imported.materials[i].material));
+        jobs.push_back(std::move(job));
+      }
+      continue;
+    }
+    Job job;
+    job.file = file;
+    ParseResult parsed = read_material_file(file);
+    job.diagnostics = std::move(parsed.diagnostics);
+    admit(job, std::move(parsed.material));
+    jobs.push_back(std::move(job));
   }
   return jobs;
 }

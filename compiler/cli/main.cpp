@@ -24,7 +24,8 @@ int main(int argc, char** argv) {
       "4 shaders differ from the CPU runtime on the device, 5 no usable Vulkan device.");
 
   CompileOptions compile;
-  app.add_option("files", compile.files, "Material files (.json) to compile");
+  app.add_option("files", compile.files,
+                 "Material files (.json) and MaterialX documents (.mtlx) to compile");
   app.add_option("-o,--output", compile.output_directory, "Output directory (created if missing)")
       ->capture_default_str();
   app.add_flag("-k,--keep-going", compile.keep_going,
@@ -244,12 +245,25 @@ int main(int argc, char** argv) {
   add_basis_option(*report_command, report.basis);
   add_color_options(*report_command, report.color);
 
+  ImportOptions import;
+  CLI::App* import_command = app.add_subcommand(
+      "import",
+      "Write a matc material file for each metallic Standard Surface or OpenPBR material of "
+      "MaterialX documents (docs/interchange.md)");
+  import_command->add_option("files", import.files, "MaterialX documents (.mtlx)")->required();
+  import_command->add_option("-o,--output", import.output_directory, "Output directory")
+      ->capture_default_str();
+  import_command->add_flag("-k,--keep-going", import.keep_going,
+                           "Write the other documents' materials when one fails (still exits 1)");
+  import_command->add_flag("-q,--quiet", import.quiet, "Do not print the summary line");
+
   // -MD, as compilers spell it: CLI11 only takes one-letter names after a single dash.
   std::vector<std::string> arguments(argv + 1, argv + argc);
   std::replace(arguments.begin(), arguments.end(), std::string("-MD"), std::string("--MD"));
   std::reverse(arguments.begin(), arguments.end());  // CLI11's order for a vector
   std::string diagnostics_format = "text";
-  for (CLI::App* command : {&app, eval_command, validate_command, report_command, bake_command}) {
+  for (CLI::App* command :
+       {&app, eval_command, validate_command, report_command, bake_command, import_command}) {
     command
         ->add_option("--diagnostics-format", diagnostics_format,
                      "How problems in inputs are reported on standard error: text "
@@ -278,6 +292,7 @@ int main(int argc, char** argv) {
     if (*lut_command) return run_lut(lut);
     if (*validate_command) return run_validate(validate);
     if (*report_command) return run_report(report);
+    if (*import_command) return run_import(import);
     if (*fit_command) return run_basis_fit(basis_fit);
     if (*table_fit_command) return run_basis_coefficient_table(table_fit);
     if (*ltc_table_command) return run_basis_ltc_table(ltc_table);

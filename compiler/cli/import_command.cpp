@@ -1,0 +1,83 @@
+// `matc import`: MaterialX documents to matc material files (docs/interchange.md).
+#include <filesystem>
+#include <map>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "atomic_file.h"
+#include "commands.h"
+#include "matc/material/materialx_import.h"
+#include "print_diagnostics.h"
+#include "unique_names.h"
+
+namespace matc::cli {
+
+namespace fs = std::filesystem;
+
+int run_import(const ImportOptions& options) {
+  // Every document is imported and every name checked before anything is written, so that a
+  // failing batch (without --keep-going) writes nothing, and a failing document never does.
+  struct Document {
+    std::string file;
+    MaterialXImport imported;
+  };
+  std::vector<Document> documents;
+  std::map<std::string, std::string> inputs_by_identity;
+  for (const std::string& file : options.files)
+    inputs_by_identity[path_identity(file)] = file;
+  UniqueNames names;
+  std::size_t failed = 0;
+  for (const std::string& file : options.files) {
+    Document document{file, {}};
+    if (!is_materialx_path(file)) {
+      document.imported.diagnostics.error({file, 0, 0}, "", "is not a MaterialX document",
+                                          "a .mtlx file");
+    } else {
+      document.imported = read_materialx_file(file);
+    }
+    for (const ImportedMaterial& material : document.imported.materials) {
+      const fs::path output =
+          fs::path(options.output_directory) / (material.material.name + ".json");
+      if (inputs_by_identity.contains(path_identity(output))) {
+        document.imported.diagnostics.error(
+            material.material.name_location, "name",
+            fmt::format("output '{}' would overwrite an input", output.string()),
+            "an output directory (-o) that holds no input file");
+      } else {
+        names.claim(material.material, "an import", document.imported.diagnostics);
+      }
+    }
+    if (document.imported.diagnostics.has_errors()) ++failed;
+    documents.push_back(std::move(document));
+  }
+  std::size_t written = 0;
+  std::size_t unchanged = 0;
+  std::size_t imported = 0;
+  for (const Document& document : documents) {
+    print_diagnostics(document.imported.diagnostics);
+    if (document.imported.diagnostics.has_errors() || (failed > 0 && !options.keep_going)) continue;
+    try {
+      fs::create_directories(options.output_directory);
+      for (const ImportedMaterial& material : document.imported.materials) {
+        const fs::path output =
+            fs::path(options.output_directory) / (material.material.name + ".json");
+        ++(write_file_atomically(output, material.json) == WriteOutcome::written ? written
+                                                                                 : unchanged);
+        ++imported;
+      }
+    } catch (const std::exception& error) {
+      fmt::print(stderr, "{}: error: {}\n", options.output_directory, error.what());
+      ++failed;
+    }
+  }
+  if (!options.quiet) {
+    fmt::print(stderr,
+               "matc import: {} materials imported ({} files written, {} unchanged), {} "
+               "documents failed\n",
+               imported, written, unchanged, failed);
+  }
+  return failed > 0 ? kExitInputError : kExitSuccess;
+}
+
+}  // namespace matc::cli
