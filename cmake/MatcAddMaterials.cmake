@@ -13,6 +13,11 @@
 # _matc_json_name(<path> <caller> <kind> <out_var>): the "name" field of a JSON file (material or
 # bake asset), read at configure time; a file without one stops CMake with a pointer to matc.
 function(_matc_json_name path caller kind out_var)
+  if(path MATCHES "\\.[mM][tT][lL][xX]$")
+    message(FATAL_ERROR "${caller}: ${path} is a MaterialX document, whose outputs are named after "
+            "the materials inside it: write its material files with `matc import` and list those "
+            "(docs/interchange.md)")
+  endif()
   file(READ "${path}" _json)
   string(JSON _name ERROR_VARIABLE _error GET "${_json}" name)
   if(_error)

@@ -216,6 +216,16 @@ TEST(MaterialXImport, BadDocumentsAreLocated) {
   }
 }
 
+TEST(MaterialXImport, InvalidUtf8InANameIsReplacedNotFatal) {
+  // Found by matc_materialx_fuzzer: the element name reaches the description verbatim.
+  const auto imported = import_materialx(
+      document(surface("standard_surface", input("metalness", "float", "1"), "go\xffld")),
+      "u.mtlx");
+  ASSERT_EQ(imported.materials.size(), 1u) << all_diagnostics(imported);
+  EXPECT_EQ(imported.materials[0].material.name, "go_ld");
+  EXPECT_NE(imported.materials[0].json.find("go\xef\xbf\xbdld"), std::string::npos);
+}
+
 TEST(MaterialXImport, NamesFollowMatcsRule) {
   EXPECT_EQ(sanitized_material_name("Chrome.polished"), "Chrome_polished");
   EXPECT_EQ(sanitized_material_name("__gold--1__"), "gold_1_");

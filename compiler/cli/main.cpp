@@ -239,7 +239,8 @@ int main(int argc, char** argv) {
       "report",
       "Plot each material's Fresnel curves (exact, ours, Schlick, F82-tint) as SVG, with CSV "
       "samples and an HTML index of the errors");
-  report_command->add_option("files", report.files, "Material files (.json)")->required();
+  report_command->add_option("files", report.files, "Material files (.json), MaterialX documents")
+      ->required();
   report_command->add_option("-o,--output", report.output_directory, "Output directory")
       ->capture_default_str();
   add_basis_option(*report_command, report.basis);

@@ -10,6 +10,7 @@
 #include "atomic_file.h"
 #include "commands.h"
 #include "matc/compile.h"
+#include "matc/material/materialx_import.h"
 #include "matc/material/parse.h"
 #include "matc/report/fresnel_plot.h"
 #include "matc/report/material_curves.h"
@@ -28,6 +29,16 @@ std::optional<std::vector<Material>> read_all(const std::vector<std::string>& fi
   UniqueNames names;
   bool ok = true;
   for (const std::string& file : files) {
+    if (is_materialx_path(file)) {
+      MaterialXImport imported = read_materialx_file(file);
+      for (ImportedMaterial& material : imported.materials) {
+        names.claim(material.material, "a report", imported.diagnostics);
+        materials.push_back(std::move(material.material));
+      }
+      print_diagnostics(imported.diagnostics);
+      if (imported.diagnostics.has_errors()) ok = false;
+      continue;
+    }
     ParseResult parsed = read_material_file(file);
     if (parsed.material) names.claim(*parsed.material, "a report", parsed.diagnostics);
     print_diagnostics(parsed.diagnostics);

@@ -19,7 +19,7 @@ typedef struct MatcFresnelCoefficients {
 #define MATC_{{name}}_MATC_VERSION "{{version}}"
 #define MATC_{{name}}_INPUTS_HASH "{{inputs_hash}}"
 
-/* F0 = ({{f0}}); largest |F - exact Fresnel| over 2001 cosines: {{max_error}}. */
+/* F0 = ({{f0}}) in {{color_space}}; largest |F - exact Fresnel| over 2001 cosines: {{max_error}}. */
 static const MatcFresnelCoefficients matc_coefficients_{{name}} = {
     {{red_c}},
     {{green_c}},

@@ -9,7 +9,7 @@
 #error matc: {{name}}.glsl comes from matc {{version}} but matc_fresnel.glsl from another version; regenerate both with one matc
 #endif
 
-// F0 = ({{f0}}); largest |F - exact Fresnel| over 2001 cosines: {{max_error}}.
+// F0 = ({{f0}}) in {{color_space}}; largest |F - exact Fresnel| over 2001 cosines: {{max_error}}.
 const MatcFresnelCoefficients matc_coefficients_{{name}} = MatcFresnelCoefficients(
     vec4({{red}}),
     vec4({{green}}),

@@ -9,7 +9,7 @@
 #error matc: {{name}}.hlsl comes from matc {{version}} but matc_fresnel.hlsl from another version; regenerate both with one matc
 #endif
 
-// F0 = ({{f0}}); largest |F - exact Fresnel| over 2001 cosines: {{max_error}}.
+// F0 = ({{f0}}) in {{color_space}}; largest |F - exact Fresnel| over 2001 cosines: {{max_error}}.
 static const MatcFresnelCoefficients matc_coefficients_{{name}} = {
     float4({{red}}),
     float4({{green}}),

@@ -556,7 +556,9 @@ class Importer {
 
   void add_material(const ordered_json& json, const pugi::xml_node& element) {
     ImportedMaterial imported;
-    imported.json = json.dump(2) + "\n";
+    // Names and descriptions come from the document's bytes, which XML parsing does not check
+    // for UTF-8: a bad byte becomes U+FFFD in the description (the name is ASCII by then).
+    imported.json = json.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n";
     ParseResult parsed = parse_material(imported.json, locator_.path());
     if (!parsed.material) {
       // The importer checked every value; a refusal here is matc's bug, reported as such.
