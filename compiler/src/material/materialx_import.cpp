@@ -183,12 +183,15 @@ class Importer {
   std::optional<ColorSpace> linear_space_of(std::string_view name, const pugi::xml_node& where) {
     if (const auto space = find_color_space(name)) return space;
     if (const auto decoded = decode_color_value(name, 0.0)) return decoded->space;
-    result_.diagnostics.error(at(where), "colorspace",
-                              fmt::format("unknown colour space '{}'", name),
+    unknown_space(where, "colorspace", name);
+    return std::nullopt;
+  }
+
+  void unknown_space(const pugi::xml_node& where, const std::string& field, std::string_view name) {
+    result_.diagnostics.error(at(where), field, fmt::format("unknown colour space '{}'", name),
                               "one of " + color_space_names() +
                                   ", or an encoded srgb_texture, g22_rec709, g18_rec709, g22_ap1, "
                                   "g18_ap1, srgb_displayp3");
-    return std::nullopt;
   }
 
   // The colorspace in force at `node`: its own attribute, else its nearest ancestor's.
@@ -301,11 +304,7 @@ class Importer {
         space = decoded->space;
       }
     } else {
-      result_.diagnostics.error(at(input), field,
-                                fmt::format("unknown colour space '{}'", space_name),
-                                "one of " + color_space_names() +
-                                    ", or an encoded srgb_texture, g22_rec709, g18_rec709, "
-                                    "g22_ap1, g18_ap1, srgb_displayp3");
+      unknown_space(input, field, space_name);
       return false;
     }
     if (space != document_space_) value = multiply(rgb_to_rgb(space, document_space_), value);
