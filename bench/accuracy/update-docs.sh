@@ -17,6 +17,10 @@ tool="$build/bench/matc_accuracy_table"
 cmake --build "$build" --target matc_basis_study >/dev/null
 "$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" basis-study \
   "$build/bench/matc_basis_study"
+# Whether a basis could fit F82-tint materials too (about 40 s on 2 cores).
+cmake --build "$build" --target matc_f82_basis_study >/dev/null
+"$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" f82-basis-study \
+  "$build/bench/matc_f82_basis_study"
 # The coefficient-table study (about 20 s on 2 cores; the unit tests hold the shipped table to the
 # targets it was chosen for).
 cmake --build "$build" --target matc_table_study >/dev/null

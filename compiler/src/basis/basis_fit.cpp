@@ -20,18 +20,18 @@ namespace {
 using Eigen::Index;
 
 // The training curves, one per row, normalised to run from 1 (mu = 0) to 0 (mu = 1).
-Eigen::MatrixXd normalized_curves(std::span<const ComplexIor> iors, std::size_t samples,
+Eigen::MatrixXd normalized_curves(std::span<const TrainingCurve> training, std::size_t samples,
                                   Eigen::VectorXd& f0) {
-  const auto rows = static_cast<Index>(iors.size());
+  const auto rows = static_cast<Index>(training.size());
   const auto columns = static_cast<Index>(samples);
   Eigen::MatrixXd curves(rows, columns);
   f0.resize(rows);
   for (Index row = 0; row < rows; ++row) {
-    const ComplexIor ior = iors[static_cast<std::size_t>(row)];
-    f0(row) = fresnel_exact(1.0, ior);
+    const TrainingCurve& curve = training[static_cast<std::size_t>(row)];
+    f0(row) = curve(1.0);
     for (Index j = 0; j < columns; ++j) {
       const double mu = static_cast<double>(j) / static_cast<double>(columns - 1);
-      curves(row, j) = (fresnel_exact(mu, ior) - f0(row)) / (1.0 - f0(row));
+      curves(row, j) = (curve(mu) - f0(row)) / (1.0 - f0(row));
     }
   }
   return curves;
@@ -80,6 +80,15 @@ runtime::BasisView FittedBasis::view() const {
 }
 
 FittedBasis fit_basis(std::span<const ComplexIor> training, const BasisConstruction& construction) {
+  std::vector<TrainingCurve> curves;
+  curves.reserve(training.size());
+  for (const ComplexIor ior : training)
+    curves.emplace_back([ior](double mu) { return fresnel_exact(mu, ior); });
+  return fit_basis(curves, construction);
+}
+
+FittedBasis fit_basis(std::span<const TrainingCurve> training,
+                      const BasisConstruction& construction) {
   Eigen::VectorXd f0;
   const Eigen::MatrixXd curves = normalized_curves(training, construction.samples, f0);
   const Eigen::VectorXd rows = curve_weights(f0, construction.curve_weighting);

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -67,6 +68,11 @@ struct BasisConstruction {
 // +1. Probes: mu_1 = argmax b_2, mu_2 = the extremum of b_3 farther from mu_1. The polynomial form
 // is fitted to the resulting tables.
 FittedBasis fit_basis(std::span<const ComplexIor> training, const BasisConstruction& construction);
+// The same over any grey curves F(mu) with F(0) = 1 and F(1) < 1 (studies that train on other
+// models' curves, such as F82-tint's).
+using TrainingCurve = std::function<double(double)>;
+FittedBasis fit_basis(std::span<const TrainingCurve> training,
+                      const BasisConstruction& construction);
 
 // The authors' training set and construction.
 std::vector<ComplexIor> paper_training_iors(const PaperBasisOptions& options = {});
