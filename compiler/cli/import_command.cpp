@@ -4,6 +4,7 @@
 #include <vector>
 
 #include <fmt/core.h>
+#include <nlohmann/json.hpp>
 
 #include "atomic_file.h"
 #include "commands.h"
@@ -71,7 +72,15 @@ int run_import(const ImportOptions& options) {
       ++failed;
     }
   }
-  if (!options.quiet) {
+  if (!options.quiet && diagnostics_format() == DiagnosticsFormat::json) {
+    // Standard error stays JSON Lines for tools: the summary is one more object.
+    const nlohmann::ordered_json line = {{"summary",
+                                          {{"imported", imported},
+                                           {"written", written},
+                                           {"unchanged", unchanged},
+                                           {"failed", failed}}}};
+    fmt::print(stderr, "{}\n", line.dump());
+  } else if (!options.quiet) {
     fmt::print(stderr,
                "matc import: {} materials imported ({} files written, {} unchanged), {} "
                "documents failed\n",
