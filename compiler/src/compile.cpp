@@ -57,6 +57,23 @@ ordered_json input_json(const Material& material) {
   return {{std::string(model_key(material.model)), input}};
 }
 
+// `curve` with `color`'s gamut mapping applied. `sampled` is the same curve, cached where the
+// caller has a cache, to find how far to map; `saturation` gets what the mapping kept (1:
+// unchanged).
+std::unique_ptr<ReflectanceCurve> apply_gamut_mapping(std::unique_ptr<ReflectanceCurve> curve,
+                                                      const ReflectanceCurve& sampled,
+                                                      const ColorOptions& color,
+                                                      double& saturation) {
+  saturation = 1.0;
+  if (color.gamut_mapping == GamutMapping::none) return curve;
+  const Desaturation mapping =
+      desaturation_into_unit_range(sampled, color.working_space, kAccuracySamples);
+  saturation = mapping.saturation;
+  if (mapping.saturation == 1.0) return curve;
+  // The moved curve keeps its address: `sampled` may still refer to it.
+  return std::make_unique<TransformedCurve>(std::move(curve), mapping.matrix);
+}
+
 }  // namespace
 
 ColorSpace input_color_space(const Material& material, ColorSpace working_space) {
@@ -82,11 +99,9 @@ std::unique_ptr<ReflectanceCurve> make_working_space_curve(const Material& mater
 std::unique_ptr<ReflectanceCurve> make_reflectance_curve(const Material& material,
                                                          const ColorOptions& color) {
   auto curve = make_working_space_curve(material, color.working_space);
-  if (color.gamut_mapping == GamutMapping::none) return curve;
-  const Desaturation mapping =
-      desaturation_into_unit_range(*curve, color.working_space, kAccuracySamples);
-  if (mapping.saturation == 1.0) return curve;
-  return std::make_unique<TransformedCurve>(std::move(curve), mapping.matrix);
+  const ReflectanceCurve& sampled = *curve;
+  double saturation = 1.0;
+  return apply_gamut_mapping(std::move(curve), sampled, color, saturation);
 }
 
 static_assert((kAccuracySamples - 1) % (kMinimaxCosines - 1) == 0,
@@ -101,16 +116,11 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
   // The solve and the accuracy measurement share cosines: evaluate (integrate) the curve once.
   const AccuracyGridCurve unmapped_grid(*unmapped);
   compiled.range = measure_curve_range(unmapped_grid, kAccuracySamples);
-  std::unique_ptr<ReflectanceCurve> mapped;
-  std::optional<AccuracyGridCurve> mapped_grid;
-  if (color.gamut_mapping == GamutMapping::desaturate && !compiled.range.within_unit_range()) {
-    const Desaturation mapping =
-        desaturation_into_unit_range(unmapped_grid, color.working_space, kAccuracySamples);
-    compiled.saturation = mapping.saturation;
-    // `unmapped` moves into the mapped curve; the object unmapped_grid refers to stays alive.
-    mapped = std::make_unique<TransformedCurve>(std::move(unmapped), mapping.matrix);
-    mapped_grid.emplace(*mapped);
-  }
+  const ReflectanceCurve* const working = unmapped.get();
+  const std::unique_ptr<ReflectanceCurve> exact =
+      apply_gamut_mapping(std::move(unmapped), unmapped_grid, color, compiled.saturation);
+  std::optional<AccuracyGridCurve> mapped_grid;  // only a mapped curve needs its own cache
+  if (exact.get() != working) mapped_grid.emplace(*exact);
   const AccuracyGridCurve& curve = mapped_grid ? *mapped_grid : unmapped_grid;
   compiled.coefficients = solve_coefficients(curve, basis);
   compiled.accuracy =
