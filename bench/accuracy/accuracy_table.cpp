@@ -11,6 +11,7 @@
 
 #include <fmt/core.h>
 
+#include "error_totals.h"
 #include "matc/fit/accuracy.h"
 #include "matc/fit/coefficients.h"
 #include "matc/lut/comparison_lobes.h"
@@ -27,21 +28,7 @@ namespace {
 using matc::ErrorStats;
 using matc::FitAccuracy;
 
-struct Totals {
-  double worst = 0.0;
-  double sum_of_max = 0.0;
-  std::size_t curves = 0;
-  void add(const ErrorStats& stats) {
-    for (const double value : stats.max_abs)
-      add_one(value);
-  }
-  void add_one(double max_error) {
-    worst = std::max(worst, max_error);
-    sum_of_max += max_error;
-    ++curves;
-  }
-  double mean() const { return sum_of_max / static_cast<double>(curves); }
-};
+using matc::bench::Totals;
 
 using matc::runtime::BasisKind;
 

@@ -12,6 +12,7 @@
 #include <fmt/core.h>
 #include <Eigen/Dense>
 
+#include "error_totals.h"
 #include "matc/basis/basis_fit.h"
 #include "matc/basis/basis_polynomial_fit.h"
 #include "matc/fit/accuracy.h"
@@ -25,17 +26,7 @@ namespace {
 using matc::FittedBasis;
 using matc::TrainingCurve;
 
-struct Score {
-  double worst = 0.0;
-  double sum = 0.0;
-  std::size_t count = 0;
-  void add(double max_error) {
-    worst = std::max(worst, max_error);
-    sum += max_error;
-    ++count;
-  }
-  double mean() const { return sum / static_cast<double>(count); }
-};
+using matc::bench::Totals;
 
 double max_error(const matc::ReflectanceCurve& curve, const FittedBasis& basis) {
   const auto coefficients = matc::solve_coefficients_minimax(curve, basis.polynomial);
@@ -169,9 +160,9 @@ int main() {
       basis = f82_spanning_basis();
       name = "b_1 = (1 - mu)^5, b_2 = mu (1 - mu)^6 (F82-tint's span), b_3 from `extended`'s rest";
     }
-    Score measured;
+    Totals measured;
     for (const auto& curve : metals)
-      measured.add(max_error(curve, basis));
+      measured.add_one(max_error(curve, basis));
     // Tints from 0.5: lower ones take low-F0 curves below 0, where every decomposition (and every
     // renderer) clamps, whatever the basis.
     double high_tints = 0.0;
@@ -183,9 +174,9 @@ int main() {
         if (tint >= 0.7) high_tints = std::max(high_tints, error);
       }
     }
-    Score as_f82;
+    Totals as_f82;
     for (const auto& curve : metal_f82)
-      as_f82.add(max_error(curve, basis));
+      as_f82.add_one(max_error(curve, basis));
     fmt::print("| {} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} / {:.4f} |\n", name,
                measured.worst, measured.mean(), high_tints, mid_tints, as_f82.worst, as_f82.mean());
   }
