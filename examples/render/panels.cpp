@@ -150,6 +150,16 @@ void write_panels(const std::filesystem::path& path,
   write_png(path, static_cast<std::uint32_t>(width), size, rgb);
 }
 
+void write_difference_panels(const std::filesystem::path& directory, const std::string& stem,
+                             const Panel& schlick, const Panel& ours, const Panel& reference,
+                             const Panel& exact, std::uint32_t size) {
+  write_panels(directory / (stem + "_difference.png"),
+               {difference(schlick, reference), difference(ours, reference)}, size,
+               display_difference);
+  write_panels(directory / (stem + "_fresnel_difference.png"),
+               {difference(schlick, exact), difference(ours, exact)}, size, display_difference);
+}
+
 bool validation_clean(const vulkan::Context& context) {
   for (const std::string& message : context.validation_messages())
     fmt::print(stderr, "validation layer: {}\n", message);

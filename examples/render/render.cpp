@@ -83,12 +83,8 @@ int main(int argc, char** argv) {
       const std::string& name = compiled.material.name;
       write_panels(settings.output / (name + ".png"), {reference.rgb, schlick.rgb, ours.rgb},
                    settings.size, display);
-      write_panels(settings.output / (name + "_difference.png"),
-                   {difference(schlick, reference), difference(ours, reference)}, settings.size,
-                   display_difference);
-      write_panels(settings.output / (name + "_fresnel_difference.png"),
-                   {difference(schlick, exact), difference(ours, exact)}, settings.size,
-                   display_difference);
+      write_difference_panels(settings.output, name, schlick, ours, reference, exact,
+                              settings.size);
       const double roughness = compiled.material.roughness.value_or(kDefaultRoughness);
       const std::array<std::pair<const char*, const Panel*>, 3> rows = {
           std::pair{"Schlick's Fresnel", &schlick}, std::pair{"ours", &ours},

@@ -147,11 +147,7 @@ int main(int argc, char** argv) {
 
     fs::create_directories(output);
     write_panels(output / "textured.png", {reference.rgb, schlick.rgb, ours.rgb}, size, display);
-    write_panels(output / "textured_difference.png",
-                 {difference(schlick, reference), difference(ours, reference)}, size,
-                 display_difference);
-    write_panels(output / "textured_fresnel_difference.png",
-                 {difference(schlick, exact), difference(ours, exact)}, size, display_difference);
+    write_difference_panels(output, "textured", schlick, ours, reference, exact, size);
 
     fmt::print(
         "Rendered on {}, {}x{} pixels per panel, {} samples per pixel, roughness {}. Mean and "
