@@ -236,13 +236,14 @@ int run_eval(const EvalOptions& options) {
   if (!parsed.material) return kExitInputError;
 
   const runtime::BasisView basis = runtime::shipped_basis(basis_of(options.lut.basis));
-  const auto curve = make_reflectance_curve(*parsed.material, color_options_of(options.color));
+  const ColorOptions color = color_options_of(options.color);
+  const auto curve = make_reflectance_curve(*parsed.material, color);
   const LabelledCoefficients coefficients = {{"", solve_coefficients(*curve, basis)}};
 
   ordered_json out;
   out["name"] = parsed.material->name;
   out["basis"] = runtime::basis_name(basis.kind);
-  out["color_space"] = color_space_name(color_options_of(options.color).working_space);
+  out["color_space"] = color_space_name(color.working_space);
   if (!options.mu.empty()) add_direct_fresnel(options, *curve, coefficients, out);
   if (!options.ndotv.empty()) {
     const SplitSumInputs inputs = split_sum_inputs(options, *curve, basis);

@@ -1,6 +1,6 @@
 // `matc import`: MaterialX documents to matc material files (docs/interchange.md).
 #include <filesystem>
-#include <map>
+#include <set>
 #include <vector>
 
 #include <fmt/core.h>
@@ -24,9 +24,12 @@ int run_import(const ImportOptions& options) {
     MaterialXImport imported;
   };
   std::vector<Document> documents;
-  std::map<std::string, std::string> inputs_by_identity;
+  std::set<std::string> input_identities;
   for (const std::string& file : options.files)
-    inputs_by_identity[path_identity(file)] = file;
+    input_identities.insert(path_identity(file));
+  const auto output_of = [&](const ImportedMaterial& material) {
+    return fs::path(options.output_directory) / (material.material.name + ".json");
+  };
   UniqueNames names;
   std::size_t failed = 0;
   for (const std::string& file : options.files) {
@@ -38,9 +41,8 @@ int run_import(const ImportOptions& options) {
       document.imported = read_materialx_file(file);
     }
     for (const ImportedMaterial& material : document.imported.materials) {
-      const fs::path output =
-          fs::path(options.output_directory) / (material.material.name + ".json");
-      if (inputs_by_identity.contains(path_identity(output))) {
+      const fs::path output = output_of(material);
+      if (input_identities.contains(path_identity(output))) {
         document.imported.diagnostics.error(
             material.material.name_location, "name",
             fmt::format("output '{}' would overwrite an input", output.string()),
@@ -61,10 +63,9 @@ int run_import(const ImportOptions& options) {
     try {
       fs::create_directories(options.output_directory);
       for (const ImportedMaterial& material : document.imported.materials) {
-        const fs::path output =
-            fs::path(options.output_directory) / (material.material.name + ".json");
-        ++(write_file_atomically(output, material.json) == WriteOutcome::written ? written
-                                                                                 : unchanged);
+        ++(write_file_atomically(output_of(material), material.json) == WriteOutcome::written
+               ? written
+               : unchanged);
         ++imported;
       }
     } catch (const std::exception& error) {

@@ -297,11 +297,11 @@ class Importer {
     ColorSpace space = document_space_;
     if (const auto linear = find_color_space(space_name)) {
       space = *linear;
-    } else if (decode_color_value(space_name, 0.0)) {
+    } else if (is_encoded_color_space(space_name)) {
       for (double& channel : value) {
-        const auto decoded = decode_color_value(space_name, channel);
-        channel = decoded->value;
-        space = decoded->space;
+        const DecodedColor decoded = *decode_color_value(space_name, channel);
+        channel = decoded.value;
+        space = decoded.space;
       }
     } else {
       unknown_space(input, field, space_name);
