@@ -12,3 +12,5 @@ tool="$build/bench/matc_shader_cost"
   "$root/bench/fenced.sh" "$build/matc" basis
 "$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" basis-polynomial-paper \
   "$root/bench/fenced.sh" "$build/matc" basis --basis paper
+"$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" basis-polynomial-f82 \
+  "$root/bench/fenced.sh" "$build/matc" basis --basis f82

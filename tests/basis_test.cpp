@@ -165,13 +165,13 @@ TEST(PaperBasis, GeneratedSourceRoundTripsEveryDigit) {
 TEST(ShippedBases, NamesRoundTripAndTheDefaultIsWeighted) {
   EXPECT_EQ(runtime::kDefaultBasis, runtime::BasisKind::extended);
   EXPECT_EQ(runtime::shipped_basis().kind, runtime::BasisKind::extended);
-  for (const auto kind : {runtime::BasisKind::extended, runtime::BasisKind::paper})
+  for (const auto kind : runtime::kShippedBases)
     EXPECT_EQ(runtime::basis_from_name(runtime::basis_name(kind)), kind);
+  EXPECT_EQ(runtime::basis_from_name("f82"), runtime::BasisKind::f82);
   EXPECT_FALSE(runtime::basis_from_name("schlick"));
 }
 
-INSTANTIATE_TEST_SUITE_P(Both, ShippedBasis,
-                         testing::Values(runtime::BasisKind::extended, runtime::BasisKind::paper),
+INSTANTIATE_TEST_SUITE_P(All, ShippedBasis, testing::ValuesIn(runtime::kShippedBases),
                          [](const auto& name) {
                            return std::string(runtime::basis_name(name.param));
                          });

@@ -487,6 +487,7 @@ TEST_F(MatcCli, BasisOptionSelectsTheBasisEverywhereItIsRecorded) {
   };
   build("default", {});
   build("paper", {"--basis", "paper"});
+  build("f82", {"--basis", "f82"});
   const auto material = [&](const std::string& out) {
     return nlohmann::json::parse(read_file(dir_ / out / "good.json"));
   };
@@ -499,8 +500,11 @@ TEST_F(MatcCli, BasisOptionSelectsTheBasisEverywhereItIsRecorded) {
   EXPECT_EQ(material("paper")["basis"]["name"], "paper");
   EXPECT_EQ(material("paper")["basis"]["solve"], "probes");
   EXPECT_EQ(lut("paper")["basis"], "paper");
-  for (const std::string out : {"default", "paper"}) {
-    const std::string name = out == "default" ? "extended" : "paper";
+  EXPECT_EQ(material("f82")["basis"]["name"], "f82");
+  EXPECT_EQ(material("f82")["basis"]["solve"], "minimax");
+  EXPECT_EQ(lut("f82")["basis"], "f82");
+  for (const std::string out : {"default", "paper", "f82"}) {
+    const std::string name = out == "default" ? "extended" : out;
     const auto manifest = nlohmann::json::parse(read_file(dir_ / out / "matc_manifest.json"));
     EXPECT_EQ(manifest["basis"], name);
     EXPECT_NE(read_file(dir_ / out / "good.h").find("#define MATC_good_BASIS \"" + name + "\""),
@@ -513,7 +517,24 @@ TEST_F(MatcCli, BasisOptionSelectsTheBasisEverywhereItIsRecorded) {
             read_file(dir_ / "paper" / "matc_lut.ktx2"));
   EXPECT_NE(read_file(dir_ / "default" / "matc_fresnel.glsl"),
             read_file(dir_ / "paper" / "matc_fresnel.glsl"));
+  EXPECT_NE(read_file(dir_ / "default" / "matc_fresnel.glsl"),
+            read_file(dir_ / "f82" / "matc_fresnel.glsl"));
   EXPECT_EQ(run({"--basis", "schlick", "good.json"}).exit_code, 2);
+}
+
+// A low-tint F82-tint material: the default basis warns and names --basis f82; with it, the
+// curve is held (no warning) and c_3 = 0, as F82-tint lies in span{b_1, b_2}.
+TEST_F(MatcCli, F82BasisHoldsTheF82TintMaterialTheDefaultWarnsAbout) {
+  write_file(dir_ / "m.json", R"({"name": "m", "f82_tint": {"f0": 0.9, "tint": 0.2}})");
+  const CommandResult by_default = run({"-o", "default", "--emit", "json", "m.json"});
+  ASSERT_EQ(by_default.exit_code, 0) << by_default.err;
+  EXPECT_NE(by_default.err.find("compile with --basis f82"), std::string::npos) << by_default.err;
+  const CommandResult f82 = run({"-o", "f82", "--emit", "json", "--basis", "f82", "m.json"});
+  ASSERT_EQ(f82.exit_code, 0) << f82.err;
+  EXPECT_EQ(f82.err.find("warning"), std::string::npos) << f82.err;
+  const auto compiled = nlohmann::json::parse(read_file(dir_ / "f82" / "m.json"));
+  EXPECT_LT(std::abs(compiled["coefficients"][0][3].get<double>()), 1e-4);
+  EXPECT_LE(compiled["accuracy"]["decomposition"]["max"][0].get<double>(), 0.002);
 }
 
 TEST_F(MatcCli, ReportWritesAPlotAndSamplesPerMaterialAndAnIndex) {

@@ -26,7 +26,7 @@ double channel_f(const matc::runtime::ChannelCoefficients& c, const std::array<d
 
 // The checked-in tables are what `matc basis coefficient-table` fits today, bit for bit.
 TEST(CoefficientTable, CheckedInTablesAreCurrent) {
-  for (const BasisKind kind : {BasisKind::extended, BasisKind::paper}) {
+  for (const BasisKind kind : matc::runtime::kShippedBases) {
     const matc::CoefficientTable fitted = matc::fit_coefficient_table(kind);
     const matc::runtime::CoefficientTableView shipped =
         matc::runtime::shipped_coefficient_table(kind);

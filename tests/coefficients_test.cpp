@@ -9,6 +9,7 @@
 #include "matc/fit/coefficients.h"
 #include "matc/optics/gulbrandsen.h"
 #include "matc/optics/presets.h"
+#include "matc/optics/reflectance_curve.h"
 #include "matc/optics/spectral.h"
 
 namespace matc {
@@ -164,6 +165,50 @@ TEST(Coefficients, MinimaxSolveBeatsProbesOnTheSameBasis) {
       measure_accuracy(curve, solve_coefficients_at_probes(curve, basis), polynomial)
           .decomposition.max_abs[1];
   EXPECT_LT(minimax, probes);
+}
+
+// Issue #17's target for OpenPBR metals: max |F - F82-tint curve| <= 0.002 over the artistic
+// range. The f82 basis spans every F82-tint curve, so only the shaders' polynomial form is left;
+// the default basis, fitted to exact curves, misses the target (docs/accuracy.md).
+TEST(Accuracy, F82BasisFitsF82TintMaterialsWithinTheTarget) {
+  std::array<double, 2> worst{};  // f82, extended
+  for (int i = 0; i <= 19; ++i) {
+    for (int j = 0; j <= 10; ++j) {
+      const F82TintCurve curve({0.05 * i, 0.05 * i, 0.05 * i}, {0.1 * j, 0.1 * j, 0.1 * j});
+      std::size_t b = 0;
+      for (const auto kind : {runtime::BasisKind::f82, runtime::BasisKind::extended}) {
+        const auto& polynomial = runtime::shipped_basis_polynomial(kind);
+        const double error =
+            measure_accuracy(curve, solve_coefficients(curve, runtime::shipped_basis(kind)),
+                             polynomial, 501)
+                .decomposition.max_abs[0];
+        worst[b] = std::max(worst[b], error);
+        ++b;
+      }
+    }
+  }
+  EXPECT_LE(worst[0], 0.002);
+  EXPECT_GT(worst[1], 0.002);
+}
+
+// A tint of 1 is Schlick's curve: b_1 alone, so c_2 and c_3 vanish (to the polynomial form).
+TEST(Coefficients, F82BasisHoldsSchlickInItsFirstTwoTerms) {
+  const runtime::BasisView basis = runtime::shipped_basis(runtime::BasisKind::f82);
+  for (const double f0 : {0.02, 0.5, 0.9}) {
+    const auto c = solve_coefficients(F82TintCurve({f0, f0, f0}, {1.0, 1.0, 1.0}), basis)[0];
+    EXPECT_DOUBLE_EQ(c[0], f0);
+    EXPECT_NEAR(c[2], 0.0, 1e-4) << f0;
+    EXPECT_NEAR(c[3], 0.0, 1e-4) << f0;
+  }
+}
+
+// What the f82 basis costs on exact conductor curves (measured 0.023 / 0.007): worse than the
+// default (0.006 / 0.003), close to the authors' basis (0.019 / 0.009), far ahead of Schlick
+// (0.23) and of F82-tint fitted to the same metals (0.040).
+TEST(Accuracy, F82BasisStaysWellAheadOfSchlickOnMeasuredMetals) {
+  const Summary f82 = summarise(&FitAccuracy::decomposition, runtime::BasisKind::f82);
+  EXPECT_LE(f82.worst, 0.025);
+  EXPECT_LE(f82.mean_of_max, 0.008);
 }
 
 TEST(Accuracy, RmsNeverExceedsMax) {

@@ -72,9 +72,9 @@ TEST(DeviceValidation, ZeroToleranceFails) {
 }  // namespace
 
 // The coefficient-table path (textured metals) from both front ends, with the validation layer
-// on, for both shipped bases and an f16 table.
+// on, for every shipped basis and an f16 table.
 TEST(DeviceValidation, CoefficientTablePathMatchesTheCpuRuntime) {
-  for (const auto basis : {matc::runtime::BasisKind::extended, matc::runtime::BasisKind::paper}) {
+  for (const auto basis : matc::runtime::kShippedBases) {
     for (const auto precision : {matc::LutPrecision::f32, matc::LutPrecision::f16}) {
       matc::BuildOptions options = small_build();
       options.basis = basis;

@@ -42,33 +42,38 @@ FitAccuracy measure(const matc::ReflectanceCurve& curve, BasisKind kind = BasisK
 void print_metals(bool summary_only) {
   if (!summary_only) {
     fmt::print(
-        "| metal | F0 (linear sRGB) | ours max | ours RMS | paper basis max | Schlick max | "
-        "F82-tint max |\n"
-        "|---|---|---:|---:|---:|---:|---:|\n");
+        "| metal | F0 (linear sRGB) | ours max | ours RMS | paper basis max | f82 basis max | "
+        "Schlick max | F82-tint max |\n"
+        "|---|---|---:|---:|---:|---:|---:|---:|\n");
   }
   Totals ours;
   Totals paper;
+  Totals f82_basis;
   Totals schlick;
   Totals f82;
   for (const matc::MetalPreset& preset : matc::metal_presets()) {
     const matc::SpectralCurve curve(matc::preset_spectrum(preset));
     const FitAccuracy accuracy = measure(curve);
     const FitAccuracy paper_accuracy = measure(curve, BasisKind::paper);
+    const FitAccuracy f82_basis_accuracy = measure(curve, BasisKind::f82);
     const matc::Rgb f0 = curve.at(1.0);
     const bool counted = preset.caveat.empty();
     if (!summary_only) {
       fmt::print(
-          "| {} {}{} | {:.3f}, {:.3f}, {:.3f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} |\n",
+          "| {} {}{} | {:.3f}, {:.3f}, {:.3f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | "
+          "{:.4f} |\n",
           preset.symbol, preset.name, counted ? "" : " (unreliable, not counted)", f0[0], f0[1],
           f0[2], matc::worst_channel(accuracy.decomposition.max_abs),
           matc::worst_channel(accuracy.decomposition.rms),
           matc::worst_channel(paper_accuracy.decomposition.max_abs),
+          matc::worst_channel(f82_basis_accuracy.decomposition.max_abs),
           matc::worst_channel(accuracy.schlick.max_abs),
           matc::worst_channel(accuracy.f82_tint.max_abs));
     }
     if (counted) {
       ours.add(accuracy.decomposition);
       paper.add(paper_accuracy.decomposition);
+      f82_basis.add(f82_basis_accuracy.decomposition);
       schlick.add(accuracy.schlick);
       f82.add(accuracy.f82_tint);
     }
@@ -80,6 +85,7 @@ void print_metals(bool summary_only) {
       "|---|---:|---:|\n");
   fmt::print("| ours (extended basis, the default) | {:.4f} | {:.4f} |\n", ours.worst, ours.mean());
   fmt::print("| ours with `--basis paper` | {:.4f} | {:.4f} |\n", paper.worst, paper.mean());
+  fmt::print("| ours with `--basis f82` | {:.4f} | {:.4f} |\n", f82_basis.worst, f82_basis.mean());
   fmt::print("| Schlick | {:.4f} | {:.4f} |\n", schlick.worst, schlick.mean());
   fmt::print("| F82-tint | {:.4f} | {:.4f} |\n", f82.worst, f82.mean());
 }
@@ -113,11 +119,12 @@ void print_artistic_grid() {
 // 500 random grey artistic inputs (the study's draws): worst and mean max error per model.
 void print_random_artistic() {
   fmt::print(
-      "\n| 500 random artistic inputs | ours | ours with `--basis paper` | Schlick | F82-tint |\n"
-      "|---|---:|---:|---:|---:|\n");
+      "\n| 500 random artistic inputs | ours | ours with `--basis paper` | ours with `--basis f82` "
+      "| Schlick | F82-tint |\n|---|---:|---:|---:|---:|---:|\n");
   for (const double r_max : {0.8, 1.0}) {
     Totals ours;
     Totals paper;
+    Totals f82_basis;
     Totals schlick;
     Totals f82;
     for (const auto& [r, g] : matc::bench::random_artistic_inputs(500, r_max)) {
@@ -128,14 +135,15 @@ void print_random_artistic() {
       // Grey: one channel stands for all three.
       ours.add_one(accuracy.decomposition.max_abs[0]);
       paper.add_one(paper_accuracy.decomposition.max_abs[0]);
+      f82_basis.add_one(measure(curve, BasisKind::f82).decomposition.max_abs[0]);
       schlick.add_one(accuracy.schlick.max_abs[0]);
       f82.add_one(accuracy.f82_tint.max_abs[0]);
     }
     fmt::print(
         "| r <= {:.1f}: worst / mean | {:.4f} / {:.4f} | {:.4f} / {:.4f} | {:.4f} / {:.4f} | "
-        "{:.4f} / {:.4f} |\n",
-        r_max, ours.worst, ours.mean(), paper.worst, paper.mean(), schlick.worst, schlick.mean(),
-        f82.worst, f82.mean());
+        "{:.4f} / {:.4f} | {:.4f} / {:.4f} |\n",
+        r_max, ours.worst, ours.mean(), paper.worst, paper.mean(), f82_basis.worst,
+        f82_basis.mean(), schlick.worst, schlick.mean(), f82.worst, f82.mean());
   }
 }
 
@@ -274,30 +282,40 @@ void print_preintegrated(bool summary_only) {
 
 }  // namespace
 
+// Four decimals, or two significant digits below 1e-4 (where "0.0000" would claim exactness).
+std::string format_error(double error) {
+  return error >= 1e-4 ? fmt::format("{:.4f}", error) : fmt::format("{:.1e}", error);
+}
+
 // No arguments: the curve tables of docs/accuracy.md. --summary: the summaries the README quotes.
 // --lut: the preintegrated tables (table reconstruction, then Fbar against a direct reference).
 // The F82-tint material model (OpenPBR's metal): our fit against the F82-tint curve it stands
 // for, over a grid of (F0, tint), and for the F82-tint parameters of the measured metals.
 void print_f82_tint() {
   constexpr std::array<double, 7> kTints = {0.0, 0.5, 0.7, 0.8, 0.9, 0.95, 1.0};
-  fmt::print("| F0 \\ tint |");
-  for (const double tint : kTints)
-    fmt::print(" {:.2f} |", tint);
-  fmt::print("\n|---:|");
-  for (std::size_t i = 0; i < kTints.size(); ++i)
-    fmt::print("---:|");
-  fmt::print("\n");
-  for (const double f0 : {0.02, 0.2, 0.4, 0.6, 0.8, 0.9, 0.95}) {
-    fmt::print("| {:.2f} |", f0);
-    for (const double tint : kTints) {
-      const FitAccuracy accuracy = measure(matc::F82TintCurve({f0, f0, f0}, {tint, tint, tint}));
-      fmt::print(" {:.4f} |", accuracy.decomposition.max_abs[0]);
-    }
+  for (const BasisKind kind : {BasisKind::extended, BasisKind::f82}) {
+    fmt::print("{}With `--basis {}`:\n\n| F0 \\ tint |", kind == BasisKind::extended ? "" : "\n",
+               matc::runtime::basis_name(kind));
+    for (const double tint : kTints)
+      fmt::print(" {:.2f} |", tint);
+    fmt::print("\n|---:|");
+    for (std::size_t i = 0; i < kTints.size(); ++i)
+      fmt::print("---:|");
     fmt::print("\n");
+    for (const double f0 : {0.02, 0.2, 0.4, 0.6, 0.8, 0.9, 0.95}) {
+      fmt::print("| {:.2f} |", f0);
+      for (const double tint : kTints) {
+        const FitAccuracy accuracy =
+            measure(matc::F82TintCurve({f0, f0, f0}, {tint, tint, tint}), kind);
+        fmt::print(" {} |", format_error(accuracy.decomposition.max_abs[0]));
+      }
+      fmt::print("\n");
+    }
   }
   // Each measured metal as an F82-tint material: F0 and F(1/7) of its exact curve, so tint =
   // F(1/7) / Schlick(1/7) per channel (what an OpenPBR look matched to the metal would use).
   Totals ours;
+  Totals f82_basis;
   Totals schlick;
   double tint_min = 1.0;
   double tint_max = 0.0;
@@ -314,14 +332,17 @@ void print_f82_tint() {
     }
     const FitAccuracy accuracy = measure(matc::F82TintCurve(f0, tint));
     ours.add(accuracy.decomposition);
+    f82_basis.add(measure(matc::F82TintCurve(f0, tint), BasisKind::f82).decomposition);
     schlick.add(accuracy.schlick);
   }
   fmt::print(
       "\nThe {} reliable measured metals as F82-tint materials (tint = F(1/7) / Schlick(1/7) of "
       "the exact curve, {:.3f} to {:.3f}), against their F82-tint curves:\n\n"
       "| model | worst-channel max error | mean of per-curve max |\n|---|---:|---:|\n"
-      "| ours | {:.4f} | {:.4f} |\n| Schlick | {:.4f} | {:.4f} |\n",
-      ours.curves / 3, tint_min, tint_max, ours.worst, ours.mean(), schlick.worst, schlick.mean());
+      "| ours | {:.4f} | {:.4f} |\n| ours with `--basis f82` | {} | {} |\n"
+      "| Schlick | {:.4f} | {:.4f} |\n",
+      ours.curves / 3, tint_min, tint_max, ours.worst, ours.mean(), format_error(f82_basis.worst),
+      format_error(f82_basis.mean()), schlick.worst, schlick.mean());
 }
 
 // The measured metals in each working space: the same fits, and how far each space's curves

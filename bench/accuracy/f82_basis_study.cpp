@@ -1,7 +1,8 @@
 // Can a basis fit F82-tint materials (OpenPBR's metal) within 0.002, and at what cost to measured
 // metals? Each candidate basis is fitted here from its training set (the shipped construction:
 // first singular vector, curves weighted by 1 - F0, near-minimax solve) and scored on the 23
-// reliable measured metals and on F82-tint curves. docs/accuracy.md, "F82-tint materials".
+// reliable measured metals and on F82-tint curves, beside the shipped f82 basis.
+// docs/accuracy.md, "F82-tint materials".
 //   matc_f82_basis_study   (about a minute on 2 cores; bench/accuracy/update-docs.sh runs it)
 #include <algorithm>
 #include <array>
@@ -10,11 +11,9 @@
 #include <vector>
 
 #include <fmt/core.h>
-#include <Eigen/Dense>
 
 #include "error_totals.h"
 #include "matc/basis/basis_fit.h"
-#include "matc/basis/basis_polynomial_fit.h"
 #include "matc/fit/accuracy.h"
 #include "matc/fit/coefficients.h"
 #include "matc/optics/presets.h"
@@ -67,55 +66,6 @@ struct Candidate {
   std::vector<TrainingCurve> training;
 };
 
-std::vector<double> as_vector(const Eigen::VectorXd& v) {
-  return {v.data(), v.data() + v.size()};
-}
-
-// F82-tint's normalised curve is (1 - mu)^5 - a' mu (1 - mu)^6 exactly: a basis whose b_1, b_2
-// span those two functions fits every F82-tint material (up to the shaders' polynomial form).
-// b_3 is then the first singular vector of what they leave of the shipped training set (weighted
-// by 1 - F0, like the shipped fit), free for conductors.
-FittedBasis f82_spanning_basis() {
-  constexpr Eigen::Index kSamples = 1000;
-  Eigen::VectorXd b1(kSamples);
-  Eigen::VectorXd b2(kSamples);
-  for (Eigen::Index j = 0; j < kSamples; ++j) {
-    const double mu = static_cast<double>(j) / static_cast<double>(kSamples - 1);
-    b1(j) = std::pow(1.0 - mu, 5.0);
-    b2(j) = mu * std::pow(1.0 - mu, 6.0);
-  }
-  b2 /= b2.maxCoeff();
-  Eigen::MatrixXd span(kSamples, 2);
-  span << b1, b2;
-  const Eigen::MatrixXd q = Eigen::HouseholderQR<Eigen::MatrixXd>(span).householderQ() *
-                            Eigen::MatrixXd::Identity(kSamples, 2);
-  const std::vector<matc::ComplexIor> iors = matc::extended_training_iors();
-  Eigen::MatrixXd residual(static_cast<Eigen::Index>(iors.size()), kSamples);
-  for (std::size_t row = 0; row < iors.size(); ++row) {
-    const double f0 = matc::fresnel_exact(1.0, iors[row]);
-    for (Eigen::Index j = 0; j < kSamples; ++j) {
-      const double mu = static_cast<double>(j) / static_cast<double>(kSamples - 1);
-      // Weighted by 1 - F0: (F - F0) / (1 - F0) x (1 - F0).
-      residual(static_cast<Eigen::Index>(row), j) = matc::fresnel_exact(mu, iors[row]) - f0;
-    }
-    residual.row(static_cast<Eigen::Index>(row)) -=
-        (1.0 - f0) * b1.transpose();  // c_1 = 1 - F0 is fixed: only b_2, b_3 are free
-  }
-  residual -= residual * q.col(1) * q.col(1).transpose();
-  residual -= residual * q.col(0) * q.col(0).transpose();
-  const Eigen::BDCSVD<Eigen::MatrixXd> svd(residual, Eigen::ComputeThinV);
-  Eigen::VectorXd b3 = svd.matrixV().col(0);
-  Eigen::Index peak = 0;
-  b3.cwiseAbs().maxCoeff(&peak);
-  b3 /= b3(peak);
-  FittedBasis basis;
-  basis.tables = {as_vector(b1), as_vector(b2), as_vector(b3)};
-  basis.kind = matc::runtime::BasisKind::extended;
-  basis.probe_indices = {0, 0};  // unused by the minimax solve
-  basis.polynomial = matc::fit_basis_polynomial(basis.view());
-  return basis;
-}
-
 }  // namespace
 
 int main() {
@@ -157,8 +107,10 @@ int main() {
       basis.kind = matc::runtime::BasisKind::extended;
       name = candidates[i].name;
     } else {
-      basis = f82_spanning_basis();
-      name = "b_1 = (1 - mu)^5, b_2 = mu (1 - mu)^6 (F82-tint's span), b_3 from `extended`'s rest";
+      basis = matc::fit_f82_basis();
+      name =
+          "**shipped `f82`**: b_1 = (1 - mu)^5, b_2 = mu (1 - mu)^6 (F82-tint's span), b_3 from "
+          "`extended`'s rest";
     }
     Totals measured;
     for (const auto& curve : metals)

@@ -15,16 +15,30 @@
 #include "matc/runtime/basis.h"
 
 namespace matc::cli {
+namespace {
+
+std::string_view basis_description(runtime::BasisKind kind) {
+  switch (kind) {
+    case runtime::BasisKind::paper:
+      return "Belcour, Bati, Barla 2020; coefficients matched at the probes";
+    case runtime::BasisKind::f82:
+      return "b_1 = (1 - mu)^5 and b_2 = mu (1 - mu)^6 span F82-tint, b_3 fitted to conductors; "
+             "near-minimax coefficients";
+    case runtime::BasisKind::extended:
+      break;
+  }
+  return "the authors' dielectrics extended with conductors, curves weighted by 1 - F0; "
+         "near-minimax coefficients";
+}
+
+}  // namespace
 
 int run_basis(const BasisOptions& options) {
   const runtime::BasisKind kind = basis_of(options.basis);
   const runtime::BasisView basis = runtime::shipped_basis(kind);
   if (!options.json) {
     fmt::print("basis: {} ({}), b_0 = 1 and b_1..b_3 tabulated\n", runtime::basis_name(kind),
-               kind == runtime::BasisKind::paper
-                   ? "Belcour, Bati, Barla 2020; coefficients matched at the probes"
-                   : "the authors' dielectrics extended with conductors, curves weighted by "
-                     "1 - F0; near-minimax coefficients");
+               basis_description(kind));
     fmt::print("samples: {} cosines mu_j = j / {}\n", basis.samples(), basis.samples() - 1);
     fmt::print("probes: mu_1 = {:.4f} (theta {:.3f} rad), mu_2 = {:.4f} (theta {:.3f} rad)\n",
                basis.probe_mu(0), std::acos(basis.probe_mu(0)), basis.probe_mu(1),

@@ -1,19 +1,23 @@
 #include "lut_options.h"
 
+#include <vector>
+
 #include "atomic_file.h"
 #include "matc/json_format.h"
 
 namespace matc::cli {
 
 void add_basis_option(CLI::App& app, std::string& basis) {
+  std::vector<std::string> names;
+  for (const runtime::BasisKind kind : runtime::kShippedBases)
+    names.emplace_back(runtime::basis_name(kind));
   app.add_option("--basis", basis,
                  "Fresnel basis: extended (default; the authors' dielectrics extended with "
-                 "conductors, curves weighted by 1 - F0, near-minimax coefficients) or paper (the "
-                 "authors' construction, coefficients "
-                 "matched at two angles); docs/accuracy.md compares them")
+                 "conductors, curves weighted by 1 - F0, near-minimax coefficients), paper (the "
+                 "authors' construction, coefficients matched at two angles) or f82 (exact for "
+                 "F82-tint and Schlick curves, for OpenPBR looks); docs/accuracy.md compares them")
       ->capture_default_str()
-      ->check(CLI::IsMember({std::string(runtime::basis_name(runtime::BasisKind::extended)),
-                             std::string(runtime::basis_name(runtime::BasisKind::paper))}));
+      ->check(CLI::IsMember(names));
 }
 
 void add_lut_options(CLI::App& app, LutCliOptions& options, const std::string& prefix) {

@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
       "Exit 1 unless ours is closer to the reference than Schlick's for every material");
   app.add_option("--basis", settings.basis, "The Fresnel basis of ours (see matc --help)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"extended", "paper"}));
+      ->check(CLI::IsMember({"extended", "paper", "f82"}));
   CLI11_PARSE(app, argc, argv);
 
   try {

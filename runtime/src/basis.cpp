@@ -6,17 +6,33 @@
 namespace matc::runtime {
 
 std::string_view basis_name(BasisKind kind) {
-  return kind == BasisKind::paper ? "paper" : "extended";
+  switch (kind) {
+    case BasisKind::paper:
+      return "paper";
+    case BasisKind::f82:
+      return "f82";
+    case BasisKind::extended:
+      break;
+  }
+  return "extended";
 }
 
 std::optional<BasisKind> basis_from_name(std::string_view name) {
-  for (const BasisKind kind : {BasisKind::extended, BasisKind::paper})
+  for (const BasisKind kind : kShippedBases)
     if (basis_name(kind) == name) return kind;
   return std::nullopt;
 }
 
 BasisView shipped_basis(BasisKind kind) {
-  return kind == BasisKind::paper ? paper_basis() : extended_basis();
+  switch (kind) {
+    case BasisKind::paper:
+      return paper_basis();
+    case BasisKind::f82:
+      return f82_basis();
+    case BasisKind::extended:
+      break;
+  }
+  return extended_basis();
 }
 
 std::array<double, kBasisSize> BasisView::at_index(std::size_t index) const {

@@ -27,7 +27,15 @@ std::array<double, kBasisSize> evaluate_basis_polynomial(const BasisPolynomial& 
 }
 
 const BasisPolynomial& shipped_basis_polynomial(BasisKind kind) {
-  return kind == BasisKind::paper ? paper_basis_polynomial() : extended_basis_polynomial();
+  switch (kind) {
+    case BasisKind::paper:
+      return paper_basis_polynomial();
+    case BasisKind::f82:
+      return f82_basis_polynomial();
+    case BasisKind::extended:
+      break;
+  }
+  return extended_basis_polynomial();
 }
 
 }  // namespace matc::runtime

@@ -82,7 +82,15 @@ ArtisticRgb artistic_from_ior(const Rgb& n, const Rgb& k) {
 }
 
 CoefficientTableView shipped_coefficient_table(BasisKind kind) {
-  return kind == BasisKind::paper ? paper_coefficient_table() : extended_coefficient_table();
+  switch (kind) {
+    case BasisKind::paper:
+      return paper_coefficient_table();
+    case BasisKind::f82:
+      return f82_coefficient_table();
+    case BasisKind::extended:
+      break;
+  }
+  return extended_coefficient_table();
 }
 
 }  // namespace matc::runtime

@@ -73,6 +73,14 @@ std::size_t distance(std::size_t a, std::size_t b) {
   return a > b ? a - b : b - a;
 }
 
+// mu_1 = argmax b_2, mu_2 = the extremum of b_3 farther from mu_1.
+std::array<std::size_t, 2> probes_of(const FittedBasis& basis) {
+  const std::size_t probe1 = index_of_max(basis.tables[1]);
+  const std::size_t b3_max = index_of_max(basis.tables[2]);
+  const std::size_t b3_min = index_of_min(basis.tables[2]);
+  return {probe1, distance(b3_max, probe1) > distance(b3_min, probe1) ? b3_max : b3_min};
+}
+
 }  // namespace
 
 runtime::BasisView FittedBasis::view() const {
@@ -114,11 +122,7 @@ FittedBasis fit_basis(std::span<const TrainingCurve> training,
   basis.tables[1] = scaled_to_unit_peak(second.matrixV().col(0).cwiseQuotient(columns));
   basis.tables[2] = scaled_to_unit_peak(second.matrixV().col(1).cwiseQuotient(columns));
 
-  const std::size_t probe1 = index_of_max(basis.tables[1]);
-  const std::size_t b3_max = index_of_max(basis.tables[2]);
-  const std::size_t b3_min = index_of_min(basis.tables[2]);
-  const std::size_t probe2 = distance(b3_max, probe1) > distance(b3_min, probe1) ? b3_max : b3_min;
-  basis.probe_indices = {probe1, probe2};
+  basis.probe_indices = probes_of(basis);
   basis.polynomial = fit_basis_polynomial(basis.view());
   return basis;
 }
@@ -152,28 +156,87 @@ FittedBasis fit_extended_basis() {
   return basis;
 }
 
-FittedBasis fit_shipped_basis(runtime::BasisKind kind) {
-  return kind == runtime::BasisKind::paper ? fit_paper_basis() : fit_extended_basis();
+FittedBasis fit_f82_basis() {
+  const auto samples = static_cast<Index>(kExtendedConstruction.samples);
+  Eigen::VectorXd schlick(samples);
+  Eigen::VectorXd lobe(samples);
+  for (Index j = 0; j < samples; ++j) {
+    const double mu = static_cast<double>(j) / static_cast<double>(samples - 1);
+    schlick(j) = std::pow(1.0 - mu, 5.0);
+    lobe(j) = mu * std::pow(1.0 - mu, 6.0);
+  }
+  lobe /= lobe.maxCoeff();
+
+  // What b_1 = (1 - mu)^5 and b_2 leave of the extended training curves, each weighted by
+  // 1 - F0 like the extended fit: c_1 = 1 - F0 is fixed, so F - F0 - (1 - F0) b_1 is what b_2
+  // and b_3 must hold. b_2's share is projected out; b_3 is the first singular vector of the rest.
+  const std::vector<ComplexIor> iors = extended_training_iors();
+  Eigen::MatrixXd residual(static_cast<Index>(iors.size()), samples);
+  for (std::size_t row = 0; row < iors.size(); ++row) {
+    const double f0 = fresnel_exact(1.0, iors[row]);
+    for (Index j = 0; j < samples; ++j) {
+      const double mu = static_cast<double>(j) / static_cast<double>(samples - 1);
+      residual(static_cast<Index>(row), j) =
+          fresnel_exact(mu, iors[row]) - f0 - (1.0 - f0) * schlick(j);
+    }
+  }
+  const Eigen::VectorXd lobe_direction = lobe.normalized();
+  residual -= (residual * lobe_direction) * lobe_direction.transpose();
+  const Eigen::BDCSVD<Eigen::MatrixXd> svd(residual, Eigen::ComputeThinV);
+
+  FittedBasis basis;
+  basis.tables = {std::vector<double>(schlick.data(), schlick.data() + samples),
+                  std::vector<double>(lobe.data(), lobe.data() + samples),
+                  scaled_to_unit_peak(svd.matrixV().col(0))};
+  basis.kind = runtime::BasisKind::f82;
+  basis.probe_indices = probes_of(basis);
+  basis.polynomial = fit_basis_polynomial(basis.view());
+  return basis;
 }
 
-std::string basis_table_source(const FittedBasis& basis) {
+FittedBasis fit_shipped_basis(runtime::BasisKind kind) {
+  switch (kind) {
+    case runtime::BasisKind::paper:
+      return fit_paper_basis();
+    case runtime::BasisKind::f82:
+      return fit_f82_basis();
+    case runtime::BasisKind::extended:
+      break;
+  }
+  return fit_extended_basis();
+}
+
+namespace {
+
+// The basis table's header comment: what it was trained on.
+std::string training_description(runtime::BasisKind kind) {
   const PaperBasisOptions options;
   const ComplexIorGrid& grid = kExtendedTrainingGrid;
+  switch (kind) {
+    case runtime::BasisKind::paper:
+      return fmt::format(
+          "// Training set: {} dielectrics (eta in [{}, {}]) and {} Gulbrandsen conductors "
+          "(g = 1).\n// Unweighted SVDs (the authors).\n",
+          options.dielectric_curves, options.eta_min, options.eta_max, options.conductor_curves);
+    case runtime::BasisKind::f82:
+      return "// b_1 = (1 - mu)^5 and b_2 = mu (1 - mu)^6 scaled to a peak of 1: F82-tint's span.\n"
+             "// b_3: first singular vector of what they leave of the extended training set.\n";
+    case runtime::BasisKind::extended:
+      break;
+  }
+  return fmt::format(
+      "// Training set: {} dielectrics (eta in [{}, {}]), {} Gulbrandsen conductors (g = "
+      "1) and {} x {}\n// conductors (n in [{}, {}] log-spaced, k in [{}, {}]).\n"
+      "// SVDs with every curve weighted by 1 - F0.\n",
+      options.dielectric_curves, options.eta_min, options.eta_max, kExtendedTrainingEdgeTintCurves,
+      grid.n_steps, grid.k_steps, grid.n_min, grid.n_max, grid.k_min, grid.k_max);
+}
+
+}  // namespace
+
+std::string basis_table_source(const FittedBasis& basis) {
   const std::string name(runtime::basis_name(basis.kind));
-  const std::string training =
-      basis.kind == runtime::BasisKind::paper
-          ? fmt::format(
-                "// Training set: {} dielectrics (eta in [{}, {}]) and {} Gulbrandsen conductors "
-                "(g = 1).\n// Unweighted SVDs (the authors).\n",
-                options.dielectric_curves, options.eta_min, options.eta_max,
-                options.conductor_curves)
-          : fmt::format(
-                "// Training set: {} dielectrics (eta in [{}, {}]), {} Gulbrandsen conductors (g = "
-                "1) and {} x {}\n// conductors (n in [{}, {}] log-spaced, k in [{}, {}]).\n"
-                "// SVDs with every curve weighted by 1 - F0.\n",
-                options.dielectric_curves, options.eta_min, options.eta_max,
-                kExtendedTrainingEdgeTintCurves, grid.n_steps, grid.k_steps, grid.n_min, grid.n_max,
-                grid.k_min, grid.k_max);
+  const std::string training = training_description(basis.kind);
   std::string out = fmt::format(
       "// Generated by `matc basis fit --basis {}` (matc {}). Do not edit: rerun it instead.\n"
       "{}"

@@ -66,7 +66,11 @@ FitAccuracy measure_accuracy(const ReflectanceCurve& curve,
   ErrorAccumulator f82_tint;
   for (std::size_t j = 0; j < samples; ++j) {
     const double mu = static_cast<double>(j) / static_cast<double>(samples - 1);
-    const Rgb exact = curve.at(mu);
+    // A negative reflectance is no reflectance: the shaders clamp F at 0, and so does the
+    // reference. Only curves that dip below 0 are affected (F82-tint with a low tint and F0).
+    Rgb exact = curve.at(mu);
+    for (double& value : exact)
+      value = std::max(value, 0.0);
     Rgb schlick_value{};
     Rgb f82_value{};
     for (std::size_t c = 0; c < 3; ++c) {

@@ -15,6 +15,8 @@ namespace matc {
 // the interpolation the shaders do is part of what is measured.
 inline constexpr std::size_t kAccuracySamples = 2001;
 
+// "Exact" is the curve clamped at 0, as the shaders clamp F: a curve that dips below 0 (F82-tint
+// with a low tint and F0) is measured against what a renderer can show.
 struct ErrorStats {
   Rgb max_abs{};  // max over mu of |approximation - exact|
   Rgb rms{};      // root mean square over the same points
