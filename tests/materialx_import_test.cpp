@@ -102,6 +102,38 @@ TEST(MaterialXImport, OpenPbrMetalIsAnF82TintMaterialFittedClosely) {
   EXPECT_EQ(material.roughness, 0.3);  // OpenPBR's default specular_roughness
   const auto compiled = compile_material(material, runtime::shipped_basis());
   EXPECT_LT(worst_channel(compiled.accuracy.decomposition.max_abs), 0.02);
+  // Issue #17's target (0.002) with the basis made for F82-tint looks.
+  const auto with_f82 = compile_material(material, runtime::shipped_basis(runtime::BasisKind::f82));
+  EXPECT_LT(worst_channel(with_f82.accuracy.decomposition.max_abs), 0.002);
+}
+
+// Inputs that are not carried are named only when they would change the look: weights at 0,
+// opacities at 1 and thin_walled false are what the metal looks like anyway.
+TEST(MaterialXImport, NotCarriedInputsAreNamedOnlyAwayFromTheirNeutralValue) {
+  const auto imported = import_materialx(
+      document(surface("open_pbr_surface",
+                       input("base_metalness", "float", "1") +
+                           input("geometry_opacity", "float", "1") +
+                           input("geometry_thin_walled", "boolean", "false") +
+                           input("coat_weight", "float", "0"),
+                       "Neutral") +
+               surface("standard_surface",
+                       input("metalness", "float", "1") + input("opacity", "color3", "1, 1, 1"),
+                       "Opaque") +
+               surface("open_pbr_surface",
+                       input("base_metalness", "float", "1") +
+                           input("geometry_opacity", "float", "0.5") +
+                           input("geometry_thin_walled", "boolean", "true") +
+                           input("coat_weight", "float", "0.2"),
+                       "Coated")),
+      "n.mtlx");
+  ASSERT_EQ(imported.materials.size(), 3u) << all_diagnostics(imported);
+  const std::string text = all_diagnostics(imported);
+  EXPECT_EQ(text.find("Neutral: not carried"), std::string::npos) << text;
+  EXPECT_EQ(text.find("Opaque: not carried"), std::string::npos) << text;
+  EXPECT_NE(text.find("Coated: not carried: coat_weight, geometry_opacity, geometry_thin_walled"),
+            std::string::npos)
+      << text;
 }
 
 TEST(MaterialXImport, AbsentInputsTakeTheSpecificationDefaults) {

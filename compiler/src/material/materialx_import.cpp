@@ -28,6 +28,13 @@ struct InputSpec {
   Rgb default_value;  // a float's default in [0]
 };
 
+// An input that changes a metal's look but is not carried, and the value at which it changes
+// nothing (weights 0, opacities 1, booleans false): only other values are reported.
+struct NotCarried {
+  std::string_view name;
+  double neutral = 0.0;
+};
+
 // One shading model: the inputs its metal depends on (with their specification defaults), and
 // the inputs that change a metal's look but are not carried.
 struct ShadingModel {
@@ -38,7 +45,7 @@ struct ShadingModel {
   InputSpec edge_weight;  // specular / specular_weight
   InputSpec edge_color;   // specular_color
   InputSpec roughness;    // specular_roughness
-  std::array<std::string_view, 10> not_carried;
+  std::array<NotCarried, 10> not_carried;
 };
 
 // Defaults: Autodesk Standard Surface 1.0.1 as MaterialX's nodedef declares it, and OpenPBR
@@ -51,8 +58,16 @@ constexpr ShadingModel kStandardSurface = {
     {"specular", ValueType::float1, {1.0, 0.0, 0.0}},
     {"specular_color", ValueType::color3, {1.0, 1.0, 1.0}},
     {"specular_roughness", ValueType::float1, {0.2, 0.0, 0.0}},
-    {"coat", "sheen", "thin_film_thickness", "specular_anisotropy", "transmission", "subsurface",
-     "emission", "diffuse_roughness", "coat_affect_color", "opacity"},
+    {{{"coat"},
+      {"sheen"},
+      {"thin_film_thickness"},
+      {"specular_anisotropy"},
+      {"transmission"},
+      {"subsurface"},
+      {"emission"},
+      {"diffuse_roughness"},
+      {"coat_affect_color"},
+      {"opacity", 1.0}}},
 };
 constexpr ShadingModel kOpenPbrSurface = {
     "open_pbr_surface",
@@ -62,9 +77,16 @@ constexpr ShadingModel kOpenPbrSurface = {
     {"specular_weight", ValueType::float1, {1.0, 0.0, 0.0}},
     {"specular_color", ValueType::color3, {1.0, 1.0, 1.0}},
     {"specular_roughness", ValueType::float1, {0.3, 0.0, 0.0}},
-    {"coat_weight", "fuzz_weight", "thin_film_weight", "specular_roughness_anisotropy",
-     "transmission_weight", "subsurface_weight", "emission_luminance", "base_diffuse_roughness",
-     "geometry_opacity", "geometry_thin_walled"},
+    {{{"coat_weight"},
+      {"fuzz_weight"},
+      {"thin_film_weight"},
+      {"specular_roughness_anisotropy"},
+      {"transmission_weight"},
+      {"subsurface_weight"},
+      {"emission_luminance"},
+      {"base_diffuse_roughness"},
+      {"geometry_opacity", 1.0},
+      {"geometry_thin_walled"}}},
 };
 
 const ShadingModel* find_shading_model(std::string_view node) {
@@ -311,6 +333,17 @@ class Importer {
     return true;
   }
 
+  // Whether a not-carried input's value leaves the look unchanged: a float, a color3 or a
+  // boolean equal to `neutral` in every component.
+  static bool is_neutral(std::string_view text, double neutral) {
+    if (text == "false" || text == "true") return (text == "true" ? 1.0 : 0.0) == neutral;
+    for (const ValueType type : {ValueType::float1, ValueType::color3}) {
+      if (const auto value = parse_value(text, type))
+        return std::ranges::all_of(*value, [neutral](double v) { return v == neutral; });
+    }
+    return false;
+  }
+
   static std::optional<Rgb> parse_value(std::string_view text, ValueType type) {
     std::array<double, 3> values{};
     std::size_t count = 0;
@@ -511,13 +544,13 @@ class Importer {
   void note_not_carried(const SurfaceMaterial& surface, const ShadingModel& model,
                         const std::string& material) {
     std::vector<std::string> given;
-    for (const std::string_view name : model.not_carried) {
+    for (const NotCarried& entry : model.not_carried) {
       const pugi::xml_node input =
-          surface.shader.find_child_by_attribute(surface.input_tag, "name", name.data());
+          surface.shader.find_child_by_attribute(surface.input_tag, "name", entry.name.data());
       if (!input) continue;
-      const auto value = parse_value(input.attribute("value").value(), ValueType::float1);
-      if (!is_connected(input) && value && (*value)[0] == 0.0) continue;
-      given.emplace_back(name);
+      if (!is_connected(input) && is_neutral(input.attribute("value").value(), entry.neutral))
+        continue;
+      given.emplace_back(entry.name);
     }
     if (given.empty()) return;
     std::string list;
