@@ -63,6 +63,7 @@ struct EvalOptions {
   std::vector<double> roughness;
   std::string quad_light;  // "x,y,z;x,y,z;x,y,z;x,y,z" in the shading frame: area-light radiance
   std::size_t light_samples = 0;  // reference samples for --quad-light
+  bool no_reference = false;      // --no-reference: no split-sum integral per (NdotV, roughness)
   LutCliOptions lut;
   ColorCliOptions color;
 };

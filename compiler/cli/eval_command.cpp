@@ -63,7 +63,7 @@ SplitSumInputs split_sum_inputs(const EvalOptions& options, const ReflectanceCur
       stored_as(preintegrate_lut(basis, options.lut.bake), precision_of(options.lut)),
       TabulatedCurve(curve),
       {}};
-  for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
+  for (std::size_t i = 0; i < options.ndotv.size() && !options.no_reference; ++i) {
     inputs.fbar_reference.push_back(
         SplitSumEstimator(options.ndotv[i], options.roughness[i]).integrate(inputs.tabulated));
   }
@@ -85,7 +85,7 @@ void add_preintegrated_fresnel(const EvalOptions& options, const SplitSumInputs&
     }
     out["Fbar" + label] = std::move(fbar);
   }
-  out["Fbar_reference"] = inputs.fbar_reference;
+  if (!options.no_reference) out["Fbar_reference"] = inputs.fbar_reference;
 }
 
 // A quad light's radiance at each (NdotV, roughness): LTC times Fbar as the shaders compute it

@@ -105,12 +105,17 @@ int main(int argc, char** argv) {
   ndotv_option->needs(roughness_option);
   roughness_option->needs(ndotv_option);
   eval.light_samples = matc::kDefaultLightSamples;
+  CLI::Option* no_reference_option = eval_command->add_flag(
+      "--no-reference", eval.no_reference,
+      "Leave out Fbar_reference, the exact split-sum integral per --ndotv value (a Monte-Carlo "
+      "integral each: the slow part of evaluating many points)");
   eval_command
       ->add_option("--quad-light", eval.quad_light,
                    "A quad light of radiance 1, \"x,y,z;x,y,z;x,y,z;x,y,z\" in the shading frame "
                    "(normal +z, view in the xz-plane towards +x): radiance by LTC with ours and "
                    "with Schlick's Fresnel, and the exact integral (docs/ltc.md)")
-      ->needs(ndotv_option);
+      ->needs(ndotv_option)
+      ->excludes(no_reference_option);
   eval_command
       ->add_option("--light-samples", eval.light_samples,
                    "Monte-Carlo sample pairs of the --quad-light reference")

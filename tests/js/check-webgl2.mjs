@@ -1,0 +1,240 @@
+// The GLSL output as GLSL ES 3.00 in WebGL2, run by an implementation matc did not write: headless
+// Chromium (ANGLE translating for SwiftShader). Every example material's snippet is compiled with
+// the shared library into a fragment shader that renders F over the cosines and Fbar from the
+// preintegrated table (an RGBA32F texture, linear filtering) over the (NdotV, roughness) grid of
+// `matc validate`, into an RGBA32F target read back as floats. Textured metals too: coefficients
+// from the coefficient table (an RG32F texture) for a few per-channel (r, g). Everything is
+// compared with the CPU runtime (`matc eval`) at matc validate's tolerances: F 1e-5, Fbar and
+// anything through the coefficient table 1e-4.
+//   node check-webgl2.mjs MATC MATERIALS_DIR
+import { spawnSync } from "node:child_process";
+import { mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+import { check, finish } from "./report.mjs";
+
+const [matc, materialsDir] = process.argv.slice(2);
+const kFresnelTolerance = 1e-5;
+const kPreintegratedTolerance = 1e-4;
+const kGrid = 41;  // matc validate's 41 x 41 (NdotV, roughness) grid, as many cosines
+
+function run(command, args) {
+  const result = spawnSync(command, args, { encoding: "utf8", maxBuffer: 256 << 20 });
+  if (result.status !== 0) {
+    throw new Error(`${command} ${args.slice(0, 3).join(" ")} ...: exit ${result.status}\n` +
+                    `${result.stderr}`);
+  }
+  return result.stdout;
+}
+
+function chromiumPath() {
+  for (const name of ["chromium", "chromium-browser"]) {
+    const found = spawnSync("sh", ["-c", `command -v ${name}`], { encoding: "utf8" });
+    if (found.status === 0) return found.stdout.trim();
+  }
+  throw new Error("chromium not found (scripts/install-deps.sh installs Debian's chromium)");
+}
+
+// The page: uploads the table and the queries, compiles one program per material, renders,
+// reads back and writes what it measured into <pre id="result"> as JSON.
+const kPageScript = String.raw`
+const data = JSON.parse(document.getElementById("data").textContent);
+const out = { renderer: "", materials: [] };
+try {
+  const canvas = document.createElement("canvas");
+  const gl = canvas.getContext("webgl2");
+  if (!gl) throw new Error("no WebGL2 context");
+  for (const extension of ["EXT_color_buffer_float", "OES_texture_float_linear"])
+    if (!gl.getExtension(extension)) throw new Error("no " + extension);
+  const info = gl.getExtension("WEBGL_debug_renderer_info");
+  out.renderer = info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER);
+  const floats = (base64) => new Float32Array(Uint8Array.from(atob(base64), (c) => c.charCodeAt(0)).buffer);
+  const texture = (unit, width, height, texels, filter) => {
+    const t = gl.createTexture();
+    gl.activeTexture(gl.TEXTURE0 + unit);
+    gl.bindTexture(gl.TEXTURE_2D, t);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, width, height, 0, gl.RGBA, gl.FLOAT, texels);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, filter);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, filter);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+    return t;
+  };
+  const count = data.queries.length / 4;
+  texture(0, data.lutSize, data.lutSize, floats(data.lut), gl.LINEAR);
+  texture(1, count, 1, new Float32Array(data.queries), gl.NEAREST);
+  // The coefficient table's (c_2, c_3) texels, widened to RGBA.
+  const table = floats(data.table);
+  const tableTexels = new Float32Array(table.length * 2);
+  for (let i = 0; i < table.length / 2; ++i) tableTexels.set([table[2 * i], table[2 * i + 1], 0, 0], 4 * i);
+  texture(2, data.tableSize, data.tableSize, tableTexels, gl.LINEAR);
+  const target = texture(3, count, 2, null, gl.NEAREST);
+  const framebuffer = gl.createFramebuffer();
+  gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
+  gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, target, 0);
+  if (gl.checkFramebufferStatus(gl.FRAMEBUFFER) !== gl.FRAMEBUFFER_COMPLETE)
+    throw new Error("RGBA32F render target incomplete");
+  gl.viewport(0, 0, count, 2);
+  const compile = (type, source) => {
+    const shader = gl.createShader(type);
+    gl.shaderSource(shader, source);
+    gl.compileShader(shader);
+    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) throw new Error(gl.getShaderInfoLog(shader));
+    return shader;
+  };
+  const vertex = compile(gl.VERTEX_SHADER, "#version 300 es\nvoid main() {\n" +
+    "  vec2 p = vec2(float((gl_VertexID & 1) << 2), float((gl_VertexID & 2) << 1)) - 1.0;\n" +
+    "  gl_Position = vec4(p, 0.0, 1.0);\n}\n");
+  for (const material of data.cases) {
+    const result = { name: material.name };
+    out.materials.push(result);
+    try {
+      const program = gl.createProgram();
+      gl.attachShader(program, vertex);
+      gl.attachShader(program, compile(gl.FRAGMENT_SHADER, data.prelude + data.library + material.source));
+      gl.linkProgram(program);
+      if (!gl.getProgramParameter(program, gl.LINK_STATUS)) throw new Error(gl.getProgramInfoLog(program));
+      gl.useProgram(program);
+      gl.uniform1i(gl.getUniformLocation(program, "matc_lut"), 0);
+      gl.uniform1i(gl.getUniformLocation(program, "matc_queries"), 1);
+      gl.uniform1i(gl.getUniformLocation(program, "matc_coefficient_table"), 2);
+      for (const [name, value] of Object.entries(material.uniforms || {}))
+        gl.uniform3fv(gl.getUniformLocation(program, name), value);
+      gl.drawArrays(gl.TRIANGLES, 0, 3);
+      const pixels = new Float32Array(count * 2 * 4);
+      gl.readPixels(0, 0, count, 2, gl.RGBA, gl.FLOAT, pixels);
+      for (const [key, row, expected] of [["fresnel", 0, material.F], ["preintegrated", 1, material.Fbar]]) {
+        let worst = 0, where = 0;
+        for (let i = 0; i < count; ++i) {
+          for (let c = 0; c < 3; ++c) {
+            const difference = Math.abs(pixels[(row * count + i) * 4 + c] - expected[i][c]);
+            if (!(difference <= worst)) { worst = difference; where = i; }
+          }
+        }
+        result[key] = { max_abs: worst, query: where };
+      }
+    } catch (error) {
+      result.error = String(error.message || error);
+    }
+  }
+} catch (error) {
+  out.error = String(error.message || error);
+}
+document.getElementById("result").textContent = JSON.stringify(out);
+`;
+
+// What every fragment shader puts before the library, and what follows it: row 0 of the target
+// is F(mu), row 1 Fbar(NdotV, roughness), one column per query. COEFFICIENTS is a compiled
+// material's constant or the coefficient table's result.
+const kPrelude = "#version 300 es\nprecision highp float;\nprecision highp int;\n" +
+                 "precision highp sampler2D;\n";
+const main = (coefficients) => `
+uniform sampler2D matc_lut;
+uniform sampler2D matc_queries;
+uniform sampler2D matc_coefficient_table;
+uniform vec3 matc_reflectivity;
+uniform vec3 matc_edge_tint;
+out vec4 matc_result;
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 query = texelFetch(matc_queries, ivec2(pixel.x, 0), 0);  // mu, NdotV, roughness
+  vec3 r = matc_reflectivity;
+  vec3 g = matc_edge_tint;
+  MatcFresnelCoefficients c = ${coefficients};
+  vec3 value = pixel.y == 0
+      ? matc_fresnel(c, query.x)
+      : matc_fresnel_preintegrated(c, texture(matc_lut, matc_lut_texcoord(query.y, query.z)));
+  matc_result = vec4(value, 1.0);
+}
+`;
+// Textured metals: per-channel (reflectivity, edge tint), the table's corners among them.
+const kTexturedMetals = [
+  [[0.9, 0.6, 0.3], [0.8, 0.5, 0.2]],
+  [[0.02, 0.5, 0.98], [1.0, 0.0, 0.5]],
+  [[0.0, 1.0, 0.45], [0.0, 1.0, 1.0]],
+];
+
+const dir = mkdtempSync(join(tmpdir(), "matc-webgl2-"));
+try {
+  const files = readdirSync(materialsDir).filter((f) => f.endsWith(".json")).sort()
+                  .map((f) => join(materialsDir, f));
+  const out = join(dir, "out");
+  const precisions = ["--lut-precision", "f32", "--coefficient-table-precision", "f32"];
+  run(matc, ["-q", "-o", out, "--emit", "glsl,lut,coefficient-table", "--lut", "raw",
+             ...precisions, ...files]);
+
+  // The grid of matc validate: mu_k = k / (n - 1) beside (NdotV, roughness) = (i, j) / 40.
+  const count = kGrid * kGrid;
+  const queries = [], mu = [], ndotv = [], roughness = [];
+  for (let i = 0; i < kGrid; ++i) {
+    for (let j = 0; j < kGrid; ++j) {
+      const k = i * kGrid + j;
+      mu.push(k / (count - 1));
+      ndotv.push(i / (kGrid - 1));
+      roughness.push(j / (kGrid - 1));
+      queries.push(mu[k], ndotv[k], roughness[k], 0);
+    }
+  }
+  // The page gets the queries as float32; the CPU runtime evaluates the same float32 values.
+  const asFloat = (values) => Array.from(new Float32Array(values)).join(",");
+  const evaluate = (args) => JSON.parse(run(matc, [
+    "eval", ...args, ...precisions, "--no-reference", "--mu", asFloat(mu),
+    "--ndotv", asFloat(ndotv), "--roughness", asFloat(roughness)]));
+  const cases = files.map((file) => {
+    const evaluated = evaluate([file]);
+    const name = evaluated.name;
+    return { name, F: evaluated.F, Fbar: evaluated.Fbar, tolerance: kFresnelTolerance,
+             source: readFileSync(join(out, `${name}.glsl`), "utf8") +
+                     main(`matc_coefficients_${name}`) };
+  });
+  for (const [reflectivity, edgeTint] of kTexturedMetals) {
+    const evaluated = evaluate(["--reflectivity", reflectivity.join(","),
+                                "--edge-tint", edgeTint.join(",")]);
+    cases.push({ name: `table r=${reflectivity} g=${edgeTint}`, F: evaluated.F_table,
+                 Fbar: evaluated.Fbar_table, tolerance: kPreintegratedTolerance,
+                 uniforms: { matc_reflectivity: reflectivity, matc_edge_tint: edgeTint },
+                 source: main("MATC_COEFFICIENTS_FROM_TABLE(matc_coefficient_table, r, g)") });
+  }
+  const lut = readFileSync(join(out, "matc_lut.bin"));
+  const table = readFileSync(join(out, "matc_coefficient_table.bin"));
+  const data = {
+    prelude: kPrelude, library: readFileSync(join(out, "matc_fresnel.glsl"), "utf8"),
+    cases, queries: Array.from(new Float32Array(queries)),
+    lut: lut.toString("base64"), lutSize: Math.round(Math.sqrt(lut.length / 16)),
+    table: table.toString("base64"), tableSize: Math.round(Math.sqrt(table.length / 8)),
+  };
+  const page = join(dir, "webgl2.html");
+  writeFileSync(page, "<!doctype html><html><body><pre id=\"result\">not run</pre>\n" +
+                      "<script type=\"application/json\" id=\"data\">" +
+                      JSON.stringify(data).replaceAll("</", "<\\/") + "</script>\n" +
+                      `<script>${kPageScript}</script></body></html>\n`);
+
+  const dom = run(chromiumPath(), [
+    "--headless", "--no-sandbox", "--disable-dev-shm-usage", "--use-angle=swiftshader",
+    "--enable-unsafe-swiftshader", "--virtual-time-budget=60000",
+    `--user-data-dir=${join(dir, "profile")}`, "--dump-dom", `file://${page}`]);
+  const match = dom.match(/<pre id="result">([^<]*)<\/pre>/);
+  check(match !== null, "the page wrote no result");
+  const result = JSON.parse(match[1].replaceAll("&quot;", "\"").replaceAll("&amp;", "&"));
+  check(!result.error, `WebGL2: ${result.error}`);
+  console.log(`WebGL2 renderer: ${result.renderer}`);
+  check(result.materials.length === cases.length,
+        `${result.materials.length} of ${cases.length} cases ran`);
+  for (const [index, m] of result.materials.entries()) {
+    const tolerance = cases[index].tolerance;
+    if (m.error) {
+      check(false, `${m.name}: ${m.error}`);
+      continue;
+    }
+    const where = (key) => `at query ${m[key].query}`;
+    console.log(`${m.name}: F ${m.fresnel.max_abs.toExponential(2)}, ` +
+                `Fbar ${m.preintegrated.max_abs.toExponential(2)}`);
+    check(m.fresnel.max_abs <= tolerance,
+          `${m.name}: |F_webgl2 - F_cpu| = ${m.fresnel.max_abs} ${where("fresnel")}`);
+    check(m.preintegrated.max_abs <= kPreintegratedTolerance,
+          `${m.name}: |Fbar_webgl2 - Fbar_cpu| = ${m.preintegrated.max_abs} ${where("preintegrated")}`);
+  }
+} finally {
+  rmSync(dir, { recursive: true, force: true });
+}
+finish();
