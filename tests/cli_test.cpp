@@ -590,6 +590,23 @@ TEST_F(MatcCli, EvalPrintsFbarFromTheTableBesideTheReference) {
   EXPECT_NE(mismatched.err.find("pair up"), std::string::npos) << mismatched.err;
 }
 
+// --no-reference drops only the split-sum integral: the table's Fbar is the same numbers.
+TEST_F(MatcCli, EvalWithoutTheReferenceKeepsTheTablesFbar) {
+  const std::string file = std::string(MATC_EXAMPLES_DIR) + "/beryllium.json";
+  const CommandResult with = run({"eval", file, "--ndotv", "0.2,0.9", "--roughness", "0.3,0.7"});
+  const CommandResult without =
+      run({"eval", file, "--ndotv", "0.2,0.9", "--roughness", "0.3,0.7", "--no-reference"});
+  ASSERT_EQ(without.exit_code, 0) << without.err;
+  const auto full = nlohmann::json::parse(with.out);
+  const auto fast = nlohmann::json::parse(without.out);
+  EXPECT_FALSE(fast.contains("Fbar_reference"));
+  EXPECT_EQ(fast["Fbar"], full["Fbar"]);
+  EXPECT_EQ(run({"eval", file, "--ndotv", "0.5", "--roughness", "0.5", "--no-reference",
+                 "--quad-light", "1,0,1;1,1,1;0,1,1;0,0,1"})
+                .exit_code,
+            2);
+}
+
 // Without a Vulkan driver, validation says what is missing, exits 5 and writes nothing.
 TEST_F(MatcCli, ValidationWithoutAVulkanDriverIsAClearError) {
   write_file(dir_ / "good.json", kGood);
