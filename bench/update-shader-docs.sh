@@ -14,3 +14,5 @@ tool="$build/bench/matc_shader_cost"
   "$root/bench/fenced.sh" "$build/matc" basis --basis paper
 "$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" basis-polynomial-f82 \
   "$root/bench/fenced.sh" "$build/matc" basis --basis f82
+"$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" shader-sizes \
+  "$root/bench/shader-sizes.sh" "$build/matc" "$root/examples/materials/copper.json"

@@ -5,8 +5,8 @@
 # with a depfile so that editing a material, a spectral file it names, or updating matc reruns it,
 # and nothing else does. The generated per-material headers become sources of TARGET and
 # OUTPUT_DIR one of its include directories, so `#include "<name>.h"` works and the target is built
-# after its materials. EMIT selects outputs (glsl hlsl spirv header json lut coefficient-table
-# ltc; default all). Use one OUTPUT_DIR per call (a second call with the same one is an error):
+# after its materials. EMIT selects outputs (glsl hlsl wgsl spirv header json lut
+# coefficient-table ltc; default all). Use one OUTPUT_DIR per call (a second call with the same one is an error):
 # every call writes the shared files matc_fresnel.*, matc_lut.*, matc_coefficient_table.* and
 # matc_ltc.*.
 # Material names are read from the files at configure time (changing one reconfigures).
@@ -36,7 +36,7 @@ function(matc_add_materials)
     message(FATAL_ERROR "matc_add_materials: OUTPUT_DIR and MATERIALS are required")
   endif()
   if(NOT ARG_EMIT)
-    set(ARG_EMIT glsl hlsl spirv header json lut coefficient-table ltc)
+    set(ARG_EMIT glsl hlsl wgsl spirv header json lut coefficient-table ltc)
   endif()
   if(NOT ARG_LUT_FORMAT)
     set(ARG_LUT_FORMAT ktx2)
@@ -50,6 +50,7 @@ function(matc_add_materials)
   endif()
   set(_per_material_extension_glsl glsl)
   set(_per_material_extension_hlsl hlsl)
+  set(_per_material_extension_wgsl wgsl)
   set(_per_material_extension_spirv spv)
   set(_per_material_extension_header h)
   set(_per_material_extension_json json)
@@ -64,14 +65,14 @@ function(matc_add_materials)
   foreach(_kind IN LISTS ARG_EMIT)
     if(NOT DEFINED _per_material_extension_${_kind} AND NOT _kind STREQUAL "lut"
        AND NOT _kind STREQUAL "coefficient-table" AND NOT _kind STREQUAL "ltc")
-      message(FATAL_ERROR "matc_add_materials: EMIT '${_kind}' is not one of glsl, hlsl, spirv, header, json, lut, coefficient-table, ltc")
+      message(FATAL_ERROR "matc_add_materials: EMIT '${_kind}' is not one of glsl, hlsl, wgsl, spirv, header, json, lut, coefficient-table, ltc")
     endif()
   endforeach()
 
   # Outputs in the order matc's depfile names them (Ninja checks the first): the shared files,
   # then each material's in input order.
   set(_outputs "")
-  foreach(_kind IN ITEMS glsl hlsl spirv)
+  foreach(_kind IN ITEMS glsl hlsl wgsl spirv)
     if(_kind IN_LIST ARG_EMIT)
       list(APPEND _outputs "${_dir}/matc_fresnel.${_per_material_extension_${_kind}}")
     endif()
@@ -96,7 +97,7 @@ function(matc_add_materials)
     get_filename_component(_path "${_material}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
     _matc_json_name("${_path}" matc_add_materials material _name)
     list(APPEND _materials "${_path}")
-    foreach(_kind IN ITEMS glsl hlsl spirv header json)
+    foreach(_kind IN ITEMS glsl hlsl wgsl spirv header json)
       if(_kind IN_LIST ARG_EMIT)
         list(APPEND _outputs "${_dir}/${_name}.${_per_material_extension_${_kind}}")
       endif()

@@ -26,7 +26,7 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-# Node.js runs the independent JSON Schema check (tests/js); any recent node with npm will do.
+# Node.js runs the independent checks (tests/js: JSON Schema, containers, WGSL on Dawn).
 command -v npm >/dev/null 2>&1 || missing+=(nodejs npm)
 
 if [ ${#missing[@]} -eq 0 ]; then
@@ -38,7 +38,7 @@ else
   apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-# The independent validators the tests use (Ajv, ktx-parse, parse-dds), pinned by
+# The independent validators the tests use (Ajv, ktx-parse, parse-dds, webgpu), pinned by
 # tests/js/package-lock.json; reinstalled when missing or out of date.
 repo=$(cd "$(dirname "$0")/.." && pwd)
 if ! npm ls --prefix "$repo/tests/js" >/dev/null 2>&1; then

@@ -128,9 +128,9 @@ TEST_F(MatcCli, SameInputsGiveSameBytesAndUnchangedFilesAreNotRewritten) {
   const auto first_time = fs::last_write_time(dir_ / "a" / "good.json");
   const CommandResult again = run({"-o", "a", "m/good.json"});
   ASSERT_EQ(again.exit_code, 0);
-  // good.{json,glsl,hlsl,spv,h}, matc_fresnel.{glsl,hlsl,spv}, matc_lut, matc_coefficient_table
-  // and matc_ltc .ktx2 and .json, the manifest.
-  EXPECT_NE(again.err.find("0 files written, 15 unchanged"), std::string::npos) << again.err;
+  // good.{json,glsl,hlsl,wgsl,spv,h}, matc_fresnel.{glsl,hlsl,wgsl,spv}, matc_lut,
+  // matc_coefficient_table and matc_ltc .ktx2 and .json, the manifest.
+  EXPECT_NE(again.err.find("0 files written, 17 unchanged"), std::string::npos) << again.err;
   EXPECT_EQ(fs::last_write_time(dir_ / "a" / "good.json"), first_time);
   ASSERT_EQ(run({"-o", "b", "m/good.json"}).exit_code, 0);
   for (const auto& entry : fs::directory_iterator(dir_ / "a")) {
@@ -138,7 +138,7 @@ TEST_F(MatcCli, SameInputsGiveSameBytesAndUnchangedFilesAreNotRewritten) {
     EXPECT_EQ(read_file(entry.path()), read_file(dir_ / "b" / name)) << name;
   }
   // No temporary files are left behind.
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "a"), fs::directory_iterator()), 15);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "a"), fs::directory_iterator()), 17);
 }
 
 // -j only changes how fast: every example built one at a time and four at a time gives the
@@ -158,7 +158,7 @@ TEST_F(MatcCli, ParallelBuildsWriteTheSameBytes) {
     EXPECT_EQ(read_file(entry.path()), read_file(dir_ / "parallel" / name)) << name;
     ++compared;
   }
-  EXPECT_EQ(compared, files.size() * 5 + 10);
+  EXPECT_EQ(compared, files.size() * 6 + 11);
   // Not a terminal: no progress line, only the summary.
   EXPECT_EQ(result.err.find('\r'), std::string::npos);
 }
@@ -295,8 +295,8 @@ TEST_F(MatcCli, ManifestListsTheBuildAndGeneratedFilesNameTheirInputs) {
   EXPECT_EQ(manifest["matc_version"], MATC_VERSION);
   ASSERT_EQ(manifest["materials"].size(), 1u);
   const std::string hash = manifest["materials"][0]["inputs_hash"];
-  EXPECT_EQ(manifest["materials"][0]["files"].size(), 5u);
-  for (const char* file : {"good.glsl", "good.hlsl", "good.h"})
+  EXPECT_EQ(manifest["materials"][0]["files"].size(), 6u);
+  for (const char* file : {"good.glsl", "good.hlsl", "good.wgsl", "good.h"})
     EXPECT_NE(read_file(dir_ / "out" / file).find(hash), std::string::npos) << file;
   EXPECT_EQ(nlohmann::json::parse(read_file(dir_ / "out" / "good.json"))["inputs_hash"], hash);
   // Changing the material changes the hash.

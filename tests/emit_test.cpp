@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "matc/compile.h"
@@ -17,6 +18,7 @@
 #include "matc/spirv/linkage.h"
 #include "matc/spirv/shader_compiler.h"
 #include "matc/spirv/spirv_tools.h"
+#include "matc/version.h"
 
 namespace matc {
 namespace {
@@ -80,6 +82,8 @@ TEST(ShaderLiterals, FloatsReadBackExactlyInEveryLanguage) {
   const std::vector<double> values = {1.0, -2.5};
   EXPECT_EQ(vector_literal(ShaderLanguage::glsl, values), "vec2(1.0, -2.5)");
   EXPECT_EQ(vector_literal(ShaderLanguage::hlsl, values), "float2(1.0, -2.5)");
+  EXPECT_EQ(vector_literal(ShaderLanguage::wgsl, values), "vec2f(1.0, -2.5)");
+  EXPECT_EQ(template_path(ShaderLanguage::wgsl, "material"), "wgsl/material.wgsl");
 }
 
 TEST(ShaderLiterals, FileNamesInCommentsCannotCloseTheComment) {
@@ -277,14 +281,14 @@ TEST(Build, OutputsAreIdenticalAcrossRuns) {
   const CompiledMaterial& copper = example("copper");
   const MaterialOutputs first = small_build().material_outputs(copper);
   const MaterialOutputs second = again.material_outputs(copper);
-  ASSERT_EQ(first.files.size(), 5u);
+  ASSERT_EQ(first.files.size(), 6u);
   for (std::size_t i = 0; i < first.files.size(); ++i) {
     EXPECT_EQ(first.files[i].name, second.files[i].name);
     EXPECT_EQ(first.files[i].bytes, second.files[i].bytes) << first.files[i].name;
   }
   const std::vector<OutputFile> shared = small_build().shared_outputs();
   const std::vector<OutputFile> shared_again = again.shared_outputs();
-  ASSERT_EQ(shared.size(), 9u);
+  ASSERT_EQ(shared.size(), 10u);
   for (std::size_t i = 0; i < shared.size(); ++i)
     EXPECT_EQ(shared[i].bytes, shared_again[i].bytes) << shared[i].name;
 }
@@ -304,6 +308,33 @@ TEST(Build, EmitSelectsOutputsAndOptionsChangeTheHash) {
             hlsl_only.material_inputs_hash(example("iron").material));
 }
 
+// WGSL is written as text (Dawn runs it in tests/js/check-webgpu.mjs): every placeholder filled,
+// the version asserted where WGSL allows no preprocessor, and no GLSL/HLSL spelling left over.
+TEST(Build, WgslOutputsAreCompleteWgsl) {
+  BuildOptions options = small_options();
+  options.emit = {OutputKind::wgsl};
+  options.embedded_lut_size = 4;
+  const Build wgsl_only(options);
+  const MaterialOutputs outputs = wgsl_only.material_outputs(example("gold"));
+  ASSERT_EQ(outputs.files.size(), 1u);
+  EXPECT_EQ(outputs.files[0].name, "gold.wgsl");
+  const std::string& snippet = outputs.files[0].bytes;
+  EXPECT_NE(snippet.find(fmt::format("const_assert MATC_VERSION == {};", kVersionNumber)),
+            std::string::npos);
+  EXPECT_NE(snippet.find("const matc_coefficients_gold = MatcFresnelCoefficients("),
+            std::string::npos);
+  ASSERT_EQ(wgsl_only.shared_outputs().size(), 1u);
+  const std::string& library = wgsl_only.shared_outputs()[0].bytes;
+  EXPECT_EQ(wgsl_only.shared_outputs()[0].name, "matc_fresnel.wgsl");
+  EXPECT_NE(library.find("const MATC_EMBEDDED_LUT = array<vec4f, 16>("), std::string::npos);
+  for (const std::string* text : {&snippet, &library}) {
+    for (const char* leftover : {"{{", "#define", "#if", "vec3(", "float3(", "inout"})
+      EXPECT_EQ(text->find(leftover), std::string::npos) << leftover;
+  }
+  EXPECT_THROW(compile_to_spirv({ShaderLanguage::wgsl, library, "matc_fresnel.wgsl"}),
+               std::logic_error);
+}
+
 TEST(Build, EmbeddedTableIsOptionalAndBounded) {
   EXPECT_EQ(small_build().library_source(ShaderLanguage::glsl).find("MATC_EMBEDDED_LUT"),
             std::string::npos);
@@ -319,7 +350,7 @@ TEST(Build, ManifestListsEveryFileWithItsHash) {
   const std::vector<MaterialOutputs> materials = {small_build().material_outputs(example("gold"))};
   const nlohmann::ordered_json manifest = small_build().manifest(shared, materials);
   EXPECT_EQ(manifest["materials"][0]["name"], "gold");
-  EXPECT_EQ(manifest["materials"][0]["files"].size(), 5u);
+  EXPECT_EQ(manifest["materials"][0]["files"].size(), 6u);
   EXPECT_EQ(manifest["materials"][0]["files"][0]["hash"],
             hash_of_bytes(materials[0].files[0].bytes));
   EXPECT_EQ(manifest["shared_files"].size(), shared.size());

@@ -8,24 +8,15 @@
 // anything through the coefficient table 1e-4.
 //   node check-webgl2.mjs MATC MATERIALS_DIR
 import { spawnSync } from "node:child_process";
-import { mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from "node:fs";
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { check, finish } from "./report.mjs";
+import {
+  compileAndEvaluate, kFresnelTolerance, kPreintegratedTolerance, run, validationQueries,
+} from "./shader-cases.mjs";
 
 const [matc, materialsDir] = process.argv.slice(2);
-const kFresnelTolerance = 1e-5;
-const kPreintegratedTolerance = 1e-4;
-const kGrid = 41;  // matc validate's 41 x 41 (NdotV, roughness) grid, as many cosines
-
-function run(command, args) {
-  const result = spawnSync(command, args, { encoding: "utf8", maxBuffer: 256 << 20 });
-  if (result.status !== 0) {
-    throw new Error(`${command} ${args.slice(0, 3).join(" ")} ...: exit ${result.status}\n` +
-                    `${result.stderr}`);
-  }
-  return result.stdout;
-}
 
 function chromiumPath() {
   for (const name of ["chromium", "chromium-browser"]) {
@@ -147,59 +138,25 @@ void main() {
   matc_result = vec4(value, 1.0);
 }
 `;
-// Textured metals: per-channel (reflectivity, edge tint), the table's corners among them.
-const kTexturedMetals = [
-  [[0.9, 0.6, 0.3], [0.8, 0.5, 0.2]],
-  [[0.02, 0.5, 0.98], [1.0, 0.0, 0.5]],
-  [[0.0, 1.0, 0.45], [0.0, 1.0, 1.0]],
-];
 
 const dir = mkdtempSync(join(tmpdir(), "matc-webgl2-"));
 try {
-  const files = readdirSync(materialsDir).filter((f) => f.endsWith(".json")).sort()
-                  .map((f) => join(materialsDir, f));
-  const out = join(dir, "out");
-  const precisions = ["--lut-precision", "f32", "--coefficient-table-precision", "f32"];
-  run(matc, ["-q", "-o", out, "--emit", "glsl,lut,coefficient-table", "--lut", "raw",
-             ...precisions, ...files]);
-
-  // The grid of matc validate: mu_k = k / (n - 1) beside (NdotV, roughness) = (i, j) / 40.
-  const count = kGrid * kGrid;
-  const queries = [], mu = [], ndotv = [], roughness = [];
-  for (let i = 0; i < kGrid; ++i) {
-    for (let j = 0; j < kGrid; ++j) {
-      const k = i * kGrid + j;
-      mu.push(k / (count - 1));
-      ndotv.push(i / (kGrid - 1));
-      roughness.push(j / (kGrid - 1));
-      queries.push(mu[k], ndotv[k], roughness[k], 0);
-    }
-  }
-  // The page gets the queries as float32; the CPU runtime evaluates the same float32 values.
-  const asFloat = (values) => Array.from(new Float32Array(values)).join(",");
-  const evaluate = (args) => JSON.parse(run(matc, [
-    "eval", ...args, ...precisions, "--no-reference", "--mu", asFloat(mu),
-    "--ndotv", asFloat(ndotv), "--roughness", asFloat(roughness)]));
-  const cases = files.map((file) => {
-    const evaluated = evaluate([file]);
-    const name = evaluated.name;
-    return { name, F: evaluated.F, Fbar: evaluated.Fbar, tolerance: kFresnelTolerance,
-             source: readFileSync(join(out, `${name}.glsl`), "utf8") +
-                     main(`matc_coefficients_${name}`) };
-  });
-  for (const [reflectivity, edgeTint] of kTexturedMetals) {
-    const evaluated = evaluate(["--reflectivity", reflectivity.join(","),
-                                "--edge-tint", edgeTint.join(",")]);
-    cases.push({ name: `table r=${reflectivity} g=${edgeTint}`, F: evaluated.F_table,
-                 Fbar: evaluated.Fbar_table, tolerance: kPreintegratedTolerance,
-                 uniforms: { matc_reflectivity: reflectivity, matc_edge_tint: edgeTint },
+  const queries = validationQueries();
+  const { materials, textured, library } = compileAndEvaluate(
+      matc, materialsDir, join(dir, "out"), "glsl",
+      ["--lut-precision", "f32", "--coefficient-table-precision", "f32"], queries);
+  const cases = materials.map((m) => ({
+    name: m.name, F: m.F, Fbar: m.Fbar, tolerance: kFresnelTolerance,
+    source: m.snippet + main(`matc_coefficients_${m.name}`) }));
+  for (const metal of textured) {
+    cases.push({ name: metal.name, F: metal.F, Fbar: metal.Fbar, tolerance: kPreintegratedTolerance,
+                 uniforms: { matc_reflectivity: metal.reflectivity, matc_edge_tint: metal.edgeTint },
                  source: main("MATC_COEFFICIENTS_FROM_TABLE(matc_coefficient_table, r, g)") });
   }
-  const lut = readFileSync(join(out, "matc_lut.bin"));
-  const table = readFileSync(join(out, "matc_coefficient_table.bin"));
+  const lut = readFileSync(join(dir, "out", "matc_lut.bin"));
+  const table = readFileSync(join(dir, "out", "matc_coefficient_table.bin"));
   const data = {
-    prelude: kPrelude, library: readFileSync(join(out, "matc_fresnel.glsl"), "utf8"),
-    cases, queries: Array.from(new Float32Array(queries)),
+    prelude: kPrelude, library, cases, queries: Array.from(queries.flat),
     lut: lut.toString("base64"), lutSize: Math.round(Math.sqrt(lut.length / 16)),
     table: table.toString("base64"), tableSize: Math.round(Math.sqrt(table.length / 8)),
   };

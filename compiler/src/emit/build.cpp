@@ -26,9 +26,10 @@ constexpr std::string_view kLibraryStem = "matc_fresnel";
 constexpr std::string_view kLutStem = "matc_lut";
 constexpr std::string_view kManifestFile = "matc_manifest.json";
 
-constexpr std::array<std::pair<OutputKind, std::string_view>, 8> kOutputKinds = {{
+constexpr std::array<std::pair<OutputKind, std::string_view>, 9> kOutputKinds = {{
     {OutputKind::glsl, "glsl"},
     {OutputKind::hlsl, "hlsl"},
+    {OutputKind::wgsl, "wgsl"},
     {OutputKind::spirv, "spirv"},
     {OutputKind::header, "header"},
     {OutputKind::json, "json"},
@@ -36,6 +37,22 @@ constexpr std::array<std::pair<OutputKind, std::string_view>, 8> kOutputKinds = 
     {OutputKind::coefficient_table, "coefficient-table"},
     {OutputKind::ltc, "ltc"},
 }};
+
+// The shader snippets, in the order their files are written.
+constexpr std::array<ShaderLanguage, 3> kShaderLanguages = {
+    ShaderLanguage::glsl, ShaderLanguage::hlsl, ShaderLanguage::wgsl};
+
+OutputKind output_kind_of(ShaderLanguage language) {
+  switch (language) {
+    case ShaderLanguage::hlsl:
+      return OutputKind::hlsl;
+    case ShaderLanguage::wgsl:
+      return OutputKind::wgsl;
+    case ShaderLanguage::glsl:
+      break;
+  }
+  return OutputKind::glsl;
+}
 
 // A library module from GLSL: the source with a placeholder entry point, then exports.
 SpirvWords library_module(std::string source, std::string name,
@@ -144,6 +161,8 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
       shader_library_source(ShaderLanguage::glsl, polynomial, library_options, inputs_hash_);
   hlsl_library_ =
       shader_library_source(ShaderLanguage::hlsl, polynomial, library_options, inputs_hash_);
+  wgsl_library_ =
+      shader_library_source(ShaderLanguage::wgsl, polynomial, library_options, inputs_hash_);
   library_options.coefficient_table_functions = false;
   library_options.area_light_functions = false;
   glsl_material_module_library_ =
@@ -162,7 +181,15 @@ runtime::BasisView Build::basis() const {
 }
 
 const std::string& Build::library_source(ShaderLanguage language) const {
-  return language == ShaderLanguage::glsl ? glsl_library_ : hlsl_library_;
+  switch (language) {
+    case ShaderLanguage::hlsl:
+      return hlsl_library_;
+    case ShaderLanguage::wgsl:
+      return wgsl_library_;
+    case ShaderLanguage::glsl:
+      break;
+  }
+  return glsl_library_;
 }
 
 std::string Build::material_source(ShaderLanguage language,
@@ -187,10 +214,12 @@ std::string Build::material_inputs_hash(const Material& material) const {
 std::vector<OutputFile> Build::shared_outputs() const {
   std::vector<OutputFile> files;
   const auto& emit = options_.emit;
-  if (emit.contains(OutputKind::glsl))
-    files.push_back({fmt::format("{}.glsl", kLibraryStem), glsl_library_});
-  if (emit.contains(OutputKind::hlsl))
-    files.push_back({fmt::format("{}.hlsl", kLibraryStem), hlsl_library_});
+  for (const ShaderLanguage language : kShaderLanguages) {
+    if (emit.contains(output_kind_of(language))) {
+      files.push_back({fmt::format("{}{}", kLibraryStem, shader_file_extension(language)),
+                       library_source(language)});
+    }
+  }
   if (emit.contains(OutputKind::spirv)) {
     const std::string name = fmt::format("{}.spv", kLibraryStem);
     files.push_back(
@@ -261,8 +290,8 @@ MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const 
   MaterialOutputs out{
       name, compiled.material.source_path, material_inputs_hash(compiled.material), {}};
   const auto& emit = options_.emit;
-  for (const ShaderLanguage language : {ShaderLanguage::glsl, ShaderLanguage::hlsl}) {
-    if (emit.contains(language == ShaderLanguage::glsl ? OutputKind::glsl : OutputKind::hlsl)) {
+  for (const ShaderLanguage language : kShaderLanguages) {
+    if (emit.contains(output_kind_of(language))) {
       out.files.push_back({fmt::format("{}{}", name, shader_file_extension(language)),
                            material_snippet_source(language, compiled, out.inputs_hash)});
     }

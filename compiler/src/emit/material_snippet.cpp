@@ -43,8 +43,7 @@ std::string material_snippet_source(ShaderLanguage language, const CompiledMater
   values.erase("red_c");
   values.erase("green_c");
   values.erase("blue_c");
-  return fill_template(
-      language == ShaderLanguage::glsl ? "glsl/material.glsl" : "hlsl/material.hlsl", values);
+  return fill_template(template_path(language, "material"), values);
 }
 
 }  // namespace matc

@@ -27,10 +27,23 @@ std::string vector_rows(ShaderLanguage language, std::span<const double> values,
 std::string embedded_lut_source(ShaderLanguage language, const Lut& lut) {
   const std::vector<double> texels(lut.texels.begin(), lut.texels.end());
   return fill_template(
-      language == ShaderLanguage::glsl ? "glsl/embedded_lut.glsl" : "hlsl/embedded_lut.hlsl",
+      template_path(language, "embedded_lut"),
       {{"embedded_size", std::to_string(lut.size)},
        {"embedded_texels", std::to_string(lut.size * lut.size)},
        {"embedded_texel_values", vector_rows(language, texels, runtime::kBasisSize)}});
+}
+
+// How a mutable vec3 of the basis' values is declared.
+std::string_view vector_declaration(ShaderLanguage language) {
+  switch (language) {
+    case ShaderLanguage::hlsl:
+      return "float3";
+    case ShaderLanguage::wgsl:
+      return "var";
+    case ShaderLanguage::glsl:
+      break;
+  }
+  return "vec3";
 }
 
 // Horner's rule for b_1..b_3, unrolled, each coefficient selected by segment
@@ -39,9 +52,8 @@ std::string horner_steps(ShaderLanguage language, const runtime::BasisPolynomial
   static_assert(runtime::kPolynomialSegments == 4, "matc_basis_coefficient selects among four");
   std::string out;
   for (std::size_t power = 0; power <= runtime::kPolynomialDegree; ++power) {
-    out.append(power == 0
-                   ? fmt::format("  {} b = ", language == ShaderLanguage::glsl ? "vec3" : "float3")
-                   : "  b = b * t + ");
+    out.append(power == 0 ? fmt::format("  {} b = ", vector_declaration(language))
+                          : "  b = b * t + ");
     out.append("matc_basis_coefficient(segment,");
     for (std::size_t segment = 0; segment < runtime::kPolynomialSegments; ++segment) {
       out.append(segment % 2 == 0 ? "\n      " : " ");
@@ -57,7 +69,7 @@ std::string area_light_source(ShaderLanguage language, std::size_t ltc_size) {
   constexpr double kSides = static_cast<double>(runtime::kDiskLightSides);
   const double step = 2.0 * std::numbers::pi / kSides;
   return fill_template(
-      language == ShaderLanguage::glsl ? "glsl/area_lights.glsl" : "hlsl/area_lights.hlsl",
+      template_path(language, "area_lights"),
       {{"ltc_size", std::to_string(ltc_size)},
        {"disk_sides", std::to_string(runtime::kDiskLightSides)},
        {"disk_angle_step", float_literal(step)},
@@ -72,7 +84,7 @@ std::string shader_library_source(ShaderLanguage language,
                                   const ShaderLibraryOptions& options,
                                   std::string_view inputs_hash) {
   return fill_template(
-      language == ShaderLanguage::glsl ? "glsl/matc_fresnel.glsl" : "hlsl/matc_fresnel.hlsl",
+      template_path(language, "matc_fresnel"),
       {{"version", kVersion},
        {"version_number", std::to_string(kVersionNumber)},
        {"inputs_hash", std::string(inputs_hash)},
@@ -84,12 +96,9 @@ std::string shader_library_source(ShaderLanguage language,
        {"coefficient_table",
         options.coefficient_table_functions
             ? fill_template(
-                  language == ShaderLanguage::glsl ? "glsl/coefficient_table.glsl"
-                                                   : "hlsl/coefficient_table.hlsl",
+                  template_path(language, "coefficient_table"),
                   {{"coefficient_table_size", std::to_string(options.coefficient_table_size)}}) +
-                  fill_template(language == ShaderLanguage::glsl ? "glsl/baked_coefficients.glsl"
-                                                                 : "hlsl/baked_coefficients.hlsl",
-                                {})
+                  fill_template(template_path(language, "baked_coefficients"), {})
             : ""},
        {"area_lights",
         options.area_light_functions ? area_light_source(language, options.ltc_size) : ""},

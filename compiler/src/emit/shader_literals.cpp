@@ -9,11 +9,23 @@
 namespace matc {
 
 std::string_view shader_language_name(ShaderLanguage language) {
-  return language == ShaderLanguage::glsl ? "glsl" : "hlsl";
+  switch (language) {
+    case ShaderLanguage::hlsl:
+      return "hlsl";
+    case ShaderLanguage::wgsl:
+      return "wgsl";
+    case ShaderLanguage::glsl:
+      break;
+  }
+  return "glsl";
 }
 
-std::string_view shader_file_extension(ShaderLanguage language) {
-  return language == ShaderLanguage::glsl ? ".glsl" : ".hlsl";
+std::string shader_file_extension(ShaderLanguage language) {
+  return fmt::format(".{}", shader_language_name(language));
+}
+
+std::string template_path(ShaderLanguage language, std::string_view stem) {
+  return fmt::format("{0}/{1}.{0}", shader_language_name(language), stem);
 }
 
 std::string float_literal(double value) {
@@ -41,8 +53,15 @@ std::string float_list(std::span<const double> values, bool c_suffix) {
 }
 
 std::string vector_literal(ShaderLanguage language, std::span<const double> values) {
-  return fmt::format("{}{}({})", language == ShaderLanguage::glsl ? "vec" : "float", values.size(),
-                     float_list(values));
+  switch (language) {
+    case ShaderLanguage::hlsl:
+      return fmt::format("float{}({})", values.size(), float_list(values));
+    case ShaderLanguage::wgsl:
+      return fmt::format("vec{}f({})", values.size(), float_list(values));
+    case ShaderLanguage::glsl:
+      break;
+  }
+  return fmt::format("vec{}({})", values.size(), float_list(values));
 }
 
 std::string comment_safe_file_name(std::string_view path) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <sstream>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <glslang/Public/ResourceLimits.h>
@@ -85,6 +86,8 @@ EShLanguage glslang_stage(ShaderStage stage) {
 }  // namespace
 
 SpirvWords compile_to_spirv(const ShaderSource& source) {
+  if (source.language == ShaderLanguage::wgsl)
+    throw std::logic_error("glslang compiles GLSL and HLSL, not WGSL");
   initialize_glslang_once();
 
   const bool hlsl = source.language == ShaderLanguage::hlsl;

@@ -20,24 +20,20 @@
 
 namespace matc {
 
-enum class OutputKind { glsl, hlsl, spirv, header, json, lut, coefficient_table, ltc };
+enum class OutputKind { glsl, hlsl, wgsl, spirv, header, json, lut, coefficient_table, ltc };
 
-// "glsl", "hlsl", "spirv", "header", "json", "lut", "coefficient-table", "ltc": the names --emit
-// accepts.
+// "glsl", "hlsl", "wgsl", "spirv", "header", "json", "lut", "coefficient-table", "ltc": the names
+// --emit accepts.
 std::vector<std::string> output_kind_names();
 std::optional<OutputKind> output_kind_from_name(std::string_view name);
 
 inline constexpr std::size_t kMaxEmbeddedLutSize = 64;
 
 struct BuildOptions {
-  std::set<OutputKind> emit = {OutputKind::glsl,
-                               OutputKind::hlsl,
-                               OutputKind::spirv,
-                               OutputKind::header,
-                               OutputKind::json,
-                               OutputKind::lut,
-                               OutputKind::coefficient_table,
-                               OutputKind::ltc};
+  std::set<OutputKind> emit = {
+      OutputKind::glsl,   OutputKind::hlsl, OutputKind::wgsl, OutputKind::spirv,
+      OutputKind::header, OutputKind::json, OutputKind::lut,  OutputKind::coefficient_table,
+      OutputKind::ltc};
   LutOptions lut;
   LutFormat lut_format = LutFormat::ktx2;
   LutPrecision lut_precision = LutPrecision::f32;
@@ -133,6 +129,7 @@ class Build {
   std::string ltc_file_bytes_;
   std::string glsl_library_;
   std::string hlsl_library_;
+  std::string wgsl_library_;
   // The GLSL library without the textured-metal functions, which no material module calls:
   // each <name>.spv compiles it, and glslang parsing the unused functions cost a fifth of a batch.
   std::string glsl_material_module_library_;

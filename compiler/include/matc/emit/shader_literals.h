@@ -7,20 +7,25 @@
 
 namespace matc {
 
-enum class ShaderLanguage { glsl, hlsl };
+// The languages matc writes. GLSL and HLSL also compile to SPIR-V in-process (glslang); WGSL is
+// written as text only and proven by Dawn in the tests (docs/shaders.md).
+enum class ShaderLanguage { glsl, hlsl, wgsl };
 
-std::string_view shader_language_name(ShaderLanguage language);   // "glsl", "hlsl"
-std::string_view shader_file_extension(ShaderLanguage language);  // ".glsl", ".hlsl"
+std::string_view shader_language_name(ShaderLanguage language);  // "glsl", "hlsl", "wgsl"
+std::string shader_file_extension(ShaderLanguage language);      // ".glsl", ".hlsl", ".wgsl"
+
+// The templates/ file of a language: "<language>/<stem>.<language>" (e.g. wgsl/material.wgsl).
+std::string template_path(ShaderLanguage language, std::string_view stem);
 
 // `value` rounded to float, in the shortest form that reads back to the same float, always with a
-// decimal point or exponent ("1.0", "0.25", "1e-05"): a GLSL, HLSL and C float literal.
+// decimal point or exponent ("1.0", "0.25", "1e-05"): a GLSL, HLSL, WGSL and C float literal.
 std::string float_literal(double value);
 // ... with C's `f` suffix.
 std::string c_float_literal(double value);
 // Comma-separated float literals.
 std::string float_list(std::span<const double> values, bool c_suffix = false);
 
-// A vector constructor such as vec3(...) / float3(...) of the given size.
+// A vector constructor such as vec3(...) / float3(...) / vec3f(...) of the given size.
 std::string vector_literal(ShaderLanguage language, std::span<const double> values);
 
 // A file name safe inside a comment of any generated language: characters outside

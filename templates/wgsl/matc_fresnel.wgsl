@@ -1,0 +1,68 @@
+// matc {{version}}: the Fresnel decomposition of Belcour, Bati and Barla (SIGGRAPH 2020),
+// F(mu) = sum_i c_i b_i(mu). Generated (inputs {{inputs_hash}}); do not edit, rerun matc.
+// WGSL (WebGPU, wgpu); every name starts with matc_ / Matc / MATC_. WGSL has no #include and no
+// include guards: put this file once in the shader module, with any number of material files
+// (<name>.wgsl), in any order (module-scope declarations may come after their uses).
+
+// Material files assert (const_assert) that this is the matc version they come from.
+const MATC_VERSION: i32 = {{version_number}};
+// Width and height of the preintegrated table this build wrote (matc_lut.*).
+const MATC_LUT_SIZE: i32 = {{lut_size}};
+
+// A material's coefficients c_0..c_3, one row per colour channel: 48 bytes, a valid uniform and
+// storage buffer layout as is.
+struct MatcFresnelCoefficients {
+  red: vec4f,
+  green: vec4f,
+  blue: vec4f,
+}
+
+// One polynomial coefficient of the segment: chosen with selects rather than by indexing a
+// constant array, which compilers turn into memory traffic.
+fn matc_basis_coefficient(segment: i32, s0: vec3f, s1: vec3f, s2: vec3f, s3: vec3f) -> vec3f {
+  let odd = (segment & 1) != 0;
+  return select(select(s0, s1, odd), select(s2, s3, odd), segment >= 2);
+}
+
+// The basis b_0..b_3 at mu = cos(theta): b_1..b_3 are {{segments}} polynomials of degree {{degree}}
+// in u = sqrt(mu), each in t in [-1, 1] across its quarter of u, evaluated by Horner's rule.
+fn matc_basis(mu: f32) -> vec4f {
+  let scaled = sqrt(clamp(mu, 0.0, 1.0)) * {{segments}}.0;
+  let segment = min(i32(scaled), {{last_segment}});
+  let t = 2.0 * (scaled - f32(segment)) - 1.0;
+{{horner_steps}}
+  return vec4f(1.0, b);
+}
+
+// sum_i c_i v_i per channel, clamped at 0 where the truncated basis dips below it.
+fn matc_combine(c: MatcFresnelCoefficients, v: vec4f) -> vec3f {
+  return max(vec3f(dot(c.red, v), dot(c.green, v), dot(c.blue, v)), vec3f(0.0));
+}
+
+// F for a direct light: mu = dot(V, H).
+fn matc_fresnel(c: MatcFresnelCoefficients, mu: f32) -> vec3f {
+  return matc_combine(c, matc_basis(mu));
+}
+
+// Where to sample the preintegrated table, with linear filtering and clamp-to-edge addressing:
+// u = sqrt(NdotV) across, perceptual roughness down, texel centres on the ends of both axes.
+fn matc_lut_texcoord(NdotV: f32, roughness: f32) -> vec2f {
+  let axes = vec2f(sqrt(clamp(NdotV, 0.0, 1.0)), clamp(roughness, 0.0, 1.0));
+  return (axes * f32(MATC_LUT_SIZE - 1) + 0.5) / f32(MATC_LUT_SIZE);
+}
+
+// The preintegrated Fresnel from the table's texel bbar at matc_lut_texcoord(NdotV, roughness).
+fn matc_fresnel_preintegrated(c: MatcFresnelCoefficients, bbar: vec4f) -> vec3f {
+  return matc_combine(c, bbar);
+}
+
+// Turquin (2019)'s multiple-scattering scale for the specular lobe, 1 + F0 (1 - E) / E, with
+// E = bbar.x the directional albedo of the GGX lobe (F = 1).
+fn matc_energy_compensation(c: MatcFresnelCoefficients, bbar: vec4f) -> vec3f {
+  let f0 = vec3f(c.red.x, c.green.x, c.blue.x);
+  let albedo = max(bbar.x, 1e-4);  // guards the NdotV = 0 column
+  return vec3f(1.0) + f0 * ((1.0 - albedo) / albedo);
+}
+{{coefficient_table}}
+{{area_lights}}
+{{embedded_lut}}

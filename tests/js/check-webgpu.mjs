@@ -1,0 +1,216 @@
+// The WGSL output, compiled and run by an implementation matc did not write: Dawn (npm `webgpu`,
+// whose WGSL compiler is Tint) on the SwiftShader Vulkan driver that Debian's chromium ships.
+// Compute kernels evaluate, over the query grid of `matc validate`:
+// - every example material's snippet: F(mu), and Fbar(NdotV, roughness) from the preintegrated
+//   table (rgba16float, linear sampler);
+// - textured metals: coefficients from the coefficient table (rg16float) for per-channel (r, g);
+// - an area light: gold under two quads (one crossing the horizon), with the LTC table
+//   (rgba32float, which needs the "float32-filterable" feature);
+// and everything is compared with the CPU runtime (`matc eval`) at matc validate's tolerances.
+// The library with an embedded table (--embed-lut) must compile too.
+//   VK_ICD_FILENAMES=/usr/lib/chromium/vk_swiftshader_icd.json node check-webgpu.mjs MATC MATERIALS
+import { mkdtempSync, readFileSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+import { create, globals } from "webgpu";
+import { check, finish } from "./report.mjs";
+import {
+  compileAndEvaluate, kFresnelTolerance, kPreintegratedTolerance, largestDifference, run,
+  validationQueries,
+} from "./shader-cases.mjs";
+
+const [matc, materialsDir] = process.argv.slice(2);
+Object.assign(globalThis, globals);
+
+// Quads in the shading frame of `matc eval --quad-light` (normal +z, view in the xz-plane towards
+// +x, shading point at the origin): one overhead, one tilted across the horizon.
+const kQuads = ["-1,-1,2;1,-1,2;1,1,2;-1,1,2", "-1,-1,0.5;1,-1,-0.3;1,1,-0.3;-1,1,0.5"];
+
+const kBindings = `
+@group(0) @binding(0) var<storage, read> matc_queries: array<vec4f>;
+@group(0) @binding(1) var<storage, read_write> matc_results: array<vec4f>;
+@group(0) @binding(2) var matc_lut: texture_2d<f32>;
+@group(0) @binding(3) var matc_coefficient_table: texture_2d<f32>;
+@group(0) @binding(4) var matc_ltc: texture_2d<f32>;
+@group(0) @binding(5) var matc_linear: sampler;
+`;
+
+// Two results per query: F(mu) and Fbar(NdotV, roughness) for the coefficients `coefficients`.
+const fresnelKernel = (coefficients) => `${kBindings}
+@compute @workgroup_size(64)
+fn main(@builtin(global_invocation_id) id: vec3u) {
+  let i = id.x;
+  if (i >= arrayLength(&matc_queries)) {
+    return;
+  }
+  let query = matc_queries[i];  // mu, NdotV, roughness
+  let c = ${coefficients};
+  let bbar = textureSampleLevel(matc_lut, matc_linear, matc_lut_texcoord(query.y, query.z), 0.0);
+  matc_results[2u * i] = vec4f(matc_fresnel(c, query.x), 1.0);
+  matc_results[2u * i + 1u] = vec4f(matc_fresnel_preintegrated(c, bbar), 1.0);
+}
+`;
+
+// One result per query: a quad light of radiance 1 seen from the origin.
+const quadLightKernel = (coefficients, quad) => {
+  const vertices = quad.split(";").map((v) => `vec3f(${v.split(",").map(Number).map((x) => x.toFixed(6)).join(", ")})`);
+  return `${kBindings}
+@compute @workgroup_size(64)
+fn main(@builtin(global_invocation_id) id: vec3u) {
+  let i = id.x;
+  if (i >= arrayLength(&matc_queries)) {
+    return;
+  }
+  let query = matc_queries[i];  // -, NdotV, roughness
+  let V = vec3f(sqrt(max(1.0 - query.y * query.y, 0.0)), 0.0, query.y);
+  let bbar = textureSampleLevel(matc_lut, matc_linear, matc_lut_texcoord(query.y, query.z), 0.0);
+  let ltc = textureSampleLevel(matc_ltc, matc_linear, matc_ltc_texcoord(query.y, query.z), 0.0);
+  matc_results[i] = vec4f(matc_ltc_quad_light(${coefficients}, bbar, ltc, vec3f(0.0, 0.0, 1.0), V,
+                                              vec3f(0.0), ${vertices.join(", ")}), 1.0);
+}
+`;
+};
+
+const dir = mkdtempSync(join(tmpdir(), "matc-webgpu-"));
+try {
+  const gpu = create([]);
+  const adapter = await gpu.requestAdapter();
+  check(adapter !== null, "Dawn found no adapter (VK_ICD_FILENAMES must name SwiftShader's ICD)");
+  const device = await adapter.requestDevice({ requiredFeatures: ["float32-filterable"] });
+  console.log(`Dawn adapter: ${adapter.info.description || adapter.info.vendor}`);
+  const errors = [];
+  device.addEventListener("uncapturederror", (event) => errors.push(event.error.message));
+
+  const options = ["--lut-precision", "f16", "--coefficient-table-precision", "f16"];
+  const queries = validationQueries();
+  const out = join(dir, "out");
+  const cases = compileAndEvaluate(matc, materialsDir, out, "wgsl", options, queries, ["ltc"]);
+
+  const texture = (file, format, texelBytes) => {
+    const bytes = readFileSync(join(out, file));
+    const size = Math.round(Math.sqrt(bytes.length / texelBytes));
+    const t = device.createTexture({ size: [size, size], format,
+                                     usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
+    device.queue.writeTexture({ texture: t }, bytes, { bytesPerRow: size * texelBytes }, [size, size]);
+    return t;
+  };
+  const textures = [texture("matc_lut.bin", "rgba16float", 8),
+                    texture("matc_coefficient_table.bin", "rg16float", 4),
+                    texture("matc_ltc.bin", "rgba32float", 16)];
+  const sampler = device.createSampler({ magFilter: "linear", minFilter: "linear",
+                                         addressModeU: "clamp-to-edge", addressModeV: "clamp-to-edge" });
+  const layout = device.createBindGroupLayout({ entries: [
+    { binding: 0, visibility: GPUShaderStage.COMPUTE, buffer: { type: "read-only-storage" } },
+    { binding: 1, visibility: GPUShaderStage.COMPUTE, buffer: { type: "storage" } },
+    ...[2, 3, 4].map((binding) => ({ binding, visibility: GPUShaderStage.COMPUTE,
+                                     texture: { sampleType: "float" } })),
+    { binding: 5, visibility: GPUShaderStage.COMPUTE, sampler: { type: "filtering" } },
+  ] });
+
+  // Compiles library + extra into a kernel, runs it over `flat` queries and returns
+  // `perQuery` vec4 results per query (or throws Tint's messages).
+  const dispatch = async (source, flat, perQuery) => {
+    const module = device.createShaderModule({ code: source });
+    const messages = (await module.getCompilationInfo()).messages.filter((m) => m.type === "error");
+    if (messages.length > 0)
+      throw new Error(messages.map((m) => `${m.lineNum}:${m.linePos}: ${m.message}`).join("\n"));
+    const pipeline = device.createComputePipeline({
+      layout: device.createPipelineLayout({ bindGroupLayouts: [layout] }),
+      compute: { module, entryPoint: "main" } });
+    const input = device.createBuffer({ size: flat.byteLength, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
+    device.queue.writeBuffer(input, 0, flat);
+    const bytes = (flat.length / 4) * perQuery * 16;
+    const output = device.createBuffer({ size: bytes, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC });
+    const readback = device.createBuffer({ size: bytes, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST });
+    const group = device.createBindGroup({ layout, entries: [
+      { binding: 0, resource: { buffer: input } }, { binding: 1, resource: { buffer: output } },
+      ...textures.map((t, k) => ({ binding: 2 + k, resource: t.createView() })),
+      { binding: 5, resource: sampler }] });
+    const encoder = device.createCommandEncoder();
+    const pass = encoder.beginComputePass();
+    pass.setPipeline(pipeline);
+    pass.setBindGroup(0, group);
+    pass.dispatchWorkgroups(Math.ceil(flat.length / 4 / 64));
+    pass.end();
+    encoder.copyBufferToBuffer(output, 0, readback, 0, bytes);
+    device.queue.submit([encoder.finish()]);
+    await readback.mapAsync(GPUMapMode.READ);
+    const values = new Float32Array(readback.getMappedRange().slice(0));
+    readback.unmap();
+    return values;
+  };
+
+  const report = (name, measured, tolerance) => {
+    console.log(`${name}: ${measured.map(([what, d]) => `${what} ${d.max_abs.toExponential(2)}`).join(", ")}`);
+    for (const [what, d] of measured)
+      check(d.max_abs <= tolerance[what], `${name}: |${what}_dawn - ${what}_cpu| = ${d.max_abs} at query ${d.query}`);
+  };
+  const attempt = async (name, body) => {
+    try {
+      await body();
+    } catch (error) {
+      check(false, `${name}: ${error.message}`);
+    }
+  };
+
+  for (const material of cases.materials) {
+    await attempt(material.name, async () => {
+      const values = await dispatch(cases.library + material.snippet +
+                                    fresnelKernel(`matc_coefficients_${material.name}`), queries.flat, 2);
+      report(material.name, [["F", largestDifference(values, material.F, 8, 0)],
+                             ["Fbar", largestDifference(values, material.Fbar, 8, 4)]],
+             { F: kFresnelTolerance, Fbar: kPreintegratedTolerance });
+    });
+  }
+  for (const metal of cases.textured) {
+    await attempt(metal.name, async () => {
+      const vector = (v) => `vec3f(${v.map((x) => x.toFixed(6)).join(", ")})`;
+      const values = await dispatch(cases.library + fresnelKernel(
+        `matc_coefficients_from_table_texture(matc_coefficient_table, matc_linear, ` +
+        `${vector(metal.reflectivity)}, ${vector(metal.edgeTint)})`), queries.flat, 2);
+      report(metal.name, [["F", largestDifference(values, metal.F, 8, 0)],
+                          ["Fbar", largestDifference(values, metal.Fbar, 8, 4)]],
+             { F: kPreintegratedTolerance, Fbar: kPreintegratedTolerance });
+    });
+  }
+
+  // Area lights: an 8 x 8 grid of (NdotV, roughness), NdotV short of 1 (where any tangent frame
+  // will do and the two sides may pick different ones).
+  const ndotv = [], roughness = [];
+  for (let i = 0; i < 8; ++i) {
+    for (let j = 0; j < 8; ++j) {
+      ndotv.push(Math.fround(0.02 + 0.96 * i / 7));
+      roughness.push(Math.fround(j / 7));
+    }
+  }
+  const lightQueries = new Float32Array(ndotv.flatMap((v, k) => [0, v, roughness[k], 0]));
+  const gold = cases.materials.find((m) => m.name === "gold");
+  for (const quad of kQuads) {
+    await attempt(`gold, quad ${quad}`, async () => {
+      const expected = JSON.parse(run(matc, [
+        "eval", join(materialsDir, "gold.json"), ...options, "--ndotv", ndotv.join(","),
+        "--roughness", roughness.join(","), "--quad-light", quad, "--light-samples", "16"]));
+      const values = await dispatch(cases.library + gold.snippet +
+                                    quadLightKernel("matc_coefficients_gold", quad), lightQueries, 1);
+      report(`gold, quad light ${quad}`, [["L", largestDifference(values, expected.L_ltc, 4, 0)]],
+             { L: kPreintegratedTolerance });
+    });
+  }
+
+  // The embedded table (a constant array indexed at run time) must compile.
+  await attempt("embedded table", async () => {
+    const embedded = join(dir, "embedded");
+    run(matc, ["-q", "-o", embedded, "--emit", "wgsl", "--embed-lut", "--embed-lut-size", "8",
+               join(materialsDir, "gold.json")]);
+    const library = readFileSync(join(embedded, "matc_fresnel.wgsl"), "utf8");
+    await dispatch(library + fresnelKernel("matc_coefficients_from_baked(vec3f(0.9), vec3f(0.01), vec3f(0.0))")
+                     .replace("let bbar = textureSampleLevel(matc_lut, matc_linear, matc_lut_texcoord(query.y, query.z), 0.0);",
+                              "let bbar = matc_preintegrated_basis_embedded(query.y, query.z);"),
+                   queries.flat.subarray(0, 256), 2);
+    check(true, "embedded table compiles");
+  });
+  check(errors.length === 0, `WebGPU errors: ${errors.join("; ")}`);
+} finally {
+  rmSync(dir, { recursive: true, force: true });
+}
+finish();
