@@ -16,3 +16,7 @@ tool="$build/bench/matc_shader_cost"
   "$root/bench/fenced.sh" "$build/matc" basis --basis f82
 "$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" shader-sizes \
   "$root/bench/shader-sizes.sh" "$build/matc" "$root/examples/materials/copper.json"
+"$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" three-example \
+  "$root/bench/fenced.sh" cat "$root/examples/web/matc-three.mjs"
+"$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" webgpu-example \
+  "$root/bench/fenced.sh" cat "$root/examples/web/specular.wgsl"

@@ -7,24 +7,16 @@
 // compared with the CPU runtime (`matc eval`) at matc validate's tolerances: F 1e-5, Fbar and
 // anything through the coefficient table 1e-4.
 //   node check-webgl2.mjs MATC MATERIALS_DIR
-import { spawnSync } from "node:child_process";
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { check, finish } from "./report.mjs";
 import {
-  compileAndEvaluate, kFresnelTolerance, kPreintegratedTolerance, run, validationQueries,
+  chromiumPath, compileAndEvaluate, kFresnelTolerance, kPreintegratedTolerance, run,
+  validationQueries,
 } from "./shader-cases.mjs";
 
 const [matc, materialsDir] = process.argv.slice(2);
-
-function chromiumPath() {
-  for (const name of ["chromium", "chromium-browser"]) {
-    const found = spawnSync("sh", ["-c", `command -v ${name}`], { encoding: "utf8" });
-    if (found.status === 0) return found.stdout.trim();
-  }
-  throw new Error("chromium not found (scripts/install-deps.sh installs Debian's chromium)");
-}
 
 // The page: uploads the table and the queries, compiles one program per material, renders,
 // reads back and writes what it measured into <pre id="result"> as JSON.

@@ -7,8 +7,10 @@
 // - an area light: gold under two quads (one crossing the horizon), with the LTC table
 //   (rgba32float, which needs the "float32-filterable" feature);
 // and everything is compared with the CPU runtime (`matc eval`) at matc validate's tolerances.
-// The library with an embedded table (--embed-lut) must compile too.
-//   VK_ICD_FILENAMES=/usr/lib/chromium/vk_swiftshader_icd.json node check-webgpu.mjs MATC MATERIALS
+// examples/web/specular.wgsl (docs/shaders.md shows it) must give Fbar with energy compensation,
+// and the library with an embedded table (--embed-lut) must compile too.
+//   VK_ICD_FILENAMES=/usr/lib/chromium/vk_swiftshader_icd.json \
+//     node check-webgpu.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
 import { mkdtempSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
@@ -19,7 +21,7 @@ import {
   validationQueries,
 } from "./shader-cases.mjs";
 
-const [matc, materialsDir] = process.argv.slice(2);
+const [matc, materialsDir, webDir] = process.argv.slice(2);
 Object.assign(globalThis, globals);
 
 // Quads in the shading frame of `matc eval --quad-light` (normal +z, view in the xz-plane towards
@@ -84,7 +86,8 @@ try {
   const options = ["--lut-precision", "f16", "--coefficient-table-precision", "f16"];
   const queries = validationQueries();
   const out = join(dir, "out");
-  const cases = compileAndEvaluate(matc, materialsDir, out, "wgsl", options, queries, ["ltc"]);
+  const cases = compileAndEvaluate(matc, materialsDir, out, "wgsl", options, queries,
+                                   ["ltc", "json"]);
 
   const texture = (file, format, texelBytes) => {
     const bytes = readFileSync(join(out, file));
@@ -196,6 +199,50 @@ try {
              { L: kPreintegratedTolerance });
     });
   }
+
+  // The documented example: specular_gold(NdotV, roughness) = Fbar (1 + F0 (1 - E) / E), E the
+  // table's directional albedo (Fbar of r = 1 from the coefficient-table path). Compared
+  // relative to the value (E is small at grazing, where the scale is large), from NdotV = 0.1.
+  await attempt("examples/web/specular.wgsl", async () => {
+    const kernel = `
+@group(0) @binding(0) var<storage, read> matc_queries: array<vec4f>;
+@group(0) @binding(1) var<storage, read_write> matc_results: array<vec4f>;
+@group(0) @binding(3) var matc_coefficient_table: texture_2d<f32>;
+@group(0) @binding(4) var matc_ltc: texture_2d<f32>;
+@compute @workgroup_size(64)
+fn main(@builtin(global_invocation_id) id: vec3u) {
+  let i = id.x;
+  if (i >= arrayLength(&matc_queries)) {
+    return;
+  }
+  matc_results[i] = vec4f(specular_gold(matc_queries[i].y, matc_queries[i].z), 1.0);
+}
+`;
+    const gold = cases.materials.find((m) => m.name === "gold");
+    const values = await dispatch(cases.library + gold.snippet +
+                                  readFileSync(join(webDir, "specular.wgsl"), "utf8") + kernel,
+                                  queries.flat, 1);
+    const f0 = JSON.parse(readFileSync(join(out, "gold.json"), "utf8")).coefficients.map((c) => c[0]);
+    const albedo = JSON.parse(run(matc, [
+      "eval", "--reflectivity", "1", "--edge-tint", "1", ...options, "--no-reference",
+      "--ndotv", Array.from(queries.ndotv).join(","),
+      "--roughness", Array.from(queries.roughness).join(",")])).Fbar_table;
+    let worst = 0, where = 0;
+    for (let i = 0; i < queries.count; ++i) {
+      if (queries.ndotv[i] < 0.1) continue;
+      const e = Math.max(albedo[i][0], 1e-4);
+      for (let c = 0; c < 3; ++c) {
+        const expected = gold.Fbar[i][c] * (1 + f0[c] * (1 - e) / e);
+        const relative = Math.abs(values[4 * i + c] - expected) / expected;
+        if (!(relative <= worst)) {
+          worst = relative;
+          where = i;
+        }
+      }
+    }
+    report("examples/web/specular.wgsl (relative)", [["specular", { max_abs: worst, query: where }]],
+           { specular: kPreintegratedTolerance });
+  });
 
   // The embedded table (a constant array indexed at run time) must compile.
   await attempt("embedded table", async () => {
