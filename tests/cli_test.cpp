@@ -141,6 +141,45 @@ TEST_F(MatcCli, SameInputsGiveSameBytesAndUnchangedFilesAreNotRewritten) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "a"), fs::directory_iterator()), 17);
 }
 
+// One action per material (--no-shared) plus one shared action (--shared-only) write the batch's
+// files byte for byte, less the manifest, which lists a whole batch.
+TEST_F(MatcCli, PerMaterialActionsWriteTheBatchsBytes) {
+  std::vector<std::string> batch = {"-o", "batch"};
+  const std::vector<std::string> files = example_materials();
+  batch.insert(batch.end(), files.begin(), files.end());
+  ASSERT_EQ(run(batch).exit_code, 0);
+  const CommandResult shared = run({"-o", "split", "--shared-only"});
+  ASSERT_EQ(shared.exit_code, 0) << shared.err;
+  for (const std::string& file : files) {
+    const CommandResult one = run({"-o", "split", "--no-shared", file});
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+  }
+  std::size_t compared = 0;
+  for (const auto& entry : fs::directory_iterator(dir_ / "batch")) {
+    const fs::path name = entry.path().filename();
+    if (name == "matc_manifest.json") {
+      EXPECT_FALSE(fs::exists(dir_ / "split" / name));
+      continue;
+    }
+    EXPECT_EQ(read_file(entry.path()), read_file(dir_ / "split" / name)) << name;
+    ++compared;
+  }
+  EXPECT_EQ(compared, files.size() * 6 + 10);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "split"), fs::directory_iterator()),
+            static_cast<std::ptrdiff_t>(compared));
+  // A material's own run writes no shared file; the shared run takes no material.
+  const CommandResult alone = run({"-o", "alone", "--no-shared", files.front()});
+  ASSERT_EQ(alone.exit_code, 0) << alone.err;
+  EXPECT_FALSE(fs::exists(dir_ / "alone" / "matc_fresnel.glsl"));
+  EXPECT_FALSE(fs::exists(dir_ / "alone" / "matc_lut.ktx2"));
+  const CommandResult both = run({"-o", "x", "--shared-only", files.front()});
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_NE(both.err.find("--shared-only writes no material's files"), std::string::npos)
+      << both.err;
+  EXPECT_EQ(run({"-o", "x", "--shared-only", "--no-shared"}).exit_code, 2);
+  EXPECT_FALSE(fs::exists(dir_ / "x"));
+}
+
 // -j only changes how fast: every example built one at a time and four at a time gives the
 // same files, byte for byte, diagnostics in input order.
 TEST_F(MatcCli, ParallelBuildsWriteTheSameBytes) {

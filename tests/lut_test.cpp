@@ -10,6 +10,7 @@
 
 #include "matc/fit/accuracy.h"
 #include "matc/fit/coefficients.h"
+#include "matc/lut/default_lut_hashes.h"
 #include "matc/lut/energy.h"
 #include "matc/lut/preintegrate.h"
 #include "matc/lut/split_sum_reference.h"
@@ -231,6 +232,27 @@ TEST(Fbar, TableFollowsTheDirectReferenceOnMeasuredMetals) {
     }
   }
   EXPECT_LT(worst, 0.02);
+}
+
+// The checked-in hashes are those of the tables baked today, for every basis, format and
+// precision (rerun `matc basis lut-hashes -o compiler/src/lut/default_lut_hashes.cpp`), and only
+// the default size and sample count have one.
+TEST(DefaultLutHashes, CheckedInHashesAreCurrent) {
+  const std::vector<DefaultLutHash> computed = compute_default_lut_hashes();
+  const std::vector<DefaultLutHash> checked_in = checked_in_default_lut_hashes();
+  ASSERT_EQ(computed.size(), checked_in.size());
+  ASSERT_EQ(computed.size(), runtime::kShippedBases.size() * 4 * 2);
+  for (std::size_t i = 0; i < computed.size(); ++i) {
+    EXPECT_EQ(checked_in[i].hash, computed[i].hash)
+        << runtime::basis_name(computed[i].basis) << " " << lut_format_name(computed[i].format)
+        << " " << lut_precision_name(computed[i].precision);
+    EXPECT_EQ(default_lut_hash(computed[i].basis, computed[i].format, computed[i].precision, {}),
+              computed[i].hash);
+  }
+  EXPECT_FALSE(
+      default_lut_hash(runtime::kDefaultBasis, LutFormat::ktx2, LutPrecision::f32, {.size = 64}));
+  EXPECT_FALSE(default_lut_hash(runtime::kDefaultBasis, LutFormat::ktx2, LutPrecision::f32,
+                                {.samples = 512}));
 }
 
 }  // namespace

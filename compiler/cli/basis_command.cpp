@@ -12,6 +12,7 @@
 #include "matc/basis/basis_polynomial_fit.h"
 #include "matc/fit/coefficient_table.h"
 #include "matc/ltc/ltc_fit.h"
+#include "matc/lut/default_lut_hashes.h"
 #include "matc/runtime/basis.h"
 
 namespace matc::cli {
@@ -105,6 +106,12 @@ int run_basis_coefficient_table(const BasisFitOptions& options) {
   fmt::print(stderr, "matc: fitted the {} x {} coefficient table of the {} basis\n", table.size(),
              table.size(), runtime::basis_name(table.basis));
   return write_source(options.output, coefficient_table_source(table));
+}
+
+int run_basis_lut_hashes(const BasisFitOptions& options) {
+  const std::vector<DefaultLutHash> hashes = compute_default_lut_hashes();
+  fmt::print(stderr, "matc: hashed {} default table files\n", hashes.size());
+  return write_source(options.output, default_lut_hashes_source(hashes));
 }
 
 int run_basis_ltc_table(const LtcTableOptions& options) {

@@ -32,6 +32,8 @@ struct CompileOptions {
   std::string depfile;         // --depfile FILE: Make-syntax dependencies of every output
   bool write_depfile = false;  // -MD: the same, as <output directory>/matc.d
   std::string emit;            // comma-separated output kinds; empty: all
+  bool no_shared = false;      // --no-shared: only each material's own files
+  bool shared_only = false;    // --shared-only: only the shared files (no material given)
   std::string lut_format = "ktx2";
   LutCliOptions lut;
   bool embed_lut = false;
@@ -80,6 +82,7 @@ struct BasisFitOptions {
   std::string basis{runtime::basis_name(runtime::kDefaultBasis)};
 };
 int run_basis_fit(const BasisFitOptions& options);
+int run_basis_lut_hashes(const BasisFitOptions& options);
 
 // `matc basis coefficient-table`: refits the shipped coefficient table and writes its C++ source.
 int run_basis_coefficient_table(const BasisFitOptions& options);

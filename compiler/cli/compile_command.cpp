@@ -41,7 +41,7 @@ const std::set<std::string>& reserved_names() {
 // Every file a material of this name may write, whatever --emit says.
 std::vector<fs::path> possible_outputs(const fs::path& directory, const std::string& name) {
   std::vector<fs::path> paths;
-  for (const char* extension : {".json", ".glsl", ".hlsl", ".spv", ".h"})
+  for (const char* extension : {".json", ".glsl", ".hlsl", ".wgsl", ".spv", ".h"})
     paths.push_back(directory / (name + extension));
   return paths;
 }
@@ -253,8 +253,11 @@ int run_compile(const CompileOptions& options) {
     try {
       fs::create_directories(output_directory);
       std::vector<fs::path> targets;
-      std::vector<OutputFile> shared = build.shared_outputs();
-      if (build.options().emit.contains(OutputKind::json)) {
+      // The manifest lists every file of a batch, so only a batch writes it.
+      std::vector<OutputFile> shared;
+      if (!options.no_shared) shared = build.shared_outputs();
+      if (!options.no_shared && !options.shared_only &&
+          build.options().emit.contains(OutputKind::json)) {
         shared.push_back({std::string(manifest_file_name()),
                           format_json(build.manifest(shared, manifest_entries))});
       }

@@ -53,6 +53,14 @@ int main(int argc, char** argv) {
             return {};
           },
           "LIST", "output kinds"));
+  CLI::Option* no_shared_option = app.add_flag(
+      "--no-shared", compile.no_shared,
+      "Write only each material's own files (<name>.*), not the shared library, tables and "
+      "manifest: one build action per material (docs/scaling.md)");
+  app.add_flag("--shared-only", compile.shared_only,
+               "Write only the shared files (matc_fresnel.*, the tables), from no material file: "
+               "the one shared action beside per-material --no-shared actions")
+      ->excludes(no_shared_option);
   app.add_option(
          "--lut", compile.lut_format,
          "File format of the tables DIR/matc_lut.<ext>, DIR/matc_coefficient_table.<ext> and "
@@ -162,6 +170,14 @@ int main(int argc, char** argv) {
       "-o,--output", table_fit.output,
       "Where to write (runtime/src/<basis>_coefficient_table.cpp); default stdout");
   add_basis_option(*table_fit_command, table_fit.basis);
+  BasisFitOptions lut_hashes;
+  CLI::App* lut_hashes_command = basis_command->add_subcommand(
+      "lut-hashes",
+      "Bake the default preintegrated table of every basis and write the C++ source of its "
+      "files' hashes (what headers and manifests name without baking)");
+  lut_hashes_command->add_option(
+      "-o,--output", lut_hashes.output,
+      "Where to write (compiler/src/lut/default_lut_hashes.cpp); default stdout");
   LtcTableOptions ltc_table;
   CLI::App* ltc_table_command = basis_command->add_subcommand(
       "ltc-table",
@@ -302,8 +318,15 @@ int main(int argc, char** argv) {
     if (*fit_command) return run_basis_fit(basis_fit);
     if (*table_fit_command) return run_basis_coefficient_table(table_fit);
     if (*ltc_table_command) return run_basis_ltc_table(ltc_table);
+    if (*lut_hashes_command) return run_basis_lut_hashes(lut_hashes);
     if (*basis_command) return run_basis(basis);
-    if (compile.files.empty()) {
+    if (compile.shared_only && !compile.files.empty()) {
+      fmt::print(stderr,
+                 "matc: error: --shared-only writes no material's files; give no material file "
+                 "(compile materials with --no-shared in their own runs)\n");
+      return kExitUsageError;
+    }
+    if (compile.files.empty() && !compile.shared_only) {
       fmt::print(stderr,
                  "matc: error: no material files given; usage: matc [-o DIR] FILES... "
                  "(see matc --help)\n");

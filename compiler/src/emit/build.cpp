@@ -12,6 +12,7 @@
 #include "matc/json_format.h"
 #include "matc/ltc/ltc_table_files.h"
 #include "matc/lut/coefficient_table_files.h"
+#include "matc/lut/default_lut_hashes.h"
 #include "matc/material/parse.h"
 #include "matc/runtime/basis_polynomial.h"
 #include "matc/runtime/ltc.h"
@@ -134,13 +135,6 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
                                             kMaxEmbeddedLutSize));
   }
   const runtime::BasisView basis = this->basis();
-  lut_ = bake_lut(basis, options_.lut);
-  stored_lut_ = stored_as(lut_.lut, options_.lut_precision);
-  lut_file_bytes_ = encode_lut(lut_, options_.lut_format, options_.lut_precision);
-  // Hashed once here: every material header and the manifest name the same table.
-  lut_reference_ = {fmt::format("{}{}", kLutStem, lut_file_extension(options_.lut_format)),
-                    options_.lut.size, hash_of_bytes(lut_file_bytes_),
-                    std::string(runtime::basis_name(options_.basis))};
   if (options_.embedded_lut_size != 0) {
     embedded_lut_ = preintegrate_lut(basis, {options_.embedded_lut_size, options_.lut.samples});
   }
@@ -167,6 +161,32 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
   library_options.area_light_functions = false;
   glsl_material_module_library_ =
       shader_library_source(ShaderLanguage::glsl, polynomial, library_options, inputs_hash_);
+}
+
+const Build::BakedTable& Build::baked_table() const {
+  std::call_once(lazy_table_->once, [this] {
+    BakedTable baked;
+    baked.lut = bake_lut(basis(), options_.lut);
+    baked.stored = stored_as(baked.lut.lut, options_.lut_precision);
+    baked.file_bytes = encode_lut(baked.lut, options_.lut_format, options_.lut_precision);
+    // Hashed once: every material header and the manifest name the same table.
+    baked.reference = {fmt::format("{}{}", kLutStem, lut_file_extension(options_.lut_format)),
+                       options_.lut.size, hash_of_bytes(baked.file_bytes),
+                       std::string(runtime::basis_name(options_.basis))};
+    lazy_table_->table = std::move(baked);
+  });
+  return *lazy_table_->table;
+}
+
+LutReference Build::lut_reference() const {
+  // The default table's hash is checked in: naming it needs no bake.
+  if (const auto hash = default_lut_hash(options_.basis, options_.lut_format,
+                                         options_.lut_precision, options_.lut)) {
+    return {fmt::format("{}{}", kLutStem, lut_file_extension(options_.lut_format)),
+            options_.lut.size, std::string(*hash),
+            std::string(runtime::basis_name(options_.basis))};
+  }
+  return baked_table().reference;
 }
 
 std::string Build::options_key() const {
@@ -227,10 +247,10 @@ std::vector<OutputFile> Build::shared_outputs() const {
                                           shared_library_exports(embedded_lut_.has_value())))});
   }
   if (emit.contains(OutputKind::lut)) {
-    const LutReference& lut = lut_reference_;
-    files.push_back({lut.file, lut_file_bytes_});
-    files.push_back({lut.file + ".json",
-                     format_json(lut_manifest(lut_, options_.lut_format, options_.lut_precision))});
+    const LutReference& lut = baked_table().reference;
+    files.push_back({lut.file, baked_table().file_bytes});
+    files.push_back({lut.file + ".json", format_json(lut_manifest(this->lut(), options_.lut_format,
+                                                                  options_.lut_precision))});
   }
   if (emit.contains(OutputKind::coefficient_table)) {
     files.push_back({coefficient_table_file_, coefficient_table_file_bytes_});
@@ -303,7 +323,7 @@ MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const 
       out.files.push_back({fmt::format("{}.spv", name), spirv_bytes(module)});
     if (emit.contains(OutputKind::header)) {
       out.files.push_back({fmt::format("{}.h", name),
-                           material_c_header(compiled, out.inputs_hash, lut_reference_, module)});
+                           material_c_header(compiled, out.inputs_hash, lut_reference(), module)});
     }
   }
   if (emit.contains(OutputKind::json)) {
@@ -349,14 +369,15 @@ nlohmann::ordered_json Build::manifest(const std::vector<OutputFile>& shared,
   for (const OutputKind kind : options_.emit)
     emitted.emplace_back(kOutputKinds[static_cast<std::size_t>(kind)].second);
   manifest["emit"] = emitted;
-  manifest["basis"] = lut_reference_.basis;
+  const LutReference lut_reference = this->lut_reference();
+  manifest["basis"] = lut_reference.basis;
   manifest["color"] = {{"working_space", color_space_name(options_.color.working_space)},
                        {"gamut_mapping", gamut_mapping_name(options_.color.gamut_mapping)}};
-  manifest["lut"] = {{"file", lut_reference_.file},
+  manifest["lut"] = {{"file", lut_reference.file},
                      {"size", options_.lut.size},
                      {"samples_per_texel", options_.lut.samples},
                      {"precision", lut_precision_name(options_.lut_precision)},
-                     {"hash", lut_reference_.hash},
+                     {"hash", lut_reference.hash},
                      {"embedded_size", options_.embedded_lut_size}};
   manifest["coefficient_table"] = {
       {"file", coefficient_table_file_},

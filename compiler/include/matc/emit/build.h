@@ -2,6 +2,8 @@
 // SPIR-V, C header and manifest. The CLI decides where files go; this decides their bytes.
 #pragma once
 
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <set>
 #include <span>
@@ -65,9 +67,11 @@ class Build {
   const BuildOptions& options() const { return options_; }
   // The basis every material of this build is compiled against (options().basis).
   runtime::BasisView basis() const;
-  const BakedLut& lut() const { return lut_; }
+  // The table is baked on first use (the LUT file, a header or the manifest naming its hash,
+  // validation): a run that writes none of those never pays for it.
+  const BakedLut& lut() const { return baked_table().lut; }
   // The table as the written file stores it (f16 rounding), what a renderer samples.
-  const Lut& stored_lut() const { return stored_lut_; }
+  const Lut& stored_lut() const { return baked_table().stored; }
   const Lut* embedded_lut() const { return embedded_lut_ ? &*embedded_lut_ : nullptr; }
   // The basis' coefficient table as the written file stores it (the preintegrated table's format,
   // coefficient_table_precision): what a shader samples for textured metals.
@@ -116,12 +120,23 @@ class Build {
   std::string options_key() const;
 
   BuildOptions options_;
-  BakedLut lut_;
-  Lut stored_lut_;
   std::optional<Lut> embedded_lut_;
   std::string inputs_hash_;
-  std::string lut_file_bytes_;
-  LutReference lut_reference_;  // names and hashes lut_file_bytes_
+  // The preintegrated table in every form the outputs need, made once by baked_table().
+  struct BakedTable {
+    BakedLut lut;
+    Lut stored;
+    std::string file_bytes;
+    LutReference reference;  // names and hashes file_bytes
+  };
+  struct LazyTable {
+    std::once_flag once;
+    std::optional<BakedTable> table;
+  };
+  const BakedTable& baked_table() const;
+  // The table's file name and hash, as headers and the manifest name it.
+  LutReference lut_reference() const;
+  std::shared_ptr<LazyTable> lazy_table_ = std::make_shared<LazyTable>();
   CoefficientTable stored_coefficient_table_;
   std::string coefficient_table_file_;
   std::string coefficient_table_file_bytes_;
