@@ -1,9 +1,13 @@
 # matc_add_materials(TARGET <target> OUTPUT_DIR <dir> MATERIALS <files...>
-#                    [EMIT <kinds...>] [LUT_FORMAT ktx2|dds|raw|header] [OPTIONS <matc args...>])
+#                    [EMIT <kinds...>] [LUT_FORMAT ktx2|dds|raw|header] [OPTIONS <matc args...>]
+#                    [PER_MATERIAL])
 #
 # Adds one build step that runs `matc` over MATERIALS into OUTPUT_DIR (in parallel inside matc),
 # with a depfile so that editing a material, a spectral file it names, or updating matc reruns it,
-# and nothing else does. The generated per-material headers become sources of TARGET and
+# and nothing else does. With PER_MATERIAL, one step per material (`matc --no-shared`, its own
+# depfile) plus one for the shared files (`matc --shared-only`) instead: editing one material
+# reruns one small step, which suits very large material sets and distributed builds; the files
+# are the same bytes, less matc_manifest.json, which only a batch writes (docs/scaling.md). The generated per-material headers become sources of TARGET and
 # OUTPUT_DIR one of its include directories, so `#include "<name>.h"` works and the target is built
 # after its materials. EMIT selects outputs (glsl hlsl wgsl spirv header json lut
 # coefficient-table ltc; default all). Use one OUTPUT_DIR per call (a second call with the same one is an error):
@@ -28,7 +32,8 @@ function(_matc_json_name path caller kind out_var)
 endfunction()
 
 function(matc_add_materials)
-  cmake_parse_arguments(ARG "" "TARGET;OUTPUT_DIR;LUT_FORMAT" "MATERIALS;EMIT;OPTIONS" ${ARGN})
+  cmake_parse_arguments(ARG "PER_MATERIAL" "TARGET;OUTPUT_DIR;LUT_FORMAT" "MATERIALS;EMIT;OPTIONS"
+                        ${ARGN})
   if(NOT ARG_TARGET OR NOT TARGET "${ARG_TARGET}")
     message(FATAL_ERROR "matc_add_materials: TARGET must name an existing target")
   endif()
@@ -89,22 +94,48 @@ function(matc_add_materials)
     set(_ltc "${_dir}/matc_ltc.${_lut_extension_${ARG_LUT_FORMAT}}")
     list(APPEND _outputs "${_ltc}" "${_ltc}.json")
   endif()
-  if("json" IN_LIST ARG_EMIT)
+  if("json" IN_LIST ARG_EMIT AND NOT ARG_PER_MATERIAL)
     list(APPEND _outputs "${_dir}/matc_manifest.json")
+  endif()
+  list(JOIN ARG_EMIT "," _emit)
+  if(ARG_PER_MATERIAL)
+    add_custom_command(
+      OUTPUT ${_outputs}
+      COMMAND matc::cli -q --shared-only --emit ${_emit} --lut ${ARG_LUT_FORMAT} ${ARG_OPTIONS}
+              -o "${_dir}"
+      DEPENDS matc::cli
+      COMMENT "matc: shared files into ${_dir}"
+      VERBATIM)
   endif()
   set(_materials "")
   foreach(_material IN LISTS ARG_MATERIALS)
     get_filename_component(_path "${_material}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
     _matc_json_name("${_path}" matc_add_materials material _name)
     list(APPEND _materials "${_path}")
+    set(_material_outputs "")
     foreach(_kind IN ITEMS glsl hlsl wgsl spirv header json)
       if(_kind IN_LIST ARG_EMIT)
-        list(APPEND _outputs "${_dir}/${_name}.${_per_material_extension_${_kind}}")
+        list(APPEND _material_outputs "${_dir}/${_name}.${_per_material_extension_${_kind}}")
       endif()
     endforeach()
+    list(APPEND _outputs ${_material_outputs})
+    if(ARG_PER_MATERIAL AND _material_outputs)
+      add_custom_command(
+        OUTPUT ${_material_outputs}
+        COMMAND matc::cli -q --no-shared --emit ${_emit} ${ARG_OPTIONS}
+                --depfile "${_dir}/${_name}.d" -o "${_dir}" "${_path}"
+        DEPENDS "${_path}" matc::cli
+        DEPFILE "${_dir}/${_name}.d"
+        COMMENT "matc: ${_name}"
+        VERBATIM)
+    endif()
   endforeach()
+  if(ARG_PER_MATERIAL)
+    target_sources(${ARG_TARGET} PRIVATE ${_outputs})
+    target_include_directories(${ARG_TARGET} PRIVATE "${_dir}")
+    return()
+  endif()
 
-  list(JOIN ARG_EMIT "," _emit)
   list(LENGTH _materials _count)
   add_custom_command(
     OUTPUT ${_outputs}
