@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# What one build action costs: the median wall time of repeated matc runs for one material's own
+# files (--no-shared), per output set and kind of input, beside the shared action and the old
+# one-material batch. Prints the Markdown table of docs/performance.md ("Per-material actions").
+#   bench/per-material.sh [BUILD_DIR] [RUNS]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$root/build}
+runs=${2:-21}
+matc=$build/matc
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+artistic=$root/examples/materials/tinted_steel.json
+spectral=$root/examples/materials/copper.json
+
+# Median wall time in milliseconds of `runs` runs of a command.
+median_ms() {
+  local times=()
+  for _ in $(seq "$runs"); do
+    local start end
+    start=$(date +%s%N)
+    "$@" >/dev/null 2>&1
+    end=$(date +%s%N)
+    times+=($(( (end - start) / 1000 )))
+  done
+  printf '%s\n' "${times[@]}" | sort -n | awk '{ a[NR] = $1 } END { printf "%.1f", a[int((NR + 1) / 2)] / 1000 }'
+}
+
+"$matc" -q -o "$work/warm" "$artistic"  # page in the binary once
+row() {  # label command...
+  local label=$1
+  shift
+  echo "| $label | $(median_ms "$@") |"
+}
+echo "Measured on $(nproc) CPU(s), median of $runs runs each:"
+echo
+echo "| action | wall (ms) |"
+echo "|---|---:|"
+row "\`--no-shared --emit glsl,hlsl,wgsl,json\`, artistic material" \
+  "$matc" -q -o "$work/a" --no-shared --emit glsl,hlsl,wgsl,json "$artistic"
+row "\`--no-shared --emit glsl,hlsl,wgsl,json\`, spectral preset (copper)" \
+  "$matc" -q -o "$work/b" --no-shared --emit glsl,hlsl,wgsl,json "$spectral"
+row "\`--no-shared\` (every own file: + SPIR-V, C header), artistic" \
+  "$matc" -q -o "$work/c" --no-shared "$artistic"
+row "\`--no-shared\`, spectral preset" "$matc" -q -o "$work/d" --no-shared "$spectral"
+row "\`--shared-only\` (libraries, SPIR-V library, 128x128 table bake, tables)" \
+  "$matc" -q -o "$work/e" --shared-only
+row "one-material batch, every output (own and shared files, manifest)" \
+  "$matc" -q -o "$work/f" "$artistic"
