@@ -33,6 +33,10 @@ cmake --build "$build" --target matc_fullscreen_cost >/dev/null
 "$build/bench/matc_fullscreen_cost" ${MATC_BENCH_DEVICE:+--device "$MATC_BENCH_DEVICE"} >"$report.md"
 "$root/tests/check_docs_block.sh" --update "$root/docs/performance.md" fullscreen-720p cat "$report.md"
 
+# One build action per material (--no-shared) and the shared action, median wall times.
+"$root/bench/per-material.sh" "$build" >"$report.md"
+"$root/tests/check_docs_block.sh" --update "$root/docs/performance.md" per-material cat "$report.md"
+
 # Batch throughput and memory: 1,000 materials at -j 1 and -j 2 against a glslangValidator loop.
 "$root/bench/batch-throughput.sh" "$build" 1000 >"$report.md"
 "$root/tests/check_docs_block.sh" --update "$root/docs/performance.md" batch-throughput cat "$report.md"

@@ -323,9 +323,10 @@ TEST(Build, WgslOutputsAreCompleteWgsl) {
             std::string::npos);
   EXPECT_NE(snippet.find("const matc_coefficients_gold = MatcFresnelCoefficients("),
             std::string::npos);
-  ASSERT_EQ(wgsl_only.shared_outputs().size(), 1u);
-  const std::string& library = wgsl_only.shared_outputs()[0].bytes;
-  EXPECT_EQ(wgsl_only.shared_outputs()[0].name, "matc_fresnel.wgsl");
+  const std::vector<OutputFile> shared = wgsl_only.shared_outputs();
+  ASSERT_EQ(shared.size(), 1u);
+  const std::string& library = shared[0].bytes;
+  EXPECT_EQ(shared[0].name, "matc_fresnel.wgsl");
   EXPECT_NE(library.find("const MATC_EMBEDDED_LUT = array<vec4f, 16>("), std::string::npos);
   for (const std::string* text : {&snippet, &library}) {
     for (const char* leftover : {"{{", "#define", "#if", "vec3(", "float3(", "inout"})
