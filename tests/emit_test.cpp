@@ -12,6 +12,7 @@
 #include "matc/compile.h"
 #include "matc/emit/build.h"
 #include "matc/emit/content_hash.h"
+#include "matc/emit/material_module_template.h"
 #include "matc/emit/shader_literals.h"
 #include "matc/emit/template.h"
 #include "matc/material/parse.h"
@@ -333,6 +334,50 @@ TEST(Build, WgslOutputsAreCompleteWgsl) {
       EXPECT_EQ(text->find(leftover), std::string::npos) << leftover;
   }
   EXPECT_THROW(compile_to_spirv({ShaderLanguage::wgsl, library, "matc_fresnel.wgsl"}),
+               std::logic_error);
+}
+
+// Per-material SPIR-V is patched from a checked-in template (no glslang run per material): the
+// templates are what today's compile gives (rerun `matc basis material-modules -o
+// compiler/src/emit/material_module_templates.cpp`), and every example's patched module is the
+// full compile's, byte for byte, or, where the optimiser merges a coefficient with an equal
+// constant, a module that validates and exports the same two functions.
+TEST(MaterialModuleTemplates, CheckedInTemplatesAreCurrent) {
+  for (const MaterialModuleTemplate& entry : compile_material_module_templates()) {
+    const std::span<const std::uint32_t> checked_in =
+        checked_in_material_module_template(entry.basis);
+    EXPECT_TRUE(
+        std::equal(entry.words.begin(), entry.words.end(), checked_in.begin(), checked_in.end()))
+        << runtime::basis_name(entry.basis);
+  }
+}
+
+TEST(MaterialModuleTemplates, PatchedModulesMatchAFullCompile) {
+  const Build build(BuildOptions{});
+  std::size_t identical = 0;
+  for (const CompiledMaterial& material : examples()) {
+    const SpirvWords patched = build.material_library_module(material);
+    const SpirvWords compiled = build.compile_material_library_module(material);
+    if (patched == compiled) {
+      ++identical;
+      continue;
+    }
+    EXPECT_NO_THROW(validate_spirv(patched, SpirvTarget::universal_1_3, material.material.name));
+    const std::string bytes(reinterpret_cast<const char*>(patched.data()),
+                            patched.size() * sizeof(std::uint32_t));
+    for (const std::string prefix : {"matc_fresnel_", "matc_fresnel_preintegrated_"}) {
+      EXPECT_NE(bytes.find(prefix + material.material.name + std::string(1, '\0')),
+                std::string::npos)
+          << material.material.name;
+    }
+  }
+  EXPECT_GE(identical, examples().size() / 2);
+  // Placeholders must be found, once each.
+  CompiledMaterial gold = example("gold");
+  const std::span<const std::uint32_t> words =
+      checked_in_material_module_template(runtime::kDefaultBasis);
+  SpirvWords broken(words.begin(), words.end());
+  EXPECT_THROW(patch_material_module(SpirvWords(broken.begin(), broken.begin() + 5), gold),
                std::logic_error);
 }
 

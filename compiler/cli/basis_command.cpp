@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "matc/basis/basis_fit.h"
 #include "matc/basis/basis_polynomial_fit.h"
+#include "matc/emit/material_module_template.h"
 #include "matc/fit/coefficient_table.h"
 #include "matc/ltc/ltc_fit.h"
 #include "matc/lut/default_lut_hashes.h"
@@ -112,6 +113,12 @@ int run_basis_lut_hashes(const BasisFitOptions& options) {
   const std::vector<DefaultLutHash> hashes = compute_default_lut_hashes();
   fmt::print(stderr, "matc: hashed {} default table files\n", hashes.size());
   return write_source(options.output, default_lut_hashes_source(hashes));
+}
+
+int run_basis_material_modules(const BasisFitOptions& options) {
+  const std::vector<MaterialModuleTemplate> templates = compile_material_module_templates();
+  fmt::print(stderr, "matc: compiled {} material module templates\n", templates.size());
+  return write_source(options.output, material_module_templates_source(templates));
 }
 
 int run_basis_ltc_table(const LtcTableOptions& options) {

@@ -178,6 +178,14 @@ int main(int argc, char** argv) {
   lut_hashes_command->add_option(
       "-o,--output", lut_hashes.output,
       "Where to write (compiler/src/lut/default_lut_hashes.cpp); default stdout");
+  BasisFitOptions material_modules;
+  CLI::App* material_modules_command = basis_command->add_subcommand(
+      "material-modules",
+      "Compile every basis' material library module with placeholder coefficients and write the "
+      "C++ source of those templates (what per-material SPIR-V is patched from)");
+  material_modules_command->add_option(
+      "-o,--output", material_modules.output,
+      "Where to write (compiler/src/emit/material_module_templates.cpp); default stdout");
   LtcTableOptions ltc_table;
   CLI::App* ltc_table_command = basis_command->add_subcommand(
       "ltc-table",
@@ -319,6 +327,7 @@ int main(int argc, char** argv) {
     if (*table_fit_command) return run_basis_coefficient_table(table_fit);
     if (*ltc_table_command) return run_basis_ltc_table(ltc_table);
     if (*lut_hashes_command) return run_basis_lut_hashes(lut_hashes);
+    if (*material_modules_command) return run_basis_material_modules(material_modules);
     if (*basis_command) return run_basis(basis);
     if (compile.shared_only && !compile.files.empty()) {
       fmt::print(stderr,

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "matc/emit/content_hash.h"
+#include "matc/emit/material_module_template.h"
 #include "matc/emit/material_snippet.h"
 #include "matc/emit/shader_library.h"
 #include "matc/emit/validation_kernel.h"
@@ -273,9 +274,23 @@ SpirvWords Build::material_library_module(const CompiledMaterial& compiled) cons
 
 SpirvWords Build::material_library_module(const CompiledMaterial& compiled,
                                           std::string_view inputs_hash) const {
+  // The template was compiled for the default table size (MATC_LUT_SIZE is in the module) and
+  // no embedded table; it is empty in a bootstrap build.
+  const std::span<const std::uint32_t> template_words =
+      checked_in_material_module_template(options_.basis);
+  if (options_.lut.size == kDefaultLutSize && !embedded_lut_ && !template_words.empty())
+    return patch_material_module(template_words, compiled);
   const std::string& name = compiled.material.name;
   return library_module(glsl_material_module_library_ +
                             material_snippet_source(ShaderLanguage::glsl, compiled, inputs_hash),
+                        fmt::format("{}.spv", name), material_library_exports(name));
+}
+
+SpirvWords Build::compile_material_library_module(const CompiledMaterial& compiled) const {
+  const std::string& name = compiled.material.name;
+  return library_module(glsl_material_module_library_ +
+                            material_snippet_source(ShaderLanguage::glsl, compiled,
+                                                    material_inputs_hash(compiled.material)),
                         fmt::format("{}.spv", name), material_library_exports(name));
 }
 

@@ -95,6 +95,9 @@ class Build {
   // The linkable library module of one material (exports matc_fresnel_<name> and
   // matc_fresnel_preintegrated_<name>), optimised and validated.
   SpirvWords material_library_module(const CompiledMaterial& compiled) const;
+  // The same, always by a glslang compile (material_library_module patches a checked-in template
+  // where one holds: matc/emit/material_module_template.h).
+  SpirvWords compile_material_library_module(const CompiledMaterial& compiled) const;
   // The complete compute module (emit/validation_kernel.h) from either front end, optimised and
   // validated for Vulkan 1.1.
   SpirvWords validation_module(ShaderLanguage language, const CompiledMaterial& compiled) const;
