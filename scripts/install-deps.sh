@@ -14,6 +14,7 @@ packages=(
   libpugixml-dev
   clang libclang-rt-14-dev
   chromium fonts-dejavu-core
+  bazel-bootstrap nginx
   googletest libgtest-dev libgmock-dev libbenchmark-dev
 )
 

@@ -1,0 +1,126 @@
+"""Bazel rules for matc: one hermetic action per material, one for the shared files.
+
+    load("//bazel:matc.bzl", "matc_material", "matc_shared")
+
+    matc_shared(name = "matc_shared", matc = "//tools:matc")
+    matc_material(name = "gold", src = "materials/gold.json", matc = "//tools:matc")
+    matc_material(
+        name = "gold_measured_file",
+        src = "materials/gold_measured_file.json",
+        data = ["materials/spectra/gold_pbrt_v4.csv"],  # files the material names
+        matc = "//tools:matc",
+    )
+
+Each action runs `matc --no-shared` (or `--shared-only`) with its inputs declared: the material,
+the spectral files it names (`data`) and the matc binary, so a remote cache keys on exactly what
+the outputs depend on. The outputs are the bytes a batch writes (docs/scaling.md). A material's
+outputs are named after its JSON "name", which Bazel cannot read at analysis time: the rule's
+name must equal it (or give `material_name`).
+"""
+
+_MATERIAL_EXTENSIONS = {
+    "glsl": [".glsl"],
+    "hlsl": [".hlsl"],
+    "wgsl": [".wgsl"],
+    "spirv": [".spv"],
+    "header": [".h"],
+    "json": [".json"],
+}
+
+_SHARED_FILES = {
+    "glsl": ["matc_fresnel.glsl"],
+    "hlsl": ["matc_fresnel.hlsl"],
+    "wgsl": ["matc_fresnel.wgsl"],
+    "spirv": ["matc_fresnel.spv"],
+}
+
+_TABLE_STEMS = {
+    "lut": "matc_lut",
+    "coefficient-table": "matc_coefficient_table",
+    "ltc": "matc_ltc",
+}
+
+_TABLE_EXTENSIONS = {"ktx2": ".ktx2", "dds": ".dds", "raw": ".bin", "header": ".h"}
+
+_ALL = ["glsl", "hlsl", "wgsl", "spirv", "header", "json", "lut", "coefficient-table", "ltc"]
+
+_COMMON_ATTRS = {
+    "matc": attr.label(
+        mandatory = True,
+        executable = True,
+        cfg = "exec",
+        allow_single_file = True,
+        doc = "The matc binary.",
+    ),
+    "emit": attr.string_list(default = _ALL, doc = "Output kinds (matc --emit)."),
+    "out_dir": attr.string(default = "matc", doc = "Directory of the outputs, in the package."),
+    "options": attr.string_list(doc = "Other matc options (e.g. --lut-size 64)."),
+}
+
+def _run_matc(ctx, outputs, inputs, arguments, mnemonic, message):
+    ctx.actions.run(
+        executable = ctx.executable.matc,
+        arguments = ["-q", "--emit", ",".join(ctx.attr.emit)] + ctx.attr.options + arguments,
+        inputs = inputs,
+        outputs = outputs,
+        mnemonic = mnemonic,
+        progress_message = message,
+    )
+
+def _matc_material_impl(ctx):
+    name = ctx.attr.material_name or ctx.label.name
+    outputs = []
+    for kind in ctx.attr.emit:
+        for extension in _MATERIAL_EXTENSIONS.get(kind, []):
+            outputs.append(ctx.actions.declare_file("%s/%s%s" % (ctx.attr.out_dir, name, extension)))
+    if not outputs:
+        fail("matc_material: emit names no per-material output (glsl, hlsl, wgsl, spirv, header, json)")
+    _run_matc(
+        ctx,
+        outputs,
+        [ctx.file.src] + ctx.files.data,
+        ["--no-shared", "-o", outputs[0].dirname, ctx.file.src.path],
+        "Matc",
+        "matc: %s" % name,
+    )
+    return [DefaultInfo(files = depset(outputs))]
+
+matc_material = rule(
+    implementation = _matc_material_impl,
+    attrs = dict(_COMMON_ATTRS, **{
+        "src": attr.label(mandatory = True, allow_single_file = [".json"], doc = "The material file."),
+        "data": attr.label_list(allow_files = True, doc = "Files the material names (spectral CSVs)."),
+        "material_name": attr.string(doc = "The material's JSON \"name\" (default: the rule's name)."),
+    }),
+    doc = "One material's own files (matc --no-shared).",
+)
+
+def _matc_shared_impl(ctx):
+    outputs = []
+    table_extension = _TABLE_EXTENSIONS[ctx.attr.lut_format]
+    for kind in ctx.attr.emit:
+        for file in _SHARED_FILES.get(kind, []):
+            outputs.append(ctx.actions.declare_file("%s/%s" % (ctx.attr.out_dir, file)))
+        if kind in _TABLE_STEMS:
+            table = "%s/%s%s" % (ctx.attr.out_dir, _TABLE_STEMS[kind], table_extension)
+            outputs.append(ctx.actions.declare_file(table))
+            outputs.append(ctx.actions.declare_file(table + ".json"))
+    if not outputs:
+        fail("matc_shared: emit names no shared output (glsl, hlsl, wgsl, spirv, lut, coefficient-table, ltc)")
+    _run_matc(
+        ctx,
+        outputs,
+        [],
+        ["--shared-only", "--lut", ctx.attr.lut_format, "-o", outputs[0].dirname],
+        "MatcShared",
+        "matc: shared files",
+    )
+    return [DefaultInfo(files = depset(outputs))]
+
+matc_shared = rule(
+    implementation = _matc_shared_impl,
+    attrs = dict(_COMMON_ATTRS, **{
+        "lut_format": attr.string(default = "ktx2", values = ["ktx2", "dds", "raw", "header"]),
+    }),
+    doc = "The shared files: matc_fresnel.*, the tables (matc --shared-only).",
+)
