@@ -12,21 +12,8 @@ matc=$build/matc
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# Deterministic materials: reflectivity in [0.05, 0.9), edge tint in [0, 1), per channel.
-generate() {  # directory count
-  mkdir -p "$1"
-  awk -v dir="$1" -v n="$2" 'BEGIN {
-    seed = 12345
-    for (i = 0; i < n; ++i) {
-      for (c = 0; c < 6; ++c) { seed = (seed * 1103515245 + 12345) % 2147483648; v[c] = seed / 2147483648 }
-      file = sprintf("%s/m%05d.json", dir, i)
-      printf("{\"name\": \"m%05d\", \"artistic\": {\"reflectivity\": [%.3f, %.3f, %.3f], ", i,
-             0.05 + 0.85 * v[0], 0.05 + 0.85 * v[1], 0.05 + 0.85 * v[2]) > file
-      printf("\"edge_tint\": [%.3f, %.3f, %.3f]}}\n", v[3], v[4], v[5]) > file
-      close(file)
-    }
-  }'
-}
+# shellcheck source=bench/generated-materials.sh
+source "$root/bench/generated-materials.sh"
 
 # Seconds and peak resident memory (MiB) of a command.
 measure() {  # label command...
@@ -37,14 +24,14 @@ measure() {  # label command...
   echo "$label $seconds $((kilobytes / 1024))"
 }
 
-generate "$work/materials" "$count"
-generate "$work/small" $((count / 10))
-"$matc" -q -o "$work/warm" "$work/small/m00000.json"  # page in the binary once
+generate_materials "$work/materials" "$count"
+generate_materials "$work/small" $((count / 10))
+"$matc" -q -o "$work/warm" "$work/small/m000000.json"  # page in the binary once
 
 j1=$(measure j1 "$matc" -q -j 1 -o "$work/out1" "$work"/materials/*.json)
 j2=$(measure j2 "$matc" -q -j 2 -o "$work/out2" "$work"/materials/*.json)
 small=$(measure small "$matc" -q -j 2 -o "$work/out3" "$work"/small/*.json)
-single=$(measure single "$matc" -q -j 1 -o "$work/out4" "$work/small/m00001.json")
+single=$(measure single "$matc" -q -j 1 -o "$work/out4" "$work/small/m000001.json")
 
 # The CLI baseline: per material, a GLSL and an HLSL compile of the shared library plus its
 # snippet to SPIR-V, one glslangValidator process each; over the first tenth of the materials
