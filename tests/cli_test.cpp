@@ -180,6 +180,23 @@ TEST_F(MatcCli, PerMaterialActionsWriteTheBatchsBytes) {
   EXPECT_FALSE(fs::exists(dir_ / "x"));
 }
 
+// --files-from reads the paths of a list too long for a command line; blank lines are skipped.
+TEST_F(MatcCli, FilesFromReadsAListOfMaterials) {
+  write_file(dir_ / "good.json", kGood);
+  write_file(dir_ / "gold.json", R"({"name": "Gold", "spectral": {"preset": "Au"}})");
+  write_file(dir_ / "list.txt", "good.json\n\ngold.json\r\n");
+  const CommandResult listed = run({"-o", "out", "--emit", "json", "--files-from", "list.txt"});
+  ASSERT_EQ(listed.exit_code, 0) << listed.err;
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "good.json"));
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "Gold.json"));
+  const CommandResult missing = run({"-o", "x", "--files-from", "no-such-list.txt"});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("no-such-list.txt: error: --files-from: cannot read the list"),
+            std::string::npos)
+      << missing.err;
+  EXPECT_FALSE(fs::exists(dir_ / "x"));
+}
+
 // -j only changes how fast: every example built one at a time and four at a time gives the
 // same files, byte for byte, diagnostics in input order.
 TEST_F(MatcCli, ParallelBuildsWriteTheSameBytes) {

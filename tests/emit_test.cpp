@@ -15,6 +15,7 @@
 #include "matc/emit/material_module_template.h"
 #include "matc/emit/shader_literals.h"
 #include "matc/emit/template.h"
+#include "matc/json_format.h"
 #include "matc/material/parse.h"
 #include "matc/spirv/linkage.h"
 #include "matc/spirv/shader_compiler.h"
@@ -401,6 +402,17 @@ TEST(Build, ManifestListsEveryFileWithItsHash) {
             hash_of_bytes(materials[0].files[0].bytes));
   EXPECT_EQ(manifest["shared_files"].size(), shared.size());
   EXPECT_EQ(manifest["lut"]["size"], 16);
+  // The text a batch writes from per-material formatted entries is format_json of the whole.
+  std::vector<std::string> formatted;
+  for (const MaterialOutputs& material : materials)
+    formatted.push_back(Build::format_manifest_entry(small_build().manifest_entry(material)));
+  formatted.push_back(formatted.front());
+  std::vector<nlohmann::ordered_json> entries = {manifest["materials"][0],
+                                                 manifest["materials"][0]};
+  EXPECT_EQ(small_build().manifest_text(shared, formatted),
+            format_json(small_build().manifest(shared, entries)));
+  EXPECT_EQ(small_build().manifest_text(shared, {}),
+            format_json(small_build().manifest(shared, std::span<const nlohmann::ordered_json>{})));
 }
 
 }  // namespace

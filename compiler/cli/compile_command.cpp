@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -72,11 +73,18 @@ struct BatchSummary {
 // One input file through the batch: parsed and checked in order, then compiled by any worker.
 struct Job {
   std::string file;
-  std::optional<Material> material;
+  // Checked and admitted to the batch. A JSON material is parsed again by the worker that
+  // compiles it, so that a batch of any size holds no parsed materials; a MaterialX document's
+  // materials are kept (re-importing a document per material would cost more).
+  bool admitted = false;
+  std::unique_ptr<Material> material;
   Diagnostics diagnostics;
   // Filled by the worker that compiles it: the manifest entry, not the bytes (memory stays flat
   // however long the batch).
-  std::optional<nlohmann::ordered_json> manifest_entry;
+  std::optional<std::string> manifest_entry;  // Build::format_manifest_entry's text
+  // What outlives the compile, once the material itself is released (memory stays flat):
+  std::string name;
+  std::string spectral_file;               // a spectral file the material names, for the depfile
   std::vector<std::string> written_files;  // names in the output directory
   std::size_t written = 0;
   std::size_t unchanged = 0;
@@ -91,7 +99,7 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
     inputs_by_identity[path_identity(file)] = file;
   UniqueNames names;
   // Name rules, then the job: a material with an error is kept for its diagnostics only.
-  const auto admit = [&](Job& job, std::optional<Material> material) {
+  const auto admit = [&](Job& job, std::optional<Material> material, bool keep) {
     if (!material) return;
     const std::vector<fs::path> outputs = possible_outputs(output_directory, material->name);
     const auto overwritten = std::find_if(outputs.begin(), outputs.end(), [&](const fs::path& p) {
@@ -111,7 +119,12 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
                       inputs_by_identity.at(path_identity(*overwritten))),
           "an output directory (-o) that holds no input file");
     }
-    if (!job.diagnostics.has_errors()) job.material = std::move(material);
+    if (job.diagnostics.has_errors()) return;
+    job.name = material->name;
+    if (const auto* spectral = std::get_if<SpectralInput>(&material->model))
+      job.spectral_file = spectral->resolved_file;
+    job.admitted = true;
+    if (keep) job.material = std::make_unique<Material>(std::move(*material));
   };
   std::vector<Job> jobs;
   for (const std::string& file : options.files) {
@@ -128,7 +141,7 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
       for (std::size_t i = 0; i < imported.materials.size(); ++i) {
         Job job = i == 0 ? std::move(first) : Job{};
         job.file = file;
-        admit(job, std::move(imported.materials[i].material));
+        admit(job, std::move(imported.materials[i].material), /*keep=*/true);
         jobs.push_back(std::move(job));
       }
       continue;
@@ -137,7 +150,7 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
     job.file = file;
     ParseResult parsed = read_material_file(file);
     job.diagnostics = std::move(parsed.diagnostics);
-    admit(job, std::move(parsed.material));
+    admit(job, std::move(parsed.material), /*keep=*/false);
     jobs.push_back(std::move(job));
   }
   return jobs;
@@ -169,14 +182,14 @@ int run_compile(const CompileOptions& options) {
   const runtime::BasisView basis = build.basis();
   const fs::path output_directory(options.output_directory);
   std::vector<Job> jobs = parse_jobs(options, output_directory);
-  const bool inputs_valid = std::all_of(jobs.begin(), jobs.end(),
-                                        [](const Job& job) { return job.material.has_value(); });
+  const bool inputs_valid =
+      std::all_of(jobs.begin(), jobs.end(), [](const Job& job) { return job.admitted; });
 
   // Workers take the next valid job; without --keep-going the first failure stops new ones.
   std::vector<std::size_t> queue;
   if (inputs_valid || options.keep_going) {
     for (std::size_t i = 0; i < jobs.size(); ++i)
-      if (jobs[i].material) queue.push_back(i);
+      if (jobs[i].admitted) queue.push_back(i);
   }
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
@@ -188,8 +201,13 @@ int run_compile(const CompileOptions& options) {
       try {
         // Every byte is generated before the first file is written: a failure leaves no
         // partial set of outputs for this material.
-        const CompiledMaterial compiled =
-            compile_material(*job.material, basis, build.options().color);
+        std::unique_ptr<Material> material = std::move(job.material);
+        if (!material) {
+          ParseResult again = read_material_file(job.file);
+          if (!again.material) throw std::runtime_error("the file changed while matc ran");
+          material = std::make_unique<Material>(std::move(*again.material));
+        }
+        const CompiledMaterial compiled = compile_material(*material, basis, build.options().color);
         warn_if_poor_fit(compiled, job.diagnostics);
         note_if_out_of_unit_range(compiled, job.diagnostics);
         MaterialOutputs outputs = build.material_outputs(compiled);
@@ -210,7 +228,10 @@ int run_compile(const CompileOptions& options) {
                 write_file_atomically(output_directory / output.name, output.bytes);
             ++(outcome == WriteOutcome::written ? job.written : job.unchanged);
           }
-          job.manifest_entry = build.manifest_entry(outputs);
+          // Only a manifest needs the entry; an empty one still marks the job compiled.
+          job.manifest_entry = build.options().emit.contains(OutputKind::json) && !options.no_shared
+                                   ? Build::format_manifest_entry(build.manifest_entry(outputs))
+                                   : std::string();
           for (const OutputFile& output : outputs.files)
             job.written_files.push_back(output.name);
         }
@@ -219,7 +240,7 @@ int run_compile(const CompileOptions& options) {
                               "a writable output directory (-o)");
       }
       if (job.diagnostics.has_errors() && !options.keep_going) stop = true;
-      progress.finished(job.material->name);
+      progress.finished(job.name);
     }
   };
   std::vector<std::thread> workers;
@@ -233,7 +254,7 @@ int run_compile(const CompileOptions& options) {
 
   // Reported in input order, whatever order the workers finished in.
   BatchSummary summary;
-  std::vector<nlohmann::ordered_json> manifest_entries;
+  std::vector<std::string> manifest_entries;
   for (Job& job : jobs) {
     print_diagnostics(job.diagnostics);
     summary.written += job.written;
@@ -258,8 +279,8 @@ int run_compile(const CompileOptions& options) {
       if (!options.no_shared) shared = build.shared_outputs();
       if (!options.no_shared && !options.shared_only &&
           build.options().emit.contains(OutputKind::json)) {
-        shared.push_back({std::string(manifest_file_name()),
-                          format_json(build.manifest(shared, manifest_entries))});
+        shared.push_back(
+            {std::string(manifest_file_name()), build.manifest_text(shared, manifest_entries)});
       }
       for (const OutputFile& output : shared) {
         summary.count(write_file_atomically(output_directory / output.name, output.bytes));
@@ -274,10 +295,7 @@ int run_compile(const CompileOptions& options) {
           for (const std::string& name : job.written_files)
             targets.push_back(output_directory / name);
           dependencies.push_back(job.file);
-          if (const auto* spectral = std::get_if<SpectralInput>(&job.material->model);
-              spectral && !spectral->resolved_file.empty()) {
-            dependencies.push_back(spectral->resolved_file);
-          }
+          if (!job.spectral_file.empty()) dependencies.push_back(job.spectral_file);
         }
         if (const fs::path self = matc_executable(); !self.empty()) dependencies.push_back(self);
         write_file_atomically(depfile, depfile_text(targets, dependencies));

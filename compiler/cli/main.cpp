@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
+#include "file_list.h"
 #include "matc/emit/build.h"
 #include "matc/ltc/area_light_reference.h"
 #include "matc/version.h"
@@ -26,6 +28,10 @@ int main(int argc, char** argv) {
   CompileOptions compile;
   app.add_option("files", compile.files,
                  "Material files (.json) and MaterialX documents (.mtlx) to compile");
+  std::string files_from;
+  app.add_option("--files-from", files_from,
+                 "Also compile the files listed in FILE, one path per line (- for standard input): "
+                 "for lists longer than a command line holds");
   app.add_option("-o,--output", compile.output_directory, "Output directory (created if missing)")
       ->capture_default_str();
   app.add_flag("-k,--keep-going", compile.keep_going,
@@ -329,6 +335,14 @@ int main(int argc, char** argv) {
     if (*lut_hashes_command) return run_basis_lut_hashes(lut_hashes);
     if (*material_modules_command) return run_basis_material_modules(material_modules);
     if (*basis_command) return run_basis(basis);
+    if (!files_from.empty()) {
+      const std::optional<std::vector<std::string>> listed = read_file_list(files_from);
+      if (!listed) {
+        fmt::print(stderr, "{}: error: --files-from: cannot read the list\n", files_from);
+        return kExitUsageError;
+      }
+      compile.files.insert(compile.files.end(), listed->begin(), listed->end());
+    }
     if (compile.shared_only && !compile.files.empty()) {
       fmt::print(stderr,
                  "matc: error: --shared-only writes no material's files; give no material file "

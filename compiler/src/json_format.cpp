@@ -54,4 +54,10 @@ std::string format_json(const nlohmann::ordered_json& value) {
   return out;
 }
 
+std::string format_json_nested(const nlohmann::ordered_json& value, std::size_t depth) {
+  std::string out;
+  write(value, depth, out);
+  return out;
+}
+
 }  // namespace matc

@@ -10,5 +10,9 @@
 namespace matc {
 
 std::string format_json(const nlohmann::ordered_json& value);
+// The same layout for a value nested `depth` levels deep, without the trailing newline: what
+// format_json writes for it inside a larger document (used to assemble large documents from
+// parts formatted one at a time).
+std::string format_json_nested(const nlohmann::ordered_json& value, std::size_t depth);
 
 }  // namespace matc

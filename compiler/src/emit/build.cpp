@@ -411,6 +411,28 @@ nlohmann::ordered_json Build::manifest(const std::vector<OutputFile>& shared,
   return manifest;
 }
 
+std::string Build::format_manifest_entry(const nlohmann::ordered_json& entry) {
+  return format_json_nested(entry, 2);  // an element of "materials", itself a top-level member
+}
+
+std::string Build::manifest_text(const std::vector<OutputFile>& shared,
+                                 std::span<const std::string> formatted_entries) const {
+  // "materials" is the manifest's last member: the rest is formatted as a whole, and the list
+  // spliced in where format_json writes an empty one.
+  std::string text = format_json(manifest(shared, std::span<const nlohmann::ordered_json>{}));
+  if (formatted_entries.empty()) return text;
+  const std::string empty_list = "\"materials\": []\n}\n";
+  if (!text.ends_with(empty_list)) throw std::logic_error("manifest: materials is not last");
+  text.resize(text.size() - empty_list.size());
+  text += "\"materials\": [\n";
+  for (std::size_t i = 0; i < formatted_entries.size(); ++i) {
+    text += i == 0 ? "    " : ",\n    ";
+    text += formatted_entries[i];
+  }
+  text += "\n  ]\n}\n";
+  return text;
+}
+
 std::string_view manifest_file_name() {
   return kManifestFile;
 }

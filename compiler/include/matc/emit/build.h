@@ -114,6 +114,12 @@ class Build {
   // material's bytes until the end.
   nlohmann::ordered_json manifest(const std::vector<OutputFile>& shared,
                                   std::span<const nlohmann::ordered_json> entries) const;
+  // The manifest's bytes (format_json of manifest()) from entries already formatted by
+  // format_manifest_entry: a batch of any size keeps one short string per material, not its
+  // JSON tree.
+  std::string manifest_text(const std::vector<OutputFile>& shared,
+                            std::span<const std::string> formatted_entries) const;
+  static std::string format_manifest_entry(const nlohmann::ordered_json& entry);
   // {name, source, inputs_hash, files: [{file, hash}]} for one material.
   nlohmann::ordered_json manifest_entry(const MaterialOutputs& material) const;
 
