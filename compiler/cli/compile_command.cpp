@@ -79,10 +79,10 @@ struct Job {
   bool admitted = false;
   std::unique_ptr<Material> material;
   Diagnostics diagnostics;
-  // Filled by the worker that compiles it: the manifest entry, not the bytes (memory stays flat
-  // however long the batch).
+  // Filled by the worker that compiles it: the manifest entry as text, not the outputs' bytes
+  // (empty when no manifest is written; its presence marks the job compiled).
   std::optional<std::string> manifest_entry;  // Build::format_manifest_entry's text
-  // What outlives the compile, once the material itself is released (memory stays flat):
+  // What the batch needs of the material after its compile, when it holds no parsed material:
   std::string name;
   std::string spectral_file;               // a spectral file the material names, for the depfile
   std::vector<std::string> written_files;  // names in the output directory
@@ -180,6 +180,9 @@ int run_compile(const CompileOptions& options) {
     }
   }
   const runtime::BasisView basis = build.basis();
+  // The manifest lists every file of a batch, so only a batch (not a split layout) writes it.
+  const bool writes_manifest =
+      !options.no_shared && !options.shared_only && build.options().emit.contains(OutputKind::json);
   const fs::path output_directory(options.output_directory);
   std::vector<Job> jobs = parse_jobs(options, output_directory);
   const bool inputs_valid =
@@ -228,8 +231,7 @@ int run_compile(const CompileOptions& options) {
                 write_file_atomically(output_directory / output.name, output.bytes);
             ++(outcome == WriteOutcome::written ? job.written : job.unchanged);
           }
-          // Only a manifest needs the entry; an empty one still marks the job compiled.
-          job.manifest_entry = build.options().emit.contains(OutputKind::json) && !options.no_shared
+          job.manifest_entry = writes_manifest
                                    ? Build::format_manifest_entry(build.manifest_entry(outputs))
                                    : std::string();
           for (const OutputFile& output : outputs.files)
@@ -274,11 +276,9 @@ int run_compile(const CompileOptions& options) {
     try {
       fs::create_directories(output_directory);
       std::vector<fs::path> targets;
-      // The manifest lists every file of a batch, so only a batch writes it.
       std::vector<OutputFile> shared;
       if (!options.no_shared) shared = build.shared_outputs();
-      if (!options.no_shared && !options.shared_only &&
-          build.options().emit.contains(OutputKind::json)) {
+      if (writes_manifest) {
         shared.push_back(
             {std::string(manifest_file_name()), build.manifest_text(shared, manifest_entries)});
       }

@@ -170,10 +170,7 @@ const Build::BakedTable& Build::baked_table() const {
     baked.lut = bake_lut(basis(), options_.lut);
     baked.stored = stored_as(baked.lut.lut, options_.lut_precision);
     baked.file_bytes = encode_lut(baked.lut, options_.lut_format, options_.lut_precision);
-    // Hashed once: every material header and the manifest name the same table.
-    baked.reference = {fmt::format("{}{}", kLutStem, lut_file_extension(options_.lut_format)),
-                       options_.lut.size, hash_of_bytes(baked.file_bytes),
-                       std::string(runtime::basis_name(options_.basis))};
+    baked.hash = hash_of_bytes(baked.file_bytes);  // once: headers and the manifest name it
     lazy_table_->table = std::move(baked);
   });
   return *lazy_table_->table;
@@ -181,13 +178,11 @@ const Build::BakedTable& Build::baked_table() const {
 
 LutReference Build::lut_reference() const {
   // The default table's hash is checked in: naming it needs no bake.
-  if (const auto hash = default_lut_hash(options_.basis, options_.lut_format,
-                                         options_.lut_precision, options_.lut)) {
-    return {fmt::format("{}{}", kLutStem, lut_file_extension(options_.lut_format)),
-            options_.lut.size, std::string(*hash),
-            std::string(runtime::basis_name(options_.basis))};
-  }
-  return baked_table().reference;
+  const auto known =
+      default_lut_hash(options_.basis, options_.lut_format, options_.lut_precision, options_.lut);
+  return {fmt::format("{}{}", kLutStem, lut_file_extension(options_.lut_format)), options_.lut.size,
+          known ? std::string(*known) : baked_table().hash,
+          std::string(runtime::basis_name(options_.basis))};
 }
 
 std::string Build::options_key() const {
@@ -248,10 +243,10 @@ std::vector<OutputFile> Build::shared_outputs() const {
                                           shared_library_exports(embedded_lut_.has_value())))});
   }
   if (emit.contains(OutputKind::lut)) {
-    const LutReference& lut = baked_table().reference;
-    files.push_back({lut.file, baked_table().file_bytes});
-    files.push_back({lut.file + ".json", format_json(lut_manifest(this->lut(), options_.lut_format,
-                                                                  options_.lut_precision))});
+    const std::string file = lut_reference().file;
+    files.push_back({file, baked_table().file_bytes});
+    files.push_back({file + ".json", format_json(lut_manifest(this->lut(), options_.lut_format,
+                                                              options_.lut_precision))});
   }
   if (emit.contains(OutputKind::coefficient_table)) {
     files.push_back({coefficient_table_file_, coefficient_table_file_bytes_});
@@ -280,17 +275,18 @@ SpirvWords Build::material_library_module(const CompiledMaterial& compiled,
       checked_in_material_module_template(options_.basis);
   if (options_.lut.size == kDefaultLutSize && !embedded_lut_ && !template_words.empty())
     return patch_material_module(template_words, compiled);
-  const std::string& name = compiled.material.name;
-  return library_module(glsl_material_module_library_ +
-                            material_snippet_source(ShaderLanguage::glsl, compiled, inputs_hash),
-                        fmt::format("{}.spv", name), material_library_exports(name));
+  return compile_material_library_module(compiled, inputs_hash);
 }
 
 SpirvWords Build::compile_material_library_module(const CompiledMaterial& compiled) const {
+  return compile_material_library_module(compiled, material_inputs_hash(compiled.material));
+}
+
+SpirvWords Build::compile_material_library_module(const CompiledMaterial& compiled,
+                                                  std::string_view inputs_hash) const {
   const std::string& name = compiled.material.name;
   return library_module(glsl_material_module_library_ +
-                            material_snippet_source(ShaderLanguage::glsl, compiled,
-                                                    material_inputs_hash(compiled.material)),
+                            material_snippet_source(ShaderLanguage::glsl, compiled, inputs_hash),
                         fmt::format("{}.spv", name), material_library_exports(name));
 }
 

@@ -126,6 +126,8 @@ class Build {
  private:
   SpirvWords material_library_module(const CompiledMaterial& compiled,
                                      std::string_view inputs_hash) const;
+  SpirvWords compile_material_library_module(const CompiledMaterial& compiled,
+                                             std::string_view inputs_hash) const;
   std::string options_key() const;
 
   BuildOptions options_;
@@ -136,7 +138,7 @@ class Build {
     BakedLut lut;
     Lut stored;
     std::string file_bytes;
-    LutReference reference;  // names and hashes file_bytes
+    std::string hash;  // hash_of_bytes(file_bytes)
   };
   struct LazyTable {
     std::once_flag once;
