@@ -94,3 +94,11 @@ export function largestDifference(actual, expected, stride, offset) {
   }
   return { max_abs: worst, query: where };
 }
+
+// What the shaders' matc_fresnel_preintegrated(c, bbar) * matc_energy_compensation(c, bbar)
+// give, from the CPU runtime's Fbar, the coefficients' c_0 (F0) and the table's directional
+// albedo E = bbar_0 (Fbar of r = 1 through the coefficient table): Fbar (1 + F0 (1 - E) / E).
+export function compensatedFbar(fbar, f0, albedo) {
+  const e = Math.max(albedo, 1e-4);  // the shaders' guard for the NdotV = 0 column
+  return fbar.map((value, c) => value * (1 + f0[c] * (1 - e) / e));
+}
