@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # A very large batch: N generated artistic materials (default 100,000) compiled with every output
 # at -j 2 in one matc run, and the same at N/10: wall time, materials per second and peak resident
-# memory (which must not grow with N). About 3 GB of outputs at N = 100,000. Prints the Markdown
-# table of docs/performance.md ("A very large batch").
+# memory (which must barely grow with N). About 3 GB of outputs at N = 100,000. Prints the Markdown
+# table of docs/performance.md ("A very large batch"); to update it:
+#   tests/check_docs_block.sh --update docs/performance.md large-batch bench/large-batch.sh
 #   bench/large-batch.sh [BUILD_DIR] [N]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -15,6 +16,8 @@ trap 'rm -rf "$work"' EXIT
 # shellcheck source=bench/generated-materials.sh
 source "$root/bench/generated-materials.sh"
 
+echo "Measured on $(nproc) CPU(s), generated artistic materials, every output, one \`matc -j 2\` run each:"
+echo
 echo "| materials | time (s) | materials/s | peak memory (MiB) |"
 echo "|---:|---:|---:|---:|"
 for n in $((count / 10)) "$count"; do

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
+#include <ostream>
 #include <string>
 #include <string_view>
 
@@ -13,6 +15,11 @@ enum class WriteOutcome { written, unchanged };
 // otherwise writes a temporary file beside it and renames it into place.
 // Throws std::runtime_error with a readable reason on failure, leaving no temporary behind.
 WriteOutcome write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+
+// The same for a file too large to hold in memory: `produce` writes the bytes to the stream it
+// is given (the temporary), which is then compared with the existing file piece by piece.
+WriteOutcome write_file_atomically(const std::filesystem::path& path,
+                                   const std::function<void(std::ostream&)>& produce);
 
 // The canonical form of a path (as far as it exists), for "would this output overwrite an
 // input?" checks.

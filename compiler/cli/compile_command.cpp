@@ -19,6 +19,8 @@
 #include "commands.h"
 #include "depfile.h"
 #include "device_validation_report.h"
+#include "in_order.h"
+#include "manifest_spool.h"
 #include "matc/compile.h"
 #include "matc/emit/build.h"
 #include "matc/json_format.h"
@@ -70,40 +72,50 @@ struct BatchSummary {
   void count(WriteOutcome outcome) { ++(outcome == WriteOutcome::written ? written : unchanged); }
 };
 
-// One input file through the batch: parsed and checked in order, then compiled by any worker.
+// What a worker's compile of one job leaves for the batch until the job is retired.
+struct CompileOutcome {
+  bool compiled = false;  // every output written
+  bool failed_on_device = false;
+  std::size_t written = 0;
+  std::size_t unchanged = 0;
+  std::string manifest_entry;  // Build::format_manifest_entry's text, when a manifest is written
+};
+
+// One material (or one input file's diagnostics) through the batch: parsed and checked in order,
+// then compiled by any worker. A batch of any size keeps little per job after its retirement.
 struct Job {
-  std::string file;
+  std::size_t input = 0;  // index in CompileOptions::files
   // Checked and admitted to the batch. A JSON material is parsed again by the worker that
-  // compiles it, so that a batch of any size holds no parsed materials; a MaterialX document's
-  // materials are kept (re-importing a document per material would cost more).
+  // compiles it, so that a batch holds no parsed materials; a MaterialX document's materials are
+  // kept (re-importing a document per material would cost more).
   bool admitted = false;
   std::unique_ptr<Material> material;
   Diagnostics diagnostics;
-  // Filled by the worker that compiles it: the manifest entry as text, not the outputs' bytes
-  // (empty when no manifest is written; its presence marks the job compiled).
-  std::optional<std::string> manifest_entry;  // Build::format_manifest_entry's text
-  // What the batch needs of the material after its compile, when it holds no parsed material:
-  std::string name;
-  std::string spectral_file;               // a spectral file the material names, for the depfile
-  std::vector<std::string> written_files;  // names in the output directory
-  std::size_t written = 0;
-  std::size_t unchanged = 0;
-  bool failed_on_device = false;
+  std::unique_ptr<CompileOutcome> outcome;  // from the worker, released on retirement
+  // For the depfile:
+  std::string spectral_file;               // a spectral file the material names
+  std::vector<std::string> written_files;  // names in the output directory, kept for a depfile
 };
 
 // Reads and checks every file in order: name rules need all names, and a batch without
 // --keep-going compiles nothing when an input is invalid.
 std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& output_directory) {
-  std::map<std::string, std::string> inputs_by_identity;
-  for (const std::string& file : options.files)
-    inputs_by_identity[path_identity(file)] = file;
+  // Only inputs inside the output directory can be overwritten, so only theirs are kept (by file
+  // name), not every input's canonical path.
+  const fs::path output_identity(path_identity(output_directory));
+  std::map<std::string, std::string> inputs_in_output_directory;
+  for (const std::string& file : options.files) {
+    const fs::path identity(path_identity(file));
+    if (identity.parent_path() == output_identity)
+      inputs_in_output_directory[identity.filename().string()] = file;
+  }
   UniqueNames names;
   // Name rules, then the job: a material with an error is kept for its diagnostics only.
   const auto admit = [&](Job& job, std::optional<Material> material, bool keep) {
     if (!material) return;
     const std::vector<fs::path> outputs = possible_outputs(output_directory, material->name);
     const auto overwritten = std::find_if(outputs.begin(), outputs.end(), [&](const fs::path& p) {
-      return inputs_by_identity.contains(path_identity(p));
+      return inputs_in_output_directory.contains(p.filename().string());
     });
     if (reserved_names().contains(lowercase(material->name))) {
       job.diagnostics.error(material->name_location, "name",
@@ -116,23 +128,24 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
       job.diagnostics.error(
           material->name_location, "name",
           fmt::format("output '{}' would overwrite the input {}", overwritten->string(),
-                      inputs_by_identity.at(path_identity(*overwritten))),
+                      inputs_in_output_directory.at(overwritten->filename().string())),
           "an output directory (-o) that holds no input file");
     }
     if (job.diagnostics.has_errors()) return;
-    job.name = material->name;
     if (const auto* spectral = std::get_if<SpectralInput>(&material->model))
       job.spectral_file = spectral->resolved_file;
     job.admitted = true;
     if (keep) job.material = std::make_unique<Material>(std::move(*material));
   };
   std::vector<Job> jobs;
-  for (const std::string& file : options.files) {
+  jobs.reserve(options.files.size());
+  for (std::size_t input = 0; input < options.files.size(); ++input) {
+    const std::string& file = options.files[input];
     if (is_materialx_path(file)) {
       // One job per imported material; the document's own diagnostics go with the first.
       MaterialXImport imported = read_materialx_file(file);
       Job first;
-      first.file = file;
+      first.input = input;
       first.diagnostics = std::move(imported.diagnostics);
       if (imported.materials.empty()) {
         jobs.push_back(std::move(first));
@@ -140,14 +153,14 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
       }
       for (std::size_t i = 0; i < imported.materials.size(); ++i) {
         Job job = i == 0 ? std::move(first) : Job{};
-        job.file = file;
+        job.input = input;
         admit(job, std::move(imported.materials[i].material), /*keep=*/true);
         jobs.push_back(std::move(job));
       }
       continue;
     }
     Job job;
-    job.file = file;
+    job.input = input;
     ParseResult parsed = read_material_file(file);
     job.diagnostics = std::move(parsed.diagnostics);
     admit(job, std::move(parsed.material), /*keep=*/false);
@@ -194,22 +207,73 @@ int run_compile(const CompileOptions& options) {
     for (std::size_t i = 0; i < jobs.size(); ++i)
       if (jobs[i].admitted) queue.push_back(i);
   }
+  const fs::path depfile = !options.depfile.empty() ? fs::path(options.depfile)
+                           : options.write_depfile  ? output_directory / kDepfileName
+                                                    : fs::path();
+  ProgressLine progress(queue.size(), !options.quiet && stderr_is_terminal());
+
+  // Each job is reported, counted and released in input order as soon as every earlier job is
+  // done, so a batch holds little more per material than its file name.
+  std::mutex device_mutex;  // one Vulkan queue: validations (and their report) one at a time
+  BatchSummary summary;
+  ManifestSpool manifest_entries(output_directory);
+  std::optional<std::string> manifest_error;
+  InOrder in_order(jobs.size(), [&](std::size_t index) {
+    Job& job = jobs[index];
+    if (!job.diagnostics.items().empty()) {
+      // Not between the lines of a device validation's report.
+      std::unique_lock<std::mutex> report;
+      if (validator) report = std::unique_lock(device_mutex);
+      progress.print_above([&] { print_diagnostics(job.diagnostics); });
+    }
+    const std::unique_ptr<CompileOutcome> outcome = std::move(job.outcome);
+    if (outcome) {
+      summary.written += outcome->written;
+      summary.unchanged += outcome->unchanged;
+      if (outcome->failed_on_device) ++summary.failed_on_device;
+    }
+    if (job.diagnostics.has_errors()) {
+      ++summary.failed;
+    } else if (outcome && outcome->compiled) {
+      ++summary.compiled;
+      if (writes_manifest && !manifest_error) {
+        try {
+          manifest_entries.append(outcome->manifest_entry);
+        } catch (const std::exception& error) {
+          manifest_error = error.what();
+        }
+      }
+    } else {
+      ++summary.not_attempted;
+    }
+    job.diagnostics = Diagnostics();
+  });
+  for (std::size_t i = 0, slot = 0; i < jobs.size(); ++i) {
+    if (slot < queue.size() && queue[slot] == i)
+      ++slot;
+    else
+      in_order.done(i);  // not compiled: only its diagnostics to report
+  }
+
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
-  std::mutex device_mutex;  // one Vulkan queue: validations run one at a time
-  ProgressLine progress(queue.size(), !options.quiet && stderr_is_terminal());
   const auto work = [&] {
     for (std::size_t slot = next++; slot < queue.size() && !stop; slot = next++) {
       Job& job = jobs[queue[slot]];
+      const std::string& file = options.files[job.input];
+      job.outcome = std::make_unique<CompileOutcome>();
+      CompileOutcome& outcome = *job.outcome;
+      std::string name;
       try {
         // Every byte is generated before the first file is written: a failure leaves no
         // partial set of outputs for this material.
         std::unique_ptr<Material> material = std::move(job.material);
         if (!material) {
-          ParseResult again = read_material_file(job.file);
+          ParseResult again = read_material_file(file);
           if (!again.material) throw std::runtime_error("the file changed while matc ran");
           material = std::make_unique<Material>(std::move(*again.material));
         }
+        name = material->name;
         const CompiledMaterial compiled = compile_material(*material, basis, build.options().color);
         warn_if_poor_fit(compiled, job.diagnostics);
         note_if_out_of_unit_range(compiled, job.diagnostics);
@@ -220,29 +284,31 @@ int run_compile(const CompileOptions& options) {
           valid_on_device = validate_and_report(*validator, compiled);
         }
         if (!valid_on_device) {
-          job.failed_on_device = true;
-          job.diagnostics.error({job.file, 0, 0}, "",
+          outcome.failed_on_device = true;
+          job.diagnostics.error({file, 0, 0}, "",
                                 "its shaders differ from the CPU runtime on the Vulkan device "
                                 "(lines above); nothing written for it");
         } else {
           fs::create_directories(output_directory);
           for (const OutputFile& output : outputs.files) {
-            const WriteOutcome outcome =
+            const WriteOutcome written =
                 write_file_atomically(output_directory / output.name, output.bytes);
-            ++(outcome == WriteOutcome::written ? job.written : job.unchanged);
+            ++(written == WriteOutcome::written ? outcome.written : outcome.unchanged);
           }
-          job.manifest_entry = writes_manifest
-                                   ? Build::format_manifest_entry(build.manifest_entry(outputs))
-                                   : std::string();
-          for (const OutputFile& output : outputs.files)
-            job.written_files.push_back(output.name);
+          outcome.compiled = true;
+          if (writes_manifest)
+            outcome.manifest_entry = Build::format_manifest_entry(build.manifest_entry(outputs));
+          if (!depfile.empty()) {
+            for (const OutputFile& output : outputs.files)
+              job.written_files.push_back(output.name);
+          }
         }
       } catch (const std::exception& error) {
-        job.diagnostics.error({job.file, 0, 0}, "", error.what(),
-                              "a writable output directory (-o)");
+        job.diagnostics.error({file, 0, 0}, "", error.what(), "a writable output directory (-o)");
       }
       if (job.diagnostics.has_errors() && !options.keep_going) stop = true;
-      progress.finished(job.name);
+      progress.finished(name);
+      in_order.done(queue[slot]);
     }
   };
   std::vector<std::thread> workers;
@@ -253,23 +319,10 @@ int run_compile(const CompileOptions& options) {
   for (std::thread& worker : workers)
     worker.join();
   progress.clear();
-
-  // Reported in input order, whatever order the workers finished in.
-  BatchSummary summary;
-  std::vector<std::string> manifest_entries;
-  for (Job& job : jobs) {
-    print_diagnostics(job.diagnostics);
-    summary.written += job.written;
-    summary.unchanged += job.unchanged;
-    if (job.failed_on_device) ++summary.failed_on_device;
-    if (job.diagnostics.has_errors()) {
-      ++summary.failed;
-    } else if (job.manifest_entry) {
-      ++summary.compiled;
-      manifest_entries.push_back(std::move(*job.manifest_entry));
-    } else {
-      ++summary.not_attempted;
-    }
+  in_order.finish();  // the jobs a failure left unattempted
+  if (manifest_error) {
+    fmt::print(stderr, "{}: error: {}\n", output_directory.string(), *manifest_error);
+    ++summary.failed;
   }
 
   if (summary.failed == 0 || options.keep_going) {
@@ -278,23 +331,26 @@ int run_compile(const CompileOptions& options) {
       std::vector<fs::path> targets;
       std::vector<OutputFile> shared;
       if (!options.no_shared) shared = build.shared_outputs();
-      if (writes_manifest) {
-        shared.push_back(
-            {std::string(manifest_file_name()), build.manifest_text(shared, manifest_entries)});
-      }
       for (const OutputFile& output : shared) {
         summary.count(write_file_atomically(output_directory / output.name, output.bytes));
         targets.push_back(output_directory / output.name);
       }
-      const fs::path depfile = !options.depfile.empty() ? fs::path(options.depfile)
-                               : options.write_depfile  ? output_directory / kDepfileName
-                                                        : fs::path();
+      if (writes_manifest && !manifest_error) {
+        const fs::path manifest = output_directory / manifest_file_name();
+        const std::string head = build.manifest_head(shared);
+        summary.count(write_file_atomically(manifest, [&](std::ostream& out) {
+          out << head;
+          manifest_entries.copy_to(out);
+          out << Build::manifest_tail(manifest_entries.entry_count());
+        }));
+        targets.push_back(manifest);
+      }
       if (!depfile.empty() && summary.failed == 0) {
         std::vector<fs::path> dependencies;
         for (const Job& job : jobs) {
           for (const std::string& name : job.written_files)
             targets.push_back(output_directory / name);
-          dependencies.push_back(job.file);
+          dependencies.push_back(options.files[job.input]);
           if (!job.spectral_file.empty()) dependencies.push_back(job.spectral_file);
         }
         if (const fs::path self = matc_executable(); !self.empty()) dependencies.push_back(self);

@@ -14,12 +14,23 @@ void ProgressLine::finished(const std::string& name) {
   if (!enabled_) return;
   const std::lock_guard lock(mutex_);
   ++done_;
+  last_ = name;
   fmt::print(stderr, "\r\x1b[K[{}/{}] {}", done_, total_, name);
   std::fflush(stderr);
 }
 
-void ProgressLine::clear() {
+void ProgressLine::print_above(const std::function<void()>& print) {
+  const std::lock_guard lock(mutex_);
   if (enabled_ && done_ > 0) fmt::print(stderr, "\r\x1b[K");
+  print();
+  if (enabled_ && done_ > 0) fmt::print(stderr, "[{}/{}] {}", done_, total_, last_);
+  std::fflush(stderr);
+}
+
+void ProgressLine::clear() {
+  const std::lock_guard lock(mutex_);
+  if (enabled_ && done_ > 0) fmt::print(stderr, "\r\x1b[K");
+  enabled_ = false;  // for good: what is printed after the batch is not followed by the line
 }
 
 unsigned worker_count(unsigned requested, std::size_t jobs) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <mutex>
 #include <string>
 
@@ -14,12 +15,16 @@ class ProgressLine {
  public:
   ProgressLine(std::size_t total, bool enabled) : total_(total), enabled_(enabled) {}
   void finished(const std::string& name);
+  // Runs `print` (which writes whole lines to standard error) with the line cleared first, so
+  // that messages printed while workers run are not drawn over.
+  void print_above(const std::function<void()>& print);
   void clear();
 
  private:
   std::mutex mutex_;
   std::size_t total_;
   std::size_t done_ = 0;
+  std::string last_;
   bool enabled_;
 };
 

@@ -21,12 +21,13 @@ bool UniqueNames::claim(const Material& material, std::string_view scope,
 bool UniqueNames::claim(const std::string& name, const std::string& path,
                         const SourceLocation& location, std::string_view scope,
                         Diagnostics& diagnostics) {
-  const auto [first, inserted] = first_use_.try_emplace(lowercase(name), FirstUse{path, location});
+  const auto [first, inserted] =
+      first_use_.try_emplace(lowercase(name), FirstUse{path, location.line, location.column});
   if (inserted) return true;
   diagnostics.error(
       location, "name",
       fmt::format("'{}' is already used by {} ({}:{})", name, first->second.path,
-                  first->second.location.line, first->second.location.column),
+                  first->second.line, first->second.column),
       fmt::format("names unique within {}, ignoring case (they name output files)", scope));
   return false;
 }

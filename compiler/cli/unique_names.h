@@ -24,9 +24,10 @@ class UniqueNames {
              std::string_view scope, Diagnostics& diagnostics);
 
  private:
-  struct FirstUse {
+  struct FirstUse {  // kept small: a batch of 100,000 materials holds one per material
     std::string path;
-    SourceLocation location;
+    std::size_t line = 0;
+    std::size_t column = 0;
   };
   std::map<std::string, FirstUse> first_use_;  // lowercase name -> where it was first used
 };

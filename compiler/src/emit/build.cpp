@@ -411,21 +411,33 @@ std::string Build::format_manifest_entry(const nlohmann::ordered_json& entry) {
   return format_json_nested(entry, 2);  // an element of "materials", itself a top-level member
 }
 
+std::string Build::manifest_head(const std::vector<OutputFile>& shared) const {
+  // "materials" is the manifest's last member: the rest is formatted as a whole, and the list
+  // opened where format_json writes an empty one.
+  std::string text = format_json(manifest(shared, std::span<const nlohmann::ordered_json>{}));
+  const std::string empty_list = "[]\n}\n";
+  if (!text.ends_with("\"materials\": " + empty_list))
+    throw std::logic_error("manifest: materials is not last");
+  text.resize(text.size() - empty_list.size());
+  return text + "[";
+}
+
+std::string_view Build::manifest_entry_separator(bool first) {
+  return first ? "\n    " : ",\n    ";
+}
+
+std::string_view Build::manifest_tail(std::size_t entry_count) {
+  return entry_count == 0 ? "]\n}\n" : "\n  ]\n}\n";
+}
+
 std::string Build::manifest_text(const std::vector<OutputFile>& shared,
                                  std::span<const std::string> formatted_entries) const {
-  // "materials" is the manifest's last member: the rest is formatted as a whole, and the list
-  // spliced in where format_json writes an empty one.
-  std::string text = format_json(manifest(shared, std::span<const nlohmann::ordered_json>{}));
-  if (formatted_entries.empty()) return text;
-  const std::string empty_list = "\"materials\": []\n}\n";
-  if (!text.ends_with(empty_list)) throw std::logic_error("manifest: materials is not last");
-  text.resize(text.size() - empty_list.size());
-  text += "\"materials\": [\n";
+  std::string text = manifest_head(shared);
   for (std::size_t i = 0; i < formatted_entries.size(); ++i) {
-    text += i == 0 ? "    " : ",\n    ";
+    text += manifest_entry_separator(i == 0);
     text += formatted_entries[i];
   }
-  text += "\n  ]\n}\n";
+  text += manifest_tail(formatted_entries.size());
   return text;
 }
 

@@ -119,6 +119,11 @@ class Build {
   // JSON tree.
   std::string manifest_text(const std::vector<OutputFile>& shared,
                             std::span<const std::string> formatted_entries) const;
+  // The same text in pieces, for a batch that streams its entries to a file instead of holding
+  // them: manifest_head, then per entry its separator and text, then manifest_tail.
+  std::string manifest_head(const std::vector<OutputFile>& shared) const;
+  static std::string_view manifest_entry_separator(bool first);
+  static std::string_view manifest_tail(std::size_t entry_count);
   static std::string format_manifest_entry(const nlohmann::ordered_json& entry);
   // {name, source, inputs_hash, files: [{file, hash}]} for one material.
   nlohmann::ordered_json manifest_entry(const MaterialOutputs& material) const;
