@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates the measured tables in docs/shaders.md (SPIR-V cost against Schlick, embedded table).
+# Regenerates the measured tables in docs/shaders.md (SPIR-V cost against Schlick, embedded table,
+# closed form).
 #   bench/update-shader-docs.sh [BUILD_DIR]   (default: build)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -8,6 +9,7 @@ cmake --build "$build" --target matc_shader_cost matc >/dev/null
 tool="$build/bench/matc_shader_cost"
 "$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" shader-cost "$tool"
 "$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" embedded-lut "$tool" --embedded
+"$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" closed-form "$tool" --closed-form
 "$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" basis-polynomial \
   "$root/bench/fenced.sh" "$build/matc" basis
 "$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" basis-polynomial-paper \

@@ -655,11 +655,16 @@ TEST_F(MatcCli, EvalPrintsFbarFromTheTableBesideTheReference) {
   EXPECT_FALSE(json.contains("F"));
   ASSERT_EQ(json["Fbar"].size(), 2u);
   ASSERT_EQ(json["Fbar_reference"].size(), 2u);
+  ASSERT_EQ(json["Fbar_analytic"].size(), 2u);
   EXPECT_EQ(json["lut"]["size"], 128);
   for (std::size_t i = 0; i < 2; ++i) {
     for (std::size_t c = 0; c < 3; ++c) {
       EXPECT_NEAR(json["Fbar"][i][c].get<double>(), json["Fbar_reference"][i][c].get<double>(),
                   0.02);
+      // The closed form follows the table it was fitted to (issue #20: within 0.005).
+      EXPECT_NEAR(json["Fbar_analytic"][i][c].get<double>(), json["Fbar"][i][c].get<double>(),
+                  0.005);
+      EXPECT_NE(json["Fbar_analytic"][i][c].get<double>(), json["Fbar"][i][c].get<double>());
     }
   }
   const CommandResult mismatched = run({"eval", std::string(MATC_EXAMPLES_DIR) + "/gold.json",

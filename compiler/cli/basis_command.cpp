@@ -13,6 +13,7 @@
 #include "matc/emit/material_module_template.h"
 #include "matc/fit/coefficient_table.h"
 #include "matc/ltc/ltc_fit.h"
+#include "matc/lut/analytic_lut_fit.h"
 #include "matc/lut/default_lut_hashes.h"
 #include "matc/runtime/basis.h"
 
@@ -113,6 +114,19 @@ int run_basis_lut_hashes(const BasisFitOptions& options) {
   const std::vector<DefaultLutHash> hashes = compute_default_lut_hashes();
   fmt::print(stderr, "matc: hashed {} default table files\n", hashes.size());
   return write_source(options.output, default_lut_hashes_source(hashes));
+}
+
+int run_basis_analytic_lut(const BasisFitOptions& options) {
+  const runtime::BasisKind kind = basis_of(options.basis);
+  const runtime::BasisView basis = runtime::shipped_basis(kind);
+  const Lut table = preintegrate_lut(basis, LutOptions{});
+  const runtime::AnalyticLutCoefficients coefficients = fit_analytic_lut(table);
+  const AnalyticLutError error = analytic_lut_error(coefficients, table, basis);
+  fmt::print(stderr,
+             "matc: fitted the closed form of the {} basis' table: |Fbar - texture| over the "
+             "measured metals max {:.4f}, mean {:.1e}\n",
+             runtime::basis_name(kind), error.max, error.mean);
+  return write_source(options.output, analytic_lut_source(kind, coefficients));
 }
 
 int run_basis_material_modules(const BasisFitOptions& options) {

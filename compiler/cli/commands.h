@@ -83,6 +83,7 @@ struct BasisFitOptions {
 };
 int run_basis_fit(const BasisFitOptions& options);
 int run_basis_lut_hashes(const BasisFitOptions& options);
+int run_basis_analytic_lut(const BasisFitOptions& options);
 int run_basis_material_modules(const BasisFitOptions& options);
 
 // `matc basis coefficient-table`: refits the shipped coefficient table and writes its C++ source.

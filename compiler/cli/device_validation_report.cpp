@@ -22,9 +22,9 @@ std::unique_ptr<DeviceValidator> open_device_validator(const Build& build,
         build, vulkan::ContextOptions{options.layers, options.name});
     const ValidationTolerance& tolerance = validator->tolerance();
     fmt::print(
-        "matc: validating on {}{}; tolerances F {:.0e}, Fbar {:.0e}{}\n", validator->device_name(),
-        options.layers ? " with the validation layer" : "", tolerance.fresnel,
-        tolerance.preintegrated,
+        "matc: validating on {}{}; tolerances F {:.0e}, Fbar {:.0e}, closed-form Fbar {:.0e}{}\n",
+        validator->device_name(), options.layers ? " with the validation layer" : "",
+        tolerance.fresnel, tolerance.preintegrated, tolerance.analytic,
         build.embedded_lut() ? fmt::format(", embedded Fbar {:.0e}", tolerance.embedded) : "");
     return validator;
   } catch (const vulkan::VulkanError& error) {
@@ -124,6 +124,7 @@ bool validate_and_report(const DeviceValidator& validator, const CompiledMateria
     line += describe("F", path.fresnel, tolerance.fresnel, true);
     line += describe("Fbar", path.preintegrated, tolerance.preintegrated, false);
     if (path.embedded) line += describe("embedded Fbar", *path.embedded, tolerance.embedded, false);
+    line += describe("closed-form Fbar", path.analytic, tolerance.analytic, false);
     fmt::print("{}  {}\n", line, path.passed ? "ok" : "FAILED");
   }
   return report_layer_messages(validator, messages_before, result.name) && result.passed();

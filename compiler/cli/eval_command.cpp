@@ -17,6 +17,7 @@
 #include "matc/lut/lut_files.h"
 #include "matc/lut/split_sum_reference.h"
 #include "matc/material/parse.h"
+#include "matc/runtime/analytic_lut.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/lut.h"
@@ -53,6 +54,7 @@ void add_direct_fresnel(const EvalOptions& options, const ReflectanceCurve& curv
 // curve tabulated, and its split-sum integral at each (NdotV, roughness), without basis or table.
 struct SplitSumInputs {
   Lut lut;
+  const runtime::AnalyticLutCoefficients* analytic;  // the table's closed form
   TabulatedCurve tabulated;
   std::vector<runtime::Rgb> fbar_reference;
 };
@@ -61,6 +63,7 @@ SplitSumInputs split_sum_inputs(const EvalOptions& options, const ReflectanceCur
                                 const runtime::BasisView& basis) {
   SplitSumInputs inputs{
       stored_as(preintegrate_lut(basis, options.lut.bake), precision_of(options.lut)),
+      &runtime::shipped_analytic_lut(basis.kind),
       TabulatedCurve(curve),
       {}};
   for (std::size_t i = 0; i < options.ndotv.size() && !options.no_reference; ++i) {
@@ -70,7 +73,8 @@ SplitSumInputs split_sum_inputs(const EvalOptions& options, const ReflectanceCur
   return inputs;
 }
 
-// Fbar exactly as a renderer samples the table it loads, beside the exact split-sum integral.
+// Fbar exactly as a renderer samples the table it loads and from the table's closed form (as
+// matc_preintegrated_basis_analytic computes it), beside the exact split-sum integral.
 void add_preintegrated_fresnel(const EvalOptions& options, const SplitSumInputs& inputs,
                                const LabelledCoefficients& coefficients, ordered_json& out) {
   const Lut& lut = inputs.lut;
@@ -84,6 +88,12 @@ void add_preintegrated_fresnel(const EvalOptions& options, const SplitSumInputs&
           runtime::evaluate_fbar(values, lut.view(), options.ndotv[i], options.roughness[i]));
     }
     out["Fbar" + label] = std::move(fbar);
+    ordered_json analytic = ordered_json::array();
+    for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
+      analytic.push_back(runtime::evaluate_fbar_analytic(values, *inputs.analytic, options.ndotv[i],
+                                                         options.roughness[i]));
+    }
+    out["Fbar_analytic" + label] = std::move(analytic);
   }
   if (!options.no_reference) out["Fbar_reference"] = inputs.fbar_reference;
 }

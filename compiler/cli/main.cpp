@@ -176,6 +176,15 @@ int main(int argc, char** argv) {
       "-o,--output", table_fit.output,
       "Where to write (runtime/src/<basis>_coefficient_table.cpp); default stdout");
   add_basis_option(*table_fit_command, table_fit.basis);
+  BasisFitOptions analytic_lut;
+  CLI::App* analytic_lut_command = basis_command->add_subcommand(
+      "analytic-lut",
+      "Bake the basis' default preintegrated table, fit its closed form (two degree-11 "
+      "polynomials per channel, docs/lut.md) and write the C++ source");
+  analytic_lut_command->add_option(
+      "-o,--output", analytic_lut.output,
+      "Where to write (runtime/src/<basis>_analytic_lut_table.cpp); default stdout");
+  add_basis_option(*analytic_lut_command, analytic_lut.basis);
   BasisFitOptions lut_hashes;
   CLI::App* lut_hashes_command = basis_command->add_subcommand(
       "lut-hashes",
@@ -333,6 +342,7 @@ int main(int argc, char** argv) {
     if (*table_fit_command) return run_basis_coefficient_table(table_fit);
     if (*ltc_table_command) return run_basis_ltc_table(ltc_table);
     if (*lut_hashes_command) return run_basis_lut_hashes(lut_hashes);
+    if (*analytic_lut_command) return run_basis_analytic_lut(analytic_lut);
     if (*material_modules_command) return run_basis_material_modules(material_modules);
     if (*basis_command) return run_basis(basis);
     if (!files_from.empty()) {

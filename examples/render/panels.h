@@ -38,7 +38,8 @@ enum Estimate : std::int32_t {
   kExactFbar = 2,
   kSchlickFbar = 3,
   kOursFbar = 4,
-  kEstimateCount = 5,
+  kOursClosedFormFbar = 5,  // the table's closed form (area-light render: same as kOursFbar)
+  kEstimateCount = 6,
 };
 
 // Matches the push-constant block of both fragment shaders.

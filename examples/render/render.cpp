@@ -79,15 +79,17 @@ int main(int argc, char** argv) {
       const Panel& radiance = estimates[kPrefilteredRadiance];
       const Panel schlick = radiance.times(estimates[kSchlickFbar]);
       const Panel ours = radiance.times(estimates[kOursFbar]);
+      const Panel closed_form = radiance.times(estimates[kOursClosedFormFbar]);
       const Panel exact = radiance.times(estimates[kExactFbar]);
       const std::string& name = compiled.material.name;
-      write_panels(settings.output / (name + ".png"), {reference.rgb, schlick.rgb, ours.rgb},
-                   settings.size, display);
+      write_panels(settings.output / (name + ".png"),
+                   {reference.rgb, schlick.rgb, ours.rgb, closed_form.rgb}, settings.size, display);
       write_difference_panels(settings.output, name, schlick, ours, reference, exact,
                               settings.size);
       const double roughness = compiled.material.roughness.value_or(kDefaultRoughness);
-      const std::array<std::pair<const char*, const Panel*>, 3> rows = {
+      const std::array<std::pair<const char*, const Panel*>, 4> rows = {
           std::pair{"Schlick's Fresnel", &schlick}, std::pair{"ours", &ours},
+          std::pair{"ours, closed form (no fetch)", &closed_form},
           std::pair{"the exact Fresnel", &exact}};
       for (const auto& [label, panel] : rows) {
         const ErrorStats total = error_against(*panel, reference);

@@ -8,7 +8,7 @@
 //      the split L = shape x preintegrated Fresnel without LTC's shape error
 //   2: I_ltc times the exact preintegrated Fresnel (visible-normal sampling): LTC's own error
 //   3: I_ltc times Schlick's preintegrated Fresnel (the ComparisonLobes table)
-//   4: ours, matc_ltc_quad_light with matc_coefficients_{{name}}
+//   4 (and 5): ours, matc_ltc_quad_light with matc_coefficients_{{name}}
 // Each pass writes (sum, weight) for its share of the samples; the host adds passes up and
 // divides. Background pixels write a negative weight.
 {{library}}

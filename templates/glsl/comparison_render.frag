@@ -7,6 +7,7 @@
 //   2: the exact preintegrated Fresnel, by visible-normal sampling (the best any split sum does)
 //   3: Schlick's preintegrated Fresnel, from the ComparisonLobes table
 //   4: ours, matc_fresnel_preintegrated_{{name}} from our table
+//   5: ours from the table's closed form, matc_preintegrated_basis_analytic (no fetch)
 // Each pass writes (sum, weight) for its share of the samples; the host adds passes up and
 // divides, and multiplies radiance by a Fresnel factor for the split-sum images. Background
 // pixels write a negative weight.
@@ -89,6 +90,9 @@ void main() {
     if (panel.method == 3) {
       vec4 lobes = textureLod(sampler2D(lobe_lut, matc_lut_sampler), texcoord, 0.0);
       sum = F0 * lobes.x + (vec3(1.0) - F0) * lobes.y;
+    } else if (panel.method == 5) {
+      sum = matc_fresnel_preintegrated_{{name}}(
+          matc_preintegrated_basis_analytic(n.z, panel.roughness));
     } else {
       sum = matc_fresnel_preintegrated_{{name}}(
           textureLod(sampler2D(matc_lut, matc_lut_sampler), texcoord, 0.0));

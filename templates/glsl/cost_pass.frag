@@ -1,9 +1,9 @@
 #version 450
 // matc {{version}}: the full-screen pass of the cost benchmark (bench/fullscreen_cost.cpp). Every
-// variant reads the same RGBA32F table once through the same texture coordinates and writes the
-// same target; only the Fresnel differs: {{variant}}. The coefficient-table variant also fetches
-// its coefficients, three times, from the table bound at binding 2; the quad-light quantity also
-// reads the LTC table at binding 3.
+// variant reads the same RGBA32F table once through the same texture coordinates (the closed-form
+// quantity reads none) and writes the same target; only the Fresnel differs: {{variant}}. The
+// coefficient-table variant also fetches its coefficients, three times, from the table bound at
+// binding 2; the quad-light quantity also reads the LTC table at binding 3.
 {{defines}}
 {{library}}
 {{material}}
@@ -58,6 +58,20 @@ void main() {
 #else
   float integral = matc_ltc_quad_integral(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3);
   vec3 f = integral * (F0 * texel.x + (vec3(1.0) - F0) * texel.y);
+#endif
+  colour = vec4(f, 1.0);
+#elif MATC_COST_CLOSED_FORM
+  // Fbar without a texture: the closed form of our table, or Karis' analytic fit of Schlick's
+  // split sum ("Physically Based Shading on Mobile", 2014) with the same roughness.
+#if MATC_COST_TABLE
+  vec3 f = matc_fresnel_preintegrated(c, matc_preintegrated_basis_analytic(uv.x, uv.y));
+#elif MATC_COST_OURS
+  vec3 f = matc_fresnel_preintegrated_{{name}}(matc_preintegrated_basis_analytic(uv.x, uv.y));
+#else
+  vec4 r4 = uv.y * vec4(-1.0, -0.0275, -0.572, 0.022) + vec4(1.0, 0.0425, 1.04, -0.04);
+  float a004 = min(r4.x * r4.x, exp2(-9.28 * uv.x)) * r4.x + r4.y;
+  vec2 ab = vec2(-1.04, 1.04) * a004 + r4.zw;
+  vec3 f = F0 * ab.x + ab.y;
 #endif
   colour = vec4(f, 1.0);
 #else

@@ -9,6 +9,7 @@
 //   3: Schlick's preintegrated Fresnel with F0 = r, from the ComparisonLobes table
 //   4: ours: MATC_COEFFICIENTS_FROM_TABLE(r, g) and matc_fresnel_preintegrated, the textured
 //      metal path of the generated library
+//   5: the same from the table's closed form, matc_preintegrated_basis_analytic (no fetch)
 // Each pass writes (sum, weight) for its share of the samples, as comparison_render.frag does.
 {{library}}
 layout(set = 0, binding = 0) uniform texture2D matc_lut;
@@ -106,8 +107,10 @@ void main() {
     } else {
       MatcFresnelCoefficients c = MATC_COEFFICIENTS_FROM_TABLE(
           sampler2D(matc_coefficient_table, matc_lut_sampler), reflectivity, edge_tint);
-      sum = matc_fresnel_preintegrated(
-          c, textureLod(sampler2D(matc_lut, matc_lut_sampler), texcoord, 0.0));
+      vec4 bbar = panel.method == 5
+                      ? matc_preintegrated_basis_analytic(n.z, panel.roughness)
+                      : textureLod(sampler2D(matc_lut, matc_lut_sampler), texcoord, 0.0);
+      sum = matc_fresnel_preintegrated(c, bbar);
     }
     weight = 1.0;
   }

@@ -1,7 +1,8 @@
 #version 450
 // matc {{version}}: the compute kernel that checks material {{name}} on a Vulkan device against the
 // CPU runtime. For each query (mu, NdotV, roughness, -) it writes F(mu), the preintegrated F
-// through the bound table and sampler, and the same from the embedded table (zero without one).
+// through the bound table and sampler, the same from the embedded table (zero without one) and
+// from the closed form (matc_preintegrated_basis_analytic).
 {{library}}
 {{material}}
 layout(local_size_x = 64) in;
@@ -20,7 +21,9 @@ void main() {
   embedded = vec4(matc_fresnel_preintegrated_{{name}}(
                       matc_preintegrated_basis_embedded(query.y, query.z)), 1.0);
 #endif
-  matc_results[3u * i] = vec4(matc_fresnel_{{name}}(query.x), 1.0);
-  matc_results[3u * i + 1u] = vec4(matc_fresnel_preintegrated_{{name}}(bbar), 1.0);
-  matc_results[3u * i + 2u] = embedded;
+  matc_results[4u * i] = vec4(matc_fresnel_{{name}}(query.x), 1.0);
+  matc_results[4u * i + 1u] = vec4(matc_fresnel_preintegrated_{{name}}(bbar), 1.0);
+  matc_results[4u * i + 2u] = embedded;
+  matc_results[4u * i + 3u] = vec4(matc_fresnel_preintegrated_{{name}}(
+                                       matc_preintegrated_basis_analytic(query.y, query.z)), 1.0);
 }

@@ -65,5 +65,6 @@ float3 matc_energy_compensation(MatcFresnelCoefficients c, float4 bbar) {
 }
 {{coefficient_table}}
 {{area_lights}}
+{{analytic_lut}}
 {{embedded_lut}}
 #endif  // MATC_FRESNEL_HLSL

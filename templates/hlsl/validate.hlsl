@@ -1,6 +1,7 @@
 // matc {{version}}: the compute kernel that checks material {{name}} on a Vulkan device against the
 // CPU runtime. For each query (mu, NdotV, roughness, -) it writes F(mu), the preintegrated F
-// through the bound table and sampler, and the same from the embedded table (zero without one).
+// through the bound table and sampler, the same from the embedded table (zero without one) and
+// from the closed form (matc_preintegrated_basis_analytic).
 {{library}}
 {{material}}
 [[vk::binding(0, 0)]] StructuredBuffer<float4> matc_queries : register(t0);
@@ -18,7 +19,9 @@ void main(uint3 id : SV_DispatchThreadID) {
   embedded = float4(matc_fresnel_preintegrated_{{name}}(
                         matc_preintegrated_basis_embedded(query.y, query.z)), 1.0);
 #endif
-  matc_results[3 * i] = float4(matc_fresnel_{{name}}(query.x), 1.0);
-  matc_results[3 * i + 1] = float4(matc_fresnel_preintegrated_{{name}}(bbar), 1.0);
-  matc_results[3 * i + 2] = embedded;
+  matc_results[4 * i] = float4(matc_fresnel_{{name}}(query.x), 1.0);
+  matc_results[4 * i + 1] = float4(matc_fresnel_preintegrated_{{name}}(bbar), 1.0);
+  matc_results[4 * i + 2] = embedded;
+  matc_results[4 * i + 3] = float4(matc_fresnel_preintegrated_{{name}}(
+                                       matc_preintegrated_basis_analytic(query.y, query.z)), 1.0);
 }

@@ -65,4 +65,5 @@ fn matc_energy_compensation(c: MatcFresnelCoefficients, bbar: vec4f) -> vec3f {
 }
 {{coefficient_table}}
 {{area_lights}}
+{{analytic_lut}}
 {{embedded_lut}}

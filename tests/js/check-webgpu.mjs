@@ -1,7 +1,8 @@
 // The WGSL output, compiled and run by an implementation matc did not write: Dawn (npm `webgpu`,
 // whose WGSL compiler is Tint) on the SwiftShader Vulkan driver that Debian's chromium ships.
 // Compute kernels evaluate, over the query grid of `matc validate`:
-// - every example material's snippet: F(mu), and Fbar(NdotV, roughness) from the preintegrated
+// - every example material's snippet: F(mu), Fbar(NdotV, roughness) from the table's closed form
+//   (matc_preintegrated_basis_analytic), and Fbar(NdotV, roughness) from the preintegrated
 //   table (rgba16float, linear sampler);
 // - textured metals: coefficients from the coefficient table (rg16float) for per-channel (r, g);
 // - an area light: gold under two quads (one crossing the horizon), with the LTC table
@@ -17,7 +18,8 @@ import { join } from "node:path";
 import { create, globals } from "webgpu";
 import { check, finish } from "./report.mjs";
 import {
-  compensatedFbar, compileAndEvaluate, kFresnelTolerance, kPreintegratedTolerance, largestDifference, run,
+  compensatedFbar, compileAndEvaluate, kClosedFormTolerance, kFresnelTolerance, kPreintegratedTolerance,
+  largestDifference, run,
   validationQueries,
 } from "./shader-cases.mjs";
 
@@ -37,7 +39,8 @@ const kBindings = `
 @group(0) @binding(5) var matc_linear: sampler;
 `;
 
-// Two results per query: F(mu) and Fbar(NdotV, roughness) for the coefficients `coefficients`.
+// Three results per query: F(mu), Fbar(NdotV, roughness) through the table and Fbar from the
+// table's closed form, for the coefficients `coefficients`.
 const fresnelKernel = (coefficients) => `${kBindings}
 @compute @workgroup_size(64)
 fn main(@builtin(global_invocation_id) id: vec3u) {
@@ -48,8 +51,10 @@ fn main(@builtin(global_invocation_id) id: vec3u) {
   let query = matc_queries[i];  // mu, NdotV, roughness
   let c = ${coefficients};
   let bbar = textureSampleLevel(matc_lut, matc_linear, matc_lut_texcoord(query.y, query.z), 0.0);
-  matc_results[2u * i] = vec4f(matc_fresnel(c, query.x), 1.0);
-  matc_results[2u * i + 1u] = vec4f(matc_fresnel_preintegrated(c, bbar), 1.0);
+  matc_results[3u * i] = vec4f(matc_fresnel(c, query.x), 1.0);
+  matc_results[3u * i + 1u] = vec4f(matc_fresnel_preintegrated(c, bbar), 1.0);
+  matc_results[3u * i + 2u] = vec4f(matc_fresnel_preintegrated(
+                                        c, matc_preintegrated_basis_analytic(query.y, query.z)), 1.0);
 }
 `;
 
@@ -159,10 +164,11 @@ try {
   for (const material of cases.materials) {
     await attempt(material.name, async () => {
       const values = await dispatch(cases.library + material.snippet +
-                                    fresnelKernel(`matc_coefficients_${material.name}`), queries.flat, 2);
-      report(material.name, [["F", largestDifference(values, material.F, 8, 0)],
-                             ["Fbar", largestDifference(values, material.Fbar, 8, 4)]],
-             { F: kFresnelTolerance, Fbar: kPreintegratedTolerance });
+                                    fresnelKernel(`matc_coefficients_${material.name}`), queries.flat, 3);
+      report(material.name, [["F", largestDifference(values, material.F, 12, 0)],
+                             ["Fbar", largestDifference(values, material.Fbar, 12, 4)],
+                             ["Fbar_analytic", largestDifference(values, material.FbarAnalytic, 12, 8)]],
+             { F: kFresnelTolerance, Fbar: kPreintegratedTolerance, Fbar_analytic: kClosedFormTolerance });
     });
   }
   for (const metal of cases.textured) {
@@ -170,10 +176,12 @@ try {
       const vector = (v) => `vec3f(${v.map((x) => x.toFixed(6)).join(", ")})`;
       const values = await dispatch(cases.library + fresnelKernel(
         `matc_coefficients_from_table_texture(matc_coefficient_table, matc_linear, ` +
-        `${vector(metal.reflectivity)}, ${vector(metal.edgeTint)})`), queries.flat, 2);
-      report(metal.name, [["F", largestDifference(values, metal.F, 8, 0)],
-                          ["Fbar", largestDifference(values, metal.Fbar, 8, 4)]],
-             { F: kPreintegratedTolerance, Fbar: kPreintegratedTolerance });
+        `${vector(metal.reflectivity)}, ${vector(metal.edgeTint)})`), queries.flat, 3);
+      report(metal.name, [["F", largestDifference(values, metal.F, 12, 0)],
+                          ["Fbar", largestDifference(values, metal.Fbar, 12, 4)],
+                          ["Fbar_analytic", largestDifference(values, metal.FbarAnalytic, 12, 8)]],
+             { F: kPreintegratedTolerance, Fbar: kPreintegratedTolerance,
+               Fbar_analytic: kPreintegratedTolerance });
     });
   }
 

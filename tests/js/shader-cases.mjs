@@ -7,6 +7,8 @@ import { join } from "node:path";
 // matc validate's tolerances (docs/validation.md).
 export const kFresnelTolerance = 1e-5;
 export const kPreintegratedTolerance = 1e-4;
+// Fbar from the table's closed form (matc_preintegrated_basis_analytic): float32 arithmetic only.
+export const kClosedFormTolerance = 1e-5;
 
 // Textured metals: per-channel (reflectivity, edge tint), the coefficient table's corners among
 // them.
@@ -55,7 +57,8 @@ export function validationQueries() {
 
 // Compiles every example material into `out` with the given options (which must fix the tables'
 // precisions; `emit` names more outputs than the snippets and the two tables) and returns, per material, its name, its snippet in `language` and the CPU runtime's
-// F and Fbar at the queries; then the textured metals' F and Fbar through the coefficient table.
+// F, Fbar and Fbar from the table's closed form at the queries; then the textured metals' F and
+// both Fbar through the coefficient table.
 export function compileAndEvaluate(matc, materialsDir, out, language, options, queries, emit = []) {
   const files = readdirSync(materialsDir).filter((f) => f.endsWith(".json")).sort()
                   .map((f) => join(materialsDir, f));
@@ -68,13 +71,15 @@ export function compileAndEvaluate(matc, materialsDir, out, language, options, q
   const materials = files.map((file) => {
     const evaluated = evaluate([file]);
     return { name: evaluated.name, F: evaluated.F, Fbar: evaluated.Fbar,
+             FbarAnalytic: evaluated.Fbar_analytic,
              snippet: readFileSync(join(out, `${evaluated.name}.${language}`), "utf8") };
   });
   const textured = kTexturedMetals.map(([reflectivity, edgeTint]) => {
     const evaluated = evaluate(["--reflectivity", reflectivity.join(","),
                                 "--edge-tint", edgeTint.join(",")]);
     return { name: `table r=${reflectivity} g=${edgeTint}`, reflectivity, edgeTint,
-             F: evaluated.F_table, Fbar: evaluated.Fbar_table };
+             F: evaluated.F_table, Fbar: evaluated.Fbar_table,
+             FbarAnalytic: evaluated.Fbar_analytic_table };
   });
   return { materials, textured, library: readFileSync(join(out, `matc_fresnel.${language}`), "utf8") };
 }

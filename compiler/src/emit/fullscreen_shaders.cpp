@@ -26,17 +26,21 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
   const bool table = model == FresnelModel::table;
   const bool direct = quantity == FresnelQuantity::direct;
   const bool quad_light = quantity == FresnelQuantity::quad_light;
+  const bool closed_form = quantity == FresnelQuantity::preintegrated_closed_form;
   const char* model_name = table ? "ours from the coefficient table" : ours ? "ours" : "Schlick's";
   return fill_template(
       "glsl/cost_pass.frag",
       {{"version", kVersion},
        {"variant", fmt::format("{} {}", model_name,
-                               direct       ? "F"
-                               : quad_light ? "quad light (LTC)"
-                                            : "Fbar")},
+                               direct        ? "F"
+                               : quad_light  ? "quad light (LTC)"
+                               : closed_form ? "Fbar in closed form"
+                                             : "Fbar")},
        {"defines", fmt::format("#define MATC_COST_OURS {}\n#define MATC_COST_TABLE {}\n#define "
-                               "MATC_COST_DIRECT {}\n#define MATC_COST_QUAD_LIGHT {}",
-                               ours ? 1 : 0, table ? 1 : 0, direct ? 1 : 0, quad_light ? 1 : 0)},
+                               "MATC_COST_DIRECT {}\n#define MATC_COST_QUAD_LIGHT {}\n#define "
+                               "MATC_COST_CLOSED_FORM {}",
+                               ours ? 1 : 0, table ? 1 : 0, direct ? 1 : 0, quad_light ? 1 : 0,
+                               closed_form ? 1 : 0)},
        {"library", build.library_source(ShaderLanguage::glsl)},
        {"material", build.material_source(ShaderLanguage::glsl, compiled)},
        {"name", compiled.material.name},

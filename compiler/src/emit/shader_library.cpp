@@ -65,6 +65,55 @@ std::string horner_steps(ShaderLanguage language, const runtime::BasisPolynomial
   return out;
 }
 
+// The closed form's 36 matrix constants (4 channels x 3x3 blocks) and the four channel calls.
+// GLSL and WGSL take matrices by column, HLSL by row: either way block (A, B) maps the powers
+// y^(4B..4B+3) to the rows p = 4A..4A+3.
+std::string analytic_lut_source(ShaderLanguage language,
+                                const runtime::AnalyticLutCoefficients& coefficients,
+                                runtime::BasisKind basis) {
+  constexpr std::size_t kBlocks = runtime::kAnalyticLutTerms / 4;
+  static_assert(kBlocks == 3, "the templates' matc_analytic_lut_channel takes 3x3 blocks");
+  std::string constants;
+  std::string channels;
+  for (std::size_t c = 0; c < runtime::kBasisSize; ++c) {
+    channels += fmt::format("{}\n      matc_analytic_lut_channel(x0, x1, x2, y0, y1, y2",
+                            c == 0 ? "" : ",");
+    for (std::size_t a = 0; a < kBlocks; ++a) {
+      for (std::size_t b = 0; b < kBlocks; ++b) {
+        const std::string name = fmt::format("MATC_ANALYTIC_LUT_{}_{}{}", c, a, b);
+        channels += fmt::format(",{}{}", (a * kBlocks + b) % 3 == 0 ? "\n          " : " ", name);
+        std::string values;
+        for (std::size_t outer = 0; outer < 4; ++outer) {
+          for (std::size_t inner = 0; inner < 4; ++inner) {
+            // Column-major (GLSL, WGSL): outer is the column q; row-major (HLSL): the row p.
+            const bool by_row = language == ShaderLanguage::hlsl;
+            const std::size_t p = 4 * a + (by_row ? outer : inner);
+            const std::size_t q = 4 * b + (by_row ? inner : outer);
+            values += fmt::format("{}{}", values.empty() ? "" : ", ",
+                                  float_literal(coefficients[c][p][q]));
+          }
+        }
+        switch (language) {
+          case ShaderLanguage::glsl:
+            constants += fmt::format("const mat4 {} = mat4({});\n", name, values);
+            break;
+          case ShaderLanguage::hlsl:
+            constants += fmt::format("static const float4x4 {} = float4x4({});\n", name, values);
+            break;
+          case ShaderLanguage::wgsl:
+            constants += fmt::format("const {} = mat4x4f({});\n", name, values);
+            break;
+        }
+      }
+    }
+    channels += ")";
+  }
+  return fill_template(template_path(language, "analytic_lut"),
+                       {{"basis", std::string(runtime::basis_name(basis))},
+                        {"analytic_lut_constants", constants},
+                        {"analytic_lut_channels", channels}});
+}
+
 std::string area_light_source(ShaderLanguage language, std::size_t ltc_size) {
   constexpr double kSides = static_cast<double>(runtime::kDiskLightSides);
   const double step = 2.0 * std::numbers::pi / kSides;
@@ -102,6 +151,9 @@ std::string shader_library_source(ShaderLanguage language,
             : ""},
        {"area_lights",
         options.area_light_functions ? area_light_source(language, options.ltc_size) : ""},
+       {"analytic_lut", options.analytic_lut ? analytic_lut_source(language, *options.analytic_lut,
+                                                                   options.analytic_lut_basis)
+                                             : ""},
        {"embedded_lut",
         options.embedded_lut ? embedded_lut_source(language, *options.embedded_lut) : ""}});
 }

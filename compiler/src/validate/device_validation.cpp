@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "matc/emit/validation_kernel.h"
+#include "matc/runtime/analytic_lut.h"
 #include "matc/runtime/basis_polynomial.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/lut.h"
@@ -96,6 +97,8 @@ PathValidation DeviceValidator::run(ShaderLanguage language,
       runtime::shipped_basis_polynomial(build_.options().basis);
   const runtime::LutView table = build_.stored_lut().view();
   const Lut* embedded = build_.embedded_lut();
+  const runtime::AnalyticLutCoefficients& analytic =
+      runtime::shipped_analytic_lut(build_.options().basis);
   PathValidation path;
   path.language = language;
   if (embedded) path.embedded = Discrepancy{};
@@ -113,10 +116,15 @@ PathValidation DeviceValidator::run(ShaderLanguage language,
                                     query.roughness),
              result + 8, query);
     }
+    record(path.analytic,
+           runtime::evaluate_fbar_analytic(compiled.coefficients, analytic, query.ndotv,
+                                           query.roughness),
+           result + 12, query);
   }
   path.passed = path.fresnel.max_abs <= tolerance_.fresnel &&
                 path.preintegrated.max_abs <= tolerance_.preintegrated &&
-                (!path.embedded || path.embedded->max_abs <= tolerance_.embedded);
+                (!path.embedded || path.embedded->max_abs <= tolerance_.embedded) &&
+                path.analytic.max_abs <= tolerance_.analytic;
   return path;
 }
 

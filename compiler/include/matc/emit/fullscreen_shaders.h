@@ -17,8 +17,9 @@ namespace matc {
 // coefficient table, per pixel (a textured metal).
 enum class FresnelModel { schlick, ours, table };
 // F per light (mu = V.H), preintegrated Fbar from one table fetch, or a quad area light (LTC:
-// that fetch, one LTC table fetch, the polygon integral, times Fbar).
-enum class FresnelQuantity { direct, preintegrated, quad_light };
+// that fetch, one LTC table fetch, the polygon integral, times Fbar), or Fbar without a fetch:
+// ours from matc_preintegrated_basis_analytic, Schlick's from Karis' mobile approximation.
+enum class FresnelQuantity { direct, preintegrated, quad_light, preintegrated_closed_form };
 
 // One triangle covering the viewport, from gl_VertexIndex.
 std::string fullscreen_vertex_source();

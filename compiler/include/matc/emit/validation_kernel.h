@@ -12,7 +12,7 @@
 namespace matc {
 
 inline constexpr std::size_t kValidationGroupSize = 64;
-inline constexpr std::size_t kValidationResultsPerQuery = 3;
+inline constexpr std::size_t kValidationResultsPerQuery = 4;
 
 // `library` and `material` are the sources of matc_fresnel.* and <name>.* in `language`.
 std::string validation_kernel_source(ShaderLanguage language, std::string_view library,

@@ -25,6 +25,8 @@ struct ValidationTolerance {
   double preintegrated = 1e-4;
   // Fbar from the embedded table: bilinear filtering in float32 shader code.
   double embedded = 1e-5;
+  // Fbar from the closed form: float32 Chebyshev sums (coefficients below ~1).
+  double analytic = 1e-5;
 };
 
 // One query of the kernel: mu for F, (NdotV, roughness) for Fbar.
@@ -49,6 +51,7 @@ struct PathValidation {
   Discrepancy fresnel;
   Discrepancy preintegrated;
   std::optional<Discrepancy> embedded;  // with an embedded table only
+  Discrepancy analytic;                 // the closed form (matc_preintegrated_basis_analytic)
   bool passed = false;
 };
 

@@ -1,0 +1,35 @@
+// Fits the closed form of the preintegrated table (matc/runtime/analytic_lut.h) to a baked table,
+// and writes it as the checked-in source `matc basis analytic-lut` produces.
+#pragma once
+
+#include <string>
+
+#include "matc/lut/preintegrate.h"
+#include "matc/runtime/analytic_lut.h"
+
+namespace matc {
+
+// Least squares over the table's bilinear filtering at its texel centres and the midpoints
+// between them (255 x 255 points at 128 x 128), in Chebyshev polynomials of x and y (well
+// conditioned; the coefficients stay below ~1, so float32 shaders evaluate them accurately).
+runtime::AnalyticLutCoefficients fit_analytic_lut(const Lut& table);
+
+// The same for a shipped basis' default table (128 x 128, 1024 samples per texel).
+runtime::AnalyticLutCoefficients fit_shipped_analytic_lut(runtime::BasisKind kind);
+
+// max and mean |Fbar_analytic - Fbar_texture| over the measured metals (presets without a caveat,
+// coefficients solved in `basis`) and a 65 x 65 grid of (NdotV, roughness) in [0, 1]^2, per RGB
+// channel: issue #20's measure, targets 0.005 and 5e-4.
+struct AnalyticLutError {
+  double max = 0.0;
+  double mean = 0.0;
+  double max_away_from_grazing = 0.0;  // NdotV >= 0.25
+};
+AnalyticLutError analytic_lut_error(const runtime::AnalyticLutCoefficients& analytic,
+                                    const Lut& texture, const runtime::BasisView& basis);
+
+// src/<basis>_analytic_lut_table.cpp, defining runtime::<basis>_analytic_lut().
+std::string analytic_lut_source(runtime::BasisKind kind,
+                                const runtime::AnalyticLutCoefficients& coefficients);
+
+}  // namespace matc
