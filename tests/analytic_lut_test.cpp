@@ -2,6 +2,7 @@
 // issue asks against the texture, and well defined over the whole domain.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "matc/lut/analytic_lut_fit.h"
@@ -82,6 +83,31 @@ TEST(AnalyticLut, FollowsTheMirrorAndTheFurnace) {
       EXPECT_NEAR(bbar[c], b[c], 0.01) << "b_" << c << " at mu " << mu;
   }
   EXPECT_NEAR(matc::runtime::preintegrated_basis_analytic(analytic, 1.0, 0.0)[0], 1.0, 0.005);
+}
+
+// matc_energy_compensation reads the albedo bbar_0: 1 + F0 (1 - E) / E from the closed form must
+// stay near the texture's for the brightest F0 (1), where the difference is largest.
+TEST(AnalyticLut, EnergyCompensationFollowsTheTexture) {
+  const auto basis = matc::runtime::shipped_basis();
+  const matc::Lut texture = matc::preintegrate_lut(basis, matc::LutOptions{});
+  const auto& analytic = matc::runtime::shipped_analytic_lut(matc::runtime::kDefaultBasis);
+  const auto compensation = [](double albedo) {
+    albedo = std::max(albedo, 1e-4);
+    return 1.0 + (1.0 - albedo) / albedo;
+  };
+  double worst = 0.0;
+  for (std::size_t j = 0; j <= 64; ++j) {
+    for (std::size_t i = 0; i <= 64; ++i) {
+      const double ndotv = static_cast<double>(i) / 64.0;
+      const double roughness = static_cast<double>(j) / 64.0;
+      const double closed_form =
+          matc::runtime::preintegrated_basis_analytic(analytic, ndotv, roughness)[0];
+      const double fetched = matc::runtime::sample_lut(texture.view(), ndotv, roughness)[0];
+      worst = std::max(worst, std::abs(compensation(closed_form) - compensation(fetched)));
+    }
+  }
+  EXPECT_LE(worst, 0.01);
+  EXPECT_GT(worst, 0.0);
 }
 
 }  // namespace
