@@ -1,19 +1,20 @@
 // The GLSL output as GLSL ES 3.00 in WebGL2, run by an implementation matc did not write: headless
 // Chromium (ANGLE translating for SwiftShader). Every example material's snippet is compiled with
-// the shared library into a fragment shader that renders F over the cosines and Fbar from the
-// preintegrated table (an RGBA32F texture, linear filtering) over the (NdotV, roughness) grid of
-// `matc validate`, into an RGBA32F target read back as floats. Textured metals too: coefficients
+// the shared library into a fragment shader that renders F over the cosines, Fbar from the
+// preintegrated table (an RGBA32F texture, linear filtering) and Fbar from the table's closed form
+// (matc_preintegrated_basis_analytic) over the (NdotV, roughness) grid of `matc validate`, into an
+// RGBA32F target read back as floats. Textured metals too: coefficients
 // from the coefficient table (an RG32F texture) for a few per-channel (r, g). Everything is
-// compared with the CPU runtime (`matc eval`) at matc validate's tolerances: F 1e-5, Fbar and
-// anything through the coefficient table 1e-4.
+// compared with the CPU runtime (`matc eval`) at matc validate's tolerances: F and the closed form
+// 1e-5, Fbar and anything through the coefficient table 1e-4.
 //   node check-webgl2.mjs MATC MATERIALS_DIR
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { check, finish } from "./report.mjs";
 import {
-  chromiumPath, compileAndEvaluate, kFresnelTolerance, kPreintegratedTolerance, largestDifference,
-  run, validationQueries,
+  chromiumPath, compileAndEvaluate, kClosedFormTolerance, kFresnelTolerance, kPreintegratedTolerance,
+  largestDifference, run, validationQueries,
 } from "./shader-cases.mjs";
 
 const [matc, materialsDir] = process.argv.slice(2);
@@ -51,13 +52,13 @@ try {
   const tableTexels = new Float32Array(table.length * 2);
   for (let i = 0; i < table.length / 2; ++i) tableTexels.set([table[2 * i], table[2 * i + 1], 0, 0], 4 * i);
   texture(2, data.tableSize, data.tableSize, tableTexels, gl.LINEAR);
-  const target = texture(3, count, 2, null, gl.NEAREST);
+  const target = texture(3, count, 3, null, gl.NEAREST);
   const framebuffer = gl.createFramebuffer();
   gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
   gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, target, 0);
   if (gl.checkFramebufferStatus(gl.FRAMEBUFFER) !== gl.FRAMEBUFFER_COMPLETE)
     throw new Error("RGBA32F render target incomplete");
-  gl.viewport(0, 0, count, 2);
+  gl.viewport(0, 0, count, 3);
   const compile = (type, source) => {
     const shader = gl.createShader(type);
     gl.shaderSource(shader, source);
@@ -84,8 +85,8 @@ try {
       for (const [name, value] of Object.entries(material.uniforms || {}))
         gl.uniform3fv(gl.getUniformLocation(program, name), value);
       gl.drawArrays(gl.TRIANGLES, 0, 3);
-      const pixels = new Float32Array(count * 2 * 4);
-      gl.readPixels(0, 0, count, 2, gl.RGBA, gl.FLOAT, pixels);
+      const pixels = new Float32Array(count * 3 * 4);
+      gl.readPixels(0, 0, count, 3, gl.RGBA, gl.FLOAT, pixels);
       // Read back as base64 of the float bytes; Node compares them with the CPU runtime.
       const bytes = new Uint8Array(pixels.buffer);
       let binary = "";
@@ -103,7 +104,8 @@ document.getElementById("result").textContent = JSON.stringify(out);
 `;
 
 // What every fragment shader puts before the library, and what follows it: row 0 of the target
-// is F(mu), row 1 Fbar(NdotV, roughness), one column per query. COEFFICIENTS is a compiled
+// is F(mu), row 1 Fbar(NdotV, roughness) through the table, row 2 the same from its closed form,
+// one column per query. COEFFICIENTS is a compiled
 // material's constant or the coefficient table's result.
 const kPrelude = "#version 300 es\nprecision highp float;\nprecision highp int;\n" +
                  "precision highp sampler2D;\n";
@@ -122,7 +124,9 @@ void main() {
   MatcFresnelCoefficients c = ${coefficients};
   vec3 value = pixel.y == 0
       ? matc_fresnel(c, query.x)
-      : matc_fresnel_preintegrated(c, texture(matc_lut, matc_lut_texcoord(query.y, query.z)));
+      : matc_fresnel_preintegrated(c, pixel.y == 1
+            ? texture(matc_lut, matc_lut_texcoord(query.y, query.z))
+            : matc_preintegrated_basis_analytic(query.y, query.z));
   matc_result = vec4(value, 1.0);
 }
 `;
@@ -134,10 +138,11 @@ try {
       matc, materialsDir, join(dir, "out"), "glsl",
       ["--lut-precision", "f32", "--coefficient-table-precision", "f32"], queries);
   const cases = materials.map((m) => ({
-    name: m.name, F: m.F, Fbar: m.Fbar, tolerance: kFresnelTolerance,
+    name: m.name, F: m.F, Fbar: m.Fbar, FbarAnalytic: m.FbarAnalytic, tolerance: kFresnelTolerance,
     source: m.snippet + main(`matc_coefficients_${m.name}`) }));
   for (const metal of textured) {
-    cases.push({ name: metal.name, F: metal.F, Fbar: metal.Fbar, tolerance: kPreintegratedTolerance,
+    cases.push({ name: metal.name, F: metal.F, Fbar: metal.Fbar, FbarAnalytic: metal.FbarAnalytic,
+                 tolerance: kPreintegratedTolerance,
                  uniforms: { matc_reflectivity: metal.reflectivity, matc_edge_tint: metal.edgeTint },
                  source: main("MATC_COEFFICIENTS_FROM_TABLE(matc_coefficient_table, r, g)") });
   }
@@ -176,8 +181,13 @@ try {
     const count = queries.count;
     const fresnel = largestDifference(pixels, cases[index].F, 4, 0);           // row 0: F(mu)
     const preintegrated = largestDifference(pixels, cases[index].Fbar, 4, count * 4);  // row 1
+    const closedForm = largestDifference(pixels, cases[index].FbarAnalytic, 4, count * 8);  // row 2
     console.log(`${m.name}: F ${fresnel.max_abs.toExponential(2)}, ` +
-                `Fbar ${preintegrated.max_abs.toExponential(2)}`);
+                `Fbar ${preintegrated.max_abs.toExponential(2)}, ` +
+                `Fbar_analytic ${closedForm.max_abs.toExponential(2)}`);
+    check(closedForm.max_abs <= Math.max(tolerance, kClosedFormTolerance),
+          `${m.name}: |Fbar_analytic_webgl2 - Fbar_analytic_cpu| = ${closedForm.max_abs} at query ` +
+          `${closedForm.query}`);
     check(fresnel.max_abs <= tolerance,
           `${m.name}: |F_webgl2 - F_cpu| = ${fresnel.max_abs} at query ${fresnel.query}`);
     check(preintegrated.max_abs <= kPreintegratedTolerance,
