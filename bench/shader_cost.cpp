@@ -12,12 +12,9 @@
 
 #include "matc/compile.h"
 #include "matc/emit/build.h"
-#include "matc/fit/coefficients.h"
 #include "matc/lut/analytic_lut_fit.h"
 #include "matc/lut/comparison_lobes.h"
 #include "matc/material/parse.h"
-#include "matc/optics/presets.h"
-#include "matc/optics/spectral.h"
 #include "matc/runtime/lut.h"
 #include "matc/spirv/spirv_tools.h"
 
@@ -134,12 +131,7 @@ void print_instruction_counts(const matc::Build& build, const matc::CompiledMate
 void print_embedded_accuracy(const matc::LutOptions& texture_options) {
   const matc::runtime::BasisView basis = matc::runtime::shipped_basis();
   const matc::Lut texture = matc::preintegrate_lut(basis, texture_options);
-  std::vector<matc::runtime::Coefficients> metals;
-  for (const matc::MetalPreset& preset : matc::metal_presets()) {
-    if (!preset.caveat.empty()) continue;
-    metals.push_back(
-        matc::solve_coefficients(matc::SpectralCurve(matc::preset_spectrum(preset)), basis));
-  }
+  const std::vector<matc::runtime::Coefficients> metals = matc::measured_metal_coefficients(basis);
   fmt::print(
       "| embedded table | constants in the shader | max abs(Fbar - texture) | mean |\n"
       "|---|---:|---:|---:|\n");
@@ -210,10 +202,8 @@ void print_closed_form_accuracy() {
   double sum = 0.0;
   std::size_t count = 0;
   constexpr std::size_t kGrid = 65;
-  for (const matc::MetalPreset& preset : matc::metal_presets()) {
-    if (!preset.caveat.empty()) continue;
-    const auto coefficients = matc::solve_coefficients(
-        matc::SpectralCurve(matc::preset_spectrum(preset)), matc::runtime::shipped_basis());
+  for (const matc::runtime::Coefficients& coefficients :
+       matc::measured_metal_coefficients(matc::runtime::shipped_basis())) {
     for (std::size_t y = 0; y < kGrid; ++y) {
       for (std::size_t x = 0; x < kGrid; ++x) {
         const double ndotv = static_cast<double>(x) / (kGrid - 1);

@@ -201,12 +201,14 @@ int run_compile(const CompileOptions& options) {
   const bool inputs_valid =
       std::all_of(jobs.begin(), jobs.end(), [](const Job& job) { return job.admitted; });
 
-  // Workers take the next valid job; without --keep-going the first failure stops new ones.
+  // Workers take the next valid job; without --keep-going the first failure stops new ones, and
+  // an invalid input stops all.
+  const auto queued = [&](const Job& job) {
+    return job.admitted && (inputs_valid || options.keep_going);
+  };
   std::vector<std::size_t> queue;
-  if (inputs_valid || options.keep_going) {
-    for (std::size_t i = 0; i < jobs.size(); ++i)
-      if (jobs[i].admitted) queue.push_back(i);
-  }
+  for (std::size_t i = 0; i < jobs.size(); ++i)
+    if (queued(jobs[i])) queue.push_back(i);
   const fs::path depfile = !options.depfile.empty() ? fs::path(options.depfile)
                            : options.write_depfile  ? output_directory / kDepfileName
                                                     : fs::path();
@@ -248,12 +250,8 @@ int run_compile(const CompileOptions& options) {
     }
     job.diagnostics = Diagnostics();
   });
-  for (std::size_t i = 0, slot = 0; i < jobs.size(); ++i) {
-    if (slot < queue.size() && queue[slot] == i)
-      ++slot;
-    else
-      in_order.done(i);  // not compiled: only its diagnostics to report
-  }
+  for (std::size_t i = 0; i < jobs.size(); ++i)
+    if (!queued(jobs[i])) in_order.done(i);  // not compiled: only its diagnostics to report
 
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};

@@ -161,46 +161,44 @@ int main(int argc, char** argv) {
   CLI::App* basis_command = app.add_subcommand("basis", "Show the Fresnel basis b_0..b_3");
   basis_command->add_flag("--json", basis.json, "Print {mu, b, probes} as JSON");
   add_basis_option(*basis_command, basis.basis);
+  // `matc basis` subcommands that regenerate checked-in C++ source: -o names where it lives.
+  const auto add_source_command = [&](const char* name, const char* description,
+                                      const char* checked_in, BasisFitOptions& options,
+                                      bool per_basis) {
+    CLI::App* command = basis_command->add_subcommand(name, description);
+    command->add_option("-o,--output", options.output,
+                        fmt::format("Where to write ({}); default stdout", checked_in));
+    if (per_basis) add_basis_option(*command, options.basis);
+    return command;
+  };
   BasisFitOptions basis_fit;
-  CLI::App* fit_command = basis_command->add_subcommand(
-      "fit", "Refit the basis from its training set and write the C++ table source");
-  fit_command->add_option("-o,--output", basis_fit.output,
-                          "Where to write (runtime/src/<basis>_basis_table.cpp); default stdout");
-  add_basis_option(*fit_command, basis_fit.basis);
+  CLI::App* fit_command = add_source_command(
+      "fit", "Refit the basis from its training set and write the C++ table source",
+      "runtime/src/<basis>_basis_table.cpp", basis_fit, true);
   BasisFitOptions table_fit;
-  CLI::App* table_fit_command = basis_command->add_subcommand(
+  CLI::App* table_fit_command = add_source_command(
       "coefficient-table",
       "Refit the coefficient table (c_2, c_3 over reflectivity and edge tint) and write its C++ "
-      "source");
-  table_fit_command->add_option(
-      "-o,--output", table_fit.output,
-      "Where to write (runtime/src/<basis>_coefficient_table.cpp); default stdout");
-  add_basis_option(*table_fit_command, table_fit.basis);
+      "source",
+      "runtime/src/<basis>_coefficient_table.cpp", table_fit, true);
   BasisFitOptions analytic_lut;
-  CLI::App* analytic_lut_command = basis_command->add_subcommand(
+  CLI::App* analytic_lut_command = add_source_command(
       "analytic-lut",
       "Bake the basis' default preintegrated table, fit its closed form (two degree-11 "
-      "polynomials per channel, docs/lut.md) and write the C++ source");
-  analytic_lut_command->add_option(
-      "-o,--output", analytic_lut.output,
-      "Where to write (runtime/src/<basis>_analytic_lut_table.cpp); default stdout");
-  add_basis_option(*analytic_lut_command, analytic_lut.basis);
+      "polynomials per channel, docs/lut.md) and write the C++ source",
+      "runtime/src/<basis>_analytic_lut_table.cpp", analytic_lut, true);
   BasisFitOptions lut_hashes;
-  CLI::App* lut_hashes_command = basis_command->add_subcommand(
+  CLI::App* lut_hashes_command = add_source_command(
       "lut-hashes",
       "Bake the default preintegrated table of every basis and write the C++ source of its "
-      "files' hashes (what headers and manifests name without baking)");
-  lut_hashes_command->add_option(
-      "-o,--output", lut_hashes.output,
-      "Where to write (compiler/src/lut/default_lut_hashes.cpp); default stdout");
+      "files' hashes (what headers and manifests name without baking)",
+      "compiler/src/lut/default_lut_hashes.cpp", lut_hashes, false);
   BasisFitOptions material_modules;
-  CLI::App* material_modules_command = basis_command->add_subcommand(
+  CLI::App* material_modules_command = add_source_command(
       "material-modules",
       "Compile every basis' material library module with placeholder coefficients and write the "
-      "C++ source of those templates (what per-material SPIR-V is patched from)");
-  material_modules_command->add_option(
-      "-o,--output", material_modules.output,
-      "Where to write (compiler/src/emit/material_module_templates.cpp); default stdout");
+      "C++ source of those templates (what per-material SPIR-V is patched from)",
+      "compiler/src/emit/material_module_templates.cpp", material_modules, false);
   LtcTableOptions ltc_table;
   CLI::App* ltc_table_command = basis_command->add_subcommand(
       "ltc-table",

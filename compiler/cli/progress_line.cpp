@@ -15,15 +15,20 @@ void ProgressLine::finished(const std::string& name) {
   const std::lock_guard lock(mutex_);
   ++done_;
   last_ = name;
-  fmt::print(stderr, "\r\x1b[K[{}/{}] {}", done_, total_, name);
-  std::fflush(stderr);
+  fmt::print(stderr, "\r\x1b[K");
+  draw();
 }
 
 void ProgressLine::print_above(const std::function<void()>& print) {
   const std::lock_guard lock(mutex_);
   if (enabled_ && done_ > 0) fmt::print(stderr, "\r\x1b[K");
   print();
-  if (enabled_ && done_ > 0) fmt::print(stderr, "[{}/{}] {}", done_, total_, last_);
+  if (enabled_ && done_ > 0) draw();
+  std::fflush(stderr);
+}
+
+void ProgressLine::draw() {
+  fmt::print(stderr, "[{}/{}] {}", done_, total_, last_);
   std::fflush(stderr);
 }
 

@@ -21,6 +21,8 @@ class ProgressLine {
   void clear();
 
  private:
+  void draw();  // "[done/total] last", at the cursor (the mutex held)
+
   std::mutex mutex_;
   std::size_t total_;
   std::size_t done_ = 0;

@@ -38,12 +38,9 @@ std::array<double, kAnalyticLutTerms> analytic_lut_chebyshev(double x) {
   t[2] = 2.0 * x * x - 1.0;
   t[3] = 2.0 * x * t[2] - x;
   for (std::size_t base : {4u, 8u}) {
-    const double anchor = 2.0 * t[base / 2] * t[base / 2] - 1.0;  // T_2n = 2 T_n^2 - 1
-    for (std::size_t k = 0; k < 4; ++k) {
-      const std::size_t reflected = base - k;  // T_(base+k) = 2 T_base T_k - T_(base-k)
-      const double lower = k == 0 ? anchor : t[reflected];
-      t[base + k] = 2.0 * anchor * t[k] - lower;
-    }
+    t[base] = 2.0 * t[base / 2] * t[base / 2] - 1.0;  // T_2n = 2 T_n^2 - 1
+    for (std::size_t k = 1; k < 4; ++k)
+      t[base + k] = 2.0 * t[base] * t[k] - t[base - k];  // T_(m+k) = 2 T_m T_k - T_(m-k)
   }
   return t;
 }

@@ -152,8 +152,7 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
   ShaderLibraryOptions library_options{options_.lut.size, stored_coefficient_table_.size(),
                                        embedded_lut()};
   library_options.ltc_size = runtime::shipped_ltc_table().size;
-  library_options.analytic_lut = &runtime::shipped_analytic_lut(options_.basis);
-  library_options.analytic_lut_basis = options_.basis;
+  library_options.analytic_lut = options_.basis;
   const runtime::BasisPolynomial& polynomial = runtime::shipped_basis_polynomial(options_.basis);
   glsl_library_ =
       shader_library_source(ShaderLanguage::glsl, polynomial, library_options, inputs_hash_);
@@ -163,7 +162,7 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
       shader_library_source(ShaderLanguage::wgsl, polynomial, library_options, inputs_hash_);
   library_options.coefficient_table_functions = false;
   library_options.area_light_functions = false;
-  library_options.analytic_lut = nullptr;
+  library_options.analytic_lut.reset();
   glsl_material_module_library_ =
       shader_library_source(ShaderLanguage::glsl, polynomial, library_options, inputs_hash_);
 }

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "matc/emit/template.h"
+#include "matc/runtime/analytic_lut.h"
 #include "matc/version.h"
 
 namespace matc {
@@ -68,9 +69,8 @@ std::string horner_steps(ShaderLanguage language, const runtime::BasisPolynomial
 // The closed form's 36 matrix constants (4 channels x 3x3 blocks) and the four channel calls.
 // GLSL and WGSL take matrices by column, HLSL by row: either way block (A, B) maps the powers
 // y^(4B..4B+3) to the rows p = 4A..4A+3.
-std::string analytic_lut_source(ShaderLanguage language,
-                                const runtime::AnalyticLutCoefficients& coefficients,
-                                runtime::BasisKind basis) {
+std::string analytic_lut_source(ShaderLanguage language, runtime::BasisKind basis) {
+  const runtime::AnalyticLutCoefficients& coefficients = runtime::shipped_analytic_lut(basis);
   constexpr std::size_t kBlocks = runtime::kAnalyticLutTerms / 4;
   static_assert(kBlocks == 3, "the templates' matc_analytic_lut_channel takes 3x3 blocks");
   std::string constants;
@@ -81,7 +81,7 @@ std::string analytic_lut_source(ShaderLanguage language,
     for (std::size_t a = 0; a < kBlocks; ++a) {
       for (std::size_t b = 0; b < kBlocks; ++b) {
         const std::string name = fmt::format("MATC_ANALYTIC_LUT_{}_{}{}", c, a, b);
-        channels += fmt::format(",{}{}", (a * kBlocks + b) % 3 == 0 ? "\n          " : " ", name);
+        channels += fmt::format(",{}{}", b == 0 ? "\n          " : " ", name);  // a row a line
         std::string values;
         for (std::size_t outer = 0; outer < 4; ++outer) {
           for (std::size_t inner = 0; inner < 4; ++inner) {
@@ -151,9 +151,8 @@ std::string shader_library_source(ShaderLanguage language,
             : ""},
        {"area_lights",
         options.area_light_functions ? area_light_source(language, options.ltc_size) : ""},
-       {"analytic_lut", options.analytic_lut ? analytic_lut_source(language, *options.analytic_lut,
-                                                                   options.analytic_lut_basis)
-                                             : ""},
+       {"analytic_lut",
+        options.analytic_lut ? analytic_lut_source(language, *options.analytic_lut) : ""},
        {"embedded_lut",
         options.embedded_lut ? embedded_lut_source(language, *options.embedded_lut) : ""}});
 }

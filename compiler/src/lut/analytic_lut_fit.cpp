@@ -62,13 +62,18 @@ runtime::AnalyticLutCoefficients fit_shipped_analytic_lut(runtime::BasisKind kin
   return fit_analytic_lut(preintegrate_lut(runtime::shipped_basis(kind), LutOptions{}));
 }
 
-AnalyticLutError analytic_lut_error(const runtime::AnalyticLutCoefficients& analytic,
-                                    const Lut& texture, const runtime::BasisView& basis) {
+std::vector<runtime::Coefficients> measured_metal_coefficients(const runtime::BasisView& basis) {
   std::vector<runtime::Coefficients> metals;
   for (const MetalPreset& preset : metal_presets()) {
     if (preset.caveat.empty())
       metals.push_back(solve_coefficients(SpectralCurve(preset_spectrum(preset)), basis));
   }
+  return metals;
+}
+
+AnalyticLutError analytic_lut_error(const runtime::AnalyticLutCoefficients& analytic,
+                                    const Lut& texture, const runtime::BasisView& basis) {
+  const std::vector<runtime::Coefficients> metals = measured_metal_coefficients(basis);
   constexpr std::size_t kGrid = 65;
   AnalyticLutError error;
   std::size_t count = 0;

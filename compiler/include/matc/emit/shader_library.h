@@ -1,6 +1,7 @@
 // The shared shader library matc_fresnel.glsl / .hlsl: basis, F, LUT lookup, energy compensation.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -8,7 +9,7 @@
 #include "matc/fit/coefficient_table.h"
 #include "matc/ltc/ltc_fit.h"
 #include "matc/lut/preintegrate.h"
-#include "matc/runtime/analytic_lut.h"
+#include "matc/runtime/basis.h"
 #include "matc/runtime/basis_polynomial.h"
 
 namespace matc {
@@ -24,9 +25,9 @@ struct ShaderLibraryOptions {
   // The area-light functions (LTC quad and disk lights) and the LTC table's size (MATC_LTC_SIZE).
   bool area_light_functions = true;
   std::size_t ltc_size = kDefaultLtcSize;
-  // The closed form of the table (matc_preintegrated_basis_analytic) and its basis; null for none.
-  const runtime::AnalyticLutCoefficients* analytic_lut = nullptr;
-  runtime::BasisKind analytic_lut_basis = runtime::kDefaultBasis;
+  // The closed form of this basis' table (matc_preintegrated_basis_analytic, its checked-in
+  // coefficients); none without a value.
+  std::optional<runtime::BasisKind> analytic_lut = std::nullopt;
 };
 
 std::string shader_library_source(ShaderLanguage language,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "matc/lut/preintegrate.h"
 #include "matc/runtime/analytic_lut.h"
@@ -16,6 +17,10 @@ runtime::AnalyticLutCoefficients fit_analytic_lut(const Lut& table);
 
 // The same for a shipped basis' default table (128 x 128, 1024 samples per texel).
 runtime::AnalyticLutCoefficients fit_shipped_analytic_lut(runtime::BasisKind kind);
+
+// The materials every texture-free Fbar is measured on (here and by the benchmarks): the measured
+// metals (presets without a caveat), their coefficients solved in `basis`.
+std::vector<runtime::Coefficients> measured_metal_coefficients(const runtime::BasisView& basis);
 
 // max and mean |Fbar_analytic - Fbar_texture| over the measured metals (presets without a caveat,
 // coefficients solved in `basis`) and a 65 x 65 grid of (NdotV, roughness) in [0, 1]^2, per RGB
