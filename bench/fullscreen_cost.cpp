@@ -71,6 +71,16 @@ int main(int argc, char** argv) {
   const matc::runtime::LtcTableView ltc = matc::runtime::shipped_ltc_table();
   const matc::vulkan::Image ltc_table(context, static_cast<std::uint32_t>(ltc.size),
                                       static_cast<std::uint32_t>(ltc.size), ltc.texels);
+  // The textured metal's reflectivity and edge-tint maps (the same one at both bindings): values
+  // spread over [0, 0.95] so the table's texture coordinates vary from pixel to pixel.
+  constexpr std::uint32_t kMapSize = 64;
+  std::vector<float> map_texels;
+  for (std::uint32_t i = 0; i < kMapSize * kMapSize; ++i) {
+    for (const double scale : {3.1, 5.3, 7.7})
+      map_texels.push_back(static_cast<float>(0.95 * std::fmod(i * scale / kMapSize, 1.0)));
+    map_texels.push_back(1.0f);
+  }
+  const matc::vulkan::Image material_map(context, kMapSize, kMapSize, map_texels);
   const matc::vulkan::LutSampler sampler(context);
   const matc::SpirvWords vertex = matc::compile_fullscreen_stage(
       matc::fullscreen_vertex_source(), matc::ShaderStage::vertex, "fullscreen.vert");
@@ -79,11 +89,12 @@ int main(int argc, char** argv) {
     const char* label;
     matc::FresnelQuantity quantity;
   };
-  const std::array<Variant, 4> variants = {
+  const std::array<Variant, 5> variants = {
       Variant{"Fbar, image-based light (one RGBA32F fetch)", matc::FresnelQuantity::preintegrated},
       Variant{"Fbar without a fetch: ours in closed form, Schlick's by Karis' approximation",
               matc::FresnelQuantity::preintegrated_closed_form},
-      Variant{"F, one direct light (no fetch)", matc::FresnelQuantity::direct},
+      Variant{"F alone (no fetch)", matc::FresnelQuantity::direct},
+      Variant{"one GGX light: D, Smith V, F, NdotL (no fetch)", matc::FresnelQuantity::ggx_light},
       Variant{"one quad light, LTC (two RGBA32F fetches, the polygon integral)",
               matc::FresnelQuantity::quad_light}};
 
@@ -103,6 +114,7 @@ int main(int argc, char** argv) {
     std::array<std::unique_ptr<matc::vulkan::FullscreenPass>, kModels.size()> passes;
     for (std::size_t which = 0; which < kModels.size(); ++which) {
       const bool schlick = kModels[which] == matc::FresnelModel::schlick;
+      const int maps = matc::material_map_count(kModels[which]);
       const matc::SpirvWords fragment =
           matc::compile_fullscreen_stage(matc::cost_pass_source(build, material, kModels[which],
                                                                 variant.quantity, kWidth, kHeight),
@@ -114,6 +126,9 @@ int main(int argc, char** argv) {
         bindings.push_back(matc::vulkan::Binding::sampled_image(2, coefficient_table));
       if (variant.quantity == matc::FresnelQuantity::quad_light)
         bindings.push_back(matc::vulkan::Binding::sampled_image(3, ltc_table));
+      for (int map = 0; map < maps; ++map)
+        bindings.push_back(matc::vulkan::Binding::sampled_image(4 + static_cast<std::uint32_t>(map),
+                                                                material_map));
       const auto start = std::chrono::steady_clock::now();
       passes[which] = std::make_unique<matc::vulkan::FullscreenPass>(context, vertex, fragment,
                                                                      bindings, kWidth, kHeight);

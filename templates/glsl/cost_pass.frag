@@ -1,9 +1,11 @@
 #version 450
-// matc {{version}}: the full-screen pass of the cost benchmark (bench/fullscreen_cost.cpp). Every
-// variant reads the same RGBA32F table once through the same texture coordinates (the closed-form
-// quantity reads none) and writes the same target; only the Fresnel differs: {{variant}}. The
-// coefficient-table variant also fetches its coefficients, three times, from the table bound at
-// binding 2; the quad-light quantity also reads the LTC table at binding 3.
+// matc {{version}}: the full-screen pass of the cost benchmarks (bench/fullscreen_cost.cpp times it
+// on a Vulkan device, bench/gpu_cost.cpp reads its instruction cost on AMD's ISA). Every variant
+// of a quantity does the same work around the Fresnel and writes the same target; only the
+// Fresnel differs: {{variant}}.
+// Bindings (set 0): 0 the preintegrated table, 1 the sampler, 2 the coefficient table (its .xy),
+// 3 the LTC table, 4-6 material maps: Schlick's textured F0 at 4; the coefficient table's
+// reflectivity and edge tint at 4 and 5; baked coefficient textures F0, C2, C3 at 4, 5, 6.
 {{defines}}
 {{library}}
 {{material}}
@@ -15,31 +17,82 @@ layout(set = 0, binding = 2) uniform texture2D matc_coefficient_table;
 #if MATC_COST_QUAD_LIGHT
 layout(set = 0, binding = 3) uniform texture2D matc_ltc;
 #endif
+#if MATC_COST_MAPS >= 1
+layout(set = 0, binding = 4) uniform texture2D map_a;
+#endif
+#if MATC_COST_MAPS >= 2
+layout(set = 0, binding = 5) uniform texture2D map_b;
+#endif
+#if MATC_COST_MAPS >= 3
+layout(set = 0, binding = 6) uniform texture2D map_c;
+#endif
 layout(location = 0) out vec4 colour;
 
-const vec3 F0 = vec3({{f0}});
+const float PI = 3.14159265358979;
+
+// Schlick's F as engines write it: (1 - mu)^5 by multiplications (Filament's pow5).
+vec3 matc_cost_schlick(vec3 f0, float mu) {
+  float m = 1.0 - mu;
+  float m2 = m * m;
+  return f0 + (vec3(1.0) - f0) * (m2 * m2 * m);
+}
 
 void main() {
   // Every pixel a different (NdotV, roughness), like the pixels of a shaded object.
   vec2 uv = gl_FragCoord.xy / vec2({{width}}.0, {{height}}.0);
-#if MATC_COST_TABLE
-  // A textured metal: r and g change from pixel to pixel (a few multiply-adds stand in for the
-  // texture reads every model would make for its base colour).
-  vec3 r = fract(uv.xyx * vec3(3.1, 5.3, 7.7)) * 0.95;
-  vec3 g = fract(uv.yxy * vec3(2.3, 4.1, 6.7));
-  MatcFresnelCoefficients c =
-      MATC_COEFFICIENTS_FROM_TABLE(sampler2D(matc_coefficient_table, matc_lut_sampler), r, g);
+#if MATC_COST_MAPS >= 1
+  // A textured metal: its maps read at a texture coordinate of its own.
+  vec2 map_uv = uv * vec2(3.1, 5.3);
+  vec3 a = textureLod(sampler2D(map_a, matc_lut_sampler), map_uv, 0.0).xyz;
 #endif
-#if MATC_COST_DIRECT
-  float mu = uv.x;
-#if MATC_COST_TABLE
-  vec3 f = matc_fresnel(c, mu);
-#elif MATC_COST_OURS
-  vec3 f = matc_fresnel_{{name}}(mu);
+#if MATC_COST_MAPS >= 2
+  vec3 b = textureLod(sampler2D(map_b, matc_lut_sampler), map_uv, 0.0).xyz;
+#endif
+#if MATC_COST_MAPS >= 3
+  vec3 c3 = textureLod(sampler2D(map_c, matc_lut_sampler), map_uv, 0.0).xyz;
+#endif
+#if MATC_COST_SCHLICK
+#if MATC_COST_MAPS
+  vec3 F0 = a;
 #else
-  vec3 f = F0 + (vec3(1.0) - F0) * pow(1.0 - mu, 5.0);
+  const vec3 F0 = vec3({{f0}});
 #endif
-  colour = vec4(f * uv.y, 1.0);
+#elif MATC_COST_TABLE
+  MatcFresnelCoefficients c =
+      MATC_COEFFICIENTS_FROM_TABLE(sampler2D(matc_coefficient_table, matc_lut_sampler), a, b);
+#elif MATC_COST_BAKED
+  MatcFresnelCoefficients c = matc_coefficients_from_baked(a, b, c3);
+#else
+  MatcFresnelCoefficients c = matc_coefficients_{{name}};
+#endif
+// F at mu = V.H and Fbar from a texel of the model's table, for each model.
+#if MATC_COST_SCHLICK
+#define COST_FRESNEL(MU) matc_cost_schlick(F0, (MU))
+#define COST_FRESNEL_PREINTEGRATED(TEXEL) (F0 * (TEXEL).x + (vec3(1.0) - F0) * (TEXEL).y)
+#else
+#define COST_FRESNEL(MU) matc_fresnel(c, (MU))
+#define COST_FRESNEL_PREINTEGRATED(TEXEL) matc_fresnel_preintegrated(c, (TEXEL))
+#endif
+
+#if MATC_COST_DIRECT
+  // F alone, per light.
+  vec3 f = COST_FRESNEL(uv.x) * uv.y;
+#elif MATC_COST_GGX_LIGHT
+  // One punctual light, as engines shade it: GGX D, height-correlated Smith V, F, NdotL.
+  vec3 N = normalize(vec3(uv.x - 0.5, 0.6, uv.y - 0.5));
+  vec3 V = normalize(vec3(0.3 - uv.y, 1.0, 0.2));
+  vec3 L = normalize(vec3(-0.4, 0.8, 0.3));
+  vec3 H = normalize(V + L);
+  float NoV = max(dot(N, V), 1e-4);
+  float NoL = clamp(dot(N, L), 0.0, 1.0);
+  float NoH = clamp(dot(N, H), 0.0, 1.0);
+  float VoH = clamp(dot(V, H), 0.0, 1.0);
+  float alpha = uv.y * uv.y;
+  float a2 = alpha * alpha;
+  float d = (NoH * a2 - NoH) * NoH + 1.0;
+  float D = a2 / (PI * d * d);
+  float Vis = 0.5 / (NoL * sqrt(NoV * NoV * (1.0 - a2) + a2) + NoV * sqrt(NoL * NoL * (1.0 - a2) + a2));
+  vec3 f = COST_FRESNEL(VoH) * (D * Vis * NoL);
 #elif MATC_COST_QUAD_LIGHT
   // A quad light over a field of normals: each pixel its own N (so its own NdotV), P and the
   // roughness uv.y; the LTC integral is the same code in every variant, only the Fresnel differs.
@@ -51,39 +104,24 @@ void main() {
   vec4 ltc = textureLod(sampler2D(matc_ltc, matc_lut_sampler), matc_ltc_texcoord(ndotv, uv.y), 0.0);
   vec3 q0 = vec3(-1.0, 2.0, -1.5), q1 = vec3(1.0, 2.0, -1.5);
   vec3 q2 = vec3(1.0, 2.5, -0.5), q3 = vec3(-1.0, 2.5, -0.5);
-#if MATC_COST_TABLE
-  vec3 f = matc_ltc_quad_light(c, texel, ltc, N, V, P, q0, q1, q2, q3);
-#elif MATC_COST_OURS
-  vec3 f = matc_ltc_quad_light(matc_coefficients_{{name}}, texel, ltc, N, V, P, q0, q1, q2, q3);
-#else
   float integral = matc_ltc_quad_integral(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3);
-  vec3 f = integral * (F0 * texel.x + (vec3(1.0) - F0) * texel.y);
-#endif
-  colour = vec4(f, 1.0);
+  vec3 f = integral * COST_FRESNEL_PREINTEGRATED(texel);
 #elif MATC_COST_CLOSED_FORM
   // Fbar without a texture: the closed form of our table, or Karis' analytic fit of Schlick's
   // split sum ("Physically Based Shading on Mobile", 2014) with the same roughness.
-#if MATC_COST_TABLE
-  vec3 f = matc_fresnel_preintegrated(c, matc_preintegrated_basis_analytic(uv.x, uv.y));
-#elif MATC_COST_OURS
-  vec3 f = matc_fresnel_preintegrated_{{name}}(matc_preintegrated_basis_analytic(uv.x, uv.y));
-#else
+#if MATC_COST_SCHLICK
   vec4 r4 = uv.y * vec4(-1.0, -0.0275, -0.572, 0.022) + vec4(1.0, 0.0425, 1.04, -0.04);
   float a004 = min(r4.x * r4.x, exp2(-9.28 * uv.x)) * r4.x + r4.y;
   vec2 ab = vec2(-1.04, 1.04) * a004 + r4.zw;
   vec3 f = F0 * ab.x + ab.y;
-#endif
-  colour = vec4(f, 1.0);
 #else
+  vec3 f = matc_fresnel_preintegrated(c, matc_preintegrated_basis_analytic(uv.x, uv.y));
+#endif
+#else
+  // Fbar for image-based light: one fetch of the table (for Schlick's, the table baked from
+  // ComparisonLobes: x = albedo, y = Schlick's lobe).
   vec4 texel = textureLod(sampler2D(matc_lut, matc_lut_sampler), matc_lut_texcoord(uv.x, uv.y), 0.0);
-#if MATC_COST_TABLE
-  vec3 f = matc_fresnel_preintegrated(c, texel);
-#elif MATC_COST_OURS
-  vec3 f = matc_fresnel_preintegrated_{{name}}(texel);
-#else
-  // The table baked from ComparisonLobes: x = albedo, y = Schlick's lobe.
-  vec3 f = F0 * texel.x + (vec3(1.0) - F0) * texel.y;
+  vec3 f = COST_FRESNEL_PREINTEGRATED(texel);
 #endif
   colour = vec4(f, 1.0);
-#endif
 }

@@ -19,28 +19,51 @@ std::string fullscreen_vertex_source() {
   return fill_template("glsl/fullscreen.vert", {{"version", kVersion}});
 }
 
+int material_map_count(FresnelModel model) {
+  switch (model) {
+    case FresnelModel::schlick_textured:
+      return 1;
+    case FresnelModel::table:
+      return 2;
+    case FresnelModel::baked:
+      return 3;
+    case FresnelModel::schlick:
+    case FresnelModel::ours:
+      break;
+  }
+  return 0;
+}
+
 std::string cost_pass_source(const Build& build, const CompiledMaterial& compiled,
                              FresnelModel model, FresnelQuantity quantity, std::uint32_t width,
                              std::uint32_t height) {
-  const bool ours = model != FresnelModel::schlick;
-  const bool table = model == FresnelModel::table;
-  const bool direct = quantity == FresnelQuantity::direct;
-  const bool quad_light = quantity == FresnelQuantity::quad_light;
-  const bool closed_form = quantity == FresnelQuantity::preintegrated_closed_form;
-  const char* model_name = table ? "ours from the coefficient table" : ours ? "ours" : "Schlick's";
+  const bool schlick = model == FresnelModel::schlick || model == FresnelModel::schlick_textured;
+  const char* model_name = "ours";
+  if (model == FresnelModel::schlick) model_name = "Schlick's";
+  if (model == FresnelModel::schlick_textured) model_name = "Schlick's, F0 from a map";
+  if (model == FresnelModel::table) model_name = "ours from the coefficient table";
+  if (model == FresnelModel::baked) model_name = "ours from baked coefficient textures";
+  const char* quantity_name = "Fbar";
+  if (quantity == FresnelQuantity::direct) quantity_name = "F";
+  if (quantity == FresnelQuantity::ggx_light) quantity_name = "one GGX light";
+  if (quantity == FresnelQuantity::quad_light) quantity_name = "quad light (LTC)";
+  if (quantity == FresnelQuantity::preintegrated_closed_form) quantity_name = "Fbar in closed form";
+  const auto flag = [](bool value) { return value ? 1 : 0; };
   return fill_template(
       "glsl/cost_pass.frag",
       {{"version", kVersion},
-       {"variant", fmt::format("{} {}", model_name,
-                               direct        ? "F"
-                               : quad_light  ? "quad light (LTC)"
-                               : closed_form ? "Fbar in closed form"
-                                             : "Fbar")},
-       {"defines", fmt::format("#define MATC_COST_OURS {}\n#define MATC_COST_TABLE {}\n#define "
-                               "MATC_COST_DIRECT {}\n#define MATC_COST_QUAD_LIGHT {}\n#define "
-                               "MATC_COST_CLOSED_FORM {}",
-                               ours ? 1 : 0, table ? 1 : 0, direct ? 1 : 0, quad_light ? 1 : 0,
-                               closed_form ? 1 : 0)},
+       {"variant", fmt::format("{} {}", model_name, quantity_name)},
+       {"defines",
+        fmt::format("#define MATC_COST_SCHLICK {}\n#define MATC_COST_TABLE {}\n#define "
+                    "MATC_COST_BAKED {}\n#define MATC_COST_MAPS {}\n#define MATC_COST_DIRECT "
+                    "{}\n#define MATC_COST_GGX_LIGHT {}\n#define MATC_COST_QUAD_LIGHT {}\n#define "
+                    "MATC_COST_CLOSED_FORM {}",
+                    flag(schlick), flag(model == FresnelModel::table),
+                    flag(model == FresnelModel::baked), material_map_count(model),
+                    flag(quantity == FresnelQuantity::direct),
+                    flag(quantity == FresnelQuantity::ggx_light),
+                    flag(quantity == FresnelQuantity::quad_light),
+                    flag(quantity == FresnelQuantity::preintegrated_closed_form))},
        {"library", build.library_source(ShaderLanguage::glsl)},
        {"material", build.material_source(ShaderLanguage::glsl, compiled)},
        {"name", compiled.material.name},

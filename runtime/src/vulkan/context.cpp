@@ -38,6 +38,16 @@ bool has_layer(const char* name) {
   });
 }
 
+bool has_device_extension(VkPhysicalDevice device, const char* name) {
+  std::uint32_t count = 0;
+  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> extensions(count);
+  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data());
+  return std::any_of(extensions.begin(), extensions.end(), [&](const VkExtensionProperties& e) {
+    return std::strcmp(e.extensionName, name) == 0;
+  });
+}
+
 // Lower is better: discrete, integrated, virtual, CPU, other.
 int type_rank(VkPhysicalDeviceType type) {
   switch (type) {
@@ -119,7 +129,8 @@ struct Context::State {
 
   ~State() {
     if (device != VK_NULL_HANDLE) {
-      vkDeviceWaitIdle(device);
+      // Without a fence nothing was ever submitted (and the null device cannot wait).
+      if (fence != VK_NULL_HANDLE) vkDeviceWaitIdle(device);
       if (fence != VK_NULL_HANDLE) vkDestroyFence(device, fence, nullptr);
       if (command_pool != VK_NULL_HANDLE) vkDestroyCommandPool(device, command_pool, nullptr);
       vkDestroyDevice(device, nullptr);
@@ -218,7 +229,7 @@ struct Context::State {
     timestamp_bits = families[queue_family].timestampValidBits;
   }
 
-  void create_device() {
+  void create_device(bool pipeline_statistics) {
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
     queue_info.queueFamilyIndex = queue_family;
@@ -227,22 +238,42 @@ struct Context::State {
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queue_info;
+    VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR executable_info{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR};
+    const char* executable_extension = VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME;
+    if (pipeline_statistics) {
+      if (!has_device_extension(physical_device, executable_extension)) {
+        throw NoDeviceError(std::string(properties.deviceName) + " does not report " +
+                            executable_extension + " (pipeline statistics)");
+      }
+      executable_info.pipelineExecutableInfo = VK_TRUE;
+      info.pNext = &executable_info;
+      info.enabledExtensionCount = 1;
+      info.ppEnabledExtensionNames = &executable_extension;
+    }
     check(vkCreateDevice(physical_device, &info, nullptr, &device), "vkCreateDevice");
     vkGetDeviceQueue(device, queue_family, 0, &queue);
 
+    VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    const VkResult fence_result = vkCreateFence(device, &fence_info, nullptr, &fence);
+    // RADV's null device (RADV_FORCE_FAMILY without an AMD GPU) compiles pipelines but can run
+    // nothing: a statistics context goes on without a fence or command pool, and submit() refuses.
+    if (pipeline_statistics && fence_result != VK_SUCCESS) {
+      fence = VK_NULL_HANDLE;
+      return;
+    }
+    check(fence_result, "vkCreateFence");
     VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
     pool_info.queueFamilyIndex = queue_family;
     check(vkCreateCommandPool(device, &pool_info, nullptr, &command_pool), "vkCreateCommandPool");
-    VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    check(vkCreateFence(device, &fence_info, nullptr, &fence), "vkCreateFence");
   }
 };
 
 Context::Context(const ContextOptions& options) : state_(std::make_unique<State>()) {
   state_->create_instance(options.validation);
   state_->pick_device(options.device_name);
-  state_->create_device();
+  state_->create_device(options.pipeline_statistics);
 }
 
 Context::~Context() = default;
@@ -283,6 +314,8 @@ VkDeviceMemory Context::allocate_memory(const VkMemoryRequirements& requirements
 }
 
 void Context::submit(const std::function<void(VkCommandBuffer)>& record) const {
+  if (state_->fence == VK_NULL_HANDLE)
+    throw VulkanError(device_name() + " compiles pipelines but cannot run them (no fence)");
   VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   allocate.commandPool = state_->command_pool;
   allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;

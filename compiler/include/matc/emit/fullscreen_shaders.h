@@ -13,21 +13,33 @@
 
 namespace matc {
 
-// Schlick's; ours with a material's compiled coefficients; ours with coefficients from the
-// coefficient table, per pixel (a textured metal).
-enum class FresnelModel { schlick, ours, table };
-// F per light (mu = V.H), preintegrated Fbar from one table fetch, or a quad area light (LTC:
-// that fetch, one LTC table fetch, the polygon integral, times Fbar), or Fbar without a fetch:
-// ours from matc_preintegrated_basis_analytic, Schlick's from Karis' mobile approximation.
-enum class FresnelQuantity { direct, preintegrated, quad_light, preintegrated_closed_form };
+// Schlick's with a constant F0, or with F0 from a map; ours with a material's compiled
+// coefficients; ours per pixel from reflectivity and edge-tint maps through the coefficient table
+// (a textured metal); ours from baked coefficient textures (F0, C2, C3 maps, `matc bake`).
+enum class FresnelModel { schlick, schlick_textured, ours, table, baked };
+// F alone (mu from the pixel); F inside one GGX punctual light (D, height-correlated Smith V, F,
+// NdotL); preintegrated Fbar from one table fetch; a quad area light (LTC: that fetch, one LTC
+// table fetch, the polygon integral, times Fbar); or Fbar without a fetch: ours from
+// matc_preintegrated_basis_analytic, Schlick's from Karis' mobile approximation.
+enum class FresnelQuantity {
+  direct,
+  ggx_light,
+  preintegrated,
+  quad_light,
+  preintegrated_closed_form
+};
+
+// How many material maps a model reads (bindings 4, 5, 6 of the cost pass).
+int material_map_count(FresnelModel model);
 
 // One triangle covering the viewport, from gl_VertexIndex.
 std::string fullscreen_vertex_source();
 
-// The benchmark's fragment shader: per pixel, one quantity of `compiled` with one model. Binds
+// The benchmarks' fragment shader: per pixel, one quantity of `compiled` with one model. Binds
 // the table at (set 0) binding 0 and the sampler at binding 1; for Schlick's preintegrated
 // variant the table must be the ComparisonLobes bake; the table model also binds the coefficient
-// table (its .xy) at binding 2, and the quad-light quantity the LTC table at binding 3.
+// table (its .xy) at binding 2, the quad-light quantity the LTC table at binding 3, and the
+// textured models material_map_count(model) maps at bindings 4, 5, 6.
 std::string cost_pass_source(const Build& build, const CompiledMaterial& compiled,
                              FresnelModel model, FresnelQuantity quantity, std::uint32_t width,
                              std::uint32_t height);

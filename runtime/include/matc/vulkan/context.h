@@ -35,6 +35,9 @@ struct ContextOptions {
   // Picks the first device whose name contains this (e.g. "llvmpipe"); empty: prefer a discrete
   // GPU, then an integrated one, then anything else.
   std::string device_name;
+  // Enables VK_KHR_pipeline_executable_properties, so that pipeline_statistics.h can read the
+  // shader compiler's statistics (RADV and other drivers that have it; lavapipe does not).
+  bool pipeline_statistics = false;
 };
 
 class Context {

@@ -1,0 +1,195 @@
+// The instruction cost of every shading path on AMD's GPU instruction sets, without an AMD GPU:
+// each variant of the cost pass (templates/glsl/cost_pass.frag) is compiled as a full-screen
+// graphics pipeline by RADV's null device (RADV_FORCE_FAMILY) and ACO's statistics are read back
+// (VK_KHR_pipeline_executable_properties). Prints the table of docs/performance.md; with --check,
+// also exits 1 if a ratio misses its target (issue #28). Exits 77 (a skipped test) where the
+// RADV driver is not installed.
+//   matc_gpu_cost [--check] [--icd PATH] [--families vega10,navi10,navi21,gfx1100]
+#include <array>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
+#include <CLI/CLI.hpp>
+
+#include "matc/compile.h"
+#include "matc/emit/build.h"
+#include "matc/emit/fullscreen_shaders.h"
+#include "matc/material/parse.h"
+#include "matc/vulkan/pipeline_statistics.h"
+
+namespace {
+
+using matc::FresnelModel;
+using matc::FresnelQuantity;
+
+// One row: our model against a baseline on the same pass, and the ratio it must stay under.
+struct Comparison {
+  const char* label;
+  FresnelQuantity quantity;
+  FresnelModel ours;
+  FresnelModel baseline;
+  std::optional<double> target;  // inverse throughput, ours / baseline
+};
+
+const std::array<Comparison, 9> kComparisons = {{
+    {"F alone, compiled coefficients", FresnelQuantity::direct, FresnelModel::ours,
+     FresnelModel::schlick, std::nullopt},
+    {"one GGX light, compiled coefficients", FresnelQuantity::ggx_light, FresnelModel::ours,
+     FresnelModel::schlick, 1.15},
+    {"one GGX light, textured: coefficient table from r, g maps vs F0 map",
+     FresnelQuantity::ggx_light, FresnelModel::table, FresnelModel::schlick_textured, 1.5},
+    {"one GGX light, textured: baked F0, C2, C3 maps vs F0 map", FresnelQuantity::ggx_light,
+     FresnelModel::baked, FresnelModel::schlick_textured, 1.25},
+    {"split-sum image light (one table fetch)", FresnelQuantity::preintegrated, FresnelModel::ours,
+     FresnelModel::schlick, 1.10},
+    {"split-sum image light, textured: coefficient table vs F0 map", FresnelQuantity::preintegrated,
+     FresnelModel::table, FresnelModel::schlick_textured, std::nullopt},
+    {"split-sum image light, textured: baked maps vs F0 map", FresnelQuantity::preintegrated,
+     FresnelModel::baked, FresnelModel::schlick_textured, std::nullopt},
+    {"one quad light (LTC)", FresnelQuantity::quad_light, FresnelModel::ours, FresnelModel::schlick,
+     1.05},
+    {"texture-free Fbar: our closed form vs Karis' fit", FresnelQuantity::preintegrated_closed_form,
+     FresnelModel::ours, FresnelModel::schlick, std::nullopt},
+}};
+
+struct Cost {
+  std::uint64_t instructions = 0;
+  std::uint64_t vgprs = 0;
+  std::uint64_t inverse_throughput = 0;
+};
+
+std::vector<matc::vulkan::DescriptorSlot> slots(FresnelModel model, FresnelQuantity quantity) {
+  std::vector<matc::vulkan::DescriptorSlot> result = {{0, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE},
+                                                      {1, VK_DESCRIPTOR_TYPE_SAMPLER}};
+  if (model == FresnelModel::table) result.push_back({2, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE});
+  if (quantity == FresnelQuantity::quad_light)
+    result.push_back({3, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE});
+  for (int map = 0; map < matc::material_map_count(model); ++map)
+    result.push_back({4 + static_cast<std::uint32_t>(map), VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE});
+  return result;
+}
+
+std::vector<std::string> split(const std::string& list) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    const std::size_t comma = std::min(list.find(',', start), list.size());
+    if (comma > start) items.push_back(list.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return items;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Instruction cost of our Fresnel against Schlick's on AMD ISAs (RADV null device)"};
+  bool check = false;
+  std::string icd = "/usr/share/vulkan/icd.d/radeon_icd.x86_64.json";
+  std::string family_list = "navi21,vega10,navi10,gfx1100";
+  app.add_flag("--check", check, "Exit 1 if a ratio misses its target");
+  app.add_option("--icd", icd, "RADV's Vulkan ICD manifest");
+  app.add_option("--families", family_list, "RADV_FORCE_FAMILY values; the first is detailed");
+  CLI11_PARSE(app, argc, argv);
+  if (!std::filesystem::exists(icd)) {
+    fmt::print("skipped: {} is missing (Debian: apt-get install mesa-vulkan-drivers)\n", icd);
+    return 77;
+  }
+  const std::vector<std::string> families = split(family_list);
+  if (families.empty()) {
+    fmt::print(stderr, "matc_gpu_cost: --families names no family\n");
+    return 2;
+  }
+
+  const matc::ParseResult parsed =
+      matc::read_material_file(MATC_EXAMPLES_DIR "/figure2_edge_tint.json");
+  const matc::CompiledMaterial material =
+      matc::compile_material(*parsed.material, matc::runtime::shipped_basis());
+  const matc::Build build(matc::BuildOptions{});
+  const matc::SpirvWords vertex = matc::compile_fullscreen_stage(
+      matc::fullscreen_vertex_source(), matc::ShaderStage::vertex, "fullscreen.vert");
+  // Each variant's SPIR-V once; every family compiles the same modules.
+  std::map<std::pair<FresnelModel, FresnelQuantity>, matc::SpirvWords> fragments;
+  for (const Comparison& row : kComparisons) {
+    for (const FresnelModel model : {row.ours, row.baseline}) {
+      if (fragments.contains({model, row.quantity})) continue;
+      fragments[{model, row.quantity}] = matc::compile_fullscreen_stage(
+          matc::cost_pass_source(build, material, model, row.quantity, 1280, 720),
+          matc::ShaderStage::fragment, "cost_pass.frag");
+    }
+  }
+
+  // costs[family][row] = {ours, baseline}
+  std::vector<std::vector<std::array<Cost, 2>>> costs;
+  std::vector<std::string> device_names;
+  ::setenv("VK_ICD_FILENAMES", icd.c_str(), 1);
+  for (const std::string& family : families) {
+    // RADV reads these when the instance enumerates its devices.
+    ::setenv("RADV_FORCE_FAMILY", family.c_str(), 1);
+    const matc::vulkan::Context context(matc::vulkan::ContextOptions{false, "RADV", true});
+    device_names.push_back(context.device_name());
+    std::vector<std::array<Cost, 2>> family_costs;
+    for (const Comparison& row : kComparisons) {
+      std::array<Cost, 2> pair;
+      for (std::size_t which = 0; which < 2; ++which) {
+        const FresnelModel model = which == 0 ? row.ours : row.baseline;
+        const auto slot_list = slots(model, row.quantity);
+        const matc::vulkan::ExecutableStatistics statistics =
+            matc::vulkan::fullscreen_fragment_statistics(
+                context, vertex, fragments.at({model, row.quantity}), slot_list);
+        const auto read = [&](const char* name) {
+          const auto value = statistics.value(name);
+          if (!value) throw std::runtime_error(fmt::format("{} reports no '{}'", family, name));
+          return *value;
+        };
+        pair[which] = {read("Instructions"), read("VGPRs"), read("Inverse Throughput")};
+      }
+      family_costs.push_back(pair);
+    }
+    costs.push_back(std::move(family_costs));
+  }
+
+  fmt::print(
+      "Fragment shaders of the cost pass as full-screen pipelines, compiled by {} (ACO, Mesa's "
+      "RADV null device); ours against the baseline of the same pass:\n\n",
+      device_names.front());
+  fmt::print(
+      "| pass | instructions, ours / baseline | VGPRs | inverse throughput, ours / baseline | "
+      "ratio |");
+  for (std::size_t f = 1; f < families.size(); ++f)
+    fmt::print(" {} ratio |", families[f]);
+  fmt::print(" target |\n|---|---:|---:|---:|---:|");
+  for (std::size_t f = 1; f < families.size(); ++f)
+    fmt::print("---:|");
+  fmt::print("---:|\n");
+  bool missed = false;
+  for (std::size_t r = 0; r < kComparisons.size(); ++r) {
+    const Comparison& row = kComparisons[r];
+    const auto ratio = [&](std::size_t family) {
+      const std::array<Cost, 2>& pair = costs[family][r];
+      return static_cast<double>(pair[0].inverse_throughput) /
+             static_cast<double>(pair[1].inverse_throughput);
+    };
+    const std::array<Cost, 2>& first = costs[0][r];
+    fmt::print("| {} | {} / {} | {} / {} | {} / {} | {:.2f}x |", row.label, first[0].instructions,
+               first[1].instructions, first[0].vgprs, first[1].vgprs, first[0].inverse_throughput,
+               first[1].inverse_throughput, ratio(0));
+    for (std::size_t f = 1; f < families.size(); ++f)
+      fmt::print(" {:.2f}x |", ratio(f));
+    fmt::print(" {} |\n", row.target ? fmt::format("<= {:.2f}x", *row.target) : "");
+    for (std::size_t f = 0; f < families.size(); ++f) {
+      if (row.target && ratio(f) > *row.target) {
+        missed = true;
+        if (check)
+          fmt::print(stderr, "target missed on {}: {} is {:.3f}x, target {:.2f}x\n", families[f],
+                     row.label, ratio(f), *row.target);
+      }
+    }
+  }
+  return check && missed ? 1 : 0;
+}

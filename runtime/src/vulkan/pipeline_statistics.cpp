@@ -1,0 +1,118 @@
+#include "matc/vulkan/pipeline_statistics.h"
+
+#include <vector>
+
+#include "fullscreen_pipeline.h"
+#include "shader_module.h"
+
+namespace matc::vulkan {
+namespace {
+
+// Destroys what it holds when the scope ends, however it ends.
+struct PipelineObjects {
+  VkDevice device;
+  VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkRenderPass render_pass = VK_NULL_HANDLE;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  ~PipelineObjects() {
+    vkDestroyPipeline(device, pipeline, nullptr);
+    vkDestroyRenderPass(device, render_pass, nullptr);
+    vkDestroyPipelineLayout(device, layout, nullptr);
+    vkDestroyDescriptorSetLayout(device, set_layout, nullptr);
+  }
+};
+
+template <typename Function>
+Function device_function(VkDevice device, const char* name) {
+  auto function = reinterpret_cast<Function>(vkGetDeviceProcAddr(device, name));
+  if (function == nullptr) {
+    throw VulkanError(std::string(name) +
+                      " is not available: create the Context with pipeline_statistics");
+  }
+  return function;
+}
+
+std::uint64_t as_integer(const VkPipelineExecutableStatisticKHR& statistic) {
+  switch (statistic.format) {
+    case VK_PIPELINE_EXECUTABLE_STATISTIC_FORMAT_BOOL32_KHR:
+      return statistic.value.b32;
+    case VK_PIPELINE_EXECUTABLE_STATISTIC_FORMAT_INT64_KHR:
+      return static_cast<std::uint64_t>(statistic.value.i64);
+    case VK_PIPELINE_EXECUTABLE_STATISTIC_FORMAT_UINT64_KHR:
+      return statistic.value.u64;
+    default:  // FLOAT64: none of the counts we read
+      return static_cast<std::uint64_t>(statistic.value.f64);
+  }
+}
+
+}  // namespace
+
+std::optional<std::uint64_t> ExecutableStatistics::value(std::string_view statistic) const {
+  for (const auto& [label, number] : values)
+    if (label == statistic) return number;
+  return std::nullopt;
+}
+
+ExecutableStatistics fullscreen_fragment_statistics(const Context& context,
+                                                    std::span<const std::uint32_t> vertex_spirv,
+                                                    std::span<const std::uint32_t> fragment_spirv,
+                                                    std::span<const DescriptorSlot> slots) {
+  const VkDevice device = context.device();
+  const auto get_properties = device_function<PFN_vkGetPipelineExecutablePropertiesKHR>(
+      device, "vkGetPipelineExecutablePropertiesKHR");
+  const auto get_statistics = device_function<PFN_vkGetPipelineExecutableStatisticsKHR>(
+      device, "vkGetPipelineExecutableStatisticsKHR");
+
+  PipelineObjects objects{device};
+  std::vector<VkDescriptorSetLayoutBinding> bindings;
+  for (const DescriptorSlot& slot : slots)
+    bindings.push_back({slot.binding, slot.type, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+  VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  set_info.bindingCount = static_cast<std::uint32_t>(bindings.size());
+  set_info.pBindings = bindings.data();
+  check(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &objects.set_layout),
+        "vkCreateDescriptorSetLayout");
+  VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layout_info.setLayoutCount = 1;
+  layout_info.pSetLayouts = &objects.set_layout;
+  check(vkCreatePipelineLayout(device, &layout_info, nullptr, &objects.layout),
+        "vkCreatePipelineLayout");
+  objects.render_pass = create_fullscreen_render_pass(device);
+  const ShaderModule vertex(device, vertex_spirv);
+  const ShaderModule fragment(device, fragment_spirv);
+  // The size only sets the viewport state, which does not change the code.
+  objects.pipeline = create_fullscreen_pipeline(device, objects.render_pass, objects.layout,
+                                                vertex.handle(), fragment.handle(), 64, 64,
+                                                VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR);
+
+  VkPipelineInfoKHR pipeline_info{VK_STRUCTURE_TYPE_PIPELINE_INFO_KHR};
+  pipeline_info.pipeline = objects.pipeline;
+  std::uint32_t count = 0;
+  check(get_properties(device, &pipeline_info, &count, nullptr),
+        "vkGetPipelineExecutablePropertiesKHR");
+  std::vector<VkPipelineExecutablePropertiesKHR> executables(
+      count, {VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_PROPERTIES_KHR});
+  check(get_properties(device, &pipeline_info, &count, executables.data()),
+        "vkGetPipelineExecutablePropertiesKHR");
+  for (std::uint32_t index = 0; index < count; ++index) {
+    if ((executables[index].stages & VK_SHADER_STAGE_FRAGMENT_BIT) == 0) continue;
+    VkPipelineExecutableInfoKHR executable{VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_INFO_KHR};
+    executable.pipeline = objects.pipeline;
+    executable.executableIndex = index;
+    std::uint32_t statistic_count = 0;
+    check(get_statistics(device, &executable, &statistic_count, nullptr),
+          "vkGetPipelineExecutableStatisticsKHR");
+    std::vector<VkPipelineExecutableStatisticKHR> statistics(
+        statistic_count, {VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_STATISTIC_KHR});
+    check(get_statistics(device, &executable, &statistic_count, statistics.data()),
+          "vkGetPipelineExecutableStatisticsKHR");
+    ExecutableStatistics result{executables[index].name, executables[index].stages, {}};
+    for (const VkPipelineExecutableStatisticKHR& statistic : statistics)
+      result.values.emplace_back(statistic.name, as_integer(statistic));
+    return result;
+  }
+  throw VulkanError("the driver reported no fragment-shader executable for the pipeline");
+}
+
+}  // namespace matc::vulkan
