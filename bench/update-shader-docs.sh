@@ -12,6 +12,8 @@ tool="$build/bench/matc_shader_cost"
 "$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" closed-form "$tool" --closed-form
 "$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" basis-polynomial \
   "$root/bench/fenced.sh" "$build/matc" basis
+"$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" basis-polynomial-extended \
+  "$root/bench/fenced.sh" "$build/matc" basis --basis extended
 "$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" basis-polynomial-paper \
   "$root/bench/fenced.sh" "$build/matc" basis --basis paper
 "$root/tests/check_docs_block.sh" --update "$root/docs/shaders.md" basis-polynomial-f82 \

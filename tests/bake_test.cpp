@@ -16,7 +16,7 @@
 #include "matc/fit/conductor_solver.h"
 #include "matc/optics/gulbrandsen.h"
 #include "matc/optics/reflectance_curve.h"
-#include "matc/runtime/basis_polynomial.h"
+#include "matc/runtime/shader_basis.h"
 #include "test_images.h"
 
 namespace matc {
@@ -31,7 +31,7 @@ double mu_at(std::size_t j) {
 }
 
 double curve_value(const runtime::ChannelCoefficients& c, double mu, BasisKind basis) {
-  const auto b = runtime::evaluate_basis_polynomial(runtime::shipped_basis_polynomial(basis), mu);
+  const auto b = runtime::evaluate_shader_basis(runtime::shipped_shader_basis(basis), mu);
   return c[0] * b[0] + c[1] * b[1] + c[2] * b[2] + c[3] * b[3];
 }
 
@@ -97,7 +97,7 @@ TEST(ConductorSolver, MatchesTheCompileSolveOnEveryFifthEightBitPair) {
     }
     EXPECT_LT(worst, 1e-5) << runtime::basis_name(basis);
   }
-  const ChannelSolution white = ConductorSolver(BasisKind::extended).solve(1.0, 0.3);
+  const ChannelSolution white = ConductorSolver(runtime::kDefaultBasis).solve(1.0, 0.3);
   EXPECT_EQ(white.coefficients, (runtime::ChannelCoefficients{1.0, 0.0, 0.0, 0.0}));
 }
 
@@ -203,11 +203,11 @@ TEST(BakeCoefficients, EightBitMapsAreSolvedExactlyPerTexel) {
       if (r >= 1.0) continue;
       const ComplexIor ior = gulbrandsen_to_ior({r, g});
       const auto compiled = solve_coefficients(IorCurve({ior, ior, ior}),
-                                               runtime::shipped_basis(BasisKind::extended))[0];
+                                               runtime::shipped_basis(runtime::kDefaultBasis))[0];
       const auto texel = level_coefficients(baked.levels[0], t % 16, t / 16, c);
       for (std::size_t m = 0; m < kCosines; ++m)
-        worst = std::max(worst, std::abs(curve_value(texel, mu_at(m), BasisKind::extended) -
-                                         curve_value(compiled, mu_at(m), BasisKind::extended)));
+        worst = std::max(worst, std::abs(curve_value(texel, mu_at(m), runtime::kDefaultBasis) -
+                                         curve_value(compiled, mu_at(m), runtime::kDefaultBasis)));
     }
   }
   EXPECT_LT(worst, 1e-4);
@@ -222,7 +222,7 @@ TEST(BakeCoefficients, MipLevelsHoldTheAverageCurveOfTheTexelsTheyCover) {
   options.f0 = true;
   const BakedCoefficients baked = bake_coefficients(inputs, options);
   ASSERT_EQ(baked.levels.size(), 6u);
-  const ConductorSolver solver(BasisKind::extended);
+  const ConductorSolver solver(runtime::kDefaultBasis);
   double ours = 0.0, usual = 0.0;
   for (std::size_t k = 1; k < baked.levels.size(); ++k) {
     const CoefficientLevel& level = baked.levels[k];
@@ -238,7 +238,7 @@ TEST(BakeCoefficients, MipLevelsHoldTheAverageCurveOfTheTexelsTheyCover) {
               const std::size_t sx = x * span + i, sy = y * span + j, t = sy * kSize + sx;
               const auto texel = level_coefficients(baked.levels[0], sx, sy, c);
               for (std::size_t m = 0; m < kCosines; ++m)
-                average[m] += curve_value(texel, mu_at(m), BasisKind::extended) /
+                average[m] += curve_value(texel, mu_at(m), runtime::kDefaultBasis) /
                               static_cast<double>(span * span);
               mean_r += inputs.first.value(t, c) / static_cast<double>(span * span);
               mean_g += inputs.second.value(t, c) / static_cast<double>(span * span);
@@ -247,11 +247,11 @@ TEST(BakeCoefficients, MipLevelsHoldTheAverageCurveOfTheTexelsTheyCover) {
           const auto mip = level_coefficients(level, x, y, c);
           const auto solved_from_mean = solver.solve(mean_r, mean_g).coefficients;
           for (std::size_t m = 0; m < kCosines; ++m) {
-            ours = std::max(ours,
-                            std::abs(curve_value(mip, mu_at(m), BasisKind::extended) - average[m]));
-            usual = std::max(usual,
-                             std::abs(curve_value(solved_from_mean, mu_at(m), BasisKind::extended) -
-                                      average[m]));
+            ours = std::max(
+                ours, std::abs(curve_value(mip, mu_at(m), runtime::kDefaultBasis) - average[m]));
+            usual = std::max(
+                usual, std::abs(curve_value(solved_from_mean, mu_at(m), runtime::kDefaultBasis) -
+                                average[m]));
           }
         }
       }
@@ -297,16 +297,16 @@ TEST(BakeCoefficients, SixteenBitMapsUseTheCoefficientTable) {
   ASSERT_EQ(baked.error.size(), 64u);
   // Against the exact per-texel solve: the table's interpolation error (docs/coefficient-table.md
   // measures 0.0015 on random conductors).
-  const ConductorSolver solver(BasisKind::extended);
+  const ConductorSolver solver(runtime::kDefaultBasis);
   double worst = 0.0;
   for (std::size_t t = 0; t < 64; ++t) {
     for (std::size_t c = 0; c < 3; ++c) {
       const auto exact = solver.solve(inputs.first.value(t, c), inputs.second.value(t, c));
       const auto texel = level_coefficients(baked.levels[0], t % 8, t / 8, c);
       for (std::size_t m = 0; m < kCosines; ++m)
-        worst = std::max(worst,
-                         std::abs(curve_value(texel, mu_at(m), BasisKind::extended) -
-                                  curve_value(exact.coefficients, mu_at(m), BasisKind::extended)));
+        worst = std::max(
+            worst, std::abs(curve_value(texel, mu_at(m), runtime::kDefaultBasis) -
+                            curve_value(exact.coefficients, mu_at(m), runtime::kDefaultBasis)));
     }
   }
   std::printf("16-bit maps through the coefficient table: max |F - exact solve's F| %.2g\n", worst);

@@ -7,7 +7,8 @@
 #include "matc/basis/basis_fit.h"
 #include "matc/basis/basis_polynomial_fit.h"
 #include "matc/runtime/basis.h"
-#include "matc/runtime/basis_polynomial.h"
+#include "matc/runtime/powers_basis.h"
+#include "matc/runtime/shader_basis.h"
 
 namespace matc {
 namespace {
@@ -35,6 +36,8 @@ TEST(PaperBasis, FirstElementIsConstantOne) {
 }
 
 class ShippedBasis : public testing::TestWithParam<runtime::BasisKind> {};
+// The bases with checked-in tables and piecewise polynomials (not the closed-form powers basis).
+class FittedShippedBasis : public testing::TestWithParam<runtime::BasisKind> {};
 
 TEST_P(ShippedBasis, SecondElementRunsFromOneAtGrazingToZeroAtNormal) {
   const BasisView basis = runtime::shipped_basis(GetParam());
@@ -47,10 +50,16 @@ TEST_P(ShippedBasis, SecondElementRunsFromOneAtGrazingToZeroAtNormal) {
 
 TEST_P(ShippedBasis, ResidualElementsAreUnitPeakedAndVanishAtTheEnds) {
   const BasisView basis = runtime::shipped_basis(GetParam());
+  // The fitted tables are scaled to 1 at a sample; the closed form is unscaled and its peaks
+  // (mu = 1/4, 1/10) fall between samples.
+  const bool powers = GetParam() == runtime::BasisKind::powers;
+  const std::array<double, 2> peaks = {powers ? runtime::kPowersB2Peak : 1.0,
+                                       powers ? runtime::kPowersB3Peak : 1.0};
+  const double tolerance = powers ? 1e-6 : 0.0;
   for (std::size_t i = 1; i < 3; ++i) {
     const auto b = basis.tables[i];
-    EXPECT_EQ(*std::max_element(b.begin(), b.end()), 1.0) << "b_" << i + 1;
-    EXPECT_EQ(max_abs(b), 1.0) << "b_" << i + 1;
+    EXPECT_NEAR(*std::max_element(b.begin(), b.end()), peaks[i - 1], tolerance) << "b_" << i + 1;
+    EXPECT_NEAR(max_abs(b), peaks[i - 1], tolerance) << "b_" << i + 1;
     // F(mu = 0) = c0 + c1 and F(1) = c0 rely on these vanishing.
     EXPECT_LT(std::abs(b.front()), 1e-9) << "b_" << i + 1;
     EXPECT_LT(std::abs(b.back()), 1e-9) << "b_" << i + 1;
@@ -85,7 +94,7 @@ TEST(PaperBasis, InterpolationIsExactAtGridPointsAndLinearBetween) {
   EXPECT_EQ(basis.evaluate(2.0), basis.at_index(999));
 }
 
-TEST_P(ShippedBasis, RegenerationReproducesTheCheckedInTable) {
+TEST_P(FittedShippedBasis, RegenerationReproducesTheCheckedInTable) {
   const FittedBasis fitted = fit_shipped_basis(GetParam());
   const BasisView shipped = runtime::shipped_basis(GetParam());
   EXPECT_EQ(fitted.kind, shipped.kind);
@@ -101,12 +110,12 @@ TEST_P(ShippedBasis, RegenerationReproducesTheCheckedInTable) {
   }
   // The polynomial is refitted from the refitted tables; a float ulp of drift is tolerated.
   const runtime::BasisPolynomial& shipped_polynomial =
-      runtime::shipped_basis_polynomial(GetParam());
+      runtime::shipped_shader_basis(GetParam()).polynomial;
   for (std::size_t s = 0; s < runtime::kPolynomialSegments; ++s) {
     for (std::size_t p = 0; p <= runtime::kPolynomialDegree; ++p) {
       for (std::size_t i = 0; i < 3; ++i) {
         const double shipped_value = shipped_polynomial[s][p][i];
-        ASSERT_NEAR(fitted.polynomial[s][p][i], shipped_value,
+        ASSERT_NEAR(fitted.shader.polynomial[s][p][i], shipped_value,
                     1e-7 * std::abs(shipped_value) + 1e-12)
             << "segment " << s << ", t^" << runtime::kPolynomialDegree - p << ", b_" << i + 1;
       }
@@ -118,19 +127,19 @@ TEST_P(ShippedBasis, RegenerationReproducesTheCheckedInTable) {
 // data. Between samples the table is a linear interpolation, itself ~1.7e-4 off the smooth curve
 // for b_3 near grazing (where it bends fastest, measured with higher-degree fits), so the two may
 // differ by up to 3e-4 there.
-TEST_P(ShippedBasis, PolynomialMatchesTheTableWithin1e4) {
+TEST_P(FittedShippedBasis, PolynomialMatchesTheTableWithin1e4) {
   const PolynomialFitError error = polynomial_fit_error(
-      runtime::shipped_basis_polynomial(GetParam()), runtime::shipped_basis(GetParam()));
+      runtime::shipped_shader_basis(GetParam()).polynomial, runtime::shipped_basis(GetParam()));
   for (std::size_t i = 0; i < 3; ++i) {
     EXPECT_LE(error.at_grid_points[i], 1e-4) << "b_" << i + 1;
     EXPECT_LE(error.between_grid_points[i], 3e-4) << "b_" << i + 1;
   }
 }
 
-TEST_P(ShippedBasis, PolynomialKeepsTheEndpointsThatTheCoefficientsRelyOn) {
-  const auto& polynomial = runtime::shipped_basis_polynomial(GetParam());
-  const auto grazing = runtime::evaluate_basis_polynomial(polynomial, 0.0);
-  const auto normal = runtime::evaluate_basis_polynomial(polynomial, 1.0);
+TEST_P(ShippedBasis, ShaderFormKeepsTheEndpointsThatTheCoefficientsRelyOn) {
+  const auto& polynomial = runtime::shipped_shader_basis(GetParam());
+  const auto grazing = runtime::evaluate_shader_basis(polynomial, 0.0);
+  const auto normal = runtime::evaluate_shader_basis(polynomial, 1.0);
   EXPECT_EQ(grazing[0], 1.0);
   EXPECT_NEAR(grazing[1], 1.0, 1e-4);
   EXPECT_NEAR(normal[1], 0.0, 1e-4);
@@ -162,19 +171,45 @@ TEST(PaperBasis, GeneratedSourceRoundTripsEveryDigit) {
   EXPECT_NE(source.find("Generated by `matc basis fit --basis paper`"), std::string::npos);
 }
 
-TEST(ShippedBases, NamesRoundTripAndTheDefaultIsWeighted) {
-  EXPECT_EQ(runtime::kDefaultBasis, runtime::BasisKind::extended);
-  EXPECT_EQ(runtime::shipped_basis().kind, runtime::BasisKind::extended);
+TEST(ShippedBases, NamesRoundTripAndTheDefaultIsTheClosedForm) {
+  EXPECT_EQ(runtime::kDefaultBasis, runtime::BasisKind::powers);
+  EXPECT_EQ(runtime::shipped_basis().kind, runtime::BasisKind::powers);
+  EXPECT_EQ(runtime::shipped_shader_basis().form, runtime::ShaderBasisForm::powers);
   for (const auto kind : runtime::kShippedBases)
     EXPECT_EQ(runtime::basis_from_name(runtime::basis_name(kind)), kind);
   EXPECT_EQ(runtime::basis_from_name("f82"), runtime::BasisKind::f82);
   EXPECT_FALSE(runtime::basis_from_name("schlick"));
 }
 
+// The closed form is what its table samples, and what the shaders compute from their literals.
+TEST(PowersBasis, TableSamplesTheClosedForm) {
+  const BasisView basis = runtime::powers_basis();
+  for (std::size_t j = 0; j < basis.samples(); j += 37) {
+    const double mu = basis.mu_at(j);
+    const double m = 1.0 - mu;
+    EXPECT_NEAR(basis.tables[0][j], std::pow(m, 6), 1e-15);
+    EXPECT_NEAR(basis.tables[1][j], mu * std::pow(m, 3), 1e-15);
+    EXPECT_NEAR(basis.tables[2][j], mu * std::pow(m, 9), 1e-15);
+    EXPECT_EQ(runtime::evaluate_shader_basis(runtime::shipped_shader_basis(), mu),
+              basis.at_index(j));
+  }
+}
+
+TEST(PowersBasis, HasNoTableToFit) {
+  EXPECT_EQ(std::count(runtime::kFittedBases.begin(), runtime::kFittedBases.end(),
+                       runtime::BasisKind::powers),
+            0);
+  EXPECT_EQ(fit_shipped_basis(runtime::BasisKind::powers).shader.form,
+            runtime::ShaderBasisForm::powers);
+}
+
+const auto kBasisTestName = [](const auto& name) {
+  return std::string(runtime::basis_name(name.param));
+};
 INSTANTIATE_TEST_SUITE_P(All, ShippedBasis, testing::ValuesIn(runtime::kShippedBases),
-                         [](const auto& name) {
-                           return std::string(runtime::basis_name(name.param));
-                         });
+                         kBasisTestName);
+INSTANTIATE_TEST_SUITE_P(All, FittedShippedBasis, testing::ValuesIn(runtime::kFittedBases),
+                         kBasisTestName);
 
 }  // namespace
 }  // namespace matc

@@ -457,7 +457,7 @@ TEST_F(MatcCli, EvalPrintsDecomposedAndExactFresnel) {
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto json = nlohmann::json::parse(result.out);
   EXPECT_EQ(json["name"], "chromium");
-  EXPECT_EQ(json["basis"], "extended");
+  EXPECT_EQ(json["basis"], "powers");
   ASSERT_EQ(json["mu"].size(), 4u);
   ASSERT_EQ(json["F"].size(), 4u);
   ASSERT_EQ(json["F_exact"].size(), 4u);
@@ -486,9 +486,9 @@ TEST_F(MatcCli, BasisJsonHasTheDocumentedShape) {
     EXPECT_EQ(b.size(), 1000u);
   EXPECT_EQ(json["b"][0][500], 1.0);
   ASSERT_EQ(json["probes"].size(), 2u);
-  // The default (extended) basis' probes; its coefficients do not use them.
-  EXPECT_NEAR(json["probes"][0].get<double>(), 0.132, 0.005);
-  EXPECT_NEAR(json["probes"][1].get<double>(), 0.422, 0.01);
+  // The default (powers) basis' probes, the peaks of b_2 and b_3; its coefficients do not use them.
+  EXPECT_NEAR(json["probes"][0].get<double>(), 0.25, 0.001);
+  EXPECT_NEAR(json["probes"][1].get<double>(), 0.1, 0.001);
 }
 
 TEST_F(MatcCli, PaperBasisKeepsTheAuthorsProbes) {
@@ -564,6 +564,7 @@ TEST_F(MatcCli, BasisOptionSelectsTheBasisEverywhereItIsRecorded) {
     EXPECT_EQ(result.exit_code, 0) << result.err;
   };
   build("default", {});
+  build("extended", {"--basis", "extended"});
   build("paper", {"--basis", "paper"});
   build("f82", {"--basis", "f82"});
   const auto material = [&](const std::string& out) {
@@ -572,17 +573,20 @@ TEST_F(MatcCli, BasisOptionSelectsTheBasisEverywhereItIsRecorded) {
   const auto lut = [&](const std::string& out) {
     return nlohmann::json::parse(read_file(dir_ / out / "matc_lut.ktx2.json"));
   };
-  EXPECT_EQ(material("default")["basis"]["name"], "extended");
+  EXPECT_EQ(material("default")["basis"]["name"], "powers");
   EXPECT_EQ(material("default")["basis"]["solve"], "minimax");
-  EXPECT_EQ(lut("default")["basis"], "extended");
+  EXPECT_EQ(lut("default")["basis"], "powers");
+  EXPECT_EQ(material("extended")["basis"]["name"], "extended");
+  EXPECT_EQ(material("extended")["basis"]["solve"], "minimax");
+  EXPECT_EQ(lut("extended")["basis"], "extended");
   EXPECT_EQ(material("paper")["basis"]["name"], "paper");
   EXPECT_EQ(material("paper")["basis"]["solve"], "probes");
   EXPECT_EQ(lut("paper")["basis"], "paper");
   EXPECT_EQ(material("f82")["basis"]["name"], "f82");
   EXPECT_EQ(material("f82")["basis"]["solve"], "minimax");
   EXPECT_EQ(lut("f82")["basis"], "f82");
-  for (const std::string out : {"default", "paper", "f82"}) {
-    const std::string name = out == "default" ? "extended" : out;
+  for (const std::string out : {"default", "extended", "paper", "f82"}) {
+    const std::string name = out == "default" ? "powers" : out;
     const auto manifest = nlohmann::json::parse(read_file(dir_ / out / "matc_manifest.json"));
     EXPECT_EQ(manifest["basis"], name);
     EXPECT_NE(read_file(dir_ / out / "good.h").find("#define MATC_good_BASIS \"" + name + "\""),
@@ -624,7 +628,7 @@ TEST_F(MatcCli, ReportWritesAPlotAndSamplesPerMaterialAndAnIndex) {
     EXPECT_TRUE(fs::exists(dir_ / "rep" / name)) << name;
   const std::string index = read_file(dir_ / "rep" / "index.html");
   EXPECT_NE(index.find("src=\"Gold.svg\""), std::string::npos);
-  EXPECT_NE(index.find("basis <code>extended</code>"), std::string::npos);
+  EXPECT_NE(index.find("basis <code>powers</code>"), std::string::npos);
   const std::string first = read_file(dir_ / "rep" / "Gold.svg");
   ASSERT_EQ(run({"report", "-o", "rep", "good.json", "gold.json"}).exit_code, 0);
   EXPECT_EQ(read_file(dir_ / "rep" / "Gold.svg"), first) << "same inputs, same bytes";

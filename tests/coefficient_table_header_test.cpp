@@ -26,7 +26,7 @@ TEST(CoefficientTableHeader, ManifestDescribesTheLayout) {
   EXPECT_EQ(manifest["kind"], "matc Fresnel coefficient table");
   EXPECT_EQ(manifest["format"], "header");
   EXPECT_EQ(manifest["precision"], "f32");
-  EXPECT_EQ(manifest["basis"], "extended");
+  EXPECT_EQ(manifest["basis"], "powers");
   const std::size_t size = matc::runtime::shipped_coefficient_table().size;
   EXPECT_EQ(manifest["size"], nlohmann::json::array({size, size}));
   EXPECT_EQ(manifest["channels"], nlohmann::json::array({"c_2", "c_3"}));

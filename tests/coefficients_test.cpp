@@ -79,7 +79,7 @@ Summary summarise(ErrorStats FitAccuracy::*model,
     if (!preset.caveat.empty()) continue;
     const SpectralCurve curve(preset_spectrum(preset));
     const FitAccuracy accuracy = measure_accuracy(curve, solve_coefficients(curve, basis),
-                                                  runtime::shipped_basis_polynomial(kind), 501);
+                                                  runtime::shipped_shader_basis(kind), 501);
     for (const double max_error : (accuracy.*model).max_abs) {
       summary.worst = std::max(summary.worst, max_error);
       summary.mean_of_max += max_error;
@@ -127,7 +127,7 @@ TEST(Accuracy, DefaultBasisIsNoWorseThanThePaperOnArtisticInputs) {
       for (const auto kind : {runtime::BasisKind::extended, runtime::BasisKind::paper}) {
         const double error =
             measure_accuracy(curve, solve_coefficients(curve, runtime::shipped_basis(kind)),
-                             runtime::shipped_basis_polynomial(kind), 501)
+                             runtime::shipped_shader_basis(kind), 501)
                 .decomposition.max_abs[0];
         worst[b] = std::max(worst[b], error);
         sum[b++] += error;
@@ -140,7 +140,7 @@ TEST(Accuracy, DefaultBasisIsNoWorseThanThePaperOnArtisticInputs) {
 
 TEST(Coefficients, MinimaxSolveKeepsBothEndsExact) {
   const runtime::BasisView basis = runtime::shipped_basis(runtime::BasisKind::extended);
-  const auto& polynomial = runtime::shipped_basis_polynomial(runtime::BasisKind::extended);
+  const auto& polynomial = runtime::shipped_shader_basis(runtime::BasisKind::extended);
   for (const MetalPreset& preset : metal_presets()) {
     const SpectralCurve curve(preset_spectrum(preset));
     const runtime::Coefficients c = solve_coefficients(curve, basis);
@@ -156,7 +156,7 @@ TEST(Coefficients, MinimaxSolveKeepsBothEndsExact) {
 
 TEST(Coefficients, MinimaxSolveBeatsProbesOnTheSameBasis) {
   const runtime::BasisView basis = runtime::shipped_basis(runtime::BasisKind::extended);
-  const auto& polynomial = runtime::shipped_basis_polynomial(runtime::BasisKind::extended);
+  const auto& polynomial = runtime::shipped_shader_basis(runtime::BasisKind::extended);
   const SpectralCurve curve(preset_spectrum(*find_metal_preset("Hg")));
   const double minimax =
       measure_accuracy(curve, solve_coefficients_minimax(curve, polynomial), polynomial)
@@ -177,7 +177,7 @@ TEST(Accuracy, F82BasisFitsF82TintMaterialsWithinTheTarget) {
       const F82TintCurve curve({0.05 * i, 0.05 * i, 0.05 * i}, {0.1 * j, 0.1 * j, 0.1 * j});
       std::size_t b = 0;
       for (const auto kind : {runtime::BasisKind::f82, runtime::BasisKind::extended}) {
-        const auto& polynomial = runtime::shipped_basis_polynomial(kind);
+        const auto& polynomial = runtime::shipped_shader_basis(kind);
         const double error =
             measure_accuracy(curve, solve_coefficients(curve, runtime::shipped_basis(kind)),
                              polynomial, 501)
@@ -214,7 +214,8 @@ TEST(Accuracy, F82BasisStaysWellAheadOfSchlickOnMeasuredMetals) {
 TEST(Accuracy, RmsNeverExceedsMax) {
   const SpectralCurve curve(preset_spectrum(*find_metal_preset("Cr")));
   const FitAccuracy accuracy =
-      measure_accuracy(curve, solve_coefficients(curve, kBasis), runtime::paper_basis_polynomial());
+      measure_accuracy(curve, solve_coefficients(curve, kBasis),
+                       runtime::shipped_shader_basis(matc::runtime::BasisKind::paper));
   for (const ErrorStats* stats : {&accuracy.decomposition, &accuracy.schlick, &accuracy.f82_tint}) {
     for (std::size_t ch = 0; ch < 3; ++ch) {
       EXPECT_GT(stats->rms[ch], 0.0);

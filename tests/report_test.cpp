@@ -30,8 +30,7 @@ const char* const kChromium = R"({"name": "cr", "spectral": {"preset": "Cr"}})";
 
 TEST(MaterialCurves, RunFromNormalIncidenceToGrazing) {
   const CompiledMaterial material = compiled(kChromium);
-  const MaterialCurves curves =
-      sample_material_curves(material, runtime::shipped_basis_polynomial());
+  const MaterialCurves curves = sample_material_curves(material, runtime::shipped_shader_basis());
   ASSERT_EQ(curves.theta_degrees.size(), kReportAngles);
   EXPECT_EQ(curves.theta_degrees.front(), 0.0);
   EXPECT_EQ(curves.theta_degrees.back(), 90.0);
@@ -52,7 +51,7 @@ TEST(MaterialCurves, RunFromNormalIncidenceToGrazing) {
 
 TEST(MaterialCurves, CsvHasAHeaderAndOneRowPerAngle) {
   const MaterialCurves curves =
-      sample_material_curves(compiled(kChromium), runtime::shipped_basis_polynomial());
+      sample_material_curves(compiled(kChromium), runtime::shipped_shader_basis());
   const std::string csv = material_curves_csv(curves);
   EXPECT_EQ(count(csv, "\n"), kReportAngles + 1);
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
@@ -63,7 +62,7 @@ TEST(MaterialCurves, CsvHasAHeaderAndOneRowPerAngle) {
 
 TEST(FresnelPlot, HasAPanelPairPerChannelAndEveryCurve) {
   const MaterialCurves curves =
-      sample_material_curves(compiled(kChromium), runtime::shipped_basis_polynomial());
+      sample_material_curves(compiled(kChromium), runtime::shipped_shader_basis());
   const std::string svg = fresnel_plot_svg(curves, "cr <&>", "subtitle");
   EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
   EXPECT_EQ(svg.substr(svg.size() - 7), "</svg>\n");
@@ -79,7 +78,7 @@ TEST(FresnelPlot, HasAPanelPairPerChannelAndEveryCurve) {
 
 TEST(FresnelPlot, SameCurvesSameBytes) {
   const MaterialCurves curves =
-      sample_material_curves(compiled(kChromium), runtime::shipped_basis_polynomial());
+      sample_material_curves(compiled(kChromium), runtime::shipped_shader_basis());
   EXPECT_EQ(fresnel_plot_svg(curves, "a", "b"), fresnel_plot_svg(curves, "a", "b"));
 }
 

@@ -72,9 +72,9 @@ matc::runtime::Coefficients solve_with(Solve solve, const ReflectanceCurve& curv
     case Solve::talk_probes:
       return matc::solve_coefficients_at_probes(curve, with_talk_probes(basis.view()));
     case Solve::least_squares:
-      return matc::solve_coefficients_least_squares(curve, basis.polynomial);
+      return matc::solve_coefficients_least_squares(curve, basis.shader);
     case Solve::minimax:
-      return matc::solve_coefficients_minimax(curve, basis.polynomial);
+      return matc::solve_coefficients_minimax(curve, basis.shader);
   }
   return {};
 }
@@ -90,7 +90,7 @@ Score score(const TestSet& set, const FittedBasis& basis, Solve solve) {
   for (const TestCurve& curve : set.curves) {
     const matc::runtime::Coefficients coefficients = solve_with(solve, *curve.cached, basis);
     const matc::FitAccuracy accuracy =
-        matc::measure_accuracy(*curve.cached, coefficients, basis.polynomial);
+        matc::measure_accuracy(*curve.cached, coefficients, basis.shader);
     for (std::size_t c = 0; c < curve.channels; ++c) {
       result.worst = std::max(result.worst, accuracy.decomposition.max_abs[c]);
       result.mean += accuracy.decomposition.max_abs[c];

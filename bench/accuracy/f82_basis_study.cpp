@@ -28,9 +28,9 @@ using matc::TrainingCurve;
 using matc::bench::Totals;
 
 double max_error(const matc::ReflectanceCurve& curve, const FittedBasis& basis) {
-  const auto coefficients = matc::solve_coefficients_minimax(curve, basis.polynomial);
+  const auto coefficients = matc::solve_coefficients_minimax(curve, basis.shader);
   return matc::worst_channel(
-      matc::measure_accuracy(curve, coefficients, basis.polynomial).decomposition.max_abs);
+      matc::measure_accuracy(curve, coefficients, basis.shader).decomposition.max_abs);
 }
 
 TrainingCurve f82_curve(double f0, double tint) {

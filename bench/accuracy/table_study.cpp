@@ -21,9 +21,9 @@
 #include "matc/lut/coefficient_table_files.h"
 #include "matc/lut/preintegrate.h"
 #include "matc/optics/gulbrandsen.h"
-#include "matc/runtime/basis_polynomial.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/lut.h"
+#include "matc/runtime/shader_basis.h"
 #include "random_artistic.h"
 #include "test_sets.h"
 
@@ -45,8 +45,7 @@ std::vector<std::array<double, 4>> basis_at_cosines(matc::runtime::BasisKind kin
   std::vector<std::array<double, 4>> values(matc::kAccuracySamples);
   for (std::size_t j = 0; j < values.size(); ++j) {
     const double mu = static_cast<double>(j) / static_cast<double>(values.size() - 1);
-    values[j] =
-        matc::runtime::evaluate_basis_polynomial(matc::runtime::shipped_basis_polynomial(kind), mu);
+    values[j] = matc::runtime::evaluate_shader_basis(matc::runtime::shipped_shader_basis(kind), mu);
   }
   return values;
 }
@@ -229,6 +228,11 @@ std::vector<Design> designs() {
     all.push_back({fmt::format("{}², **sqrt r**, log n, c_2 c_3, minimax, f32", size), kib(size, 4),
                    from_table(table(size, kSqrt, kLog, kRaw, kMinimax))});
   }
+  for (const std::size_t size : {112u, 128u}) {
+    all.push_back({fmt::format("{}², **r^(1/4)**, log n, c_2 c_3, minimax, f32", size),
+                   kib(size, 4),
+                   from_table(table(size, ReflectivityAxis::fourth_root, kLog, kRaw, kMinimax))});
+  }
   all.push_back(
       {"96², **sqrt r**, log n, c_2 c_3, minimax, f32, **first column solved a quarter "
        "texel in**",
@@ -311,7 +315,7 @@ struct BasisInputs {
 };
 
 void print_designs() {
-  const BasisInputs extended(matc::runtime::BasisKind::extended);
+  const BasisInputs default_basis(kBasis);
   const BasisInputs paper(matc::runtime::BasisKind::paper);
   fmt::print(
       "| table | stored | 2,000 random: F max / mean | F max, r >= {0} | poor fits: excess | F̄ "
@@ -323,7 +327,7 @@ void print_designs() {
   for (const Design& design : designs()) {
     rows.push_back(std::async(std::launch::async, [&, design] {
       const BasisInputs& inputs_of_basis =
-          design.basis == matc::runtime::BasisKind::paper ? paper : extended;
+          design.basis == matc::runtime::BasisKind::paper ? paper : default_basis;
       std::string row = fmt::format("| {} | {} |", design.name, design.size);
       for (const auto* inputs : {&inputs_of_basis.random_inputs, &inputs_of_basis.grid_inputs}) {
         const DesignScore s = score(design, *inputs, inputs_of_basis.basis, inputs_of_basis.lut);
@@ -376,7 +380,7 @@ struct SetScore {
 };
 
 std::string set_row(const TestSet& set) {
-  const auto& polynomial = matc::runtime::shipped_basis_polynomial(kBasis);
+  const auto& polynomial = matc::runtime::shipped_shader_basis(kBasis);
   const matc::runtime::CoefficientTableView table =
       matc::runtime::shipped_coefficient_table(kBasis);
   SetScore s;
@@ -425,7 +429,7 @@ std::string set_row(const TestSet& set) {
 
 // Conductors given as n + ik, through the shaders' inverse mapping (matc_artistic_from_ior).
 std::string ior_row() {
-  const auto& polynomial = matc::runtime::shipped_basis_polynomial(kBasis);
+  const auto& polynomial = matc::runtime::shipped_shader_basis(kBasis);
   const auto table = matc::runtime::shipped_coefficient_table(kBasis);
   double compile_worst = 0.0, compile_mean = 0.0, table_worst = 0.0, table_mean = 0.0;
   std::size_t count = 0, clamped = 0;

@@ -17,6 +17,10 @@ tool="$build/bench/matc_accuracy_table"
 cmake --build "$build" --target matc_basis_study >/dev/null
 "$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" basis-study \
   "$build/bench/matc_basis_study"
+# The closed-form basis study (about 10 s on 2 cores): which powers of 1 - mu the default uses.
+cmake --build "$build" --target matc_closed_form_basis_study >/dev/null
+"$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" closed-form-basis-study \
+  "$build/bench/matc_closed_form_basis_study"
 # Whether a basis could fit F82-tint materials too (about 40 s on 2 cores).
 cmake --build "$build" --target matc_f82_basis_study >/dev/null
 "$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" f82-basis-study \

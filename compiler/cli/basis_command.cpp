@@ -27,6 +27,9 @@ std::string_view basis_description(runtime::BasisKind kind) {
     case runtime::BasisKind::f82:
       return "b_1 = (1 - mu)^5 and b_2 = mu (1 - mu)^6 span F82-tint, b_3 fitted to conductors; "
              "near-minimax coefficients";
+    case runtime::BasisKind::powers:
+      return "b_1 = (1 - mu)^6, b_2 = mu (1 - mu)^3, b_3 = mu (1 - mu)^9 in closed form; "
+             "near-minimax coefficients";
     case runtime::BasisKind::extended:
       break;
   }
@@ -40,14 +43,21 @@ int run_basis(const BasisOptions& options) {
   const runtime::BasisKind kind = basis_of(options.basis);
   const runtime::BasisView basis = runtime::shipped_basis(kind);
   if (!options.json) {
-    fmt::print("basis: {} ({}), b_0 = 1 and b_1..b_3 tabulated\n", runtime::basis_name(kind),
-               basis_description(kind));
+    const bool closed_form = kind == runtime::BasisKind::powers;
+    fmt::print("basis: {} ({}), b_0 = 1 and b_1..b_3 {}\n", runtime::basis_name(kind),
+               basis_description(kind), closed_form ? "in closed form" : "tabulated");
     fmt::print("samples: {} cosines mu_j = j / {}\n", basis.samples(), basis.samples() - 1);
     fmt::print("probes: mu_1 = {:.4f} (theta {:.3f} rad), mu_2 = {:.4f} (theta {:.3f} rad)\n",
                basis.probe_mu(0), std::acos(basis.probe_mu(0)), basis.probe_mu(1),
                std::acos(basis.probe_mu(1)));
+    if (closed_form) {
+      fmt::print(
+          "shader form: m = 1 - mu, b_1 = m^6, b_2 = mu m^3, b_3 = b_2 b_1 (the table is the "
+          "closed form sampled)\n");
+      return kExitSuccess;
+    }
     const PolynomialFitError error =
-        polynomial_fit_error(runtime::shipped_basis_polynomial(kind), basis);
+        polynomial_fit_error(runtime::shipped_shader_basis(kind).polynomial, basis);
     fmt::print(
         "shader form: {} polynomials of degree {} in sqrt(mu); max |polynomial - table| for "
         "b_1, b_2, b_3: {:.1e}, {:.1e}, {:.1e} at the samples, {:.1e}, {:.1e}, {:.1e} between "
@@ -97,6 +107,13 @@ int write_source(const std::string& output, const std::string& source) {
 }  // namespace
 
 int run_basis_fit(const BasisFitOptions& options) {
+  if (basis_of(options.basis) == runtime::BasisKind::powers) {
+    fmt::print(stderr,
+               "matc: error: --basis powers is a closed form (runtime/src/powers_basis.cpp) with "
+               "no table to fit; the fitted bases are {}\n",
+               "extended, paper, f82");
+    return kExitUsageError;
+  }
   const FittedBasis basis = fit_shipped_basis(basis_of(options.basis));
   fmt::print(stderr, "matc: fitted basis: probes mu_1 = {:.4f}, mu_2 = {:.4f}\n",
              basis.view().probe_mu(0), basis.view().probe_mu(1));

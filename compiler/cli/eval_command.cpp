@@ -35,8 +35,8 @@ using LabelledCoefficients = std::vector<std::pair<std::string, runtime::Coeffic
 // F at each cosine as the shaders compute it, beside the exact curve.
 void add_direct_fresnel(const EvalOptions& options, const ReflectanceCurve& curve,
                         const LabelledCoefficients& coefficients, ordered_json& out) {
-  const runtime::BasisPolynomial& polynomial =
-      runtime::shipped_basis_polynomial(basis_of(options.lut.basis));
+  const runtime::ShaderBasis& polynomial =
+      runtime::shipped_shader_basis(basis_of(options.lut.basis));
   out["mu"] = options.mu;
   for (const auto& [label, values] : coefficients) {
     ordered_json decomposed = ordered_json::array();

@@ -62,7 +62,7 @@ int run_report(const ReportOptions& options) {
   }
   const runtime::BasisKind kind = basis_of(options.basis);
   const runtime::BasisView basis = runtime::shipped_basis(kind);
-  const runtime::BasisPolynomial& polynomial = runtime::shipped_basis_polynomial(kind);
+  const runtime::ShaderBasis& polynomial = runtime::shipped_shader_basis(kind);
 
   struct Output {
     std::string name;

@@ -124,7 +124,7 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
   const AccuracyGridCurve& curve = mapped_grid ? *mapped_grid : unmapped_grid;
   compiled.coefficients = solve_coefficients(curve, basis);
   compiled.accuracy =
-      measure_accuracy(curve, compiled.coefficients, runtime::shipped_basis_polynomial(basis.kind));
+      measure_accuracy(curve, compiled.coefficients, runtime::shipped_shader_basis(basis.kind));
   compiled.f0 = curve.at(1.0);
   compiled.f82 = curve.at(kF82MuBar);
   compiled.average_fresnel =

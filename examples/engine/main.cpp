@@ -116,11 +116,11 @@ int main() {
   //    header's F0 comment's claim that F(1) = F0.
   const auto gold = from_header(matc_coefficients_gold);
   const auto f_normal =
-      matc::runtime::evaluate_fresnel(gold, matc::runtime::shipped_basis_polynomial(), 1.0);
+      matc::runtime::evaluate_fresnel(gold, matc::runtime::shipped_shader_basis(), 1.0);
   expect(f_normal[0] > 0.9 && f_normal[2] < 0.5, "gold.h: F(0 degrees) is gold's (reddish-yellow)");
   const auto tint = from_header(matc_coefficients_figure2_edge_tint);
   const auto f_grazing =
-      matc::runtime::evaluate_fresnel(tint, matc::runtime::shipped_basis_polynomial(), 0.05);
+      matc::runtime::evaluate_fresnel(tint, matc::runtime::shipped_shader_basis(), 0.05);
   expect(f_grazing[1] > f_grazing[0], "figure2_edge_tint.h: green edge tint near grazing");
   expect(std::string(MATC_gold_LUT_FILE) == "matc_lut.ktx2", "gold.h names the table it needs");
 
@@ -167,7 +167,7 @@ void main() {
         matc::runtime::shipped_coefficient_table(), {0.91, 0.78, 0.42}, {0.95, 0.93, 0.88});
     double worst = 0.0;
     for (int i = 0; i <= 100; ++i) {
-      const auto& basis = matc::runtime::shipped_basis_polynomial();
+      const auto& basis = matc::runtime::shipped_shader_basis();
       const auto table_f = matc::runtime::evaluate_fresnel(texel, basis, i / 100.0);
       const auto compiled_f =
           matc::runtime::evaluate_fresnel(brass->coefficients, basis, i / 100.0);

@@ -9,6 +9,7 @@ namespace matc::runtime {
 const AnalyticLutCoefficients& extended_analytic_lut();
 const AnalyticLutCoefficients& paper_analytic_lut();
 const AnalyticLutCoefficients& f82_analytic_lut();
+const AnalyticLutCoefficients& powers_analytic_lut();
 
 const AnalyticLutCoefficients& shipped_analytic_lut(BasisKind kind) {
   switch (kind) {
@@ -16,6 +17,8 @@ const AnalyticLutCoefficients& shipped_analytic_lut(BasisKind kind) {
       return paper_analytic_lut();
     case BasisKind::f82:
       return f82_analytic_lut();
+    case BasisKind::powers:
+      return powers_analytic_lut();
     case BasisKind::extended:
       break;
   }

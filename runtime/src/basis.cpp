@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "matc/runtime/powers_basis.h"
+
 namespace matc::runtime {
 
 std::string_view basis_name(BasisKind kind) {
@@ -11,6 +13,8 @@ std::string_view basis_name(BasisKind kind) {
       return "paper";
     case BasisKind::f82:
       return "f82";
+    case BasisKind::powers:
+      return "powers";
     case BasisKind::extended:
       break;
   }
@@ -29,6 +33,8 @@ BasisView shipped_basis(BasisKind kind) {
       return paper_basis();
     case BasisKind::f82:
       return f82_basis();
+    case BasisKind::powers:
+      return powers_basis();
     case BasisKind::extended:
       break;
   }

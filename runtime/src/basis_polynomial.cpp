@@ -26,16 +26,4 @@ std::array<double, kBasisSize> evaluate_basis_polynomial(const BasisPolynomial& 
   return values;
 }
 
-const BasisPolynomial& shipped_basis_polynomial(BasisKind kind) {
-  switch (kind) {
-    case BasisKind::paper:
-      return paper_basis_polynomial();
-    case BasisKind::f82:
-      return f82_basis_polynomial();
-    case BasisKind::extended:
-      break;
-  }
-  return extended_basis_polynomial();
-}
-
 }  // namespace matc::runtime

@@ -87,6 +87,8 @@ CoefficientTableView shipped_coefficient_table(BasisKind kind) {
       return paper_coefficient_table();
     case BasisKind::f82:
       return f82_coefficient_table();
+    case BasisKind::powers:
+      return powers_coefficient_table();
     case BasisKind::extended:
       break;
   }

@@ -19,8 +19,8 @@ Rgb evaluate_fresnel(const Coefficients& coefficients, const BasisView& basis, d
   return combine(coefficients, basis.evaluate(mu));
 }
 
-Rgb evaluate_fresnel(const Coefficients& coefficients, const BasisPolynomial& basis, double mu) {
-  return combine(coefficients, evaluate_basis_polynomial(basis, mu));
+Rgb evaluate_fresnel(const Coefficients& coefficients, const ShaderBasis& basis, double mu) {
+  return combine(coefficients, evaluate_shader_basis(basis, mu));
 }
 
 }  // namespace matc::runtime

@@ -17,33 +17,12 @@ struct MatcFresnelCoefficients {
   float4 blue;
 };
 
-// One polynomial coefficient of the segment: chosen with selects rather than by indexing a
-// constant array, which compilers turn into memory traffic.
-float3 matc_basis_coefficient(int segment, float3 s0, float3 s1, float3 s2, float3 s3) {
-  bool odd = (segment & 1) != 0;
-  return segment >= 2 ? (odd ? s3 : s2) : (odd ? s1 : s0);
-}
-
-// The basis b_0..b_3 at mu = cos(theta): b_1..b_3 are {{segments}} polynomials of degree {{degree}}
-// in u = sqrt(mu), each in t in [-1, 1] across its quarter of u, evaluated by Horner's rule.
-float4 matc_basis(float mu) {
-  float scaled = sqrt(saturate(mu)) * {{segments}}.0;
-  int segment = min(int(scaled), {{last_segment}});
-  float t = 2.0 * (scaled - float(segment)) - 1.0;
-{{horner_steps}}
-  return float4(1.0, b);
-}
-
 // sum_i c_i v_i per channel, clamped at 0 where the truncated basis dips below it.
 float3 matc_combine(MatcFresnelCoefficients c, float4 v) {
   return max(float3(dot(c.red, v), dot(c.green, v), dot(c.blue, v)), 0.0);
 }
 
-// F for a direct light: mu = dot(V, H).
-float3 matc_fresnel(MatcFresnelCoefficients c, float mu) {
-  return matc_combine(c, matc_basis(mu));
-}
-
+{{basis_function}}
 // Where to sample the preintegrated table, with linear filtering and clamp-to-edge addressing:
 // u = sqrt(NdotV) across, perceptual roughness down, texel centres on the ends of both axes.
 float2 matc_lut_texcoord(float NdotV, float roughness) {

@@ -10,8 +10,8 @@
 #include <string>
 
 #include "channel_list.h"
-#include "matc/runtime/basis_polynomial.h"
 #include "matc/runtime/coefficient_table.h"
+#include "matc/runtime/shader_basis.h"
 
 namespace {
 
@@ -22,7 +22,7 @@ void check_finite(const matc::runtime::Coefficients& coefficients) {
       if (!std::isfinite(c)) __builtin_trap();
   }
   const auto f =
-      matc::runtime::evaluate_fresnel(coefficients, matc::runtime::shipped_basis_polynomial(), 0.5);
+      matc::runtime::evaluate_fresnel(coefficients, matc::runtime::shipped_shader_basis(), 0.5);
   for (const double value : f)
     if (!std::isfinite(value)) __builtin_trap();
 }

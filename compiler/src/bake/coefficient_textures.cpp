@@ -9,8 +9,8 @@
 #include "matc/compile.h"  // kPoorFitMaxError
 #include "matc/fit/conductor_solver.h"
 #include "matc/optics/gulbrandsen.h"
-#include "matc/runtime/basis_polynomial.h"
 #include "matc/runtime/coefficient_table.h"
+#include "matc/runtime/shader_basis.h"
 #include "parallel_rows.h"
 
 namespace matc {
@@ -129,10 +129,10 @@ void solve_exact(const BakeInputs& inputs, const BakeOptions& options, BakedCoef
 // per bake rather than once per texel and channel.
 using ErrorMapBasis = std::array<runtime::ChannelCoefficients, kErrorMapCosines>;
 ErrorMapBasis error_map_basis(runtime::BasisKind kind) {
-  const runtime::BasisPolynomial& polynomial = runtime::shipped_basis_polynomial(kind);
+  const runtime::ShaderBasis& polynomial = runtime::shipped_shader_basis(kind);
   ErrorMapBasis basis{};
   for (std::size_t j = 0; j < kErrorMapCosines; ++j)
-    basis[j] = runtime::evaluate_basis_polynomial(
+    basis[j] = runtime::evaluate_shader_basis(
         polynomial, static_cast<double>(j) / static_cast<double>(kErrorMapCosines - 1));
   return basis;
 }

@@ -1,5 +1,7 @@
 #include "matc/basis/basis_fit.h"
 
+#include "matc/runtime/powers_basis.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -123,7 +125,7 @@ FittedBasis fit_basis(std::span<const TrainingCurve> training,
   basis.tables[2] = scaled_to_unit_peak(second.matrixV().col(1).cwiseQuotient(columns));
 
   basis.probe_indices = probes_of(basis);
-  basis.polynomial = fit_basis_polynomial(basis.view());
+  basis.shader = fit_basis_polynomial(basis.view());
   return basis;
 }
 
@@ -190,7 +192,18 @@ FittedBasis fit_f82_basis() {
                   scaled_to_unit_peak(svd.matrixV().col(0))};
   basis.kind = runtime::BasisKind::f82;
   basis.probe_indices = probes_of(basis);
-  basis.polynomial = fit_basis_polynomial(basis.view());
+  basis.shader = fit_basis_polynomial(basis.view());
+  return basis;
+}
+
+FittedBasis powers_fitted_basis() {
+  const runtime::BasisView view = runtime::powers_basis();
+  FittedBasis basis;
+  for (std::size_t i = 0; i < basis.tables.size(); ++i)
+    basis.tables[i].assign(view.tables[i].begin(), view.tables[i].end());
+  basis.probe_indices = view.probe_indices;
+  basis.shader = runtime::ShaderBasis::powers();
+  basis.kind = runtime::BasisKind::powers;
   return basis;
 }
 
@@ -200,6 +213,8 @@ FittedBasis fit_shipped_basis(runtime::BasisKind kind) {
       return fit_paper_basis();
     case runtime::BasisKind::f82:
       return fit_f82_basis();
+    case runtime::BasisKind::powers:
+      return powers_fitted_basis();
     case runtime::BasisKind::extended:
       break;
   }
@@ -221,6 +236,8 @@ std::string training_description(runtime::BasisKind kind) {
     case runtime::BasisKind::f82:
       return "// b_1 = (1 - mu)^5 and b_2 = mu (1 - mu)^6 scaled to a peak of 1: F82-tint's span.\n"
              "// b_3: first singular vector of what they leave of the extended training set.\n";
+    case runtime::BasisKind::powers:
+      return "// b_1..b_3: the closed form of runtime/powers_basis.h (nothing fitted).\n";
     case runtime::BasisKind::extended:
       break;
   }
@@ -260,7 +277,7 @@ std::string basis_table_source(const FittedBasis& basis) {
       "// The shaders' form: per segment, (b_1, b_2, b_3) coefficients of t^{} .. t^0.\n"
       "constexpr BasisPolynomial kPolynomial = {{{{\n",
       runtime::kPolynomialDegree);
-  for (const runtime::PolynomialSegment& segment : basis.polynomial) {
+  for (const runtime::PolynomialSegment& segment : basis.shader.polynomial) {
     out += "  {{\n";
     for (const auto& triple : segment)
       out += fmt::format("    {{{}, {}, {}}},\n", triple[0], triple[1], triple[2]);

@@ -15,8 +15,8 @@
 #include "matc/lut/coefficient_table_files.h"
 #include "matc/lut/default_lut_hashes.h"
 #include "matc/material/parse.h"
-#include "matc/runtime/basis_polynomial.h"
 #include "matc/runtime/ltc.h"
+#include "matc/runtime/shader_basis.h"
 #include "matc/spirv/linkage.h"
 #include "matc/spirv/spirv_tools.h"
 #include "matc/version.h"
@@ -153,18 +153,18 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
                                        embedded_lut()};
   library_options.ltc_size = runtime::shipped_ltc_table().size;
   library_options.analytic_lut = options_.basis;
-  const runtime::BasisPolynomial& polynomial = runtime::shipped_basis_polynomial(options_.basis);
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(options_.basis);
   glsl_library_ =
-      shader_library_source(ShaderLanguage::glsl, polynomial, library_options, inputs_hash_);
+      shader_library_source(ShaderLanguage::glsl, shader_basis, library_options, inputs_hash_);
   hlsl_library_ =
-      shader_library_source(ShaderLanguage::hlsl, polynomial, library_options, inputs_hash_);
+      shader_library_source(ShaderLanguage::hlsl, shader_basis, library_options, inputs_hash_);
   wgsl_library_ =
-      shader_library_source(ShaderLanguage::wgsl, polynomial, library_options, inputs_hash_);
+      shader_library_source(ShaderLanguage::wgsl, shader_basis, library_options, inputs_hash_);
   library_options.coefficient_table_functions = false;
   library_options.area_light_functions = false;
   library_options.analytic_lut.reset();
   glsl_material_module_library_ =
-      shader_library_source(ShaderLanguage::glsl, polynomial, library_options, inputs_hash_);
+      shader_library_source(ShaderLanguage::glsl, shader_basis, library_options, inputs_hash_);
 }
 
 const Build::BakedTable& Build::baked_table() const {

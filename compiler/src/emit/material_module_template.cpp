@@ -80,7 +80,10 @@ std::string material_module_templates_source(std::span<const MaterialModuleTempl
     out += fmt::format("    case runtime::BasisKind::{0}: return k{0};\n",
                        runtime::basis_name(entry.basis));
   }
+  // A basis without a checked-in module (a new one, before `matc basis material-modules`) is
+  // compiled instead.
   out +=
+      "    default: break;\n"
       "  }\n"
       "  return {};\n"
       "}\n\n"

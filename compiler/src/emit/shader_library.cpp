@@ -66,6 +66,18 @@ std::string horner_steps(ShaderLanguage language, const runtime::BasisPolynomial
   return out;
 }
 
+// matc_basis(): the fitted bases' piecewise polynomial, or the powers basis' closed form.
+std::string basis_function_source(ShaderLanguage language, const runtime::ShaderBasis& basis) {
+  if (basis.form == runtime::ShaderBasisForm::powers) {
+    return fill_template(template_path(language, "basis_powers"), {});
+  }
+  return fill_template(template_path(language, "basis_polynomial"),
+                       {{"segments", std::to_string(runtime::kPolynomialSegments)},
+                        {"last_segment", std::to_string(runtime::kPolynomialSegments - 1)},
+                        {"degree", std::to_string(runtime::kPolynomialDegree)},
+                        {"horner_steps", horner_steps(language, basis.polynomial)}});
+}
+
 // The closed form's 36 matrix constants (4 channels x 3x3 blocks) and the four channel calls.
 // GLSL and WGSL take matrices by column, HLSL by row: either way block (A, B) maps the powers
 // y^(4B..4B+3) to the rows p = 4A..4A+3.
@@ -128,8 +140,7 @@ std::string area_light_source(ShaderLanguage language, std::size_t ltc_size) {
 
 }  // namespace
 
-std::string shader_library_source(ShaderLanguage language,
-                                  const runtime::BasisPolynomial& polynomial,
+std::string shader_library_source(ShaderLanguage language, const runtime::ShaderBasis& basis,
                                   const ShaderLibraryOptions& options,
                                   std::string_view inputs_hash) {
   return fill_template(
@@ -138,10 +149,7 @@ std::string shader_library_source(ShaderLanguage language,
        {"version_number", std::to_string(kVersionNumber)},
        {"inputs_hash", std::string(inputs_hash)},
        {"lut_size", std::to_string(options.lut_size)},
-       {"segments", std::to_string(runtime::kPolynomialSegments)},
-       {"last_segment", std::to_string(runtime::kPolynomialSegments - 1)},
-       {"degree", std::to_string(runtime::kPolynomialDegree)},
-       {"horner_steps", horner_steps(language, polynomial)},
+       {"basis_function", basis_function_source(language, basis)},
        {"coefficient_table",
         options.coefficient_table_functions
             ? fill_template(

@@ -58,7 +58,7 @@ double worst_channel(const Rgb& values) {
 
 FitAccuracy measure_accuracy(const ReflectanceCurve& curve,
                              const runtime::Coefficients& coefficients,
-                             const runtime::BasisPolynomial& shader_basis, std::size_t samples) {
+                             const runtime::ShaderBasis& shader_basis, std::size_t samples) {
   const Rgb f0 = curve.at(1.0);
   const Rgb f82 = curve.at(kF82MuBar);
   ErrorAccumulator ours;

@@ -10,7 +10,7 @@
 #include "matc/fit/coefficients.h"
 #include "matc/optics/gulbrandsen.h"
 #include "matc/optics/reflectance_curve.h"
-#include "matc/runtime/basis_polynomial.h"
+#include "matc/runtime/shader_basis.h"
 #include "matc/version.h"
 #include "parallel_rows.h"
 
@@ -23,6 +23,8 @@ double u_coordinate(const CoefficientTableOptions& options, double reflectivity)
       return runtime::coefficient_table_u_from_reflectivity(reflectivity);
     case ReflectivityAxis::square_root:
       return std::sqrt(std::clamp(reflectivity, 0.0, 1.0));
+    case ReflectivityAxis::fourth_root:
+      return std::sqrt(std::sqrt(std::clamp(reflectivity, 0.0, 1.0)));
     case ReflectivityAxis::stretched_square_root: {
       const double s = std::sqrt(std::clamp(reflectivity, 0.0, 1.0));
       return 2.0 * s / (1.0 + s);
@@ -51,7 +53,7 @@ double v_coordinate(const CoefficientTableOptions& options, double reflectivity,
 runtime::Coefficients solve(const ReflectanceCurve& curve, runtime::BasisKind basis,
                             TableSolve method) {
   if (method == TableSolve::least_squares) {
-    return solve_coefficients_least_squares(curve, runtime::shipped_basis_polynomial(basis));
+    return solve_coefficients_least_squares(curve, runtime::shipped_shader_basis(basis));
   }
   return solve_coefficients(curve, runtime::shipped_basis(basis));
 }
@@ -102,6 +104,8 @@ double coefficient_table_column_reflectivity(const CoefficientTableOptions& opti
       return runtime::coefficient_table_reflectivity_from_u(u);
     case ReflectivityAxis::square_root:
       return u * u;
+    case ReflectivityAxis::fourth_root:
+      return u * u * u * u;
     case ReflectivityAxis::stretched_square_root: {
       const double s = u / (2.0 - u);
       return s * s;

@@ -35,14 +35,14 @@ namespace {
 
 // (c_2, c_3) fitted to the residual after c_0 + c_1 b_1, by Lawson's iterations (0: least squares).
 runtime::Coefficients solve_by_fit(const ReflectanceCurve& curve,
-                                   const runtime::BasisPolynomial& shader_basis, int iterations) {
+                                   const runtime::ShaderBasis& shader_basis, int iterations) {
   constexpr auto kRows = static_cast<Eigen::Index>(kMinimaxCosines);
   const Rgb f0 = curve.at(1.0);
   Eigen::MatrixXd design(kRows, 2);
   Eigen::MatrixXd residual(kRows, 3);
   for (Eigen::Index j = 0; j < kRows; ++j) {
     const double mu = static_cast<double>(j) / static_cast<double>(kRows - 1);
-    const auto b = runtime::evaluate_basis_polynomial(shader_basis, mu);
+    const auto b = runtime::evaluate_shader_basis(shader_basis, mu);
     const Rgb exact = curve.at(mu);
     design(j, 0) = b[2];
     design(j, 1) = b[3];
@@ -63,19 +63,19 @@ runtime::Coefficients solve_by_fit(const ReflectanceCurve& curve,
 }  // namespace
 
 runtime::Coefficients solve_coefficients_minimax(const ReflectanceCurve& curve,
-                                                 const runtime::BasisPolynomial& shader_basis) {
+                                                 const runtime::ShaderBasis& shader_basis) {
   return solve_by_fit(curve, shader_basis, 40);
 }
 
-runtime::Coefficients solve_coefficients_least_squares(
-    const ReflectanceCurve& curve, const runtime::BasisPolynomial& shader_basis) {
+runtime::Coefficients solve_coefficients_least_squares(const ReflectanceCurve& curve,
+                                                       const runtime::ShaderBasis& shader_basis) {
   return solve_by_fit(curve, shader_basis, 0);
 }
 
 runtime::Coefficients solve_coefficients(const ReflectanceCurve& curve,
                                          const runtime::BasisView& basis) {
   if (basis.kind == runtime::BasisKind::paper) return solve_coefficients_at_probes(curve, basis);
-  return solve_coefficients_minimax(curve, runtime::shipped_basis_polynomial(basis.kind));
+  return solve_coefficients_minimax(curve, runtime::shipped_shader_basis(basis.kind));
 }
 
 }  // namespace matc

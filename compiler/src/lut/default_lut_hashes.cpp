@@ -8,6 +8,14 @@ namespace matc {
 std::vector<DefaultLutHash> checked_in_default_lut_hashes() {
   using runtime::BasisKind;
   return {
+    {BasisKind::powers, LutFormat::ktx2, LutPrecision::f16, "eddcf6b431f3ddc7"},
+    {BasisKind::powers, LutFormat::ktx2, LutPrecision::f32, "ab74b37a86e0fbb1"},
+    {BasisKind::powers, LutFormat::dds, LutPrecision::f16, "0b3eb47172b3c100"},
+    {BasisKind::powers, LutFormat::dds, LutPrecision::f32, "0fd6191ebb0f4b2e"},
+    {BasisKind::powers, LutFormat::raw, LutPrecision::f16, "917b6d1dfc050386"},
+    {BasisKind::powers, LutFormat::raw, LutPrecision::f32, "571549cf948ea0b5"},
+    {BasisKind::powers, LutFormat::header, LutPrecision::f16, "948bdaa577764e4f"},
+    {BasisKind::powers, LutFormat::header, LutPrecision::f32, "9b14aebfeca8b983"},
     {BasisKind::extended, LutFormat::ktx2, LutPrecision::f16, "ed6fcdf00c76f78d"},
     {BasisKind::extended, LutFormat::ktx2, LutPrecision::f32, "c58313cf4ab2fe38"},
     {BasisKind::extended, LutFormat::dds, LutPrecision::f16, "01ee7e2273c261da"},

@@ -10,7 +10,7 @@
 namespace matc {
 
 MaterialCurves sample_material_curves(const CompiledMaterial& compiled,
-                                      const runtime::BasisPolynomial& shader_basis) {
+                                      const runtime::ShaderBasis& shader_basis) {
   const auto exact = make_reflectance_curve(compiled.material, compiled.color);
   MaterialCurves curves;
   for (std::size_t i = 0; i < kReportAngles; ++i) {

@@ -5,9 +5,9 @@
 
 #include "matc/emit/validation_kernel.h"
 #include "matc/runtime/analytic_lut.h"
-#include "matc/runtime/basis_polynomial.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/lut.h"
+#include "matc/runtime/shader_basis.h"
 #include "matc/vulkan/compute_kernel.h"
 #include "validator_device.h"
 
@@ -93,8 +93,7 @@ PathValidation DeviceValidator::run(ShaderLanguage language,
   const std::vector<float> results =
       device_->results.read<float>(queries_.size() * kValidationResultsPerQuery * 4);
 
-  const runtime::BasisPolynomial& polynomial =
-      runtime::shipped_basis_polynomial(build_.options().basis);
+  const runtime::ShaderBasis& polynomial = runtime::shipped_shader_basis(build_.options().basis);
   const runtime::LutView table = build_.stored_lut().view();
   const Lut* embedded = build_.embedded_lut();
   const runtime::AnalyticLutCoefficients& analytic =

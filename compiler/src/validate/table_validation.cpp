@@ -6,9 +6,9 @@
 
 #include "matc/emit/validation_kernel.h"
 #include "matc/runtime/baked_coefficients.h"
-#include "matc/runtime/basis_polynomial.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/lut.h"
+#include "matc/runtime/shader_basis.h"
 #include "matc/validate/device_validation.h"
 #include "matc/vulkan/compute_kernel.h"
 #include "validator_device.h"
@@ -83,8 +83,7 @@ TablePathValidation DeviceValidator::run_table(ShaderLanguage language) const {
       build_.table_validation_module(language), packed, queries.size(),
       queries.size() * kTableValidationResultsPerQuery * 4, /*with_ltc=*/false);
 
-  const runtime::BasisPolynomial& polynomial =
-      runtime::shipped_basis_polynomial(build_.options().basis);
+  const runtime::ShaderBasis& polynomial = runtime::shipped_shader_basis(build_.options().basis);
   const runtime::CoefficientTableView table = build_.stored_coefficient_table().view();
   const runtime::LutView lut = build_.stored_lut().view();
   TablePathValidation path;

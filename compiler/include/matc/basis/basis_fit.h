@@ -12,7 +12,7 @@
 #include "matc/optics/fresnel.h"
 
 #include "matc/runtime/basis.h"
-#include "matc/runtime/basis_polynomial.h"
+#include "matc/runtime/shader_basis.h"
 
 namespace matc {
 
@@ -32,8 +32,9 @@ struct PaperBasisOptions {
 struct FittedBasis {
   std::array<std::vector<double>, runtime::kBasisSize - 1> tables;  // b_1, b_2, b_3
   std::array<std::size_t, 2> probe_indices{};
-  // The shaders' form of the tables (fit_basis_polynomial).
-  runtime::BasisPolynomial polynomial{};
+  // How the shaders evaluate it: the piecewise polynomial fitted to the tables
+  // (fit_basis_polynomial), or the powers basis' closed form.
+  runtime::ShaderBasis shader{};
   runtime::BasisKind kind = runtime::BasisKind::paper;  // which coefficient solve it is meant for
 
   runtime::BasisView view() const;
@@ -95,7 +96,12 @@ FittedBasis fit_extended_basis();
 // b_3 = the first singular vector of what b_1 and b_2 leave of the extended training set.
 FittedBasis fit_f82_basis();
 
-// Refits a shipped basis from scratch (what `matc basis fit --basis NAME` does).
+// The powers basis (runtime::BasisKind::powers) as a FittedBasis: its closed form tabulated, its
+// shader form the closed form itself. Nothing is fitted.
+FittedBasis powers_fitted_basis();
+
+// Refits a shipped basis from scratch (what `matc basis fit --basis NAME` does); the powers
+// basis is returned as powers_fitted_basis().
 FittedBasis fit_shipped_basis(runtime::BasisKind kind);
 
 // The C++ source of runtime/src/<name>_basis_table.cpp for a refit shipped basis.

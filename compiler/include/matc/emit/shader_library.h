@@ -10,7 +10,7 @@
 #include "matc/ltc/ltc_fit.h"
 #include "matc/lut/preintegrate.h"
 #include "matc/runtime/basis.h"
-#include "matc/runtime/basis_polynomial.h"
+#include "matc/runtime/shader_basis.h"
 
 namespace matc {
 
@@ -30,8 +30,7 @@ struct ShaderLibraryOptions {
   std::optional<runtime::BasisKind> analytic_lut = std::nullopt;
 };
 
-std::string shader_library_source(ShaderLanguage language,
-                                  const runtime::BasisPolynomial& polynomial,
+std::string shader_library_source(ShaderLanguage language, const runtime::ShaderBasis& basis,
                                   const ShaderLibraryOptions& options,
                                   std::string_view inputs_hash);
 

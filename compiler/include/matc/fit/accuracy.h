@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "matc/optics/reflectance_curve.h"
-#include "matc/runtime/basis_polynomial.h"
 #include "matc/runtime/fresnel.h"
+#include "matc/runtime/shader_basis.h"
 
 namespace matc {
 
@@ -47,7 +47,7 @@ struct FitAccuracy {
 
 FitAccuracy measure_accuracy(const ReflectanceCurve& curve,
                              const runtime::Coefficients& coefficients,
-                             const runtime::BasisPolynomial& shader_basis,
+                             const runtime::ShaderBasis& shader_basis,
                              std::size_t samples = kAccuracySamples);
 
 }  // namespace matc

@@ -20,6 +20,7 @@ namespace matc {
 enum class ReflectivityAxis {
   cube_root,    // u = r^(1/3): texels follow curves that change fastest at low r (shipped)
   square_root,  // u = sqrt(r): fewer texels near r = 0
+  fourth_root,  // u = r^(1/4) = sqrt(sqrt(r)): more texels near r = 0, one square root more
   linear,       // u = r
   stretched_square_root,  // u = 2 s / (1 + s), s = sqrt(r): twice the texels at low r, half at 1
 };
@@ -43,9 +44,10 @@ enum class TableSolve {
   least_squares,  // smooth in (r, g), but further from the per-material compile
 };
 
-// 112: the study (docs/accuracy.md) finds it within 0.0015 of the per-material compile on the
-// issue's random and grid inputs, near-black metals included; 49 KiB in f16, 98 KiB in f32.
-inline constexpr std::size_t kDefaultCoefficientTableSize = 112;
+// 128: the study (docs/accuracy.md) finds it within 0.002 of the per-material compile on the
+// issue's random and grid inputs for every basis; the powers basis' coefficients change fastest
+// near r = 1, where 112 columns left 0.0021 (issue #28); 64 KiB in f16, 128 KiB in f32.
+inline constexpr std::size_t kDefaultCoefficientTableSize = 128;
 inline constexpr std::size_t kMinCoefficientTableSize = 2;
 inline constexpr std::size_t kMaxCoefficientTableSize = 1024;
 

@@ -3,8 +3,8 @@
 
 #include "matc/optics/reflectance_curve.h"
 #include "matc/runtime/basis.h"
-#include "matc/runtime/basis_polynomial.h"
 #include "matc/runtime/fresnel.h"
+#include "matc/runtime/shader_basis.h"
 
 namespace matc {
 
@@ -19,11 +19,11 @@ runtime::Coefficients solve_coefficients_at_probes(const ReflectanceCurve& curve
 // measured on the basis as the shaders evaluate it (`shader_basis`).
 inline constexpr std::size_t kMinimaxCosines = 401;
 runtime::Coefficients solve_coefficients_minimax(const ReflectanceCurve& curve,
-                                                 const runtime::BasisPolynomial& shader_basis);
+                                                 const runtime::ShaderBasis& shader_basis);
 
 // Least squares over the same cosines (uniform weights): the solve minimax starts from.
-runtime::Coefficients solve_coefficients_least_squares(
-    const ReflectanceCurve& curve, const runtime::BasisPolynomial& shader_basis);
+runtime::Coefficients solve_coefficients_least_squares(const ReflectanceCurve& curve,
+                                                       const runtime::ShaderBasis& shader_basis);
 
 // The basis' own solve: at its probes for the paper basis, near-minimax for the conductor basis.
 runtime::Coefficients solve_coefficients(const ReflectanceCurve& curve,

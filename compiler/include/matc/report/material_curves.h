@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "matc/compile.h"
-#include "matc/runtime/basis_polynomial.h"
+#include "matc/runtime/shader_basis.h"
 
 namespace matc {
 
@@ -23,7 +23,7 @@ struct MaterialCurves {
 };
 
 MaterialCurves sample_material_curves(const CompiledMaterial& compiled,
-                                      const runtime::BasisPolynomial& shader_basis);
+                                      const runtime::ShaderBasis& shader_basis);
 
 // theta_deg, then exact, ours, Schlick and F82-tint per channel: one row per angle.
 std::string material_curves_csv(const MaterialCurves& curves);

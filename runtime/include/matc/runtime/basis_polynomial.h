@@ -32,10 +32,10 @@ PolynomialPosition polynomial_position(double mu);
 std::array<double, kBasisSize> evaluate_basis_polynomial(const BasisPolynomial& polynomial,
                                                          double mu);
 
-// The fits of the shipped bases, checked in beside their tables.
+// The fits of the fitted bases (kFittedBases), checked in beside their tables; shader_basis.h
+// has every shipped basis' shader form.
 const BasisPolynomial& paper_basis_polynomial();
 const BasisPolynomial& extended_basis_polynomial();
 const BasisPolynomial& f82_basis_polynomial();
-const BasisPolynomial& shipped_basis_polynomial(BasisKind kind = kDefaultBasis);
 
 }  // namespace matc::runtime

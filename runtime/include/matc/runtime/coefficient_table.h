@@ -72,6 +72,7 @@ ArtisticRgb artistic_from_ior(const Rgb& n, const Rgb& k);
 CoefficientTableView extended_coefficient_table();
 CoefficientTableView paper_coefficient_table();
 CoefficientTableView f82_coefficient_table();
+CoefficientTableView powers_coefficient_table();
 CoefficientTableView shipped_coefficient_table(BasisKind kind = kDefaultBasis);
 
 }  // namespace matc::runtime

@@ -4,7 +4,7 @@
 #include <array>
 
 #include "matc/runtime/basis.h"
-#include "matc/runtime/basis_polynomial.h"
+#include "matc/runtime/shader_basis.h"
 
 namespace matc::runtime {
 
@@ -22,6 +22,6 @@ Rgb combine(const Coefficients& coefficients, const std::array<double, kBasisSiz
 // solve sees).
 Rgb evaluate_fresnel(const Coefficients& coefficients, const BasisView& basis, double mu);
 // ... and with the shaders' polynomial basis: what the generated shaders compute.
-Rgb evaluate_fresnel(const Coefficients& coefficients, const BasisPolynomial& basis, double mu);
+Rgb evaluate_fresnel(const Coefficients& coefficients, const ShaderBasis& basis, double mu);
 
 }  // namespace matc::runtime
