@@ -90,7 +90,8 @@ int main(int argc, char** argv) {
     matc::FresnelQuantity quantity;
   };
   const std::array<Variant, 5> variants = {
-      Variant{"Fbar, image-based light (one RGBA32F fetch)", matc::FresnelQuantity::preintegrated},
+      Variant{"image-based light: environment times Fbar (two RGBA32F fetches)",
+              matc::FresnelQuantity::preintegrated},
       Variant{"Fbar without a fetch: ours in closed form, Schlick's by Karis' approximation",
               matc::FresnelQuantity::preintegrated_closed_form},
       Variant{"F alone (no fetch)", matc::FresnelQuantity::direct},
@@ -126,6 +127,9 @@ int main(int argc, char** argv) {
         bindings.push_back(matc::vulkan::Binding::sampled_image(2, coefficient_table));
       if (variant.quantity == matc::FresnelQuantity::quad_light)
         bindings.push_back(matc::vulkan::Binding::sampled_image(3, ltc_table));
+      // The image-light pass's prefiltered environment: any RGBA32F image costs the same fetch.
+      if (variant.quantity == matc::FresnelQuantity::preintegrated)
+        bindings.push_back(matc::vulkan::Binding::sampled_image(7, material_map));
       for (int map = 0; map < maps; ++map)
         bindings.push_back(matc::vulkan::Binding::sampled_image(4 + static_cast<std::uint32_t>(map),
                                                                 material_map));

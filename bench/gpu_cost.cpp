@@ -54,8 +54,8 @@ const std::array<Comparison, 10> kComparisons = {{
      FresnelQuantity::ggx_light, FresnelModel::table, FresnelModel::schlick_textured, 1.5, false},
     {"one GGX light, textured: baked F0, C2, C3 maps vs F0 map", FresnelQuantity::ggx_light,
      FresnelModel::baked, FresnelModel::schlick_textured, 1.25},
-    {"split-sum image light (one table fetch)", FresnelQuantity::preintegrated, FresnelModel::ours,
-     FresnelModel::schlick, 1.10, false},
+    {"split-sum image light (environment and table fetches)", FresnelQuantity::preintegrated,
+     FresnelModel::ours, FresnelModel::schlick, 1.10, false},
     {"split-sum image light, textured: coefficient table vs F0 map", FresnelQuantity::preintegrated,
      FresnelModel::table, FresnelModel::schlick_textured, std::nullopt},
     {"split-sum image light, textured: baked maps vs F0 map", FresnelQuantity::preintegrated,
@@ -78,6 +78,8 @@ std::vector<matc::vulkan::DescriptorSlot> slots(FresnelModel model, FresnelQuant
   if (model == FresnelModel::table) result.push_back({2, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE});
   if (quantity == FresnelQuantity::quad_light)
     result.push_back({3, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE});
+  if (quantity == FresnelQuantity::preintegrated)
+    result.push_back({7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE});
   for (int map = 0; map < matc::material_map_count(model); ++map)
     result.push_back({4 + static_cast<std::uint32_t>(map), VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE});
   return result;

@@ -5,7 +5,8 @@
 // Fresnel differs: {{variant}}.
 // Bindings (set 0): 0 the preintegrated table, 1 the sampler, 2 the coefficient table (its .xy),
 // 3 the LTC table, 4-6 material maps: Schlick's textured F0 at 4; the coefficient table's
-// reflectivity and edge tint at 4 and 5; baked coefficient textures F0, C2, C3 at 4, 5, 6.
+// reflectivity and edge tint at 4 and 5; baked coefficient textures F0, C2, C3 at 4, 5, 6;
+// 7 the prefiltered environment of the image-light pass (an octahedral map).
 {{defines}}
 {{library}}
 {{material}}
@@ -25,6 +26,9 @@ layout(set = 0, binding = 5) uniform texture2D map_b;
 #endif
 #if MATC_COST_MAPS >= 3
 layout(set = 0, binding = 6) uniform texture2D map_c;
+#endif
+#if MATC_COST_IMAGE_LIGHT
+layout(set = 0, binding = 7) uniform texture2D environment;
 #endif
 layout(location = 0) out vec4 colour;
 
@@ -118,10 +122,19 @@ void main() {
   vec3 f = matc_fresnel_preintegrated(c, matc_preintegrated_basis_analytic(uv.x, uv.y));
 #endif
 #else
-  // Fbar for image-based light: one fetch of the table (for Schlick's, the table baked from
-  // ComparisonLobes: x = albedo, y = Schlick's lobe).
-  vec4 texel = textureLod(sampler2D(matc_lut, matc_lut_sampler), matc_lut_texcoord(uv.x, uv.y), 0.0);
-  vec3 f = COST_FRESNEL_PREINTEGRATED(texel);
+  // Image-based light as engines shade it with the split sum: the prefiltered environment along
+  // the reflected view (an octahedral map, its mip chosen by roughness) times Fbar from one fetch
+  // of the table (for Schlick's, the table baked from ComparisonLobes: x = albedo, y = Schlick's
+  // lobe). Only Fbar differs between the variants.
+  vec3 N = normalize(vec3(uv.x - 0.5, 0.6, uv.y - 0.5));
+  vec3 V = normalize(vec3(0.3 - uv.y, 1.0, 0.2));
+  float NoV = max(dot(N, V), 1e-4);
+  vec3 R = reflect(-V, N);
+  vec3 o = R / (abs(R.x) + abs(R.y) + abs(R.z));
+  vec2 env_uv = (o.y >= 0.0 ? o.xz : (1.0 - abs(o.zx)) * sign(o.xz)) * 0.5 + 0.5;
+  vec3 radiance = textureLod(sampler2D(environment, matc_lut_sampler), env_uv, uv.y * 6.0).rgb;
+  vec4 texel = textureLod(sampler2D(matc_lut, matc_lut_sampler), matc_lut_texcoord(NoV, uv.y), 0.0);
+  vec3 f = COST_FRESNEL_PREINTEGRATED(texel) * radiance;
 #endif
   colour = vec4(f, 1.0);
 }

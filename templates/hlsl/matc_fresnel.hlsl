@@ -30,9 +30,14 @@ float2 matc_lut_texcoord(float NdotV, float roughness) {
   return (axes * float(MATC_LUT_SIZE - 1) + 0.5) / float(MATC_LUT_SIZE);
 }
 
-// The preintegrated Fresnel from the table's texel bbar at matc_lut_texcoord(NdotV, roughness).
+// The preintegrated Fresnel from the table's texel bbar at matc_lut_texcoord(NdotV, roughness):
+// sum_i c_i bbar_i, written with c_1 = 1 - c_0 (which every coefficient source sets) as
+// bbar_1 + c_0 (bbar_0 - bbar_1) + c_2 bbar_2 + c_3 bbar_3, three multiply-adds a channel.
 float3 matc_fresnel_preintegrated(MatcFresnelCoefficients c, float4 bbar) {
-  return matc_combine(c, bbar);
+  float3 c0 = float3(c.red.x, c.green.x, c.blue.x);
+  float3 c2 = float3(c.red.z, c.green.z, c.blue.z);
+  float3 c3 = float3(c.red.w, c.green.w, c.blue.w);
+  return max(bbar.y + c0 * (bbar.x - bbar.y) + c2 * bbar.z + c3 * bbar.w, 0.0);
 }
 
 // Turquin (2019)'s multiple-scattering scale for the specular lobe, 1 + F0 (1 - E) / E, with

@@ -30,9 +30,14 @@ fn matc_lut_texcoord(NdotV: f32, roughness: f32) -> vec2f {
   return (axes * f32(MATC_LUT_SIZE - 1) + 0.5) / f32(MATC_LUT_SIZE);
 }
 
-// The preintegrated Fresnel from the table's texel bbar at matc_lut_texcoord(NdotV, roughness).
+// The preintegrated Fresnel from the table's texel bbar at matc_lut_texcoord(NdotV, roughness):
+// sum_i c_i bbar_i, written with c_1 = 1 - c_0 (which every coefficient source sets) as
+// bbar_1 + c_0 (bbar_0 - bbar_1) + c_2 bbar_2 + c_3 bbar_3, three multiply-adds a channel.
 fn matc_fresnel_preintegrated(c: MatcFresnelCoefficients, bbar: vec4f) -> vec3f {
-  return matc_combine(c, bbar);
+  let c0 = vec3f(c.red.x, c.green.x, c.blue.x);
+  let c2 = vec3f(c.red.z, c.green.z, c.blue.z);
+  let c3 = vec3f(c.red.w, c.green.w, c.blue.w);
+  return max(bbar.y + c0 * (bbar.x - bbar.y) + c2 * bbar.z + c3 * bbar.w, vec3f(0.0));
 }
 
 // Turquin (2019)'s multiple-scattering scale for the specular lobe, 1 + F0 (1 - E) / E, with

@@ -57,13 +57,14 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
         fmt::format("#define MATC_COST_SCHLICK {}\n#define MATC_COST_TABLE {}\n#define "
                     "MATC_COST_BAKED {}\n#define MATC_COST_MAPS {}\n#define MATC_COST_DIRECT "
                     "{}\n#define MATC_COST_GGX_LIGHT {}\n#define MATC_COST_QUAD_LIGHT {}\n#define "
-                    "MATC_COST_CLOSED_FORM {}",
+                    "MATC_COST_CLOSED_FORM {}\n#define MATC_COST_IMAGE_LIGHT {}",
                     flag(schlick), flag(model == FresnelModel::table),
                     flag(model == FresnelModel::baked), material_map_count(model),
                     flag(quantity == FresnelQuantity::direct),
                     flag(quantity == FresnelQuantity::ggx_light),
                     flag(quantity == FresnelQuantity::quad_light),
-                    flag(quantity == FresnelQuantity::preintegrated_closed_form))},
+                    flag(quantity == FresnelQuantity::preintegrated_closed_form),
+                    flag(quantity == FresnelQuantity::preintegrated))},
        {"library", build.library_source(ShaderLanguage::glsl)},
        {"material", build.material_source(ShaderLanguage::glsl, compiled)},
        {"name", compiled.material.name},

@@ -18,8 +18,9 @@ namespace matc {
 // (a textured metal); ours from baked coefficient textures (F0, C2, C3 maps, `matc bake`).
 enum class FresnelModel { schlick, schlick_textured, ours, table, baked };
 // F alone (mu from the pixel); F inside one GGX punctual light (D, height-correlated Smith V, F,
-// NdotL); preintegrated Fbar from one table fetch; a quad area light (LTC: that fetch, one LTC
-// table fetch, the polygon integral, times Fbar); or Fbar without a fetch: ours from
+// NdotL); image-based light: preintegrated Fbar from one table fetch times the prefiltered
+// environment (one more fetch, the same in every variant); a quad area light (LTC: that fetch, one
+// LTC table fetch, the polygon integral, times Fbar); or Fbar without a fetch: ours from
 // matc_preintegrated_basis_analytic, Schlick's from Karis' mobile approximation.
 enum class FresnelQuantity {
   direct,
@@ -39,7 +40,8 @@ std::string fullscreen_vertex_source();
 // the table at (set 0) binding 0 and the sampler at binding 1; for Schlick's preintegrated
 // variant the table must be the ComparisonLobes bake; the table model also binds the coefficient
 // table (its .xy) at binding 2, the quad-light quantity the LTC table at binding 3, and the
-// textured models material_map_count(model) maps at bindings 4, 5, 6.
+// textured models material_map_count(model) maps at bindings 4, 5, 6, and the preintegrated
+// quantity the prefiltered environment at binding 7.
 std::string cost_pass_source(const Build& build, const CompiledMaterial& compiled,
                              FresnelModel model, FresnelQuantity quantity, std::uint32_t width,
                              std::uint32_t height);
