@@ -27,6 +27,7 @@
 #include "matc/optics/presets.h"
 #include "matc/optics/spectral.h"
 #include "matc/optics/spectrum.h"
+#include "study_score.h"
 #include "test_sets.h"
 
 namespace {
@@ -79,26 +80,9 @@ matc::runtime::Coefficients solve_with(Solve solve, const ReflectanceCurve& curv
   return {};
 }
 
-struct Score {
-  double worst = 0.0;
-  double mean = 0.0;
-};
-
 Score score(const TestSet& set, const FittedBasis& basis, Solve solve) {
-  Score result;
-  std::size_t count = 0;
-  for (const TestCurve& curve : set.curves) {
-    const matc::runtime::Coefficients coefficients = solve_with(solve, *curve.cached, basis);
-    const matc::FitAccuracy accuracy =
-        matc::measure_accuracy(*curve.cached, coefficients, basis.shader);
-    for (std::size_t c = 0; c < curve.channels; ++c) {
-      result.worst = std::max(result.worst, accuracy.decomposition.max_abs[c]);
-      result.mean += accuracy.decomposition.max_abs[c];
-      ++count;
-    }
-  }
-  result.mean /= static_cast<double>(count);
-  return result;
+  return matc::bench::score(
+      set, basis, [&](const ReflectanceCurve& curve) { return solve_with(solve, curve, basis); });
 }
 
 struct TrainingSet {

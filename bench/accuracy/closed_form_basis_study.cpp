@@ -17,6 +17,7 @@
 #include "matc/basis/basis_polynomial_fit.h"
 #include "matc/fit/accuracy.h"
 #include "matc/fit/coefficients.h"
+#include "study_score.h"
 #include "test_sets.h"
 
 namespace {
@@ -49,25 +50,10 @@ FittedBasis candidate(Exponents e) {
   return basis;
 }
 
-struct Score {
-  double worst = 0.0;
-  double mean = 0.0;
-};
-
 Score score(const TestSet& set, const FittedBasis& basis) {
-  Score result;
-  std::size_t count = 0;
-  for (const TestCurve& curve : set.curves) {
-    const auto coefficients = matc::solve_coefficients_minimax(*curve.cached, basis.shader);
-    const auto accuracy = matc::measure_accuracy(*curve.cached, coefficients, basis.shader);
-    for (std::size_t c = 0; c < curve.channels; ++c) {
-      result.worst = std::max(result.worst, accuracy.decomposition.max_abs[c]);
-      result.mean += accuracy.decomposition.max_abs[c];
-      ++count;
-    }
-  }
-  result.mean /= static_cast<double>(count);
-  return result;
+  return matc::bench::score(set, basis, [&](const matc::ReflectanceCurve& curve) {
+    return matc::solve_coefficients_minimax(curve, basis.shader);
+  });
 }
 
 std::string row(const std::string& name, const std::vector<TestSet>& sets,

@@ -245,6 +245,18 @@ std::vector<Design> designs() {
   all.push_back({fmt::format("{}², r^(1/3), **g**, c_2 c_3, minimax, f32", kShipped),
                  kib(kShipped, 4),
                  from_table(table(kShipped, kCube, EdgeTintAxis::linear, kRaw, kMinimax))});
+  // Axes from square roots alone (no log2, exp2 or division in the shader): r^(1/4) across,
+  // 1 - (1 - g)^(1/k) down.
+  for (const auto& [axis, name] :
+       {std::pair{EdgeTintAxis::complement_square_root, "1 - sqrt(1 - g)"},
+        std::pair{EdgeTintAxis::complement_fourth_root, "1 - (1 - g)^(1/4)"},
+        std::pair{EdgeTintAxis::complement_eighth_root, "1 - (1 - g)^(1/8)"}}) {
+    for (const std::size_t size : {128u, 192u}) {
+      all.push_back({fmt::format("{}², **r^(1/4)**, **{}**, c_2 c_3, minimax, f32", size, name),
+                     kib(size, 4),
+                     from_table(table(size, ReflectivityAxis::fourth_root, axis, kRaw, kMinimax))});
+    }
+  }
   all.push_back({fmt::format("{}², r^(1/3), **1/n**, c_2 c_3, minimax, f32", kShipped),
                  kib(kShipped, 4),
                  from_table(table(kShipped, kCube, EdgeTintAxis::inverse_ior, kRaw, kMinimax))});

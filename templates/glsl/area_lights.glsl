@@ -10,7 +10,8 @@
 // Where to sample the LTC table: the preintegrated table's axes, at the LTC table's size.
 vec2 matc_ltc_texcoord(float NdotV, float roughness) {
   vec2 axes = vec2(sqrt(clamp(NdotV, 0.0, 1.0)), clamp(roughness, 0.0, 1.0));
-  return (axes * float(MATC_LTC_SIZE - 1) + 0.5) / float(MATC_LTC_SIZE);
+  // texcoord = (axes * (size - 1) + 0.5) / size, written as one multiply-add.
+  return axes * (float(MATC_LTC_SIZE - 1) / float(MATC_LTC_SIZE)) + 0.5 / float(MATC_LTC_SIZE);
 }
 
 // World space to the LTC's cosine space for a shading point: the shading frame (T1 towards the

@@ -10,7 +10,8 @@
 // Where to sample the LTC table: the preintegrated table's axes, at the LTC table's size.
 float2 matc_ltc_texcoord(float NdotV, float roughness) {
   float2 axes = float2(sqrt(saturate(NdotV)), saturate(roughness));
-  return (axes * float(MATC_LTC_SIZE - 1) + 0.5) / float(MATC_LTC_SIZE);
+  // texcoord = (axes * (size - 1) + 0.5) / size, written as one multiply-add.
+  return axes * (float(MATC_LTC_SIZE - 1) / float(MATC_LTC_SIZE)) + 0.5 / float(MATC_LTC_SIZE);
 }
 
 // World space to the LTC's cosine space for a shading point: the shading frame (T1 towards the

@@ -20,8 +20,8 @@ float2 matc_coefficient_table_texcoord(float r, float g) {
   float rest = (1.0 - sqrt_r) * (1.0 - sqrt_r) / (1.0 + reflectivity);
   float logs = log2(max((1.0 - edge_tint) + edge_tint * rest, 1e-30)) / log2(max(rest, 1e-30));
   float2 axes = float2(pow(reflectivity, 1.0 / 3.0), saturate(delta < 0.01 ? series : logs));
-  return (axes * float(MATC_COEFFICIENT_TABLE_SIZE - 1) + 0.5) /
-         float(MATC_COEFFICIENT_TABLE_SIZE);
+  // texcoord = (axes * (size - 1) + 0.5) / size, written as one multiply-add.
+  return axes * (float(MATC_COEFFICIENT_TABLE_SIZE - 1) / float(MATC_COEFFICIENT_TABLE_SIZE)) + 0.5 / float(MATC_COEFFICIENT_TABLE_SIZE);
 }
 
 // One channel's c_0..c_3: c_0 = r, c_1 = 1 - r, and (c_2, c_3) the table's texel (its .xy) at

@@ -27,7 +27,8 @@ float3 matc_combine(MatcFresnelCoefficients c, float4 v) {
 // u = sqrt(NdotV) across, perceptual roughness down, texel centres on the ends of both axes.
 float2 matc_lut_texcoord(float NdotV, float roughness) {
   float2 axes = float2(sqrt(saturate(NdotV)), saturate(roughness));
-  return (axes * float(MATC_LUT_SIZE - 1) + 0.5) / float(MATC_LUT_SIZE);
+  // texcoord = (axes * (size - 1) + 0.5) / size, written as one multiply-add.
+  return axes * (float(MATC_LUT_SIZE - 1) / float(MATC_LUT_SIZE)) + 0.5 / float(MATC_LUT_SIZE);
 }
 
 // The preintegrated Fresnel from the table's texel bbar at matc_lut_texcoord(NdotV, roughness):

@@ -11,7 +11,8 @@ const MATC_LTC_SIZE: i32 = {{ltc_size}};
 // Where to sample the LTC table: the preintegrated table's axes, at the LTC table's size.
 fn matc_ltc_texcoord(NdotV: f32, roughness: f32) -> vec2f {
   let axes = vec2f(sqrt(clamp(NdotV, 0.0, 1.0)), clamp(roughness, 0.0, 1.0));
-  return (axes * f32(MATC_LTC_SIZE - 1) + 0.5) / f32(MATC_LTC_SIZE);
+  // texcoord = (axes * (size - 1) + 0.5) / size, written as one multiply-add.
+  return axes * (f32(MATC_LTC_SIZE - 1) / f32(MATC_LTC_SIZE)) + 0.5 / f32(MATC_LTC_SIZE);
 }
 
 // World space to the LTC's cosine space for a shading point: the shading frame (T1 towards the

@@ -20,7 +20,8 @@ fn matc_coefficient_table_texcoord(r: f32, g: f32) -> vec2f {
   let rest = (1.0 - sqrt_r) * (1.0 - sqrt_r) / (1.0 + reflectivity);
   let logs = log2(max((1.0 - edge_tint) + edge_tint * rest, 1e-30)) / log2(max(rest, 1e-30));
   let axes = vec2f(pow(reflectivity, 1.0 / 3.0), clamp(select(logs, series, delta < 0.01), 0.0, 1.0));
-  return (axes * f32(MATC_COEFFICIENT_TABLE_SIZE - 1) + 0.5) / f32(MATC_COEFFICIENT_TABLE_SIZE);
+  // texcoord = (axes * (size - 1) + 0.5) / size, written as one multiply-add.
+  return axes * (f32(MATC_COEFFICIENT_TABLE_SIZE - 1) / f32(MATC_COEFFICIENT_TABLE_SIZE)) + 0.5 / f32(MATC_COEFFICIENT_TABLE_SIZE);
 }
 
 // One channel's c_0..c_3: c_0 = r, c_1 = 1 - r, and (c_2, c_3) the table's texel (its .xy) at

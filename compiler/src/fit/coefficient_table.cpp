@@ -44,6 +44,12 @@ double v_coordinate(const CoefficientTableOptions& options, double reflectivity,
       const double delta = runtime::coefficient_table_ior_span(reflectivity);
       return delta >= 1.0 ? (g < 1.0 ? 0.0 : 1.0) : g * (1.0 - delta) / (1.0 - g * delta);
     }
+    case EdgeTintAxis::complement_square_root:
+      return 1.0 - std::sqrt(1.0 - g);
+    case EdgeTintAxis::complement_fourth_root:
+      return 1.0 - std::sqrt(std::sqrt(1.0 - g));
+    case EdgeTintAxis::complement_eighth_root:
+      return 1.0 - std::sqrt(std::sqrt(std::sqrt(1.0 - g)));
     case EdgeTintAxis::linear:
       break;
   }
@@ -127,6 +133,12 @@ double coefficient_table_row_edge_tint(const CoefficientTableOptions& options, d
       const double delta = runtime::coefficient_table_ior_span(reflectivity);
       return std::clamp(v / (1.0 - delta + v * delta), 0.0, 1.0);
     }
+    case EdgeTintAxis::complement_square_root:
+      return 1.0 - (1.0 - v) * (1.0 - v);
+    case EdgeTintAxis::complement_fourth_root:
+      return 1.0 - std::pow(1.0 - v, 4.0);
+    case EdgeTintAxis::complement_eighth_root:
+      return 1.0 - std::pow(1.0 - v, 8.0);
     case EdgeTintAxis::linear:
       break;
   }

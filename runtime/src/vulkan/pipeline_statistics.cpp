@@ -33,6 +33,16 @@ Function device_function(VkDevice device, const char* name) {
   return function;
 }
 
+// Vulkan's two-call enumeration: the count, then the items (each with its sType set).
+template <typename Item, typename Call>
+std::vector<Item> enumerate(VkStructureType type, const char* what, const Call& call) {
+  std::uint32_t count = 0;
+  check(call(&count, nullptr), what);
+  std::vector<Item> items(count, Item{type});
+  check(call(&count, items.data()), what);
+  return items;
+}
+
 std::uint64_t as_integer(const VkPipelineExecutableStatisticKHR& statistic) {
   switch (statistic.format) {
     case VK_PIPELINE_EXECUTABLE_STATISTIC_FORMAT_BOOL32_KHR:
@@ -88,25 +98,21 @@ ExecutableStatistics fullscreen_fragment_statistics(const Context& context,
 
   VkPipelineInfoKHR pipeline_info{VK_STRUCTURE_TYPE_PIPELINE_INFO_KHR};
   pipeline_info.pipeline = objects.pipeline;
-  std::uint32_t count = 0;
-  check(get_properties(device, &pipeline_info, &count, nullptr),
-        "vkGetPipelineExecutablePropertiesKHR");
-  std::vector<VkPipelineExecutablePropertiesKHR> executables(
-      count, {VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_PROPERTIES_KHR});
-  check(get_properties(device, &pipeline_info, &count, executables.data()),
-        "vkGetPipelineExecutablePropertiesKHR");
-  for (std::uint32_t index = 0; index < count; ++index) {
+  const auto executables = enumerate<VkPipelineExecutablePropertiesKHR>(
+      VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_PROPERTIES_KHR, "vkGetPipelineExecutablePropertiesKHR",
+      [&](std::uint32_t* count, VkPipelineExecutablePropertiesKHR* items) {
+        return get_properties(device, &pipeline_info, count, items);
+      });
+  for (std::uint32_t index = 0; index < executables.size(); ++index) {
     if ((executables[index].stages & VK_SHADER_STAGE_FRAGMENT_BIT) == 0) continue;
     VkPipelineExecutableInfoKHR executable{VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_INFO_KHR};
     executable.pipeline = objects.pipeline;
     executable.executableIndex = index;
-    std::uint32_t statistic_count = 0;
-    check(get_statistics(device, &executable, &statistic_count, nullptr),
-          "vkGetPipelineExecutableStatisticsKHR");
-    std::vector<VkPipelineExecutableStatisticKHR> statistics(
-        statistic_count, {VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_STATISTIC_KHR});
-    check(get_statistics(device, &executable, &statistic_count, statistics.data()),
-          "vkGetPipelineExecutableStatisticsKHR");
+    const auto statistics = enumerate<VkPipelineExecutableStatisticKHR>(
+        VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_STATISTIC_KHR, "vkGetPipelineExecutableStatisticsKHR",
+        [&](std::uint32_t* count, VkPipelineExecutableStatisticKHR* items) {
+          return get_statistics(device, &executable, count, items);
+        });
     ExecutableStatistics result{executables[index].name, executables[index].stages, {}};
     for (const VkPipelineExecutableStatisticKHR& statistic : statistics)
       result.values.emplace_back(statistic.name, as_integer(statistic));

@@ -30,6 +30,10 @@ enum class EdgeTintAxis {
   log_ior,      // v = log(n_max / n) / log(n_max / n_min): even in the curves' change (shipped)
   linear,       // v = g
   inverse_ior,  // v = (1/n - 1/n_max) / (1/n_min - 1/n_max) = g (1 - delta) / (1 - g delta)
+  // v = 1 - (1 - g)^(1/k): rows crowd towards g = 1 like log n's, from square roots alone.
+  complement_square_root,  // k = 2
+  complement_fourth_root,  // k = 4
+  complement_eighth_root,  // k = 8
 };
 
 // What a texel stores.
