@@ -47,12 +47,13 @@ printf '\002{"name": "brass", "artistic": {"reflectivity": {"file": "r.exr", "en
 build-fuzz/tests/fuzz/matc_image_map_fuzzer -max_total_time=15 -max_len=4096 -rss_limit_mb=4096 \
   -print_final_stats=1 "$image_corpus" 2>&1 | tail -n 8
 
-# Mesa's driver, LLVM and the Vulkan loader keep allocations until exit, and lavapipe's
-# JIT-compiled shaders allocate from code LeakSanitizer cannot name: tests that run Vulkan are
-# checked by AddressSanitizer and UBSan but without leak detection; every other test with it.
+# Mesa's drivers (lavapipe, and RADV for gpu_cost), LLVM and the Vulkan loader keep allocations
+# until exit, and lavapipe's JIT-compiled shaders allocate from code LeakSanitizer cannot name:
+# tests that run Vulkan are checked by AddressSanitizer and UBSan but without leak detection;
+# every other test with it.
 export LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1"
-vulkan_tests="Vulkan|DeviceValidation|validate_on_device|Validat|comparison_render|textured_render|baked_render|area_light_render|fullscreen_cost"
+vulkan_tests="Vulkan|DeviceValidation|validate_on_device|Validat|comparison_render|textured_render|baked_render|area_light_render|fullscreen_cost|gpu_cost"
 # The package test installs instrumented static libraries, which a plain consumer cannot link.
 # The 2,000-material Ninja test checks build edges, not memory: once, unsanitised, is its budget.
 ctest --test-dir build-fuzz --output-on-failure --parallel "$(nproc)" \

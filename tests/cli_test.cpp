@@ -12,6 +12,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "matc/emit/build.h"
+#include "matc/lut/lut_files.h"
 #include "test_images.h"
 
 namespace {
@@ -324,6 +326,32 @@ TEST_F(MatcCli, NamesOfTheSharedOutputsAreReserved) {
             std::string::npos)
       << result.err;
   EXPECT_FALSE(fs::exists(dir_ / "out" / "Matc_Lut.glsl"));
+}
+
+// Every shared file's stem (the build's own list, issue #29: matc_ltc and matc_coefficient_table
+// were missing and a material so named overwrote their headers with --lut header), in every table
+// format and in either case: refused, and nothing written.
+TEST_F(MatcCli, EverySharedFileStemIsReservedInEveryFormat) {
+  const std::vector<std::string> stems = matc::shared_file_stems();
+  ASSERT_EQ(stems.size(), 5u);
+  for (const std::string& stem : stems) {
+    std::string upper = stem;
+    std::transform(upper.begin(), upper.end(), upper.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    for (const std::string& name : {stem, upper}) {
+      for (const std::string& format : matc::lut_format_names()) {
+        write_file(dir_ / "reserved.json",
+                   R"({"name": ")" + name + R"(", "ior": {"n": 1.5, "k": 0}})");
+        const CommandResult result = run({"-o", "out", "--lut", format, "reserved.json"});
+        EXPECT_EQ(result.exit_code, 1) << name << " with --lut " << format;
+        EXPECT_NE(result.err.find("'" + name + "' names a file every build writes"),
+                  std::string::npos)
+            << result.err;
+        EXPECT_TRUE(!fs::exists(dir_ / "out") || fs::is_empty(dir_ / "out"))
+            << name << " with --lut " << format << ": a refused build wrote a file";
+      }
+    }
+  }
 }
 
 TEST_F(MatcCli, OutputsThatWouldOverwriteAnInputAreRefused) {

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include "atomic_file.h"
 #include "commands.h"
@@ -36,8 +37,12 @@ namespace {
 namespace fs = std::filesystem;
 
 // Stems of the files every build writes once; a material of that name would overwrite them.
+// The shared files' stems (Build's own list), which no material name may take in any case.
 const std::set<std::string>& reserved_names() {
-  static const std::set<std::string> names = {"matc_fresnel", "matc_lut", "matc_manifest"};
+  static const std::set<std::string> names = [] {
+    const std::vector<std::string> stems = shared_file_stems();
+    return std::set<std::string>(stems.begin(), stems.end());
+  }();
   return names;
 }
 
@@ -120,8 +125,8 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
     if (reserved_names().contains(lowercase(material->name))) {
       job.diagnostics.error(material->name_location, "name",
                             fmt::format("'{}' names a file every build writes", material->name),
-                            "a name other than matc_fresnel, matc_lut and matc_manifest "
-                            "(ignoring case)");
+                            fmt::format("a name other than {} (ignoring case)",
+                                        fmt::join(shared_file_stems(), ", ")));
     } else if (!names.claim(*material, "a build", job.diagnostics)) {
       // claim() reported the clash.
     } else if (overwritten != outputs.end()) {

@@ -1,6 +1,7 @@
 #include "matc/emit/build.h"
 
 #include <algorithm>
+#include <iterator>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -26,6 +27,7 @@ namespace {
 
 constexpr std::string_view kLibraryStem = "matc_fresnel";
 constexpr std::string_view kLutStem = "matc_lut";
+constexpr std::string_view kManifestStem = "matc_manifest";
 constexpr std::string_view kManifestFile = "matc_manifest.json";
 
 constexpr std::array<std::pair<OutputKind, std::string_view>, 9> kOutputKinds = {{
@@ -446,6 +448,12 @@ std::string Build::manifest_text(const std::vector<OutputFile>& shared,
 
 std::string_view manifest_file_name() {
   return kManifestFile;
+}
+
+std::vector<std::string> shared_file_stems() {
+  const std::string_view stems[] = {kLibraryStem, kLutStem, coefficient_table_stem(),
+                                    ltc_table_stem(), kManifestStem};
+  return {std::begin(stems), std::end(stems)};
 }
 
 }  // namespace matc

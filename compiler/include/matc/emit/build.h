@@ -169,6 +169,11 @@ class Build {
 // "matc_manifest.json".
 std::string_view manifest_file_name();
 
+// The stem of every shared file a build can write, whatever --emit and --lut say: matc_fresnel,
+// matc_lut, matc_coefficient_table, matc_ltc and matc_manifest. A material of one of these names
+// (in any case) would write its files over them.
+std::vector<std::string> shared_file_stems();
+
 // The names a library module exports.
 std::vector<std::string> shared_library_exports(bool embedded_lut);
 std::vector<std::string> material_library_exports(std::string_view material_name);
