@@ -115,24 +115,36 @@ int main(int argc, char** argv) {
     std::array<std::unique_ptr<matc::vulkan::FullscreenPass>, kModels.size()> passes;
     for (std::size_t which = 0; which < kModels.size(); ++which) {
       const bool schlick = kModels[which] == matc::FresnelModel::schlick;
-      const int maps = matc::material_map_count(kModels[which]);
       const matc::SpirvWords fragment =
           matc::compile_fullscreen_stage(matc::cost_pass_source(build, material, kModels[which],
                                                                 variant.quantity, kWidth, kHeight),
                                          matc::ShaderStage::fragment, "cost_pass.frag");
-      std::vector<matc::vulkan::Binding> bindings = {
-          matc::vulkan::Binding::sampled_image(0, schlick ? schlick_table : ours_table),
-          matc::vulkan::Binding::separate_sampler(1, sampler)};
-      if (kModels[which] == matc::FresnelModel::table)
-        bindings.push_back(matc::vulkan::Binding::sampled_image(2, coefficient_table));
-      if (variant.quantity == matc::FresnelQuantity::quad_light)
-        bindings.push_back(matc::vulkan::Binding::sampled_image(3, ltc_table));
-      // The image-light pass's prefiltered environment: any RGBA32F image costs the same fetch.
-      if (variant.quantity == matc::FresnelQuantity::preintegrated)
-        bindings.push_back(matc::vulkan::Binding::sampled_image(7, material_map));
-      for (int map = 0; map < maps; ++map)
-        bindings.push_back(matc::vulkan::Binding::sampled_image(4 + static_cast<std::uint32_t>(map),
-                                                                material_map));
+      // The image-light pass's prefiltered environment reads the material map: any RGBA32F
+      // image costs the same fetch.
+      std::vector<matc::vulkan::Binding> bindings;
+      for (const matc::CostPassBinding& binding :
+           matc::cost_pass_bindings(kModels[which], variant.quantity)) {
+        switch (binding.resource) {
+          case matc::CostPassResource::sampler:
+            bindings.push_back(matc::vulkan::Binding::separate_sampler(binding.binding, sampler));
+            continue;
+          case matc::CostPassResource::table:
+            bindings.push_back(matc::vulkan::Binding::sampled_image(
+                binding.binding, schlick ? schlick_table : ours_table));
+            continue;
+          case matc::CostPassResource::coefficient_table:
+            bindings.push_back(
+                matc::vulkan::Binding::sampled_image(binding.binding, coefficient_table));
+            continue;
+          case matc::CostPassResource::ltc_table:
+            bindings.push_back(matc::vulkan::Binding::sampled_image(binding.binding, ltc_table));
+            continue;
+          case matc::CostPassResource::material_map:
+          case matc::CostPassResource::environment:
+            bindings.push_back(matc::vulkan::Binding::sampled_image(binding.binding, material_map));
+            continue;
+        }
+      }
       const auto start = std::chrono::steady_clock::now();
       passes[which] = std::make_unique<matc::vulkan::FullscreenPass>(context, vertex, fragment,
                                                                      bindings, kWidth, kHeight);

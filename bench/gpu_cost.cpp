@@ -72,16 +72,14 @@ struct Cost {
   std::uint64_t inverse_throughput = 0;
 };
 
+// The cost pass's bindings as layout-only descriptors: a sampler, or a sampled image.
 std::vector<matc::vulkan::DescriptorSlot> slots(FresnelModel model, FresnelQuantity quantity) {
-  std::vector<matc::vulkan::DescriptorSlot> result = {{0, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE},
-                                                      {1, VK_DESCRIPTOR_TYPE_SAMPLER}};
-  if (model == FresnelModel::table) result.push_back({2, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE});
-  if (quantity == FresnelQuantity::quad_light)
-    result.push_back({3, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE});
-  if (quantity == FresnelQuantity::preintegrated)
-    result.push_back({7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE});
-  for (int map = 0; map < matc::material_map_count(model); ++map)
-    result.push_back({4 + static_cast<std::uint32_t>(map), VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE});
+  std::vector<matc::vulkan::DescriptorSlot> result;
+  for (const matc::CostPassBinding& binding : matc::cost_pass_bindings(model, quantity)) {
+    result.push_back({binding.binding, binding.resource == matc::CostPassResource::sampler
+                                           ? VK_DESCRIPTOR_TYPE_SAMPLER
+                                           : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE});
+  }
   return result;
 }
 

@@ -137,9 +137,9 @@ TEST_P(FittedShippedBasis, PolynomialMatchesTheTableWithin1e4) {
 }
 
 TEST_P(ShippedBasis, ShaderFormKeepsTheEndpointsThatTheCoefficientsRelyOn) {
-  const auto& polynomial = runtime::shipped_shader_basis(GetParam());
-  const auto grazing = runtime::evaluate_shader_basis(polynomial, 0.0);
-  const auto normal = runtime::evaluate_shader_basis(polynomial, 1.0);
+  const auto& shader_basis = runtime::shipped_shader_basis(GetParam());
+  const auto grazing = runtime::evaluate_shader_basis(shader_basis, 0.0);
+  const auto normal = runtime::evaluate_shader_basis(shader_basis, 1.0);
   EXPECT_EQ(grazing[0], 1.0);
   EXPECT_NEAR(grazing[1], 1.0, 1e-4);
   EXPECT_NEAR(normal[1], 0.0, 1e-4);

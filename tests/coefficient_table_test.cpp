@@ -61,11 +61,12 @@ TEST(CoefficientTable, TexelCentresReadBackAndFullReflectivityIsOne) {
   EXPECT_NEAR(c[2], table.texel(x, y)[0], 1e-6);
   EXPECT_NEAR(c[3], table.texel(x, y)[1], 1e-6);
   // r = 1: F = 1 at every angle, whatever the edge tint.
-  const auto& polynomial = matc::runtime::shipped_shader_basis();
+  const auto& shader_basis = matc::runtime::shipped_shader_basis();
   for (const double tint : {0.0, 0.5, 1.0}) {
     const auto one = matc::runtime::channel_coefficients_from_table(table, 1.0, tint);
     for (const double mu : {0.0, 0.3, 1.0})
-      EXPECT_NEAR(channel_f(one, matc::runtime::evaluate_shader_basis(polynomial, mu)), 1.0, 1e-12);
+      EXPECT_NEAR(channel_f(one, matc::runtime::evaluate_shader_basis(shader_basis, mu)), 1.0,
+                  1e-12);
   }
 }
 
@@ -103,13 +104,13 @@ TEST(CoefficientTable, F16StorageRoundsThroughHalf) {
 TEST(CoefficientTable, MeetsTheTargetsAgainstThePerMaterialCompile) {
   const auto table = matc::runtime::shipped_coefficient_table();
   const auto basis = matc::runtime::shipped_basis();
-  const auto& polynomial = matc::runtime::shipped_shader_basis();
+  const auto& shader_basis = matc::runtime::shipped_shader_basis();
   const matc::Lut lut = matc::preintegrate_lut(basis, {128, 256});
   std::mt19937_64 generator(1414);
   const auto unit = [&] { return static_cast<double>(generator() >> 11) * 0x1.0p-53; };
   std::vector<std::array<double, 4>> b(401);
   for (std::size_t j = 0; j < b.size(); ++j)
-    b[j] = matc::runtime::evaluate_shader_basis(polynomial, static_cast<double>(j) / 400.0);
+    b[j] = matc::runtime::evaluate_shader_basis(shader_basis, static_cast<double>(j) / 400.0);
   // Index 0: the 2,000 draws over the range; 1: the near-black ones.
   std::array<double, 2> worst{}, worst_fbar{}, worst_excess{};
   double sum = 0.0;

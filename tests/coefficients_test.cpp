@@ -140,7 +140,7 @@ TEST(Accuracy, DefaultBasisIsNoWorseThanThePaperOnArtisticInputs) {
 
 TEST(Coefficients, MinimaxSolveKeepsBothEndsExact) {
   const runtime::BasisView basis = runtime::shipped_basis(runtime::BasisKind::extended);
-  const auto& polynomial = runtime::shipped_shader_basis(runtime::BasisKind::extended);
+  const auto& shader_basis = runtime::shipped_shader_basis(runtime::BasisKind::extended);
   for (const MetalPreset& preset : metal_presets()) {
     const SpectralCurve curve(preset_spectrum(preset));
     const runtime::Coefficients c = solve_coefficients(curve, basis);
@@ -148,21 +148,21 @@ TEST(Coefficients, MinimaxSolveKeepsBothEndsExact) {
       EXPECT_NEAR(c[ch][0], curve.at(1.0)[ch], 1e-15) << preset.symbol;
       EXPECT_NEAR(c[ch][0] + c[ch][1], 1.0, 1e-15) << preset.symbol;
       // Through the shaders' polynomials, which hold the basis' end values to 1e-4.
-      EXPECT_NEAR(runtime::evaluate_fresnel(c, polynomial, 1.0)[ch], curve.at(1.0)[ch], 1e-4);
-      EXPECT_NEAR(runtime::evaluate_fresnel(c, polynomial, 0.0)[ch], 1.0, 1e-4);
+      EXPECT_NEAR(runtime::evaluate_fresnel(c, shader_basis, 1.0)[ch], curve.at(1.0)[ch], 1e-4);
+      EXPECT_NEAR(runtime::evaluate_fresnel(c, shader_basis, 0.0)[ch], 1.0, 1e-4);
     }
   }
 }
 
 TEST(Coefficients, MinimaxSolveBeatsProbesOnTheSameBasis) {
   const runtime::BasisView basis = runtime::shipped_basis(runtime::BasisKind::extended);
-  const auto& polynomial = runtime::shipped_shader_basis(runtime::BasisKind::extended);
+  const auto& shader_basis = runtime::shipped_shader_basis(runtime::BasisKind::extended);
   const SpectralCurve curve(preset_spectrum(*find_metal_preset("Hg")));
   const double minimax =
-      measure_accuracy(curve, solve_coefficients_minimax(curve, polynomial), polynomial)
+      measure_accuracy(curve, solve_coefficients_minimax(curve, shader_basis), shader_basis)
           .decomposition.max_abs[1];
   const double probes =
-      measure_accuracy(curve, solve_coefficients_at_probes(curve, basis), polynomial)
+      measure_accuracy(curve, solve_coefficients_at_probes(curve, basis), shader_basis)
           .decomposition.max_abs[1];
   EXPECT_LT(minimax, probes);
 }
@@ -177,10 +177,10 @@ TEST(Accuracy, F82BasisFitsF82TintMaterialsWithinTheTarget) {
       const F82TintCurve curve({0.05 * i, 0.05 * i, 0.05 * i}, {0.1 * j, 0.1 * j, 0.1 * j});
       std::size_t b = 0;
       for (const auto kind : {runtime::BasisKind::f82, runtime::BasisKind::extended}) {
-        const auto& polynomial = runtime::shipped_shader_basis(kind);
+        const auto& shader_basis = runtime::shipped_shader_basis(kind);
         const double error =
             measure_accuracy(curve, solve_coefficients(curve, runtime::shipped_basis(kind)),
-                             polynomial, 501)
+                             shader_basis, 501)
                 .decomposition.max_abs[0];
         worst[b] = std::max(worst[b], error);
         ++b;

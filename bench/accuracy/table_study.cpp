@@ -392,7 +392,7 @@ struct SetScore {
 };
 
 std::string set_row(const TestSet& set) {
-  const auto& polynomial = matc::runtime::shipped_shader_basis(kBasis);
+  const auto& shader_basis = matc::runtime::shipped_shader_basis(kBasis);
   const matc::runtime::CoefficientTableView table =
       matc::runtime::shipped_coefficient_table(kBasis);
   SetScore s;
@@ -401,7 +401,7 @@ std::string set_row(const TestSet& set) {
     const auto compiled =
         matc::solve_coefficients(*curve.cached, matc::runtime::shipped_basis(kBasis));
     const matc::FitAccuracy compile_accuracy =
-        matc::measure_accuracy(*curve.cached, compiled, polynomial);
+        matc::measure_accuracy(*curve.cached, compiled, shader_basis);
     const bool measured = !curve.artistic;
     const std::array<ArtisticParameters, 3> artistic =
         measured ? fitted_artistic(*curve.cached) : *curve.artistic;
@@ -411,7 +411,7 @@ std::string set_row(const TestSet& set) {
           table, artistic[c].reflectivity, artistic[c].edge_tint);
     }
     const matc::FitAccuracy table_accuracy =
-        matc::measure_accuracy(*curve.cached, from_table, polynomial);
+        matc::measure_accuracy(*curve.cached, from_table, shader_basis);
     if (measured) {
       const matc::IorCurve gulbrandsen({matc::gulbrandsen_to_ior(artistic[0]),
                                         matc::gulbrandsen_to_ior(artistic[1]),
@@ -441,7 +441,7 @@ std::string set_row(const TestSet& set) {
 
 // Conductors given as n + ik, through the shaders' inverse mapping (matc_artistic_from_ior).
 std::string ior_row() {
-  const auto& polynomial = matc::runtime::shipped_shader_basis(kBasis);
+  const auto& shader_basis = matc::runtime::shipped_shader_basis(kBasis);
   const auto table = matc::runtime::shipped_coefficient_table(kBasis);
   double compile_worst = 0.0, compile_mean = 0.0, table_worst = 0.0, table_mean = 0.0;
   std::size_t count = 0, clamped = 0;
@@ -457,9 +457,10 @@ std::string ior_row() {
       if (matc::ior_to_gulbrandsen(ior).edge_tint > 1.0) ++clamped;
       const auto from_table =
           matc::runtime::coefficients_from_table(table, artistic.reflectivity, artistic.edge_tint);
-      const double c = matc::measure_accuracy(curve, compiled, polynomial).decomposition.max_abs[0];
+      const double c =
+          matc::measure_accuracy(curve, compiled, shader_basis).decomposition.max_abs[0];
       const double t =
-          matc::measure_accuracy(curve, from_table, polynomial).decomposition.max_abs[0];
+          matc::measure_accuracy(curve, from_table, shader_basis).decomposition.max_abs[0];
       compile_worst = std::max(compile_worst, c);
       table_worst = std::max(table_worst, t);
       compile_mean += c;

@@ -1,9 +1,12 @@
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string_view>
 #include <vector>
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "atomic_file.h"
@@ -107,14 +110,19 @@ int write_source(const std::string& output, const std::string& source) {
 }  // namespace
 
 int run_basis_fit(const BasisFitOptions& options) {
-  if (basis_of(options.basis) == runtime::BasisKind::powers) {
+  const runtime::BasisKind kind = basis_of(options.basis);
+  if (std::find(runtime::kFittedBases.begin(), runtime::kFittedBases.end(), kind) ==
+      runtime::kFittedBases.end()) {
+    std::vector<std::string_view> fitted;
+    for (const runtime::BasisKind each : runtime::kFittedBases)
+      fitted.push_back(runtime::basis_name(each));
     fmt::print(stderr,
-               "matc: error: --basis powers is a closed form (runtime/src/powers_basis.cpp) with "
-               "no table to fit; the fitted bases are {}\n",
-               "extended, paper, f82");
+               "matc: error: --basis {} is a closed form (runtime/src/{}_basis.cpp) with no table "
+               "to fit; the fitted bases are {}\n",
+               runtime::basis_name(kind), runtime::basis_name(kind), fmt::join(fitted, ", "));
     return kExitUsageError;
   }
-  const FittedBasis basis = fit_shipped_basis(basis_of(options.basis));
+  const FittedBasis basis = fit_shipped_basis(kind);
   fmt::print(stderr, "matc: fitted basis: probes mu_1 = {:.4f}, mu_2 = {:.4f}\n",
              basis.view().probe_mu(0), basis.view().probe_mu(1));
   return write_source(options.output, basis_table_source(basis));

@@ -35,13 +35,13 @@ using LabelledCoefficients = std::vector<std::pair<std::string, runtime::Coeffic
 // F at each cosine as the shaders compute it, beside the exact curve.
 void add_direct_fresnel(const EvalOptions& options, const ReflectanceCurve& curve,
                         const LabelledCoefficients& coefficients, ordered_json& out) {
-  const runtime::ShaderBasis& polynomial =
+  const runtime::ShaderBasis& shader_basis =
       runtime::shipped_shader_basis(basis_of(options.lut.basis));
   out["mu"] = options.mu;
   for (const auto& [label, values] : coefficients) {
     ordered_json decomposed = ordered_json::array();
     for (const double mu : options.mu)
-      decomposed.push_back(runtime::evaluate_fresnel(values, polynomial, mu));
+      decomposed.push_back(runtime::evaluate_fresnel(values, shader_basis, mu));
     out["F" + label] = std::move(decomposed);
   }
   ordered_json exact = ordered_json::array();

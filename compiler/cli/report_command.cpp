@@ -62,7 +62,7 @@ int run_report(const ReportOptions& options) {
   }
   const runtime::BasisKind kind = basis_of(options.basis);
   const runtime::BasisView basis = runtime::shipped_basis(kind);
-  const runtime::ShaderBasis& polynomial = runtime::shipped_shader_basis(kind);
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(kind);
 
   struct Output {
     std::string name;
@@ -76,7 +76,7 @@ int run_report(const ReportOptions& options) {
     Diagnostics fit;
     warn_if_poor_fit(compiled, fit);
     print_diagnostics(fit);
-    const MaterialCurves curves = sample_material_curves(compiled, polynomial);
+    const MaterialCurves curves = sample_material_curves(compiled, shader_basis);
     const std::string source = fs::path(material.source_path).filename().string();
     const std::string subtitle = fmt::format(
         "{}, basis {}: worst-channel max error ours {:.4f}, Schlick {:.4f}, F82-tint {:.4f}",

@@ -129,11 +129,11 @@ void solve_exact(const BakeInputs& inputs, const BakeOptions& options, BakedCoef
 // per bake rather than once per texel and channel.
 using ErrorMapBasis = std::array<runtime::ChannelCoefficients, kErrorMapCosines>;
 ErrorMapBasis error_map_basis(runtime::BasisKind kind) {
-  const runtime::ShaderBasis& polynomial = runtime::shipped_shader_basis(kind);
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(kind);
   ErrorMapBasis basis{};
   for (std::size_t j = 0; j < kErrorMapCosines; ++j)
     basis[j] = runtime::evaluate_shader_basis(
-        polynomial, static_cast<double>(j) / static_cast<double>(kErrorMapCosines - 1));
+        shader_basis, static_cast<double>(j) / static_cast<double>(kErrorMapCosines - 1));
   return basis;
 }
 

@@ -19,6 +19,9 @@ std::string fullscreen_vertex_source() {
   return fill_template("glsl/fullscreen.vert", {{"version", kVersion}});
 }
 
+namespace {
+
+// How many material maps a model reads (bindings 4, 5, 6 of the cost pass).
 int material_map_count(FresnelModel model) {
   switch (model) {
     case FresnelModel::schlick_textured:
@@ -32,6 +35,20 @@ int material_map_count(FresnelModel model) {
       break;
   }
   return 0;
+}
+
+}  // namespace
+
+std::vector<CostPassBinding> cost_pass_bindings(FresnelModel model, FresnelQuantity quantity) {
+  std::vector<CostPassBinding> bindings = {{0, CostPassResource::table},
+                                           {1, CostPassResource::sampler}};
+  if (model == FresnelModel::table) bindings.push_back({2, CostPassResource::coefficient_table});
+  if (quantity == FresnelQuantity::quad_light) bindings.push_back({3, CostPassResource::ltc_table});
+  for (int map = 0; map < material_map_count(model); ++map)
+    bindings.push_back({4 + static_cast<std::uint32_t>(map), CostPassResource::material_map});
+  if (quantity == FresnelQuantity::preintegrated)
+    bindings.push_back({7, CostPassResource::environment});
+  return bindings;
 }
 
 std::string cost_pass_source(const Build& build, const CompiledMaterial& compiled,

@@ -67,10 +67,10 @@ __attribute__((target_clones("avx2", "default"))) std::pair<double, double> laws
 }  // namespace
 
 ConductorSolver::ConductorSolver(runtime::BasisKind basis) : basis_(basis) {
-  const runtime::ShaderBasis& polynomial = runtime::shipped_shader_basis(basis);
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(basis);
   for (std::size_t j = 0; j < kMinimaxCosines; ++j) {
     const double mu = static_cast<double>(j) / static_cast<double>(kMinimaxCosines - 1);
-    const auto b = runtime::evaluate_shader_basis(polynomial, mu);
+    const auto b = runtime::evaluate_shader_basis(shader_basis, mu);
     mu_.push_back(mu);
     b1_.push_back(b[1]);
     b2_.push_back(b[2]);

@@ -93,7 +93,7 @@ PathValidation DeviceValidator::run(ShaderLanguage language,
   const std::vector<float> results =
       device_->results.read<float>(queries_.size() * kValidationResultsPerQuery * 4);
 
-  const runtime::ShaderBasis& polynomial = runtime::shipped_shader_basis(build_.options().basis);
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(build_.options().basis);
   const runtime::LutView table = build_.stored_lut().view();
   const Lut* embedded = build_.embedded_lut();
   const runtime::AnalyticLutCoefficients& analytic =
@@ -104,7 +104,7 @@ PathValidation DeviceValidator::run(ShaderLanguage language,
   for (std::size_t i = 0; i < queries_.size(); ++i) {
     const ValidationQuery& query = queries_[i];
     const float* result = &results[i * kValidationResultsPerQuery * 4];
-    record(path.fresnel, runtime::evaluate_fresnel(compiled.coefficients, polynomial, query.mu),
+    record(path.fresnel, runtime::evaluate_fresnel(compiled.coefficients, shader_basis, query.mu),
            result, query);
     record(path.preintegrated,
            runtime::evaluate_fbar(compiled.coefficients, table, query.ndotv, query.roughness),

@@ -83,7 +83,7 @@ TablePathValidation DeviceValidator::run_table(ShaderLanguage language) const {
       build_.table_validation_module(language), packed, queries.size(),
       queries.size() * kTableValidationResultsPerQuery * 4, /*with_ltc=*/false);
 
-  const runtime::ShaderBasis& polynomial = runtime::shipped_shader_basis(build_.options().basis);
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(build_.options().basis);
   const runtime::CoefficientTableView table = build_.stored_coefficient_table().view();
   const runtime::LutView lut = build_.stored_lut().view();
   TablePathValidation path;
@@ -93,13 +93,13 @@ TablePathValidation DeviceValidator::run_table(ShaderLanguage language) const {
     const float* result = &results[i * kTableValidationResultsPerQuery * 4];
     const runtime::Coefficients coefficients =
         runtime::coefficients_from_table(table, as_rgb(q.reflectivity), as_rgb(q.edge_tint));
-    record(path.fresnel, runtime::evaluate_fresnel(coefficients, polynomial, q.mu), result, i);
+    record(path.fresnel, runtime::evaluate_fresnel(coefficients, shader_basis, q.mu), result, i);
     record(path.preintegrated, runtime::evaluate_fbar(coefficients, lut, q.ndotv, q.roughness),
            result + 4, i);
     const runtime::ArtisticRgb artistic = runtime::artistic_from_ior(as_rgb(q.n), as_rgb(q.k));
     const runtime::Coefficients from_ior =
         runtime::coefficients_from_table(table, artistic.reflectivity, artistic.edge_tint);
-    record(path.from_ior, runtime::evaluate_fresnel(from_ior, polynomial, q.mu), result + 8, i);
+    record(path.from_ior, runtime::evaluate_fresnel(from_ior, shader_basis, q.mu), result + 8, i);
     runtime::Rgb c2{}, c3{};
     for (std::size_t c = 0; c < 3; ++c) {
       c2[c] = static_cast<double>(q.edge_tint[c] - 0.5f);
@@ -107,7 +107,7 @@ TablePathValidation DeviceValidator::run_table(ShaderLanguage language) const {
     }
     const runtime::Coefficients baked =
         runtime::coefficients_from_baked(as_rgb(q.reflectivity), c2, c3);
-    record(path.baked, runtime::evaluate_fresnel(baked, polynomial, q.mu), result + 12, i);
+    record(path.baked, runtime::evaluate_fresnel(baked, shader_basis, q.mu), result + 12, i);
   }
   const double tolerance = tolerance_.preintegrated;
   path.passed = path.fresnel.max_abs <= tolerance && path.preintegrated.max_abs <= tolerance &&

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "matc/compile.h"
 #include "matc/emit/build.h"
@@ -30,18 +31,29 @@ enum class FresnelQuantity {
   preintegrated_closed_form
 };
 
-// How many material maps a model reads (bindings 4, 5, 6 of the cost pass).
-int material_map_count(FresnelModel model);
+// What the cost pass reads at one binding of set 0. The table is the preintegrated one (for
+// Schlick's variants the ComparisonLobes bake); the material maps are F0 (Schlick's textured),
+// reflectivity and edge tint (the coefficient table) or F0, C2, C3 (baked textures).
+enum class CostPassResource {
+  table,
+  sampler,
+  coefficient_table,
+  ltc_table,
+  material_map,
+  environment
+};
+struct CostPassBinding {
+  std::uint32_t binding = 0;
+  CostPassResource resource = CostPassResource::table;
+};
+// Every binding the cost pass of (model, quantity) declares, the one place that decides them.
+std::vector<CostPassBinding> cost_pass_bindings(FresnelModel model, FresnelQuantity quantity);
 
 // One triangle covering the viewport, from gl_VertexIndex.
 std::string fullscreen_vertex_source();
 
-// The benchmarks' fragment shader: per pixel, one quantity of `compiled` with one model. Binds
-// the table at (set 0) binding 0 and the sampler at binding 1; for Schlick's preintegrated
-// variant the table must be the ComparisonLobes bake; the table model also binds the coefficient
-// table (its .xy) at binding 2, the quad-light quantity the LTC table at binding 3, and the
-// textured models material_map_count(model) maps at bindings 4, 5, 6, and the preintegrated
-// quantity the prefiltered environment at binding 7.
+// The benchmarks' fragment shader: per pixel, one quantity of `compiled` with one model, reading
+// what cost_pass_bindings(model, quantity) lists.
 std::string cost_pass_source(const Build& build, const CompiledMaterial& compiled,
                              FresnelModel model, FresnelQuantity quantity, std::uint32_t width,
                              std::uint32_t height);
