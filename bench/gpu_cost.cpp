@@ -51,7 +51,7 @@ const std::array<Comparison, 10> kComparisons = {{
      FresnelQuantity::ggx_light, FresnelModel::ours, FresnelModel::schlick, std::nullopt, true,
      matc::runtime::BasisKind::extended},
     {"one GGX light, textured: coefficient table from r, g maps vs F0 map",
-     FresnelQuantity::ggx_light, FresnelModel::table, FresnelModel::schlick_textured, 1.5, false},
+     FresnelQuantity::ggx_light, FresnelModel::table, FresnelModel::schlick_textured, 1.5},
     {"one GGX light, textured: baked F0, C2, C3 maps vs F0 map", FresnelQuantity::ggx_light,
      FresnelModel::baked, FresnelModel::schlick_textured, 1.25},
     {"split-sum image light (environment and table fetches)", FresnelQuantity::preintegrated,

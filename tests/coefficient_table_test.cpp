@@ -2,6 +2,7 @@
 // the accuracy targets of issue #14 against the per-material compile.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -37,17 +38,27 @@ TEST(CoefficientTable, CheckedInTablesAreCurrent) {
   }
 }
 
-TEST(CoefficientTable, EdgeTintAxisRoundTripsAndSpansTheRange) {
-  for (const double r : {0.0, 1e-6, 0.01, 0.3, 0.9, 0.999}) {
-    EXPECT_DOUBLE_EQ(matc::runtime::coefficient_table_v_from_edge_tint(r, 0.0), 0.0);
-    EXPECT_NEAR(matc::runtime::coefficient_table_v_from_edge_tint(r, 1.0), 1.0, 1e-12);
-    for (const double g : {0.1, 0.5, 0.97}) {
-      const double v = matc::runtime::coefficient_table_v_from_edge_tint(r, g);
-      EXPECT_NEAR(matc::runtime::coefficient_table_edge_tint_from_v(r, v), g, 1e-12);
-    }
+TEST(CoefficientTable, AxesRoundTripAndSpanTheRange) {
+  using matc::runtime::coefficient_table_edge_tint_from_v;
+  using matc::runtime::coefficient_table_reflectivity_from_u;
+  using matc::runtime::coefficient_table_u_from_reflectivity;
+  using matc::runtime::coefficient_table_v_from_edge_tint;
+  EXPECT_DOUBLE_EQ(coefficient_table_u_from_reflectivity(0.0), 0.0);
+  EXPECT_DOUBLE_EQ(coefficient_table_u_from_reflectivity(1.0), 1.0);
+  EXPECT_DOUBLE_EQ(coefficient_table_v_from_edge_tint(0.0), 0.0);
+  EXPECT_DOUBLE_EQ(coefficient_table_v_from_edge_tint(1.0), 1.0);
+  for (const double x : {0.0, 1e-7, 1e-4, 0.01, 0.3, 0.9, 0.999, 1.0}) {
+    EXPECT_NEAR(coefficient_table_reflectivity_from_u(coefficient_table_u_from_reflectivity(x)), x,
+                1e-12 * std::max(x, 1e-3));
+    EXPECT_NEAR(coefficient_table_edge_tint_from_v(coefficient_table_v_from_edge_tint(x)), x,
+                1e-12);
   }
-  // Most of the rows go to the last hundredths of g at a high reflectivity, where n falls fastest.
-  EXPECT_LT(matc::runtime::coefficient_table_v_from_edge_tint(0.9, 0.9), 0.5);
+  // Texels crowd at both ends of r (the first cell ends below what a 16-bit map holds) and
+  // towards g = 1.
+  const double last = 1.0 - 1.0 / 127.0;
+  EXPECT_LT(coefficient_table_reflectivity_from_u(1.0 / 127.0), 1e-7);
+  EXPECT_GT(coefficient_table_reflectivity_from_u(last), 0.99);
+  EXPECT_GT(coefficient_table_edge_tint_from_v(last), 0.9999);
 }
 
 TEST(CoefficientTable, TexelCentresReadBackAndFullReflectivityIsOne) {
@@ -56,7 +67,7 @@ TEST(CoefficientTable, TexelCentresReadBackAndFullReflectivityIsOne) {
   const double u = static_cast<double>(x) / static_cast<double>(table.size - 1);
   const double r = matc::runtime::coefficient_table_reflectivity_from_u(u);
   const double g = matc::runtime::coefficient_table_edge_tint_from_v(
-      r, static_cast<double>(y) / static_cast<double>(table.size - 1));
+      static_cast<double>(y) / static_cast<double>(table.size - 1));
   const auto c = matc::runtime::channel_coefficients_from_table(table, r, g);
   EXPECT_NEAR(c[2], table.texel(x, y)[0], 1e-6);
   EXPECT_NEAR(c[3], table.texel(x, y)[1], 1e-6);

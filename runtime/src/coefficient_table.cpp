@@ -7,29 +7,32 @@
 
 namespace matc::runtime {
 double coefficient_table_u_from_reflectivity(double reflectivity) {
-  return std::cbrt(unit_clamp(reflectivity));
-}
-double coefficient_table_reflectivity_from_u(double u) {
-  return u * u * u;
-}
-
-double coefficient_table_v_from_edge_tint(double reflectivity, double edge_tint) {
-  const double g = unit_clamp(edge_tint);
-  const double delta = coefficient_table_ior_span(reflectivity);
-  if (delta <= 0.0) return g;                    // r = 0: n_min = n_max = 1
-  if (delta >= 1.0) return g < 1.0 ? 0.0 : 1.0;  // r = 1: n_max is infinite
-  return std::log1p(-g * delta) / std::log1p(-delta);
-}
-
-double coefficient_table_edge_tint_from_v(double reflectivity, double v) {
-  const double delta = coefficient_table_ior_span(reflectivity);
-  if (delta <= 0.0 || delta >= 1.0) return v;
-  return -std::expm1(v * std::log1p(-delta)) / delta;
-}
-
-double coefficient_table_ior_span(double reflectivity) {
   const double r = unit_clamp(reflectivity);
-  return 2.0 * std::sqrt(r) / (1.0 + r);
+  return 0.5 * (std::sqrt(std::sqrt(r)) + r * r);
+}
+
+double coefficient_table_reflectivity_from_u(double u) {
+  // u = (q + q^8) / 2 with q = r^(1/4): Newton from q = 1, where the increasing convex function
+  // is approached from above, so every step is monotone and the count is fixed.
+  const double target = unit_clamp(u);
+  double q = 1.0;
+  for (int step = 0; step < 64; ++step) {
+    const double q7 = q * q * q * q * q * q * q;
+    const double next = q - (0.5 * (q + q7 * q) - target) / (0.5 + 4.0 * q7);
+    if (!(next < q)) break;
+    q = std::max(next, 0.0);
+  }
+  const double q2 = q * q;
+  return q2 * q2;
+}
+
+double coefficient_table_v_from_edge_tint(double edge_tint) {
+  return 1.0 - std::sqrt(1.0 - unit_clamp(edge_tint));
+}
+
+double coefficient_table_edge_tint_from_v(double v) {
+  const double w = 1.0 - unit_clamp(v);
+  return 1.0 - w * w;
 }
 
 std::array<float, kCoefficientTableChannels> CoefficientTableView::texel(std::size_t x,
@@ -41,7 +44,7 @@ std::array<float, kCoefficientTableChannels> CoefficientTableView::texel(std::si
 std::array<double, kCoefficientTableChannels> sample_coefficient_table(
     const CoefficientTableView& table, double reflectivity, double edge_tint) {
   return sample_coefficient_table_at(table, coefficient_table_u_from_reflectivity(reflectivity),
-                                     coefficient_table_v_from_edge_tint(reflectivity, edge_tint));
+                                     coefficient_table_v_from_edge_tint(edge_tint));
 }
 
 std::array<double, kCoefficientTableChannels> sample_coefficient_table_at(

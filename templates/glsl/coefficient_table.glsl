@@ -5,23 +5,18 @@
 
 // Where to sample the coefficient table for one colour channel's reflectivity r and edge tint g
 // (Gulbrandsen 2014), with linear filtering and clamp-to-edge addressing, texel centres on the
-// ends of both axes: u = r^(1/3) across; down, how far g moves the index of refraction from
-// n_max(r) towards n_min(r) in log n, v = log(1 - g delta) / log(1 - delta) with
-// delta = 1 - n_min / n_max = 2 sqrt(r) / (1 + r). Below delta = 0.01 (r < 2.5e-5) v is its
-// series in delta, which float logs of numbers that close to 1 could not resolve.
+// ends of both axes: u = (r^(1/4) + r^2) / 2 across (texels crowd near r = 0, where the curves
+// change fastest, and near r = 1, where the coefficients do), v = 1 - sqrt(1 - g) down (rows
+// crowd towards g = 1, where the index of refraction falls fastest). Three square roots and a
+// few multiply-adds (issue #28).
 vec2 matc_coefficient_table_texcoord(float r, float g) {
   float reflectivity = clamp(r, 0.0, 1.0);
-  float edge_tint = clamp(g, 0.0, 1.0);
-  float sqrt_r = sqrt(reflectivity);
-  float delta = 2.0 * sqrt_r / (1.0 + reflectivity);
-  float series = edge_tint * (1.0 + edge_tint * delta * (0.5 + edge_tint * delta / 3.0)) /
-                 (1.0 + delta * (0.5 + delta / 3.0));
-  // 1 - delta and 1 - g delta written so that r -> 1 does not cancel.
-  float rest = (1.0 - sqrt_r) * (1.0 - sqrt_r) / (1.0 + reflectivity);
-  float logs = log2(max((1.0 - edge_tint) + edge_tint * rest, 1e-30)) / log2(max(rest, 1e-30));
-  vec2 axes = vec2(pow(reflectivity, 1.0 / 3.0), clamp(delta < 0.01 ? series : logs, 0.0, 1.0));
-  // texcoord = (axes * (size - 1) + 0.5) / size, written as one multiply-add.
-  return axes * (float(MATC_COEFFICIENT_TABLE_SIZE - 1) / float(MATC_COEFFICIENT_TABLE_SIZE)) + 0.5 / float(MATC_COEFFICIENT_TABLE_SIZE);
+  // texcoord = (axis * (size - 1) + 0.5) / size, folded into each axis' multiply-adds.
+  const float scale = float(MATC_COEFFICIENT_TABLE_SIZE - 1) / float(MATC_COEFFICIENT_TABLE_SIZE);
+  const float offset = 0.5 / float(MATC_COEFFICIENT_TABLE_SIZE);
+  float u = (0.5 * scale) * (sqrt(sqrt(reflectivity)) + reflectivity * reflectivity) + offset;
+  float v = (scale + offset) - scale * sqrt(1.0 - clamp(g, 0.0, 1.0));
+  return vec2(u, v);
 }
 
 // One channel's c_0..c_3: c_0 = r, c_1 = 1 - r, and (c_2, c_3) the table's texel (its .xy) at

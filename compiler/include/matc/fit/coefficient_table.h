@@ -18,7 +18,11 @@ namespace matc {
 
 // Where the texel columns sit along the reflectivity axis.
 enum class ReflectivityAxis {
-  cube_root,    // u = r^(1/3): texels follow curves that change fastest at low r (shipped)
+  // u = (r^(1/4) + r^2) / 2: texels crowd at low r, where the curves change fastest, and near
+  // r = 1, where the coefficients do; square roots and multiply-adds in a shader (shipped)
+  fourth_root_plus_square,
+  cube_root,  // u = r^(1/3): texels follow curves that change fastest at low r (shipped until issue
+              // #28)
   square_root,  // u = sqrt(r): fewer texels near r = 0
   fourth_root,  // u = r^(1/4) = sqrt(sqrt(r)): more texels near r = 0, one square root more
   linear,       // u = r
@@ -27,11 +31,13 @@ enum class ReflectivityAxis {
 
 // Where the texel rows sit along the edge-tint axis.
 enum class EdgeTintAxis {
-  log_ior,      // v = log(n_max / n) / log(n_max / n_min): even in the curves' change (shipped)
+  // v = log(n_max / n) / log(n_max / n_min): even in the curves' change (shipped until #28; two
+  // log2 and three divisions a channel in a shader)
+  log_ior,
   linear,       // v = g
   inverse_ior,  // v = (1/n - 1/n_max) / (1/n_min - 1/n_max) = g (1 - delta) / (1 - g delta)
   // v = 1 - (1 - g)^(1/k): rows crowd towards g = 1 like log n's, from square roots alone.
-  complement_square_root,  // k = 2
+  complement_square_root,  // k = 2 (shipped)
   complement_fourth_root,  // k = 4
   complement_eighth_root,  // k = 8
 };
@@ -58,13 +64,13 @@ inline constexpr std::size_t kMaxCoefficientTableSize = 1024;
 // At r = 0 (n = 1, no interface) the curve is 0 at every mu > 0 and its solve is nothing like the
 // limit r -> 0+, which spoils the first cell of a table whose first cell is wide (sqrt(r) axes);
 // the study can solve the first column this fraction of a texel in instead. With the shipped
-// r^(1/3) axis the first cell ends at r = 7e-7 and the column is solved at r = 0.
+// axis the first cell ends at r = 6e-8 and the column is solved at r = 0.
 inline constexpr double kDefaultFirstColumnOffset = 0.0;
 
 struct CoefficientTableOptions {
   std::size_t size = kDefaultCoefficientTableSize;
-  ReflectivityAxis axis = ReflectivityAxis::cube_root;
-  EdgeTintAxis edge_tint_axis = EdgeTintAxis::log_ior;
+  ReflectivityAxis axis = ReflectivityAxis::fourth_root_plus_square;
+  EdgeTintAxis edge_tint_axis = EdgeTintAxis::complement_square_root;
   TableValues values = TableValues::raw;
   TableSolve solve = TableSolve::basis;
   double first_column_offset = kDefaultFirstColumnOffset;  // in texels

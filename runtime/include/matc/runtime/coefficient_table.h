@@ -3,12 +3,14 @@
 // pixel with one small fetch per channel (docs/coefficient-table.md).
 //
 // Layout: a square two-channel float texture, `size` x `size` texels, columns (x) indexed by
-// u = r^(1/3) (the curves change fastest near r = 0) and rows (y) by v, how far g moves the index
-// of refraction from Gulbrandsen's n_max(r) (g = 0) towards n_min(r) (g = 1) in log n:
-//     v = log(n_max / n) / log(n_max / n_min) = log(1 - g delta) / log(1 - delta),
-//     delta = 1 - n_min / n_max = 2 sqrt(r) / (1 + r)                       (v = g as delta -> 0),
-// which spreads the rows evenly over the curves' change: in g itself, most of it happens within
-// a few hundredths of g = 1. Texel (x, y) holds the channel's (c_2, c_3) at
+//     u = (r^(1/4) + r^2) / 2
+// (texels crowd near r = 0, where the curves change fastest, and again near r = 1, where the
+// coefficients do) and rows (y) by
+//     v = 1 - sqrt(1 - g)
+// (rows crowd towards g = 1, where Gulbrandsen's n falls from n_max(r) to n_min(r) fastest).
+// Both axes cost square roots and multiply-adds alone in a shader (issue #28; the study in
+// docs/accuracy.md compares them with the cube-root and log-n axes they replaced). Texel (x, y)
+// holds the channel's (c_2, c_3) at
 //     u = x / (size - 1),  v = y / (size - 1).
 // As with the preintegrated table, texel centres sit on the ends of both axes: sample with
 // linear filtering and clamp-to-edge addressing at
@@ -31,10 +33,8 @@ inline constexpr std::size_t kCoefficientTableChannels = 2;  // c_2, c_3 per tex
 // Table axes for a reflectivity and an edge tint, and back.
 double coefficient_table_u_from_reflectivity(double reflectivity);
 double coefficient_table_reflectivity_from_u(double u);
-double coefficient_table_v_from_edge_tint(double reflectivity, double edge_tint);
-double coefficient_table_edge_tint_from_v(double reflectivity, double v);
-// delta = 1 - n_min(r) / n_max(r) = 2 sqrt(r) / (1 + r): 0 at r = 0, 1 at r = 1.
-double coefficient_table_ior_span(double reflectivity);
+double coefficient_table_v_from_edge_tint(double edge_tint);
+double coefficient_table_edge_tint_from_v(double v);
 
 // A non-owning view of a table in the layout above (row-major, 2 floats per texel).
 struct CoefficientTableView {
