@@ -1,5 +1,6 @@
 // End-to-end tests of the matc binary: outputs, exit codes, determinism, and safety.
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -163,6 +164,26 @@ TEST_F(MatcCli, SameInputsGiveSameBytesAndUnchangedFilesAreNotRewritten) {
   }
   // No temporary files are left behind.
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "a"), fs::directory_iterator()), 17);
+}
+
+// A batch killed mid-write (SIGKILL) leaves its hidden temporaries behind; the next run into the
+// directory removes those of writers that no longer exist, and nothing else.
+TEST_F(MatcCli, RemovesTemporariesOfKilledWriters) {
+  write_file(dir_ / "m" / "good.json", kGood);
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ASSERT_GT(child, 0);
+  ASSERT_EQ(::waitpid(child, nullptr, 0), child);  // its process id now names no process
+  const fs::path killed = dir_ / "out" / (".good.glsl.tmp" + std::to_string(child));
+  const fs::path alive = dir_ / "out" / (".good.hlsl.tmp" + std::to_string(::getpid()));
+  const fs::path unrelated = dir_ / "out" / ".notes.tmp";
+  write_file(killed, "half a shader");
+  write_file(alive, "still being written");
+  write_file(unrelated, "not matc's");
+  ASSERT_EQ(run({"-q", "-o", "out", "m/good.json"}).exit_code, 0);
+  EXPECT_FALSE(fs::exists(killed));
+  EXPECT_TRUE(fs::exists(alive));
+  EXPECT_TRUE(fs::exists(unrelated));
 }
 
 // One action per material (--no-shared) plus one shared action (--shared-only) write the batch's

@@ -1,11 +1,16 @@
 #include "atomic_file.h"
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <mutex>
+#include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -45,8 +50,45 @@ bool same_contents(const std::filesystem::path& a, const std::filesystem::path& 
   return in_a.eof() && in_b.eof();
 }
 
+constexpr std::string_view kTemporaryMark = ".tmp";
+
 std::filesystem::path temporary_beside(const std::filesystem::path& path) {
-  return path.parent_path() / fmt::format(".{}.tmp{}", path.filename().string(), ::getpid());
+  return path.parent_path() /
+         fmt::format(".{}{}{}", path.filename().string(), kTemporaryMark, ::getpid());
+}
+
+// The writer's process id in a name temporary_beside() made, if it is one.
+std::optional<pid_t> temporary_writer(std::string_view name) {
+  const std::size_t mark = name.rfind(kTemporaryMark);
+  if (name.size() < 2 || name.front() != '.' || mark == std::string_view::npos || mark < 2)
+    return std::nullopt;
+  const std::string_view digits = name.substr(mark + kTemporaryMark.size());
+  pid_t pid = 0;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), pid);
+  if (digits.empty() || error != std::errc() || end != digits.data() + digits.size() || pid <= 0)
+    return std::nullopt;
+  return pid;
+}
+
+// A writer killed mid-write (SIGKILL: no chance to clean up) leaves its temporary behind; the
+// first write of this process into a directory removes those whose writer no longer exists (a
+// concurrent matc's, alive, are left alone).
+void sweep_abandoned_temporaries(const std::filesystem::path& directory) {
+  static std::mutex mutex;
+  static std::set<std::string> swept;
+  {
+    const std::lock_guard lock(mutex);
+    if (!swept.insert(path_identity(directory.empty() ? "." : directory)).second) return;
+  }
+  std::error_code error;
+  std::filesystem::directory_iterator entries(directory.empty() ? "." : directory, error);
+  for (; !error && entries != std::filesystem::directory_iterator(); entries.increment(error)) {
+    const std::optional<pid_t> writer = temporary_writer(entries->path().filename().string());
+    if (!writer || *writer == ::getpid()) continue;
+    if (::kill(*writer, 0) == 0 || errno != ESRCH) continue;  // alive (or not ours to probe)
+    std::error_code ignored;
+    std::filesystem::remove(entries->path(), ignored);
+  }
 }
 
 void write_temporary(const std::filesystem::path& temporary,
@@ -82,6 +124,7 @@ void move_into_place(const std::filesystem::path& temporary, const std::filesyst
 }  // namespace
 
 WriteOutcome write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
+  sweep_abandoned_temporaries(path.parent_path());
   if (holds_bytes(path, bytes)) return WriteOutcome::unchanged;
   const std::filesystem::path temporary = temporary_beside(path);
   write_temporary(temporary, [&](std::ostream& out) {
@@ -93,6 +136,7 @@ WriteOutcome write_file_atomically(const std::filesystem::path& path, std::strin
 
 WriteOutcome write_file_atomically(const std::filesystem::path& path,
                                    const std::function<void(std::ostream&)>& produce) {
+  sweep_abandoned_temporaries(path.parent_path());
   const std::filesystem::path temporary = temporary_beside(path);
   write_temporary(temporary, produce);
   if (same_contents(temporary, path)) {

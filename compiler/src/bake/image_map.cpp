@@ -4,6 +4,10 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
 
 #include <fmt/format.h>
 #include <stb/stb_image.h>
@@ -38,6 +42,23 @@ bool jpeg_has_end_marker(std::span<const unsigned char> bytes) {
   return end >= 4 && bytes[end - 2] == 0xFF && bytes[end - 1] == 0xD9;
 }
 
+// The width and height a PNG's header (its IHDR chunk, first after the signature) claims. stb_image
+// refuses a header whose texels would not fit its own 1 GiB bound and then reports only "unknown
+// image type"; reading the two numbers first lets the size limit speak instead.
+std::optional<std::pair<std::size_t, std::size_t>> png_header_size(
+    std::span<const unsigned char> bytes) {
+  constexpr std::size_t kIhdrEnd = 24;  // signature (8), length (4), type (4), width, height
+  if (bytes.size() < kIhdrEnd || !std::equal(bytes.begin() + 12, bytes.begin() + 16, "IHDR"))
+    return std::nullopt;
+  const auto big_endian = [&](std::size_t offset) {
+    std::size_t value = 0;
+    for (std::size_t i = 0; i < 4; ++i)
+      value = (value << 8) | bytes[offset + i];
+    return value;
+  };
+  return std::pair{big_endian(16), big_endian(20)};
+}
+
 struct StbFree {
   void operator()(void* pixels) const { stbi_image_free(pixels); }
 };
@@ -47,18 +68,19 @@ ImageReadResult decode_with_stb(std::span<const unsigned char> bytes, ImageFileF
   const std::string_view kind = image_file_format_name(format);
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     return failure(fmt::format("is too large for a {} reader", kind));
+  if (format == ImageFileFormat::png) {
+    if (const auto claimed = png_header_size(bytes)) {
+      if (auto too_large = image_size_limit_failure(claimed->first, claimed->second))
+        return failure(std::move(*too_large));
+    }
+  }
   const auto* data = bytes.data();
   const int length = static_cast<int>(bytes.size());
   int width = 0, height = 0, channels = 0;
   if (stbi_info_from_memory(data, length, &width, &height, &channels) == 0)
     return failure(fmt::format("is not a readable {} ({})", kind, stbi_failure_reason()));
   const auto w = static_cast<std::size_t>(width), h = static_cast<std::size_t>(height);
-  if (w > kMaxImageSide || h > kMaxImageSide || w * h > kMaxImageTexels) {
-    return failure(
-        fmt::format("{} x {} texels is more than a map may hold (at most {} per side "
-                    "and {} in all)",
-                    w, h, kMaxImageSide, kMaxImageTexels));
-  }
+  if (auto too_large = image_size_limit_failure(w, h)) return failure(std::move(*too_large));
   if (format == ImageFileFormat::jpeg && !jpeg_has_end_marker(bytes))
     return failure("is a truncated JPEG (no end-of-image marker)");
   const bool sixteen_bit = stbi_is_16_bit_from_memory(data, length) != 0;
@@ -104,6 +126,14 @@ ImageReadResult decode_with_stb(std::span<const unsigned char> bytes, ImageFileF
 }
 
 }  // namespace
+
+std::optional<std::string> image_size_limit_failure(std::size_t width, std::size_t height) {
+  if (width <= kMaxImageSide && height <= kMaxImageSide && width * height <= kMaxImageTexels)
+    return std::nullopt;
+  return fmt::format(
+      "{} x {} texels is more than a map may hold (at most {} per side and {} in all)", width,
+      height, kMaxImageSide, kMaxImageTexels);
+}
 
 std::string_view map_encoding_name(MapEncoding encoding) {
   return encoding == MapEncoding::srgb ? "srgb" : "linear";

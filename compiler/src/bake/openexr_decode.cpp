@@ -60,10 +60,8 @@ ImageReadResult decode_openexr(std::span<const unsigned char> bytes) {
     const Imath::Box2i window = header.dataWindow();
     const auto width = static_cast<std::size_t>(window.max.x) - window.min.x + 1;
     const auto height = static_cast<std::size_t>(window.max.y) - window.min.y + 1;
-    if (width * height > kMaxImageTexels) {
-      return failure(fmt::format("{} x {} texels is more than the {} a map may hold", width, height,
-                                 kMaxImageTexels));
-    }
+    if (auto too_large = image_size_limit_failure(width, height))
+      return failure(std::move(*too_large));
     const Imf::ChannelList& channels = header.channels();
     const bool rgb =
         channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");

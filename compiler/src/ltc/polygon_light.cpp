@@ -17,6 +17,9 @@ using runtime::minus;
 // Relative tolerances, against the polygon's size: what double-precision input can state.
 constexpr double kPlanarTolerance = 1e-6;
 constexpr double kAreaTolerance = 1e-12;
+// Larger coordinates overflow the checks below (Newell's normal squares products of two
+// coordinates) long before any light could need them.
+constexpr double kMaxCoordinate = 1e30;
 
 std::string_view trim(std::string_view text) {
   const auto first = text.find_first_not_of(" \t");
@@ -76,6 +79,12 @@ std::string check_polygon_light(std::span<const Vec3> vertices) {
   for (std::size_t v = 0; v < n; ++v) {
     for (const double c : vertices[v])
       if (!std::isfinite(c)) return fmt::format("vertex {}: coordinates must be finite", v + 1);
+    for (const double c : vertices[v])
+      if (std::abs(c) > kMaxCoordinate)
+        return fmt::format(
+            "vertex {}: coordinate {:g} is beyond {:g}, more than the light's arithmetic can hold "
+            "(its areas would overflow); scale the light down",
+            v + 1, c, kMaxCoordinate);
   }
   double size = 0.0;
   for (std::size_t v = 0; v < n; ++v)

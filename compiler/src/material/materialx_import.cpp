@@ -161,6 +161,14 @@ class Importer {
       } else if (tag == "material") {
         ++found;
         import_legacy_material(node);
+      } else if (tag == "xi:include") {
+        // Safe (nothing outside the document is read), but its materials would vanish silently.
+        result_.diagnostics.note(
+            at(node), "xi:include",
+            fmt::format("includes '{}', which matc does not read: materials defined there are not "
+                        "imported",
+                        node.attribute("href").value()),
+            "give that document to matc as an input of its own");
       }
     }
     if (result_.diagnostics.has_errors()) {

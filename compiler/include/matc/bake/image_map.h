@@ -29,6 +29,9 @@ inline constexpr std::size_t kMaxImageSide = 16384;
 inline constexpr std::size_t kMaxImageTexels = std::size_t{1} << 24;           // 4096 x 4096
 inline constexpr std::uintmax_t kMaxImageFileBytes = std::uintmax_t{1} << 30;  // 1 GiB
 
+// Why a map of width x height texels cannot be read (the bounds above), or nothing if it can.
+std::optional<std::string> image_size_limit_failure(std::size_t width, std::size_t height);
+
 struct ImageMap {
   std::size_t width = 0;
   std::size_t height = 0;
