@@ -62,8 +62,9 @@ const std::array<Comparison, 10> kComparisons = {{
      FresnelModel::baked, FresnelModel::schlick_textured, std::nullopt},
     {"one quad light (LTC)", FresnelQuantity::quad_light, FresnelModel::ours, FresnelModel::schlick,
      1.05},
+    // Issue #28: a third of the 1586 its kernel measured, against Karis' 26 there.
     {"texture-free Fbar: our closed form vs Karis' fit", FresnelQuantity::preintegrated_closed_form,
-     FresnelModel::ours, FresnelModel::schlick, std::nullopt},
+     FresnelModel::ours, FresnelModel::schlick, 20.3},
 }};
 
 struct Cost {

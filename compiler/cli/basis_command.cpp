@@ -145,7 +145,7 @@ int run_basis_analytic_lut(const BasisFitOptions& options) {
   const runtime::BasisKind kind = basis_of(options.basis);
   const runtime::BasisView basis = runtime::shipped_basis(kind);
   const Lut table = preintegrate_lut(basis, LutOptions{});
-  const runtime::AnalyticLutCoefficients coefficients = fit_analytic_lut(table);
+  const runtime::AnalyticLutCoefficients coefficients = fit_analytic_lut(table, kind);
   const AnalyticLutError error = analytic_lut_error(coefficients, table, basis);
   fmt::print(stderr,
              "matc: fitted the closed form of the {} basis' table: |Fbar - texture| over the "

@@ -184,8 +184,8 @@ int main(int argc, char** argv) {
   BasisFitOptions analytic_lut;
   CLI::App* analytic_lut_command = add_source_command(
       "analytic-lut",
-      "Bake the basis' default preintegrated table, fit its closed form (two degree-11 "
-      "polynomials per channel, docs/lut.md) and write the C++ source",
+      "Bake the basis' default preintegrated table, fit its closed form (the albedo and a "
+      "two-point quadrature of the basis, docs/shaders.md) and write the C++ source",
       "runtime/src/<basis>_analytic_lut_table.cpp", analytic_lut, true);
   BasisFitOptions lut_hashes;
   CLI::App* lut_hashes_command = add_source_command(

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "matc/runtime/shader_basis.h"
+
 namespace matc::runtime {
 
 // Defined by the generated tables (src/<basis>_analytic_lut_table.cpp).
@@ -33,35 +35,49 @@ std::array<double, 2> analytic_lut_coordinates(double ndotv, double roughness) {
   return {std::sqrt(2.0 * (u * u + r * r)) - 1.0, 2.0 * a / (a + b) - 1.0};
 }
 
-std::array<double, kAnalyticLutTerms> analytic_lut_chebyshev(double x) {
-  static_assert(kAnalyticLutTerms == 12, "three blocks of four, as the shaders compute them");
-  std::array<double, kAnalyticLutTerms> t{};
+AnalyticLutChebyshev analytic_lut_chebyshev(double x) {
+  AnalyticLutChebyshev t{};
   t[0] = 1.0;
   t[1] = x;
-  t[2] = 2.0 * x * x - 1.0;
-  t[3] = 2.0 * x * t[2] - x;
-  for (std::size_t base : {4u, 8u}) {
-    t[base] = 2.0 * t[base / 2] * t[base / 2] - 1.0;  // T_2n = 2 T_n^2 - 1
-    for (std::size_t k = 1; k < 4; ++k)
-      t[base + k] = 2.0 * t[base] * t[k] - t[base - k];  // T_(m+k) = 2 T_m T_k - T_(m-k)
-  }
+  for (std::size_t k = 2; k < t.size(); ++k)
+    t[k] = 2.0 * x * t[k - 1] - t[k - 2];
   return t;
+}
+
+double analytic_lut_polynomial(std::span<const double> coefficients, std::size_t degree,
+                               const AnalyticLutChebyshev& tx, const AnalyticLutChebyshev& ty) {
+  double sum = 0.0;
+  std::size_t term = 0;
+  for (std::size_t p = 0; p <= degree; ++p) {
+    double row = 0.0;
+    for (std::size_t q = 0; q + p <= degree; ++q)
+      row += coefficients[term++] * ty[q];
+    sum += tx[p] * row;
+  }
+  return sum;
+}
+
+AnalyticLutFields analytic_lut_fields(const AnalyticLutCoefficients& coefficients, double ndotv,
+                                      double roughness) {
+  const auto [x, y] = analytic_lut_coordinates(ndotv, roughness);
+  const AnalyticLutChebyshev tx = analytic_lut_chebyshev(x);
+  const AnalyticLutChebyshev ty = analytic_lut_chebyshev(y);
+  constexpr std::size_t kQuadrature = kAnalyticLutQuadratureDegree;
+  return {analytic_lut_polynomial(coefficients.albedo, kAnalyticLutAlbedoDegree, tx, ty),
+          analytic_lut_polynomial(coefficients.node_a, kQuadrature, tx, ty),
+          analytic_lut_polynomial(coefficients.node_b, kQuadrature, tx, ty),
+          analytic_lut_polynomial(coefficients.weight_b, kQuadrature, tx, ty)};
 }
 
 std::array<double, kBasisSize> preintegrated_basis_analytic(
     const AnalyticLutCoefficients& coefficients, double ndotv, double roughness) {
-  const auto [x, y] = analytic_lut_coordinates(ndotv, roughness);
-  const auto tx = analytic_lut_chebyshev(x);
-  const auto ty = analytic_lut_chebyshev(y);
+  const AnalyticLutFields fields = analytic_lut_fields(coefficients, ndotv, roughness);
+  const ShaderBasis& basis = shipped_shader_basis(coefficients.basis);
+  const auto at_a = evaluate_shader_basis(basis, fields.node_a);
+  const auto at_b = evaluate_shader_basis(basis, fields.node_b);
   std::array<double, kBasisSize> bbar{};
-  for (std::size_t i = 0; i < kBasisSize; ++i) {
-    for (std::size_t p = 0; p < kAnalyticLutTerms; ++p) {
-      double row = 0.0;
-      for (std::size_t q = 0; q < kAnalyticLutTerms; ++q)
-        row += coefficients[i][p][q] * ty[q];
-      bbar[i] += tx[p] * row;
-    }
-  }
+  for (std::size_t i = 0; i < kBasisSize; ++i)
+    bbar[i] = fields.albedo * (at_a[i] + fields.weight_b * (at_b[i] - at_a[i]));
   return bbar;
 }
 

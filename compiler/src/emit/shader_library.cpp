@@ -3,6 +3,8 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <span>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -78,52 +80,48 @@ std::string basis_function_source(ShaderLanguage language, const runtime::Shader
                         {"horner_steps", horner_steps(language, basis.polynomial)}});
 }
 
-// The closed form's 36 matrix constants (4 channels x 3x3 blocks) and the four channel calls.
-// GLSL and WGSL take matrices by column, HLSL by row: either way block (A, B) maps the powers
-// y^(4B..4B+3) to the rows p = 4A..4A+3.
-std::string analytic_lut_source(ShaderLanguage language, runtime::BasisKind basis) {
-  const runtime::AnalyticLutCoefficients& coefficients = runtime::shipped_analytic_lut(basis);
-  constexpr std::size_t kBlocks = runtime::kAnalyticLutTerms / 4;
-  static_assert(kBlocks == 3, "the templates' matc_analytic_lut_channel takes 3x3 blocks");
-  std::string constants;
-  std::string channels;
-  for (std::size_t c = 0; c < runtime::kBasisSize; ++c) {
-    channels += fmt::format("{}\n      matc_analytic_lut_channel(x0, x1, x2, y0, y1, y2",
-                            c == 0 ? "" : ",");
-    for (std::size_t a = 0; a < kBlocks; ++a) {
-      for (std::size_t b = 0; b < kBlocks; ++b) {
-        const std::string name = fmt::format("MATC_ANALYTIC_LUT_{}_{}{}", c, a, b);
-        channels += fmt::format(",{}{}", b == 0 ? "\n          " : " ", name);  // a row a line
-        std::string values;
-        for (std::size_t outer = 0; outer < 4; ++outer) {
-          for (std::size_t inner = 0; inner < 4; ++inner) {
-            // Column-major (GLSL, WGSL): outer is the column q; row-major (HLSL): the row p.
-            const bool by_row = language == ShaderLanguage::hlsl;
-            const std::size_t p = 4 * a + (by_row ? outer : inner);
-            const std::size_t q = 4 * b + (by_row ? inner : outer);
-            values += fmt::format("{}{}", values.empty() ? "" : ", ",
-                                  float_literal(coefficients[c][p][q]));
-          }
-        }
-        switch (language) {
-          case ShaderLanguage::glsl:
-            constants += fmt::format("const mat4 {} = mat4({});\n", name, values);
-            break;
-          case ShaderLanguage::hlsl:
-            constants += fmt::format("static const float4x4 {} = float4x4({});\n", name, values);
-            break;
-          case ShaderLanguage::wgsl:
-            constants += fmt::format("const {} = mat4x4f({});\n", name, values);
-            break;
-        }
-      }
-    }
-    channels += ")";
+// The closed form's body: T_0..T_12 of x and y as scalars, then E, mu_a, mu_b and t as sums
+// over p of T_p(x) times a sum over q of a_pq T_q(y) (runtime::analytic_lut_polynomial's order),
+// each coefficient a literal.
+std::string analytic_lut_fields_source(ShaderLanguage language,
+                                       const runtime::AnalyticLutCoefficients& coefficients) {
+  const std::string declare = language == ShaderLanguage::wgsl ? "let" : "float";
+  std::string out;
+  for (const char axis : {'x', 'y'}) {
+    out += fmt::format("  {0} {1}0 = 1.0;\n  {0} {1}1 = {1};\n", declare, axis);
+    for (std::size_t k = 2; k <= runtime::kAnalyticLutAlbedoDegree; ++k)
+      out += fmt::format("  {0} {1}{2} = 2.0 * {1} * {1}{3} - {1}{4};\n", declare, axis, k, k - 1,
+                         k - 2);
   }
-  return fill_template(template_path(language, "analytic_lut"),
-                       {{"basis", std::string(runtime::basis_name(basis))},
-                        {"analytic_lut_constants", constants},
-                        {"analytic_lut_channels", channels}});
+  const auto polynomial = [&](const char* name, std::span<const double> values,
+                              std::size_t degree) {
+    out += fmt::format("  {} {} =", declare, name);
+    std::size_t term = 0;
+    for (std::size_t p = 0; p <= degree; ++p) {
+      std::string row;
+      for (std::size_t q = 0; q + p <= degree; ++q, ++term) {
+        row += q == 0 ? float_literal(values[term])
+                      : fmt::format(" + {} * y{}", float_literal(values[term]), q);
+      }
+      out +=
+          p == 0 ? fmt::format("\n      ({})", row) : fmt::format(" +\n      x{} * ({})", p, row);
+    }
+    out += ";\n";
+  };
+  polynomial("albedo", coefficients.albedo, runtime::kAnalyticLutAlbedoDegree);
+  polynomial("node_a", coefficients.node_a, runtime::kAnalyticLutQuadratureDegree);
+  polynomial("node_b", coefficients.node_b, runtime::kAnalyticLutQuadratureDegree);
+  polynomial("weight_b", coefficients.weight_b, runtime::kAnalyticLutQuadratureDegree);
+  out.pop_back();  // the template ends the line
+  return out;
+}
+
+std::string analytic_lut_source(ShaderLanguage language, runtime::BasisKind basis) {
+  return fill_template(
+      template_path(language, "analytic_lut"),
+      {{"basis", std::string(runtime::basis_name(basis))},
+       {"analytic_lut_fields",
+        analytic_lut_fields_source(language, runtime::shipped_analytic_lut(basis))}});
 }
 
 std::string area_light_source(ShaderLanguage language, std::size_t ltc_size) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <span>
 #include <vector>
 
 #include <fmt/format.h>
@@ -11,55 +13,239 @@
 #include "matc/optics/presets.h"
 #include "matc/optics/spectral.h"
 #include "matc/runtime/lut.h"
+#include "matc/runtime/shader_basis.h"
 #include "matc/version.h"
 
 namespace matc {
 namespace {
 
-constexpr std::size_t kTerms = runtime::kAnalyticLutTerms;
+constexpr std::size_t kAlbedoDegree = runtime::kAnalyticLutAlbedoDegree;
+constexpr std::size_t kQuadratureDegree = runtime::kAnalyticLutQuadratureDegree;
+constexpr std::size_t kAlbedoTerms = runtime::analytic_lut_terms(kAlbedoDegree);
+constexpr std::size_t kFieldTerms = runtime::analytic_lut_terms(kQuadratureDegree);
+constexpr std::size_t kFields = 3;                          // mu_a, mu_b, t
+constexpr std::size_t kChannels = runtime::kBasisSize - 1;  // bbar_1..bbar_3, fitted by the nodes
+constexpr int kMaxIterations = 200;
 
-}  // namespace
+// T_p(x) T_q(y) for p + q <= degree, in analytic_lut_polynomial's order.
+Eigen::RowVectorXd chebyshev_terms(const runtime::AnalyticLutChebyshev& tx,
+                                   const runtime::AnalyticLutChebyshev& ty, std::size_t degree) {
+  Eigen::RowVectorXd row(static_cast<Eigen::Index>(runtime::analytic_lut_terms(degree)));
+  Eigen::Index term = 0;
+  for (std::size_t p = 0; p <= degree; ++p)
+    for (std::size_t q = 0; q + p <= degree; ++q)
+      row(term++) = tx[p] * ty[q];
+  return row;
+}
 
-runtime::AnalyticLutCoefficients fit_analytic_lut(const Lut& table) {
+// The shader basis and its derivative in mu (central differences; zero where the shaders clamp).
+struct BasisSlope {
+  std::array<double, runtime::kBasisSize> value{};
+  std::array<double, runtime::kBasisSize> slope{};
+};
+BasisSlope basis_with_slope(const runtime::ShaderBasis& basis, double mu) {
+  BasisSlope out;
+  out.value = runtime::evaluate_shader_basis(basis, mu);
+  if (mu <= 0.0 || mu >= 1.0) return out;
+  constexpr double kStep = 1e-6;
+  const double above = std::min(mu + kStep, 1.0), below = std::max(mu - kStep, 0.0);
+  const auto high = runtime::evaluate_shader_basis(basis, above);
+  const auto low = runtime::evaluate_shader_basis(basis, below);
+  for (std::size_t i = 0; i < runtime::kBasisSize; ++i)
+    out.slope[i] = (high[i] - low[i]) / (above - below);
+  return out;
+}
+
+// The texel centres: their Chebyshev terms for E and for the quadrature, and their texels.
+struct FitPoints {
+  Eigen::MatrixXd albedo_terms;  // points x kAlbedoTerms
+  Eigen::MatrixXd field_terms;   // points x kFieldTerms
+  Eigen::MatrixXd texels;        // points x 4
+};
+
+FitPoints fit_points(const Lut& table) {
   const runtime::LutView view = table.view();
-  const std::size_t steps = 2 * (table.size - 1);  // texel centres and the midpoints between
-  const std::size_t points = (steps + 1) * (steps + 1);
-  Eigen::MatrixXd design(points, kTerms * kTerms);
-  Eigen::MatrixXd values(points, runtime::kBasisSize);
-  std::size_t row = 0;
-  for (std::size_t j = 0; j <= steps; ++j) {
-    for (std::size_t i = 0; i <= steps; ++i, ++row) {
-      const double u = static_cast<double>(i) / static_cast<double>(steps);
-      const double roughness = static_cast<double>(j) / static_cast<double>(steps);
-      const double ndotv = runtime::lut_ndotv_from_u(u);
+  const auto points = static_cast<Eigen::Index>(table.size * table.size);
+  FitPoints out{Eigen::MatrixXd(points, kAlbedoTerms), Eigen::MatrixXd(points, kFieldTerms),
+                Eigen::MatrixXd(points, runtime::kBasisSize)};
+  Eigen::Index row = 0;
+  for (std::size_t j = 0; j < table.size; ++j) {
+    for (std::size_t i = 0; i < table.size; ++i, ++row) {
+      const double last = static_cast<double>(table.size - 1);
+      const double ndotv = runtime::lut_ndotv_from_u(static_cast<double>(i) / last);
+      const double roughness = static_cast<double>(j) / last;
       const auto [x, y] = runtime::analytic_lut_coordinates(ndotv, roughness);
       const auto tx = runtime::analytic_lut_chebyshev(x);
       const auto ty = runtime::analytic_lut_chebyshev(y);
-      for (std::size_t p = 0; p < kTerms; ++p) {
-        for (std::size_t q = 0; q < kTerms; ++q)
-          design(static_cast<Eigen::Index>(row), static_cast<Eigen::Index>(p * kTerms + q)) =
-              tx[p] * ty[q];
-      }
-      const auto bbar = runtime::sample_lut(view, ndotv, roughness);
+      out.albedo_terms.row(row) = chebyshev_terms(tx, ty, kAlbedoDegree);
+      out.field_terms.row(row) = chebyshev_terms(tx, ty, kQuadratureDegree);
+      const auto texel = view.texel(i, j);
       for (std::size_t c = 0; c < runtime::kBasisSize; ++c)
-        values(static_cast<Eigen::Index>(row), static_cast<Eigen::Index>(c)) = bbar[c];
+        out.texels(row, static_cast<Eigen::Index>(c)) = texel[c];
     }
   }
-  const Eigen::MatrixXd chebyshev_coefficients = design.householderQr().solve(values);
+  return out;
+}
 
-  runtime::AnalyticLutCoefficients result{};
-  for (std::size_t c = 0; c < runtime::kBasisSize; ++c) {
-    for (std::size_t p = 0; p < kTerms; ++p) {
-      for (std::size_t q = 0; q < kTerms; ++q)
-        result[c][p][q] = chebyshev_coefficients(static_cast<Eigen::Index>(p * kTerms + q),
-                                                 static_cast<Eigen::Index>(c));
+// The root mean square of c_1..c_3 over the measured metals: how much an error in bbar_i moves
+// their Fbar.
+std::array<double, kChannels> channel_weights(runtime::BasisKind kind) {
+  std::array<double, kChannels> weights{};
+  const auto metals = measured_metal_coefficients(runtime::shipped_basis(kind));
+  for (std::size_t i = 0; i < kChannels; ++i) {
+    double sum = 0.0;
+    for (const runtime::Coefficients& metal : metals)
+      for (const auto& channel : metal)
+        sum += channel[i + 1] * channel[i + 1];
+    weights[i] = std::sqrt(sum / static_cast<double>(3 * metals.size()));
+  }
+  return weights;
+}
+
+// The quadrature's residuals (weighted model - texel, per point and channel 1..3) at `fields`
+// (kFields x kFieldTerms coefficients, stacked), and the normal equations J^T J, J^T r. Each row
+// of J is three scalars times the point's Chebyshev terms, so J^T J is built from six weighted
+// Gram matrices of those terms rather than from J itself.
+struct QuadratureModel {
+  const FitPoints& points;
+  const Eigen::VectorXd& albedo;  // E at each point
+  const runtime::ShaderBasis& basis;
+  std::array<double, kChannels> weights;
+
+  double cost(const Eigen::VectorXd& fields, Eigen::MatrixXd* normal = nullptr,
+              Eigen::VectorXd* gradient = nullptr) const {
+    const Eigen::Index n = points.field_terms.rows();
+    const auto terms = static_cast<Eigen::Index>(kFieldTerms);
+    const Eigen::VectorXd node_a = points.field_terms * fields.segment(0, terms);
+    const Eigen::VectorXd node_b = points.field_terms * fields.segment(terms, terms);
+    const Eigen::VectorXd weight_b = points.field_terms * fields.segment(2 * terms, terms);
+    // s[f](point, channel): d(residual)/d(field f) per unit of the point's terms.
+    std::array<Eigen::MatrixXd, kFields> s;
+    for (auto& m : s)
+      m.resize(n, static_cast<Eigen::Index>(kChannels));
+    Eigen::MatrixXd residual(n, static_cast<Eigen::Index>(kChannels));
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const BasisSlope a = basis_with_slope(basis, node_a(k));
+      const BasisSlope b = basis_with_slope(basis, node_b(k));
+      const double e = albedo(k), t = weight_b(k);
+      for (std::size_t c = 0; c < kChannels; ++c) {
+        const auto col = static_cast<Eigen::Index>(c);
+        const double w = weights[c];
+        residual(k, col) =
+            w * (e * ((1.0 - t) * a.value[c + 1] + t * b.value[c + 1]) - points.texels(k, col + 1));
+        s[0](k, col) = w * e * (1.0 - t) * a.slope[c + 1];
+        s[1](k, col) = w * e * t * b.slope[c + 1];
+        s[2](k, col) = w * e * (b.value[c + 1] - a.value[c + 1]);
+      }
+    }
+    if (normal) {
+      normal->resize(3 * terms, 3 * terms);
+      gradient->resize(3 * terms);
+      for (std::size_t f = 0; f < kFields; ++f) {
+        const Eigen::VectorXd along = (s[f].array() * residual.array()).rowwise().sum();
+        gradient->segment(static_cast<Eigen::Index>(f) * terms, terms) =
+            points.field_terms.transpose() * along;
+        for (std::size_t g = f; g < kFields; ++g) {
+          const Eigen::VectorXd scale = (s[f].array() * s[g].array()).rowwise().sum();
+          const Eigen::MatrixXd block =
+              points.field_terms.transpose() * scale.asDiagonal() * points.field_terms;
+          normal->block(static_cast<Eigen::Index>(f) * terms, static_cast<Eigen::Index>(g) * terms,
+                        terms, terms) = block;
+          normal->block(static_cast<Eigen::Index>(g) * terms, static_cast<Eigen::Index>(f) * terms,
+                        terms, terms) = block.transpose();
+        }
+      }
+    }
+    return residual.squaredNorm();
+  }
+};
+
+// A start away from the symmetric saddle mu_a = mu_b: the single node mu that best fits each point
+// (a search over [0, 1]), fitted, then spread by 0.1 either way with equal weights.
+Eigen::VectorXd starting_fields(const QuadratureModel& model) {
+  const Eigen::Index n = model.points.field_terms.rows();
+  Eigen::VectorXd single(n);
+  constexpr int kSteps = 400;
+  std::vector<std::array<double, runtime::kBasisSize>> candidates(kSteps + 1);
+  for (int s = 0; s <= kSteps; ++s)
+    candidates[static_cast<std::size_t>(s)] =
+        runtime::evaluate_shader_basis(model.basis, static_cast<double>(s) / kSteps);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    double best = std::numeric_limits<double>::infinity();
+    for (int s = 0; s <= kSteps; ++s) {
+      double cost = 0.0;
+      for (std::size_t c = 0; c < kChannels; ++c) {
+        const double d = model.albedo(k) * candidates[static_cast<std::size_t>(s)][c + 1] -
+                         model.points.texels(k, static_cast<Eigen::Index>(c + 1));
+        cost += model.weights[c] * model.weights[c] * d * d;
+      }
+      if (cost < best) {
+        best = cost;
+        single(k) = static_cast<double>(s) / kSteps;
+      }
     }
   }
+  const auto solver = model.points.field_terms.householderQr();
+  const auto terms = static_cast<Eigen::Index>(kFieldTerms);
+  Eigen::VectorXd fields(3 * terms);
+  fields.segment(0, terms) = solver.solve((single.array() - 0.1).matrix());
+  fields.segment(terms, terms) = solver.solve((single.array() + 0.1).matrix());
+  fields.segment(2 * terms, terms) = solver.solve(Eigen::VectorXd::Constant(n, 0.5));
+  return fields;
+}
+
+Eigen::VectorXd levenberg_marquardt(const QuadratureModel& model, Eigen::VectorXd fields) {
+  Eigen::MatrixXd normal;
+  Eigen::VectorXd gradient;
+  double cost = model.cost(fields, &normal, &gradient);
+  double damping = 1e-3;
+  for (int iteration = 0; iteration < kMaxIterations && damping < 1e8; ++iteration) {
+    Eigen::MatrixXd damped = normal;
+    damped.diagonal() += damping * normal.diagonal().cwiseMax(1e-12);
+    const Eigen::VectorXd candidate = fields - damped.ldlt().solve(gradient);
+    const double candidate_cost = model.cost(candidate);
+    if (candidate_cost < cost) {
+      fields = candidate;
+      cost = model.cost(fields, &normal, &gradient);
+      damping = std::max(damping * 0.3, 1e-9);
+    } else {
+      damping *= 10.0;
+    }
+  }
+  return fields;
+}
+
+template <std::size_t N>
+std::array<double, N> to_array(const Eigen::VectorXd& values, Eigen::Index offset) {
+  std::array<double, N> out{};
+  for (std::size_t i = 0; i < N; ++i)
+    out[i] = values(offset + static_cast<Eigen::Index>(i));
+  return out;
+}
+
+}  // namespace
+
+runtime::AnalyticLutCoefficients fit_analytic_lut(const Lut& table, runtime::BasisKind kind) {
+  const FitPoints points = fit_points(table);
+  const Eigen::VectorXd albedo_coefficients =
+      points.albedo_terms.householderQr().solve(points.texels.col(0));
+  const Eigen::VectorXd albedo = points.albedo_terms * albedo_coefficients;
+  const QuadratureModel model{points, albedo, runtime::shipped_shader_basis(kind),
+                              channel_weights(kind)};
+  const Eigen::VectorXd fields = levenberg_marquardt(model, starting_fields(model));
+
+  runtime::AnalyticLutCoefficients result;
+  result.basis = kind;
+  result.albedo = to_array<kAlbedoTerms>(albedo_coefficients, 0);
+  const auto terms = static_cast<Eigen::Index>(kFieldTerms);
+  result.node_a = to_array<kFieldTerms>(fields, 0);
+  result.node_b = to_array<kFieldTerms>(fields, terms);
+  result.weight_b = to_array<kFieldTerms>(fields, 2 * terms);
   return result;
 }
 
 runtime::AnalyticLutCoefficients fit_shipped_analytic_lut(runtime::BasisKind kind) {
-  return fit_analytic_lut(preintegrate_lut(runtime::shipped_basis(kind), LutOptions{}));
+  return fit_analytic_lut(preintegrate_lut(runtime::shipped_basis(kind), LutOptions{}), kind);
 }
 
 std::vector<runtime::Coefficients> measured_metal_coefficients(const runtime::BasisView& basis) {
@@ -106,26 +292,28 @@ std::string analytic_lut_source(runtime::BasisKind kind,
   const std::string name(runtime::basis_name(kind));
   std::string out = fmt::format(
       "// Generated by `matc basis analytic-lut --basis {0}` (matc {1}). Do not edit: rerun it.\n"
-      "// The closed form of the {0} basis' preintegrated table: a[channel][p][q], the\n"
-      "// coefficient of T_p(x) T_q(y) (matc/runtime/analytic_lut.h).\n"
+      "// The closed form of the {0} basis' preintegrated table: the coefficients of\n"
+      "// T_p(x) T_q(y) of E, mu_a, mu_b and t (matc/runtime/analytic_lut.h).\n"
       "// clang-format off\n"
       "#include \"matc/runtime/analytic_lut.h\"\n\n"
       "namespace matc::runtime {{\n\n"
       "const AnalyticLutCoefficients& {0}_analytic_lut() {{\n"
-      "  static constexpr AnalyticLutCoefficients kCoefficients = {{{{\n",
+      "  static constexpr AnalyticLutCoefficients kCoefficients = {{\n"
+      "    BasisKind::{0},\n",
       name, kVersion);
-  for (const auto& channel : coefficients) {
-    out += "    {{\n";
-    for (const auto& row : channel) {
-      out += "      {";
-      for (std::size_t q = 0; q < row.size(); ++q)
-        out += fmt::format("{}{}", q == 0 ? "" : ", ", row[q]);  // shortest round trip
-      out += "},\n";
-    }
-    out += "    }},\n";
-  }
+  const auto append = [&](const char* what, std::span<const double> values) {
+    out += fmt::format("    // {}\n    {{", what);
+    for (std::size_t i = 0; i < values.size(); ++i)
+      out += fmt::format("{}{}", i == 0 ? "" : (i % 4 == 0 ? ",\n     " : ", "),
+                         values[i]);  // shortest round trip
+    out += "},\n";
+  };
+  append("E", coefficients.albedo);
+  append("mu_a", coefficients.node_a);
+  append("mu_b", coefficients.node_b);
+  append("t", coefficients.weight_b);
   out +=
-      "  }};\n"
+      "  };\n"
       "  return kCoefficients;\n"
       "}\n\n"
       "}  // namespace matc::runtime\n";

@@ -10,10 +10,12 @@
 
 namespace matc {
 
-// Least squares over the table's bilinear filtering at its texel centres and the midpoints
-// between them (255 x 255 points at 128 x 128), in Chebyshev polynomials of x and y (well
-// conditioned; the coefficients stay below ~1, so float32 shaders evaluate them accurately).
-runtime::AnalyticLutCoefficients fit_analytic_lut(const Lut& table);
+// Fits `table` (baked for the shipped basis `kind`) at its texel centres: E by linear least
+// squares, then the quadrature (mu_a, mu_b, t) by Levenberg-Marquardt on bbar_1..bbar_3, each
+// weighted by the root mean square of its coefficient over the measured metals (c_3 is ~7x the
+// others). Chebyshev polynomials keep the coefficients small, so float32 shaders evaluate them
+// accurately. Deterministic: a fixed start and iteration limit, no threads.
+runtime::AnalyticLutCoefficients fit_analytic_lut(const Lut& table, runtime::BasisKind kind);
 
 // The same for a shipped basis' default table (128 x 128, 1024 samples per texel).
 runtime::AnalyticLutCoefficients fit_shipped_analytic_lut(runtime::BasisKind kind);
