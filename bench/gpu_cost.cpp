@@ -4,8 +4,11 @@
 // (VK_KHR_pipeline_executable_properties). Prints the table of docs/performance.md; with --check,
 // also exits 1 if a ratio on the first family (navi21) misses an enforced target (issue #28's);
 // targets still open are printed, not enforced. Exits 77 (a skipped test) where the RADV driver
-// is not installed.
+// is not installed. With --disassemble TEXT, prints instead the first family's assembly of ours
+// and the baseline in every row whose label contains TEXT (what the counts count).
 //   matc_gpu_cost [--check] [--icd PATH] [--families vega10,navi10,navi21,gfx1100]
+//                 [--disassemble TEXT]
+#include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <tuple>
 #include <vector>
 
@@ -105,6 +109,9 @@ int main(int argc, char** argv) {
   app.add_flag("--check", check, "Exit 1 if a ratio misses its target");
   app.add_option("--icd", icd, "RADV's Vulkan ICD manifest");
   app.add_option("--families", family_list, "RADV_FORCE_FAMILY values; the first is detailed");
+  std::string disassemble;
+  app.add_option("--disassemble", disassemble,
+                 "Print the first family's assembly of the rows whose label contains this text");
   CLI11_PARSE(app, argc, argv);
   if (!std::filesystem::exists(icd)) {
     fmt::print("skipped: {} is missing (Debian: apt-get install mesa-vulkan-drivers)\n", icd);
@@ -152,10 +159,42 @@ int main(int argc, char** argv) {
     }
   }
 
+  ::setenv("VK_ICD_FILENAMES", icd.c_str(), 1);
+  if (!disassemble.empty()) {
+    ::setenv("RADV_FORCE_FAMILY", families.front().c_str(), 1);
+    const matc::vulkan::Context context(matc::vulkan::ContextOptions{false, "RADV", true});
+    bool found = false;
+    for (const Comparison& row : kComparisons) {
+      if (std::string_view(row.label).find(disassemble) == std::string_view::npos) continue;
+      found = true;
+      for (const FresnelModel model : {row.ours, row.baseline}) {
+        const auto slot_list = slots(model, row.quantity);
+        const matc::vulkan::ExecutableStatistics statistics =
+            matc::vulkan::fullscreen_fragment_statistics(
+                context, vertex, fragments.at(key(row, model)), slot_list, true);
+        fmt::print("## {}: {} on {}\n\n", row.label, model == row.ours ? "ours" : "baseline",
+                   context.device_name());
+        const auto assembly =
+            std::find_if(statistics.representations.begin(), statistics.representations.end(),
+                         [](const auto& form) { return form.first == "Assembly"; });
+        if (assembly == statistics.representations.end()) {
+          for (const auto& [name, text] : statistics.representations)
+            fmt::print("### {}\n\n{}\n", name, text);
+        } else {
+          fmt::print("{}\n", assembly->second);
+        }
+      }
+    }
+    if (!found) {
+      fmt::print(stderr, "matc_gpu_cost: no row's label contains '{}'\n", disassemble);
+      return 2;
+    }
+    return 0;
+  }
+
   // costs[family][row] = {ours, baseline}
   std::vector<std::vector<std::array<Cost, 2>>> costs;
   std::vector<std::string> device_names;
-  ::setenv("VK_ICD_FILENAMES", icd.c_str(), 1);
   for (const std::string& family : families) {
     // RADV reads these when the instance enumerates its devices.
     ::setenv("RADV_FORCE_FAMILY", family.c_str(), 1);

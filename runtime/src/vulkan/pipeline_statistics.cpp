@@ -1,5 +1,6 @@
 #include "matc/vulkan/pipeline_statistics.h"
 
+#include <string>
 #include <vector>
 
 #include "fullscreen_pipeline.h"
@@ -67,12 +68,16 @@ std::optional<std::uint64_t> ExecutableStatistics::value(std::string_view statis
 ExecutableStatistics fullscreen_fragment_statistics(const Context& context,
                                                     std::span<const std::uint32_t> vertex_spirv,
                                                     std::span<const std::uint32_t> fragment_spirv,
-                                                    std::span<const DescriptorSlot> slots) {
+                                                    std::span<const DescriptorSlot> slots,
+                                                    bool capture_representations) {
   const VkDevice device = context.device();
   const auto get_properties = device_function<PFN_vkGetPipelineExecutablePropertiesKHR>(
       device, "vkGetPipelineExecutablePropertiesKHR");
   const auto get_statistics = device_function<PFN_vkGetPipelineExecutableStatisticsKHR>(
       device, "vkGetPipelineExecutableStatisticsKHR");
+  const auto get_representations =
+      device_function<PFN_vkGetPipelineExecutableInternalRepresentationsKHR>(
+          device, "vkGetPipelineExecutableInternalRepresentationsKHR");
 
   PipelineObjects objects{device};
   std::vector<VkDescriptorSetLayoutBinding> bindings;
@@ -91,10 +96,13 @@ ExecutableStatistics fullscreen_fragment_statistics(const Context& context,
   objects.render_pass = create_fullscreen_render_pass(device);
   const ShaderModule vertex(device, vertex_spirv);
   const ShaderModule fragment(device, fragment_spirv);
+  VkPipelineCreateFlags capture = VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR;
+  if (capture_representations)
+    capture |= VK_PIPELINE_CREATE_CAPTURE_INTERNAL_REPRESENTATIONS_BIT_KHR;
   // The size only sets the viewport state, which does not change the code.
-  objects.pipeline = create_fullscreen_pipeline(device, objects.render_pass, objects.layout,
-                                                vertex.handle(), fragment.handle(), 64, 64,
-                                                VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR);
+  objects.pipeline =
+      create_fullscreen_pipeline(device, objects.render_pass, objects.layout, vertex.handle(),
+                                 fragment.handle(), 64, 64, capture);
 
   VkPipelineInfoKHR pipeline_info{VK_STRUCTURE_TYPE_PIPELINE_INFO_KHR};
   pipeline_info.pipeline = objects.pipeline;
@@ -116,6 +124,28 @@ ExecutableStatistics fullscreen_fragment_statistics(const Context& context,
     ExecutableStatistics result{executables[index].name, executables[index].stages, {}};
     for (const VkPipelineExecutableStatisticKHR& statistic : statistics)
       result.values.emplace_back(statistic.name, as_integer(statistic));
+    if (capture_representations) {
+      const auto call = [&](std::uint32_t* count,
+                            VkPipelineExecutableInternalRepresentationKHR* items) {
+        return get_representations(device, &executable, count, items);
+      };
+      // Sizes first, then the text into buffers of those sizes.
+      auto forms = enumerate<VkPipelineExecutableInternalRepresentationKHR>(
+          VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_INTERNAL_REPRESENTATION_KHR,
+          "vkGetPipelineExecutableInternalRepresentationsKHR", call);
+      std::vector<std::string> texts(forms.size());
+      for (std::size_t i = 0; i < forms.size(); ++i) {
+        texts[i].assign(forms[i].dataSize, '\0');
+        forms[i].pData = texts[i].data();
+      }
+      auto count = static_cast<std::uint32_t>(forms.size());
+      check(call(&count, forms.data()), "vkGetPipelineExecutableInternalRepresentationsKHR");
+      for (std::size_t i = 0; i < forms.size(); ++i) {
+        if (!forms[i].isText) continue;
+        std::string text = texts[i].substr(0, texts[i].find('\0'));  // the size counts the NUL
+        result.representations.emplace_back(forms[i].name, std::move(text));
+      }
+    }
     return result;
   }
   throw VulkanError("the driver reported no fragment-shader executable for the pipeline");

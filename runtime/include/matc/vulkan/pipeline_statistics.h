@@ -21,6 +21,9 @@ struct ExecutableStatistics {
   std::string name;  // the driver's name for it, e.g. "Fragment Shader"
   VkShaderStageFlags stages = 0;
   std::vector<std::pair<std::string, std::uint64_t>> values;  // in the driver's order
+  // With capture_representations: the driver's text forms of the code, by name (on RADV "NIR
+  // Shader(s)", "ACO IR" and "Assembly"; binary forms are left out).
+  std::vector<std::pair<std::string, std::string>> representations;
 
   // The statistic called `statistic` (e.g. "Inverse Throughput"), if the driver reports it.
   std::optional<std::uint64_t> value(std::string_view statistic) const;
@@ -34,10 +37,12 @@ struct DescriptorSlot {
 
 // Compiles the full-screen pass of FullscreenPass (the same render pass and pipeline state) with
 // statistics captured and returns its fragment stage's. `context` must have been created with
-// ContextOptions::pipeline_statistics; nothing is drawn.
+// ContextOptions::pipeline_statistics; nothing is drawn. With capture_representations the
+// driver also keeps the code's text forms (its disassembly among them).
 ExecutableStatistics fullscreen_fragment_statistics(const Context& context,
                                                     std::span<const std::uint32_t> vertex_spirv,
                                                     std::span<const std::uint32_t> fragment_spirv,
-                                                    std::span<const DescriptorSlot> slots);
+                                                    std::span<const DescriptorSlot> slots,
+                                                    bool capture_representations = false);
 
 }  // namespace matc::vulkan
