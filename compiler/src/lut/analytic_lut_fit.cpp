@@ -26,6 +26,7 @@ constexpr std::size_t kFieldTerms = runtime::analytic_lut_terms(kQuadratureDegre
 constexpr std::size_t kFields = 3;                          // mu_a, mu_b, t
 constexpr std::size_t kChannels = runtime::kBasisSize - 1;  // bbar_1..bbar_3, fitted by the nodes
 constexpr int kMaxIterations = 200;
+constexpr double kConverged = 1e-9;
 
 // T_p(x) T_q(y) for p + q <= degree, in analytic_lut_polynomial's order.
 Eigen::RowVectorXd chebyshev_terms(const runtime::AnalyticLutChebyshev& tx,
@@ -205,6 +206,8 @@ Eigen::VectorXd levenberg_marquardt(const QuadratureModel& model, Eigen::VectorX
     const Eigen::VectorXd candidate = fields - damped.ldlt().solve(gradient);
     const double candidate_cost = model.cost(candidate);
     if (candidate_cost < cost) {
+      // Converged once a step gains less than a part in 1e9 (about 50 steps from the start).
+      if (cost - candidate_cost < kConverged * cost) return candidate;
       fields = candidate;
       cost = model.cost(fields, &normal, &gradient);
       damping = std::max(damping * 0.3, 1e-9);
