@@ -22,8 +22,8 @@ bool validate_and_report(const DeviceValidator& validator, const CompiledMateria
 // for each. False when a path failed or the layer spoke.
 bool validate_coefficient_table_and_report(const DeviceValidator& validator);
 
-// Validates the area-light functions (LTC quad and disk lights) from GLSL and HLSL and prints a
-// line for each. False when a path failed or the layer spoke.
+// Validates the area-light functions (LTC quad, disk and sphere lights) from GLSL and HLSL and
+// prints a line for each. False when a path failed or the layer spoke.
 bool validate_area_lights_and_report(const DeviceValidator& validator);
 
 }  // namespace matc::cli

@@ -1,4 +1,5 @@
-// DeviceValidator::validate_area_lights: the LTC quad and disk lights, run from GLSL and HLSL.
+// DeviceValidator::validate_area_lights: the LTC quad, disk and sphere lights, run from GLSL and
+// HLSL.
 #include <algorithm>
 #include <cmath>
 #include <numbers>

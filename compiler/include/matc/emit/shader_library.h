@@ -22,7 +22,8 @@ struct ShaderLibraryOptions {
   const Lut* embedded_lut = nullptr;
   // The textured-metal functions (coefficient table, inverse Gulbrandsen mapping).
   bool coefficient_table_functions = true;
-  // The area-light functions (LTC quad and disk lights) and the LTC table's size (MATC_LTC_SIZE).
+  // The area-light functions (LTC quad, disk and sphere lights) and the LTC table's size
+  // (MATC_LTC_SIZE).
   bool area_light_functions = true;
   std::size_t ltc_size = kDefaultLtcSize;
   // The closed form of this basis' table (matc_preintegrated_basis_analytic, its checked-in

@@ -1,7 +1,7 @@
 // The compute kernel that runs one material's generated code on a Vulkan device (templates/
-// */validate.*): bindings 0 queries (vec4 mu, NdotV, roughness, -), 1 results (three vec4 per
-// query: F, Fbar through the sampler, Fbar from the embedded table or zero), 2 the table as a
-// sampled image, 3 its sampler; 64 invocations per group, one query each.
+// */validate.*): bindings 0 queries (vec4 mu, NdotV, roughness, -), 1 results (four vec4 per
+// query: F, Fbar through the sampler, Fbar from the embedded table or zero, Fbar from the closed
+// form), 2 the table as a sampled image, 3 its sampler; 64 invocations per group, one query each.
 #pragma once
 
 #include <string>
@@ -19,16 +19,17 @@ std::string validation_kernel_source(ShaderLanguage language, std::string_view l
                                      std::string_view material, std::string_view material_name);
 
 // The coefficient-table path's kernel (templates/*/validate_table.*): bindings 0 queries (four vec4
-// each: r.rgb and mu, g.rgb and NdotV, n.rgb and roughness, k.rgb), 1 results (three vec4: F and
-// Fbar from (r, g), F from (n, k)), 2 the preintegrated table, 3 the sampler of both tables, 4 the
-// coefficient table (its .xy).
+// each: r.rgb and mu, g.rgb and NdotV, n.rgb and roughness, k.rgb), 1 results (four vec4: F and
+// Fbar from (r, g), F from (n, k), F from baked coefficients), 2 the preintegrated table, 3 the
+// sampler of both tables, 4 the coefficient table (its .xy).
 inline constexpr std::size_t kTableValidationQueryVectors = 4;
 inline constexpr std::size_t kTableValidationResultsPerQuery = 4;
 std::string table_validation_kernel_source(ShaderLanguage language, std::string_view library);
 
 // The area-light kernel (templates/*/validate_area_lights.*): bindings 0 queries (eight vec4 each:
-// r.rgb and NdotV, g.rgb and roughness, N and the kind (0 quad, 1 disk), V and a disk's radius,
-// a quad's corners or a disk's centre and normal), 1 results (radiance, I_ltc), 2 the
+// r.rgb and NdotV, g.rgb and roughness, N and the kind (0 quad, 1 disk, 2 sphere), V and a disk's
+// or sphere's radius, a quad's corners, a disk's centre and normal or a sphere's centre),
+// 1 results (radiance, I_ltc), 2 the
 // preintegrated table, 3 the sampler, 4 the coefficient table, 5 the LTC table.
 inline constexpr std::size_t kAreaLightQueryVectors = 8;
 std::string area_light_validation_kernel_source(ShaderLanguage language, std::string_view library);

@@ -1,4 +1,5 @@
-// GLSL and HLSL to SPIR-V, in-process with glslang (Vulkan rules, SPIR-V 1.3).
+// GLSL and HLSL to SPIR-V, in-process with glslang (Vulkan rules, SPIR-V 1.3). WGSL is not
+// compiled here: the tests run it on Dawn.
 #pragma once
 
 #include <cstdint>
