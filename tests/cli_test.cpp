@@ -889,6 +889,28 @@ TEST_F(MatcCli, MaterialXCompilesDirectlyAndThroughImportAlike) {
   EXPECT_EQ(read_file(dir_ / "imported" / "Gold.json"), first);
 }
 
+// Every command that takes materials takes MaterialX documents: eval (one material, chosen with
+// --material) gives what eval of the imported file gives, and validate proves every metal.
+TEST_F(MatcCli, EvalAndValidateReadMaterialXDocuments) {
+  write_file(dir_ / "metals.mtlx", matc_cli_materialx::kMetals);
+  ASSERT_EQ(run({"import", "-q", "-o", "imported", "metals.mtlx"}).exit_code, 0);
+  const CommandResult direct =
+      run({"eval", "metals.mtlx", "--material", "Copper", "--mu", "0,0.5,1"});
+  ASSERT_EQ(direct.exit_code, 0) << direct.err;
+  const CommandResult through_import = run({"eval", "imported/Copper.json", "--mu", "0,0.5,1"});
+  ASSERT_EQ(through_import.exit_code, 0) << through_import.err;
+  const auto a = nlohmann::json::parse(direct.out);
+  const auto b = nlohmann::json::parse(through_import.out);
+  EXPECT_EQ(a["name"], "Copper");
+  EXPECT_EQ(a["F"], b["F"]);
+  EXPECT_EQ(a["F_exact"], b["F_exact"]);
+
+  const CommandResult validated = run({"validate", "metals.mtlx"});
+  ASSERT_EQ(validated.exit_code, 0) << validated.err << validated.out;
+  EXPECT_NE(validated.out.find("2 of 2 materials passed on both front ends"), std::string::npos)
+      << validated.out;
+}
+
 TEST_F(MatcCli, ColourSpaceIsRecordedAndChangesSpectralNumbers) {
   write_file(dir_ / "gold.json", R"({"name": "Gold", "spectral": {"preset": "Au"}})");
   ASSERT_EQ(run({"-q", "-o", "rec709", "--emit", "json", "gold.json"}).exit_code, 0);

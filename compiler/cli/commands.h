@@ -57,7 +57,8 @@ struct ValidateOptions {
 int run_validate(const ValidateOptions& options);
 
 struct EvalOptions {
-  std::string file;          // a material file, or:
+  std::string file;          // a material file or MaterialX document, or:
+  std::string material;      // --material: which of a document's materials
   std::string reflectivity;  // --reflectivity and --edge-tint: the coefficient-table path
   std::string edge_tint;
   std::vector<double> mu;

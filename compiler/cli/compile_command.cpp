@@ -27,6 +27,7 @@
 #include "matc/json_format.h"
 #include "matc/material/materialx_import.h"
 #include "matc/material/parse.h"
+#include "material_inputs.h"
 #include "print_diagnostics.h"
 #include "progress_line.h"
 #include "unique_names.h"
@@ -146,30 +147,24 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
   jobs.reserve(options.files.size());
   for (std::size_t input = 0; input < options.files.size(); ++input) {
     const std::string& file = options.files[input];
-    if (is_materialx_path(file)) {
-      // One job per imported material; the document's own diagnostics go with the first.
-      MaterialXImport imported = read_materialx_file(file);
-      Job first;
-      first.input = input;
-      first.diagnostics = std::move(imported.diagnostics);
-      if (imported.materials.empty()) {
-        jobs.push_back(std::move(first));
-        continue;
-      }
-      for (std::size_t i = 0; i < imported.materials.size(); ++i) {
-        Job job = i == 0 ? std::move(first) : Job{};
-        job.input = input;
-        admit(job, std::move(imported.materials[i].material), /*keep=*/true);
-        jobs.push_back(std::move(job));
-      }
+    // One job per material; the file's own diagnostics go with the first. A material file's
+    // material is read again when it is compiled (a batch of 100,000 keeps none in memory); a
+    // document's are kept.
+    MaterialInput read = read_material_input(file);
+    Job first;
+    first.input = input;
+    first.diagnostics = std::move(read.diagnostics);
+    if (read.materials.empty()) {
+      jobs.push_back(std::move(first));
       continue;
     }
-    Job job;
-    job.input = input;
-    ParseResult parsed = read_material_file(file);
-    job.diagnostics = std::move(parsed.diagnostics);
-    admit(job, std::move(parsed.material), /*keep=*/false);
-    jobs.push_back(std::move(job));
+    const bool keep = is_materialx_path(file);
+    for (std::size_t i = 0; i < read.materials.size(); ++i) {
+      Job job = i == 0 ? std::move(first) : Job{};
+      job.input = input;
+      admit(job, std::move(read.materials[i]), keep);
+      jobs.push_back(std::move(job));
+    }
   }
   return jobs;
 }

@@ -21,6 +21,7 @@
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/lut.h"
+#include "material_inputs.h"
 #include "print_diagnostics.h"
 
 namespace matc::cli {
@@ -218,6 +219,28 @@ int run_eval_artistic(const EvalOptions& options) {
   return kExitSuccess;
 }
 
+// The material to evaluate: the file's only one, or the document's material named --material.
+std::optional<Material> chosen_material(const EvalOptions& options) {
+  MaterialInput input = read_material_input(options.file);
+  print_diagnostics(input.diagnostics);
+  if (input.materials.empty()) return std::nullopt;
+  std::string names;
+  for (const Material& material : input.materials) {
+    if (material.name == options.material ||
+        (options.material.empty() && input.materials.size() == 1))
+      return material;
+    names += fmt::format("{}{}", names.empty() ? "" : ", ", material.name);
+  }
+  if (options.material.empty()) {
+    fmt::print(stderr, "matc eval: error: {} holds {} materials ({}): name one with --material\n",
+               options.file, input.materials.size(), names);
+  } else {
+    fmt::print(stderr, "matc eval: error: --material: {} holds no material '{}' (it holds {})\n",
+               options.file, options.material, names);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 int run_eval(const EvalOptions& options) {
@@ -241,17 +264,16 @@ int run_eval(const EvalOptions& options) {
   }
   std::optional<std::vector<Vec3>> quad;
   if (!options.quad_light.empty() && !(quad = quad_light_of(options))) return kExitInputError;
-  const ParseResult parsed = read_material_file(options.file);
-  print_diagnostics(parsed.diagnostics);
-  if (!parsed.material) return kExitInputError;
+  const std::optional<Material> material = chosen_material(options);
+  if (!material) return kExitInputError;
 
   const runtime::BasisView basis = runtime::shipped_basis(basis_of(options.lut.basis));
   const ColorOptions color = color_options_of(options.color);
-  const auto curve = make_reflectance_curve(*parsed.material, color);
+  const auto curve = make_reflectance_curve(*material, color);
   const LabelledCoefficients coefficients = {{"", solve_coefficients(*curve, basis)}};
 
   ordered_json out;
-  out["name"] = parsed.material->name;
+  out["name"] = material->name;
   out["basis"] = runtime::basis_name(basis.kind);
   out["color_space"] = color_space_name(color.working_space);
   if (!options.mu.empty()) add_direct_fresnel(options, *curve, coefficients, out);

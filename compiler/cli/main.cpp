@@ -97,7 +97,11 @@ int main(int argc, char** argv) {
   CLI::App* eval_command =
       app.add_subcommand("eval", "Evaluate a material's decomposed and exact Fresnel as JSON");
   eval_command->add_option("file", eval.file,
-                           "Material file (or give --reflectivity and --edge-tint)");
+                           "Material file (.json) or MaterialX document (.mtlx); or give "
+                           "--reflectivity and --edge-tint");
+  eval_command->add_option("--material", eval.material,
+                           "Which material of a MaterialX document (its name as imported); needed "
+                           "when the document holds more than one");
   eval_command->add_option("--reflectivity", eval.reflectivity,
                            "Gulbrandsen reflectivity r per channel (R,G,B or one grey value in "
                            "[0, 1]): F from the coefficient table beside the per-material compile");
@@ -144,7 +148,10 @@ int main(int argc, char** argv) {
       "validate",
       "Run materials' generated shaders (GLSL and HLSL paths) on a Vulkan device and compare "
       "them with the CPU runtime; writes nothing");
-  validate_command->add_option("files", validate.files, "Material files (.json)")->required();
+  validate_command
+      ->add_option("files", validate.files,
+                   "Material files (.json) and MaterialX documents (.mtlx)")
+      ->required();
   validate_command->add_flag("--embed-lut", validate.embed_lut,
                              "Also check the embedded-table path (lavapipe compiles tables "
                              "above 8x8 slowly: docs/validation.md)");

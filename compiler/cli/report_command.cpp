@@ -10,11 +10,11 @@
 #include "atomic_file.h"
 #include "commands.h"
 #include "matc/compile.h"
-#include "matc/material/materialx_import.h"
 #include "matc/material/parse.h"
 #include "matc/report/fresnel_plot.h"
 #include "matc/report/material_curves.h"
 #include "matc/report/report_page.h"
+#include "material_inputs.h"
 #include "print_diagnostics.h"
 #include "unique_names.h"
 
@@ -29,24 +29,13 @@ std::optional<std::vector<Material>> read_all(const std::vector<std::string>& fi
   UniqueNames names;
   bool ok = true;
   for (const std::string& file : files) {
-    if (is_materialx_path(file)) {
-      MaterialXImport imported = read_materialx_file(file);
-      for (ImportedMaterial& material : imported.materials) {
-        names.claim(material.material, "a report", imported.diagnostics);
-        materials.push_back(std::move(material.material));
-      }
-      print_diagnostics(imported.diagnostics);
-      if (imported.diagnostics.has_errors()) ok = false;
-      continue;
+    MaterialInput input = read_material_input(file);
+    for (Material& material : input.materials) {
+      names.claim(material, "a report", input.diagnostics);
+      materials.push_back(std::move(material));
     }
-    ParseResult parsed = read_material_file(file);
-    if (parsed.material) names.claim(*parsed.material, "a report", parsed.diagnostics);
-    print_diagnostics(parsed.diagnostics);
-    if (parsed.diagnostics.has_errors() || !parsed.material) {
-      ok = false;
-      continue;
-    }
-    materials.push_back(std::move(*parsed.material));
+    print_diagnostics(input.diagnostics);
+    if (input.diagnostics.has_errors() || input.materials.empty()) ok = false;
   }
   if (!ok) return std::nullopt;
   return materials;

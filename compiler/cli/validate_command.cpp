@@ -1,11 +1,11 @@
-// `matc validate FILES...`: compile each material in memory (nothing is written) and prove its
-// shaders on a Vulkan device.
+// `matc validate FILES...`: compile each material (material files and MaterialX documents) in
+// memory (nothing is written) and prove its shaders on a Vulkan device.
 #include <fmt/core.h>
 
 #include "commands.h"
 #include "device_validation_report.h"
 #include "matc/compile.h"
-#include "matc/material/parse.h"
+#include "material_inputs.h"
 #include "print_diagnostics.h"
 
 namespace matc::cli {
@@ -19,32 +19,33 @@ int run_validate(const ValidateOptions& options) {
   if (!validator) return kExitNoDevice;
 
   const runtime::BasisView basis = build.basis();
-  std::size_t invalid_inputs = 0;
+  std::size_t invalid_files = 0;
+  std::size_t validated = 0;
   std::size_t failed = 0;
   const bool table_passed = validate_coefficient_table_and_report(*validator);
   const bool area_lights_passed = validate_area_lights_and_report(*validator);
   for (const std::string& file : options.files) {
-    const ParseResult parsed = read_material_file(file);
-    print_diagnostics(parsed.diagnostics);
-    if (!parsed.material) {
-      ++invalid_inputs;
+    const MaterialInput input = read_material_input(file);
+    print_diagnostics(input.diagnostics);
+    if (input.materials.empty()) {
+      ++invalid_files;
       continue;
     }
-    const CompiledMaterial compiled =
-        compile_material(*parsed.material, basis, build.options().color);
-    Diagnostics fit;
-    warn_if_poor_fit(compiled, fit);
-    print_diagnostics(fit);
-    if (!validate_and_report(*validator, compiled)) ++failed;
+    for (const Material& material : input.materials) {
+      const CompiledMaterial compiled = compile_material(material, basis, build.options().color);
+      Diagnostics fit;
+      warn_if_poor_fit(compiled, fit);
+      print_diagnostics(fit);
+      ++validated;
+      if (!validate_and_report(*validator, compiled)) ++failed;
+    }
   }
-  const std::size_t validated = options.files.size() - invalid_inputs;
   fmt::print("matc validate: {} of {} materials passed on both front ends{}\n", validated - failed,
-             validated,
-             invalid_inputs > 0 ? fmt::format(", {} files invalid", invalid_inputs) : "");
+             validated, invalid_files > 0 ? fmt::format(", {} files invalid", invalid_files) : "");
   if (!table_passed) fmt::print("matc validate: the coefficient-table path FAILED\n");
   if (!area_lights_passed) fmt::print("matc validate: the area-light path FAILED\n");
   if (failed > 0 || !table_passed || !area_lights_passed) return kExitValidationFailed;
-  return invalid_inputs > 0 ? kExitInputError : kExitSuccess;
+  return invalid_files > 0 ? kExitInputError : kExitSuccess;
 }
 
 }  // namespace matc::cli
