@@ -59,7 +59,7 @@ const std::array<Comparison, 10> kComparisons = {{
     {"one GGX light, textured: baked F0, C2, C3 maps vs F0 map", FresnelQuantity::ggx_light,
      FresnelModel::baked, FresnelModel::schlick_textured, 1.25},
     {"split-sum image light (environment and table fetches)", FresnelQuantity::preintegrated,
-     FresnelModel::ours, FresnelModel::schlick, 1.10, false},
+     FresnelModel::ours, FresnelModel::schlick, 1.10},
     {"split-sum image light, textured: coefficient table vs F0 map", FresnelQuantity::preintegrated,
      FresnelModel::table, FresnelModel::schlick_textured, std::nullopt},
     {"split-sum image light, textured: baked maps vs F0 map", FresnelQuantity::preintegrated,

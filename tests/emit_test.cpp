@@ -346,10 +346,10 @@ TEST(Build, WgslOutputsAreCompleteWgsl) {
 TEST(MaterialModuleTemplates, CheckedInTemplatesAreCurrent) {
   for (const MaterialModuleTemplate& entry : compile_material_module_templates()) {
     const std::span<const std::uint32_t> checked_in =
-        checked_in_material_module_template(entry.basis);
+        checked_in_material_module_template(entry.basis, entry.fresnel_nonnegative);
     EXPECT_TRUE(
         std::equal(entry.words.begin(), entry.words.end(), checked_in.begin(), checked_in.end()))
-        << runtime::basis_name(entry.basis);
+        << runtime::basis_name(entry.basis) << (entry.fresnel_nonnegative ? ", no clamp" : "");
   }
 }
 
@@ -376,7 +376,7 @@ TEST(MaterialModuleTemplates, PatchedModulesMatchAFullCompile) {
   // Placeholders must be found, once each.
   CompiledMaterial gold = example("gold");
   const std::span<const std::uint32_t> words =
-      checked_in_material_module_template(runtime::kDefaultBasis);
+      checked_in_material_module_template(runtime::kDefaultBasis, gold.fresnel_nonnegative);
   SpirvWords broken(words.begin(), words.end());
   EXPECT_THROW(patch_material_module(SpirvWords(broken.begin(), broken.begin() + 5), gold),
                std::logic_error);

@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 
 #include "matc/fit/coefficients.h"
+#include "matc/fit/nonnegative_curve.h"
 #include "matc/lut/energy.h"
 #include "matc/optics/spectral.h"
 #include "matc/version.h"
@@ -129,6 +130,8 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
   compiled.f82 = curve.at(kF82MuBar);
   compiled.average_fresnel =
       average_fresnel(compiled.coefficients, basis_hemispherical_averages(basis));
+  compiled.fresnel_nonnegative = fresnel_provably_nonnegative(
+      compiled.coefficients, runtime::shipped_shader_basis(basis.kind));
   // The per-channel IOR describes the curve only where no matrix mixed the channels.
   const bool channels_kept =
       input_color_space(material, color.working_space) == color.working_space &&

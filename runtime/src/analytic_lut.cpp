@@ -75,9 +75,12 @@ std::array<double, kBasisSize> preintegrated_basis_analytic(
   const ShaderBasis& basis = shipped_shader_basis(coefficients.basis);
   const auto at_a = evaluate_shader_basis(basis, fields.node_a);
   const auto at_b = evaluate_shader_basis(basis, fields.node_b);
+  // The weight clamped to [0, 1] (the fit keeps it there; the clamp makes Fbar a convex blend of
+  // two values of F, so a curve matc proved non-negative gives a non-negative Fbar here too).
+  const double t = std::clamp(fields.weight_b, 0.0, 1.0);
   std::array<double, kBasisSize> bbar{};
   for (std::size_t i = 0; i < kBasisSize; ++i)
-    bbar[i] = fields.albedo * (at_a[i] + fields.weight_b * (at_b[i] - at_a[i]));
+    bbar[i] = fields.albedo * (at_a[i] + t * (at_b[i] - at_a[i]));
   return bbar;
 }
 

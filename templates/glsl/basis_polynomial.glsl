@@ -19,3 +19,8 @@ vec4 matc_basis(float mu) {
 vec3 matc_fresnel(MatcFresnelCoefficients c, float mu) {
   return matc_combine(c, matc_basis(mu));
 }
+
+// The same without the clamp at 0, for curves matc proved non-negative (docs/shaders.md).
+vec3 matc_fresnel_sum(MatcFresnelCoefficients c, float mu) {
+  return matc_combine_sum(c, matc_basis(mu));
+}

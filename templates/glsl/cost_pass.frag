@@ -73,9 +73,14 @@ void main() {
 #if MATC_COST_SCHLICK
 #define COST_FRESNEL(MU) matc_cost_schlick(F0, (MU))
 #define COST_FRESNEL_PREINTEGRATED(TEXEL) (F0 * (TEXEL).x + (vec3(1.0) - F0) * (TEXEL).y)
-#else
+#elif MATC_COST_TABLE || MATC_COST_BAKED
 #define COST_FRESNEL(MU) matc_fresnel(c, (MU))
 #define COST_FRESNEL_PREINTEGRATED(TEXEL) matc_fresnel_preintegrated(c, (TEXEL))
+#else
+// A compiled material: its own functions, as an engine calls them (no clamp at 0 where matc
+// proved its curve non-negative).
+#define COST_FRESNEL(MU) matc_fresnel_{{name}}((MU))
+#define COST_FRESNEL_PREINTEGRATED(TEXEL) matc_fresnel_preintegrated_{{name}}((TEXEL))
 #endif
 
 #if MATC_COST_DIRECT
@@ -119,7 +124,7 @@ void main() {
   vec2 ab = vec2(-1.04, 1.04) * a004 + r4.zw;
   vec3 f = F0 * ab.x + ab.y;
 #else
-  vec3 f = matc_fresnel_preintegrated(c, matc_preintegrated_basis_analytic(uv.x, uv.y));
+  vec3 f = COST_FRESNEL_PREINTEGRATED(matc_preintegrated_basis_analytic(uv.x, uv.y));
 #endif
 #else
   // Image-based light as engines shade it with the split sum: the prefiltered environment along

@@ -17,9 +17,12 @@ struct MatcFresnelCoefficients {
   vec4 blue;
 };
 
-// sum_i c_i v_i per channel, clamped at 0 where the truncated basis dips below it.
+// sum_i c_i v_i per channel; matc_combine clamps it at 0, where a truncated basis dips below it.
+vec3 matc_combine_sum(MatcFresnelCoefficients c, vec4 v) {
+  return vec3(dot(c.red, v), dot(c.green, v), dot(c.blue, v));
+}
 vec3 matc_combine(MatcFresnelCoefficients c, vec4 v) {
-  return max(vec3(dot(c.red, v), dot(c.green, v), dot(c.blue, v)), vec3(0.0));
+  return max(matc_combine_sum(c, v), vec3(0.0));
 }
 
 {{basis_function}}
@@ -34,11 +37,16 @@ vec2 matc_lut_texcoord(float NdotV, float roughness) {
 // The preintegrated Fresnel from the table's texel bbar at matc_lut_texcoord(NdotV, roughness):
 // sum_i c_i bbar_i, written with c_1 = 1 - c_0 (which every coefficient source sets) as
 // bbar_1 + c_0 (bbar_0 - bbar_1) + c_2 bbar_2 + c_3 bbar_3, three multiply-adds a channel.
-vec3 matc_fresnel_preintegrated(MatcFresnelCoefficients c, vec4 bbar) {
+// Without the clamp at 0, for curves matc proved non-negative (docs/shaders.md).
+vec3 matc_fresnel_preintegrated_sum(MatcFresnelCoefficients c, vec4 bbar) {
   vec3 c0 = vec3(c.red.x, c.green.x, c.blue.x);
   vec3 c2 = vec3(c.red.z, c.green.z, c.blue.z);
   vec3 c3 = vec3(c.red.w, c.green.w, c.blue.w);
-  return max(bbar.y + c0 * (bbar.x - bbar.y) + c2 * bbar.z + c3 * bbar.w, vec3(0.0));
+  return bbar.y + c0 * (bbar.x - bbar.y) + c2 * bbar.z + c3 * bbar.w;
+}
+// Clamped at 0, where a truncated curve dips below it: what every coefficient source may use.
+vec3 matc_fresnel_preintegrated(MatcFresnelCoefficients c, vec4 bbar) {
+  return max(matc_fresnel_preintegrated_sum(c, bbar), vec3(0.0));
 }
 
 // Turquin (2019)'s multiple-scattering scale for the specular lobe, 1 + F0 (1 - E) / E, with

@@ -15,13 +15,13 @@ const MatcFresnelCoefficients matc_coefficients_{{name}} = MatcFresnelCoefficien
     vec4({{green}}),
     vec4({{blue}}));
 
-// F for a direct light: mu = dot(V, H).
+// F for a direct light: mu = dot(V, H). {{clamp_note}}
 vec3 matc_fresnel_{{name}}(float mu) {
-  return matc_fresnel(matc_coefficients_{{name}}, mu);
+  return {{fresnel}}(matc_coefficients_{{name}}, mu);
 }
 
 // Preintegrated F from the table's texel at matc_lut_texcoord(NdotV, roughness).
 vec3 matc_fresnel_preintegrated_{{name}}(vec4 bbar) {
-  return matc_fresnel_preintegrated(matc_coefficients_{{name}}, bbar);
+  return {{fresnel_preintegrated}}(matc_coefficients_{{name}}, bbar);
 }
 #endif  // MATC_MATERIAL_{{name}}

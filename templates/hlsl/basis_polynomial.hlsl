@@ -19,3 +19,8 @@ float4 matc_basis(float mu) {
 float3 matc_fresnel(MatcFresnelCoefficients c, float mu) {
   return matc_combine(c, matc_basis(mu));
 }
+
+// The same without the clamp at 0, for curves matc proved non-negative (docs/shaders.md).
+float3 matc_fresnel_sum(MatcFresnelCoefficients c, float mu) {
+  return matc_combine_sum(c, matc_basis(mu));
+}

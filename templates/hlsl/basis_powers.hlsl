@@ -10,14 +10,20 @@ float4 matc_basis(float mu) {
   return float4(1.0, b1, b2, b2 * b1);
 }
 
-// F for a direct light: mu = dot(V, H). sum_i c_i b_i written as c_0 + c_2 b_2 + b_1 (c_1 + c_3 b_2)
+// F for a direct light (mu = dot(V, H)) without the clamp at 0, for curves matc proved
+// non-negative (docs/shaders.md). sum_i c_i b_i written as c_0 + c_2 b_2 + b_1 (c_1 + c_3 b_2)
 // (b_3 = b_2 b_1): three multiply-adds a channel, the cheapest order on AMD's ISA
 // (bench/gpu_cost.cpp).
-float3 matc_fresnel(MatcFresnelCoefficients c, float mu) {
+float3 matc_fresnel_sum(MatcFresnelCoefficients c, float mu) {
   float4 b = matc_basis(mu);
   float3 c0 = float3(c.red.x, c.green.x, c.blue.x);
   float3 c1 = float3(c.red.y, c.green.y, c.blue.y);
   float3 c2 = float3(c.red.z, c.green.z, c.blue.z);
   float3 c3 = float3(c.red.w, c.green.w, c.blue.w);
-  return max(c0 + c2 * b.z + b.y * (c1 + c3 * b.z), 0.0);
+  return c0 + c2 * b.z + b.y * (c1 + c3 * b.z);
+}
+
+// F clamped at 0, where a truncated curve dips below it: what every coefficient source may use.
+float3 matc_fresnel(MatcFresnelCoefficients c, float mu) {
+  return max(matc_fresnel_sum(c, mu), 0.0);
 }

@@ -17,9 +17,12 @@ struct MatcFresnelCoefficients {
   float4 blue;
 };
 
-// sum_i c_i v_i per channel, clamped at 0 where the truncated basis dips below it.
+// sum_i c_i v_i per channel; matc_combine clamps it at 0, where a truncated basis dips below it.
+float3 matc_combine_sum(MatcFresnelCoefficients c, float4 v) {
+  return float3(dot(c.red, v), dot(c.green, v), dot(c.blue, v));
+}
 float3 matc_combine(MatcFresnelCoefficients c, float4 v) {
-  return max(float3(dot(c.red, v), dot(c.green, v), dot(c.blue, v)), 0.0);
+  return max(matc_combine_sum(c, v), 0.0);
 }
 
 {{basis_function}}
@@ -34,11 +37,16 @@ float2 matc_lut_texcoord(float NdotV, float roughness) {
 // The preintegrated Fresnel from the table's texel bbar at matc_lut_texcoord(NdotV, roughness):
 // sum_i c_i bbar_i, written with c_1 = 1 - c_0 (which every coefficient source sets) as
 // bbar_1 + c_0 (bbar_0 - bbar_1) + c_2 bbar_2 + c_3 bbar_3, three multiply-adds a channel.
-float3 matc_fresnel_preintegrated(MatcFresnelCoefficients c, float4 bbar) {
+// Without the clamp at 0, for curves matc proved non-negative (docs/shaders.md).
+float3 matc_fresnel_preintegrated_sum(MatcFresnelCoefficients c, float4 bbar) {
   float3 c0 = float3(c.red.x, c.green.x, c.blue.x);
   float3 c2 = float3(c.red.z, c.green.z, c.blue.z);
   float3 c3 = float3(c.red.w, c.green.w, c.blue.w);
-  return max(bbar.y + c0 * (bbar.x - bbar.y) + c2 * bbar.z + c3 * bbar.w, 0.0);
+  return bbar.y + c0 * (bbar.x - bbar.y) + c2 * bbar.z + c3 * bbar.w;
+}
+// Clamped at 0, where a truncated curve dips below it: what every coefficient source may use.
+float3 matc_fresnel_preintegrated(MatcFresnelCoefficients c, float4 bbar) {
+  return max(matc_fresnel_preintegrated_sum(c, bbar), 0.0);
 }
 
 // Turquin (2019)'s multiple-scattering scale for the specular lobe, 1 + F0 (1 - E) / E, with

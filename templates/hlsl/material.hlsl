@@ -15,13 +15,13 @@ static const MatcFresnelCoefficients matc_coefficients_{{name}} = {
     float4({{green}}),
     float4({{blue}})};
 
-// F for a direct light: mu = dot(V, H).
+// F for a direct light: mu = dot(V, H). {{clamp_note}}
 float3 matc_fresnel_{{name}}(float mu) {
-  return matc_fresnel(matc_coefficients_{{name}}, mu);
+  return {{fresnel}}(matc_coefficients_{{name}}, mu);
 }
 
 // Preintegrated F from the table's texel at matc_lut_texcoord(NdotV, roughness).
 float3 matc_fresnel_preintegrated_{{name}}(float4 bbar) {
-  return matc_fresnel_preintegrated(matc_coefficients_{{name}}, bbar);
+  return {{fresnel_preintegrated}}(matc_coefficients_{{name}}, bbar);
 }
 #endif  // MATC_MATERIAL_{{name}}

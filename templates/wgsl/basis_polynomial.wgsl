@@ -19,3 +19,8 @@ fn matc_basis(mu: f32) -> vec4f {
 fn matc_fresnel(c: MatcFresnelCoefficients, mu: f32) -> vec3f {
   return matc_combine(c, matc_basis(mu));
 }
+
+// The same without the clamp at 0, for curves matc proved non-negative (docs/shaders.md).
+fn matc_fresnel_sum(c: MatcFresnelCoefficients, mu: f32) -> vec3f {
+  return matc_combine_sum(c, matc_basis(mu));
+}

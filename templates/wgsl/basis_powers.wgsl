@@ -10,14 +10,20 @@ fn matc_basis(mu: f32) -> vec4f {
   return vec4f(1.0, b1, b2, b2 * b1);
 }
 
-// F for a direct light: mu = dot(V, H). sum_i c_i b_i written as c_0 + c_2 b_2 + b_1 (c_1 + c_3 b_2)
+// F for a direct light (mu = dot(V, H)) without the clamp at 0, for curves matc proved
+// non-negative (docs/shaders.md). sum_i c_i b_i written as c_0 + c_2 b_2 + b_1 (c_1 + c_3 b_2)
 // (b_3 = b_2 b_1): three multiply-adds a channel, the cheapest order on AMD's ISA
 // (bench/gpu_cost.cpp).
-fn matc_fresnel(c: MatcFresnelCoefficients, mu: f32) -> vec3f {
+fn matc_fresnel_sum(c: MatcFresnelCoefficients, mu: f32) -> vec3f {
   let b = matc_basis(mu);
   let c0 = vec3f(c.red.x, c.green.x, c.blue.x);
   let c1 = vec3f(c.red.y, c.green.y, c.blue.y);
   let c2 = vec3f(c.red.z, c.green.z, c.blue.z);
   let c3 = vec3f(c.red.w, c.green.w, c.blue.w);
-  return max(c0 + c2 * b.z + b.y * (c1 + c3 * b.z), vec3f(0.0));
+  return c0 + c2 * b.z + b.y * (c1 + c3 * b.z);
+}
+
+// F clamped at 0, where a truncated curve dips below it: what every coefficient source may use.
+fn matc_fresnel(c: MatcFresnelCoefficients, mu: f32) -> vec3f {
+  return max(matc_fresnel_sum(c, mu), vec3f(0.0));
 }

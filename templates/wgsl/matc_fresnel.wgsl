@@ -17,9 +17,12 @@ struct MatcFresnelCoefficients {
   blue: vec4f,
 }
 
-// sum_i c_i v_i per channel, clamped at 0 where the truncated basis dips below it.
+// sum_i c_i v_i per channel; matc_combine clamps it at 0, where a truncated basis dips below it.
+fn matc_combine_sum(c: MatcFresnelCoefficients, v: vec4f) -> vec3f {
+  return vec3f(dot(c.red, v), dot(c.green, v), dot(c.blue, v));
+}
 fn matc_combine(c: MatcFresnelCoefficients, v: vec4f) -> vec3f {
-  return max(vec3f(dot(c.red, v), dot(c.green, v), dot(c.blue, v)), vec3f(0.0));
+  return max(matc_combine_sum(c, v), vec3f(0.0));
 }
 
 {{basis_function}}
@@ -34,11 +37,16 @@ fn matc_lut_texcoord(NdotV: f32, roughness: f32) -> vec2f {
 // The preintegrated Fresnel from the table's texel bbar at matc_lut_texcoord(NdotV, roughness):
 // sum_i c_i bbar_i, written with c_1 = 1 - c_0 (which every coefficient source sets) as
 // bbar_1 + c_0 (bbar_0 - bbar_1) + c_2 bbar_2 + c_3 bbar_3, three multiply-adds a channel.
-fn matc_fresnel_preintegrated(c: MatcFresnelCoefficients, bbar: vec4f) -> vec3f {
+// Without the clamp at 0, for curves matc proved non-negative (docs/shaders.md).
+fn matc_fresnel_preintegrated_sum(c: MatcFresnelCoefficients, bbar: vec4f) -> vec3f {
   let c0 = vec3f(c.red.x, c.green.x, c.blue.x);
   let c2 = vec3f(c.red.z, c.green.z, c.blue.z);
   let c3 = vec3f(c.red.w, c.green.w, c.blue.w);
-  return max(bbar.y + c0 * (bbar.x - bbar.y) + c2 * bbar.z + c3 * bbar.w, vec3f(0.0));
+  return bbar.y + c0 * (bbar.x - bbar.y) + c2 * bbar.z + c3 * bbar.w;
+}
+// Clamped at 0, where a truncated curve dips below it: what every coefficient source may use.
+fn matc_fresnel_preintegrated(c: MatcFresnelCoefficients, bbar: vec4f) -> vec3f {
+  return max(matc_fresnel_preintegrated_sum(c, bbar), vec3f(0.0));
 }
 
 // Turquin (2019)'s multiple-scattering scale for the specular lobe, 1 + F0 (1 - E) / E, with

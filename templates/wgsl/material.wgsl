@@ -12,12 +12,12 @@ const matc_coefficients_{{name}} = MatcFresnelCoefficients(
     vec4f({{green}}),
     vec4f({{blue}}));
 
-// F for a direct light: mu = dot(V, H).
+// F for a direct light: mu = dot(V, H). {{clamp_note}}
 fn matc_fresnel_{{name}}(mu: f32) -> vec3f {
-  return matc_fresnel(matc_coefficients_{{name}}, mu);
+  return {{fresnel}}(matc_coefficients_{{name}}, mu);
 }
 
 // Preintegrated F from the table's texel at matc_lut_texcoord(NdotV, roughness).
 fn matc_fresnel_preintegrated_{{name}}(bbar: vec4f) -> vec3f {
-  return matc_fresnel_preintegrated(matc_coefficients_{{name}}, bbar);
+  return {{fresnel_preintegrated}}(matc_coefficients_{{name}}, bbar);
 }

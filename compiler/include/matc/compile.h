@@ -42,6 +42,9 @@ struct CompiledMaterial {
   // the mapping kept (1: nothing changed).
   CurveRange range;
   double saturation = 1.0;
+  // Whether the decomposed curve provably stays above 0 (fit/nonnegative_curve.h): then the
+  // material's own shader functions leave out the clamp at 0.
+  bool fresnel_nonnegative = false;
 };
 
 // The space a material's RGB values are in: its own color_space, or else the working space.

@@ -277,7 +277,7 @@ SpirvWords Build::material_library_module(const CompiledMaterial& compiled,
   // The template was compiled for the default table size (MATC_LUT_SIZE is in the module) and
   // no embedded table; it is empty in a bootstrap build.
   const std::span<const std::uint32_t> template_words =
-      checked_in_material_module_template(options_.basis);
+      checked_in_material_module_template(options_.basis, compiled.fresnel_nonnegative);
   if (options_.lut.size == kDefaultLutSize && !embedded_lut_ && !template_words.empty())
     return patch_material_module(template_words, compiled);
   return compile_material_library_module(compiled, inputs_hash);

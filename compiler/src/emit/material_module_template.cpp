@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "matc/emit/build.h"
+#include "matc/runtime/shader_basis.h"
 #include "matc/spirv/module_patch.h"
 #include "matc/version.h"
 
@@ -16,8 +17,9 @@ std::array<float, 12> material_module_placeholders() {
   return values;
 }
 
-CompiledMaterial template_material() {
+CompiledMaterial template_material(bool fresnel_nonnegative) {
   CompiledMaterial compiled;
+  compiled.fresnel_nonnegative = fresnel_nonnegative;
   compiled.material.name = std::string(kTemplateMaterialName);
   compiled.material.source_path = "template.json";
   const std::array<float, 12> placeholders = material_module_placeholders();
@@ -46,7 +48,14 @@ std::vector<MaterialModuleTemplate> compile_material_module_templates() {
     BuildOptions options;
     options.basis = basis;
     const Build build(options);
-    templates.push_back({basis, build.compile_material_library_module(template_material())});
+    for (const bool nonnegative : {false, true}) {
+      // Only the powers basis' curves can be proven non-negative (fit/nonnegative_curve.h).
+      if (nonnegative &&
+          runtime::shipped_shader_basis(basis).form != runtime::ShaderBasisForm::powers)
+        continue;
+      templates.push_back({basis, nonnegative,
+                           build.compile_material_library_module(template_material(nonnegative))});
+    }
   }
   return templates;
 }
@@ -62,9 +71,13 @@ std::string material_module_templates_source(std::span<const MaterialModuleTempl
       "namespace matc {{\n"
       "namespace {{\n\n",
       kVersion);
+  const auto array_name = [](const MaterialModuleTemplate& entry) {
+    return fmt::format("k{}{}", runtime::basis_name(entry.basis),
+                       entry.fresnel_nonnegative ? "_nonnegative" : "");
+  };
   for (const MaterialModuleTemplate& entry : templates) {
-    out += fmt::format("constexpr std::uint32_t k{}[{}] = {{\n", runtime::basis_name(entry.basis),
-                       entry.words.size());
+    out +=
+        fmt::format("constexpr std::uint32_t {}[{}] = {{\n", array_name(entry), entry.words.size());
     for (std::size_t i = 0; i < entry.words.size(); ++i) {
       out += fmt::format("{}{:#010x},", i % 8 == 0 ? "  " : " ", entry.words[i]);
       if (i % 8 == 7 || i + 1 == entry.words.size()) out += "\n";
@@ -74,17 +87,17 @@ std::string material_module_templates_source(std::span<const MaterialModuleTempl
   out +=
       "}  // namespace\n\n"
       "std::span<const std::uint32_t> checked_in_material_module_template(runtime::BasisKind "
-      "basis) {\n"
-      "  switch (basis) {\n";
+      "basis,\n"
+      "                                                                   bool "
+      "fresnel_nonnegative) {\n";
   for (const MaterialModuleTemplate& entry : templates) {
-    out += fmt::format("    case runtime::BasisKind::{0}: return k{0};\n",
-                       runtime::basis_name(entry.basis));
+    out += fmt::format(
+        "  if (basis == runtime::BasisKind::{} && fresnel_nonnegative == {}) return {};\n",
+        runtime::basis_name(entry.basis), entry.fresnel_nonnegative, array_name(entry));
   }
   // A basis without a checked-in module (a new one, before `matc basis material-modules`) is
   // compiled instead.
   out +=
-      "    default: break;\n"
-      "  }\n"
       "  return {};\n"
       "}\n\n"
       "}  // namespace matc\n";

@@ -43,6 +43,13 @@ std::string material_snippet_source(ShaderLanguage language, const CompiledMater
   values.erase("red_c");
   values.erase("green_c");
   values.erase("blue_c");
+  // A curve matc proved non-negative needs no clamp at 0 (fit/nonnegative_curve.h).
+  const bool nonnegative = compiled.fresnel_nonnegative;
+  values["fresnel"] = nonnegative ? "matc_fresnel_sum" : "matc_fresnel";
+  values["fresnel_preintegrated"] =
+      nonnegative ? "matc_fresnel_preintegrated_sum" : "matc_fresnel_preintegrated";
+  values["clamp_note"] = nonnegative ? "Its curve stays above 0 (checked when compiled): no clamp."
+                                     : "Clamped at 0, where the fitted curve may dip below it.";
   return fill_template(template_path(language, "material"), values);
 }
 

@@ -128,7 +128,9 @@ struct QuadratureModel {
     for (Eigen::Index k = 0; k < n; ++k) {
       const BasisSlope a = basis_with_slope(basis, node_a(k));
       const BasisSlope b = basis_with_slope(basis, node_b(k));
-      const double e = albedo(k), t = weight_b(k);
+      // The shaders clamp the weight to [0, 1] (runtime/analytic_lut.h): so does the model.
+      const double e = albedo(k), t = std::clamp(weight_b(k), 0.0, 1.0);
+      const bool t_free = weight_b(k) > 0.0 && weight_b(k) < 1.0;
       for (std::size_t c = 0; c < kChannels; ++c) {
         const auto col = static_cast<Eigen::Index>(c);
         const double w = weights[c];
@@ -136,7 +138,7 @@ struct QuadratureModel {
             w * (e * ((1.0 - t) * a.value[c + 1] + t * b.value[c + 1]) - points.texels(k, col + 1));
         s[0](k, col) = w * e * (1.0 - t) * a.slope[c + 1];
         s[1](k, col) = w * e * t * b.slope[c + 1];
-        s[2](k, col) = w * e * (b.value[c + 1] - a.value[c + 1]);
+        s[2](k, col) = t_free ? w * e * (b.value[c + 1] - a.value[c + 1]) : 0.0;
       }
     }
     if (normal) {

@@ -25,11 +25,14 @@ inline constexpr std::string_view kTemplateMaterialName = "MATC_TEMPLATE_MATERIA
 // constant of the module has.
 std::array<float, 12> material_module_placeholders();
 
-// The placeholder material whose module is the template.
-CompiledMaterial template_material();
+// The placeholder material whose module is the template: its functions clamp at 0, or (for
+// materials whose curve matc proved non-negative) not.
+CompiledMaterial template_material(bool fresnel_nonnegative = false);
 
-// The checked-in template of a basis (empty in a bootstrap build).
-std::span<const std::uint32_t> checked_in_material_module_template(runtime::BasisKind basis);
+// The checked-in template of a basis and clamp (empty in a bootstrap build, and for a
+// combination no material can have: the fitted bases always clamp).
+std::span<const std::uint32_t> checked_in_material_module_template(runtime::BasisKind basis,
+                                                                   bool fresnel_nonnegative);
 
 // `compiled`'s module from a template.
 SpirvWords patch_material_module(std::span<const std::uint32_t> template_words,
@@ -37,9 +40,11 @@ SpirvWords patch_material_module(std::span<const std::uint32_t> template_words,
 
 struct MaterialModuleTemplate {
   runtime::BasisKind basis = runtime::kDefaultBasis;
+  bool fresnel_nonnegative = false;
   SpirvWords words;
 };
-// Compiles the template of every shipped basis (glslang), what the checked-in file must hold.
+// Compiles the templates of every shipped basis, clamped, and of the powers basis unclamped
+// (glslang): what the checked-in file must hold.
 std::vector<MaterialModuleTemplate> compile_material_module_templates();
 // The C++ source of src/emit/material_module_templates.cpp.
 std::string material_module_templates_source(std::span<const MaterialModuleTemplate> templates);

@@ -3,7 +3,8 @@
 // polynomials it replaced (issue #28):
 //     bbar(NdotV, roughness) = E ((1 - t) b(mu_a) + t b(mu_b))
 // E is the GGX lobe's directional albedo (bbar_0), and mu_a, mu_b, t a two-point quadrature of the
-// basis b over the lobe's distribution of VdotH: nodes mu_a, mu_b and the weight t of the second.
+// basis b over the lobe's distribution of VdotH: nodes mu_a, mu_b and the weight t of the second
+// (clamped to [0, 1], so that Fbar is a convex blend of two values of F).
 // Each of the four is one polynomial, fitted by `matc basis analytic-lut` to the baked 128x128
 // table of each shipped basis, in Chebyshev form, of total degree 12 (E) or 6 (the quadrature),
 // in polar coordinates about the mirror-grazing corner:
