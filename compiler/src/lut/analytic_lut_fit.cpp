@@ -112,6 +112,7 @@ struct QuadratureModel {
   const Eigen::VectorXd& albedo;  // E at each point
   const runtime::ShaderBasis& basis;
   std::array<double, kChannels> weights;
+  bool clamp_weight = true;  // as the shaders do; off for the first stage of the fit
 
   double cost(const Eigen::VectorXd& fields, Eigen::MatrixXd* normal = nullptr,
               Eigen::VectorXd* gradient = nullptr) const {
@@ -129,8 +130,9 @@ struct QuadratureModel {
       const BasisSlope a = basis_with_slope(basis, node_a(k));
       const BasisSlope b = basis_with_slope(basis, node_b(k));
       // The shaders clamp the weight to [0, 1] (runtime/analytic_lut.h): so does the model.
-      const double e = albedo(k), t = std::clamp(weight_b(k), 0.0, 1.0);
-      const bool t_free = weight_b(k) > 0.0 && weight_b(k) < 1.0;
+      const double e = albedo(k);
+      const double t = clamp_weight ? std::clamp(weight_b(k), 0.0, 1.0) : weight_b(k);
+      const bool t_free = !clamp_weight || (weight_b(k) > 0.0 && weight_b(k) < 1.0);
       for (std::size_t c = 0; c < kChannels; ++c) {
         const auto col = static_cast<Eigen::Index>(c);
         const double w = weights[c];
@@ -235,9 +237,12 @@ runtime::AnalyticLutCoefficients fit_analytic_lut(const Lut& table, runtime::Bas
   const Eigen::VectorXd albedo_coefficients =
       points.albedo_terms.householderQr().solve(points.texels.col(0));
   const Eigen::VectorXd albedo = points.albedo_terms * albedo_coefficients;
-  const QuadratureModel model{points, albedo, runtime::shipped_shader_basis(kind),
-                              channel_weights(kind)};
-  const Eigen::VectorXd fields = levenberg_marquardt(model, starting_fields(model));
+  // Unclamped first (smooth, so it finds the good basin), then as the shaders evaluate it.
+  QuadratureModel model{points, albedo, runtime::shipped_shader_basis(kind), channel_weights(kind),
+                        false};
+  const Eigen::VectorXd unclamped = levenberg_marquardt(model, starting_fields(model));
+  model.clamp_weight = true;
+  const Eigen::VectorXd fields = levenberg_marquardt(model, unclamped);
 
   runtime::AnalyticLutCoefficients result;
   result.basis = kind;
