@@ -13,8 +13,9 @@ namespace matc {
 // Fits `table` (baked for the shipped basis `kind`) at its texel centres: E by linear least
 // squares, then the quadrature (mu_a, mu_b, t) by Levenberg-Marquardt on bbar_1..bbar_3 (first
 // with t free, then with t clamped to [0, 1] as the shaders evaluate it), each weighted by the
-// root mean square of its coefficient over the measured metals (c_3 is ~7x the others). Chebyshev polynomials keep the coefficients small, so float32 shaders evaluate them
-// accurately. Deterministic: a fixed start and iteration limit, no threads.
+// root mean square of its coefficient over the measured metals (c_3 is ~7x the others). Chebyshev
+// polynomials keep the coefficients small, so float32 shaders evaluate them accurately.
+// Deterministic: a fixed start and iteration limit, no threads.
 runtime::AnalyticLutCoefficients fit_analytic_lut(const Lut& table, runtime::BasisKind kind);
 
 // The same for a shipped basis' default table (128 x 128, 1024 samples per texel).
