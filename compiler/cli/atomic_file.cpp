@@ -73,15 +73,16 @@ std::optional<pid_t> temporary_writer(std::string_view name) {
 // A writer killed mid-write (SIGKILL: no chance to clean up) leaves its temporary behind; the
 // first write of this process into a directory removes those whose writer no longer exists (a
 // concurrent matc's, alive, are left alone).
-void sweep_abandoned_temporaries(const std::filesystem::path& directory) {
+void sweep_abandoned_temporaries(const std::filesystem::path& parent) {
   static std::mutex mutex;
   static std::set<std::string> swept;
+  const std::filesystem::path directory = parent.empty() ? "." : parent;
   {
     const std::lock_guard lock(mutex);
-    if (!swept.insert(path_identity(directory.empty() ? "." : directory)).second) return;
+    if (!swept.insert(path_identity(directory)).second) return;
   }
   std::error_code error;
-  std::filesystem::directory_iterator entries(directory.empty() ? "." : directory, error);
+  std::filesystem::directory_iterator entries(directory, error);
   for (; !error && entries != std::filesystem::directory_iterator(); entries.increment(error)) {
     const std::optional<pid_t> writer = temporary_writer(entries->path().filename().string());
     if (!writer || *writer == ::getpid()) continue;

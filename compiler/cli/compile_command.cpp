@@ -37,8 +37,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Stems of the files every build writes once; a material of that name would overwrite them.
-// The shared files' stems (Build's own list), which no material name may take in any case.
+// Stems of the files every build writes once (Build's own list): a material of that name, in
+// any case, would overwrite them.
 const std::set<std::string>& reserved_names() {
   static const std::set<std::string> names = [] {
     const std::vector<std::string> stems = shared_file_stems();

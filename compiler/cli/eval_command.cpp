@@ -16,7 +16,6 @@
 #include "matc/lut/comparison_lobes.h"
 #include "matc/lut/lut_files.h"
 #include "matc/lut/split_sum_reference.h"
-#include "matc/material/parse.h"
 #include "matc/runtime/analytic_lut.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/ltc.h"

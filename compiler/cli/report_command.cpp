@@ -10,7 +10,6 @@
 #include "atomic_file.h"
 #include "commands.h"
 #include "matc/compile.h"
-#include "matc/material/parse.h"
 #include "matc/report/fresnel_plot.h"
 #include "matc/report/material_curves.h"
 #include "matc/report/report_page.h"
