@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "example_files.h"
 #include "matc/emit/build.h"
 #include "matc/lut/lut_files.h"
 #include "test_images.h"
@@ -54,15 +55,6 @@ std::string quote(const std::string& word) {
   return out;
 }
 
-std::vector<std::string> example_materials() {
-  std::vector<std::string> files;
-  for (const auto& entry : fs::directory_iterator(MATC_EXAMPLES_DIR)) {
-    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 class MatcCli : public testing::Test {
  protected:
   void SetUp() override {
@@ -101,7 +93,7 @@ constexpr const char* kBad = "{\n  \"name\": \"bad\",\n  \"ior\": {\"n\": -1, \"
 
 TEST_F(MatcCli, CompilesEveryExample) {
   std::vector<std::string> args = {"-o", "out"};
-  const auto files = example_materials();
+  const auto files = matc::test::example_material_files();
   ASSERT_GE(files.size(), 11u);
   args.insert(args.end(), files.begin(), files.end());
   const CommandResult result = run(args);
@@ -190,7 +182,7 @@ TEST_F(MatcCli, RemovesTemporariesOfKilledWriters) {
 // files byte for byte, less the manifest, which lists a whole batch.
 TEST_F(MatcCli, PerMaterialActionsWriteTheBatchsBytes) {
   std::vector<std::string> batch = {"-o", "batch"};
-  const std::vector<std::string> files = example_materials();
+  const std::vector<std::string> files = matc::test::example_material_files();
   batch.insert(batch.end(), files.begin(), files.end());
   ASSERT_EQ(run(batch).exit_code, 0);
   const CommandResult shared = run({"-o", "split", "--shared-only"});
@@ -245,7 +237,7 @@ TEST_F(MatcCli, FilesFromReadsAListOfMaterials) {
 // -j only changes how fast: every example built one at a time and four at a time gives the
 // same files, byte for byte, diagnostics in input order.
 TEST_F(MatcCli, ParallelBuildsWriteTheSameBytes) {
-  std::vector<std::string> files = example_materials();
+  std::vector<std::string> files = matc::test::example_material_files();
   std::vector<std::string> serial = {"-j", "1", "-o", "serial"};
   std::vector<std::string> parallel = {"-j", "4", "-o", "parallel"};
   serial.insert(serial.end(), files.begin(), files.end());

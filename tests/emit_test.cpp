@@ -1,7 +1,6 @@
 // Shader emission: literals and templates, the generated GLSL/HLSL through glslang (both front
 // ends), SPIR-V validation and optimisation, library linking, error reporting, determinism.
 #include <algorithm>
-#include <filesystem>
 #include <regex>
 #include <string>
 #include <vector>
@@ -9,6 +8,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "example_files.h"
 #include "matc/compile.h"
 #include "matc/emit/build.h"
 #include "matc/emit/content_hash.h"
@@ -25,17 +25,11 @@
 namespace matc {
 namespace {
 
-namespace fs = std::filesystem;
-
 std::vector<CompiledMaterial> example_materials() {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(MATC_EXAMPLES_DIR))
-    if (entry.path().extension() == ".json") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
   std::vector<CompiledMaterial> compiled;
-  for (const fs::path& file : files) {
-    ParseResult parsed = read_material_file(file.string());
-    if (!parsed.material) throw std::runtime_error("example does not parse: " + file.string());
+  for (const std::string& file : test::example_material_files()) {
+    ParseResult parsed = read_material_file(file);
+    if (!parsed.material) throw std::runtime_error("example does not parse: " + file);
     compiled.push_back(compile_material(*parsed.material, runtime::shipped_basis()));
   }
   return compiled;

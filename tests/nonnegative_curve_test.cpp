@@ -5,10 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <string>
 #include <vector>
 
+#include "example_files.h"
 #include "matc/compile.h"
 #include "matc/emit/build.h"
 #include "matc/fit/nonnegative_curve.h"
@@ -20,18 +20,13 @@
 
 namespace {
 
-namespace fs = std::filesystem;
 using matc::CompiledMaterial;
 
 std::vector<CompiledMaterial> compile_examples(matc::runtime::BasisKind kind) {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(MATC_EXAMPLES_DIR))
-    if (entry.path().extension() == ".json") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
   std::vector<CompiledMaterial> compiled;
-  for (const fs::path& file : files) {
-    matc::ParseResult parsed = matc::read_material_file(file.string());
-    if (!parsed.material) throw std::runtime_error("example does not parse: " + file.string());
+  for (const std::string& file : matc::test::example_material_files()) {
+    matc::ParseResult parsed = matc::read_material_file(file);
+    if (!parsed.material) throw std::runtime_error("example does not parse: " + file);
     compiled.push_back(
         matc::compile_material(*parsed.material, matc::runtime::shipped_basis(kind)));
   }
