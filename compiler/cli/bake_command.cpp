@@ -4,14 +4,15 @@
 #include <chrono>
 #include <filesystem>
 #include <future>
-#include <map>
 #include <optional>
 
 #include <fmt/core.h>
 
 #include "atomic_file.h"
+#include "batch_report.h"
+#include "channel_list.h"
 #include "commands.h"
-#include "depfile.h"
+#include "lut_options.h"
 #include "matc/bake/bake_inputs.h"
 #include "matc/bake/baked_texture_files.h"
 #include "matc/bake/coefficient_textures.h"
@@ -23,6 +24,28 @@
 
 namespace matc::cli {
 namespace {
+
+// `matc bake`: asset files, and/or one asset from the map options.
+struct BakeCommandOptions {
+  std::vector<std::string> files;  // asset JSON files
+  std::string reflectivity;        // a map file or constant values, for a command-line asset
+  std::string edge_tint;
+  std::string n;
+  std::string k;
+  std::string name;     // its name (default: the first map file's stem)
+  bool linear = false;  // its 8- and 16-bit map files hold linear values, not sRGB
+  std::string output_directory = "matc-bake";
+  std::string format = "ktx2";
+  std::string precision = "f16";
+  std::string basis{runtime::basis_name(runtime::kDefaultBasis)};
+  bool f0 = false;
+  bool error_map = false;
+  bool keep_going = false;
+  bool quiet = false;
+  unsigned jobs = 0;  // threads; 0: one per hardware thread
+  std::string depfile;
+  bool write_depfile = false;
+};
 
 namespace fs = std::filesystem;
 
@@ -143,13 +166,13 @@ std::vector<Asset> read_assets(const BakeCommandOptions& options) {
 
 // Names unique within the run, and no output that would overwrite an input.
 void check_outputs(std::vector<Asset>& assets, const fs::path& output_directory) {
-  std::map<std::string, std::string> inputs;  // identity -> as given
+  InputsInOutputDirectory inputs(output_directory);
   for (const Asset& entry : assets) {
     if (!entry.asset) continue;
     if (!entry.asset->source_path.empty())
-      inputs[path_identity(entry.asset->source_path)] = entry.asset->source_path;
+      inputs.add(entry.asset->source_path, entry.asset->source_path);
     for (const MapInput* map : {&entry.asset->first, &entry.asset->second})
-      if (map->is_file()) inputs[path_identity(map->resolved)] = map->resolved.string();
+      if (map->is_file()) inputs.add(map->resolved, map->resolved.string());
   }
   UniqueNames names;
   for (Asset& entry : assets) {
@@ -158,18 +181,16 @@ void check_outputs(std::vector<Asset>& assets, const fs::path& output_directory)
     if (!names.claim(asset.name, entry.label, asset.name_location, "a bake", entry.diagnostics))
       continue;
     for (const std::string& name : possible_bake_outputs(asset.name)) {
-      const auto input = inputs.find(path_identity(output_directory / name));
-      if (input == inputs.end()) continue;
+      const std::optional<std::string> input = inputs.overwritten_by(output_directory / name);
+      if (!input) continue;
       entry.diagnostics.error(asset.name_location, "name",
                               fmt::format("output '{}' would overwrite the input {}",
-                                          (output_directory / name).string(), input->second),
-                              "an output directory (-o) that holds no input file");
+                                          (output_directory / name).string(), *input),
+                              kOutputDirectoryRule);
       break;
     }
   }
 }
-
-}  // namespace
 
 int run_bake(const BakeCommandOptions& options) {
   const auto start = std::chrono::steady_clock::now();
@@ -195,18 +216,18 @@ int run_bake(const BakeCommandOptions& options) {
   file_options.format = *lut_format_from_name(options.format);
   file_options.precision = *lut_precision_from_name(options.precision);
 
-  std::size_t baked_count = 0, failed = 0, not_attempted = 0, written = 0, unchanged = 0;
+  BatchCounts counts;
   std::vector<fs::path> targets, dependencies;
   ProgressLine progress(assets.size(), !options.quiet && stderr_is_terminal());
   bool stop = !inputs_valid && !options.keep_going;
   for (Asset& entry : assets) {
     if (entry.diagnostics.has_errors()) {
-      ++failed;
+      ++counts.failed;
       print_diagnostics(entry.diagnostics);
       continue;
     }
     if (stop) {
-      ++not_attempted;
+      ++counts.not_attempted;
       continue;
     }
     const BakeAsset& asset = *entry.asset;
@@ -228,7 +249,7 @@ int run_bake(const BakeCommandOptions& options) {
           }));
         }
         for (std::size_t i = 0; i < files.size(); ++i) {
-          ++(writes[i].get() == WriteOutcome::written ? written : unchanged);
+          counts.count(writes[i].get());
           targets.push_back(output_directory / files[i].name);
         }
         if (!asset.source_path.empty()) dependencies.push_back(asset.source_path);
@@ -242,47 +263,71 @@ int run_bake(const BakeCommandOptions& options) {
     progress.finished(asset.name);
     print_diagnostics(entry.diagnostics);
     if (entry.diagnostics.has_errors()) {
-      ++failed;
+      ++counts.failed;
       stop = !options.keep_going;
     } else {
-      ++baked_count;
+      ++counts.done;
     }
   }
   progress.clear();
 
-  const fs::path depfile = !options.depfile.empty() ? fs::path(options.depfile)
-                           : options.write_depfile  ? output_directory / "matc_bake.d"
-                                                    : fs::path();
-  if (!depfile.empty() && failed == 0) {
-    if (const fs::path self = matc_executable(); !self.empty()) dependencies.push_back(self);
-    try {
-      write_file_atomically(depfile, depfile_text(targets, dependencies));
-    } catch (const std::exception& error) {
-      fmt::print(stderr, "{}: error: {}\n", depfile.string(), error.what());
-      ++failed;
-    }
-  }
+  const fs::path depfile =
+      depfile_path(options.depfile, options.write_depfile, output_directory, "matc_bake.d");
+  if (!depfile.empty() && counts.failed == 0 && !write_depfile(depfile, targets, dependencies))
+    ++counts.failed;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!options.quiet && diagnostics_format() == DiagnosticsFormat::json) {
-    // Standard error stays JSON Lines for tools: the summary is one more object.
-    const nlohmann::ordered_json line = {{"summary",
-                                          {{"baked", baked_count},
-                                           {"written", written},
-                                           {"unchanged", unchanged},
-                                           {"failed", failed},
-                                           {"not_attempted", not_attempted},
-                                           {"seconds", seconds}}}};
-    fmt::print(stderr, "{}\n", line.dump());
-  } else if (!options.quiet) {
-    fmt::print(
-        stderr, "matc bake: {} baked ({} files written, {} unchanged), {} failed{} in {:.2f} s\n",
-        baked_count, written, unchanged, failed,
-        not_attempted > 0 ? fmt::format(", {} not attempted (use --keep-going)", not_attempted)
-                          : "",
-        seconds);
-  }
-  return failed > 0 ? kExitInputError : kExitSuccess;
+  print_batch_summary({"matc bake", "baked"}, counts, options.quiet, seconds);
+  return counts.failed > 0 ? kExitInputError : kExitSuccess;
+}
+
+}  // namespace
+
+Command register_bake(CLI::App& app) {
+  auto options = std::make_shared<BakeCommandOptions>();
+  CLI::App* command = app.add_subcommand(
+      "bake",
+      "Bake reflectivity and edge-tint maps (or n and k maps) into coefficient textures with mip "
+      "chains computed in coefficient space (KTX2 or DDS)");
+  command->add_option("files", options->files, "Bake asset files (.json: docs/baking.md)");
+  command->add_option("--reflectivity", options->reflectivity,
+                      "Reflectivity map (PNG, JPEG, OpenEXR) or constant R,G,B / grey");
+  command->add_option("--edge-tint", options->edge_tint,
+                      "Edge-tint map or constant, with --reflectivity");
+  command->add_option("--n", options->n, "Refractive index map (OpenEXR) or constant, with --k");
+  command->add_option("--k", options->k, "Extinction coefficient map or constant, with --n");
+  command->add_option("--name", options->name,
+                      "Name of the command-line asset's files (default: the first map's "
+                      "file name without extension)");
+  command->add_flag("--linear", options->linear,
+                    "The command-line maps hold linear values (default: PNG and JPEG "
+                    "reflectivity and edge tint are sRGB-encoded; n, k are linear)");
+  command->add_option("-o,--output", options->output_directory, "Output directory")
+      ->capture_default_str();
+  command->add_option("--format", options->format, "Texture file format")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"ktx2", "dds"}));
+  command->add_option("--precision", options->precision, "Texel precision")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"f16", "f32"}));
+  add_basis_option(*command, options->basis);
+  command->add_flag("--f0", options->f0,
+                    "Also write NAME_f0 (linear F0 with coefficient-space mips), for "
+                    "engines whose base-colour mips are not box averages of linear F0");
+  command->add_flag("--error-map", options->error_map,
+                    "Also write NAME_error.png: level 0's largest |F - exact| per texel "
+                    "(255 = 0.01 or more)");
+  command->add_flag("-k,--keep-going", options->keep_going,
+                    "Bake the remaining assets after one fails (still exits 1)");
+  command->add_flag("-q,--quiet", options->quiet, "Do not print the progress and summary lines");
+  command->add_option("-j,--jobs", options->jobs, "Threads (default: one per hardware thread)")
+      ->check(CLI::Range(1u, 1024u));
+  command->add_option("--depfile", options->depfile,
+                      "Write the outputs' dependencies (asset files, maps, the matc "
+                      "binary) to FILE in the Makefile syntax Ninja and CMake read");
+  command->add_flag("--MD", options->write_depfile, "The same, as DIR/matc_bake.d");
+
+  return {command, [options] { return run_bake(*options); }, true};
 }
 
 }  // namespace matc::cli

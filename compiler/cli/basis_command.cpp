@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
@@ -11,6 +12,7 @@
 
 #include "atomic_file.h"
 #include "commands.h"
+#include "lut_options.h"
 #include "matc/basis/basis_fit.h"
 #include "matc/basis/basis_polynomial_fit.h"
 #include "matc/emit/material_module_template.h"
@@ -22,6 +24,26 @@
 
 namespace matc::cli {
 namespace {
+
+struct BasisOptions {
+  bool json = false;
+  std::string basis{runtime::basis_name(runtime::kDefaultBasis)};
+};
+
+struct BasisFitOptions {
+  std::string output;  // empty: standard output
+  std::string basis{runtime::basis_name(runtime::kDefaultBasis)};
+};
+
+// `matc basis ltc-table`: refits the shipped LTC table, writes its C++ source and, on request,
+// each texel's fit quality as CSV.
+struct LtcTableOptions {
+  std::string output;
+  std::string quality;
+  std::size_t quality_samples = 1u << 14;
+  unsigned jobs = 0;
+  std::string objective = "l1";  // "l1" or "l3" (Heitz et al.'s)
+};
 
 std::string_view basis_description(runtime::BasisKind kind) {
   switch (kind) {
@@ -39,8 +61,6 @@ std::string_view basis_description(runtime::BasisKind kind) {
   return "the authors' dielectrics extended with conductors, curves weighted by 1 - F0; "
          "near-minimax coefficients";
 }
-
-}  // namespace
 
 int run_basis(const BasisOptions& options) {
   const runtime::BasisKind kind = basis_of(options.basis);
@@ -88,8 +108,6 @@ int run_basis(const BasisOptions& options) {
   return kExitSuccess;
 }
 
-namespace {
-
 // The generated source on standard output, or written atomically to the output file.
 int write_source(const std::string& output, const std::string& source) {
   if (output.empty()) {
@@ -106,8 +124,6 @@ int write_source(const std::string& output, const std::string& source) {
   }
   return kExitSuccess;
 }
-
-}  // namespace
 
 int run_basis_fit(const BasisFitOptions& options) {
   const runtime::BasisKind kind = basis_of(options.basis);
@@ -185,6 +201,77 @@ int run_basis_ltc_table(const LtcTableOptions& options) {
     }
   }
   return write_source(options.output, ltc_table_source(table));
+}
+
+}  // namespace
+
+std::vector<Command> register_basis(CLI::App& app) {
+  auto basis = std::make_shared<BasisOptions>();
+  CLI::App* basis_command = app.add_subcommand("basis", "Show the Fresnel basis b_0..b_3");
+  basis_command->add_flag("--json", basis->json, "Print {mu, b, probes} as JSON");
+  add_basis_option(*basis_command, basis->basis);
+  std::vector<Command> commands;
+  // The subcommands that regenerate checked-in C++ source: -o names where it lives.
+  const auto add_source_command = [&](const char* name, const char* description,
+                                      const char* checked_in, bool per_basis,
+                                      int (*run)(const BasisFitOptions&)) {
+    auto options = std::make_shared<BasisFitOptions>();
+    CLI::App* command = basis_command->add_subcommand(name, description);
+    command->add_option("-o,--output", options->output,
+                        fmt::format("Where to write ({}); default stdout", checked_in));
+    if (per_basis) add_basis_option(*command, options->basis);
+    commands.push_back({command, [options, run] { return run(*options); }});
+  };
+  add_source_command("fit", "Refit the basis from its training set and write the C++ table source",
+                     "runtime/src/<basis>_basis_table.cpp", true, run_basis_fit);
+  add_source_command(
+      "coefficient-table",
+      "Refit the coefficient table (c_2, c_3 over reflectivity and edge tint) and write its C++ "
+      "source",
+      "runtime/src/<basis>_coefficient_table.cpp", true, run_basis_coefficient_table);
+  add_source_command(
+      "analytic-lut",
+      "Bake the basis' default preintegrated table, fit its closed form (the albedo and a "
+      "two-point quadrature of the basis, docs/shaders.md) and write the C++ source",
+      "runtime/src/<basis>_analytic_lut_table.cpp", true, run_basis_analytic_lut);
+  add_source_command(
+      "lut-hashes",
+      "Bake the default preintegrated table of every basis and write the C++ source of its "
+      "files' hashes (what headers and manifests name without baking)",
+      "compiler/src/lut/default_lut_hashes.cpp", false, run_basis_lut_hashes);
+  add_source_command(
+      "material-modules",
+      "Compile every basis' material library module with placeholder coefficients and write the "
+      "C++ source of those templates (what per-material SPIR-V is patched from)",
+      "compiler/src/emit/material_module_templates.cpp", false, run_basis_material_modules);
+
+  auto ltc_table = std::make_shared<LtcTableOptions>();
+  CLI::App* ltc_table_command = basis_command->add_subcommand(
+      "ltc-table",
+      "Refit the LTC table of GGX (inverse matrices over NdotV and roughness, for area lights) "
+      "and write its C++ source");
+  ltc_table_command->add_option("-o,--output", ltc_table->output,
+                                "Where to write (runtime/src/ltc_table.cpp); default stdout");
+  ltc_table_command
+      ->add_option("--quality", ltc_table->quality,
+                   "Also write each texel's fit quality as CSV (distribution and polygon-light "
+                   "errors: docs/ltc.md)")
+      ->check(CLI::NonexistentPath | CLI::ExistingFile);
+  ltc_table_command
+      ->add_option("--quality-samples", ltc_table->quality_samples,
+                   "Reference samples per polygon for --quality")
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t{64}, std::size_t{1} << 24));
+  ltc_table_command->add_option("-j,--jobs", ltc_table->jobs, "Threads (default: one per core)");
+  ltc_table_command
+      ->add_option("--objective", ltc_table->objective,
+                   "What the fit minimises: l1, the densities' L1 distance (shipped), or l3, "
+                   "Heitz et al.'s cubed difference (for comparison)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"l1", "l3"}));
+  commands.push_back({ltc_table_command, [ltc_table] { return run_basis_ltc_table(*ltc_table); }});
+  commands.push_back({basis_command, [basis] { return run_basis(*basis); }});
+  return commands;
 }
 
 }  // namespace matc::cli

@@ -5,7 +5,6 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -17,10 +16,14 @@
 #include <fmt/format.h>
 
 #include "atomic_file.h"
+#include "batch_report.h"
+#include "channel_list.h"
+#include "color_options.h"
 #include "commands.h"
-#include "depfile.h"
 #include "device_validation_report.h"
+#include "file_list.h"
 #include "in_order.h"
+#include "lut_options.h"
 #include "manifest_spool.h"
 #include "matc/compile.h"
 #include "matc/emit/build.h"
@@ -34,6 +37,29 @@
 
 namespace matc::cli {
 namespace {
+
+struct CompileOptions {
+  std::vector<std::string> files;
+  std::string files_from;  // --files-from: a file listing more, one per line
+  std::string output_directory = "matc-out";
+  bool keep_going = false;
+  bool quiet = false;
+  unsigned jobs = 0;           // -j: materials compiled at once; 0: one per hardware thread
+  std::string depfile;         // --depfile FILE: Make-syntax dependencies of every output
+  bool write_depfile = false;  // -MD: the same, as <output directory>/matc.d
+  std::string emit;            // comma-separated output kinds; empty: all
+  bool no_shared = false;      // --no-shared: only each material's own files
+  bool shared_only = false;    // --shared-only: only the shared files (no material given)
+  std::string lut_format = "ktx2";
+  LutCliOptions lut;
+  bool embed_lut = false;
+  std::size_t embed_lut_size = 32;
+  bool validate = false;  // run each material's shaders on a device before writing its files
+  DeviceCliOptions device;
+  ColorCliOptions color;
+};
+
+inline constexpr const char* kDepfileName = "matc.d";
 
 namespace fs = std::filesystem;
 
@@ -67,17 +93,6 @@ BuildOptions build_options(const CompileOptions& options) {
   return build;
 }
 
-struct BatchSummary {
-  std::size_t compiled = 0;
-  std::size_t written = 0;
-  std::size_t unchanged = 0;
-  std::size_t failed = 0;
-  std::size_t failed_on_device = 0;
-  std::size_t not_attempted = 0;
-
-  void count(WriteOutcome outcome) { ++(outcome == WriteOutcome::written ? written : unchanged); }
-};
-
 // What a worker's compile of one job leaves for the batch until the job is retired.
 struct CompileOutcome {
   bool compiled = false;  // every output written
@@ -106,23 +121,21 @@ struct Job {
 // Reads and checks every file in order: name rules need all names, and a batch without
 // --keep-going compiles nothing when an input is invalid.
 std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& output_directory) {
-  // Only inputs inside the output directory can be overwritten, so only theirs are kept (by file
-  // name), not every input's canonical path.
-  const fs::path output_identity(path_identity(output_directory));
-  std::map<std::string, std::string> inputs_in_output_directory;
-  for (const std::string& file : options.files) {
-    const fs::path identity(path_identity(file));
-    if (identity.parent_path() == output_identity)
-      inputs_in_output_directory[identity.filename().string()] = file;
-  }
+  InputsInOutputDirectory inputs(output_directory);
+  for (const std::string& file : options.files)
+    inputs.add(file, file);
   UniqueNames names;
   // Name rules, then the job: a material with an error is kept for its diagnostics only.
   const auto admit = [&](Job& job, std::optional<Material> material, bool keep) {
     if (!material) return;
-    const std::vector<fs::path> outputs = possible_outputs(output_directory, material->name);
-    const auto overwritten = std::find_if(outputs.begin(), outputs.end(), [&](const fs::path& p) {
-      return inputs_in_output_directory.contains(p.filename().string());
-    });
+    std::optional<std::string> overwritten;
+    for (const fs::path& output : possible_outputs(output_directory, material->name)) {
+      if ((overwritten = inputs.overwritten_by(output))) {
+        overwritten =
+            fmt::format("output '{}' would overwrite the input {}", output.string(), *overwritten);
+        break;
+      }
+    }
     if (reserved_names().contains(lowercase(material->name))) {
       job.diagnostics.error(material->name_location, "name",
                             fmt::format("'{}' names a file every build writes", material->name),
@@ -130,12 +143,8 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
                                         fmt::join(shared_file_stems(), ", ")));
     } else if (!names.claim(*material, "a build", job.diagnostics)) {
       // claim() reported the clash.
-    } else if (overwritten != outputs.end()) {
-      job.diagnostics.error(
-          material->name_location, "name",
-          fmt::format("output '{}' would overwrite the input {}", overwritten->string(),
-                      inputs_in_output_directory.at(overwritten->filename().string())),
-          "an output directory (-o) that holds no input file");
+    } else if (overwritten) {
+      job.diagnostics.error(material->name_location, "name", *overwritten, kOutputDirectoryRule);
     }
     if (job.diagnostics.has_errors()) return;
     if (const auto* spectral = std::get_if<SpectralInput>(&material->model))
@@ -168,8 +177,6 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
   }
   return jobs;
 }
-
-}  // namespace
 
 int run_compile(const CompileOptions& options) {
   const Build build(build_options(options));
@@ -209,15 +216,15 @@ int run_compile(const CompileOptions& options) {
   std::vector<std::size_t> queue;
   for (std::size_t i = 0; i < jobs.size(); ++i)
     if (queued(jobs[i])) queue.push_back(i);
-  const fs::path depfile = !options.depfile.empty() ? fs::path(options.depfile)
-                           : options.write_depfile  ? output_directory / kDepfileName
-                                                    : fs::path();
+  const fs::path depfile =
+      depfile_path(options.depfile, options.write_depfile, output_directory, kDepfileName);
   ProgressLine progress(queue.size(), !options.quiet && stderr_is_terminal());
 
   // Each job is reported, counted and released in input order as soon as every earlier job is
   // done, so a batch holds little more per material than its file name.
   std::mutex device_mutex;  // one Vulkan queue: validations (and their report) one at a time
-  BatchSummary summary;
+  BatchCounts summary;
+  std::size_t failed_on_device = 0;
   ManifestSpool manifest_entries(output_directory);
   std::optional<std::string> manifest_error;
   InOrder in_order(jobs.size(), [&](std::size_t index) {
@@ -232,12 +239,12 @@ int run_compile(const CompileOptions& options) {
     if (outcome) {
       summary.written += outcome->written;
       summary.unchanged += outcome->unchanged;
-      if (outcome->failed_on_device) ++summary.failed_on_device;
+      if (outcome->failed_on_device) ++failed_on_device;
     }
     if (job.diagnostics.has_errors()) {
       ++summary.failed;
     } else if (outcome && outcome->compiled) {
-      ++summary.compiled;
+      ++summary.done;
       if (writes_manifest && !manifest_error) {
         try {
           manifest_entries.append(outcome->manifest_entry);
@@ -351,8 +358,7 @@ int run_compile(const CompileOptions& options) {
           dependencies.push_back(options.files[job.input]);
           if (!job.spectral_file.empty()) dependencies.push_back(job.spectral_file);
         }
-        if (const fs::path self = matc_executable(); !self.empty()) dependencies.push_back(self);
-        write_file_atomically(depfile, depfile_text(targets, dependencies));
+        if (!write_depfile(depfile, targets, std::move(dependencies))) ++summary.failed;
       }
     } catch (const std::exception& error) {
       fmt::print(stderr, "{}: error: {}\n", output_directory.string(), error.what());
@@ -360,24 +366,99 @@ int run_compile(const CompileOptions& options) {
     }
   }
 
-  if (!options.quiet && diagnostics_format() == DiagnosticsFormat::json) {
-    // Standard error stays JSON Lines for tools: the summary is one more object.
-    const nlohmann::ordered_json line = {{"summary",
-                                          {{"compiled", summary.compiled},
-                                           {"written", summary.written},
-                                           {"unchanged", summary.unchanged},
-                                           {"failed", summary.failed},
-                                           {"not_attempted", summary.not_attempted}}}};
-    fmt::print(stderr, "{}\n", line.dump());
-  } else if (!options.quiet) {
-    fmt::print(stderr, "matc: {} compiled ({} files written, {} unchanged), {} failed{}\n",
-               summary.compiled, summary.written, summary.unchanged, summary.failed,
-               summary.not_attempted > 0
-                   ? fmt::format(", {} not attempted (use --keep-going)", summary.not_attempted)
-                   : "");
-  }
-  if (summary.failed_on_device > 0) return kExitValidationFailed;
+  print_batch_summary({"matc", "compiled"}, summary, options.quiet);
+  if (failed_on_device > 0) return kExitValidationFailed;
   return summary.failed > 0 ? kExitInputError : kExitSuccess;
+}
+
+// The command line's checks that need every file: then the batch.
+int run_compile_command(CompileOptions options) {
+  if (!options.files_from.empty()) {
+    const std::optional<std::vector<std::string>> listed = read_file_list(options.files_from);
+    if (!listed) {
+      fmt::print(stderr, "{}: error: --files-from: cannot read the list\n", options.files_from);
+      return kExitUsageError;
+    }
+    options.files.insert(options.files.end(), listed->begin(), listed->end());
+  }
+  if (options.shared_only && !options.files.empty()) {
+    fmt::print(stderr,
+               "matc: error: --shared-only writes no material's files; give no material file "
+               "(compile materials with --no-shared in their own runs)\n");
+    return kExitUsageError;
+  }
+  if (options.files.empty() && !options.shared_only) {
+    fmt::print(stderr,
+               "matc: error: no material files given; usage: matc [-o DIR] FILES... "
+               "(see matc --help)\n");
+    return kExitUsageError;
+  }
+  return run_compile(options);
+}
+
+}  // namespace
+
+Command register_compile(CLI::App& app) {
+  auto options = std::make_shared<CompileOptions>();
+  app.add_option("files", options->files,
+                 "Material files (.json) and MaterialX documents (.mtlx) to compile");
+  app.add_option("--files-from", options->files_from,
+                 "Also compile the files listed in FILE, one path per line (- for standard input): "
+                 "for lists longer than a command line holds");
+  app.add_option("-o,--output", options->output_directory, "Output directory (created if missing)")
+      ->capture_default_str();
+  app.add_flag("-k,--keep-going", options->keep_going,
+               "Compile the remaining files after one fails (still exits 1)");
+  app.add_flag("-q,--quiet", options->quiet, "Do not print the progress and summary lines");
+  app.add_option("-j,--jobs", options->jobs,
+                 "Materials compiled at once (default: one per hardware thread)")
+      ->check(CLI::Range(1u, 1024u));
+  app.add_option("--depfile", options->depfile,
+                 "Write the outputs' dependencies (inputs, spectral files, the matc binary) to "
+                 "FILE in the Makefile syntax Ninja and CMake read");
+  app.add_flag("--MD", options->write_depfile, "The same, as DIR/matc.d (also spelled -MD)");
+  app.add_option("--emit", options->emit,
+                 "Outputs to write, comma-separated (default: all): shader snippets, SPIR-V, "
+                 "C headers, JSON manifests, the LUT, the coefficient table of textured metals, "
+                 "the LTC table of area lights")
+      ->check(CLI::Validator(
+          [](std::string& list) -> std::string {
+            for (const std::string& name : split_list(list)) {
+              if (!matc::output_kind_from_name(name)) {
+                return "'" + name + "' is not one of " +
+                       CLI::detail::join(matc::output_kind_names(), ",");
+              }
+            }
+            return {};
+          },
+          "LIST", "output kinds"));
+  CLI::Option* no_shared_option = app.add_flag(
+      "--no-shared", options->no_shared,
+      "Write only each material's own files (<name>.*), not the shared library, tables and "
+      "manifest: one build action per material (docs/scaling.md)");
+  app.add_flag("--shared-only", options->shared_only,
+               "Write only the shared files (matc_fresnel.*, the tables), from no material file: "
+               "the one shared action beside per-material --no-shared actions")
+      ->excludes(no_shared_option);
+  app.add_option(
+         "--lut", options->lut_format,
+         "File format of the tables DIR/matc_lut.<ext>, DIR/matc_coefficient_table.<ext> and "
+         "DIR/matc_ltc.<ext>")
+      ->capture_default_str()
+      ->check(CLI::IsMember(matc::lut_format_names()));
+  app.add_flag("--embed-lut", options->embed_lut,
+               "Also embed a small table in matc_fresnel.glsl/.hlsl as a constant array");
+  app.add_option("--embed-lut-size", options->embed_lut_size, "Width and height of that table")
+      ->capture_default_str()
+      ->check(CLI::Range(matc::kMinLutSize, matc::kMaxEmbeddedLutSize));
+  add_lut_options(app, options->lut, "lut-");
+  add_color_options(app, options->color);
+  add_coefficient_table_option(app, options->lut);
+  app.add_flag("--validate", options->validate,
+               "Run each material's GLSL and HLSL shaders on a Vulkan device (lavapipe) against "
+               "the CPU runtime before writing its files");
+  add_device_options(app, options->device);
+  return {&app, [options] { return run_compile_command(*options); }, true};
 }
 
 }  // namespace matc::cli

@@ -3,6 +3,15 @@
 #include <fmt/core.h>
 
 namespace matc::cli {
+
+void add_device_options(CLI::App& command, DeviceCliOptions& device) {
+  command.add_flag("--vk-validation", device.layers,
+                   "Enable the Khronos validation layer; any message it reports fails");
+  command.add_option("--device", device.name,
+                     "Use the Vulkan device whose name contains this (default: a GPU if any, "
+                     "else lavapipe)");
+}
+
 namespace {
 
 std::string describe(const char* label, const Discrepancy& found, double tolerance, bool direct) {

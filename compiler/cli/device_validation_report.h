@@ -4,10 +4,22 @@
 
 #include <memory>
 
-#include "commands.h"
+#include <string>
+
+#include <CLI/CLI.hpp>
+
 #include "matc/validate/device_validation.h"
 
 namespace matc::cli {
+
+// Where `matc validate` and `matc --validate` run the generated shaders.
+struct DeviceCliOptions {
+  bool layers = false;  // --vk-validation: Khronos validation layer on, any message fails
+  std::string name;     // --device: a substring of the device's name
+};
+
+// Adds --vk-validation and --device to `command`.
+void add_device_options(CLI::App& command, DeviceCliOptions& device);
 
 // Opens the device and prints which one and the tolerances; on failure prints why and returns
 // null (the caller exits with kExitNoDevice).

@@ -5,7 +5,9 @@
 #include <nlohmann/json.hpp>
 
 #include "channel_list.h"
+#include "color_options.h"
 #include "commands.h"
+#include "lut_options.h"
 #include "matc/compile.h"
 #include "matc/fit/coefficient_table.h"
 #include "matc/fit/coefficients.h"
@@ -25,6 +27,21 @@
 
 namespace matc::cli {
 namespace {
+
+struct EvalOptions {
+  std::string file;          // a material file or MaterialX document, or:
+  std::string material;      // --material: which of a document's materials
+  std::string reflectivity;  // --reflectivity and --edge-tint: the coefficient-table path
+  std::string edge_tint;
+  std::vector<double> mu;
+  std::vector<double> ndotv;
+  std::vector<double> roughness;
+  std::string quad_light;  // "x,y,z;x,y,z;x,y,z;x,y,z" in the shading frame: area-light radiance
+  std::size_t light_samples = 0;  // reference samples for --quad-light
+  bool no_reference = false;      // --no-reference: no split-sum integral per (NdotV, roughness)
+  LutCliOptions lut;
+  ColorCliOptions color;
+};
 
 using nlohmann::ordered_json;
 
@@ -240,8 +257,6 @@ std::optional<Material> chosen_material(const EvalOptions& options) {
   return std::nullopt;
 }
 
-}  // namespace
-
 int run_eval(const EvalOptions& options) {
   if (options.mu.empty() && options.ndotv.empty()) {
     fmt::print(stderr, "matc eval: error: give --mu and/or --ndotv with --roughness\n");
@@ -283,6 +298,62 @@ int run_eval(const EvalOptions& options) {
   }
   fmt::print("{}", format_json(out));
   return kExitSuccess;
+}
+
+}  // namespace
+
+Command register_eval(CLI::App& app) {
+  auto options = std::make_shared<EvalOptions>();
+  CLI::App* command =
+      app.add_subcommand("eval", "Evaluate a material's decomposed and exact Fresnel as JSON");
+  command->add_option("file", options->file,
+                      "Material file (.json) or MaterialX document (.mtlx); or give "
+                      "--reflectivity and --edge-tint");
+  command->add_option("--material", options->material,
+                      "Which material of a MaterialX document (its name as imported); needed "
+                      "when the document holds more than one");
+  command->add_option("--reflectivity", options->reflectivity,
+                      "Gulbrandsen reflectivity r per channel (R,G,B or one grey value in "
+                      "[0, 1]): F from the coefficient table beside the per-material compile");
+  command->add_option("--edge-tint", options->edge_tint,
+                      "Gulbrandsen edge tint g per channel, with --reflectivity");
+  command->add_option("--mu", options->mu, "Cosines of incidence, comma-separated: F")
+      ->delimiter(',')
+      ->check(CLI::Range(0.0, 1.0));
+  CLI::Option* ndotv_option =
+      command->add_option("--ndotv", options->ndotv, "NdotV values, comma-separated: Fbar")
+          ->delimiter(',')
+          ->check(CLI::Range(0.0, 1.0));
+  CLI::Option* roughness_option =
+      command
+          ->add_option("--roughness", options->roughness,
+                       "Perceptual roughness for each --ndotv value, comma-separated")
+          ->delimiter(',')
+          ->check(CLI::Range(0.0, 1.0));
+  ndotv_option->needs(roughness_option);
+  roughness_option->needs(ndotv_option);
+  options->light_samples = matc::kDefaultLightSamples;
+  CLI::Option* no_reference_option = command->add_flag(
+      "--no-reference", options->no_reference,
+      "Leave out Fbar_reference, the exact split-sum integral per --ndotv value (a Monte-Carlo "
+      "integral each: the slow part of evaluating many points)");
+  command
+      ->add_option("--quad-light", options->quad_light,
+                   "A quad light of radiance 1, \"x,y,z;x,y,z;x,y,z;x,y,z\" in the shading frame "
+                   "(normal +z, view in the xz-plane towards +x): radiance by LTC with ours and "
+                   "with Schlick's Fresnel, and the exact integral (docs/ltc.md)")
+      ->needs(ndotv_option)
+      ->excludes(no_reference_option);
+  command
+      ->add_option("--light-samples", options->light_samples,
+                   "Monte-Carlo sample pairs of the --quad-light reference")
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t{16}, std::size_t{1} << 26));
+  add_lut_options(*command, options->lut, "lut-");
+  add_coefficient_table_option(*command, options->lut);
+  add_color_options(*command, options->color);
+
+  return {command, [options] { return run_eval(*options); }, true};
 }
 
 }  // namespace matc::cli

@@ -1,18 +1,27 @@
 // `matc import`: MaterialX documents to matc material files (docs/interchange.md).
 #include <filesystem>
-#include <set>
+#include <optional>
 #include <vector>
 
 #include <fmt/core.h>
-#include <nlohmann/json.hpp>
 
 #include "atomic_file.h"
+#include "batch_report.h"
 #include "commands.h"
 #include "matc/material/materialx_import.h"
 #include "print_diagnostics.h"
 #include "unique_names.h"
 
 namespace matc::cli {
+namespace {
+
+// `matc import`: MaterialX documents to matc material files.
+struct ImportOptions {
+  std::vector<std::string> files;
+  std::string output_directory = "matc-import";
+  bool keep_going = false;
+  bool quiet = false;
+};
 
 namespace fs = std::filesystem;
 
@@ -24,14 +33,14 @@ int run_import(const ImportOptions& options) {
     MaterialXImport imported;
   };
   std::vector<Document> documents;
-  std::set<std::string> input_identities;
+  InputsInOutputDirectory inputs(options.output_directory);
   for (const std::string& file : options.files)
-    input_identities.insert(path_identity(file));
+    inputs.add(file, file);
   const auto output_of = [&](const ImportedMaterial& material) {
     return fs::path(options.output_directory) / (material.material.name + ".json");
   };
   UniqueNames names;
-  std::size_t failed = 0;
+  BatchCounts counts;  // failures count documents, the rest materials
   for (const std::string& file : options.files) {
     Document document{file, {}};
     if (!is_materialx_path(file)) {
@@ -42,52 +51,57 @@ int run_import(const ImportOptions& options) {
     }
     for (const ImportedMaterial& material : document.imported.materials) {
       const fs::path output = output_of(material);
-      if (input_identities.contains(path_identity(output))) {
+      if (const std::optional<std::string> input = inputs.overwritten_by(output)) {
         document.imported.diagnostics.error(
             material.material.name_location, "name",
-            fmt::format("output '{}' would overwrite an input", output.string()),
-            "an output directory (-o) that holds no input file");
+            fmt::format("output '{}' would overwrite the input {}", output.string(), *input),
+            kOutputDirectoryRule);
       } else {
         names.claim(material.material, "an import", document.imported.diagnostics);
       }
     }
-    if (document.imported.diagnostics.has_errors()) ++failed;
+    if (document.imported.diagnostics.has_errors()) ++counts.failed;
     documents.push_back(std::move(document));
   }
-  std::size_t written = 0;
-  std::size_t unchanged = 0;
-  std::size_t imported = 0;
+  const bool stop = counts.failed > 0 && !options.keep_going;
   for (const Document& document : documents) {
     print_diagnostics(document.imported.diagnostics);
-    if (document.imported.diagnostics.has_errors() || (failed > 0 && !options.keep_going)) continue;
+    if (document.imported.diagnostics.has_errors()) continue;
+    if (stop) {
+      counts.not_attempted += document.imported.materials.size();
+      continue;
+    }
     try {
       fs::create_directories(options.output_directory);
       for (const ImportedMaterial& material : document.imported.materials) {
-        ++(write_file_atomically(output_of(material), material.json) == WriteOutcome::written
-               ? written
-               : unchanged);
-        ++imported;
+        counts.count(write_file_atomically(output_of(material), material.json));
+        ++counts.done;
       }
     } catch (const std::exception& error) {
       fmt::print(stderr, "{}: error: {}\n", options.output_directory, error.what());
-      ++failed;
+      ++counts.failed;
     }
   }
-  if (!options.quiet && diagnostics_format() == DiagnosticsFormat::json) {
-    // Standard error stays JSON Lines for tools: the summary is one more object.
-    const nlohmann::ordered_json line = {{"summary",
-                                          {{"imported", imported},
-                                           {"written", written},
-                                           {"unchanged", unchanged},
-                                           {"failed", failed}}}};
-    fmt::print(stderr, "{}\n", line.dump());
-  } else if (!options.quiet) {
-    fmt::print(stderr,
-               "matc import: {} materials imported ({} files written, {} unchanged), {} "
-               "documents failed\n",
-               imported, written, unchanged, failed);
-  }
-  return failed > 0 ? kExitInputError : kExitSuccess;
+  print_batch_summary({"matc import", "imported"}, counts, options.quiet);
+  return counts.failed > 0 ? kExitInputError : kExitSuccess;
+}
+
+}  // namespace
+
+Command register_import(CLI::App& app) {
+  auto options = std::make_shared<ImportOptions>();
+  CLI::App* command = app.add_subcommand(
+      "import",
+      "Write a matc material file for each metallic Standard Surface or OpenPBR material of "
+      "MaterialX documents (docs/interchange.md)");
+  command->add_option("files", options->files, "MaterialX documents (.mtlx)")->required();
+  command->add_option("-o,--output", options->output_directory, "Output directory")
+      ->capture_default_str();
+  command->add_flag("-k,--keep-going", options->keep_going,
+                    "Write the other documents' materials when one fails (still exits 1)");
+  command->add_flag("-q,--quiet", options->quiet, "Do not print the summary line");
+
+  return {command, [options] { return run_import(*options); }, true};
 }
 
 }  // namespace matc::cli

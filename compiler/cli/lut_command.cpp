@@ -5,6 +5,13 @@
 #include "matc/runtime/basis.h"
 
 namespace matc::cli {
+namespace {
+
+struct LutCommandOptions {
+  std::string output;
+  std::string format;  // empty: from the output's extension
+  LutCliOptions lut;
+};
 
 int run_lut(const LutCommandOptions& options) {
   const std::filesystem::path output(options.output);
@@ -33,6 +40,22 @@ int run_lut(const LutCommandOptions& options) {
     return kExitInputError;
   }
   return kExitSuccess;
+}
+
+}  // namespace
+
+Command register_lut(CLI::App& app) {
+  auto options = std::make_shared<LutCommandOptions>();
+  CLI::App* command = app.add_subcommand(
+      "lut", "Bake the preintegrated basis table (KTX2, DDS, raw or C++ header)");
+  command
+      ->add_option("-o,--output", options->output, "Output file; a .json manifest goes beside it")
+      ->required();
+  command->add_option("--format", options->format, "File format (default: from the extension)")
+      ->check(CLI::IsMember(matc::lut_format_names()));
+  add_lut_options(*command, options->lut, "");
+
+  return {command, [options] { return run_lut(*options); }};
 }
 
 }  // namespace matc::cli

@@ -8,7 +8,9 @@
 #include <fmt/core.h>
 
 #include "atomic_file.h"
+#include "color_options.h"
 #include "commands.h"
+#include "lut_options.h"
 #include "matc/compile.h"
 #include "matc/report/fresnel_plot.h"
 #include "matc/report/material_curves.h"
@@ -19,6 +21,13 @@
 
 namespace matc::cli {
 namespace {
+
+struct ReportOptions {
+  std::vector<std::string> files;
+  std::string output_directory = "matc-report";
+  std::string basis{runtime::basis_name(runtime::kDefaultBasis)};
+  ColorCliOptions color;
+};
 
 namespace fs = std::filesystem;
 
@@ -39,8 +48,6 @@ std::optional<std::vector<Material>> read_all(const std::vector<std::string>& fi
   if (!ok) return std::nullopt;
   return materials;
 }
-
-}  // namespace
 
 int run_report(const ReportOptions& options) {
   const std::optional<std::vector<Material>> materials = read_all(options.files);
@@ -88,6 +95,24 @@ int run_report(const ReportOptions& options) {
              materials->size(), written, outputs.size() - written,
              (directory / "index.html").string());
   return kExitSuccess;
+}
+
+}  // namespace
+
+Command register_report(CLI::App& app) {
+  auto options = std::make_shared<ReportOptions>();
+  CLI::App* command = app.add_subcommand(
+      "report",
+      "Plot each material's Fresnel curves (exact, ours, Schlick, F82-tint) as SVG, with CSV "
+      "samples and an HTML index of the errors");
+  command->add_option("files", options->files, "Material files (.json), MaterialX documents")
+      ->required();
+  command->add_option("-o,--output", options->output_directory, "Output directory")
+      ->capture_default_str();
+  add_basis_option(*command, options->basis);
+  add_color_options(*command, options->color);
+
+  return {command, [options] { return run_report(*options); }, true};
 }
 
 }  // namespace matc::cli

@@ -2,13 +2,25 @@
 // memory (nothing is written) and prove its shaders on a Vulkan device.
 #include <fmt/core.h>
 
+#include "color_options.h"
 #include "commands.h"
 #include "device_validation_report.h"
+#include "lut_options.h"
 #include "matc/compile.h"
 #include "material_inputs.h"
 #include "print_diagnostics.h"
 
 namespace matc::cli {
+namespace {
+
+struct ValidateOptions {
+  std::vector<std::string> files;
+  LutCliOptions lut;
+  bool embed_lut = false;
+  std::size_t embed_lut_size = 32;
+  DeviceCliOptions device;
+  ColorCliOptions color;
+};
 
 int run_validate(const ValidateOptions& options) {
   BuildOptions build_options =
@@ -46,6 +58,32 @@ int run_validate(const ValidateOptions& options) {
   if (!area_lights_passed) fmt::print("matc validate: the area-light path FAILED\n");
   if (failed > 0 || !table_passed || !area_lights_passed) return kExitValidationFailed;
   return invalid_files > 0 ? kExitInputError : kExitSuccess;
+}
+
+}  // namespace
+
+Command register_validate(CLI::App& app) {
+  auto options = std::make_shared<ValidateOptions>();
+  CLI::App* command = app.add_subcommand(
+      "validate",
+      "Run materials' generated shaders (GLSL and HLSL paths) on a Vulkan device and compare "
+      "them with the CPU runtime; writes nothing");
+  command
+      ->add_option("files", options->files,
+                   "Material files (.json) and MaterialX documents (.mtlx)")
+      ->required();
+  command->add_flag("--embed-lut", options->embed_lut,
+                    "Also check the embedded-table path (lavapipe compiles tables "
+                    "above 8x8 slowly: docs/validation.md)");
+  command->add_option("--embed-lut-size", options->embed_lut_size, "Width and height of that table")
+      ->capture_default_str()
+      ->check(CLI::Range(matc::kMinLutSize, matc::kMaxEmbeddedLutSize));
+  add_lut_options(*command, options->lut, "lut-");
+  add_coefficient_table_option(*command, options->lut);
+  add_device_options(*command, options->device);
+  add_color_options(*command, options->color);
+
+  return {command, [options] { return run_validate(*options); }, true};
 }
 
 }  // namespace matc::cli

@@ -1,0 +1,71 @@
+#include "batch_report.h"
+
+#include <cstdio>
+#include <exception>
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include "depfile.h"
+#include "print_diagnostics.h"
+
+namespace matc::cli {
+
+namespace fs = std::filesystem;
+
+InputsInOutputDirectory::InputsInOutputDirectory(const fs::path& output_directory)
+    : directory_identity_(path_identity(output_directory)) {}
+
+void InputsInOutputDirectory::add(const fs::path& path, const std::string& as_given) {
+  const fs::path identity(path_identity(path));
+  if (identity.parent_path() == directory_identity_)
+    inputs_.emplace(identity.filename().string(), as_given);
+}
+
+std::optional<std::string> InputsInOutputDirectory::overwritten_by(const fs::path& output) const {
+  const auto input = inputs_.find(output.filename().string());
+  if (input == inputs_.end()) return std::nullopt;
+  return input->second;
+}
+
+void print_batch_summary(const BatchSummaryWords& words, const BatchCounts& counts, bool quiet,
+                         std::optional<double> seconds) {
+  if (quiet) return;
+  if (diagnostics_format() == DiagnosticsFormat::json) {
+    // Standard error stays JSON Lines for tools: the summary is one more object.
+    nlohmann::ordered_json summary = {{words.done, counts.done},
+                                      {"written", counts.written},
+                                      {"unchanged", counts.unchanged},
+                                      {"failed", counts.failed},
+                                      {"not_attempted", counts.not_attempted}};
+    if (seconds) summary["seconds"] = *seconds;
+    fmt::print(stderr, "{}\n", nlohmann::ordered_json{{"summary", summary}}.dump());
+    return;
+  }
+  fmt::print(stderr, "{}: {} {} ({} files written, {} unchanged), {} failed{}{}\n", words.command,
+             counts.done, words.done, counts.written, counts.unchanged, counts.failed,
+             counts.not_attempted > 0
+                 ? fmt::format(", {} not attempted (use --keep-going)", counts.not_attempted)
+                 : "",
+             seconds ? fmt::format(" in {:.2f} s", *seconds) : "");
+}
+
+fs::path depfile_path(const std::string& depfile_option, bool write_depfile,
+                      const fs::path& output_directory, const char* default_name) {
+  if (!depfile_option.empty()) return depfile_option;
+  return write_depfile ? output_directory / default_name : fs::path();
+}
+
+bool write_depfile(const fs::path& path, const std::vector<fs::path>& targets,
+                   std::vector<fs::path> dependencies) {
+  if (const fs::path self = matc_executable(); !self.empty()) dependencies.push_back(self);
+  try {
+    write_file_atomically(path, depfile_text(targets, dependencies));
+    return true;
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "{}: error: {}\n", path.string(), error.what());
+    return false;
+  }
+}
+
+}  // namespace matc::cli

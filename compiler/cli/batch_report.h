@@ -1,0 +1,68 @@
+// What the batch commands (the compile, `matc bake`, `matc import`) share around their work: the
+// check that no output overwrites an input, the dependency file, and the summary line.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "atomic_file.h"
+
+namespace matc::cli {
+
+// The inputs that lie in the output directory (the only ones an output can overwrite), by file
+// name, so that a batch of 100,000 keeps no more than those.
+class InputsInOutputDirectory {
+ public:
+  explicit InputsInOutputDirectory(const std::filesystem::path& output_directory);
+  // `as_given` is how the user named it (what the error quotes); `path` where it lies.
+  void add(const std::filesystem::path& path, const std::string& as_given);
+  // The input (as given) that writing `output`, a file in the output directory, would replace.
+  std::optional<std::string> overwritten_by(const std::filesystem::path& output) const;
+
+ private:
+  std::filesystem::path directory_identity_;
+  std::map<std::string, std::string> inputs_;  // file name -> as given
+};
+
+// "an output directory (-o) that holds no input file": what the overwrite error asks for.
+inline constexpr const char* kOutputDirectoryRule =
+    "an output directory (-o) that holds no input file";
+
+// The counts a batch ends with.
+struct BatchCounts {
+  std::size_t done = 0;  // materials compiled, assets baked, materials imported
+  std::size_t written = 0;
+  std::size_t unchanged = 0;
+  std::size_t failed = 0;
+  std::size_t not_attempted = 0;
+
+  void count(WriteOutcome outcome) { ++(outcome == WriteOutcome::written ? written : unchanged); }
+};
+
+// How a command names its summary: "matc bake: 3 baked (...)".
+struct BatchSummaryWords {
+  const char* command;  // "matc", "matc bake", "matc import"
+  const char* done;     // "compiled", "baked", "imported": also the JSON key
+};
+
+// One line on standard error (or one JSON object when diagnostics are JSON), unless `quiet`.
+// `seconds`, when given, is how long the batch took.
+void print_batch_summary(const BatchSummaryWords& words, const BatchCounts& counts, bool quiet,
+                         std::optional<double> seconds = std::nullopt);
+
+// --depfile FILE, or -MD's DIR/`default_name`, or none (empty).
+std::filesystem::path depfile_path(const std::string& depfile_option, bool write_depfile,
+                                   const std::filesystem::path& output_directory,
+                                   const char* default_name);
+
+// Writes the dependency file (the matc binary added to `dependencies`); on failure prints the
+// reason and returns false.
+bool write_depfile(const std::filesystem::path& path,
+                   const std::vector<std::filesystem::path>& targets,
+                   std::vector<std::filesystem::path> dependencies);
+
+}  // namespace matc::cli
