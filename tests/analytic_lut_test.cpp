@@ -29,7 +29,7 @@ TEST_P(ShippedAnalyticLut, RegenerationReproducesTheCheckedInTable) {
         ASSERT_NEAR(a[c], b[c], 1e-9)
             << "bbar_" << c << " at NdotV " << ndotv << ", roughness " << roughness
             << ": rerun `matc basis analytic-lut --basis " << matc::runtime::basis_name(GetParam())
-            << " -o runtime/src/" << matc::runtime::basis_name(GetParam())
+            << " -o runtime/src/generated/" << matc::runtime::basis_name(GetParam())
             << "_analytic_lut_table.cpp`";
       }
     }

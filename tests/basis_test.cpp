@@ -104,7 +104,7 @@ TEST_P(FittedShippedBasis, RegenerationReproducesTheCheckedInTable) {
     for (std::size_t j = 0; j < shipped.samples(); ++j) {
       ASSERT_NEAR(fitted.tables[i][j], shipped.tables[i][j], 1e-10)
           << "b_" << i + 1 << " at sample " << j << ": rerun `matc basis fit --basis "
-          << runtime::basis_name(GetParam()) << " -o runtime/src/"
+          << runtime::basis_name(GetParam()) << " -o runtime/src/generated/"
           << runtime::basis_name(GetParam()) << "_basis_table.cpp`";
     }
   }

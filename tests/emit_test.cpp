@@ -334,7 +334,7 @@ TEST(Build, WgslOutputsAreCompleteWgsl) {
 
 // Per-material SPIR-V is patched from a checked-in template (no glslang run per material): the
 // templates are what today's compile gives (rerun `matc basis material-modules -o
-// compiler/src/emit/material_module_templates.cpp`), and every example's patched module is the
+// compiler/src/generated/material_module_templates.cpp`), and every example's patched module is the
 // full compile's, byte for byte, or, where the optimiser merges a coefficient with an equal
 // constant, a module that validates and exports the same two functions.
 TEST(MaterialModuleTemplates, CheckedInTemplatesAreCurrent) {

@@ -236,7 +236,7 @@ TEST(Fbar, TableFollowsTheDirectReferenceOnMeasuredMetals) {
 }
 
 // The checked-in hashes are those of the tables baked today, for every basis, format and
-// precision (rerun `matc basis lut-hashes -o compiler/src/lut/default_lut_hashes.cpp`), and only
+// precision (rerun `matc basis lut-hashes -o compiler/src/generated/default_lut_hashes.cpp`), and only
 // the default size and sample count have one.
 TEST(DefaultLutHashes, CheckedInHashesAreCurrent) {
   const std::vector<DefaultLutHash> computed = compute_default_lut_hashes();

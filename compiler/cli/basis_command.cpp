@@ -21,6 +21,7 @@
 #include "matc/lut/analytic_lut_fit.h"
 #include "matc/lut/default_lut_hashes.h"
 #include "matc/runtime/basis.h"
+#include "matc/runtime/shipped_bases.h"
 
 namespace matc::cli {
 namespace {
@@ -45,30 +46,14 @@ struct LtcTableOptions {
   std::string objective = "l1";  // "l1" or "l3" (Heitz et al.'s)
 };
 
-std::string_view basis_description(runtime::BasisKind kind) {
-  switch (kind) {
-    case runtime::BasisKind::paper:
-      return "Belcour, Bati, Barla 2020; coefficients matched at the probes";
-    case runtime::BasisKind::f82:
-      return "b_1 = (1 - mu)^5 and b_2 = mu (1 - mu)^6 span F82-tint, b_3 fitted to conductors; "
-             "near-minimax coefficients";
-    case runtime::BasisKind::powers:
-      return "b_1 = (1 - mu)^6, b_2 = mu (1 - mu)^3, b_3 = mu (1 - mu)^9 in closed form; "
-             "near-minimax coefficients";
-    case runtime::BasisKind::extended:
-      break;
-  }
-  return "the authors' dielectrics extended with conductors, curves weighted by 1 - F0; "
-         "near-minimax coefficients";
-}
-
 int run_basis(const BasisOptions& options) {
   const runtime::BasisKind kind = basis_of(options.basis);
   const runtime::BasisView basis = runtime::shipped_basis(kind);
   if (!options.json) {
     const bool closed_form = kind == runtime::BasisKind::powers;
     fmt::print("basis: {} ({}), b_0 = 1 and b_1..b_3 {}\n", runtime::basis_name(kind),
-               basis_description(kind), closed_form ? "in closed form" : "tabulated");
+               runtime::shipped_basis_record(kind).description,
+               closed_form ? "in closed form" : "tabulated");
     fmt::print("samples: {} cosines mu_j = j / {}\n", basis.samples(), basis.samples() - 1);
     fmt::print("probes: mu_1 = {:.4f} (theta {:.3f} rad), mu_2 = {:.4f} (theta {:.3f} rad)\n",
                basis.probe_mu(0), std::acos(basis.probe_mu(0)), basis.probe_mu(1),
@@ -223,35 +208,36 @@ std::vector<Command> register_basis(CLI::App& app) {
     commands.push_back({command, [options, run] { return run(*options); }});
   };
   add_source_command("fit", "Refit the basis from its training set and write the C++ table source",
-                     "runtime/src/<basis>_basis_table.cpp", true, run_basis_fit);
+                     "runtime/src/generated/<basis>_basis_table.cpp", true, run_basis_fit);
   add_source_command(
       "coefficient-table",
       "Refit the coefficient table (c_2, c_3 over reflectivity and edge tint) and write its C++ "
       "source",
-      "runtime/src/<basis>_coefficient_table.cpp", true, run_basis_coefficient_table);
+      "runtime/src/generated/<basis>_coefficient_table.cpp", true, run_basis_coefficient_table);
   add_source_command(
       "analytic-lut",
       "Bake the basis' default preintegrated table, fit its closed form (the albedo and a "
       "two-point quadrature of the basis, docs/shaders.md) and write the C++ source",
-      "runtime/src/<basis>_analytic_lut_table.cpp", true, run_basis_analytic_lut);
+      "runtime/src/generated/<basis>_analytic_lut_table.cpp", true, run_basis_analytic_lut);
   add_source_command(
       "lut-hashes",
       "Bake the default preintegrated table of every basis and write the C++ source of its "
       "files' hashes (what headers and manifests name without baking)",
-      "compiler/src/lut/default_lut_hashes.cpp", false, run_basis_lut_hashes);
+      "compiler/src/generated/default_lut_hashes.cpp", false, run_basis_lut_hashes);
   add_source_command(
       "material-modules",
       "Compile every basis' material library module with placeholder coefficients and write the "
       "C++ source of those templates (what per-material SPIR-V is patched from)",
-      "compiler/src/emit/material_module_templates.cpp", false, run_basis_material_modules);
+      "compiler/src/generated/material_module_templates.cpp", false, run_basis_material_modules);
 
   auto ltc_table = std::make_shared<LtcTableOptions>();
   CLI::App* ltc_table_command = basis_command->add_subcommand(
       "ltc-table",
       "Refit the LTC table of GGX (inverse matrices over NdotV and roughness, for area lights) "
       "and write its C++ source");
-  ltc_table_command->add_option("-o,--output", ltc_table->output,
-                                "Where to write (runtime/src/ltc_table.cpp); default stdout");
+  ltc_table_command->add_option(
+      "-o,--output", ltc_table->output,
+      "Where to write (runtime/src/generated/ltc_table.cpp); default stdout");
   ltc_table_command
       ->add_option("--quality", ltc_table->quality,
                    "Also write each texel's fit quality as CSV (distribution and polygon-light "

@@ -4,27 +4,12 @@
 #include <cmath>
 
 #include "matc/runtime/shader_basis.h"
+#include "matc/runtime/shipped_bases.h"
 
 namespace matc::runtime {
 
-// Defined by the generated tables (src/<basis>_analytic_lut_table.cpp).
-const AnalyticLutCoefficients& extended_analytic_lut();
-const AnalyticLutCoefficients& paper_analytic_lut();
-const AnalyticLutCoefficients& f82_analytic_lut();
-const AnalyticLutCoefficients& powers_analytic_lut();
-
 const AnalyticLutCoefficients& shipped_analytic_lut(BasisKind kind) {
-  switch (kind) {
-    case BasisKind::paper:
-      return paper_analytic_lut();
-    case BasisKind::f82:
-      return f82_analytic_lut();
-    case BasisKind::powers:
-      return powers_analytic_lut();
-    case BasisKind::extended:
-      break;
-  }
-  return extended_analytic_lut();
+  return shipped_basis_record(kind).analytic_lut();
 }
 
 std::array<double, 2> analytic_lut_coordinates(double ndotv, double roughness) {

@@ -3,22 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "matc/runtime/powers_basis.h"
+#include "matc/runtime/shipped_bases.h"
 
 namespace matc::runtime {
 
 std::string_view basis_name(BasisKind kind) {
-  switch (kind) {
-    case BasisKind::paper:
-      return "paper";
-    case BasisKind::f82:
-      return "f82";
-    case BasisKind::powers:
-      return "powers";
-    case BasisKind::extended:
-      break;
-  }
-  return "extended";
+  return shipped_basis_record(kind).name;
 }
 
 std::optional<BasisKind> basis_from_name(std::string_view name) {
@@ -28,17 +18,7 @@ std::optional<BasisKind> basis_from_name(std::string_view name) {
 }
 
 BasisView shipped_basis(BasisKind kind) {
-  switch (kind) {
-    case BasisKind::paper:
-      return paper_basis();
-    case BasisKind::f82:
-      return f82_basis();
-    case BasisKind::powers:
-      return powers_basis();
-    case BasisKind::extended:
-      break;
-  }
-  return extended_basis();
+  return shipped_basis_record(kind).table();
 }
 
 std::array<double, kBasisSize> BasisView::at_index(std::size_t index) const {

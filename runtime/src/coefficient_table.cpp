@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "matc/runtime/shipped_bases.h"
 #include "texel_axis.h"
 
 namespace matc::runtime {
@@ -85,17 +86,7 @@ ArtisticRgb artistic_from_ior(const Rgb& n, const Rgb& k) {
 }
 
 CoefficientTableView shipped_coefficient_table(BasisKind kind) {
-  switch (kind) {
-    case BasisKind::paper:
-      return paper_coefficient_table();
-    case BasisKind::f82:
-      return f82_coefficient_table();
-    case BasisKind::powers:
-      return powers_coefficient_table();
-    case BasisKind::extended:
-      break;
-  }
-  return extended_coefficient_table();
+  return shipped_basis_record(kind).coefficient_table();
 }
 
 }  // namespace matc::runtime

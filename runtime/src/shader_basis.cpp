@@ -1,6 +1,7 @@
 #include "matc/runtime/shader_basis.h"
 
 #include "matc/runtime/powers_basis.h"
+#include "matc/runtime/shipped_bases.h"
 
 namespace matc::runtime {
 
@@ -10,21 +11,15 @@ std::array<double, kBasisSize> evaluate_shader_basis(const ShaderBasis& basis, d
 }
 
 const ShaderBasis& shipped_shader_basis(BasisKind kind) {
-  static const ShaderBasis paper = paper_basis_polynomial();
-  static const ShaderBasis extended = extended_basis_polynomial();
-  static const ShaderBasis f82 = f82_basis_polynomial();
-  static const ShaderBasis powers = ShaderBasis::powers();
-  switch (kind) {
-    case BasisKind::paper:
-      return paper;
-    case BasisKind::f82:
-      return f82;
-    case BasisKind::powers:
-      return powers;
-    case BasisKind::extended:
-      break;
-  }
-  return extended;
+  // Built once: a fitted basis' form holds its polynomial's coefficients.
+  static const std::array<ShaderBasis, kShippedBases.size()> forms = [] {
+    std::array<ShaderBasis, kShippedBases.size()> built;
+    for (std::size_t i = 0; i < built.size(); ++i)
+      built[i] = shipped_basis_records()[i].shader_form();
+    return built;
+  }();
+  return forms[static_cast<std::size_t>(&shipped_basis_record(kind) -
+                                        shipped_basis_records().data())];
 }
 
 }  // namespace matc::runtime

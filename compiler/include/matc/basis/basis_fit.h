@@ -104,7 +104,7 @@ FittedBasis powers_fitted_basis();
 // basis is returned as powers_fitted_basis().
 FittedBasis fit_shipped_basis(runtime::BasisKind kind);
 
-// The C++ source of runtime/src/<name>_basis_table.cpp for a refit shipped basis.
+// The C++ source of runtime/src/generated/<name>_basis_table.cpp for a refit shipped basis.
 std::string basis_table_source(const FittedBasis& basis);
 
 }  // namespace matc

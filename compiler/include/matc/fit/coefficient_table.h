@@ -108,7 +108,7 @@ std::vector<float> rgba_texels(const CoefficientTable& table);
 runtime::ChannelCoefficients channel_coefficients(const CoefficientTable& table,
                                                   double reflectivity, double edge_tint);
 
-// The C++ source of runtime/src/<basis>_coefficient_table.cpp (the shipped layout).
+// The C++ source of runtime/src/generated/<basis>_coefficient_table.cpp (the shipped layout).
 std::string coefficient_table_source(const CoefficientTable& table);
 
 }  // namespace matc

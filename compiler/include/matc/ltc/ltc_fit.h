@@ -79,7 +79,7 @@ LtcTable fit_ltc_table(const LtcFitOptions& options, std::size_t first_row = 0,
 std::vector<double> ltc_polygon_errors(const runtime::LtcTableView& table, std::size_t samples,
                                        unsigned threads = 0);
 
-// The C++ source of runtime/src/ltc_table.cpp for this table.
+// The C++ source of runtime/src/generated/ltc_table.cpp for this table.
 std::string ltc_table_source(const LtcTable& table);
 
 }  // namespace matc

@@ -36,7 +36,7 @@ struct AnalyticLutError {
 AnalyticLutError analytic_lut_error(const runtime::AnalyticLutCoefficients& analytic,
                                     const Lut& texture, const runtime::BasisView& basis);
 
-// src/<basis>_analytic_lut_table.cpp, defining runtime::<basis>_analytic_lut().
+// src/generated/<basis>_analytic_lut_table.cpp, defining runtime::<basis>_analytic_lut().
 std::string analytic_lut_source(runtime::BasisKind kind,
                                 const runtime::AnalyticLutCoefficients& coefficients);
 

@@ -47,7 +47,7 @@ struct AnalyticLutCoefficients {
   AnalyticLutField weight_b{};      // t
 };
 
-// The checked-in fit of each shipped basis (src/<basis>_analytic_lut_table.cpp).
+// The checked-in fit of each shipped basis (src/generated/<basis>_analytic_lut_table.cpp).
 const AnalyticLutCoefficients& shipped_analytic_lut(BasisKind kind);
 
 // (x, y) above at (NdotV, roughness), inputs clamped to [0, 1].
