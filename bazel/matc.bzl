@@ -18,31 +18,8 @@ outputs are named after its JSON "name", which Bazel cannot read at analysis tim
 name must equal it (or give `material_name`).
 """
 
-_MATERIAL_EXTENSIONS = {
-    "glsl": [".glsl"],
-    "hlsl": [".hlsl"],
-    "wgsl": [".wgsl"],
-    "spirv": [".spv"],
-    "header": [".h"],
-    "json": [".json"],
-}
-
-_SHARED_FILES = {
-    "glsl": ["matc_fresnel.glsl"],
-    "hlsl": ["matc_fresnel.hlsl"],
-    "wgsl": ["matc_fresnel.wgsl"],
-    "spirv": ["matc_fresnel.spv"],
-}
-
-_TABLE_STEMS = {
-    "lut": "matc_lut",
-    "coefficient-table": "matc_coefficient_table",
-    "ltc": "matc_ltc",
-}
-
-_TABLE_EXTENSIONS = {"ktx2": ".ktx2", "dds": ".dds", "raw": ".bin", "header": ".h"}
-
-_ALL = ["glsl", "hlsl", "wgsl", "spirv", "header", "json", "lut", "coefficient-table", "ltc"]
+# The file names, generated from matc's output layout (`matc layout --generate bazel`).
+load(":matc_layout.bzl", "MATERIAL_EXTENSIONS", "OUTPUT_KINDS", "SHARED_FILES", "TABLE_EXTENSIONS", "TABLE_STEMS")
 
 _COMMON_ATTRS = {
     "matc": attr.label(
@@ -52,7 +29,7 @@ _COMMON_ATTRS = {
         allow_single_file = True,
         doc = "The matc binary.",
     ),
-    "emit": attr.string_list(default = _ALL, doc = "Output kinds (matc --emit)."),
+    "emit": attr.string_list(default = OUTPUT_KINDS, doc = "Output kinds (matc --emit)."),
     "out_dir": attr.string(default = "matc", doc = "Directory of the outputs, in the package."),
     "options": attr.string_list(doc = "Other matc options (e.g. --lut-size 64)."),
 }
@@ -70,9 +47,10 @@ def _run_matc(ctx, outputs, inputs, arguments, mnemonic, message):
 def _matc_material_impl(ctx):
     name = ctx.attr.material_name or ctx.label.name
     outputs = []
-    for kind in ctx.attr.emit:
-        for extension in _MATERIAL_EXTENSIONS.get(kind, []):
-            outputs.append(ctx.actions.declare_file("%s/%s%s" % (ctx.attr.out_dir, name, extension)))
+    for kind in OUTPUT_KINDS:
+        if kind in ctx.attr.emit and kind in MATERIAL_EXTENSIONS:
+            file = "%s/%s%s" % (ctx.attr.out_dir, name, MATERIAL_EXTENSIONS[kind])
+            outputs.append(ctx.actions.declare_file(file))
     if not outputs:
         fail("matc_material: emit names no per-material output (glsl, hlsl, wgsl, spirv, header, json)")
     _run_matc(
@@ -97,12 +75,14 @@ matc_material = rule(
 
 def _matc_shared_impl(ctx):
     outputs = []
-    table_extension = _TABLE_EXTENSIONS[ctx.attr.lut_format]
-    for kind in ctx.attr.emit:
-        for file in _SHARED_FILES.get(kind, []):
-            outputs.append(ctx.actions.declare_file("%s/%s" % (ctx.attr.out_dir, file)))
-        if kind in _TABLE_STEMS:
-            table = "%s/%s%s" % (ctx.attr.out_dir, _TABLE_STEMS[kind], table_extension)
+    table_extension = TABLE_EXTENSIONS[ctx.attr.lut_format]
+    for kind in OUTPUT_KINDS:
+        if kind not in ctx.attr.emit:
+            continue
+        if kind in SHARED_FILES:
+            outputs.append(ctx.actions.declare_file("%s/%s" % (ctx.attr.out_dir, SHARED_FILES[kind])))
+        if kind in TABLE_STEMS:
+            table = "%s/%s%s" % (ctx.attr.out_dir, TABLE_STEMS[kind], table_extension)
             outputs.append(ctx.actions.declare_file(table))
             outputs.append(ctx.actions.declare_file(table + ".json"))
     if not outputs:
@@ -120,7 +100,7 @@ def _matc_shared_impl(ctx):
 matc_shared = rule(
     implementation = _matc_shared_impl,
     attrs = dict(_COMMON_ATTRS, **{
-        "lut_format": attr.string(default = "ktx2", values = ["ktx2", "dds", "raw", "header"]),
+        "lut_format": attr.string(default = "ktx2", values = TABLE_EXTENSIONS.keys()),
     }),
     doc = "The shared files: matc_fresnel.*, the tables (matc --shared-only).",
 )

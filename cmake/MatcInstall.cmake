@@ -27,5 +27,6 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/matcConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/matcConfig.cmake ${PROJECT_BINARY_DIR}/matcConfigVersion.cmake
               ${PROJECT_SOURCE_DIR}/cmake/MatcAddMaterials.cmake
+              ${PROJECT_SOURCE_DIR}/cmake/MatcOutputLayout.cmake
               ${PROJECT_SOURCE_DIR}/cmake/MatcAddBakedTextures.cmake
         DESTINATION ${_matc_package_dir})

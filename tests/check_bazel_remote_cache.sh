@@ -26,7 +26,7 @@ trap cleanup EXIT
 workspace=$work/workspace
 mkdir -p "$workspace/bazel" "$workspace/tools" "$workspace/materials"
 touch "$workspace/WORKSPACE"
-cp "$source_dir/bazel/matc.bzl" "$source_dir/bazel/BUILD" "$workspace/bazel/"
+cp "$source_dir/bazel/matc.bzl" "$source_dir/bazel/matc_layout.bzl" "$source_dir/bazel/BUILD" "$workspace/bazel/"
 cp "$matc" "$workspace/tools/matc"
 echo 'exports_files(["matc"])' >"$workspace/tools/BUILD"
 cp -r "$source_dir/examples/materials/." "$workspace/materials/"

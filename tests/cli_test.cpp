@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "example_files.h"
-#include "matc/emit/build.h"
+#include "matc/emit/output_layout.h"
 #include "matc/lut/lut_files.h"
 #include "test_images.h"
 
@@ -341,9 +341,9 @@ TEST_F(MatcCli, NamesOfTheSharedOutputsAreReserved) {
   EXPECT_FALSE(fs::exists(dir_ / "out" / "Matc_Lut.glsl"));
 }
 
-// Every shared file's stem (the build's own list, issue #29: matc_ltc and matc_coefficient_table
-// were missing and a material so named overwrote their headers with --lut header), in every table
-// format and in either case: refused, and nothing written.
+// Every shared file's stem (the output layout's list, issue #29: matc_ltc and
+// matc_coefficient_table were missing and a material so named overwrote their headers with --lut
+// header), in every table format and in either case: refused, and nothing written.
 TEST_F(MatcCli, EverySharedFileStemIsReservedInEveryFormat) {
   const std::vector<std::string> stems = matc::shared_file_stems();
   ASSERT_EQ(stems.size(), 5u);
@@ -393,6 +393,62 @@ TEST_F(MatcCli, EmitSelectsTheOutputKinds) {
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_NE(unknown.err.find("msl"), std::string::npos) << unknown.err;
   EXPECT_FALSE(fs::exists(dir_ / "out2"));
+}
+
+// `matc layout` (what build systems declare) names exactly the files a compile writes, for each
+// output kind alone, every table format, and the split layout's two halves.
+TEST_F(MatcCli, LayoutNamesExactlyTheFilesACompileWrites) {
+  write_file(dir_ / "good.json", kGood);
+  const auto written_files = [&](const fs::path& directory) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(directory))
+      names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  };
+  const auto listed_files = [](const std::string& out) {
+    std::vector<std::string> names;
+    std::istringstream lines(out);
+    for (std::string line; std::getline(lines, line);)
+      names.push_back(line);
+    std::sort(names.begin(), names.end());
+    return names;
+  };
+  std::vector<std::vector<std::string>> cases;
+  for (const std::string& kind : matc::output_kind_names())
+    cases.push_back({"--emit", kind});
+  for (const std::string& format : matc::lut_format_names())
+    cases.push_back({"--lut", format});
+  cases.push_back({"--no-shared"});
+  cases.push_back({"--shared-only"});
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const std::string out = "out" + std::to_string(i);
+    const bool shared_only = cases[i].front() == "--shared-only";
+    std::vector<std::string> compile = {"-q", "-o", out};
+    std::vector<std::string> layout = {"layout"};
+    compile.insert(compile.end(), cases[i].begin(), cases[i].end());
+    layout.insert(layout.end(), cases[i].begin(), cases[i].end());
+    if (!shared_only) {
+      compile.push_back("good.json");
+      layout.push_back("good");
+    }
+    const CommandResult compiled = run(compile);
+    ASSERT_EQ(compiled.exit_code, 0) << compiled.err;
+    const CommandResult listed = run(layout);
+    ASSERT_EQ(listed.exit_code, 0) << listed.err;
+    EXPECT_EQ(listed_files(listed.out), written_files(dir_ / out)) << cases[i].front();
+  }
+}
+
+// The CMake function's and the Bazel rule's file names are generated from the layout.
+TEST_F(MatcCli, BuildSystemLayoutSourcesAreCurrent) {
+  for (const auto& [system, file] : {std::pair{"cmake", "cmake/MatcOutputLayout.cmake"},
+                                     std::pair{"bazel", "bazel/matc_layout.bzl"}}) {
+    const CommandResult generated = run({"layout", "--generate", system});
+    ASSERT_EQ(generated.exit_code, 0) << generated.err;
+    EXPECT_EQ(generated.out, read_file(fs::path(MATC_SOURCE_DIR) / file))
+        << file << " is stale: rerun `matc layout --generate " << system << " -o " << file << "`";
+  }
 }
 
 TEST_F(MatcCli, EmbedLutPutsTheTableInTheSharedLibrary) {

@@ -236,8 +236,8 @@ TEST(Fbar, TableFollowsTheDirectReferenceOnMeasuredMetals) {
 }
 
 // The checked-in hashes are those of the tables baked today, for every basis, format and
-// precision (rerun `matc basis lut-hashes -o compiler/src/generated/default_lut_hashes.cpp`), and only
-// the default size and sample count have one.
+// precision (rerun `matc basis lut-hashes -o compiler/src/generated/default_lut_hashes.cpp`), and
+// only the default size and sample count have one.
 TEST(DefaultLutHashes, CheckedInHashesAreCurrent) {
   const std::vector<DefaultLutHash> computed = compute_default_lut_hashes();
   const std::vector<DefaultLutHash> checked_in = checked_in_default_lut_hashes();

@@ -12,6 +12,7 @@
 
 #include "atomic_file.h"
 #include "commands.h"
+#include "generated_source.h"
 #include "lut_options.h"
 #include "matc/basis/basis_fit.h"
 #include "matc/basis/basis_polynomial_fit.h"
@@ -93,23 +94,6 @@ int run_basis(const BasisOptions& options) {
   return kExitSuccess;
 }
 
-// The generated source on standard output, or written atomically to the output file.
-int write_source(const std::string& output, const std::string& source) {
-  if (output.empty()) {
-    fmt::print("{}", source);
-    return kExitSuccess;
-  }
-  try {
-    const WriteOutcome outcome = write_file_atomically(output, source);
-    fmt::print(stderr, "matc: {} {}\n", outcome == WriteOutcome::written ? "wrote" : "unchanged",
-               output);
-  } catch (const std::exception& error) {
-    fmt::print(stderr, "{}: error: {}\n", output, error.what());
-    return kExitInputError;
-  }
-  return kExitSuccess;
-}
-
 int run_basis_fit(const BasisFitOptions& options) {
   const runtime::BasisKind kind = basis_of(options.basis);
   if (std::find(runtime::kFittedBases.begin(), runtime::kFittedBases.end(), kind) ==
@@ -126,20 +110,20 @@ int run_basis_fit(const BasisFitOptions& options) {
   const FittedBasis basis = fit_shipped_basis(kind);
   fmt::print(stderr, "matc: fitted basis: probes mu_1 = {:.4f}, mu_2 = {:.4f}\n",
              basis.view().probe_mu(0), basis.view().probe_mu(1));
-  return write_source(options.output, basis_table_source(basis));
+  return write_generated_source(options.output, basis_table_source(basis));
 }
 
 int run_basis_coefficient_table(const BasisFitOptions& options) {
   const CoefficientTable table = fit_coefficient_table(basis_of(options.basis));
   fmt::print(stderr, "matc: fitted the {} x {} coefficient table of the {} basis\n", table.size(),
              table.size(), runtime::basis_name(table.basis));
-  return write_source(options.output, coefficient_table_source(table));
+  return write_generated_source(options.output, coefficient_table_source(table));
 }
 
 int run_basis_lut_hashes(const BasisFitOptions& options) {
   const std::vector<DefaultLutHash> hashes = compute_default_lut_hashes();
   fmt::print(stderr, "matc: hashed {} default table files\n", hashes.size());
-  return write_source(options.output, default_lut_hashes_source(hashes));
+  return write_generated_source(options.output, default_lut_hashes_source(hashes));
 }
 
 int run_basis_analytic_lut(const BasisFitOptions& options) {
@@ -152,13 +136,13 @@ int run_basis_analytic_lut(const BasisFitOptions& options) {
              "matc: fitted the closed form of the {} basis' table: |Fbar - texture| over the "
              "measured metals max {:.4f}, mean {:.1e}\n",
              runtime::basis_name(kind), error.max, error.mean);
-  return write_source(options.output, analytic_lut_source(kind, coefficients));
+  return write_generated_source(options.output, analytic_lut_source(kind, coefficients));
 }
 
 int run_basis_material_modules(const BasisFitOptions& options) {
   const std::vector<MaterialModuleTemplate> templates = compile_material_module_templates();
   fmt::print(stderr, "matc: compiled {} material module templates\n", templates.size());
-  return write_source(options.output, material_module_templates_source(templates));
+  return write_generated_source(options.output, material_module_templates_source(templates));
 }
 
 int run_basis_ltc_table(const LtcTableOptions& options) {
@@ -185,7 +169,7 @@ int run_basis_ltc_table(const LtcTableOptions& options) {
       return kExitInputError;
     }
   }
-  return write_source(options.output, ltc_table_source(table));
+  return write_generated_source(options.output, ltc_table_source(table));
 }
 
 }  // namespace

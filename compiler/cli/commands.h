@@ -35,5 +35,6 @@ Command register_lut(CLI::App& app);
 Command register_bake(CLI::App& app);
 Command register_report(CLI::App& app);
 Command register_import(CLI::App& app);
+Command register_layout(CLI::App& app);
 
 }  // namespace matc::cli

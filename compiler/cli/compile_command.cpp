@@ -63,7 +63,7 @@ inline constexpr const char* kDepfileName = "matc.d";
 
 namespace fs = std::filesystem;
 
-// Stems of the files every build writes once (Build's own list): a material of that name, in
+// Stems of the files every build writes once (the output layout's): a material of that name, in
 // any case, would overwrite them.
 const std::set<std::string>& reserved_names() {
   static const std::set<std::string> names = [] {
@@ -76,8 +76,8 @@ const std::set<std::string>& reserved_names() {
 // Every file a material of this name may write, whatever --emit says.
 std::vector<fs::path> possible_outputs(const fs::path& directory, const std::string& name) {
   std::vector<fs::path> paths;
-  for (const char* extension : {".json", ".glsl", ".hlsl", ".wgsl", ".spv", ".h"})
-    paths.push_back(directory / (name + extension));
+  for (const std::string& file : material_file_names(all_output_kinds(), name))
+    paths.push_back(directory / file);
   return paths;
 }
 

@@ -27,8 +27,8 @@ int main(int argc, char** argv) {
   std::vector<Command> commands = {register_eval(app), register_validate(app)};
   for (Command& command : register_basis(app))
     commands.push_back(std::move(command));
-  for (Command (*add)(CLI::App&) :
-       {register_lut, register_bake, register_report, register_import, register_compile})
+  for (Command (*add)(CLI::App&) : {register_lut, register_bake, register_report, register_import,
+                                    register_layout, register_compile})
     commands.push_back(add(app));
 
   std::string diagnostics_format = "text";

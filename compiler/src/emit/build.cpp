@@ -25,23 +25,6 @@
 namespace matc {
 namespace {
 
-constexpr std::string_view kLibraryStem = "matc_fresnel";
-constexpr std::string_view kLutStem = "matc_lut";
-constexpr std::string_view kManifestStem = "matc_manifest";
-constexpr std::string_view kManifestFile = "matc_manifest.json";
-
-constexpr std::array<std::pair<OutputKind, std::string_view>, 9> kOutputKinds = {{
-    {OutputKind::glsl, "glsl"},
-    {OutputKind::hlsl, "hlsl"},
-    {OutputKind::wgsl, "wgsl"},
-    {OutputKind::spirv, "spirv"},
-    {OutputKind::header, "header"},
-    {OutputKind::json, "json"},
-    {OutputKind::lut, "lut"},
-    {OutputKind::coefficient_table, "coefficient-table"},
-    {OutputKind::ltc, "ltc"},
-}};
-
 // The shader snippets, in the order their files are written.
 constexpr std::array<ShaderLanguage, 3> kShaderLanguages = {
     ShaderLanguage::glsl, ShaderLanguage::hlsl, ShaderLanguage::wgsl};
@@ -89,19 +72,6 @@ std::string spirv_bytes(const SpirvWords& words) {
 
 }  // namespace
 
-std::vector<std::string> output_kind_names() {
-  std::vector<std::string> names;
-  for (const auto& [kind, name] : kOutputKinds)
-    names.emplace_back(name);
-  return names;
-}
-
-std::optional<OutputKind> output_kind_from_name(std::string_view name) {
-  for (const auto& [kind, kind_name] : kOutputKinds)
-    if (kind_name == name) return kind;
-  return std::nullopt;
-}
-
 std::vector<std::string> shared_library_exports(bool embedded_lut) {
   std::vector<std::string> names = {"matc_basis",
                                     "matc_fresnel",
@@ -144,11 +114,10 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
   }
   stored_coefficient_table_ =
       matc::stored_coefficient_table(options_.basis, options_.coefficient_table_precision);
-  coefficient_table_file_ =
-      fmt::format("{}{}", coefficient_table_stem(), lut_file_extension(options_.lut_format));
+  coefficient_table_file_ = shared_file_name(OutputKind::coefficient_table, options_.lut_format);
   coefficient_table_file_bytes_ = encode_coefficient_table(
       stored_coefficient_table_, options_.lut_format, options_.coefficient_table_precision);
-  ltc_file_ = fmt::format("{}{}", ltc_table_stem(), lut_file_extension(options_.lut_format));
+  ltc_file_ = shared_file_name(OutputKind::ltc, options_.lut_format);
   ltc_file_bytes_ = encode_ltc_table(runtime::shipped_ltc_table(), options_.lut_format);
   inputs_hash_ = ContentHash().add(options_key()).hex();
   ShaderLibraryOptions library_options{options_.lut.size, stored_coefficient_table_.size(),
@@ -185,7 +154,7 @@ LutReference Build::lut_reference() const {
   // The default table's hash is checked in: naming it needs no bake.
   const auto known =
       default_lut_hash(options_.basis, options_.lut_format, options_.lut_precision, options_.lut);
-  return {fmt::format("{}{}", kLutStem, lut_file_extension(options_.lut_format)), options_.lut.size,
+  return {shared_file_name(OutputKind::lut, options_.lut_format), options_.lut.size,
           known ? std::string(*known) : baked_table().hash,
           std::string(runtime::basis_name(options_.basis))};
 }
@@ -237,12 +206,12 @@ std::vector<OutputFile> Build::shared_outputs() const {
   const auto& emit = options_.emit;
   for (const ShaderLanguage language : kShaderLanguages) {
     if (emit.contains(output_kind_of(language))) {
-      files.push_back({fmt::format("{}{}", kLibraryStem, shader_file_extension(language)),
+      files.push_back({shared_file_name(output_kind_of(language), options_.lut_format),
                        library_source(language)});
     }
   }
   if (emit.contains(OutputKind::spirv)) {
-    const std::string name = fmt::format("{}.spv", kLibraryStem);
+    const std::string name = shared_file_name(OutputKind::spirv, options_.lut_format);
     files.push_back(
         {name, spirv_bytes(library_module(glsl_library_, name,
                                           shared_library_exports(embedded_lut_.has_value())))});
@@ -292,7 +261,8 @@ SpirvWords Build::compile_material_library_module(const CompiledMaterial& compil
   const std::string& name = compiled.material.name;
   return library_module(glsl_material_module_library_ +
                             material_snippet_source(ShaderLanguage::glsl, compiled, inputs_hash),
-                        fmt::format("{}.spv", name), material_library_exports(name));
+                        material_file_name(OutputKind::spirv, name),
+                        material_library_exports(name));
 }
 
 SpirvWords Build::validation_module(ShaderLanguage language,
@@ -328,7 +298,7 @@ MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const 
   const auto& emit = options_.emit;
   for (const ShaderLanguage language : kShaderLanguages) {
     if (emit.contains(output_kind_of(language))) {
-      out.files.push_back({fmt::format("{}{}", name, shader_file_extension(language)),
+      out.files.push_back({material_file_name(output_kind_of(language), name),
                            material_snippet_source(language, compiled, out.inputs_hash)});
     }
   }
@@ -336,16 +306,16 @@ MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const 
     // The hash is computed once: it reads the material's input files.
     const SpirvWords module = material_library_module(compiled, out.inputs_hash);
     if (emit.contains(OutputKind::spirv))
-      out.files.push_back({fmt::format("{}.spv", name), spirv_bytes(module)});
+      out.files.push_back({material_file_name(OutputKind::spirv, name), spirv_bytes(module)});
     if (emit.contains(OutputKind::header)) {
-      out.files.push_back({fmt::format("{}.h", name),
+      out.files.push_back({material_file_name(OutputKind::header, name),
                            material_c_header(compiled, out.inputs_hash, lut_reference(), module)});
     }
   }
   if (emit.contains(OutputKind::json)) {
     nlohmann::ordered_json json = compiled_material_json(compiled, basis());
     json["inputs_hash"] = out.inputs_hash;
-    out.files.push_back({fmt::format("{}.json", name), format_json(json)});
+    out.files.push_back({material_file_name(OutputKind::json, name), format_json(json)});
   }
   return out;
 }
@@ -383,7 +353,7 @@ nlohmann::ordered_json Build::manifest(const std::vector<OutputFile>& shared,
   manifest["inputs_hash"] = inputs_hash_;
   std::vector<std::string> emitted;
   for (const OutputKind kind : options_.emit)
-    emitted.emplace_back(kOutputKinds[static_cast<std::size_t>(kind)].second);
+    emitted.emplace_back(layout_of(kind).name);
   manifest["emit"] = emitted;
   const LutReference lut_reference = this->lut_reference();
   manifest["basis"] = lut_reference.basis;
@@ -444,16 +414,6 @@ std::string Build::manifest_text(const std::vector<OutputFile>& shared,
   }
   text += manifest_tail(formatted_entries.size());
   return text;
-}
-
-std::string_view manifest_file_name() {
-  return kManifestFile;
-}
-
-std::vector<std::string> shared_file_stems() {
-  const std::string_view stems[] = {kLibraryStem, kLutStem, coefficient_table_stem(),
-                                    ltc_table_stem(), kManifestStem};
-  return {std::begin(stems), std::end(stems)};
 }
 
 }  // namespace matc

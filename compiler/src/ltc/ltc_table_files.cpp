@@ -32,10 +32,6 @@ std::string encode_header(const runtime::LtcTableView& table) {
 
 }  // namespace
 
-std::string_view ltc_table_stem() {
-  return "matc_ltc";
-}
-
 std::string encode_ltc_table(const runtime::LtcTableView& table, LutFormat format) {
   const lut_writers::TexelImage image{table.size, table.size, runtime::kLtcChannels, table.texels};
   switch (format) {

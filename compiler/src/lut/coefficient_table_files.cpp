@@ -42,10 +42,6 @@ std::string encode_header(const CoefficientTable& table, LutPrecision precision)
 
 }  // namespace
 
-std::string_view coefficient_table_stem() {
-  return "matc_coefficient_table";
-}
-
 CoefficientTable stored_as(CoefficientTable table, LutPrecision precision) {
   if (precision == LutPrecision::f16) {
     for (float& value : table.texels)

@@ -1,5 +1,6 @@
 // Everything one `matc` run writes: the shared library, the LUT, and per material its snippets,
-// SPIR-V, C header and manifest. The CLI decides where files go; this decides their bytes.
+// SPIR-V, C header and manifest. The CLI decides where files go, output_layout.h their names;
+// this decides their bytes.
 #pragma once
 
 #include <memory>
@@ -15,6 +16,7 @@
 
 #include "matc/compile.h"
 #include "matc/emit/c_header.h"
+#include "matc/emit/output_layout.h"
 #include "matc/emit/shader_literals.h"
 #include "matc/fit/coefficient_table.h"
 #include "matc/lut/lut_files.h"
@@ -22,20 +24,10 @@
 
 namespace matc {
 
-enum class OutputKind { glsl, hlsl, wgsl, spirv, header, json, lut, coefficient_table, ltc };
-
-// "glsl", "hlsl", "wgsl", "spirv", "header", "json", "lut", "coefficient-table", "ltc": the names
-// --emit accepts.
-std::vector<std::string> output_kind_names();
-std::optional<OutputKind> output_kind_from_name(std::string_view name);
-
 inline constexpr std::size_t kMaxEmbeddedLutSize = 64;
 
 struct BuildOptions {
-  std::set<OutputKind> emit = {
-      OutputKind::glsl,   OutputKind::hlsl, OutputKind::wgsl, OutputKind::spirv,
-      OutputKind::header, OutputKind::json, OutputKind::lut,  OutputKind::coefficient_table,
-      OutputKind::ltc};
+  std::set<OutputKind> emit = all_output_kinds();
   LutOptions lut;
   LutFormat lut_format = LutFormat::ktx2;
   LutPrecision lut_precision = LutPrecision::f32;
@@ -165,14 +157,6 @@ class Build {
   // each <name>.spv compiles it, and glslang parsing the unused functions cost a fifth of a batch.
   std::string glsl_material_module_library_;
 };
-
-// "matc_manifest.json".
-std::string_view manifest_file_name();
-
-// The stem of every shared file a build can write, whatever --emit and --lut say: matc_fresnel,
-// matc_lut, matc_coefficient_table, matc_ltc and matc_manifest. A material of one of these names
-// (in any case) would write its files over them.
-std::vector<std::string> shared_file_stems();
 
 // The names a library module exports.
 std::vector<std::string> shared_library_exports(bool embedded_lut);

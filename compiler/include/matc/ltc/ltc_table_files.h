@@ -13,9 +13,6 @@
 
 namespace matc {
 
-// "matc_ltc": the file stem of the shared output.
-std::string_view ltc_table_stem();
-
 // The file's bytes: an RGBA float texture (KTX2 VK_FORMAT_R32G32B32A32_SFLOAT, DDS
 // DXGI_FORMAT_R32G32B32A32_FLOAT), raw texels, or a C++ header.
 std::string encode_ltc_table(const runtime::LtcTableView& table, LutFormat format);

@@ -12,9 +12,6 @@
 
 namespace matc {
 
-// "matc_coefficient_table": the file stem of the shared output.
-std::string_view coefficient_table_stem();
-
 // The table as a file of this precision stores it (rounded through half for f16).
 CoefficientTable stored_as(CoefficientTable table, LutPrecision precision);
 

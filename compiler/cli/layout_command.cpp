@@ -1,0 +1,100 @@
+// `matc layout`: the files a run writes, for build systems that declare outputs before running
+// matc, and the generator of the CMake function's and Bazel rule's lists of them.
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "channel_list.h"
+#include "commands.h"
+#include "generated_source.h"
+#include "matc/emit/output_layout.h"
+#include "matc/material/parse.h"
+
+namespace matc::cli {
+namespace {
+
+struct LayoutOptions {
+  std::vector<std::string> names;  // material names (their JSON "name")
+  std::string emit;                // comma-separated output kinds; empty: all
+  std::string lut_format = "ktx2";
+  bool no_shared = false;
+  bool shared_only = false;
+  std::string generate;  // "cmake" or "bazel": the build systems' lists as source
+  std::string output;    // where --generate writes (default: standard output)
+};
+
+int run_layout(const LayoutOptions& options) {
+  if (!options.generate.empty()) {
+    return write_generated_source(options.output, options.generate == "cmake"
+                                                      ? output_layout_cmake_source()
+                                                      : output_layout_bazel_source());
+  }
+  for (const std::string& name : options.names) {
+    if (const auto problem = material_name_problem(name)) {
+      fmt::print(stderr, "matc layout: error: '{}': {}; {}\n", name, *problem, kMaterialNameRule);
+      return kExitUsageError;
+    }
+  }
+  std::set<OutputKind> emit = all_output_kinds();
+  if (!options.emit.empty()) {
+    emit.clear();
+    for (const std::string& name : split_list(options.emit))
+      emit.insert(*output_kind_from_name(name));
+  }
+  std::vector<std::string> files;
+  if (!options.no_shared)
+    files = shared_file_names(emit, *lut_format_from_name(options.lut_format));
+  for (const std::string& name : options.names)
+    for (std::string& file : material_file_names(emit, name))
+      files.push_back(std::move(file));
+  // As the compile: only a batch writes the manifest.
+  if (!options.no_shared && !options.shared_only && emit.contains(OutputKind::json))
+    files.emplace_back(manifest_file_name());
+  for (const std::string& file : files)
+    fmt::print("{}\n", file);
+  return kExitSuccess;
+}
+
+}  // namespace
+
+Command register_layout(CLI::App& app) {
+  auto options = std::make_shared<LayoutOptions>();
+  CLI::App* command = app.add_subcommand(
+      "layout",
+      "Print the names of the files a compile writes (one per line) for these options and "
+      "material names, or the CMake and Bazel lists of them");
+  command->add_option("names", options->names, "Material names (a material file's \"name\")");
+  command
+      ->add_option("--emit", options->emit, "Output kinds, as the compile's --emit (default: all)")
+      ->check(CLI::Validator(
+          [](std::string& list) -> std::string {
+            for (const std::string& name : split_list(list)) {
+              if (!output_kind_from_name(name))
+                return "'" + name + "' is not one of " +
+                       CLI::detail::join(output_kind_names(), ",");
+            }
+            return {};
+          },
+          "LIST", "output kinds"));
+  command->add_option("--lut", options->lut_format, "The tables' file format, as the compile's")
+      ->capture_default_str()
+      ->check(CLI::IsMember(lut_format_names()));
+  CLI::Option* no_shared =
+      command->add_flag("--no-shared", options->no_shared, "Only the materials' own files");
+  command->add_flag("--shared-only", options->shared_only, "Only the shared files")
+      ->excludes(no_shared);
+  CLI::Option* generate =
+      command
+          ->add_option("--generate", options->generate,
+                       "Write the layout as the CMake function's (cmake/MatcOutputLayout.cmake) "
+                       "or the Bazel rule's (bazel/matc_layout.bzl) source instead")
+          ->check(CLI::IsMember({"cmake", "bazel"}));
+  command->add_option("-o,--output", options->output, "Where --generate writes (default: stdout)")
+      ->needs(generate);
+  return {command, [options] { return run_layout(*options); }};
+}
+
+}  // namespace matc::cli
