@@ -2,6 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "matc/compile.h"
 #include "matc/material/parse.h"
@@ -40,13 +43,15 @@ TEST(DeviceValidation, QueriesCoverTheTableEdgesAndBothEndsOfMu) {
 TEST(DeviceValidation, BothFrontEndsMatchTheCpuRuntime) {
   const matc::Build build(small_build());
   const matc::DeviceValidator validator(build, {true, ""});
-  const matc::MaterialValidation result = validator.validate(figure2());
+  const matc::CheckResult result = validator.validate(figure2());
   ASSERT_EQ(result.paths.size(), 2u);
   EXPECT_TRUE(result.passed());
-  for (const matc::PathValidation& path : result.paths) {
-    EXPECT_LE(path.fresnel.max_abs, 1e-5);
-    EXPECT_LE(path.preintegrated.max_abs, 1e-4);
-    EXPECT_FALSE(path.embedded.has_value());
+  EXPECT_EQ(result.subject, "figure2_edge_tint");
+  for (const matc::PathResult& path : result.paths) {
+    EXPECT_LE(path.quantity("F").max_abs, 1e-5);
+    EXPECT_LE(path.quantity("Fbar").max_abs, 1e-4);
+    EXPECT_LE(path.quantity("closed-form Fbar").max_abs, 1e-5);
+    EXPECT_THROW(path.quantity("embedded Fbar"), std::out_of_range);  // no embedded table
   }
   EXPECT_EQ(result.paths[0].language, matc::ShaderLanguage::glsl);
   EXPECT_EQ(result.paths[1].language, matc::ShaderLanguage::hlsl);
@@ -58,14 +63,17 @@ TEST(DeviceValidation, BothFrontEndsMatchTheCpuRuntime) {
 TEST(DeviceValidation, ZeroToleranceFails) {
   const matc::Build build(small_build(4));
   const matc::DeviceValidator validator(build, {false, ""}, {0.0, 0.0, 0.0});
-  const matc::MaterialValidation result = validator.validate(figure2());
+  const matc::CheckResult result = validator.validate(figure2());
   EXPECT_FALSE(result.passed());
-  for (const matc::PathValidation& path : result.paths) {
-    EXPECT_FALSE(path.passed);
-    EXPECT_GT(path.fresnel.max_abs, 0.0);
-    EXPECT_LT(path.fresnel.max_abs, 1e-5);
-    ASSERT_TRUE(path.embedded.has_value());
-    EXPECT_LT(path.embedded->max_abs, 1e-5);
+  const auto check = matc::material_check(build, figure2(), validator.tolerance());
+  for (const matc::PathResult& path : result.paths) {
+    EXPECT_FALSE(path.passed());
+    const matc::CheckedQuantity& fresnel = path.quantity("F");
+    EXPECT_GT(fresnel.max_abs, 0.0);
+    EXPECT_LT(fresnel.max_abs, 1e-5);
+    EXPECT_LT(path.quantity("embedded Fbar").max_abs, 1e-5);
+    // A report can say where the worst difference was.
+    EXPECT_NE(check->describe_query(fresnel.worst_query, "F").find("mu "), std::string::npos);
   }
 }
 
@@ -81,14 +89,14 @@ TEST(DeviceValidation, CoefficientTablePathMatchesTheCpuRuntime) {
       options.coefficient_table_precision = precision;
       const matc::Build build(options);
       const matc::DeviceValidator validator(build, {true, ""});
-      const matc::TableValidation result = validator.validate_coefficient_table();
+      const matc::CheckResult result =
+          validator.run(*matc::coefficient_table_check(build, validator.tolerance()));
       ASSERT_EQ(result.paths.size(), 2u);
       EXPECT_TRUE(result.passed()) << matc::runtime::basis_name(basis);
-      for (const matc::TablePathValidation& path : result.paths) {
-        EXPECT_LE(path.fresnel.max_abs, 1e-4);
-        EXPECT_LE(path.preintegrated.max_abs, 1e-4);
-        EXPECT_LE(path.from_ior.max_abs, 1e-4);
-        EXPECT_LE(path.baked.max_abs, 1e-4);
+      for (const matc::PathResult& path : result.paths) {
+        ASSERT_EQ(path.quantities.size(), 4u);
+        for (const char* label : {"F(r, g)", "Fbar(r, g)", "F(n, k)", "F(baked)"})
+          EXPECT_LE(path.quantity(label).max_abs, 1e-4) << label;
       }
       EXPECT_TRUE(validator.layer_messages().empty());
     }
@@ -116,7 +124,7 @@ TEST(DeviceValidation, CoefficientTableQueriesReachTheTableEdges) {
 TEST(DeviceValidation, CoefficientTableZeroToleranceFails) {
   const matc::Build build(small_build());
   const matc::DeviceValidator validator(build, {false, ""}, {0.0, 0.0, 0.0});
-  EXPECT_FALSE(validator.validate_coefficient_table().passed());
+  EXPECT_FALSE(validator.run(*matc::coefficient_table_check(build, {0.0, 0.0, 0.0})).passed());
 }
 
 // The area-light functions (LTC quad and disk lights) from both front ends, with the validation
@@ -124,11 +132,12 @@ TEST(DeviceValidation, CoefficientTableZeroToleranceFails) {
 TEST(DeviceValidation, AreaLightsMatchTheCpuRuntime) {
   const matc::Build build(small_build());
   const matc::DeviceValidator validator(build, {true, ""});
-  const matc::AreaLightValidation result = validator.validate_area_lights();
+  const matc::CheckResult result =
+      validator.run(*matc::area_light_check(build, validator.tolerance()));
   ASSERT_EQ(result.paths.size(), 2u);
-  for (const matc::AreaLightPathValidation& path : result.paths) {
-    EXPECT_LE(path.radiance.max_abs, 1e-4);
-    EXPECT_LE(path.integral.max_abs, 1e-4);
+  for (const matc::PathResult& path : result.paths) {
+    EXPECT_LE(path.quantity("L").max_abs, 1e-4);
+    EXPECT_LE(path.quantity("I_ltc").max_abs, 1e-4);
   }
   EXPECT_TRUE(result.passed());
   EXPECT_TRUE(validator.layer_messages().empty());
@@ -164,5 +173,23 @@ TEST(DeviceValidation, AreaLightQueriesCoverQuadsDisksSpheresAndTheHorizon) {
 TEST(DeviceValidation, AreaLightZeroToleranceFails) {
   const matc::Build build(small_build());
   const matc::DeviceValidator validator(build, {false, ""}, {0.0, 0.0, 0.0});
-  EXPECT_FALSE(validator.validate_area_lights().passed());
+  EXPECT_FALSE(validator.run(*matc::area_light_check(build, {0.0, 0.0, 0.0})).passed());
+}
+
+// The shared files' checks follow --emit: the coefficient-table path with the coefficient table,
+// the area lights with the LTC table.
+TEST(DeviceValidation, SharedFileChecksFollowTheOutputs) {
+  matc::BuildOptions options = small_build();
+  const auto subjects = [](const matc::Build& build) {
+    std::vector<std::string> names;
+    for (const auto& check : matc::shared_file_checks(build, {}))
+      names.push_back(check->subject());
+    return names;
+  };
+  EXPECT_EQ(subjects(matc::Build(options)),
+            (std::vector<std::string>{"coefficient table", "area lights (LTC)"}));
+  options.emit = {matc::OutputKind::glsl, matc::OutputKind::ltc};
+  EXPECT_EQ(subjects(matc::Build(options)), (std::vector<std::string>{"area lights (LTC)"}));
+  options.emit = {matc::OutputKind::glsl};
+  EXPECT_TRUE(subjects(matc::Build(options)).empty());
 }

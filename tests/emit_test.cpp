@@ -15,6 +15,7 @@
 #include "matc/emit/material_module_template.h"
 #include "matc/emit/shader_literals.h"
 #include "matc/emit/template.h"
+#include "matc/emit/validation_kernel.h"
 #include "matc/json_format.h"
 #include "matc/material/parse.h"
 #include "matc/spirv/linkage.h"
@@ -110,7 +111,7 @@ TEST(GeneratedShaders, EveryExampleCompilesFromGlslAndHlsl) {
     for (const CompiledMaterial& compiled : examples()) {
       for (const ShaderLanguage language : {ShaderLanguage::glsl, ShaderLanguage::hlsl}) {
         SpirvWords module;
-        ASSERT_NO_THROW(module = build->validation_module(language, compiled))
+        ASSERT_NO_THROW(module = material_validation_module(*build, language, compiled))
             << compiled.material.name << " " << shader_language_name(language);
         EXPECT_GT(count_function_instructions(module), 10u);
       }

@@ -184,18 +184,12 @@ int run_compile(const CompileOptions& options) {
   if (options.validate) {
     validator = open_device_validator(build, options.device);
     if (!validator) return kExitNoDevice;
-    if (build.options().emit.contains(OutputKind::coefficient_table) &&
-        !validate_coefficient_table_and_report(*validator)) {
+    std::vector<std::string> failed_checks;
+    if (!validate_shared_files_and_report(*validator, &failed_checks)) {
       fmt::print(stderr,
-                 "matc: error: the coefficient-table path differs from the CPU runtime on the "
-                 "Vulkan device (lines above); nothing written\n");
-      return kExitValidationFailed;
-    }
-    if (build.options().emit.contains(OutputKind::ltc) &&
-        !validate_area_lights_and_report(*validator)) {
-      fmt::print(stderr,
-                 "matc: error: the area-light functions differ from the CPU runtime on the Vulkan "
-                 "device (lines above); nothing written\n");
+                 "matc: error: {} differ from the CPU runtime on the Vulkan device (lines "
+                 "above); nothing written\n",
+                 fmt::join(failed_checks, " and "));
       return kExitValidationFailed;
     }
   }

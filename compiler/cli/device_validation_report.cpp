@@ -12,18 +12,6 @@ void add_device_options(CLI::App& command, DeviceCliOptions& device) {
                      "else lavapipe)");
 }
 
-namespace {
-
-std::string describe(const char* label, const Discrepancy& found, double tolerance, bool direct) {
-  if (found.max_abs <= tolerance) return fmt::format("  {} {:.2e}", label, found.max_abs);
-  const std::string where = direct ? fmt::format("mu {:.4f}", found.where.mu)
-                                   : fmt::format("NdotV {:.4f}, roughness {:.4f}",
-                                                 found.where.ndotv, found.where.roughness);
-  return fmt::format("  {} {:.2e} > {:.0e} at {}", label, found.max_abs, tolerance, where);
-}
-
-}  // namespace
-
 std::unique_ptr<DeviceValidator> open_device_validator(const Build& build,
                                                        const DeviceCliOptions& options) {
   try {
@@ -53,90 +41,40 @@ bool report_layer_messages(const DeviceValidator& validator, std::size_t message
   return messages.size() == messages_before;
 }
 
-std::string describe_table(const char* label, const TableDiscrepancy& found, double tolerance,
-                           const std::vector<TableQuery>& queries, bool from_ior) {
-  if (found.max_abs <= tolerance) return fmt::format("  {} {:.2e}", label, found.max_abs);
-  const TableQuery& q = queries[found.query];
-  const auto& first = from_ior ? q.n : q.reflectivity;
-  const auto& second = from_ior ? q.k : q.edge_tint;
-  return fmt::format(
-      "  {} {:.2e} > {:.0e} at {} ({:.4f}, {:.4f}, {:.4f}), {} ({:.4f}, {:.4f}, "
-      "{:.4f}), mu {:.4f}, NdotV {:.4f}, roughness {:.4f}",
-      label, found.max_abs, tolerance, from_ior ? "n" : "r", first[0], first[1], first[2],
-      from_ior ? "k" : "g", second[0], second[1], second[2], q.mu, q.ndotv, q.roughness);
-}
-
 }  // namespace
 
-bool validate_coefficient_table_and_report(const DeviceValidator& validator) {
+bool run_check_and_report(const DeviceValidator& validator, const DeviceCheck& check) {
   const std::size_t messages_before = validator.layer_messages().size();
-  const TableValidation result = validator.validate_coefficient_table();
-  const std::vector<TableQuery> queries = table_validation_queries();
-  const double tolerance = validator.tolerance().preintegrated;
-  for (const TablePathValidation& path : result.paths) {
-    std::string line = fmt::format("{:<20} {}", "coefficient table",
+  const CheckResult result = validator.run(check);
+  for (const PathResult& path : result.paths) {
+    std::string line = fmt::format("{:<20} {}", result.subject,
                                    path.language == ShaderLanguage::glsl ? "GLSL" : "HLSL");
-    line += describe_table("F(r, g)", path.fresnel, tolerance, queries, false);
-    line += describe_table("Fbar(r, g)", path.preintegrated, tolerance, queries, false);
-    line += describe_table("F(n, k)", path.from_ior, tolerance, queries, true);
-    line += describe_table("F(baked)", path.baked, tolerance, queries, false);
-    fmt::print("{}  {}\n", line, path.passed ? "ok" : "FAILED");
+    for (const CheckedQuantity& quantity : path.quantities) {
+      line += fmt::format("  {} {:.2e}", quantity.label, quantity.max_abs);
+      if (!quantity.passed()) {
+        line += fmt::format(" > {:.0e} at {}", quantity.tolerance,
+                            check.describe_query(quantity.worst_query, quantity.label));
+      }
+    }
+    fmt::print("{}  {}\n", line, path.passed() ? "ok" : "FAILED");
   }
-  return report_layer_messages(validator, messages_before, "coefficient table") && result.passed();
-}
-
-namespace {
-
-const char* kind_name(AreaLightQuery::Kind kind) {
-  switch (kind) {
-    case AreaLightQuery::Kind::quad:
-      return "quad";
-    case AreaLightQuery::Kind::disk:
-      return "disk";
-    case AreaLightQuery::Kind::sphere:
-      return "sphere";
-  }
-  return "";
-}
-
-}  // namespace
-
-bool validate_area_lights_and_report(const DeviceValidator& validator) {
-  const std::size_t messages_before = validator.layer_messages().size();
-  const AreaLightValidation result = validator.validate_area_lights();
-  const std::vector<AreaLightQuery> queries = area_light_validation_queries();
-  const double tolerance = validator.tolerance().preintegrated;
-  const auto describe = [&](const char* label, const TableDiscrepancy& found) {
-    if (found.max_abs <= tolerance) return fmt::format("  {} {:.2e}", label, found.max_abs);
-    const AreaLightQuery& q = queries[found.query];
-    return fmt::format("  {} {:.2e} > {:.0e} at light {} (a {}), NdotV {:.4f}, roughness {:.4f}",
-                       label, found.max_abs, tolerance, found.query, kind_name(q.kind), q.ndotv,
-                       q.roughness);
-  };
-  for (const AreaLightPathValidation& path : result.paths) {
-    std::string line = fmt::format("{:<20} {}", "area lights (LTC)",
-                                   path.language == ShaderLanguage::glsl ? "GLSL" : "HLSL");
-    line += describe("L", path.radiance);
-    line += describe("I_ltc", path.integral);
-    fmt::print("{}  {}\n", line, path.passed ? "ok" : "FAILED");
-  }
-  return report_layer_messages(validator, messages_before, "area lights") && result.passed();
+  return report_layer_messages(validator, messages_before, result.subject) && result.passed();
 }
 
 bool validate_and_report(const DeviceValidator& validator, const CompiledMaterial& compiled) {
-  const std::size_t messages_before = validator.layer_messages().size();
-  const MaterialValidation result = validator.validate(compiled);
-  const ValidationTolerance& tolerance = validator.tolerance();
-  for (const PathValidation& path : result.paths) {
-    std::string line = fmt::format("{:<20} {}", result.name,
-                                   path.language == ShaderLanguage::glsl ? "GLSL" : "HLSL");
-    line += describe("F", path.fresnel, tolerance.fresnel, true);
-    line += describe("Fbar", path.preintegrated, tolerance.preintegrated, false);
-    if (path.embedded) line += describe("embedded Fbar", *path.embedded, tolerance.embedded, false);
-    line += describe("closed-form Fbar", path.analytic, tolerance.analytic, false);
-    fmt::print("{}  {}\n", line, path.passed ? "ok" : "FAILED");
+  return run_check_and_report(validator,
+                              *material_check(validator.build(), compiled, validator.tolerance()));
+}
+
+bool validate_shared_files_and_report(const DeviceValidator& validator,
+                                      std::vector<std::string>* failed) {
+  bool passed = true;
+  for (const std::unique_ptr<DeviceCheck>& check : validator.shared_file_checks()) {
+    if (run_check_and_report(validator, *check)) continue;
+    passed = false;
+    if (failed) failed->push_back(check->subject());
   }
-  return report_layer_messages(validator, messages_before, result.name) && result.passed();
+  return passed;
 }
 
 }  // namespace matc::cli

@@ -3,11 +3,12 @@
 #pragma once
 
 #include <memory>
-
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "matc/validate/device_check.h"
 #include "matc/validate/device_validation.h"
 
 namespace matc::cli {
@@ -26,16 +27,16 @@ void add_device_options(CLI::App& command, DeviceCliOptions& device);
 std::unique_ptr<DeviceValidator> open_device_validator(const Build& build,
                                                        const DeviceCliOptions& options);
 
-// Validates one material's GLSL and HLSL paths and prints a line for each (standard output);
-// prints the validation layer's new messages. False when a path failed or the layer spoke.
+// Runs one check from GLSL and HLSL and prints a line for each front end (standard output), then
+// the validation layer's new messages. False when a path failed or the layer spoke.
+bool run_check_and_report(const DeviceValidator& validator, const DeviceCheck& check);
+
+// The same for one material (material_check()).
 bool validate_and_report(const DeviceValidator& validator, const CompiledMaterial& compiled);
 
-// Validates the coefficient-table path (textured metals) from GLSL and HLSL and prints a line
-// for each. False when a path failed or the layer spoke.
-bool validate_coefficient_table_and_report(const DeviceValidator& validator);
-
-// Validates the area-light functions (LTC quad, disk and sphere lights) from GLSL and HLSL and
-// prints a line for each. False when a path failed or the layer spoke.
-bool validate_area_lights_and_report(const DeviceValidator& validator);
+// Every check of the build's shared files (shared_file_checks()); false when any failed, and
+// `failed` gets their subjects.
+bool validate_shared_files_and_report(const DeviceValidator& validator,
+                                      std::vector<std::string>* failed = nullptr);
 
 }  // namespace matc::cli

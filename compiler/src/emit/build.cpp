@@ -10,7 +10,6 @@
 #include "matc/emit/material_module_template.h"
 #include "matc/emit/material_snippet.h"
 #include "matc/emit/shader_library.h"
-#include "matc/emit/validation_kernel.h"
 #include "matc/json_format.h"
 #include "matc/ltc/ltc_table_files.h"
 #include "matc/lut/coefficient_table_files.h"
@@ -51,14 +50,6 @@ SpirvWords library_module(std::string source, std::string name,
   const SpirvWords library = export_functions(compiled, exports);
   validate_spirv(library, SpirvTarget::universal_1_3, name);
   return optimize_spirv(library, SpirvTarget::universal_1_3, name);
-}
-
-// A compute kernel compiled, validated and optimised for Vulkan 1.1.
-SpirvWords vulkan_compute_module(ShaderLanguage language, std::string source,
-                                 const std::string& source_name) {
-  const SpirvWords words = compile_to_spirv({language, std::move(source), source_name});
-  validate_spirv(words, SpirvTarget::vulkan_1_1, source_name);
-  return optimize_spirv(words, SpirvTarget::vulkan_1_1, source_name);
 }
 
 std::string spirv_bytes(const SpirvWords& words) {
@@ -263,32 +254,6 @@ SpirvWords Build::compile_material_library_module(const CompiledMaterial& compil
                             material_snippet_source(ShaderLanguage::glsl, compiled, inputs_hash),
                         material_file_name(OutputKind::spirv, name),
                         material_library_exports(name));
-}
-
-SpirvWords Build::validation_module(ShaderLanguage language,
-                                    const CompiledMaterial& compiled) const {
-  const std::string& name = compiled.material.name;
-  const std::string source_name =
-      fmt::format("{}.validate{}", name, shader_file_extension(language));
-  return vulkan_compute_module(language,
-                               validation_kernel_source(language, library_source(language),
-                                                        material_source(language, compiled), name),
-                               source_name);
-}
-
-SpirvWords Build::table_validation_module(ShaderLanguage language) const {
-  const std::string source_name =
-      fmt::format("matc_coefficient_table.validate{}", shader_file_extension(language));
-  return vulkan_compute_module(
-      language, table_validation_kernel_source(language, library_source(language)), source_name);
-}
-
-SpirvWords Build::area_light_validation_module(ShaderLanguage language) const {
-  const std::string source_name =
-      fmt::format("matc_area_lights.validate{}", shader_file_extension(language));
-  return vulkan_compute_module(
-      language, area_light_validation_kernel_source(language, library_source(language)),
-      source_name);
 }
 
 MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const {

@@ -1,9 +1,22 @@
 #include "matc/emit/validation_kernel.h"
 
+#include <fmt/format.h>
+
 #include "matc/emit/template.h"
+#include "matc/spirv/spirv_tools.h"
 #include "matc/version.h"
 
 namespace matc {
+namespace {
+
+SpirvWords vulkan_compute_module(ShaderLanguage language, std::string source,
+                                 const std::string& source_name) {
+  const SpirvWords words = compile_to_spirv({language, std::move(source), source_name});
+  validate_spirv(words, SpirvTarget::vulkan_1_1, source_name);
+  return optimize_spirv(words, SpirvTarget::vulkan_1_1, source_name);
+}
+
+}  // namespace
 
 std::string validation_kernel_source(ShaderLanguage language, std::string_view library,
                                      std::string_view material, std::string_view material_name) {
@@ -25,6 +38,28 @@ std::string area_light_validation_kernel_source(ShaderLanguage language, std::st
   return fill_template(language == ShaderLanguage::glsl ? "glsl/validate_area_lights.comp"
                                                         : "hlsl/validate_area_lights.hlsl",
                        {{"version", kVersion}, {"library", std::string(library)}});
+}
+
+SpirvWords material_validation_module(const Build& build, ShaderLanguage language,
+                                      const CompiledMaterial& compiled) {
+  const std::string& name = compiled.material.name;
+  return vulkan_compute_module(
+      language,
+      validation_kernel_source(language, build.library_source(language),
+                               build.material_source(language, compiled), name),
+      fmt::format("{}.validate{}", name, shader_file_extension(language)));
+}
+
+SpirvWords table_validation_module(const Build& build, ShaderLanguage language) {
+  return vulkan_compute_module(
+      language, table_validation_kernel_source(language, build.library_source(language)),
+      fmt::format("matc_coefficient_table.validate{}", shader_file_extension(language)));
+}
+
+SpirvWords area_light_validation_module(const Build& build, ShaderLanguage language) {
+  return vulkan_compute_module(
+      language, area_light_validation_kernel_source(language, build.library_source(language)),
+      fmt::format("matc_area_lights.validate{}", shader_file_extension(language)));
 }
 
 }  // namespace matc

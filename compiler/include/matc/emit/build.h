@@ -90,15 +90,6 @@ class Build {
   // The same, always by a glslang compile (material_library_module patches a checked-in template
   // where one holds: matc/emit/material_module_template.h).
   SpirvWords compile_material_library_module(const CompiledMaterial& compiled) const;
-  // The complete compute module (emit/validation_kernel.h) from either front end, optimised and
-  // validated for Vulkan 1.1.
-  SpirvWords validation_module(ShaderLanguage language, const CompiledMaterial& compiled) const;
-
-  // The coefficient-table path's compute module (emit/validation_kernel.h), likewise.
-  SpirvWords table_validation_module(ShaderLanguage language) const;
-  // The area-light functions' compute module, likewise.
-  SpirvWords area_light_validation_module(ShaderLanguage language) const;
-
   // matc_manifest.json: version, options, and every file written with its hash.
   nlohmann::ordered_json manifest(const std::vector<OutputFile>& shared,
                                   std::span<const MaterialOutputs> materials) const;

@@ -1,13 +1,21 @@
-// The compute kernel that runs one material's generated code on a Vulkan device (templates/
-// */validate.*): bindings 0 queries (vec4 mu, NdotV, roughness, -), 1 results (four vec4 per
-// query: F, Fbar through the sampler, Fbar from the embedded table or zero, Fbar from the closed
-// form), 2 the table as a sampled image, 3 its sampler; 64 invocations per group, one query each.
+// The compute kernels the device checks (validate/device_check.h) run: one material's generated
+// code, the coefficient-table path and the area-light functions, each from a build's shared
+// library in GLSL or HLSL. Every kernel runs 64 invocations per group, one query each, and binds
+// 0 its queries, 1 its results, 2 the preintegrated table, 3 the sampler, and where it samples
+// them 4 the coefficient table and 5 the LTC table.
+//
+// The material kernel (templates/*/validate.*): queries vec4 (mu, NdotV, roughness, -); results
+// four vec4 per query: F, Fbar through the sampler, Fbar from the embedded table or zero, Fbar
+// from the closed form.
 #pragma once
 
 #include <string>
 #include <string_view>
 
+#include "matc/compile.h"
+#include "matc/emit/build.h"
 #include "matc/emit/shader_literals.h"
+#include "matc/spirv/shader_compiler.h"
 
 namespace matc {
 
@@ -29,9 +37,15 @@ std::string table_validation_kernel_source(ShaderLanguage language, std::string_
 // The area-light kernel (templates/*/validate_area_lights.*): bindings 0 queries (eight vec4 each:
 // r.rgb and NdotV, g.rgb and roughness, N and the kind (0 quad, 1 disk, 2 sphere), V and a disk's
 // or sphere's radius, a quad's corners, a disk's centre and normal or a sphere's centre),
-// 1 results (radiance, I_ltc), 2 the
-// preintegrated table, 3 the sampler, 4 the coefficient table, 5 the LTC table.
+// 1 results (one vec4: radiance.rgb, I_ltc), 2 the preintegrated table, 3 the sampler, 4 the
+// coefficient table, 5 the LTC table.
 inline constexpr std::size_t kAreaLightQueryVectors = 8;
 std::string area_light_validation_kernel_source(ShaderLanguage language, std::string_view library);
+
+// The kernels compiled from `build`'s library, validated and optimised for Vulkan 1.1.
+SpirvWords material_validation_module(const Build& build, ShaderLanguage language,
+                                      const CompiledMaterial& compiled);
+SpirvWords table_validation_module(const Build& build, ShaderLanguage language);
+SpirvWords area_light_validation_module(const Build& build, ShaderLanguage language);
 
 }  // namespace matc

@@ -1,18 +1,19 @@
-// DeviceValidator::validate_area_lights: the LTC quad, disk and sphere lights, run from GLSL and
-// HLSL.
+// The area-light check: the LTC quad, disk and sphere lights (radiance and the LTC integral)
+// against the CPU runtime.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
 
+#include <fmt/format.h>
+
+#include "largest_difference.h"
 #include "matc/emit/validation_kernel.h"
 #include "matc/ltc/polygon_light.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/lut.h"
 #include "matc/validate/device_validation.h"
-#include "matc/vulkan/compute_kernel.h"
-#include "validator_device.h"
 
 namespace matc {
 namespace {
@@ -50,6 +51,99 @@ Vec3 direction(double u1, double u2) {
   const double phi = 2.0 * std::numbers::pi * u2;
   return {r * std::cos(phi), r * std::sin(phi), z};
 }
+
+const char* kind_name(AreaLightQuery::Kind kind) {
+  switch (kind) {
+    case AreaLightQuery::Kind::quad:
+      return "quad";
+    case AreaLightQuery::Kind::disk:
+      return "disk";
+    case AreaLightQuery::Kind::sphere:
+      return "sphere";
+  }
+  return "";
+}
+
+class AreaLightCheck final : public DeviceCheck {
+ public:
+  AreaLightCheck(const Build& build, const ValidationTolerance& tolerance)
+      : build_(build),
+        tolerance_(tolerance.preintegrated),
+        queries_(area_light_validation_queries()) {}
+
+  std::string subject() const override { return "area lights (LTC)"; }
+  SpirvWords kernel(ShaderLanguage language) const override {
+    return area_light_validation_module(build_, language);
+  }
+  KernelTables tables() const override { return {true, true}; }
+  std::size_t query_count() const override { return queries_.size(); }
+
+  std::vector<float> packed_queries() const override {
+    std::vector<float> packed;
+    packed.reserve(queries_.size() * kAreaLightQueryVectors * 4);
+    for (const AreaLightQuery& q : queries_) {
+      const auto& r = q.reflectivity;
+      const auto& g = q.edge_tint;
+      packed.insert(packed.end(), {r[0], r[1], r[2], q.ndotv, g[0], g[1], g[2], q.roughness});
+      packed.insert(packed.end(),
+                    {q.normal[0], q.normal[1], q.normal[2], static_cast<float>(q.kind)});
+      packed.insert(packed.end(), {q.view[0], q.view[1], q.view[2], q.radius});
+      for (const auto& p : q.points)
+        packed.insert(packed.end(), {p[0], p[1], p[2], 0.0f});
+    }
+    return packed;
+  }
+
+  std::size_t result_vec4s_per_query() const override { return 1; }
+
+  std::vector<CheckedQuantity> compare(std::span<const float> results) const override {
+    const runtime::CoefficientTableView table = build_.stored_coefficient_table().view();
+    const runtime::LutView lut = build_.stored_lut().view();
+    const runtime::LtcTableView ltc = runtime::shipped_ltc_table();
+    // The LTC matrix and Fbar both come through the sampler: the preintegrated tolerance.
+    CheckedQuantity radiance{"L", tolerance_};
+    CheckedQuantity integral{"I_ltc", tolerance_};
+    for (std::size_t i = 0; i < queries_.size(); ++i) {
+      const AreaLightQuery& q = queries_[i];
+      const ShadingFrame frame(as_vec3(q.normal), as_vec3(q.view));
+      std::vector<Vec3> local;
+      if (q.kind == AreaLightQuery::Kind::disk) {
+        for (const Vec3& p :
+             runtime::disk_light_polygon(as_vec3(q.points[0]), as_vec3(q.points[1]), q.radius))
+          local.push_back(frame.local(p));
+      } else if (q.kind == AreaLightQuery::Kind::sphere) {
+        for (const Vec3& p :
+             runtime::sphere_light_polygon({0.0, 0.0, 0.0}, as_vec3(q.points[0]), q.radius))
+          local.push_back(frame.local(p));
+      } else {
+        for (const auto& p : q.points)
+          local.push_back(frame.local(as_vec3(p)));
+      }
+      const runtime::Coefficients coefficients =
+          runtime::coefficients_from_table(table, as_vec3(q.reflectivity), as_vec3(q.edge_tint));
+      const float* result = &results[4 * i];
+      record_largest(
+          radiance, runtime::polygon_light_ltc(coefficients, lut, ltc, q.ndotv, q.roughness, local),
+          result, i);
+      const double expected =
+          runtime::ltc_polygon_integral(runtime::sample_ltc(ltc, q.ndotv, q.roughness), local);
+      const float integral_result[3] = {result[3], result[3], result[3]};
+      record_largest(integral, {expected, expected, expected}, integral_result, i);
+    }
+    return {radiance, integral};
+  }
+
+  std::string describe_query(std::size_t index, std::string_view) const override {
+    const AreaLightQuery& q = queries_[index];
+    return fmt::format("light {} (a {}), NdotV {:.4f}, roughness {:.4f}", index, kind_name(q.kind),
+                       q.ndotv, q.roughness);
+  }
+
+ private:
+  const Build& build_;
+  double tolerance_;
+  std::vector<AreaLightQuery> queries_;
+};
 
 }  // namespace
 
@@ -124,73 +218,9 @@ std::vector<AreaLightQuery> area_light_validation_queries() {
   return queries;
 }
 
-bool AreaLightValidation::passed() const {
-  return !paths.empty() && std::all_of(paths.begin(), paths.end(),
-                                       [](const AreaLightPathValidation& p) { return p.passed; });
-}
-
-AreaLightValidation DeviceValidator::validate_area_lights() const {
-  AreaLightValidation validation;
-  for (const ShaderLanguage language : {ShaderLanguage::glsl, ShaderLanguage::hlsl})
-    validation.paths.push_back(run_area_lights(language));
-  return validation;
-}
-
-AreaLightPathValidation DeviceValidator::run_area_lights(ShaderLanguage language) const {
-  const std::vector<AreaLightQuery> queries = area_light_validation_queries();
-  std::vector<float> packed;
-  packed.reserve(queries.size() * kAreaLightQueryVectors * 4);
-  for (const AreaLightQuery& q : queries) {
-    const auto& r = q.reflectivity;
-    const auto& g = q.edge_tint;
-    packed.insert(packed.end(), {r[0], r[1], r[2], q.ndotv, g[0], g[1], g[2], q.roughness});
-    packed.insert(packed.end(),
-                  {q.normal[0], q.normal[1], q.normal[2], static_cast<float>(q.kind)});
-    packed.insert(packed.end(), {q.view[0], q.view[1], q.view[2], q.radius});
-    for (const auto& p : q.points)
-      packed.insert(packed.end(), {p[0], p[1], p[2], 0.0f});
-  }
-  static_assert(kAreaLightQueries % kWorkgroupSize == 0, "whole workgroups");
-  const std::vector<float> results =
-      device_->run_queries(build_.area_light_validation_module(language), packed, queries.size(),
-                           queries.size() * 4, /*with_ltc=*/true);
-
-  const runtime::CoefficientTableView table = build_.stored_coefficient_table().view();
-  const runtime::LutView lut = build_.stored_lut().view();
-  const runtime::LtcTableView ltc = runtime::shipped_ltc_table();
-  AreaLightPathValidation path;
-  path.language = language;
-  for (std::size_t i = 0; i < queries.size(); ++i) {
-    const AreaLightQuery& q = queries[i];
-    const ShadingFrame frame(as_vec3(q.normal), as_vec3(q.view));
-    std::vector<Vec3> local;
-    if (q.kind == AreaLightQuery::Kind::disk) {
-      for (const Vec3& p :
-           runtime::disk_light_polygon(as_vec3(q.points[0]), as_vec3(q.points[1]), q.radius))
-        local.push_back(frame.local(p));
-    } else if (q.kind == AreaLightQuery::Kind::sphere) {
-      for (const Vec3& p :
-           runtime::sphere_light_polygon({0.0, 0.0, 0.0}, as_vec3(q.points[0]), q.radius))
-        local.push_back(frame.local(p));
-    } else {
-      for (const auto& p : q.points)
-        local.push_back(frame.local(as_vec3(p)));
-    }
-    const runtime::Coefficients coefficients =
-        runtime::coefficients_from_table(table, as_vec3(q.reflectivity), as_vec3(q.edge_tint));
-    const float* result = &results[4 * i];
-    record_largest(path.radiance.max_abs, path.radiance.query,
-                   runtime::polygon_light_ltc(coefficients, lut, ltc, q.ndotv, q.roughness, local),
-                   result, i);
-    const double integral =
-        runtime::ltc_polygon_integral(runtime::sample_ltc(ltc, q.ndotv, q.roughness), local);
-    const float integral_result[3] = {result[3], result[3], result[3]};
-    record_largest(path.integral.max_abs, path.integral.query, {integral, integral, integral},
-                   integral_result, i);
-  }
-  path.passed = path.radiance.max_abs <= tolerance_.preintegrated &&
-                path.integral.max_abs <= tolerance_.preintegrated;
-  return path;
+std::unique_ptr<DeviceCheck> area_light_check(const Build& build,
+                                              const ValidationTolerance& tolerance) {
+  return std::make_unique<AreaLightCheck>(build, tolerance);
 }
 
 }  // namespace matc

@@ -1,0 +1,108 @@
+// The material check: one material's generated code (F, Fbar through the sampler, from the
+// embedded table, from the closed form) against the CPU runtime.
+#include <fmt/format.h>
+
+#include "largest_difference.h"
+#include "matc/emit/validation_kernel.h"
+#include "matc/runtime/analytic_lut.h"
+#include "matc/runtime/fresnel.h"
+#include "matc/runtime/lut.h"
+#include "matc/runtime/shader_basis.h"
+#include "matc/validate/device_validation.h"
+
+namespace matc {
+namespace {
+
+constexpr std::size_t kGridSteps = 40;  // 41 points per axis
+
+class MaterialCheck final : public DeviceCheck {
+ public:
+  MaterialCheck(const Build& build, const CompiledMaterial& compiled,
+                const ValidationTolerance& tolerance)
+      : build_(build), compiled_(compiled), tolerance_(tolerance), queries_(validation_queries()) {}
+
+  std::string subject() const override { return compiled_.material.name; }
+
+  SpirvWords kernel(ShaderLanguage language) const override {
+    return material_validation_module(build_, language, compiled_);
+  }
+
+  std::size_t query_count() const override { return queries_.size(); }
+
+  std::vector<float> packed_queries() const override {
+    std::vector<float> packed;
+    packed.reserve(queries_.size() * 4);
+    for (const ValidationQuery& q : queries_)
+      packed.insert(packed.end(), {q.mu, q.ndotv, q.roughness, 0.0f});
+    return packed;
+  }
+
+  std::size_t result_vec4s_per_query() const override { return kValidationResultsPerQuery; }
+
+  std::vector<CheckedQuantity> compare(std::span<const float> results) const override {
+    const runtime::ShaderBasis& shader_basis =
+        runtime::shipped_shader_basis(build_.options().basis);
+    const runtime::LutView table = build_.stored_lut().view();
+    const Lut* embedded = build_.embedded_lut();
+    const runtime::AnalyticLutCoefficients& analytic =
+        runtime::shipped_analytic_lut(build_.options().basis);
+    const runtime::Coefficients& c = compiled_.coefficients;
+    CheckedQuantity fresnel{"F", tolerance_.fresnel};
+    CheckedQuantity preintegrated{"Fbar", tolerance_.preintegrated};
+    CheckedQuantity from_embedded{"embedded Fbar", tolerance_.embedded};
+    CheckedQuantity closed_form{"closed-form Fbar", tolerance_.analytic};
+    for (std::size_t i = 0; i < queries_.size(); ++i) {
+      const ValidationQuery& q = queries_[i];
+      const float* result = &results[i * kValidationResultsPerQuery * 4];
+      record_largest(fresnel, runtime::evaluate_fresnel(c, shader_basis, q.mu), result, i);
+      record_largest(preintegrated, runtime::evaluate_fbar(c, table, q.ndotv, q.roughness),
+                     result + 4, i);
+      if (embedded) {
+        record_largest(from_embedded,
+                       runtime::evaluate_fbar(c, embedded->view(), q.ndotv, q.roughness),
+                       result + 8, i);
+      }
+      record_largest(closed_form,
+                     runtime::evaluate_fbar_analytic(c, analytic, q.ndotv, q.roughness),
+                     result + 12, i);
+    }
+    if (embedded) return {fresnel, preintegrated, from_embedded, closed_form};
+    return {fresnel, preintegrated, closed_form};
+  }
+
+  std::string describe_query(std::size_t index, std::string_view label) const override {
+    const ValidationQuery& q = queries_[index];
+    if (label == "F") return fmt::format("mu {:.4f}", q.mu);
+    return fmt::format("NdotV {:.4f}, roughness {:.4f}", q.ndotv, q.roughness);
+  }
+
+ private:
+  const Build& build_;
+  const CompiledMaterial& compiled_;
+  ValidationTolerance tolerance_;
+  std::vector<ValidationQuery> queries_;
+};
+
+}  // namespace
+
+std::vector<ValidationQuery> validation_queries() {
+  constexpr std::size_t kCount = (kGridSteps + 1) * (kGridSteps + 1);
+  std::vector<ValidationQuery> queries;
+  queries.reserve(kCount);
+  for (std::size_t row = 0; row <= kGridSteps; ++row) {
+    for (std::size_t column = 0; column <= kGridSteps; ++column) {
+      const std::size_t index = queries.size();
+      queries.push_back({static_cast<float>(static_cast<double>(index) / (kCount - 1)),
+                         static_cast<float>(static_cast<double>(column) / kGridSteps),
+                         static_cast<float>(static_cast<double>(row) / kGridSteps)});
+    }
+  }
+  return queries;
+}
+
+std::unique_ptr<DeviceCheck> material_check(const Build& build, const CompiledMaterial& compiled,
+                                            const ValidationTolerance& tolerance) {
+  return std::make_unique<MaterialCheck>(build, compiled, tolerance);
+}
+
+}  // namespace matc
