@@ -8,10 +8,13 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "example_files.h"
 #include "matc/compile.h"
 #include "matc/emit/build.h"
 #include "matc/emit/content_hash.h"
+#include "matc/emit/manifest_writer.h"
 #include "matc/emit/material_module_template.h"
 #include "matc/emit/shader_literals.h"
 #include "matc/emit/template.h"
@@ -390,24 +393,31 @@ TEST(Build, EmbeddedTableIsOptionalAndBounded) {
 TEST(Build, ManifestListsEveryFileWithItsHash) {
   const std::vector<OutputFile> shared = small_build().shared_outputs();
   const std::vector<MaterialOutputs> materials = {small_build().material_outputs(example("gold"))};
-  const nlohmann::ordered_json manifest = small_build().manifest(shared, materials);
+  const nlohmann::ordered_json manifest = manifest_json(small_build(), shared, materials);
   EXPECT_EQ(manifest["materials"][0]["name"], "gold");
   EXPECT_EQ(manifest["materials"][0]["files"].size(), 6u);
   EXPECT_EQ(manifest["materials"][0]["files"][0]["hash"],
             hash_of_bytes(materials[0].files[0].bytes));
   EXPECT_EQ(manifest["shared_files"].size(), shared.size());
   EXPECT_EQ(manifest["lut"]["size"], 16);
-  // The text a batch writes from per-material formatted entries is format_json of the whole.
-  std::vector<std::string> formatted;
-  for (const MaterialOutputs& material : materials)
-    formatted.push_back(Build::format_manifest_entry(small_build().manifest_entry(material)));
-  formatted.push_back(formatted.front());
-  std::vector<nlohmann::ordered_json> entries = {manifest["materials"][0],
-                                                 manifest["materials"][0]};
-  EXPECT_EQ(small_build().manifest_text(shared, formatted),
-            format_json(small_build().manifest(shared, entries)));
-  EXPECT_EQ(small_build().manifest_text(shared, {}),
-            format_json(small_build().manifest(shared, std::span<const nlohmann::ordered_json>{})));
+  // The text a batch streams from per-material formatted entries (in memory or spooled in a
+  // directory) is format_json of the whole.
+  const std::vector<MaterialOutputs> twice = {materials[0], materials[0]};
+  const std::filesystem::path spool =
+      std::filesystem::temp_directory_path() / "matc_manifest_writer_test";
+  for (const std::filesystem::path& directory : {std::filesystem::path(), spool}) {
+    ManifestWriter writer(directory);
+    EXPECT_EQ(writer.text(small_build(), shared),
+              format_json(manifest_json(small_build(), shared, {})));
+    for (const MaterialOutputs& material : twice)
+      writer.append(ManifestWriter::format_entry(material));
+    EXPECT_EQ(writer.entry_count(), 2u);
+    EXPECT_EQ(writer.text(small_build(), shared),
+              format_json(manifest_json(small_build(), shared, twice)));
+  }
+  // The spooled entries leave nothing behind.
+  EXPECT_TRUE(std::filesystem::is_empty(spool));
+  std::filesystem::remove_all(spool);
 }
 
 }  // namespace

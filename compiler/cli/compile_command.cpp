@@ -24,9 +24,9 @@
 #include "file_list.h"
 #include "in_order.h"
 #include "lut_options.h"
-#include "manifest_spool.h"
 #include "matc/compile.h"
 #include "matc/emit/build.h"
+#include "matc/emit/manifest_writer.h"
 #include "matc/json_format.h"
 #include "matc/material/materialx_import.h"
 #include "matc/material/parse.h"
@@ -99,7 +99,7 @@ struct CompileOutcome {
   bool failed_on_device = false;
   std::size_t written = 0;
   std::size_t unchanged = 0;
-  std::string manifest_entry;  // Build::format_manifest_entry's text, when a manifest is written
+  std::string manifest_entry;  // ManifestWriter::format_entry's text, when a manifest is written
 };
 
 // One material (or one input file's diagnostics) through the batch: parsed and checked in order,
@@ -219,7 +219,7 @@ int run_compile(const CompileOptions& options) {
   std::mutex device_mutex;  // one Vulkan queue: validations (and their report) one at a time
   BatchCounts summary;
   std::size_t failed_on_device = 0;
-  ManifestSpool manifest_entries(output_directory);
+  ManifestWriter manifest(output_directory);
   std::optional<std::string> manifest_error;
   InOrder in_order(jobs.size(), [&](std::size_t index) {
     Job& job = jobs[index];
@@ -241,7 +241,7 @@ int run_compile(const CompileOptions& options) {
       ++summary.done;
       if (writes_manifest && !manifest_error) {
         try {
-          manifest_entries.append(outcome->manifest_entry);
+          manifest.append(outcome->manifest_entry);
         } catch (const std::exception& error) {
           manifest_error = error.what();
         }
@@ -295,8 +295,7 @@ int run_compile(const CompileOptions& options) {
             ++(written == WriteOutcome::written ? outcome.written : outcome.unchanged);
           }
           outcome.compiled = true;
-          if (writes_manifest)
-            outcome.manifest_entry = Build::format_manifest_entry(build.manifest_entry(outputs));
+          if (writes_manifest) outcome.manifest_entry = ManifestWriter::format_entry(outputs);
           if (!depfile.empty()) {
             for (const OutputFile& output : outputs.files)
               job.written_files.push_back(output.name);
@@ -335,14 +334,10 @@ int run_compile(const CompileOptions& options) {
         targets.push_back(output_directory / output.name);
       }
       if (writes_manifest && !manifest_error) {
-        const fs::path manifest = output_directory / manifest_file_name();
-        const std::string head = build.manifest_head(shared);
-        summary.count(write_file_atomically(manifest, [&](std::ostream& out) {
-          out << head;
-          manifest_entries.copy_to(out);
-          out << Build::manifest_tail(manifest_entries.entry_count());
-        }));
-        targets.push_back(manifest);
+        const fs::path manifest_path = output_directory / manifest_file_name();
+        summary.count(write_file_atomically(
+            manifest_path, [&](std::ostream& out) { manifest.write(out, build, shared); }));
+        targets.push_back(manifest_path);
       }
       if (!depfile.empty() && summary.failed == 0) {
         std::vector<fs::path> dependencies;

@@ -285,100 +285,34 @@ MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const 
   return out;
 }
 
-namespace {
-
-nlohmann::ordered_json files_json(const std::vector<OutputFile>& files) {
-  nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (const OutputFile& file : files)
-    list.push_back({{"file", file.name}, {"hash", hash_of_bytes(file.bytes)}});
-  return list;
-}
-
-}  // namespace
-
-nlohmann::ordered_json Build::manifest_entry(const MaterialOutputs& material) const {
-  return {{"name", material.name},
-          {"source", material.source_path},
-          {"inputs_hash", material.inputs_hash},
-          {"files", files_json(material.files)}};
-}
-
-nlohmann::ordered_json Build::manifest(const std::vector<OutputFile>& shared,
-                                       std::span<const MaterialOutputs> materials) const {
-  std::vector<nlohmann::ordered_json> entries;
-  for (const MaterialOutputs& material : materials)
-    entries.push_back(manifest_entry(material));
-  return manifest(shared, entries);
-}
-
-nlohmann::ordered_json Build::manifest(const std::vector<OutputFile>& shared,
-                                       std::span<const nlohmann::ordered_json> entries) const {
-  nlohmann::ordered_json manifest;
-  manifest["matc_version"] = kVersion;
-  manifest["inputs_hash"] = inputs_hash_;
+nlohmann::ordered_json Build::description() const {
+  nlohmann::ordered_json description;
+  description["matc_version"] = kVersion;
+  description["inputs_hash"] = inputs_hash_;
   std::vector<std::string> emitted;
   for (const OutputKind kind : options_.emit)
     emitted.emplace_back(layout_of(kind).name);
-  manifest["emit"] = emitted;
+  description["emit"] = emitted;
   const LutReference lut_reference = this->lut_reference();
-  manifest["basis"] = lut_reference.basis;
-  manifest["color"] = {{"working_space", color_space_name(options_.color.working_space)},
-                       {"gamut_mapping", gamut_mapping_name(options_.color.gamut_mapping)}};
-  manifest["lut"] = {{"file", lut_reference.file},
-                     {"size", options_.lut.size},
-                     {"samples_per_texel", options_.lut.samples},
-                     {"precision", lut_precision_name(options_.lut_precision)},
-                     {"hash", lut_reference.hash},
-                     {"embedded_size", options_.embedded_lut_size}};
-  manifest["coefficient_table"] = {
+  description["basis"] = lut_reference.basis;
+  description["color"] = {{"working_space", color_space_name(options_.color.working_space)},
+                          {"gamut_mapping", gamut_mapping_name(options_.color.gamut_mapping)}};
+  description["lut"] = {{"file", lut_reference.file},
+                        {"size", options_.lut.size},
+                        {"samples_per_texel", options_.lut.samples},
+                        {"precision", lut_precision_name(options_.lut_precision)},
+                        {"hash", lut_reference.hash},
+                        {"embedded_size", options_.embedded_lut_size}};
+  description["coefficient_table"] = {
       {"file", coefficient_table_file_},
       {"size", stored_coefficient_table_.size()},
       {"precision", lut_precision_name(options_.coefficient_table_precision)},
       {"hash", hash_of_bytes(coefficient_table_file_bytes_)}};
-  manifest["ltc_table"] = {{"file", ltc_file_},
-                           {"size", runtime::shipped_ltc_table().size},
-                           {"precision", "f32"},
-                           {"hash", hash_of_bytes(ltc_file_bytes_)}};
-  manifest["shared_files"] = files_json(shared);
-  nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (const nlohmann::ordered_json& entry : entries)
-    list.push_back(entry);
-  manifest["materials"] = std::move(list);
-  return manifest;
-}
-
-std::string Build::format_manifest_entry(const nlohmann::ordered_json& entry) {
-  return format_json_nested(entry, 2);  // an element of "materials", itself a top-level member
-}
-
-std::string Build::manifest_head(const std::vector<OutputFile>& shared) const {
-  // "materials" is the manifest's last member: the rest is formatted as a whole, and the list
-  // opened where format_json writes an empty one.
-  std::string text = format_json(manifest(shared, std::span<const nlohmann::ordered_json>{}));
-  const std::string empty_list = "[]\n}\n";
-  if (!text.ends_with("\"materials\": " + empty_list))
-    throw std::logic_error("manifest: materials is not last");
-  text.resize(text.size() - empty_list.size());
-  return text + "[";
-}
-
-std::string_view Build::manifest_entry_separator(bool first) {
-  return first ? "\n    " : ",\n    ";
-}
-
-std::string_view Build::manifest_tail(std::size_t entry_count) {
-  return entry_count == 0 ? "]\n}\n" : "\n  ]\n}\n";
-}
-
-std::string Build::manifest_text(const std::vector<OutputFile>& shared,
-                                 std::span<const std::string> formatted_entries) const {
-  std::string text = manifest_head(shared);
-  for (std::size_t i = 0; i < formatted_entries.size(); ++i) {
-    text += manifest_entry_separator(i == 0);
-    text += formatted_entries[i];
-  }
-  text += manifest_tail(formatted_entries.size());
-  return text;
+  description["ltc_table"] = {{"file", ltc_file_},
+                              {"size", runtime::shipped_ltc_table().size},
+                              {"precision", "f32"},
+                              {"hash", hash_of_bytes(ltc_file_bytes_)}};
+  return description;
 }
 
 }  // namespace matc

@@ -90,26 +90,9 @@ class Build {
   // The same, always by a glslang compile (material_library_module patches a checked-in template
   // where one holds: matc/emit/material_module_template.h).
   SpirvWords compile_material_library_module(const CompiledMaterial& compiled) const;
-  // matc_manifest.json: version, options, and every file written with its hash.
-  nlohmann::ordered_json manifest(const std::vector<OutputFile>& shared,
-                                  std::span<const MaterialOutputs> materials) const;
-  // The same from each material's manifest_entry(), so that a batch need not keep every
-  // material's bytes until the end.
-  nlohmann::ordered_json manifest(const std::vector<OutputFile>& shared,
-                                  std::span<const nlohmann::ordered_json> entries) const;
-  // The manifest's bytes (format_json of manifest()) from entries already formatted by
-  // format_manifest_entry: a batch of any size keeps one short string per material, not its
-  // JSON tree.
-  std::string manifest_text(const std::vector<OutputFile>& shared,
-                            std::span<const std::string> formatted_entries) const;
-  // The same text in pieces, for a batch that streams its entries to a file instead of holding
-  // them: manifest_head, then per entry its separator and text, then manifest_tail.
-  std::string manifest_head(const std::vector<OutputFile>& shared) const;
-  static std::string_view manifest_entry_separator(bool first);
-  static std::string_view manifest_tail(std::size_t entry_count);
-  static std::string format_manifest_entry(const nlohmann::ordered_json& entry);
-  // {name, source, inputs_hash, files: [{file, hash}]} for one material.
-  nlohmann::ordered_json manifest_entry(const MaterialOutputs& material) const;
+  // What the build is (version, inputs hash, --emit, basis, colour, the tables' files and hashes):
+  // the head of matc_manifest.json (emit/manifest_writer.h).
+  nlohmann::ordered_json description() const;
 
  private:
   SpirvWords material_library_module(const CompiledMaterial& compiled,
