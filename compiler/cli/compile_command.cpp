@@ -136,7 +136,7 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
         break;
       }
     }
-    if (reserved_names().contains(lowercase(material->name))) {
+    if (reserved_names().contains(material_name_key(material->name))) {
       job.diagnostics.error(material->name_location, "name",
                             fmt::format("'{}' names a file every build writes", material->name),
                             fmt::format("a name other than {} (ignoring case)",

@@ -1,17 +1,10 @@
 #include "unique_names.h"
 
-#include <algorithm>
-#include <cctype>
-
 #include <fmt/core.h>
 
-namespace matc::cli {
+#include "matc/material/parse.h"
 
-std::string lowercase(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
+namespace matc::cli {
 
 bool UniqueNames::claim(const Material& material, std::string_view scope,
                         Diagnostics& diagnostics) {
@@ -21,8 +14,8 @@ bool UniqueNames::claim(const Material& material, std::string_view scope,
 bool UniqueNames::claim(const std::string& name, const std::string& path,
                         const SourceLocation& location, std::string_view scope,
                         Diagnostics& diagnostics) {
-  const auto [first, inserted] =
-      first_use_.try_emplace(lowercase(name), FirstUse{path, location.line, location.column});
+  const auto [first, inserted] = first_use_.try_emplace(
+      material_name_key(name), FirstUse{path, location.line, location.column});
   if (inserted) return true;
   diagnostics.error(
       location, "name",

@@ -11,8 +11,6 @@
 
 namespace matc::cli {
 
-std::string lowercase(std::string text);
-
 class UniqueNames {
  public:
   // Records `material`'s name, or, when an earlier material has it (ignoring case), adds an error

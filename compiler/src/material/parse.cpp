@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <tuple>
 #include <vector>
@@ -267,6 +268,13 @@ class MaterialReader : LocatedJsonReader {
 };
 
 }  // namespace
+
+std::string material_name_key(std::string_view name) {
+  std::string key(name);
+  std::transform(key.begin(), key.end(), key.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return key;
+}
 
 std::optional<std::string> material_name_problem(std::string_view name) {
   if (name.empty()) return "is empty";

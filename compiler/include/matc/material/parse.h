@@ -52,4 +52,8 @@ inline constexpr std::string_view kMaterialNameRule =
 // Why `name` is not a valid material name, or nullopt if it is.
 std::optional<std::string> material_name_problem(std::string_view name);
 
+// Names name files, and file systems may ignore case: two names clash when their keys (the name
+// in lower case) are equal.
+std::string material_name_key(std::string_view name);
+
 }  // namespace matc

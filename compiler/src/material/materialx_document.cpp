@@ -1,0 +1,298 @@
+#include "materialx_document.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "matc/material/materialx_import.h"
+
+namespace matc {
+namespace {
+
+bool is_connected(const pugi::xml_node& input) {
+  for (const char* attribute : {"nodename", "nodegraph", "output", "interfacename"})
+    if (!input.attribute(attribute).empty()) return true;
+  return false;
+}
+
+}  // namespace
+
+std::string_view materialx_type_name(MaterialXType type) {
+  return type == MaterialXType::float1 ? "float" : "color3";
+}
+
+std::optional<Rgb> parse_materialx_value(std::string_view text, MaterialXType type) {
+  std::array<double, 3> values{};
+  std::size_t count = 0;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find(',', start);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view item = text.substr(start, end - start);
+    while (!item.empty() && std::isspace(static_cast<unsigned char>(item.front())))
+      item.remove_prefix(1);
+    while (!item.empty() && std::isspace(static_cast<unsigned char>(item.back())))
+      item.remove_suffix(1);
+    if (item.empty() || count == 3) return std::nullopt;
+    if (item.front() == '+') item.remove_prefix(1);
+    double value = 0.0;
+    const auto [rest, error] = std::from_chars(item.data(), item.data() + item.size(), value);
+    if (error != std::errc() || rest != item.data() + item.size() || !std::isfinite(value)) {
+      return std::nullopt;
+    }
+    values[count++] = value;
+    start = end + 1;
+  }
+  const std::size_t expected = type == MaterialXType::float1 ? 1 : 3;
+  if (count != expected) return std::nullopt;
+  return type == MaterialXType::float1 ? Rgb{values[0], values[0], values[0]}
+                                       : Rgb{values[0], values[1], values[2]};
+}
+
+MaterialXDocument::MaterialXDocument(std::string_view text, const std::string& path,
+                                     Diagnostics& diagnostics)
+    : text_(text), locator_(path, text), diagnostics_(diagnostics) {
+  const pugi::xml_parse_result parsed =
+      document_.load_buffer(text_.data(), text_.size(),
+                            pugi::parse_default | pugi::parse_trim_pcdata, pugi::encoding_utf8);
+  if (!parsed) {
+    diagnostics_.error(
+        locator_.at(static_cast<std::size_t>(std::max<std::ptrdiff_t>(parsed.offset, 0))), "",
+        fmt::format("malformed XML: {}", parsed.description()), "a MaterialX document (XML)");
+    return;
+  }
+  root_ = document_.document_element();
+  if (std::string_view(root_.name()) != "materialx") {
+    diagnostics_.error(at(root_), "", fmt::format("the root element is <{}>", root_.name()),
+                       "a MaterialX document, whose root element is <materialx>");
+    return;
+  }
+  check_version();
+  if (!read_document_space()) return;
+  std::size_t elements = 0;
+  for (const pugi::xml_node& node : root_.children()) {
+    if (node.type() != pugi::node_element) continue;
+    if (++elements > kMaxMaterialXElements) {
+      diagnostics_.error(
+          at(node), "",
+          fmt::format("the document has over {} top-level elements", kMaxMaterialXElements),
+          "a document of at most that many elements");
+      return;
+    }
+    if (const char* name = node.attribute("name").value(); *name) nodes_.emplace(name, node);
+  }
+  readable_ = true;
+}
+
+SourceLocation MaterialXDocument::at(const pugi::xml_node& node) const {
+  // pugixml gives the offset of the element's name; diagnostics point at its '<'.
+  const std::ptrdiff_t offset = node.offset_debug();
+  return offset < 1 ? locator_.whole_file() : locator_.at(static_cast<std::size_t>(offset - 1));
+}
+
+void MaterialXDocument::check_version() {
+  const std::string_view version = root_.attribute("version").value();
+  if (version.empty()) return;
+  for (const std::string_view known : {"1.36", "1.37", "1.38", "1.39"})
+    if (version == known) return;
+  diagnostics_.warning(at(root_), "version",
+                       fmt::format("MaterialX {} is not a version matc knows", version),
+                       "1.36 to 1.39; read as 1.39");
+}
+
+bool MaterialXDocument::read_document_space() {
+  const pugi::xml_attribute attribute = root_.attribute("colorspace");
+  if (attribute.empty()) return true;
+  const auto space = linear_space_of(attribute.value(), root_);
+  if (!space) return false;
+  space_ = *space;
+  return true;
+}
+
+// The linear space a colorspace name stands for (an encoded one: the space it decodes into).
+std::optional<ColorSpace> MaterialXDocument::linear_space_of(std::string_view name,
+                                                             const pugi::xml_node& where) {
+  if (const auto space = find_color_space(name)) return space;
+  if (const auto decoded = decode_color_value(name, 0.0)) return decoded->space;
+  unknown_space(where, "colorspace", name);
+  return std::nullopt;
+}
+
+void MaterialXDocument::unknown_space(const pugi::xml_node& where, const std::string& field,
+                                      std::string_view name) {
+  diagnostics_.error(at(where), field, fmt::format("unknown colour space '{}'", name),
+                     "one of " + color_space_names() +
+                         ", or an encoded srgb_texture, g22_rec709, g18_rec709, g22_ap1, "
+                         "g18_ap1, srgb_displayp3");
+}
+
+std::size_t MaterialXDocument::visit_materials(
+    const std::function<void(const MaterialXShader&)>& visit) {
+  std::size_t found = 0;
+  for (const pugi::xml_node& element : root_.children()) {
+    const std::string_view tag = element.name();
+    const std::string name = element.attribute("name").value();
+    if (tag == "surfacematerial") {
+      ++found;
+      const pugi::xml_node input =
+          element.find_child_by_attribute("input", "name", "surfaceshader");
+      if (!input) {
+        diagnostics_.note(at(element), name, "has no surfaceshader input; skipped");
+        continue;
+      }
+      const std::string shader_name = input.attribute("nodename").value();
+      const auto shader = nodes_.find(shader_name);
+      if (shader_name.empty() || shader == nodes_.end()) {
+        diagnostics_.error(
+            at(input), name + ".surfaceshader",
+            shader_name.empty()
+                ? "names no node (nodename is missing)"
+                : fmt::format("names node '{}', which the document does not hold", shader_name),
+            "the name of a shader node at the top level of the document");
+        continue;
+      }
+      visit({element, shader->second, shader->second.name(), "input"});
+    } else if (tag == "material") {
+      ++found;
+      const pugi::xml_node shaderref = element.child("shaderref");
+      if (!shaderref) {
+        diagnostics_.note(at(element), name, "has no <shaderref>; skipped");
+        continue;
+      }
+      std::string model = shaderref.attribute("node").value();
+      const std::string_view nodedef = shaderref.attribute("nodedef").value();
+      // 1.37 may name the node definition instead: ND_<node>_surfaceshader.
+      if (model.empty() && nodedef.starts_with("ND_") && nodedef.ends_with("_surfaceshader"))
+        model = nodedef.substr(3, nodedef.size() - 3 - std::string_view("_surfaceshader").size());
+      visit({element, shaderref, model, "bindinput"});
+    } else if (tag == "xi:include") {
+      // Safe (nothing outside the document is read), but its materials would vanish silently.
+      diagnostics_.note(
+          at(element), "xi:include",
+          fmt::format("includes '{}', which matc does not read: materials defined there are not "
+                      "imported",
+                      element.attribute("href").value()),
+          "give that document to matc as an input of its own");
+    }
+  }
+  return found;
+}
+
+MaterialXInput MaterialXDocument::read_input(const MaterialXShader& shader, std::string_view name,
+                                             MaterialXType type, const std::string& field) {
+  const pugi::xml_node input =
+      shader.node.find_child_by_attribute(shader.input_tag, "name", std::string(name).c_str());
+  MaterialXInput result;
+  result.location = at(shader.material);
+  if (!input) return result;
+  result.location = at(input);
+  if (is_connected(input)) {
+    result.state = MaterialXInput::State::connected;
+    result.connection = describe_connection(input);
+    result.image_file = image_file(input);
+    return result;
+  }
+  result.state = MaterialXInput::State::invalid;
+  const std::string_view declared = input.attribute("type").value();
+  if (!declared.empty() && declared != materialx_type_name(type)) {
+    diagnostics_.error(
+        result.location, field, fmt::format("has type '{}'", declared),
+        fmt::format("{} declares {} a {}", shader.model, name, materialx_type_name(type)));
+    return result;
+  }
+  const auto parsed = parse_materialx_value(input.attribute("value").value(), type);
+  if (!parsed) {
+    diagnostics_.error(result.location, field,
+                       fmt::format("value '{}' is not a {}", input.attribute("value").value(),
+                                   materialx_type_name(type)),
+                       type == MaterialXType::float1 ? "one finite number"
+                                                     : "three finite numbers separated by commas");
+    return result;
+  }
+  result.value = *parsed;
+  if (type == MaterialXType::color3 && !convert_color(result.value, input, field)) return result;
+  result.state = MaterialXInput::State::value;
+  return result;
+}
+
+bool MaterialXDocument::is_neutral(const MaterialXShader& shader, std::string_view name,
+                                   double neutral) const {
+  const pugi::xml_node input =
+      shader.node.find_child_by_attribute(shader.input_tag, "name", std::string(name).c_str());
+  if (!input) return true;
+  if (is_connected(input)) return false;
+  const std::string_view text = input.attribute("value").value();
+  if (text == "false" || text == "true") return (text == "true" ? 1.0 : 0.0) == neutral;
+  for (const MaterialXType type : {MaterialXType::float1, MaterialXType::color3}) {
+    if (const auto value = parse_materialx_value(text, type))
+      return std::ranges::all_of(*value, [neutral](double v) { return v == neutral; });
+  }
+  return false;
+}
+
+// Decodes an encoded colour and converts it into the document's working space.
+bool MaterialXDocument::convert_color(Rgb& value, const pugi::xml_node& input,
+                                      const std::string& field) {
+  // The colorspace in force at the input: its own attribute, else its nearest ancestor's.
+  std::string space_name(color_space_name(kDefaultColorSpace));
+  for (pugi::xml_node node = input; node; node = node.parent()) {
+    if (const pugi::xml_attribute attribute = node.attribute("colorspace"); !attribute.empty()) {
+      space_name = attribute.value();
+      break;
+    }
+  }
+  ColorSpace space = space_;
+  if (const auto linear = find_color_space(space_name)) {
+    space = *linear;
+  } else if (is_encoded_color_space(space_name)) {
+    for (double& channel : value) {
+      const DecodedColor decoded = *decode_color_value(space_name, channel);
+      channel = decoded.value;
+      space = decoded.space;
+    }
+  } else {
+    unknown_space(input, field, space_name);
+    return false;
+  }
+  if (space != space_) value = multiply(rgb_to_rgb(space, space_), value);
+  return true;
+}
+
+std::string MaterialXDocument::describe_connection(const pugi::xml_node& input) const {
+  std::string source;
+  if (const char* graph = input.attribute("nodegraph").value(); *graph) {
+    source = fmt::format("node graph '{}'", graph);
+  } else if (const char* node = input.attribute("nodename").value(); *node) {
+    source = fmt::format("node '{}'", node);
+  } else {
+    source = fmt::format("interface input '{}'", input.attribute("interfacename").value());
+  }
+  return fmt::format("is driven by {}, not a constant", source);
+}
+
+// The image file an input reads when it is a plain image read (directly, or the output of a node
+// graph that is one), else empty.
+std::string MaterialXDocument::image_file(const pugi::xml_node& input) const {
+  pugi::xml_node node;
+  if (const char* graph_name = input.attribute("nodegraph").value(); *graph_name) {
+    const auto graph = nodes_.find(graph_name);
+    if (graph == nodes_.end()) return {};
+    const char* output_name = input.attribute("output").value();
+    pugi::xml_node output =
+        *output_name ? graph->second.find_child_by_attribute("output", "name", output_name)
+                     : graph->second.child("output");
+    node = graph->second.find_child_by_attribute("name", output.attribute("nodename").value());
+  } else if (const char* node_name = input.attribute("nodename").value(); *node_name) {
+    const auto found = nodes_.find(node_name);
+    if (found != nodes_.end()) node = found->second;
+  }
+  const std::string_view kind = node.name();
+  if (kind != "image" && kind != "tiledimage") return {};
+  return node.find_child_by_attribute("input", "name", "file").attribute("value").value();
+}
+
+}  // namespace matc
