@@ -26,6 +26,8 @@ namespace matc::cli {
 namespace {
 
 // `matc bake`: asset files, and/or one asset from the map options.
+inline constexpr const char* kBakeDepfileName = "matc_bake.d";
+
 struct BakeCommandOptions {
   std::vector<std::string> files;  // asset JSON files
   std::string reflectivity;        // a map file or constant values, for a command-line asset
@@ -272,7 +274,7 @@ int run_bake(const BakeCommandOptions& options) {
   progress.clear();
 
   const fs::path depfile =
-      depfile_path(options.depfile, options.write_depfile, output_directory, "matc_bake.d");
+      depfile_path(options.depfile, options.write_depfile, output_directory, kBakeDepfileName);
   if (!depfile.empty() && counts.failed == 0 && !write_depfile(depfile, targets, dependencies))
     ++counts.failed;
   const double seconds =
@@ -317,15 +319,13 @@ Command register_bake(CLI::App& app) {
   command->add_flag("--error-map", options->error_map,
                     "Also write NAME_error.png: level 0's largest |F - exact| per texel "
                     "(255 = 0.01 or more)");
-  command->add_flag("-k,--keep-going", options->keep_going,
-                    "Bake the remaining assets after one fails (still exits 1)");
-  command->add_flag("-q,--quiet", options->quiet, "Do not print the progress and summary lines");
+  add_keep_going_and_quiet(*command, options->keep_going, options->quiet,
+                           "Bake the remaining assets after one fails",
+                           "progress and summary lines");
   command->add_option("-j,--jobs", options->jobs, "Threads (default: one per hardware thread)")
       ->check(CLI::Range(1u, 1024u));
-  command->add_option("--depfile", options->depfile,
-                      "Write the outputs' dependencies (asset files, maps, the matc "
-                      "binary) to FILE in the Makefile syntax Ninja and CMake read");
-  command->add_flag("--MD", options->write_depfile, "The same, as DIR/matc_bake.d");
+  add_depfile_options(*command, options->depfile, options->write_depfile,
+                      "asset files, maps, the matc binary", kBakeDepfileName);
 
   return {command, [options] { return run_bake(*options); }, true};
 }

@@ -50,8 +50,23 @@ void print_batch_summary(const BatchSummaryWords& words, const BatchCounts& coun
              seconds ? fmt::format(" in {:.2f} s", *seconds) : "");
 }
 
+void add_keep_going_and_quiet(CLI::App& command, bool& keep_going, bool& quiet,
+                              const std::string& keep_going_does, const std::string& silenced) {
+  command.add_flag("-k,--keep-going", keep_going, keep_going_does + " (still exits 1)");
+  command.add_flag("-q,--quiet", quiet, "Do not print the " + silenced);
+}
+
+void add_depfile_options(CLI::App& command, std::string& depfile, bool& write_depfile,
+                         const std::string& dependencies, const std::string& default_name) {
+  command.add_option("--depfile", depfile,
+                     "Write the outputs' dependencies (" + dependencies +
+                         ") to FILE in the Makefile syntax Ninja and CMake read");
+  command.add_flag("--MD", write_depfile,
+                   "The same, as DIR/" + default_name + " (also spelled -MD)");
+}
+
 fs::path depfile_path(const std::string& depfile_option, bool write_depfile,
-                      const fs::path& output_directory, const char* default_name) {
+                      const fs::path& output_directory, const std::string& default_name) {
   if (!depfile_option.empty()) return depfile_option;
   return write_depfile ? output_directory / default_name : fs::path();
 }

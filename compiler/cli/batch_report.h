@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "atomic_file.h"
 
 namespace matc::cli {
@@ -54,10 +56,18 @@ struct BatchSummaryWords {
 void print_batch_summary(const BatchSummaryWords& words, const BatchCounts& counts, bool quiet,
                          std::optional<double> seconds = std::nullopt);
 
+// -k,--keep-going and -q,--quiet, with what keeping going does and what quiet silences.
+void add_keep_going_and_quiet(CLI::App& command, bool& keep_going, bool& quiet,
+                              const std::string& keep_going_does, const std::string& silenced);
+
+// --depfile FILE and --MD (DIR/`default_name`); `dependencies` says what the file lists.
+void add_depfile_options(CLI::App& command, std::string& depfile, bool& write_depfile,
+                         const std::string& dependencies, const std::string& default_name);
+
 // --depfile FILE, or -MD's DIR/`default_name`, or none (empty).
 std::filesystem::path depfile_path(const std::string& depfile_option, bool write_depfile,
                                    const std::filesystem::path& output_directory,
-                                   const char* default_name);
+                                   const std::string& default_name);
 
 // Writes the dependency file (the matc binary added to `dependencies`); on failure prints the
 // reason and returns false.

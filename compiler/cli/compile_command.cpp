@@ -396,16 +396,14 @@ Command register_compile(CLI::App& app) {
                  "for lists longer than a command line holds");
   app.add_option("-o,--output", options->output_directory, "Output directory (created if missing)")
       ->capture_default_str();
-  app.add_flag("-k,--keep-going", options->keep_going,
-               "Compile the remaining files after one fails (still exits 1)");
-  app.add_flag("-q,--quiet", options->quiet, "Do not print the progress and summary lines");
+  add_keep_going_and_quiet(app, options->keep_going, options->quiet,
+                           "Compile the remaining files after one fails",
+                           "progress and summary lines");
   app.add_option("-j,--jobs", options->jobs,
                  "Materials compiled at once (default: one per hardware thread)")
       ->check(CLI::Range(1u, 1024u));
-  app.add_option("--depfile", options->depfile,
-                 "Write the outputs' dependencies (inputs, spectral files, the matc binary) to "
-                 "FILE in the Makefile syntax Ninja and CMake read");
-  app.add_flag("--MD", options->write_depfile, "The same, as DIR/matc.d (also spelled -MD)");
+  add_depfile_options(app, options->depfile, options->write_depfile,
+                      "inputs, spectral files, the matc binary", kDepfileName);
   app.add_option("--emit", options->emit,
                  "Outputs to write, comma-separated (default: all): shader snippets, SPIR-V, "
                  "C headers, JSON manifests, the LUT, the coefficient table of textured metals, "

@@ -97,9 +97,8 @@ Command register_import(CLI::App& app) {
   command->add_option("files", options->files, "MaterialX documents (.mtlx)")->required();
   command->add_option("-o,--output", options->output_directory, "Output directory")
       ->capture_default_str();
-  command->add_flag("-k,--keep-going", options->keep_going,
-                    "Write the other documents' materials when one fails (still exits 1)");
-  command->add_flag("-q,--quiet", options->quiet, "Do not print the summary line");
+  add_keep_going_and_quiet(*command, options->keep_going, options->quiet,
+                           "Write the other documents' materials when one fails", "summary line");
 
   return {command, [options] { return run_import(*options); }, true};
 }
