@@ -16,6 +16,7 @@
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/lut.h"
 #include "matc/runtime/shader_basis.h"
+#include "sanitized_build.h"
 
 namespace {
 
@@ -25,9 +26,11 @@ double channel_f(const matc::runtime::ChannelCoefficients& c, const std::array<d
   return std::max(0.0, c[0] * b[0] + c[1] * b[1] + c[2] * b[2] + c[3] * b[3]);
 }
 
-// The checked-in tables are what `matc basis coefficient-table` fits today, bit for bit.
+// The checked-in tables are what `matc basis coefficient-table` fits today, bit for bit (under
+// sanitizers the default basis' alone: the fit's code is the same for every basis).
 TEST(CoefficientTable, CheckedInTablesAreCurrent) {
   for (const BasisKind kind : matc::runtime::kShippedBases) {
+    if (matc::test::kSanitizedBuild && kind != matc::runtime::kDefaultBasis) continue;
     const matc::CoefficientTable fitted = matc::fit_coefficient_table(kind);
     const matc::runtime::CoefficientTableView shipped =
         matc::runtime::shipped_coefficient_table(kind);

@@ -14,6 +14,7 @@
 #include "matc/compile.h"
 #include "matc/emit/build.h"
 #include "matc/emit/content_hash.h"
+#include "matc/emit/library_module.h"
 #include "matc/emit/manifest_writer.h"
 #include "matc/emit/material_module_template.h"
 #include "matc/emit/shader_literals.h"

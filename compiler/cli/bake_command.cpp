@@ -182,15 +182,11 @@ void check_outputs(std::vector<Asset>& assets, const fs::path& output_directory)
     const BakeAsset& asset = *entry.asset;
     if (!names.claim(asset.name, entry.label, asset.name_location, "a bake", entry.diagnostics))
       continue;
-    for (const std::string& name : possible_bake_outputs(asset.name)) {
-      const std::optional<std::string> input = inputs.overwritten_by(output_directory / name);
-      if (!input) continue;
-      entry.diagnostics.error(asset.name_location, "name",
-                              fmt::format("output '{}' would overwrite the input {}",
-                                          (output_directory / name).string(), *input),
-                              kOutputDirectoryRule);
-      break;
-    }
+    std::vector<fs::path> outputs;
+    for (const std::string& name : possible_bake_outputs(asset.name))
+      outputs.push_back(output_directory / name);
+    if (const auto problem = inputs.overwrite_problem(outputs))
+      entry.diagnostics.error(asset.name_location, "name", *problem, kOutputDirectoryRule);
   }
 }
 

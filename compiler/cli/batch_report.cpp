@@ -28,6 +28,15 @@ std::optional<std::string> InputsInOutputDirectory::overwritten_by(const fs::pat
   return input->second;
 }
 
+std::optional<std::string> InputsInOutputDirectory::overwrite_problem(
+    const std::vector<fs::path>& outputs) const {
+  for (const fs::path& output : outputs) {
+    if (const std::optional<std::string> input = overwritten_by(output))
+      return fmt::format("output '{}' would overwrite the input {}", output.string(), *input);
+  }
+  return std::nullopt;
+}
+
 void print_batch_summary(const BatchSummaryWords& words, const BatchCounts& counts, bool quiet,
                          std::optional<double> seconds) {
   if (quiet) return;

@@ -22,10 +22,14 @@ class InputsInOutputDirectory {
   explicit InputsInOutputDirectory(const std::filesystem::path& output_directory);
   // `as_given` is how the user named it (what the error quotes); `path` where it lies.
   void add(const std::filesystem::path& path, const std::string& as_given);
+  // "output 'DIR/x.json' would overwrite the input x.json" for the first of `outputs` that would.
+  std::optional<std::string> overwrite_problem(
+      const std::vector<std::filesystem::path>& outputs) const;
+
+ private:
   // The input (as given) that writing `output`, a file in the output directory, would replace.
   std::optional<std::string> overwritten_by(const std::filesystem::path& output) const;
 
- private:
   std::filesystem::path directory_identity_;
   std::map<std::string, std::string> inputs_;  // file name -> as given
 };

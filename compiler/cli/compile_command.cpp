@@ -128,14 +128,8 @@ std::vector<Job> parse_jobs(const CompileOptions& options, const fs::path& outpu
   // Name rules, then the job: a material with an error is kept for its diagnostics only.
   const auto admit = [&](Job& job, std::optional<Material> material, bool keep) {
     if (!material) return;
-    std::optional<std::string> overwritten;
-    for (const fs::path& output : possible_outputs(output_directory, material->name)) {
-      if ((overwritten = inputs.overwritten_by(output))) {
-        overwritten =
-            fmt::format("output '{}' would overwrite the input {}", output.string(), *overwritten);
-        break;
-      }
-    }
+    const std::optional<std::string> overwritten =
+        inputs.overwrite_problem(possible_outputs(output_directory, material->name));
     if (reserved_names().contains(material_name_key(material->name))) {
       job.diagnostics.error(material->name_location, "name",
                             fmt::format("'{}' names a file every build writes", material->name),

@@ -51,11 +51,9 @@ int run_import(const ImportOptions& options) {
     }
     for (const ImportedMaterial& material : document.imported.materials) {
       const fs::path output = output_of(material);
-      if (const std::optional<std::string> input = inputs.overwritten_by(output)) {
-        document.imported.diagnostics.error(
-            material.material.name_location, "name",
-            fmt::format("output '{}' would overwrite the input {}", output.string(), *input),
-            kOutputDirectoryRule);
+      if (const auto problem = inputs.overwrite_problem({output})) {
+        document.imported.diagnostics.error(material.material.name_location, "name", *problem,
+                                            kOutputDirectoryRule);
       } else {
         names.claim(material.material, "an import", document.imported.diagnostics);
       }

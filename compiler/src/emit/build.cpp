@@ -7,18 +7,14 @@
 #include <fmt/format.h>
 
 #include "matc/emit/content_hash.h"
+#include "matc/emit/library_module.h"
 #include "matc/emit/material_module_template.h"
 #include "matc/emit/material_snippet.h"
 #include "matc/emit/shader_library.h"
 #include "matc/json_format.h"
-#include "matc/ltc/ltc_table_files.h"
-#include "matc/lut/coefficient_table_files.h"
-#include "matc/lut/default_lut_hashes.h"
 #include "matc/material/parse.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/shader_basis.h"
-#include "matc/spirv/linkage.h"
-#include "matc/spirv/spirv_tools.h"
 #include "matc/version.h"
 
 namespace matc {
@@ -40,78 +36,32 @@ OutputKind output_kind_of(ShaderLanguage language) {
   return OutputKind::glsl;
 }
 
-// A library module from GLSL: the source with a placeholder entry point, then exports.
-SpirvWords library_module(std::string source, std::string name,
-                          std::span<const std::string> exports) {
-  source.insert(0, "#version 450\n");
-  source.append("\nvoid main() {}\n");
-  const SpirvWords compiled = compile_to_spirv(
-      {ShaderLanguage::glsl, std::move(source), name, "main", /*keep_uncalled_functions=*/true});
-  const SpirvWords library = export_functions(compiled, exports);
-  validate_spirv(library, SpirvTarget::universal_1_3, name);
-  return optimize_spirv(library, SpirvTarget::universal_1_3, name);
+// The options, checked: a Build is only made from options in range.
+BuildOptions checked(BuildOptions options) {
+  if (options.embedded_lut_size != 0 && (options.embedded_lut_size < kMinLutSize ||
+                                         options.embedded_lut_size > kMaxEmbeddedLutSize)) {
+    throw std::invalid_argument(fmt::format("embedded LUT size {} outside [{}, {}]",
+                                            options.embedded_lut_size, kMinLutSize,
+                                            kMaxEmbeddedLutSize));
+  }
+  return options;
 }
 
-std::string spirv_bytes(const SpirvWords& words) {
-  std::string bytes(words.size() * sizeof(std::uint32_t), '\0');
-  for (std::size_t i = 0; i < words.size(); ++i) {
-    for (std::size_t b = 0; b < 4; ++b)  // SPIR-V files are little-endian words
-      bytes[4 * i + b] = static_cast<char>((words[i] >> (8 * b)) & 0xffu);
-  }
-  return bytes;
+SharedTableOptions table_options(const BuildOptions& options) {
+  return {options.basis,
+          options.lut,
+          options.lut_format,
+          options.lut_precision,
+          options.coefficient_table_precision,
+          options.embedded_lut_size};
 }
 
 }  // namespace
 
-std::vector<std::string> shared_library_exports(bool embedded_lut) {
-  std::vector<std::string> names = {"matc_basis",
-                                    "matc_fresnel",
-                                    "matc_lut_texcoord",
-                                    "matc_fresnel_preintegrated",
-                                    "matc_energy_compensation",
-                                    "matc_preintegrated_basis_analytic",
-                                    "matc_coefficient_table_texcoord",
-                                    "matc_channel_coefficients",
-                                    "matc_coefficients_from_table",
-                                    "matc_artistic_from_ior",
-                                    "matc_coefficients_from_baked",
-                                    "matc_ltc_texcoord",
-                                    "matc_ltc_transform",
-                                    "matc_ltc_quad_integral",
-                                    "matc_ltc_disk_integral",
-                                    "matc_ltc_sphere_integral",
-                                    "matc_ltc_quad_light",
-                                    "matc_ltc_disk_light",
-                                    "matc_ltc_sphere_light"};
-  if (embedded_lut) names.emplace_back("matc_preintegrated_basis_embedded");
-  return names;
-}
-
-std::vector<std::string> material_library_exports(std::string_view material_name) {
-  return {fmt::format("matc_fresnel_{}", material_name),
-          fmt::format("matc_fresnel_preintegrated_{}", material_name)};
-}
-
-Build::Build(BuildOptions options) : options_(std::move(options)) {
-  if (options_.embedded_lut_size != 0 && (options_.embedded_lut_size < kMinLutSize ||
-                                          options_.embedded_lut_size > kMaxEmbeddedLutSize)) {
-    throw std::invalid_argument(fmt::format("embedded LUT size {} outside [{}, {}]",
-                                            options_.embedded_lut_size, kMinLutSize,
-                                            kMaxEmbeddedLutSize));
-  }
-  const runtime::BasisView basis = this->basis();
-  if (options_.embedded_lut_size != 0) {
-    embedded_lut_ = preintegrate_lut(basis, {options_.embedded_lut_size, options_.lut.samples});
-  }
-  stored_coefficient_table_ =
-      matc::stored_coefficient_table(options_.basis, options_.coefficient_table_precision);
-  coefficient_table_file_ = shared_file_name(OutputKind::coefficient_table, options_.lut_format);
-  coefficient_table_file_bytes_ = encode_coefficient_table(
-      stored_coefficient_table_, options_.lut_format, options_.coefficient_table_precision);
-  ltc_file_ = shared_file_name(OutputKind::ltc, options_.lut_format);
-  ltc_file_bytes_ = encode_ltc_table(runtime::shipped_ltc_table(), options_.lut_format);
+Build::Build(BuildOptions options)
+    : options_(checked(std::move(options))), tables_(table_options(options_)) {
   inputs_hash_ = ContentHash().add(options_key()).hex();
-  ShaderLibraryOptions library_options{options_.lut.size, stored_coefficient_table_.size(),
+  ShaderLibraryOptions library_options{options_.lut.size, tables_.stored_coefficient_table().size(),
                                        embedded_lut()};
   library_options.ltc_size = runtime::shipped_ltc_table().size;
   library_options.analytic_lut = options_.basis;
@@ -127,27 +77,6 @@ Build::Build(BuildOptions options) : options_(std::move(options)) {
   library_options.analytic_lut.reset();
   glsl_material_module_library_ =
       shader_library_source(ShaderLanguage::glsl, shader_basis, library_options, inputs_hash_);
-}
-
-const Build::BakedTable& Build::baked_table() const {
-  std::call_once(lazy_table_->once, [this] {
-    BakedTable baked;
-    baked.lut = bake_lut(basis(), options_.lut);
-    baked.stored = stored_as(baked.lut.lut, options_.lut_precision);
-    baked.file_bytes = encode_lut(baked.lut, options_.lut_format, options_.lut_precision);
-    baked.hash = hash_of_bytes(baked.file_bytes);  // once: headers and the manifest name it
-    lazy_table_->table = std::move(baked);
-  });
-  return *lazy_table_->table;
-}
-
-LutReference Build::lut_reference() const {
-  // The default table's hash is checked in: naming it needs no bake.
-  const auto known =
-      default_lut_hash(options_.basis, options_.lut_format, options_.lut_precision, options_.lut);
-  return {shared_file_name(OutputKind::lut, options_.lut_format), options_.lut.size,
-          known ? std::string(*known) : baked_table().hash,
-          std::string(runtime::basis_name(options_.basis))};
 }
 
 std::string Build::options_key() const {
@@ -203,28 +132,11 @@ std::vector<OutputFile> Build::shared_outputs() const {
   }
   if (emit.contains(OutputKind::spirv)) {
     const std::string name = shared_file_name(OutputKind::spirv, options_.lut_format);
-    files.push_back(
-        {name, spirv_bytes(library_module(glsl_library_, name,
-                                          shared_library_exports(embedded_lut_.has_value())))});
+    files.push_back({name, spirv_file_bytes(compile_library_module(
+                               glsl_library_, name, shared_library_exports(embedded_lut())))});
   }
-  if (emit.contains(OutputKind::lut)) {
-    const std::string file = lut_reference().file;
-    files.push_back({file, baked_table().file_bytes});
-    files.push_back({file + ".json", format_json(lut_manifest(this->lut(), options_.lut_format,
-                                                              options_.lut_precision))});
-  }
-  if (emit.contains(OutputKind::coefficient_table)) {
-    files.push_back({coefficient_table_file_, coefficient_table_file_bytes_});
-    files.push_back(
-        {coefficient_table_file_ + ".json",
-         format_json(coefficient_table_manifest(stored_coefficient_table_, options_.lut_format,
-                                                options_.coefficient_table_precision))});
-  }
-  if (emit.contains(OutputKind::ltc)) {
-    files.push_back({ltc_file_, ltc_file_bytes_});
-    files.push_back({ltc_file_ + ".json", format_json(ltc_table_manifest(
-                                              runtime::shipped_ltc_table(), options_.lut_format))});
-  }
+  for (OutputFile& table : tables_.files(emit))
+    files.push_back(std::move(table));
   return files;
 }
 
@@ -238,7 +150,7 @@ SpirvWords Build::material_library_module(const CompiledMaterial& compiled,
   // no embedded table; it is empty in a bootstrap build.
   const std::span<const std::uint32_t> template_words =
       checked_in_material_module_template(options_.basis, compiled.fresnel_nonnegative);
-  if (options_.lut.size == kDefaultLutSize && !embedded_lut_ && !template_words.empty())
+  if (options_.lut.size == kDefaultLutSize && !embedded_lut() && !template_words.empty())
     return patch_material_module(template_words, compiled);
   return compile_material_library_module(compiled, inputs_hash);
 }
@@ -250,10 +162,10 @@ SpirvWords Build::compile_material_library_module(const CompiledMaterial& compil
 SpirvWords Build::compile_material_library_module(const CompiledMaterial& compiled,
                                                   std::string_view inputs_hash) const {
   const std::string& name = compiled.material.name;
-  return library_module(glsl_material_module_library_ +
-                            material_snippet_source(ShaderLanguage::glsl, compiled, inputs_hash),
-                        material_file_name(OutputKind::spirv, name),
-                        material_library_exports(name));
+  return compile_library_module(
+      glsl_material_module_library_ +
+          material_snippet_source(ShaderLanguage::glsl, compiled, inputs_hash),
+      material_file_name(OutputKind::spirv, name), material_library_exports(name));
 }
 
 MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const {
@@ -271,10 +183,11 @@ MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const 
     // The hash is computed once: it reads the material's input files.
     const SpirvWords module = material_library_module(compiled, out.inputs_hash);
     if (emit.contains(OutputKind::spirv))
-      out.files.push_back({material_file_name(OutputKind::spirv, name), spirv_bytes(module)});
+      out.files.push_back({material_file_name(OutputKind::spirv, name), spirv_file_bytes(module)});
     if (emit.contains(OutputKind::header)) {
-      out.files.push_back({material_file_name(OutputKind::header, name),
-                           material_c_header(compiled, out.inputs_hash, lut_reference(), module)});
+      out.files.push_back(
+          {material_file_name(OutputKind::header, name),
+           material_c_header(compiled, out.inputs_hash, tables_.lut_reference(), module)});
     }
   }
   if (emit.contains(OutputKind::json)) {
@@ -293,25 +206,10 @@ nlohmann::ordered_json Build::description() const {
   for (const OutputKind kind : options_.emit)
     emitted.emplace_back(layout_of(kind).name);
   description["emit"] = emitted;
-  const LutReference lut_reference = this->lut_reference();
-  description["basis"] = lut_reference.basis;
+  description["basis"] = std::string(runtime::basis_name(options_.basis));
   description["color"] = {{"working_space", color_space_name(options_.color.working_space)},
                           {"gamut_mapping", gamut_mapping_name(options_.color.gamut_mapping)}};
-  description["lut"] = {{"file", lut_reference.file},
-                        {"size", options_.lut.size},
-                        {"samples_per_texel", options_.lut.samples},
-                        {"precision", lut_precision_name(options_.lut_precision)},
-                        {"hash", lut_reference.hash},
-                        {"embedded_size", options_.embedded_lut_size}};
-  description["coefficient_table"] = {
-      {"file", coefficient_table_file_},
-      {"size", stored_coefficient_table_.size()},
-      {"precision", lut_precision_name(options_.coefficient_table_precision)},
-      {"hash", hash_of_bytes(coefficient_table_file_bytes_)}};
-  description["ltc_table"] = {{"file", ltc_file_},
-                              {"size", runtime::shipped_ltc_table().size},
-                              {"precision", "f32"},
-                              {"hash", hash_of_bytes(ltc_file_bytes_)}};
+  tables_.describe(description);
   return description;
 }
 

@@ -1,6 +1,8 @@
-// Everything one `matc` run writes: the shared library, the LUT, and per material its snippets,
-// SPIR-V, C header and manifest. The CLI decides where files go, output_layout.h their names;
-// this decides their bytes.
+// Everything one `matc` run writes: the shared library, the tables, and per material its
+// snippets, SPIR-V, C header and JSON. A facade over the modules that make them: the output
+// layout names the files (output_layout.h), SharedTables makes the tables (shared_tables.h), the
+// shader library and snippet generators and library_module.h the shaders, ManifestWriter the
+// manifest (manifest_writer.h). The CLI decides where files go.
 #pragma once
 
 #include <memory>
@@ -18,6 +20,7 @@
 #include "matc/emit/c_header.h"
 #include "matc/emit/output_layout.h"
 #include "matc/emit/shader_literals.h"
+#include "matc/emit/shared_tables.h"
 #include "matc/fit/coefficient_table.h"
 #include "matc/lut/lut_files.h"
 #include "matc/spirv/shader_compiler.h"
@@ -38,11 +41,6 @@ struct BuildOptions {
   ColorOptions color;                                 // --color-space, --gamut-mapping
 };
 
-struct OutputFile {
-  std::string name;  // a plain file name inside the output directory
-  std::string bytes;
-};
-
 struct MaterialOutputs {
   std::string name;
   std::string source_path;
@@ -61,13 +59,15 @@ class Build {
   runtime::BasisView basis() const;
   // The table is baked on first use (the LUT file, a header or the manifest naming its hash,
   // validation): a run that writes none of those never pays for it.
-  const BakedLut& lut() const { return baked_table().lut; }
+  const BakedLut& lut() const { return tables_.lut(); }
   // The table as the written file stores it (f16 rounding), what a renderer samples.
-  const Lut& stored_lut() const { return baked_table().stored; }
-  const Lut* embedded_lut() const { return embedded_lut_ ? &*embedded_lut_ : nullptr; }
+  const Lut& stored_lut() const { return tables_.stored_lut(); }
+  const Lut* embedded_lut() const { return tables_.embedded_lut(); }
   // The basis' coefficient table as the written file stores it (the preintegrated table's format,
   // coefficient_table_precision): what a shader samples for textured metals.
-  const CoefficientTable& stored_coefficient_table() const { return stored_coefficient_table_; }
+  const CoefficientTable& stored_coefficient_table() const {
+    return tables_.stored_coefficient_table();
+  }
   const std::string& inputs_hash() const { return inputs_hash_; }
 
   const std::string& library_source(ShaderLanguage language) const;
@@ -102,28 +102,8 @@ class Build {
   std::string options_key() const;
 
   BuildOptions options_;
-  std::optional<Lut> embedded_lut_;
+  SharedTables tables_;
   std::string inputs_hash_;
-  // The preintegrated table in every form the outputs need, made once by baked_table().
-  struct BakedTable {
-    BakedLut lut;
-    Lut stored;
-    std::string file_bytes;
-    std::string hash;  // hash_of_bytes(file_bytes)
-  };
-  struct LazyTable {
-    std::once_flag once;
-    std::optional<BakedTable> table;
-  };
-  const BakedTable& baked_table() const;
-  // The table's file name and hash, as headers and the manifest name it.
-  LutReference lut_reference() const;
-  std::shared_ptr<LazyTable> lazy_table_ = std::make_shared<LazyTable>();
-  CoefficientTable stored_coefficient_table_;
-  std::string coefficient_table_file_;
-  std::string coefficient_table_file_bytes_;
-  std::string ltc_file_;
-  std::string ltc_file_bytes_;
   std::string glsl_library_;
   std::string hlsl_library_;
   std::string wgsl_library_;
@@ -131,9 +111,5 @@ class Build {
   // each <name>.spv compiles it, and glslang parsing the unused functions cost a fifth of a batch.
   std::string glsl_material_module_library_;
 };
-
-// The names a library module exports.
-std::vector<std::string> shared_library_exports(bool embedded_lut);
-std::vector<std::string> material_library_exports(std::string_view material_name);
 
 }  // namespace matc

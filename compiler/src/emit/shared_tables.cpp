@@ -1,0 +1,88 @@
+#include "matc/emit/shared_tables.h"
+
+#include "matc/emit/content_hash.h"
+#include "matc/json_format.h"
+#include "matc/ltc/ltc_table_files.h"
+#include "matc/lut/coefficient_table_files.h"
+#include "matc/lut/default_lut_hashes.h"
+#include "matc/lut/preintegrate.h"
+#include "matc/runtime/ltc.h"
+
+namespace matc {
+
+SharedTables::SharedTables(const SharedTableOptions& options)
+    : options_(options),
+      stored_coefficient_table_(
+          matc::stored_coefficient_table(options.basis, options.coefficient_table_precision)),
+      coefficient_table_file_bytes_(encode_coefficient_table(
+          stored_coefficient_table_, options.format, options.coefficient_table_precision)),
+      ltc_file_bytes_(encode_ltc_table(runtime::shipped_ltc_table(), options.format)) {
+  if (options_.embedded_lut_size != 0) {
+    embedded_lut_ = preintegrate_lut(runtime::shipped_basis(options_.basis),
+                                     {options_.embedded_lut_size, options_.lut.samples});
+  }
+}
+
+const SharedTables::Baked& SharedTables::baked() const {
+  std::call_once(lazy_->once, [this] {
+    Baked baked;
+    baked.lut = bake_lut(runtime::shipped_basis(options_.basis), options_.lut);
+    baked.stored = stored_as(baked.lut.lut, options_.lut_precision);
+    baked.file_bytes = encode_lut(baked.lut, options_.format, options_.lut_precision);
+    baked.hash = hash_of_bytes(baked.file_bytes);  // once: headers and the manifest name it
+    lazy_->baked = std::move(baked);
+  });
+  return *lazy_->baked;
+}
+
+LutReference SharedTables::lut_reference() const {
+  const auto known =
+      default_lut_hash(options_.basis, options_.format, options_.lut_precision, options_.lut);
+  return {shared_file_name(OutputKind::lut, options_.format), options_.lut.size,
+          known ? std::string(*known) : baked().hash,
+          std::string(runtime::basis_name(options_.basis))};
+}
+
+std::vector<OutputFile> SharedTables::files(const std::set<OutputKind>& emit) const {
+  std::vector<OutputFile> files;
+  const auto add = [&](OutputKind kind, std::string bytes, std::string manifest) {
+    const std::string name = shared_file_name(kind, options_.format);
+    files.push_back({name, std::move(bytes)});
+    files.push_back({name + ".json", std::move(manifest)});
+  };
+  if (emit.contains(OutputKind::lut)) {
+    add(OutputKind::lut, baked().file_bytes,
+        format_json(lut_manifest(lut(), options_.format, options_.lut_precision)));
+  }
+  if (emit.contains(OutputKind::coefficient_table)) {
+    add(OutputKind::coefficient_table, coefficient_table_file_bytes_,
+        format_json(coefficient_table_manifest(stored_coefficient_table_, options_.format,
+                                               options_.coefficient_table_precision)));
+  }
+  if (emit.contains(OutputKind::ltc)) {
+    add(OutputKind::ltc, ltc_file_bytes_,
+        format_json(ltc_table_manifest(runtime::shipped_ltc_table(), options_.format)));
+  }
+  return files;
+}
+
+void SharedTables::describe(nlohmann::ordered_json& description) const {
+  const LutReference reference = lut_reference();
+  description["lut"] = {{"file", reference.file},
+                        {"size", options_.lut.size},
+                        {"samples_per_texel", options_.lut.samples},
+                        {"precision", lut_precision_name(options_.lut_precision)},
+                        {"hash", reference.hash},
+                        {"embedded_size", options_.embedded_lut_size}};
+  description["coefficient_table"] = {
+      {"file", shared_file_name(OutputKind::coefficient_table, options_.format)},
+      {"size", stored_coefficient_table_.size()},
+      {"precision", lut_precision_name(options_.coefficient_table_precision)},
+      {"hash", hash_of_bytes(coefficient_table_file_bytes_)}};
+  description["ltc_table"] = {{"file", shared_file_name(OutputKind::ltc, options_.format)},
+                              {"size", runtime::shipped_ltc_table().size},
+                              {"precision", "f32"},
+                              {"hash", hash_of_bytes(ltc_file_bytes_)}};
+}
+
+}  // namespace matc
