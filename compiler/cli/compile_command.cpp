@@ -17,10 +17,10 @@
 
 #include "atomic_file.h"
 #include "batch_report.h"
-#include "channel_list.h"
 #include "color_options.h"
 #include "commands.h"
 #include "device_validation_report.h"
+#include "emit_option.h"
 #include "file_list.h"
 #include "in_order.h"
 #include "lut_options.h"
@@ -83,11 +83,7 @@ std::vector<fs::path> possible_outputs(const fs::path& directory, const std::str
 
 BuildOptions build_options(const CompileOptions& options) {
   BuildOptions build = table_build_options(options.lut, options.embed_lut, options.embed_lut_size);
-  if (!options.emit.empty()) {
-    build.emit.clear();
-    for (const std::string& name : split_list(options.emit))
-      build.emit.insert(*output_kind_from_name(name));
-  }
+  build.emit = emitted_kinds(options.emit);
   build.lut_format = *lut_format_from_name(options.lut_format);
   build.color = color_options_of(options.color);
   return build;
@@ -398,21 +394,10 @@ Command register_compile(CLI::App& app) {
       ->check(CLI::Range(1u, 1024u));
   add_depfile_options(app, options->depfile, options->write_depfile,
                       "inputs, spectral files, the matc binary", kDepfileName);
-  app.add_option("--emit", options->emit,
-                 "Outputs to write, comma-separated (default: all): shader snippets, SPIR-V, "
-                 "C headers, JSON manifests, the LUT, the coefficient table of textured metals, "
-                 "the LTC table of area lights")
-      ->check(CLI::Validator(
-          [](std::string& list) -> std::string {
-            for (const std::string& name : split_list(list)) {
-              if (!matc::output_kind_from_name(name)) {
-                return "'" + name + "' is not one of " +
-                       CLI::detail::join(matc::output_kind_names(), ",");
-              }
-            }
-            return {};
-          },
-          "LIST", "output kinds"));
+  add_emit_option(app, options->emit,
+                  "Outputs to write, comma-separated (default: all): shader snippets, SPIR-V, "
+                  "C headers, JSON manifests, the LUT, the coefficient table of textured metals, "
+                  "the LTC table of area lights");
   CLI::Option* no_shared_option = app.add_flag(
       "--no-shared", options->no_shared,
       "Write only each material's own files (<name>.*), not the shared library, tables and "

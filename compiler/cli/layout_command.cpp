@@ -7,8 +7,8 @@
 
 #include <fmt/core.h>
 
-#include "channel_list.h"
 #include "commands.h"
+#include "emit_option.h"
 #include "generated_source.h"
 #include "matc/emit/output_layout.h"
 #include "matc/material/parse.h"
@@ -38,12 +38,7 @@ int run_layout(const LayoutOptions& options) {
       return kExitUsageError;
     }
   }
-  std::set<OutputKind> emit = all_output_kinds();
-  if (!options.emit.empty()) {
-    emit.clear();
-    for (const std::string& name : split_list(options.emit))
-      emit.insert(*output_kind_from_name(name));
-  }
+  const std::set<OutputKind> emit = emitted_kinds(options.emit);
   std::vector<std::string> files;
   if (!options.no_shared)
     files = shared_file_names(emit, *lut_format_from_name(options.lut_format));
@@ -67,18 +62,7 @@ Command register_layout(CLI::App& app) {
       "Print the names of the files a compile writes (one per line) for these options and "
       "material names, or the CMake and Bazel lists of them");
   command->add_option("names", options->names, "Material names (a material file's \"name\")");
-  command
-      ->add_option("--emit", options->emit, "Output kinds, as the compile's --emit (default: all)")
-      ->check(CLI::Validator(
-          [](std::string& list) -> std::string {
-            for (const std::string& name : split_list(list)) {
-              if (!output_kind_from_name(name))
-                return "'" + name + "' is not one of " +
-                       CLI::detail::join(output_kind_names(), ",");
-            }
-            return {};
-          },
-          "LIST", "output kinds"));
+  add_emit_option(*command, options->emit, "Output kinds, as the compile's --emit (default: all)");
   command->add_option("--lut", options->lut_format, "The tables' file format, as the compile's")
       ->capture_default_str()
       ->check(CLI::IsMember(lut_format_names()));
