@@ -1,0 +1,384 @@
+// matc's Fresnel inside three.js's own physical material: a MeshStandardMaterial or
+// MeshPhysicalMaterial becomes a matc metal in every light path the engine has (punctual lights,
+// image lighting with its multiple scattering, rect area lights), with the rest of the engine
+// (shadows, fog, tone mapping, maps, clearcoat) untouched. Patched at run time from the engine's
+// own shader chunks; a chunk that changed makes it throw, never render wrongly. README.md says
+// how to use it and docs/web-engines.md what each patch replaces.
+//
+//   import { loadMatcBuild, useMatcFresnel } from "./matc-three.mjs";
+//   const build = await loadMatcBuild("matc-out/", renderer);        // a `matc -o matc-out` build
+//   const gold = new THREE.MeshPhysicalMaterial({ roughness: 0.3 });
+//   useMatcFresnel(gold, build, { material: await build.loadMaterial("gold") });
+import * as THREE from "three";
+import { KTX2Loader } from "three/addons/loaders/KTX2Loader.js";
+
+// The three.js revisions whose chunks the patches below were written against and tested with
+// (tests/js/check-three-engine.mjs). Others are patched too when every anchor is still there, with
+// a warning; when one is not, useMatcFresnel throws.
+export const kTestedThreeRevisions = ["187"];
+
+// The matc library version (MATC_VERSION in matc_fresnel.glsl) this module was written for.
+const kMatcVersion = "0.1.0";
+
+// A problem that must stop the material from being used: reported on the console and thrown.
+export class MatcThreeError extends Error {
+  constructor(message) {
+    super(`matc-three: ${message}`);
+    this.name = "MatcThreeError";
+    console.error(this.message);
+  }
+}
+
+// ---- The patches: (chunk, anchor, replacement), each anchor found exactly once. ----
+
+// Appended to lights_physical_pars_fragment's declarations: the matc library and what the patched
+// light paths read (this pixel's coefficients and preintegrated basis, set in main()).
+const kDeclarations = (library) => `
+${library}
+uniform sampler2D matc_lut;
+uniform sampler2D matc_ltc;
+MatcFresnelCoefficients matc_c;
+vec4 matc_bbar;
+
+// Image lighting: the preintegrated Fresnel sum_i c_i bbar_i with matc's multiple scattering
+// (Turquin's 1 + F0 (1 - E) / E, E = bbar_0), as the CPU runtime computes it.
+void matc_image_lighting( inout vec3 singleScatter, inout vec3 multiScatter ) {
+	singleScatter += matc_fresnel_preintegrated( matc_c, matc_bbar ) * matc_energy_compensation( matc_c, matc_bbar );
+}
+`;
+
+// What main() computes before the lights: the coefficients of this pixel (MATC_SOURCE_* picks
+// where from) and the preintegrated table's texel at (NdotV, roughness) as the engine sees them.
+const kPixelSetup = `
+#if defined( MATC_SOURCE_TABLE )
+	{
+		vec3 matc_r = texture2D( matc_reflectivity_map, vUv ).rgb * matc_reflectivity;
+		vec3 matc_g = texture2D( matc_edge_tint_map, vUv ).rgb * matc_edge_tint;
+		matc_c = MATC_COEFFICIENTS_FROM_TABLE( matc_coefficient_table, matc_r, matc_g );
+	}
+#elif defined( MATC_SOURCE_BAKED )
+	#ifdef MATC_BAKED_F0
+		vec3 matc_f0 = texture2D( matc_f0_map, vUv ).rgb;
+	#else
+		vec3 matc_f0 = diffuseColor.rgb;
+	#endif
+	matc_c = matc_coefficients_from_baked( matc_f0, texture2D( matc_c2_map, vUv ).rgb, texture2D( matc_c3_map, vUv ).rgb );
+#else
+	matc_c = MatcFresnelCoefficients( matc_red, matc_green, matc_blue );
+#endif
+	{
+		vec3 matc_view = isOrthographic ? vec3( 0.0, 0.0, 1.0 ) : normalize( vViewPosition );
+		matc_bbar = texture2D( matc_lut, matc_lut_texcoord( saturate( dot( normal, matc_view ) ), material.roughness ) );
+	}
+`;
+
+const kSourceUniforms = `
+#if defined( MATC_SOURCE_TABLE )
+	uniform sampler2D matc_coefficient_table;
+	uniform sampler2D matc_reflectivity_map;
+	uniform sampler2D matc_edge_tint_map;
+	uniform vec3 matc_reflectivity;
+	uniform vec3 matc_edge_tint;
+#elif defined( MATC_SOURCE_BAKED )
+	uniform sampler2D matc_c2_map;
+	uniform sampler2D matc_c3_map;
+	#ifdef MATC_BAKED_F0
+		uniform sampler2D matc_f0_map;
+	#endif
+#else
+	uniform vec4 matc_red;
+	uniform vec4 matc_green;
+	uniform vec4 matc_blue;
+#endif
+`;
+
+// Each patch: the chunk, the exact text it replaces (found once, or the chunk changed), the text
+// put there, and what it means (docs/web-engines.md lists these).
+export const kPatches = [
+  {
+    chunk: "lights_physical_pars_fragment",
+    anchor: "uniform sampler2D dfgLUT;\n",
+    replacement: (library) => `uniform sampler2D dfgLUT;\n${kSourceUniforms}${kDeclarations(library)}`,
+    what: "declarations: matc_fresnel.glsl, the tables, this pixel's coefficients",
+  },
+  {
+    chunk: "lights_physical_pars_fragment",
+    anchor: "vec3 F = F_Schlick( f0, f90, dotVH ); #ifdef USE_IRIDESCENCE",
+    replacement: () => "\tvec3 F = matc_fresnel( matc_c, dotVH );\n\n\t#ifdef USE_IRIDESCENCE\n",
+    what: "punctual lights: F_Schlick(f0, f90, dotVH) in BRDF_GGX becomes matc_fresnel(c, dotVH)",
+  },
+  {
+    chunk: "lights_physical_pars_fragment",
+    anchor: "\t\tcomputeMultiscattering( material.dfg, material.diffuseColor, material.specularF90, " +
+            "singleScatteringMetallic, multiScatteringMetallic );\n",
+    replacement: () => "\t\tmatc_image_lighting( singleScatteringMetallic, multiScatteringMetallic );\n",
+    what: "image lighting: the two-channel DFG table and Fdez-Agüera's term become sum_i c_i bbar_i " +
+          "with matc's energy compensation",
+  },
+  {
+    chunk: "lights_physical_pars_fragment",
+    anchor: "\t\treflectedLight.directSpecular += lightColor * fresnel * LTC_Evaluate( normal, viewDir, " +
+            "position, mInv, rectCoords );\n",
+    replacement: () =>
+      "\t\tvec4 matc_ltc_texel = texture2D( matc_ltc, matc_ltc_texcoord( saturate( dot( normal, viewDir ) ), roughness ) );\n" +
+      "\t\tbool matc_lit = dot( cross( rectCoords[ 1 ] - rectCoords[ 0 ], rectCoords[ 3 ] - rectCoords[ 0 ] ), position - rectCoords[ 0 ] ) >= 0.0;\n" +
+      "\t\tif ( matc_lit ) reflectedLight.directSpecular += lightColor * matc_ltc_quad_light( matc_c, matc_bbar, matc_ltc_texel, " +
+      "normal, viewDir, position, rectCoords[ 0 ], rectCoords[ 1 ], rectCoords[ 2 ], rectCoords[ 3 ] );\n",
+    what: "rect area lights: Hill's two-channel LTC Fresnel and the LTC_1 shape become matc's LTC " +
+          "(matc_ltc) times sum_i c_i bbar_i; one-sided like three's",
+  },
+  {
+    chunk: "lights_fragment_begin",
+    anchor: "\t\tmaterial.multiScatteringCompensation = 1.0 + material.specularColorBlended * " +
+            "( 1.0 / EssMs - 1.0 );\n",
+    replacement: () => "\t\tmaterial.multiScatteringCompensation = matc_energy_compensation( matc_c, matc_bbar );\n",
+    what: "punctual lights' multiple scattering: F0 from the coefficients, E from matc's table",
+  },
+  {
+    chunk: "lights_fragment_begin",
+    anchor: "vec3 geometryPosition = - vViewPosition;\n",
+    replacement: () => `${kPixelSetup}\nvec3 geometryPosition = - vViewPosition;\n`,
+    what: "this pixel's coefficients (uniform, coefficient table or baked) and its texel of matc_lut",
+  },
+];
+
+// Applies the patches to the given chunks (name -> source), throwing on any anchor that is not
+// found exactly once.
+export function patchChunks(chunks, library) {
+  const patched = {};
+  for (const patch of kPatches) {
+    const source = patched[patch.chunk] ?? chunks[patch.chunk];
+    if (typeof source !== "string") {
+      throw new MatcThreeError(`three.js r${THREE.REVISION} has no shader chunk ${patch.chunk}; ` +
+                               `matc-three was tested with r${kTestedThreeRevisions.join(", r")}`);
+    }
+    // Whitespace-insensitive: three.js's build collapses the blank lines its sources have.
+    const pattern = new RegExp(patch.anchor.trim().split(/\s+/)
+                                 .map((word) => word.replace(/[.*+?^${}()|[\]\\]/g, "\\$&")).join("\\s*"), "g");
+    const count = (source.match(pattern) ?? []).length;
+    if (count !== 1) {
+      throw new MatcThreeError(
+          `three.js r${THREE.REVISION}: the shader chunk ${patch.chunk} changed (${count} matches ` +
+          `for the text the patch "${patch.what}" replaces, expected 1); matc-three was tested with ` +
+          `r${kTestedThreeRevisions.join(", r")}: pin that version or update the patch`);
+    }
+    patched[patch.chunk] = source.replace(pattern, () => `\n${patch.replacement(library)}\n`);
+  }
+  return patched;
+}
+
+// ---- A matc build directory: manifest, library, tables. ----
+
+async function fetchChecked(url, what) {
+  let response;
+  try {
+    response = await fetch(url);
+  } catch (error) {
+    throw new MatcThreeError(`${url}: cannot be read (${error.message}); ${what}`);
+  }
+  if (!response.ok) throw new MatcThreeError(`${url}: ${response.status} ${response.statusText}; ${what}`);
+  return response;
+}
+
+async function fetchJson(url, what) {
+  const text = await (await fetchChecked(url, what)).text();
+  try {
+    return JSON.parse(text);
+  } catch (error) {
+    throw new MatcThreeError(`${url}: not JSON (${error.message}); ${what}`);
+  }
+}
+
+// A table as a linearly filtered, clamped float texture: a KTX2 file through three's KTX2Loader,
+// or raw little-endian texels (`--lut raw`) of the manifest's size, channels and precision.
+async function loadTable(url, entry, channels, ktx2Loader) {
+  const what = "rerun matc with this output directory";
+  let texture;
+  if (entry.file.endsWith(".ktx2")) {
+    const bytes = await (await fetchChecked(url, what)).arrayBuffer();
+    try {
+      texture = await ktx2Loader._createTexture(bytes);
+    } catch (error) {
+      throw new MatcThreeError(`${url}: not a readable KTX2 table (${error.message}); ${what}`);
+    }
+  } else if (entry.file.endsWith(".bin")) {
+    const bytes = await (await fetchChecked(url, what)).arrayBuffer();
+    const half = entry.precision === "f16";
+    const expected = entry.size * entry.size * channels * (half ? 2 : 4);
+    if (bytes.byteLength !== expected) {
+      throw new MatcThreeError(`${url}: ${bytes.byteLength} bytes, the manifest's ${entry.size}x` +
+                               `${entry.size} ${entry.precision} table needs ${expected}; ${what}`);
+    }
+    const format = channels === 4 ? THREE.RGBAFormat : THREE.RGFormat;
+    texture = new THREE.DataTexture(half ? new Uint16Array(bytes) : new Float32Array(bytes), entry.size,
+                                    entry.size, format, half ? THREE.HalfFloatType : THREE.FloatType);
+  } else {
+    throw new MatcThreeError(`${url}: matc-three reads KTX2 and raw tables, not ${entry.file} ` +
+                             "(compile with --lut ktx2 or --lut raw)");
+  }
+  if (texture.image.width !== entry.size || texture.image.height !== entry.size) {
+    throw new MatcThreeError(`${url}: ${texture.image.width}x${texture.image.height} texels, the ` +
+                             `manifest says ${entry.size}x${entry.size}; ${what}`);
+  }
+  texture.minFilter = THREE.LinearFilter;
+  texture.magFilter = THREE.LinearFilter;
+  texture.wrapS = texture.wrapT = THREE.ClampToEdgeWrapping;
+  texture.generateMipmaps = false;
+  texture.mipmaps = [];
+  texture.colorSpace = THREE.NoColorSpace;
+  texture.flipY = false;
+  texture.needsUpdate = true;
+  return texture;
+}
+
+// Reads a matc build directory (`matc -o DIR`, with glsl, json and lut among --emit; ltc for rect
+// area lights, coefficient-table for textured metals) and returns what useMatcFresnel takes.
+// `renderer` is the WebGLRenderer the materials will be drawn with (KTX2Loader needs it).
+export async function loadMatcBuild(url, renderer) {
+  const base = new URL(url.endsWith("/") ? url : `${url}/`, globalThis.location?.href);
+  const at = (file) => new URL(file, base).href;
+  const manifest = await fetchJson(at("matc_manifest.json"),
+                                   "is this a matc output directory (matc -o DIR)?");
+  if (manifest.matc_version !== kMatcVersion) {
+    throw new MatcThreeError(`${at("matc_manifest.json")}: written by matc ${manifest.matc_version}; ` +
+                             `this module is for matc ${kMatcVersion}`);
+  }
+  const emitted = new Set(manifest.emit ?? []);
+  for (const [needed, why] of [["glsl", "the shader library"], ["lut", "the preintegrated table"],
+                               ["json", "the materials' coefficients"]]) {
+    if (!emitted.has(needed)) {
+      throw new MatcThreeError(`${at("matc_manifest.json")}: the build has no ${needed} output (` +
+                               `${why}); compile with --emit ${needed} among the outputs`);
+    }
+  }
+  const ktx2Loader = new KTX2Loader().detectSupport(renderer);
+  const library = await (await fetchChecked(at("matc_fresnel.glsl"), "compile with --emit glsl")).text();
+  const lutInfo = manifest.lut;
+  const sidecar = await fetchJson(at(`${lutInfo.file}.json`), "compile with --emit lut");
+  if (sidecar.basis !== manifest.basis || sidecar.matc_version !== manifest.matc_version) {
+    throw new MatcThreeError(`${at(lutInfo.file)}: a table of basis ${sidecar.basis} from matc ` +
+                             `${sidecar.matc_version}, but the build is basis ${manifest.basis} from ` +
+                             `matc ${manifest.matc_version}; rerun matc with this output directory`);
+  }
+  const build = {
+    url: base.href, manifest, library, basis: manifest.basis,
+    lut: await loadTable(at(lutInfo.file), lutInfo, 4, ktx2Loader),
+    ltc: emitted.has("ltc") ? await loadTable(at(manifest.ltc_table.file), manifest.ltc_table, 4, ktx2Loader)
+                            : null,
+    coefficientTable: emitted.has("coefficient-table")
+        ? await loadTable(at(manifest.coefficient_table.file), manifest.coefficient_table, 2, ktx2Loader)
+        : null,
+    // A compiled material's coefficients (<name>.json), checked against the build's basis.
+    async loadMaterial(name) {
+      const file = at(`${name}.json`);
+      const material = await fetchJson(file, `is ${name} one of this build's materials?`);
+      const basis = material.basis?.name;
+      if (basis !== manifest.basis || material.matc_version !== manifest.matc_version) {
+        throw new MatcThreeError(`${file}: coefficients of basis ${basis} from matc ` +
+                                 `${material.matc_version}, but the build's tables are basis ` +
+                                 `${manifest.basis} from matc ${manifest.matc_version}: they do not belong together`);
+      }
+      const rows = material.coefficients;
+      if (!Array.isArray(rows) || rows.length !== 3 || rows.some((row) => row.length !== 4)) {
+        throw new MatcThreeError(`${file}: coefficients must be 3 rows of 4 numbers`);
+      }
+      return { name: material.name, basis, coefficients: rows };
+    },
+  };
+  return build;
+}
+
+// ---- Turning a three.js material into a matc metal. ----
+
+function checkBuild(build) {
+  if (!build || typeof build.library !== "string" || !build.lut) {
+    throw new MatcThreeError("useMatcFresnel needs the result of loadMatcBuild");
+  }
+}
+
+// The coefficients' source: { material } (from build.loadMaterial), { reflectivityMap,
+// edgeTintMap } (textured: through the coefficient table, each map times the optional
+// reflectivity/edgeTint colours) or { baked: { c2Map, c3Map, f0Map? } } (`matc bake` textures;
+// F0 from f0Map or the material's base colour).
+function sourceUniforms(build, source) {
+  if (source.material) {
+    if (source.material.basis !== build.basis) {
+      throw new MatcThreeError(`${source.material.name}: coefficients of basis ${source.material.basis}, ` +
+                               `the build's tables are ${build.basis}`);
+    }
+    const [red, green, blue] = source.material.coefficients.map((row) => new THREE.Vector4(...row));
+    return { define: "MATC_SOURCE_UNIFORM",
+             uniforms: { matc_red: { value: red }, matc_green: { value: green }, matc_blue: { value: blue } } };
+  }
+  if (source.reflectivityMap || source.edgeTintMap) {
+    if (!source.reflectivityMap || !source.edgeTintMap) {
+      throw new MatcThreeError("a textured metal needs both reflectivityMap and edgeTintMap");
+    }
+    if (!build.coefficientTable) {
+      throw new MatcThreeError(`${build.url}: textured metals need the coefficient table; compile with ` +
+                               "--emit coefficient-table among the outputs");
+    }
+    const colour = (value) => new THREE.Color(...(Array.isArray(value) ? value : [value ?? 1, value ?? 1, value ?? 1]));
+    return { define: "MATC_SOURCE_TABLE", uv: true,
+             uniforms: { matc_coefficient_table: { value: build.coefficientTable },
+                         matc_reflectivity_map: { value: source.reflectivityMap },
+                         matc_edge_tint_map: { value: source.edgeTintMap },
+                         matc_reflectivity: { value: colour(source.reflectivity) },
+                         matc_edge_tint: { value: colour(source.edgeTint) } } };
+  }
+  if (source.baked) {
+    const { c2Map, c3Map, f0Map } = source.baked;
+    if (!c2Map || !c3Map) throw new MatcThreeError("baked coefficients need c2Map and c3Map (matc bake)");
+    if (source.baked.basis && source.baked.basis !== build.basis) {
+      throw new MatcThreeError(`baked coefficients of basis ${source.baked.basis}, the build's tables are ${build.basis}`);
+    }
+    const uniforms = { matc_c2_map: { value: c2Map }, matc_c3_map: { value: c3Map } };
+    if (f0Map) uniforms.matc_f0_map = { value: f0Map };
+    return { define: "MATC_SOURCE_BAKED", uv: true, f0: Boolean(f0Map), uniforms };
+  }
+  throw new MatcThreeError("useMatcFresnel needs { material }, { reflectivityMap, edgeTintMap } or { baked }");
+}
+
+// Makes `material` (MeshStandardMaterial or MeshPhysicalMaterial) a matc metal: metalness 1, its
+// Fresnel in every light path from `source` (see sourceUniforms). Returns the material; its
+// userData.matc.uniforms can be changed later (e.g. another compiled material's coefficients).
+export function useMatcFresnel(material, build, source) {
+  checkBuild(build);
+  if (!material?.isMeshStandardMaterial) {
+    throw new MatcThreeError("useMatcFresnel takes a MeshStandardMaterial or MeshPhysicalMaterial");
+  }
+  if (material.iridescence > 0) {
+    throw new MatcThreeError("iridescence replaces the base Fresnel; it cannot be combined with matc's");
+  }
+  if (!kTestedThreeRevisions.includes(THREE.REVISION)) {
+    console.warn(`matc-three: three.js r${THREE.REVISION} is untested (tested: r` +
+                 `${kTestedThreeRevisions.join(", r")}); its chunks still match the patches`);
+  }
+  // Checked now, so that a changed engine fails here and not at the first frame.
+  const chunks = patchChunks(THREE.ShaderChunk, build.library);
+  const { define, uv, f0, uniforms } = sourceUniforms(build, source);
+  Object.assign(uniforms, { matc_lut: { value: build.lut }, matc_ltc: { value: build.ltc ?? build.lut } });
+  material.metalness = 1;
+  material.metalnessMap = null;
+  material.defines = { ...(material.defines ?? {}), [define]: "" };
+  if (uv) material.defines.USE_UV = "";
+  if (f0) material.defines.MATC_BAKED_F0 = "";
+  material.userData.matc = { uniforms, source };
+  material.onBeforeCompile = (shader) => {
+    if (!build.ltc && shader.numRectAreaLights > 0) {
+      throw new MatcThreeError(`${build.url}: rect area lights need matc's LTC table; compile with --emit ltc`);
+    }
+    for (const [name, text] of Object.entries(chunks)) {
+      const include = `#include <${name}>`;
+      if (!shader.fragmentShader.includes(include)) {
+        throw new MatcThreeError(`three.js r${THREE.REVISION}: the physical material's fragment shader ` +
+                                 `no longer includes ${name}`);
+      }
+      shader.fragmentShader = shader.fragmentShader.replace(include, () => text);
+    }
+    Object.assign(shader.uniforms, uniforms);
+  };
+  material.customProgramCacheKey = () => `matc:${define}:${build.url}`;
+  material.needsUpdate = true;
+  return material;
+}

@@ -1,0 +1,73 @@
+// Runs one page in headless Chromium (Debian's package; WebGL2 through ANGLE on SwiftShader) and
+// returns what the page wrote into <pre id="result"> as JSON. The page is served from 127.0.0.1
+// with folders mounted under /<root>/ (e.g. /three/ for three.js's build), so that module imports
+// and fetches work as on a real site.
+//   const result = await runPage({ html, roots: { out: "/tmp/x/out" }, dir: "/tmp/x" });
+import { spawn } from "node:child_process";
+import { createServer } from "node:http";
+import { readFileSync, statSync } from "node:fs";
+import { dirname, join } from "node:path";
+import { fileURLToPath } from "node:url";
+import { chromiumPath } from "./shader-cases.mjs";
+
+const here = dirname(fileURLToPath(import.meta.url));
+// three.js from npm (package-lock.json pins it): its build and its addons.
+export const kThreeRoots = {
+  three: join(here, "node_modules", "three", "build"),
+  "three-addons": join(here, "node_modules", "three", "examples", "jsm"),
+};
+export const kThreeImportMap = JSON.stringify({
+  imports: { three: "/three/three.module.js", "three/addons/": "/three-addons/" } });
+export const threeVersion = () =>
+  JSON.parse(readFileSync(join(here, "node_modules", "three", "package.json"), "utf8")).version;
+
+const kTypes = { js: "text/javascript", mjs: "text/javascript", json: "application/json",
+                 html: "text/html", glsl: "text/plain" };
+
+export async function runPage({ html, roots, dir, budgetMs = 120000 }) {
+  const server = createServer((request, response) => {
+    const path = decodeURIComponent(new URL(request.url, "http://localhost").pathname);
+    const [, root, ...rest] = path.split("/");
+    try {
+      if (path === "/page.html") {
+        response.writeHead(200, { "content-type": "text/html" }).end(html);
+        return;
+      }
+      const base = roots[root];
+      const file = base && !rest.includes("..") ? join(base, ...rest) : null;
+      if (file && statSync(file).isFile()) {
+        const type = kTypes[file.split(".").pop()] ?? "application/octet-stream";
+        response.writeHead(200, { "content-type": type }).end(readFileSync(file));
+        return;
+      }
+    } catch {
+      // a missing file: 404 below
+    }
+    response.writeHead(404).end();
+  });
+  try {
+    await new Promise((resolve) => server.listen(0, "127.0.0.1", resolve));
+    const url = `http://127.0.0.1:${server.address().port}/page.html`;
+    const dom = await new Promise((resolve, reject) => {
+      const browser = spawn(chromiumPath(), [
+        "--headless", "--no-sandbox", "--disable-dev-shm-usage", "--use-angle=swiftshader",
+        "--enable-unsafe-swiftshader", `--virtual-time-budget=${budgetMs}`,
+        `--user-data-dir=${join(dir, "profile")}`, "--dump-dom", url]);
+      let text = "";
+      browser.stdout.on("data", (chunk) => { text += chunk; });
+      browser.on("error", reject);
+      browser.on("close", () => resolve(text));
+    });
+    const match = dom.match(/<pre id="result">([^<]*)<\/pre>/);
+    if (match === null) throw new Error("the page wrote no result");
+    const text = match[1].replaceAll("&quot;", "\"").replaceAll("&lt;", "<").replaceAll("&gt;", ">")
+                         .replaceAll("&amp;", "&");
+    try {
+      return JSON.parse(text);
+    } catch {
+      throw new Error(`the page's result is not JSON: ${text.slice(0, 400)}`);
+    }
+  } finally {
+    server.close();
+  }
+}
