@@ -332,6 +332,13 @@ function sourceUniforms(build, source) {
     if (source.baked.basis && source.baked.basis !== build.basis) {
       throw new MatcThreeError(`baked coefficients of basis ${source.baked.basis}, the build's tables are ${build.basis}`);
     }
+    // matc bake's mips average coefficients, so one trilinear sampler for all of them is exact;
+    // KTX2Loader leaves uncompressed textures at nearest filtering.
+    for (const texture of [c2Map, c3Map, f0Map].filter(Boolean)) {
+      texture.minFilter = texture.mipmaps?.length > 1 ? THREE.LinearMipmapLinearFilter : THREE.LinearFilter;
+      texture.magFilter = THREE.LinearFilter;
+      texture.needsUpdate = true;
+    }
     const uniforms = { matc_c2_map: { value: c2Map }, matc_c3_map: { value: c3Map } };
     if (f0Map) uniforms.matc_f0_map = { value: f0Map };
     return { define: "MATC_SOURCE_BAKED", uv: true, f0: Boolean(f0Map), uniforms };
