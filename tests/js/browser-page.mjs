@@ -11,13 +11,17 @@ import { fileURLToPath } from "node:url";
 import { chromiumPath } from "./shader-cases.mjs";
 
 const here = dirname(fileURLToPath(import.meta.url));
-// three.js from npm (package-lock.json pins it): its build and its addons.
-export const kThreeRoots = {
+// The engines from npm (package-lock.json pins them): three.js's build and addons, Babylon.js's
+// ES modules, and ktx-parse for the integrations' shared loader.
+export const kWebRoots = {
   three: join(here, "node_modules", "three", "build"),
   "three-addons": join(here, "node_modules", "three", "examples", "jsm"),
+  babylon: join(here, "node_modules", "@babylonjs", "core"),
+  "ktx-parse": join(here, "node_modules", "ktx-parse", "dist"),
 };
-export const kThreeImportMap = JSON.stringify({
-  imports: { three: "/three/three.module.js", "three/addons/": "/three-addons/" } });
+export const kWebImportMap = JSON.stringify({
+  imports: { three: "/three/three.module.js", "three/addons/": "/three-addons/",
+             "@babylonjs/core/": "/babylon/", "ktx-parse": "/ktx-parse/index.mjs" } });
 export const threeVersion = () =>
   JSON.parse(readFileSync(join(here, "node_modules", "three", "package.json"), "utf8")).version;
 

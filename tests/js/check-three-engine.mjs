@@ -14,7 +14,7 @@
 import { cpSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
-import { kThreeImportMap, kThreeRoots, runPage, threeVersion } from "./browser-page.mjs";
+import { kWebImportMap, kWebRoots, runPage, threeVersion } from "./browser-page.mjs";
 import { check, finish } from "./report.mjs";
 import { compensatedFbar, kPreintegratedTolerance, run } from "./shader-cases.mjs";
 
@@ -78,7 +78,7 @@ function toShadingFrame(corner, pixel) {
 
 const kPage = (config) => `<!doctype html><html><body><pre id="result">not run</pre>
 <script type="application/json" id="config">${JSON.stringify(config)}</script>
-<script type="importmap">${kThreeImportMap}</script>
+<script type="importmap">${kWebImportMap}</script>
 <script type="module">
 import * as THREE from "three";
 import { KTX2Loader } from "three/addons/loaders/KTX2Loader.js";
@@ -93,7 +93,7 @@ try {
   renderer.debug.onShaderError = (gl, program, vertex, fragment) =>
     out.errors.push(gl.getShaderInfoLog(fragment) || gl.getShaderInfoLog(vertex) || gl.getProgramInfoLog(program));
   RectAreaLightUniformsLib.init();
-  const build = await loadMatcBuild("/out/", renderer);
+  const build = await loadMatcBuild("/out/");
   const target = new THREE.WebGLRenderTarget(${kSize}, ${kSize}, { type: THREE.FloatType });
   const camera = new THREE.PerspectiveCamera(90, 1, 0.1, 10);
   camera.position.set(0, 0, 1);
@@ -152,9 +152,9 @@ try {
       out.failures[key] = { thrown: true, message: String(error.message), logged: out.consoleErrors.length > before };
     }
   };
-  await failure("missing_directory", () => loadMatcBuild("/nothing-here/", renderer));
-  await failure("no_glsl_no_lut", () => loadMatcBuild("/json-only/", renderer));
-  await failure("table_of_another_basis", () => loadMatcBuild("/mixed-table/", renderer));
+  await failure("missing_directory", () => loadMatcBuild("/nothing-here/"));
+  await failure("no_glsl_no_lut", () => loadMatcBuild("/json-only/"));
+  await failure("table_of_another_basis", () => loadMatcBuild("/mixed-table/"));
   await failure("coefficients_of_another_basis", () => build.loadMaterial("beryllium_extended"));
   await failure("unknown_material", () => build.loadMaterial("unobtainium"));
   const original = THREE.ShaderChunk.lights_physical_pars_fragment;
@@ -213,7 +213,7 @@ try {
   }
   const config = { materials: kMaterials, pixels: kPixels, renders, point: kPointLight,
                    rect: kRectLight, textured: kTextured };
-  const roots = { ...kThreeRoots, web: webDir, out, baked: join(dir, "baked"),
+  const roots = { ...kWebRoots, web: webDir, out, baked: join(dir, "baked"),
                   "json-only": join(dir, "json-only"), "mixed-table": join(dir, "mixed-table") };
   const result = await runPage({ html: kPage(config), roots, dir });
   check(result.errors.length === 0, `three.js: ${result.errors.join("\n")}`);
@@ -290,7 +290,7 @@ try {
     table_of_another_basis: "a table of basis extended",
     coefficients_of_another_basis: "do not belong together",
     unknown_material: "is unobtainium one of this build's materials",
-    engine_chunk_changed: "the shader chunk lights_physical_pars_fragment changed",
+    engine_chunk_changed: "the shader source lights_physical_pars_fragment changed",
     textured_without_edge_tint: "needs both reflectivityMap and edgeTintMap",
   };
   for (const [key, phrase] of Object.entries(kFailures)) {

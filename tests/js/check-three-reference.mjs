@@ -15,7 +15,7 @@
 import { cpSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
-import { kThreeImportMap, kThreeRoots, runPage, threeVersion } from "./browser-page.mjs";
+import { kWebImportMap, kWebRoots, runPage, threeVersion } from "./browser-page.mjs";
 import { environmentTexels, kReferenceFragmentShader, kReferenceVertexShader, kScene,
          rectLightGeometry, sceneWith } from "./engine-scene.mjs";
 import { displayByte, writePng } from "./png.mjs";
@@ -47,7 +47,7 @@ const kRegions = [
 
 const kPage = (config) => `<!doctype html><html><body><pre id="result">not run</pre>
 <script type="application/json" id="config">${JSON.stringify(config)}</script>
-<script type="importmap">${kThreeImportMap}</script>
+<script type="importmap">${kWebImportMap}</script>
 <script type="module">
 import * as THREE from "three";
 import { RectAreaLightUniformsLib } from "three/addons/lights/RectAreaLightUniformsLib.js";
@@ -69,7 +69,7 @@ try {
     out.errors.push(gl.getShaderInfoLog(fragment) || gl.getShaderInfoLog(vertex) || gl.getProgramInfoLog(program));
   renderer.setClearColor(0x000000, 0);
   RectAreaLightUniformsLib.init();
-  const build = await loadMatcBuild("/out/", renderer);
+  const build = await loadMatcBuild("/out/");
   const size = scene.size;
   const target = new THREE.WebGLRenderTarget(size, size, { type: THREE.FloatType });
   const camera = new THREE.PerspectiveCamera(scene.camera.fov, 1, scene.camera.near, scene.camera.far);
@@ -236,7 +236,7 @@ try {
   run(matc, ["bake", "-q", "--f0", "-o", join(textured, "baked"), join(textured, "inlaid_metals.json")]);
   const config = { textured: { name: "inlaid_metals", roughness: 0.3 }, scene: { ...sceneWith(lightPaths), size }, materials, rect: rectLightGeometry(kScene.rect),
                    vertexShader: kReferenceVertexShader, fragmentShader: kReferenceFragmentShader };
-  const result = await runPage({ html: kPage(config), roots: { ...kThreeRoots, web: webDir, out, textured }, dir,
+  const result = await runPage({ html: kPage(config), roots: { ...kWebRoots, web: webDir, out, textured }, dir,
                                  budgetMs: 600000 });
   check(result.errors.length === 0, `three.js: ${result.errors.join("\n")}`);
   const rows = [];
@@ -300,7 +300,7 @@ try {
     const frames = 100;
     const seconds = async (timing) => {
       const start = process.hrtime.bigint();
-      await runPage({ html: kPage({ ...config, timing }), roots: { ...kThreeRoots, web: webDir, out, textured }, dir,
+      await runPage({ html: kPage({ ...config, timing }), roots: { ...kWebRoots, web: webDir, out, textured }, dir,
                       budgetMs: 600000 });
       return Number(process.hrtime.bigint() - start) / 1e9;
     };

@@ -6,28 +6,18 @@
 // how to use it and docs/web-engines.md what each patch replaces.
 //
 //   import { loadMatcBuild, useMatcFresnel } from "./matc-three.mjs";
-//   const build = await loadMatcBuild("matc-out/", renderer);        // a `matc -o matc-out` build
+//   const build = await loadMatcBuild("matc-out/");  // a `matc -o matc-out` build directory
 //   const gold = new THREE.MeshPhysicalMaterial({ roughness: 0.3 });
 //   useMatcFresnel(gold, build, { material: await build.loadMaterial("gold") });
 import * as THREE from "three";
-import { KTX2Loader } from "three/addons/loaders/KTX2Loader.js";
+import { MatcWebError, anchorPattern, checkAnchors, loadMatcBuildFiles, sourceKind } from "../matc-build.mjs";
+
+export { MatcWebError };
 
 // The three.js revisions whose chunks the patches below were written against and tested with
 // (tests/js/check-three-engine.mjs). Others are patched too when every anchor is still there, with
 // a warning; when one is not, useMatcFresnel throws.
 export const kTestedThreeRevisions = ["187"];
-
-// The matc library version (MATC_VERSION in matc_fresnel.glsl) this module was written for.
-const kMatcVersion = "0.1.0";
-
-// A problem that must stop the material from being used: reported on the console and thrown.
-export class MatcThreeError extends Error {
-  constructor(message) {
-    super(`matc-three: ${message}`);
-    this.name = "MatcThreeError";
-    console.error(this.message);
-  }
-}
 
 // ---- The patches: (chunk, anchor, replacement), each anchor found exactly once. ----
 
@@ -142,157 +132,48 @@ export const kPatches = [
   },
 ];
 
-// Applies the patches to the given chunks (name -> source), throwing on any anchor that is not
-// found exactly once.
+// Applies the patches to the given chunks (name -> source), throwing when an anchor is not found
+// exactly once.
 export function patchChunks(chunks, library) {
+  const tested = `three.js r${kTestedThreeRevisions.join(", r")}`;
+  checkAnchors(`three.js r${THREE.REVISION}`, chunks, kPatches.map((patch) => ({ ...patch, source: patch.chunk })),
+               tested);
   const patched = {};
   for (const patch of kPatches) {
     const source = patched[patch.chunk] ?? chunks[patch.chunk];
-    if (typeof source !== "string") {
-      throw new MatcThreeError(`three.js r${THREE.REVISION} has no shader chunk ${patch.chunk}; ` +
-                               `matc-three was tested with r${kTestedThreeRevisions.join(", r")}`);
-    }
-    // Whitespace-insensitive: three.js's build collapses the blank lines its sources have.
-    const pattern = new RegExp(patch.anchor.trim().split(/\s+/)
-                                 .map((word) => word.replace(/[.*+?^${}()|[\]\\]/g, "\\$&")).join("\\s*"), "g");
-    const count = (source.match(pattern) ?? []).length;
-    if (count !== 1) {
-      throw new MatcThreeError(
-          `three.js r${THREE.REVISION}: the shader chunk ${patch.chunk} changed (${count} matches ` +
-          `for the text the patch "${patch.what}" replaces, expected 1); matc-three was tested with ` +
-          `r${kTestedThreeRevisions.join(", r")}: pin that version or update the patch`);
-    }
-    patched[patch.chunk] = source.replace(pattern, () => `\n${patch.replacement(library)}\n`);
+    patched[patch.chunk] = source.replace(anchorPattern(patch.anchor), () => `\n${patch.replacement(library)}\n`);
   }
   return patched;
 }
 
-// ---- A matc build directory: manifest, library, tables. ----
+// ---- A matc build directory as three.js textures. ----
 
-async function fetchChecked(url, what) {
-  let response;
-  try {
-    response = await fetch(url);
-  } catch (error) {
-    throw new MatcThreeError(`${url}: cannot be read (${error.message}); ${what}`);
-  }
-  if (!response.ok) throw new MatcThreeError(`${url}: ${response.status} ${response.statusText}; ${what}`);
-  return response;
-}
-
-async function fetchJson(url, what) {
-  const text = await (await fetchChecked(url, what)).text();
-  try {
-    return JSON.parse(text);
-  } catch (error) {
-    throw new MatcThreeError(`${url}: not JSON (${error.message}); ${what}`);
-  }
-}
-
-// A table as a linearly filtered, clamped float texture: a KTX2 file through three's KTX2Loader,
-// or raw little-endian texels (`--lut raw`) of the manifest's size, channels and precision.
-async function loadTable(url, entry, channels, ktx2Loader) {
-  const what = "rerun matc with this output directory";
-  let texture;
-  if (entry.file.endsWith(".ktx2")) {
-    const bytes = await (await fetchChecked(url, what)).arrayBuffer();
-    try {
-      texture = await ktx2Loader._createTexture(bytes);
-    } catch (error) {
-      throw new MatcThreeError(`${url}: not a readable KTX2 table (${error.message}); ${what}`);
-    }
-  } else if (entry.file.endsWith(".bin")) {
-    const bytes = await (await fetchChecked(url, what)).arrayBuffer();
-    const half = entry.precision === "f16";
-    const expected = entry.size * entry.size * channels * (half ? 2 : 4);
-    if (bytes.byteLength !== expected) {
-      throw new MatcThreeError(`${url}: ${bytes.byteLength} bytes, the manifest's ${entry.size}x` +
-                               `${entry.size} ${entry.precision} table needs ${expected}; ${what}`);
-    }
-    const format = channels === 4 ? THREE.RGBAFormat : THREE.RGFormat;
-    texture = new THREE.DataTexture(half ? new Uint16Array(bytes) : new Float32Array(bytes), entry.size,
-                                    entry.size, format, half ? THREE.HalfFloatType : THREE.FloatType);
-  } else {
-    throw new MatcThreeError(`${url}: matc-three reads KTX2 and raw tables, not ${entry.file} ` +
-                             "(compile with --lut ktx2 or --lut raw)");
-  }
-  if (texture.image.width !== entry.size || texture.image.height !== entry.size) {
-    throw new MatcThreeError(`${url}: ${texture.image.width}x${texture.image.height} texels, the ` +
-                             `manifest says ${entry.size}x${entry.size}; ${what}`);
-  }
+function tableTexture(table) {
+  const format = table.channels === 4 ? THREE.RGBAFormat : THREE.RGFormat;
+  const texture = new THREE.DataTexture(table.data, table.size, table.size, format,
+                                        table.half ? THREE.HalfFloatType : THREE.FloatType);
   texture.minFilter = THREE.LinearFilter;
   texture.magFilter = THREE.LinearFilter;
   texture.wrapS = texture.wrapT = THREE.ClampToEdgeWrapping;
   texture.generateMipmaps = false;
-  texture.mipmaps = [];
   texture.colorSpace = THREE.NoColorSpace;
-  texture.flipY = false;
   texture.needsUpdate = true;
   return texture;
 }
 
 // Reads a matc build directory (`matc -o DIR`, with glsl, json and lut among --emit; ltc for rect
 // area lights, coefficient-table for textured metals) and returns what useMatcFresnel takes.
-// `renderer` is the WebGLRenderer the materials will be drawn with (KTX2Loader needs it).
-export async function loadMatcBuild(url, renderer) {
-  const base = new URL(url.endsWith("/") ? url : `${url}/`, globalThis.location?.href);
-  const at = (file) => new URL(file, base).href;
-  const manifest = await fetchJson(at("matc_manifest.json"),
-                                   "is this a matc output directory (matc -o DIR)?");
-  if (manifest.matc_version !== kMatcVersion) {
-    throw new MatcThreeError(`${at("matc_manifest.json")}: written by matc ${manifest.matc_version}; ` +
-                             `this module is for matc ${kMatcVersion}`);
-  }
-  const emitted = new Set(manifest.emit ?? []);
-  for (const [needed, why] of [["glsl", "the shader library"], ["lut", "the preintegrated table"],
-                               ["json", "the materials' coefficients"]]) {
-    if (!emitted.has(needed)) {
-      throw new MatcThreeError(`${at("matc_manifest.json")}: the build has no ${needed} output (` +
-                               `${why}); compile with --emit ${needed} among the outputs`);
-    }
-  }
-  const ktx2Loader = new KTX2Loader().detectSupport(renderer);
-  const library = await (await fetchChecked(at("matc_fresnel.glsl"), "compile with --emit glsl")).text();
-  const lutInfo = manifest.lut;
-  const sidecar = await fetchJson(at(`${lutInfo.file}.json`), "compile with --emit lut");
-  if (sidecar.basis !== manifest.basis || sidecar.matc_version !== manifest.matc_version) {
-    throw new MatcThreeError(`${at(lutInfo.file)}: a table of basis ${sidecar.basis} from matc ` +
-                             `${sidecar.matc_version}, but the build is basis ${manifest.basis} from ` +
-                             `matc ${manifest.matc_version}; rerun matc with this output directory`);
-  }
-  const build = {
-    url: base.href, manifest, library, basis: manifest.basis,
-    lut: await loadTable(at(lutInfo.file), lutInfo, 4, ktx2Loader),
-    ltc: emitted.has("ltc") ? await loadTable(at(manifest.ltc_table.file), manifest.ltc_table, 4, ktx2Loader)
-                            : null,
-    coefficientTable: emitted.has("coefficient-table")
-        ? await loadTable(at(manifest.coefficient_table.file), manifest.coefficient_table, 2, ktx2Loader)
-        : null,
-    // A compiled material's coefficients (<name>.json), checked against the build's basis.
-    async loadMaterial(name) {
-      const file = at(`${name}.json`);
-      const material = await fetchJson(file, `is ${name} one of this build's materials?`);
-      const basis = material.basis?.name;
-      if (basis !== manifest.basis || material.matc_version !== manifest.matc_version) {
-        throw new MatcThreeError(`${file}: coefficients of basis ${basis} from matc ` +
-                                 `${material.matc_version}, but the build's tables are basis ` +
-                                 `${manifest.basis} from matc ${manifest.matc_version}: they do not belong together`);
-      }
-      const rows = material.coefficients;
-      if (!Array.isArray(rows) || rows.length !== 3 || rows.some((row) => row.length !== 4)) {
-        throw new MatcThreeError(`${file}: coefficients must be 3 rows of 4 numbers`);
-      }
-      return { name: material.name, basis, coefficients: rows };
-    },
-  };
-  return build;
+export async function loadMatcBuild(url) {
+  const files = await loadMatcBuildFiles(url);
+  return { ...files, lut: tableTexture(files.lut), ltc: files.ltc && tableTexture(files.ltc),
+           coefficientTable: files.coefficientTable && tableTexture(files.coefficientTable) };
 }
 
 // ---- Turning a three.js material into a matc metal. ----
 
 function checkBuild(build) {
   if (!build || typeof build.library !== "string" || !build.lut) {
-    throw new MatcThreeError("useMatcFresnel needs the result of loadMatcBuild");
+    throw new MatcWebError("useMatcFresnel needs the result of loadMatcBuild");
   }
 }
 
@@ -301,23 +182,13 @@ function checkBuild(build) {
 // reflectivity/edgeTint colours) or { baked: { c2Map, c3Map, f0Map? } } (`matc bake` textures;
 // F0 from f0Map or the material's base colour).
 function sourceUniforms(build, source) {
-  if (source.material) {
-    if (source.material.basis !== build.basis) {
-      throw new MatcThreeError(`${source.material.name}: coefficients of basis ${source.material.basis}, ` +
-                               `the build's tables are ${build.basis}`);
-    }
+  const kind = sourceKind(build, source);
+  if (kind === "material") {
     const [red, green, blue] = source.material.coefficients.map((row) => new THREE.Vector4(...row));
     return { define: "MATC_SOURCE_UNIFORM",
              uniforms: { matc_red: { value: red }, matc_green: { value: green }, matc_blue: { value: blue } } };
   }
-  if (source.reflectivityMap || source.edgeTintMap) {
-    if (!source.reflectivityMap || !source.edgeTintMap) {
-      throw new MatcThreeError("a textured metal needs both reflectivityMap and edgeTintMap");
-    }
-    if (!build.coefficientTable) {
-      throw new MatcThreeError(`${build.url}: textured metals need the coefficient table; compile with ` +
-                               "--emit coefficient-table among the outputs");
-    }
+  if (kind === "table") {
     const colour = (value) => new THREE.Color(...(Array.isArray(value) ? value : [value ?? 1, value ?? 1, value ?? 1]));
     return { define: "MATC_SOURCE_TABLE", uv: true,
              uniforms: { matc_coefficient_table: { value: build.coefficientTable },
@@ -326,24 +197,17 @@ function sourceUniforms(build, source) {
                          matc_reflectivity: { value: colour(source.reflectivity) },
                          matc_edge_tint: { value: colour(source.edgeTint) } } };
   }
-  if (source.baked) {
-    const { c2Map, c3Map, f0Map } = source.baked;
-    if (!c2Map || !c3Map) throw new MatcThreeError("baked coefficients need c2Map and c3Map (matc bake)");
-    if (source.baked.basis && source.baked.basis !== build.basis) {
-      throw new MatcThreeError(`baked coefficients of basis ${source.baked.basis}, the build's tables are ${build.basis}`);
-    }
-    // matc bake's mips average coefficients, so one trilinear sampler for all of them is exact;
-    // KTX2Loader leaves uncompressed textures at nearest filtering.
-    for (const texture of [c2Map, c3Map, f0Map].filter(Boolean)) {
-      texture.minFilter = texture.mipmaps?.length > 1 ? THREE.LinearMipmapLinearFilter : THREE.LinearFilter;
-      texture.magFilter = THREE.LinearFilter;
-      texture.needsUpdate = true;
-    }
-    const uniforms = { matc_c2_map: { value: c2Map }, matc_c3_map: { value: c3Map } };
-    if (f0Map) uniforms.matc_f0_map = { value: f0Map };
-    return { define: "MATC_SOURCE_BAKED", uv: true, f0: Boolean(f0Map), uniforms };
+  const { c2Map, c3Map, f0Map } = source.baked;
+  // matc bake's mips average coefficients, so one trilinear sampler for all of them is exact;
+  // KTX2Loader leaves uncompressed textures at nearest filtering.
+  for (const texture of [c2Map, c3Map, f0Map].filter(Boolean)) {
+    texture.minFilter = texture.mipmaps?.length > 1 ? THREE.LinearMipmapLinearFilter : THREE.LinearFilter;
+    texture.magFilter = THREE.LinearFilter;
+    texture.needsUpdate = true;
   }
-  throw new MatcThreeError("useMatcFresnel needs { material }, { reflectivityMap, edgeTintMap } or { baked }");
+  const uniforms = { matc_c2_map: { value: c2Map }, matc_c3_map: { value: c3Map } };
+  if (f0Map) uniforms.matc_f0_map = { value: f0Map };
+  return { define: "MATC_SOURCE_BAKED", uv: true, f0: Boolean(f0Map), uniforms };
 }
 
 // Makes `material` (MeshStandardMaterial or MeshPhysicalMaterial) a matc metal: metalness 1, its
@@ -352,10 +216,10 @@ function sourceUniforms(build, source) {
 export function useMatcFresnel(material, build, source) {
   checkBuild(build);
   if (!material?.isMeshStandardMaterial) {
-    throw new MatcThreeError("useMatcFresnel takes a MeshStandardMaterial or MeshPhysicalMaterial");
+    throw new MatcWebError("useMatcFresnel takes a MeshStandardMaterial or MeshPhysicalMaterial");
   }
   if (material.iridescence > 0) {
-    throw new MatcThreeError("iridescence replaces the base Fresnel; it cannot be combined with matc's");
+    throw new MatcWebError("iridescence replaces the base Fresnel; it cannot be combined with matc's");
   }
   if (!kTestedThreeRevisions.includes(THREE.REVISION)) {
     console.warn(`matc-three: three.js r${THREE.REVISION} is untested (tested: r` +
@@ -373,12 +237,12 @@ export function useMatcFresnel(material, build, source) {
   material.userData.matc = { uniforms, source };
   material.onBeforeCompile = (shader) => {
     if (!build.ltc && shader.numRectAreaLights > 0) {
-      throw new MatcThreeError(`${build.url}: rect area lights need matc's LTC table; compile with --emit ltc`);
+      throw new MatcWebError(`${build.url}: rect area lights need matc's LTC table; compile with --emit ltc`);
     }
     for (const [name, text] of Object.entries(chunks)) {
       const include = `#include <${name}>`;
       if (!shader.fragmentShader.includes(include)) {
-        throw new MatcThreeError(`three.js r${THREE.REVISION}: the physical material's fragment shader ` +
+        throw new MatcWebError(`three.js r${THREE.REVISION}: the physical material's fragment shader ` +
                                  `no longer includes ${name}`);
       }
       shader.fragmentShader = shader.fragmentShader.replace(include, () => text);

@@ -1,0 +1,200 @@
+// What the web engine integrations share (three/matc-three.mjs, babylon/matc-babylon.mjs): reading
+// a matc build directory in a browser (manifest, shader library, tables, compiled materials,
+// each checked against the others) and patching an engine's shader text at anchors that must be
+// found exactly once. Engine-neutral: tables come back as typed arrays for the engine's own
+// texture class. KTX2 containers are read with ktx-parse (npm, the reader three.js bundles).
+import { read as readKtx2 } from "ktx-parse";
+
+// The matc version whose outputs this code reads (matc_version in the manifest).
+export const kMatcVersion = "0.1.0";
+
+// A problem that must stop the material from being used: reported on the console and thrown.
+export class MatcWebError extends Error {
+  constructor(message) {
+    super(`matc: ${message}`);
+    this.name = "MatcWebError";
+    console.error(this.message);
+  }
+}
+
+// ---- Patching an engine's shader text. ----
+
+// A pattern for `anchor` that ignores how whitespace is laid out (engines' builds collapse blank
+// lines and indentation) but nothing else.
+export function anchorPattern(anchor) {
+  const words = anchor.trim().split(/\s+/).map((word) => word.replace(/[.*+?^${}()|[\]\\]/g, "\\$&"));
+  return new RegExp(words.join("\\s*"), "g");
+}
+
+// How many times `anchor` occurs in `source`.
+export function countAnchor(source, anchor) {
+  return (source.match(anchorPattern(anchor)) ?? []).length;
+}
+
+// Checks each patch's anchor against the engine's shader sources (name -> text): found exactly
+// `patch.count ?? 1` times, or the engine changed and the material must not be used.
+export function checkAnchors(engine, sources, patches, tested) {
+  for (const patch of patches) {
+    const source = sources[patch.source];
+    if (typeof source !== "string") {
+      throw new MatcWebError(`${engine} has no shader source ${patch.source}; the integration was tested with ${tested}`);
+    }
+    const count = countAnchor(source, patch.anchor);
+    if (count !== (patch.count ?? 1)) {
+      throw new MatcWebError(
+          `${engine}: the shader source ${patch.source} changed (${count} matches for the text the patch ` +
+          `"${patch.what}" replaces, expected ${patch.count ?? 1}); the integration was tested with ` +
+          `${tested}: pin that version or update the patch`);
+    }
+  }
+}
+
+// ---- A matc build directory. ----
+
+async function fetchChecked(url, hint) {
+  let response;
+  try {
+    response = await fetch(url);
+  } catch (error) {
+    throw new MatcWebError(`${url}: cannot be read (${error.message}); ${hint}`);
+  }
+  if (!response.ok) throw new MatcWebError(`${url}: ${response.status} ${response.statusText}; ${hint}`);
+  return response;
+}
+
+async function fetchJson(url, hint) {
+  const text = await (await fetchChecked(url, hint)).text();
+  try {
+    return JSON.parse(text);
+  } catch (error) {
+    throw new MatcWebError(`${url}: not JSON (${error.message}); ${hint}`);
+  }
+}
+
+// Vulkan formats of the tables matc writes: channels and whether texels are half floats.
+const kVkFormats = {
+  83: { channels: 2, half: true }, 103: { channels: 2, half: false },  // R16G16, R32G32 SFLOAT
+  97: { channels: 4, half: true }, 109: { channels: 4, half: false },  // R16G16B16A16, R32G32B32A32
+};
+
+// A table: { size, channels, half, data } with data a Float32Array or a Uint16Array of half
+// floats, row-major, first row = texcoord v = 0. From a KTX2 file or raw texels (`--lut raw`).
+async function loadTable(url, entry, channels) {
+  const hint = "rerun matc with this output directory";
+  const bytes = new Uint8Array(await (await fetchChecked(url, hint)).arrayBuffer());
+  let table;
+  if (entry.file.endsWith(".ktx2")) {
+    let container;
+    try {
+      container = readKtx2(bytes);
+    } catch (error) {
+      throw new MatcWebError(`${url}: not a readable KTX2 file (${error.message}); ${hint}`);
+    }
+    const format = kVkFormats[container.vkFormat];
+    if (!format || format.channels !== channels || container.supercompressionScheme !== 0) {
+      throw new MatcWebError(`${url}: vkFormat ${container.vkFormat}, supercompression ` +
+                             `${container.supercompressionScheme}: not a ${channels}-channel float table of matc's`);
+    }
+    const level = container.levels[0].levelData;
+    const buffer = level.buffer.slice(level.byteOffset, level.byteOffset + level.byteLength);
+    table = { size: container.pixelWidth, height: container.pixelHeight, channels, half: format.half,
+              data: format.half ? new Uint16Array(buffer) : new Float32Array(buffer) };
+  } else if (entry.file.endsWith(".bin")) {
+    const half = entry.precision === "f16";
+    const texels = bytes.byteLength / (channels * (half ? 2 : 4));
+    const size = Math.round(Math.sqrt(texels));
+    const buffer = bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength);
+    table = { size, height: size, channels, half, data: half ? new Uint16Array(buffer) : new Float32Array(buffer) };
+  } else {
+    throw new MatcWebError(`${url}: the web integrations read KTX2 and raw tables, not ${entry.file} ` +
+                           "(compile with --lut ktx2 or --lut raw)");
+  }
+  if (table.size !== entry.size || table.height !== entry.size || table.data.length !== entry.size * entry.size * channels) {
+    throw new MatcWebError(`${url}: ${table.size}x${table.height} texels, the manifest says ` +
+                           `${entry.size}x${entry.size}; ${hint}`);
+  }
+  return table;
+}
+
+// Reads a matc build directory (`matc -o DIR`, with glsl, json and lut among --emit; ltc for area
+// lights, coefficient-table for textured metals) and checks its parts belong together.
+export async function loadMatcBuildFiles(url) {
+  const base = new URL(url.endsWith("/") ? url : `${url}/`, globalThis.location?.href);
+  const at = (file) => new URL(file, base).href;
+  const manifestUrl = at("matc_manifest.json");
+  const manifest = await fetchJson(manifestUrl, "is this a matc output directory (matc -o DIR)?");
+  if (manifest.matc_version !== kMatcVersion) {
+    throw new MatcWebError(`${manifestUrl}: written by matc ${manifest.matc_version}; this integration reads matc ${kMatcVersion}`);
+  }
+  const emitted = new Set(manifest.emit ?? []);
+  for (const [needed, why] of [["glsl", "the shader library"], ["lut", "the preintegrated table"],
+                               ["json", "the materials' coefficients"]]) {
+    if (!emitted.has(needed)) {
+      throw new MatcWebError(`${manifestUrl}: the build has no ${needed} output (${why}); compile with ` +
+                             `--emit ${needed} among the outputs`);
+    }
+  }
+  const library = await (await fetchChecked(at("matc_fresnel.glsl"), "compile with --emit glsl")).text();
+  const sidecar = await fetchJson(at(`${manifest.lut.file}.json`), "compile with --emit lut");
+  if (sidecar.basis !== manifest.basis || sidecar.matc_version !== manifest.matc_version) {
+    throw new MatcWebError(`${at(manifest.lut.file)}: a table of basis ${sidecar.basis} from matc ` +
+                           `${sidecar.matc_version}, but the build is basis ${manifest.basis} from matc ` +
+                           `${manifest.matc_version}; rerun matc with this output directory`);
+  }
+  return {
+    url: base.href, manifest, library, basis: manifest.basis,
+    lut: await loadTable(at(manifest.lut.file), manifest.lut, 4),
+    ltc: emitted.has("ltc") ? await loadTable(at(manifest.ltc_table.file), manifest.ltc_table, 4) : null,
+    coefficientTable: emitted.has("coefficient-table")
+        ? await loadTable(at(manifest.coefficient_table.file), manifest.coefficient_table, 2) : null,
+    // A compiled material's coefficients (<name>.json), checked against the build's basis:
+    // { name, basis, coefficients: 3 rows (R, G, B) of c_0..c_3 }.
+    async loadMaterial(name) {
+      const file = at(`${name}.json`);
+      const material = await fetchJson(file, `is ${name} one of this build's materials?`);
+      const basis = material.basis?.name;
+      if (basis !== manifest.basis || material.matc_version !== manifest.matc_version) {
+        throw new MatcWebError(`${file}: coefficients of basis ${basis} from matc ${material.matc_version}, ` +
+                               `but the build's tables are basis ${manifest.basis} from matc ` +
+                               `${manifest.matc_version}: they do not belong together`);
+      }
+      const rows = material.coefficients;
+      if (!Array.isArray(rows) || rows.length !== 3 || rows.some((row) => row.length !== 4)) {
+        throw new MatcWebError(`${file}: coefficients must be 3 rows of 4 numbers`);
+      }
+      return { name: material.name, basis, coefficients: rows };
+    },
+  };
+}
+
+// Checks that a source of coefficients (see the integrations' useMatcFresnel) fits the build;
+// returns its kind: "material", "table" or "baked".
+export function sourceKind(build, source) {
+  if (source?.material) {
+    if (source.material.basis !== build.basis) {
+      throw new MatcWebError(`${source.material.name}: coefficients of basis ${source.material.basis}, ` +
+                             `the build's tables are ${build.basis}`);
+    }
+    return "material";
+  }
+  if (source?.reflectivityMap || source?.edgeTintMap) {
+    if (!source.reflectivityMap || !source.edgeTintMap) {
+      throw new MatcWebError("a textured metal needs both reflectivityMap and edgeTintMap");
+    }
+    if (!build.coefficientTable) {
+      throw new MatcWebError(`${build.url}: textured metals need the coefficient table; compile with ` +
+                             "--emit coefficient-table among the outputs");
+    }
+    return "table";
+  }
+  if (source?.baked) {
+    if (!source.baked.c2Map || !source.baked.c3Map) {
+      throw new MatcWebError("baked coefficients need c2Map and c3Map (matc bake)");
+    }
+    if (source.baked.basis && source.baked.basis !== build.basis) {
+      throw new MatcWebError(`baked coefficients of basis ${source.baked.basis}, the build's tables are ${build.basis}`);
+    }
+    return "baked";
+  }
+  throw new MatcWebError("useMatcFresnel needs { material }, { reflectivityMap, edgeTintMap } or { baked }");
+}
