@@ -1,0 +1,277 @@
+// matc's Fresnel inside Babylon.js's PBRMaterial, as a material plugin: the material becomes a
+// matc metal in every light path Babylon has (point, spot, directional and hemispheric lights,
+// image lighting with its energy conservation, rect area lights), with the rest of the engine
+// untouched. The plugin replaces Babylon's own shader text at anchors checked when it is created:
+// a Babylon whose shaders changed makes it throw, never render wrongly. docs/web-engines.md says
+// what each replacement does.
+//
+//   import { loadMatcBuild, useMatcFresnel } from "./matc-babylon.mjs";
+//   const build = await loadMatcBuild("matc-out/", scene);  // a `matc -o matc-out` build directory
+//   const gold = useMatcFresnel(new PBRMaterial("gold", scene), build,
+//                               { material: await build.loadMaterial("gold") });
+import { Constants } from "@babylonjs/core/Engines/constants.js";
+import { MaterialPluginBase } from "@babylonjs/core/Materials/materialPluginBase.js";
+import { RawTexture } from "@babylonjs/core/Materials/Textures/rawTexture.js";
+import { Texture } from "@babylonjs/core/Materials/Textures/texture.js";
+import { ShaderStore } from "@babylonjs/core/Engines/shaderStore.js";
+import { Vector3, Vector4 } from "@babylonjs/core/Maths/math.vector.js";
+import { AbstractEngine } from "@babylonjs/core/Engines/abstractEngine.js";
+import "@babylonjs/core/Shaders/pbr.fragment.js";  // registers the shader text the anchors are checked against
+import { MatcWebError, checkAnchors, loadMatcBuildFiles, sourceKind } from "../matc-build.mjs";
+
+export { MatcWebError };
+
+// The @babylonjs/core versions whose shaders the replacements were written against and tested
+// with (tests/js/check-babylon-engine.mjs).
+export const kTestedBabylonVersions = ["9.31.0"];
+
+// This pixel's coefficients and its texel of matc_lut at (NdotV, roughness) as Babylon shades them.
+const kPixelSetup = `
+#if defined(MATC_SOURCE_TABLE)
+	{
+		vec3 matc_r = texture2D(matc_reflectivity_map, vMainUV1).rgb * matc_reflectivity;
+		vec3 matc_g = texture2D(matc_edge_tint_map, vMainUV1).rgb * matc_edge_tint;
+		matc_c = MATC_COEFFICIENTS_FROM_TABLE(matc_coefficient_table, matc_r, matc_g);
+	}
+#elif defined(MATC_SOURCE_BAKED)
+	#ifdef MATC_BAKED_F0
+		vec3 matc_f0 = texture2D(matc_f0_map, vMainUV1).rgb;
+	#else
+		vec3 matc_f0 = surfaceAlbedo.rgb;
+	#endif
+	matc_c = matc_coefficients_from_baked(matc_f0, texture2D(matc_c2_map, vMainUV1).rgb, texture2D(matc_c3_map, vMainUV1).rgb);
+#else
+	matc_c = MatcFresnelCoefficients(matc_red, matc_green, matc_blue);
+#endif
+	matc_bbar = texture2D(matc_lut, matc_lut_texcoord(absEps(dot(normalW, viewDirectionW)), roughness));
+`;
+
+// Declarations: the matc library, the tables, and the globals the patched light paths read.
+const kDeclarations = (library) => `
+#ifdef MATC_FRESNEL
+${library}
+uniform sampler2D matc_lut;
+uniform sampler2D matc_ltc;
+#if defined(MATC_SOURCE_TABLE)
+	uniform sampler2D matc_coefficient_table;
+	uniform sampler2D matc_reflectivity_map;
+	uniform sampler2D matc_edge_tint_map;
+#elif defined(MATC_SOURCE_BAKED)
+	uniform sampler2D matc_c2_map;
+	uniform sampler2D matc_c3_map;
+	#ifdef MATC_BAKED_F0
+		uniform sampler2D matc_f0_map;
+	#endif
+#endif
+MatcFresnelCoefficients matc_c;
+vec4 matc_bbar;
+// A rect area light of Babylon's (centre, half width, half height; one-sided like Babylon's):
+// matc's LTC times sum_i c_i bbar_i, as matc_ltc_quad_light.
+vec3 matc_rect_area_light(vec3 N, vec3 V, vec3 P, float roughness, vec3 centre, vec3 halfWidth, vec3 halfHeight) {
+	vec3 q0 = centre + halfWidth - halfHeight;
+	vec3 q1 = centre - halfWidth - halfHeight;
+	vec3 q2 = centre - halfWidth + halfHeight;
+	vec3 q3 = centre + halfWidth + halfHeight;
+	if (dot(cross(q1 - q0, q3 - q0), P - q0) < 0.0) return vec3(0.0);
+	vec4 ltc = texture2D(matc_ltc, matc_ltc_texcoord(absEps(dot(N, V)), roughness));
+	return matc_ltc_quad_light(matc_c, matc_bbar, ltc, N, V, P, q0, q1, q2, q3);
+}
+#endif
+`;
+
+// Each replacement: the shader source it is checked in (Babylon's ShaderStore name), its anchor
+// there, and the regular expression and text the plugin hands Babylon (applied to the shader
+// after its includes are expanded, so lightFragment's {X} is a light's number).
+const kPatches = [
+  {
+    source: "pbrPixelShader",
+    anchor: "float roughness=reflectivityOut.roughness;",
+    regex: "float roughness=reflectivityOut\\.roughness;",
+    replacement: `float roughness=reflectivityOut.roughness;\n#ifdef MATC_FRESNEL\n${kPixelSetup}\n#endif\n`,
+    what: "this pixel's coefficients (uniform, coefficient table or baked) and its texel of matc_lut",
+  },
+  {
+    source: "lightFragment",
+    anchor: "coloredFresnel=fresnelSchlickGGX(preInfo.VdotH,clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90);",
+    regex: "coloredFresnel=fresnelSchlickGGX\\(preInfo\\.VdotH,clearcoatOut\\.specularEnvironmentR0,reflectivityOut\\.colorReflectanceF90\\);",
+    replacement: "coloredFresnel=matc_fresnel(matc_c,preInfo.VdotH);",
+    what: "punctual lights: fresnelSchlickGGX(VdotH, R0, R90) becomes matc_fresnel(c, VdotH)",
+  },
+  {
+    source: "lightFragment",
+    anchor: "info.specular=computeAreaSpecularLighting(preInfo,light{X}.vLightSpecular.rgb,clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90);",
+    regex: "info\\.specular=computeAreaSpecularLighting\\(preInfo,light(\\d+)\\.vLightSpecular\\.rgb,clearcoatOut\\.specularEnvironmentR0,reflectivityOut\\.colorReflectanceF90\\);",
+    replacement: "info.specular=light$1.vLightSpecular.rgb*matc_rect_area_light(normalW,viewDirectionW,vPositionW,roughness," +
+                 "light$1.vLightData.xyz,light$1.vLightWidth.xyz,light$1.vLightHeight.xyz);",
+    what: "rect area lights: Babylon's LTC and its two-channel Fresnel become matc's LTC times sum_i c_i bbar_i",
+  },
+  {
+    source: "pbrBlockReflectance",
+    anchor: "vec3 colorSpecularEnvironmentReflectance=getReflectanceFromBRDFLookup(clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90,environmentBrdf);",
+    regex: "vec3 colorSpecularEnvironmentReflectance=getReflectanceFromBRDFLookup\\(clearcoatOut\\.specularEnvironmentR0,reflectivityOut\\.colorReflectanceF90,environmentBrdf\\);",
+    replacement: "vec3 colorSpecularEnvironmentReflectance=matc_fresnel_preintegrated(matc_c,matc_bbar);",
+    what: "image lighting: the BRDF lookup's R0/R90 mix becomes sum_i c_i bbar_i",
+  },
+  {
+    source: "pbrBlockFinalLitComponents",
+    anchor: "vec3 coloredEnergyConservationFactor=getEnergyConservationFactor(clearcoatOut.specularEnvironmentR0,environmentBrdf);",
+    regex: "vec3 coloredEnergyConservationFactor=getEnergyConservationFactor\\(clearcoatOut\\.specularEnvironmentR0,environmentBrdf\\);",
+    replacement: "vec3 coloredEnergyConservationFactor=matc_energy_compensation(matc_c,matc_bbar);",
+    what: "energy conservation of the specular lobe (direct and image lighting): F0 and E from matc",
+  },
+];
+
+function shaderSources() {
+  return { pbrPixelShader: ShaderStore.ShadersStore.pbrPixelShader,
+           ...Object.fromEntries(["lightFragment", "pbrBlockReflectance", "pbrBlockFinalLitComponents"]
+             .map((name) => [name, ShaderStore.IncludesShadersStore[name]])) };
+}
+
+// ---- A matc build directory as Babylon.js textures. ----
+
+function tableTexture(table, scene) {
+  const format = table.channels === 4 ? Constants.TEXTUREFORMAT_RGBA : Constants.TEXTUREFORMAT_RG;
+  const type = table.half ? Constants.TEXTURETYPE_HALF_FLOAT : Constants.TEXTURETYPE_FLOAT;
+  const texture = new RawTexture(table.data, table.size, table.size, format, scene, false, false,
+                                 Texture.BILINEAR_SAMPLINGMODE, type);
+  texture.wrapU = texture.wrapV = Texture.CLAMP_ADDRESSMODE;
+  texture.gammaSpace = false;
+  return texture;
+}
+
+// Reads a matc build directory (`matc -o DIR`, with glsl, json and lut among --emit; ltc for rect
+// area lights, coefficient-table for textured metals) into textures of `scene`.
+export async function loadMatcBuild(url, scene) {
+  const files = await loadMatcBuildFiles(url);
+  return { ...files, lut: tableTexture(files.lut, scene), ltc: files.ltc && tableTexture(files.ltc, scene),
+           coefficientTable: files.coefficientTable && tableTexture(files.coefficientTable, scene) };
+}
+
+// ---- The plugin. ----
+
+// Checks a build and a source of coefficients against Babylon's shaders; what the plugin keeps.
+function preparePlugin(build, source) {
+  if (!build || typeof build.library !== "string" || !build.lut) {
+    throw new MatcWebError("useMatcFresnel needs the result of loadMatcBuild");
+  }
+  const version = AbstractEngine.Version;
+  const tested = `@babylonjs/core ${kTestedBabylonVersions.join(", ")}`;
+  if (!kTestedBabylonVersions.includes(version)) {
+    console.warn(`matc: @babylonjs/core ${version} is untested (tested: ${tested}); its shaders still match the replacements`);
+  }
+  checkAnchors(`@babylonjs/core ${version}`, shaderSources(), kPatches, tested);
+  const kind = sourceKind(build, source);
+  const colour = (value) => new Vector3(...(Array.isArray(value) ? value : [value ?? 1, value ?? 1, value ?? 1]));
+  return { build, source, kind, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
+           coefficients: kind === "material" ? source.material.coefficients.map((row) => new Vector4(...row)) : null };
+}
+
+// Babylon's base class asks for the shader code while it constructs the plugin, before the
+// subclass can store anything: the prepared state waits here meanwhile.
+let pendingPlugin = null;
+
+export class MatcFresnelPlugin extends MaterialPluginBase {
+  // source: { material } (build.loadMaterial), { reflectivityMap, edgeTintMap, reflectivity?,
+  // edgeTint? } (through the coefficient table) or { baked: { c2Map, c3Map, f0Map? } }.
+  constructor(material, build, source) {
+    pendingPlugin = preparePlugin(build, source);
+    try {
+      super(material, "MatcFresnel", 200,
+            { MATC_FRESNEL: false, MATC_SOURCE_UNIFORM: false, MATC_SOURCE_TABLE: false,
+              MATC_SOURCE_BAKED: false, MATC_BAKED_F0: false });
+      Object.assign(this, pendingPlugin);
+    } finally {
+      pendingPlugin = null;
+    }
+    this._enable(true);
+  }
+
+  getClassName() {
+    return "MatcFresnelPlugin";
+  }
+
+  isCompatible(shaderLanguage) {
+    return shaderLanguage === 0;  // GLSL (WebGL2)
+  }
+
+  prepareDefinesBeforeAttributes(defines) {
+    defines.MATC_FRESNEL = true;
+    defines.MATC_SOURCE_UNIFORM = this.kind === "material";
+    defines.MATC_SOURCE_TABLE = this.kind === "table";
+    defines.MATC_SOURCE_BAKED = this.kind === "baked";
+    defines.MATC_BAKED_F0 = this.kind === "baked" && Boolean(this.source.baked.f0Map);
+    if (this.kind !== "material") {
+      defines._needUVs = true;
+      defines.MAINUV1 = true;
+    }
+  }
+
+  getUniforms() {
+    return {
+      ubo: [{ name: "matc_red", size: 4, type: "vec4" }, { name: "matc_green", size: 4, type: "vec4" },
+            { name: "matc_blue", size: 4, type: "vec4" }, { name: "matc_reflectivity", size: 3, type: "vec3" },
+            { name: "matc_edge_tint", size: 3, type: "vec3" }],
+      fragment: "#ifdef MATC_FRESNEL\nuniform vec4 matc_red;\nuniform vec4 matc_green;\nuniform vec4 matc_blue;\n" +
+                "uniform vec3 matc_reflectivity;\nuniform vec3 matc_edge_tint;\n#endif\n",
+    };
+  }
+
+  getSamplers(samplers) {
+    samplers.push("matc_lut", "matc_ltc", "matc_coefficient_table", "matc_reflectivity_map", "matc_edge_tint_map",
+                  "matc_c2_map", "matc_c3_map", "matc_f0_map");
+  }
+
+  isReadyForSubMesh() {
+    const textures = [this.build.lut, this.build.ltc, ...this._sourceTextures()].filter(Boolean);
+    return textures.every((texture) => texture.isReady());
+  }
+
+  _sourceTextures() {
+    if (this.kind === "table") return [this.build.coefficientTable, this.source.reflectivityMap, this.source.edgeTintMap];
+    if (this.kind === "baked") return [this.source.baked.c2Map, this.source.baked.c3Map, this.source.baked.f0Map];
+    return [];
+  }
+
+  bindForSubMesh(uniformBuffer) {
+    if (this.coefficients) {
+      uniformBuffer.updateVector4("matc_red", this.coefficients[0]);
+      uniformBuffer.updateVector4("matc_green", this.coefficients[1]);
+      uniformBuffer.updateVector4("matc_blue", this.coefficients[2]);
+    }
+    uniformBuffer.updateVector3("matc_reflectivity", this.reflectivity);
+    uniformBuffer.updateVector3("matc_edge_tint", this.edgeTint);
+    uniformBuffer.setTexture("matc_lut", this.build.lut);
+    uniformBuffer.setTexture("matc_ltc", this.build.ltc ?? this.build.lut);
+    if (this.kind === "table") {
+      uniformBuffer.setTexture("matc_coefficient_table", this.build.coefficientTable);
+      uniformBuffer.setTexture("matc_reflectivity_map", this.source.reflectivityMap);
+      uniformBuffer.setTexture("matc_edge_tint_map", this.source.edgeTintMap);
+    } else if (this.kind === "baked") {
+      uniformBuffer.setTexture("matc_c2_map", this.source.baked.c2Map);
+      uniformBuffer.setTexture("matc_c3_map", this.source.baked.c3Map);
+      if (this.source.baked.f0Map) uniformBuffer.setTexture("matc_f0_map", this.source.baked.f0Map);
+    }
+  }
+
+  getCustomCode(shaderType) {
+    if (shaderType !== "fragment") return null;
+    const code = { CUSTOM_FRAGMENT_DEFINITIONS: kDeclarations((this.build ?? pendingPlugin.build).library) };
+    for (const patch of kPatches) code[`!${patch.regex}`] = patch.replacement;
+    return code;
+  }
+}
+
+// Makes `material` (a PBRMaterial) a matc metal: metallic 1, its Fresnel in every light path from
+// `source`. Returns the material; its plugin is material.matcFresnel.
+export function useMatcFresnel(material, build, source) {
+  if (!material?.getClassName || !["PBRMaterial"].includes(material.getClassName())) {
+    throw new MatcWebError("useMatcFresnel takes a Babylon.js PBRMaterial");
+  }
+  if (material.iridescence?.isEnabled) {
+    throw new MatcWebError("iridescence replaces the base Fresnel; it cannot be combined with matc's");
+  }
+  material.matcFresnel = new MatcFresnelPlugin(material, build, source);
+  material.metallic = 1;
+  material.metallicTexture = null;
+  return material;
+}

@@ -1,0 +1,197 @@
+// matc's Fresnel inside Babylon.js's PBRMaterial (examples/web/babylon/matc-babylon.mjs, a
+// material plugin), rendered by Babylon's WebGL2 engine in headless Chromium into a float render
+// target and compared, at probe pixels, with what the CPU runtime (`matc eval`) predicts, to 1e-4
+// (relative above 1): under a white environment, a point light and a rect area light, for the
+// Figure 2 material and beryllium, a textured metal through the coefficient table and a
+// `matc bake` result (tests/js/engine-probes.mjs has the scene and the CPU side). Then the inputs
+// that must fail, as for three.js, with a Babylon whose patched shader changed.
+//   node check-babylon-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
+import { mkdtempSync, readFileSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { dirname, join } from "node:path";
+import { fileURLToPath } from "node:url";
+import { kWebImportMap, kWebRoots, runPage } from "./browser-page.mjs";
+import { checkFailures, compareProbes, expectedProbes, kPointLight, kProbeMaterials, kProbePixels,
+         kProbeSize, kTextured, prepareProbeBuilds, probeRenders } from "./engine-probes.mjs";
+import { check, finish } from "./report.mjs";
+
+const [matc, materialsDir, webDir] = process.argv.slice(2);
+// Babylon's RectAreaLight: a centre, its width along world x and height along world y; it lights
+// the side towards -z (Babylon's winding), here the plane below it.
+const kRectLight = { position: [-0.4, 0.3, 0.9], width: 0.8, height: 0.5, intensity: 2.0 };
+const rectCorners = ({ position: [x, y, z], width, height }) => {
+  const w = width / 2, h = height / 2;
+  return [[x + w, y - h, z], [x - w, y - h, z], [x - w, y + h, z], [x + w, y + h, z]];
+};
+
+const kPage = (config) => `<!doctype html><html><body><pre id="result">not run</pre>
+<script type="application/json" id="config">${JSON.stringify(config)}</script>
+<script type="importmap">${kWebImportMap}</script>
+<script type="module">
+import { Engine } from "@babylonjs/core/Engines/engine.js";
+import { Constants } from "@babylonjs/core/Engines/constants.js";
+import { Scene } from "@babylonjs/core/scene.js";
+import { FreeCamera } from "@babylonjs/core/Cameras/freeCamera.js";
+import { Vector3 } from "@babylonjs/core/Maths/math.vector.js";
+import { Color4 } from "@babylonjs/core/Maths/math.color.js";
+import { CubeMapToSphericalPolynomialTools } from "@babylonjs/core/Misc/HighDynamicRange/cubemapToSphericalPolynomial.js";
+import { CreatePlane } from "@babylonjs/core/Meshes/Builders/planeBuilder.js";
+import { PBRMaterial } from "@babylonjs/core/Materials/PBR/pbrMaterial.js";
+import { PointLight } from "@babylonjs/core/Lights/pointLight.js";
+import { RectAreaLight } from "@babylonjs/core/Lights/rectAreaLight.js";
+import { RawTexture } from "@babylonjs/core/Materials/Textures/rawTexture.js";
+import { RawCubeTexture } from "@babylonjs/core/Materials/Textures/rawCubeTexture.js";
+import { RenderTargetTexture } from "@babylonjs/core/Materials/Textures/renderTargetTexture.js";
+import { ShaderStore } from "@babylonjs/core/Engines/shaderStore.js";
+import { read as readKtx2 } from "ktx-parse";
+import { loadMatcBuild, useMatcFresnel } from "/web/babylon/matc-babylon.mjs";
+const config = JSON.parse(document.getElementById("config").textContent);
+const out = { errors: [], renders: {}, failures: {}, consoleErrors: [] };
+const consoleError = console.error;
+console.error = (...args) => { out.consoleErrors.push(args.join(" ")); consoleError(...args); };
+try {
+  const canvas = document.createElement("canvas");
+  canvas.width = canvas.height = ${kProbeSize};
+  const engine = new Engine(canvas, false, { preserveDrawingBuffer: true });
+  const scene = new Scene(engine);
+  scene.useRightHandedSystem = true;
+  scene.clearColor = new Color4(0, 0, 0, 0);
+  scene.imageProcessingConfiguration.applyByPostProcess = true;  // linear output
+  const camera = new FreeCamera("camera", new Vector3(0, 0, 1), scene);
+  camera.setTarget(Vector3.Zero());
+  camera.fov = Math.PI / 2;
+  camera.minZ = 0.1;
+  camera.maxZ = 10;
+  const build = await loadMatcBuild("/out/", scene);
+  const constant = (scene, rgb) => new RawTexture(new Float32Array([...rgb, 1]), 1, 1, Constants.TEXTUREFORMAT_RGBA,
+                                                  scene, false, false, Constants.TEXTURE_NEAREST_SAMPLINGMODE,
+                                                  Constants.TEXTURETYPE_FLOAT);
+  const baked = async (scene, file) => {
+    const container = readKtx2(new Uint8Array(await (await fetch("/baked/" + file)).arrayBuffer()));
+    const level = container.levels[0].levelData;
+    return new RawTexture(new Float32Array(level.buffer.slice(level.byteOffset, level.byteOffset + level.byteLength)),
+                          container.pixelWidth, container.pixelHeight, Constants.TEXTUREFORMAT_RGBA, scene, false,
+                          false, Constants.TEXTURE_BILINEAR_SAMPLINGMODE, Constants.TEXTURETYPE_FLOAT);
+  };
+  const materials = {};
+  for (const name of config.materials) materials[name] = await build.loadMaterial(name);
+  for (const render of config.renders) {
+    const made = [];  // what this render adds to the scene, disposed after it
+    const sources = {
+      textured: () => ({ reflectivityMap: constant(scene, config.textured.reflectivity),
+                         edgeTintMap: constant(scene, config.textured.edgeTint) }),
+      baked: async () => ({ baked: { c2Map: await baked(scene, "probe_c2.ktx2"), c3Map: await baked(scene, "probe_c3.ktx2"),
+                                     f0Map: await baked(scene, "probe_f0.ktx2") } }),
+    };
+    const source = sources[render.source] ? await sources[render.source]() : { material: materials[render.source] };
+    const material = useMatcFresnel(new PBRMaterial("matc", scene), build, source);
+    material.roughness = render.roughness;
+    material.albedoColor.set(1, 1, 1);
+    const plane = CreatePlane("plane", { size: 4, sideOrientation: 2 }, scene);
+    plane.material = material;
+    made.push(plane, material);
+    if (render.light === "environment") {
+      const face = new Float32Array(8 * 8 * 4).fill(1);
+      const environment = new RawCubeTexture(scene, [face, face, face, face, face, face], 8,
+                                             Constants.TEXTUREFORMAT_RGBA, Constants.TEXTURETYPE_FLOAT, false, false,
+                                             Constants.TEXTURE_BILINEAR_SAMPLINGMODE);
+      environment.gammaSpace = false;
+      // Babylon mixes radiance with irradiance (MIX_IBL_RADIANCE_WITH_IRRADIANCE): the constant
+      // environment's own spherical polynomial keeps both at 1.
+      environment.sphericalPolynomial = CubeMapToSphericalPolynomialTools.ConvertCubeMapToSphericalPolynomial({
+        size: 8, right: face, left: face, up: face, down: face, front: face, back: face,
+        format: Constants.TEXTUREFORMAT_RGBA, type: Constants.TEXTURETYPE_FLOAT, gammaSpace: false });
+      scene.environmentTexture = environment;
+      made.push(environment);
+    }
+    if (render.light === "point") {
+      const light = new PointLight("point", new Vector3(...config.point.position), scene);
+      light.intensity = config.point.intensity;
+      light.radius = 0;
+      light.specular.set(1, 1, 1);
+      made.push(light);
+    }
+    if (render.light === "rect") {
+      const light = new RectAreaLight("rect", new Vector3(...config.rect.position), config.rect.width,
+                                      config.rect.height, scene);
+      light.intensity = config.rect.intensity;
+      light.specular.set(1, 1, 1);
+      made.push(light);
+    }
+    const target = new RenderTargetTexture("probe", ${kProbeSize}, scene, { type: Constants.TEXTURETYPE_FLOAT,
+                                           generateMipMaps: false });
+    target.activeCamera = camera;
+    target.renderList = [plane];
+    target.clearColor = new Color4(0, 0, 0, 0);
+    made.push(target);
+    await scene.whenReadyAsync();
+    for (let attempt = 0; attempt < 50 && !material.isReadyForSubMesh(plane, plane.subMeshes[0]); ++attempt) {
+      scene.render();
+      await new Promise((resolve) => setTimeout(resolve, 20));
+    }
+    if (!material.isReadyForSubMesh(plane, plane.subMeshes[0])) out.errors.push(render.key + ": the material never became ready");
+    target.render();  // twice: the first frame after a light is added may still compile
+    target.render();
+    const pixels = await target.readPixels();
+    out.renders[render.key] = config.pixels.map(([x, y]) => Array.from(pixels.subarray(4 * (y * ${kProbeSize} + x), 4 * (y * ${kProbeSize} + x) + 3)));
+    scene.environmentTexture = null;
+    for (const thing of made) thing.dispose();
+  }
+  // Inputs that must fail: each must throw (and write to the console).
+  const failure = async (key, action) => {
+    const before = out.consoleErrors.length;
+    try {
+      await action();
+      out.failures[key] = { thrown: false };
+    } catch (error) {
+      out.failures[key] = { thrown: true, message: String(error.message), logged: out.consoleErrors.length > before };
+    }
+  };
+  await failure("missing_directory", () => loadMatcBuild("/nothing-here/", scene));
+  await failure("no_glsl_no_lut", () => loadMatcBuild("/json-only/", scene));
+  await failure("table_of_another_basis", () => loadMatcBuild("/mixed-table/", scene));
+  await failure("coefficients_of_another_basis", () => build.loadMaterial("beryllium_extended"));
+  await failure("unknown_material", () => build.loadMaterial("unobtainium"));
+  const original = ShaderStore.IncludesShadersStore.lightFragment;
+  await failure("engine_changed", () => {
+    ShaderStore.IncludesShadersStore.lightFragment = original.replaceAll("fresnelSchlickGGX(preInfo.VdotH,", "fresnelSchlickGGX(saturate(preInfo.VdotH),");
+    try {
+      useMatcFresnel(new PBRMaterial("changed", scene), build, { material: materials.beryllium });
+    } finally {
+      ShaderStore.IncludesShadersStore.lightFragment = original;
+    }
+  });
+  await failure("textured_without_edge_tint", () =>
+    useMatcFresnel(new PBRMaterial("half", scene), build, { reflectivityMap: constant(scene, [1, 1, 1]) }));
+} catch (error) {
+  out.errors.push(String(error.stack || error));
+}
+document.getElementById("result").textContent = JSON.stringify(out);
+</script></body></html>
+`;
+
+const babylonVersion = () => JSON.parse(readFileSync(join(dirname(fileURLToPath(import.meta.url)), "node_modules",
+                                                          "@babylonjs", "core", "package.json"), "utf8")).version;
+
+const dir = mkdtempSync(join(tmpdir(), "matc-babylon-engine-"));
+try {
+  const { out, roots } = prepareProbeBuilds(matc, materialsDir, dir);
+  const renders = probeRenders();
+  const config = { materials: kProbeMaterials, pixels: kProbePixels, renders, point: kPointLight,
+                   rect: kRectLight, textured: kTextured };
+  const result = await runPage({ html: kPage(config), roots: { ...kWebRoots, web: webDir, ...roots }, dir });
+  check(result.errors.length === 0, `Babylon.js: ${result.errors.join("\n")}`);
+  // Babylon's GGX alpha: roughness squared plus its minimum variance, 0.0005; its energy
+  // conservation scales area lights' specular too.
+  const expected = expectedProbes({ matc, materialsDir, out, alphaOf: (r) => r * r + 0.0005,
+                                    rect: { corners: rectCorners(kRectLight), intensity: kRectLight.intensity,
+                                            compensated: true } });
+  const worst = compareProbes(result.renders, expected);
+  const refused = checkFailures(result.failures);
+  console.log(`Babylon.js ${babylonVersion()} PBRMaterial with matc's Fresnel: ` +
+              `${Object.keys(expected).length} renders x ${kProbePixels.length} probes, largest difference ` +
+              `from the CPU runtime ${worst.toExponential(2)}; ${refused} bad inputs checked`);
+} finally {
+  rmSync(dir, { recursive: true, force: true });
+}
+finish();

@@ -1,0 +1,196 @@
+// What the engine integration tests share (check-three-engine.mjs, check-babylon-engine.mjs): the
+// probe scene (a plane z = 0 seen from z = 1 with a 90 degree field of view into a 64 x 64 float
+// target), the builds they load (good ones and the ones that must fail), the CPU runtime's value
+// at each probe pixel for each light (`matc eval`), and the comparison.
+import { cpSync } from "node:fs";
+import { join } from "node:path";
+import { readFileSync } from "node:fs";
+import { check } from "./report.mjs";
+import { compensatedFbar, kPreintegratedTolerance, run } from "./shader-cases.mjs";
+
+export const kProbeSize = 64;
+export const kProbePixels = [[32, 32], [5, 60], [60, 10], [1, 1], [40, 20], [62, 40]];
+export const kProbeRoughness = [0.3, 0.7];
+export const kProbeMaterials = ["figure2_edge_tint", "beryllium"];
+export const kPointLight = { position: [0.3, 0.2, 0.8], intensity: 0.7 };
+export const kTextured = { reflectivity: [0.9, 0.6, 0.3], edgeTint: [0.8, 0.5, 0.2] };
+export const kBaked = { reflectivity: [0.95, 0.64, 0.54], edgeTint: [1.0, 0.75, 0.4] };
+
+// Vector helpers (double precision; the GPU's float32 stays well within the tolerance).
+export const sub = (a, b) => a.map((x, i) => x - b[i]);
+export const add = (a, b) => a.map((x, i) => x + b[i]);
+export const scale = (a, s) => a.map((x) => x * s);
+export const dot = (a, b) => a.reduce((s, x, i) => s + x * b[i], 0);
+export const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+export const normalize = (a) => scale(a, 1 / Math.sqrt(dot(a, a)));
+
+// Pixel (x, y), y up, sees P = (u, v, 0), u, v = 2 (x + 0.5) / 64 - 1; the normal is +z.
+const kNormal = [0, 0, 1];
+const pointAt = ([x, y]) => [(2 * (x + 0.5)) / kProbeSize - 1, (2 * (y + 0.5)) / kProbeSize - 1, 0];
+const viewAt = (pixel) => normalize(sub([0, 0, 1], pointAt(pixel)));
+
+// GGX without F, D x height-correlated Smith visibility, for the engine's alpha.
+function ggxWithoutFresnel(l, v, alpha) {
+  const a2 = alpha * alpha;
+  const h = normalize(add(l, v));
+  const nl = Math.max(dot(kNormal, l), 0), nv = Math.max(dot(kNormal, v), 0);
+  const nh = Math.max(dot(kNormal, h), 0);
+  const gv = nl * Math.sqrt(a2 + (1 - a2) * nv * nv);
+  const gl = nv * Math.sqrt(a2 + (1 - a2) * nl * nl);
+  const visibility = 0.5 / Math.max(gv + gl, 1e-6);
+  const d = a2 / (Math.PI * (nh * nh * (a2 - 1) + 1) ** 2);
+  return { value: d * visibility, vdoth: Math.max(dot(v, h), 0) };
+}
+
+// A corner in the CPU runtime's shading frame: normal +z, the view in the xz-plane towards +x.
+function toShadingFrame(corner, pixel) {
+  const p = pointAt(pixel), v = viewAt(pixel);
+  const t1 = normalize(sub(v, scale(kNormal, dot(v, kNormal))));
+  const t2 = cross(kNormal, t1);
+  const d = sub(corner, p);
+  return [dot(d, t1), dot(d, t2), dot(d, kNormal)];
+}
+
+// Compiles what the pages load into dir: out/ (the two materials, every table in f32), baked/
+// (`matc bake` of kBaked, f32), and the builds that must be refused: json-only/ (no shader
+// library, no table), mixed-table/ (the extended basis' table beside powers coefficients) and
+// out/beryllium_extended.json (extended-basis coefficients beside powers tables).
+export function prepareProbeBuilds(matc, materialsDir, dir) {
+  const out = join(dir, "out");
+  const materialFiles = kProbeMaterials.map((name) => join(materialsDir, `${name}.json`));
+  run(matc, ["-q", "-o", out, "--emit", "glsl,json,lut,ltc,coefficient-table",
+             "--lut-precision", "f32", "--coefficient-table-precision", "f32", ...materialFiles]);
+  run(matc, ["bake", "-q", "--reflectivity", kBaked.reflectivity.join(","), "--edge-tint",
+             kBaked.edgeTint.join(","), "--name", "probe", "--precision", "f32", "--f0", "-o",
+             join(dir, "baked")]);
+  run(matc, ["-q", "-o", join(dir, "json-only"), "--emit", "json", materialFiles[1]]);
+  const extended = join(dir, "extended");
+  run(matc, ["-q", "-o", extended, "--basis", "extended", "--emit", "glsl,json,lut",
+             "--lut-precision", "f32", materialFiles[1]]);
+  cpSync(out, join(dir, "mixed-table"), { recursive: true });
+  for (const file of ["matc_lut.ktx2", "matc_lut.ktx2.json"]) {
+    cpSync(join(extended, file), join(dir, "mixed-table", file));
+  }
+  cpSync(join(extended, "beryllium.json"), join(out, "beryllium_extended.json"));
+  return { out, roots: { out, baked: join(dir, "baked"), "json-only": join(dir, "json-only"),
+                         "mixed-table": join(dir, "mixed-table") } };
+}
+
+// The renders a page makes: every material at every roughness under each light; the textured and
+// baked metals under the environment and the point light.
+export function probeRenders() {
+  const renders = [];
+  for (const source of kProbeMaterials) {
+    for (const roughness of kProbeRoughness) {
+      for (const light of ["environment", "point", "rect"]) {
+        renders.push({ key: `${source} ${light} r=${roughness}`, source, light, roughness });
+      }
+    }
+  }
+  for (const source of ["textured", "baked"]) {
+    for (const light of ["environment", "point"]) {
+      renders.push({ key: `${source} ${light} r=0.3`, source, light, roughness: 0.3 });
+    }
+  }
+  return renders;
+}
+
+// The CPU runtime's value at every probe of every render: compensated Fbar under the white
+// environment, irradiance x GGX x F(v.h) x compensation under the point light (alphaOf gives the
+// engine's GGX alpha for a roughness), the rect light's radiance x `L_ltc` (corners in world
+// space), times the compensation too where the engine applies it to area lights
+// (rect.compensated).
+export function expectedProbes({ matc, materialsDir, out, alphaOf, rect }) {
+  const ndotv = kProbePixels.map((pixel) => Math.fround(dot(kNormal, viewAt(pixel))));
+  const pointTerms = kProbeRoughness.map((roughness) => kProbePixels.map((pixel) => {
+    const toLight = sub(kPointLight.position, pointAt(pixel));
+    const distance2 = dot(toLight, toLight);
+    const l = normalize(toLight);
+    const brdf = ggxWithoutFresnel(l, viewAt(pixel), alphaOf(roughness));
+    return { irradiance: (kPointLight.intensity / Math.max(distance2, 0.01)) * Math.max(l[2], 0),
+             ggx: brdf.value, vdoth: brdf.vdoth };
+  }));
+  const list = (values) => values.join(",");
+  const albedo = (roughness) => JSON.parse(run(matc, [
+    "eval", "--reflectivity", "1", "--edge-tint", "1", "--lut-precision", "f32", "--no-reference",
+    "--ndotv", list(ndotv), "--roughness", list(ndotv.map(() => roughness))])).Fbar_table.map((e) => e[0]);
+  const expected = {};
+  for (const [source, args, f0Of, fbarKey, fKey] of [
+    ...kProbeMaterials.map((name) => [name, [join(materialsDir, `${name}.json`)], null, "Fbar", "F"]),
+    ["textured", ["--reflectivity", list(kTextured.reflectivity), "--edge-tint", list(kTextured.edgeTint),
+                  "--coefficient-table-precision", "f32"], kTextured.reflectivity, "Fbar_table", "F_table"],
+    ["baked", ["--reflectivity", list(kBaked.reflectivity), "--edge-tint", list(kBaked.edgeTint)],
+     kBaked.reflectivity, "Fbar_compiled", "F_compiled"],
+  ]) {
+    for (const roughness of source === "textured" || source === "baked" ? [0.3] : kProbeRoughness) {
+      const terms = pointTerms[kProbeRoughness.indexOf(roughness)];
+      const evaluated = JSON.parse(run(matc, [
+        "eval", ...args, "--lut-precision", "f32", "--no-reference", "--ndotv", list(ndotv),
+        "--roughness", list(ndotv.map(() => roughness)), "--mu", list(terms.map((t) => t.vdoth))]));
+      const f0 = f0Of ?? JSON.parse(readFileSync(join(out, `${source}.json`), "utf8"))
+                            .coefficients.map((row) => row[0]);
+      const e = albedo(roughness);
+      expected[`${source} environment r=${roughness}`] =
+          evaluated[fbarKey].map((fbar, i) => compensatedFbar(fbar, f0, e[i]));
+      expected[`${source} point r=${roughness}`] = terms.map((t, i) => {
+        const compensated = compensatedFbar(evaluated[fKey][i], f0, e[i]);  // F (1 + F0 (1 - E) / E)
+        return compensated.map((value) => t.irradiance * t.ggx * value);
+      });
+      if (kProbeMaterials.includes(source)) {
+        expected[`${source} rect r=${roughness}`] = kProbePixels.map((pixel, i) => {
+          const quad = rect.corners.map((corner) => toShadingFrame(corner, pixel).join(",")).join(";");
+          const light = JSON.parse(run(matc, [
+            "eval", ...args, "--lut-precision", "f32", "--ndotv", String(ndotv[i]),
+            "--roughness", String(roughness), "--quad-light", quad, "--light-samples", "16"]));
+          const radiance = light.L_ltc[0].map((value) => value * rect.intensity);
+          return rect.compensated ? compensatedFbar(radiance, f0, e[i]) : radiance;
+        });
+      }
+    }
+  }
+  return expected;
+}
+
+// Every rendered probe against the CPU runtime, to 1e-4 (relative above 1); returns the largest
+// difference.
+export function compareProbes(renders, expected) {
+  let worst = 0;
+  for (const [key, pixels] of Object.entries(expected)) {
+    const rendered = renders[key];
+    check(Array.isArray(rendered), `${key}: not rendered`);
+    if (!Array.isArray(rendered)) continue;
+    pixels.forEach((rgb, i) => rgb.forEach((value, c) => {
+      const difference = Math.abs(rendered[i][c] - value) / Math.max(1, Math.abs(value));
+      worst = Math.max(worst, difference);
+      check(difference <= kPreintegratedTolerance,
+            `${key}, pixel ${kProbePixels[i]}, channel ${c}: rendered ${rendered[i][c]}, CPU runtime ${value}`);
+    }));
+    // Every light must reach the probes (a light that lit nothing would pass trivially).
+    const lit = pixels.filter((rgb) => rgb.some((value) => value > 1e-3)).length;
+    check(lit >= 3, `${key}: only ${lit} of ${kProbePixels.length} probes lit`);
+  }
+  return worst;
+}
+
+// The inputs a page must refuse, each with a phrase its message must hold; pages run each as
+// failure(key, action) and report { thrown, message, logged }.
+export const kFailures = {
+  missing_directory: "is this a matc output directory",
+  no_glsl_no_lut: "no glsl output",
+  table_of_another_basis: "a table of basis extended",
+  coefficients_of_another_basis: "do not belong together",
+  unknown_material: "is unobtainium one of this build's materials",
+  engine_changed: "changed (0 matches for the text the patch",
+  textured_without_edge_tint: "needs both reflectivityMap and edgeTintMap",
+};
+
+export function checkFailures(failures) {
+  for (const [key, phrase] of Object.entries(kFailures)) {
+    const failure = failures[key];
+    check(failure?.thrown === true, `${key}: did not throw`);
+    if (!failure?.thrown) continue;
+    check(failure.message.includes(phrase), `${key}: "${failure.message}" does not say "${phrase}"`);
+    check(failure.logged === true, `${key}: nothing written to the console`);
+  }
+  return Object.keys(kFailures).length;
+}
