@@ -56,9 +56,12 @@ export async function runPage({ html, roots, dir, budgetMs = 120000 }) {
       const browser = spawn(chromiumPath(), [
         "--headless", "--no-sandbox", "--disable-dev-shm-usage", "--use-angle=swiftshader",
         "--enable-unsafe-swiftshader", `--virtual-time-budget=${budgetMs}`,
+        // MATC_BROWSER_LOG=1 shows the page's console (and Chromium's own messages) on stderr.
+        ...(process.env.MATC_BROWSER_LOG ? ["--enable-logging=stderr", "--v=0"] : []),
         `--user-data-dir=${join(dir, "profile")}`, "--dump-dom", url]);
       let text = "";
       browser.stdout.on("data", (chunk) => { text += chunk; });
+      if (process.env.MATC_BROWSER_LOG) browser.stderr.on("data", (chunk) => process.stderr.write(chunk));
       browser.on("error", reject);
       browser.on("close", () => resolve(text));
     });

@@ -8,6 +8,9 @@
 // lobe's directional albedo, channel 0 of matc's table), which both engine materials apply to
 // their punctual and image lighting.
 
+// The rect light's radiance is a whole number: Babylon.js's stock area-light Fresnel mixes the
+// light's colour into its weights (computeAreaSpecularLighting), which only works for colours up
+// to 1, so its page draws that many coincident lights of radiance 1.
 export const kScene = {
   size: 128,  // pixels, square
   camera: { position: [0, 0, 3.2], fov: 40, near: 0.1, far: 20 },
@@ -20,30 +23,55 @@ export const kScene = {
 
 // The environment: a sky that brightens towards the zenith, a darker ground, and two soft
 // sources: one high in front (camera side) and one behind the sphere, which the rim reflects at
-// grazing angles. Equirectangular as three.js maps it: u = atan(z, x) / 2pi + 0.5,
-// v = asin(y) / pi + 0.5, row 0 at v = 0 (straight down). Stringified into pages, so self-contained.
-export function environmentTexels(width, height, intensity = 1) {
-  const texels = new Float32Array(width * height * 4);
-  const lobe = (d, centre, sharpness, colour) => {
+// grazing angles. Radiance in direction d (unit); stringified into pages, so self-contained.
+export function environmentRadiance(d) {
+  const lobe = (centre, sharpness, colour) => {
     const c = Math.hypot(...centre);
     const cosine = (d[0] * centre[0] + d[1] * centre[1] + d[2] * centre[2]) / c;
     const w = Math.exp(sharpness * (cosine - 1));
     return colour.map((x) => x * w);
   };
+  const y = d[1];
+  const sky = y > 0 ? [0.35 + 0.5 * y, 0.45 + 0.45 * y, 0.6 + 0.4 * y] : [0.18, 0.15, 0.12];
+  const front = lobe([0.6, 0.7, 1.0], 18, [5.0, 4.6, 4.0]);
+  const behind = lobe([-0.3, 0.15, -1.0], 10, [3.0, 3.2, 3.6]);
+  return [0, 1, 2].map((c) => sky[c] + front[c] + behind[c]);
+}
+
+// The environment as an equirectangular texture as three.js maps it: u = atan(z, x) / 2pi + 0.5,
+// v = asin(y) / pi + 0.5, row 0 at v = 0 (straight down).
+export function environmentTexels(width, height, intensity = 1) {
+  const texels = new Float32Array(width * height * 4);
   for (let j = 0; j < height; ++j) {
     const y = Math.sin(((j + 0.5) / height - 0.5) * Math.PI);
     const ring = Math.sqrt(Math.max(0, 1 - y * y));
     for (let i = 0; i < width; ++i) {
       const phi = ((i + 0.5) / width - 0.5) * 2 * Math.PI;
-      const d = [ring * Math.cos(phi), y, ring * Math.sin(phi)];
-      const sky = y > 0 ? [0.35 + 0.5 * y, 0.45 + 0.45 * y, 0.6 + 0.4 * y] : [0.18, 0.15, 0.12];
-      const front = lobe(d, [0.6, 0.7, 1.0], 18, [5.0, 4.6, 4.0]);
-      const behind = lobe(d, [-0.3, 0.15, -1.0], 10, [3.0, 3.2, 3.6]);
-      texels.set([(sky[0] + front[0] + behind[0]) * intensity, (sky[1] + front[1] + behind[1]) * intensity,
-                  (sky[2] + front[2] + behind[2]) * intensity, 1], 4 * (j * width + i));
+      const radiance = environmentRadiance([ring * Math.cos(phi), y, ring * Math.sin(phi)]);
+      texels.set([...radiance.map((x) => x * intensity), 1], 4 * (j * width + i));
     }
   }
   return texels;
+}
+
+// The environment as the six faces of a cube map (+x, -x, +y, -y, +z, -z, OpenGL's directions
+// per texel), each size x size RGBA floats, with z mirrored (flipZ) for engines that look their
+// cube maps up with -z (Babylon.js in a right-handed scene).
+export function environmentCubeFaces(size, intensity = 1, flipZ = false) {
+  const direction = [(s, t) => [1, -t, -s], (s, t) => [-1, -t, s], (s, t) => [s, 1, t],
+                     (s, t) => [s, -1, -t], (s, t) => [s, -t, 1], (s, t) => [-s, -t, -1]];
+  return direction.map((at) => {
+    const face = new Float32Array(size * size * 4);
+    for (let j = 0; j < size; ++j) {
+      for (let i = 0; i < size; ++i) {
+        const g = at((2 * (i + 0.5)) / size - 1, (2 * (j + 0.5)) / size - 1);
+        const l = Math.hypot(...g);
+        const d = [g[0] / l, g[1] / l, (flipZ ? -g[2] : g[2]) / l];
+        face.set([...environmentRadiance(d).map((x) => x * intensity), 1], 4 * (j * size + i));
+      }
+    }
+    return face;
+  });
 }
 
 // The rect light's corners, as three.js puts them for a light at `position` looking at the
@@ -77,7 +105,11 @@ void main() {
 export const kReferenceFragmentShader = `
 precision highp float;
 precision highp sampler2D;
+#ifdef REFERENCE_CUBE_ENVIRONMENT
+uniform samplerCube reference_environment;  // looked up with -z, as Babylon.js does in a right-handed scene
+#else
 uniform sampler2D reference_environment;  // equirectangular, linear filtering
+#endif
 uniform sampler2D reference_fresnel;      // exact F(mu), mu = i / (n - 1), n texels in a row
 // A textured metal instead (reference_textured = 1): Gulbrandsen's reflectivity and edge tint
 // per pixel from these maps (linear values), the exact conductor Fresnel of their n + ik.
@@ -100,7 +132,11 @@ uniform float reference_lut_size;
 in vec3 reference_position;
 in vec3 reference_normal;
 in vec2 reference_uv;
+#ifdef REFERENCE_GL_FRAG_COLOR
+#define reference_color gl_FragColor  // engines that declare the output themselves (Babylon.js)
+#else
 out vec4 reference_color;
+#endif
 const float PI = 3.14159265358979;
 
 vec3 pixel_n;  // the textured metal's index of refraction at this pixel
@@ -135,8 +171,12 @@ vec3 brdf_cosine(vec3 n, vec3 v, vec3 l, float a2) {
   return exact_fresnel(dot(v, h)) * (d * g2 / (4.0 * nv));
 }
 vec3 environment(vec3 d) {
+#ifdef REFERENCE_CUBE_ENVIRONMENT
+  return textureLod(reference_environment, vec3(d.x, d.y, -d.z), 0.0).rgb;
+#else
   vec2 uv = vec2(atan(d.z, d.x) / (2.0 * PI) + 0.5, asin(clamp(d.y, -1.0, 1.0)) / PI + 0.5);
   return textureLod(reference_environment, uv, 0.0).rgb;
+#endif
 }
 float radical_inverse(uint bits) {
   bits = (bits << 16u) | (bits >> 16u);
@@ -183,11 +223,14 @@ void main() {
   vec3 v = normalize(cameraPosition - reference_position);
   float nv = dot(n, v);
   if (nv <= 0.0) { reference_color = vec4(0.0, 0.0, 0.0, 1.0); return; }
+  float roughness = reference_roughness;
+#ifdef REFERENCE_GEOMETRY_ROUGHNESS
   // The roughness three.js shades with: at least 0.045, widened by the normal's screen-space
   // derivative (its specular anti-aliasing), so that the reference judges the Fresnel alone.
   vec3 view_normal = normalize(mat3(viewMatrix) * reference_normal);
   vec3 dxy = max(abs(dFdx(view_normal)), abs(dFdy(view_normal)));
-  float roughness = min(max(reference_roughness, 0.045) + max(max(dxy.x, dxy.y), dxy.z), 1.0);
+  roughness = min(max(reference_roughness, 0.045) + max(max(dxy.x, dxy.y), dxy.z), 1.0);
+#endif
   float alpha = roughness * roughness;
   float a2 = alpha * alpha;
   // Environment: VNDF samples, weight F(v.h) G2 / G1(v).

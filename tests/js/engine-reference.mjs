@@ -1,0 +1,194 @@
+// What the engine-against-reference tests share (check-three-reference.mjs,
+// check-babylon-reference.mjs): the scene's materials compiled and their exact Fresnel curves
+// tabulated, the textured inlay's maps and bake, the page run, the errors by region of the sphere,
+// the checks, the comparison images and docs/web-engines.md's table, and the frame timing.
+// Each engine gives a page (config -> HTML) that renders "<material> reference", "<material>
+// stock" and "<material> matc" (and "inlaid_metals baked") as base64 RGBA floats, the reference
+// with 1 + NdotV in alpha.
+//   runReferenceComparison(engine, process.argv.slice(2)), argv: MATC MATERIALS_DIR
+//   EXAMPLES_WEB_DIR MATC_EXAMPLE_MAPS EXAMPLES_TEXTURED_DIR [--markdown] [--images DIR]
+//   [--size N] [--lights environment|point|rect] [--timing]
+// --markdown prints the table alone (the checks' lines go to stderr); --images writes the
+// comparison panels as PNG; --lights keeps one light path; --timing adds frame times.
+import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { dirname, join } from "node:path";
+import { kWebRoots, runPage } from "./browser-page.mjs";
+import { kReferenceFragmentShader, kReferenceVertexShader, kScene, rectLightGeometry,
+         sceneWith } from "./engine-scene.mjs";
+import { displayByte, writePng } from "./png.mjs";
+import { check, finish } from "./report.mjs";
+import { run } from "./shader-cases.mjs";
+
+const kMaterials = ["figure2_edge_tint", "beryllium"];
+// Regions of the sphere by NdotV, and what each must show. The silhouette's pixels sit where the
+// split sum is poorest (and, in three.js, shade with a roughness the normal's derivative widened
+// towards 1): there matc's material must be closer than the stock one. Grazing and middle angles
+// are where Schlick's curve leaves the exact one: at most half the stock error. At the centre
+// both have the exact F0, and what is left is the split sum's own error.
+const kRegions = [
+  { name: "silhouette (NdotV < 0.1)", test: (nv) => nv < 0.1, bound: 1.0, means: "closer than stock" },
+  { name: "grazing (0.1-0.3)", test: (nv) => nv >= 0.1 && nv < 0.3, bound: 0.5, means: "at most half" },
+  { name: "middle (0.3-0.7)", test: (nv) => nv >= 0.3 && nv < 0.7, bound: 0.5, means: "at most half" },
+  { name: "centre (NdotV >= 0.7)", test: (nv) => nv >= 0.7, bound: 1.1,
+    means: "the split sum's own error: no more than stock + 10%" },
+];
+
+const floats = (text) => new Float32Array(Buffer.from(text, "base64").buffer.slice(0));
+
+// Radiance-weighted error per region and channel: sum |x - reference| / sum reference.
+function regionErrors(image, reference) {
+  return kRegions.map((region) => {
+    const difference = [0, 0, 0], total = [0, 0, 0];
+    let pixels = 0;
+    for (let i = 0; i < reference.length; i += 4) {
+      if (reference[i + 3] === 0) continue;  // background
+      const nv = reference[i + 3] - 1;
+      if (!region.test(nv)) continue;
+      pixels += 1;
+      for (let c = 0; c < 3; ++c) {
+        difference[c] += Math.abs(image[i + c] - reference[i + c]);
+        total[c] += reference[i + c];
+      }
+    }
+    const all = difference.reduce((a, b) => a + b) / total.reduce((a, b) => a + b);
+    return { pixels, channels: difference.map((d, c) => d / total[c]), all };
+  });
+}
+
+function writePanels(path, size, panels) {
+  mkdirSync(dirname(path), { recursive: true });
+  const rgb = new Uint8Array(size * panels.length * size * 3);
+  panels.forEach(({ image, scaleBy, against }, p) => {
+    for (let y = 0; y < size; ++y) {
+      for (let x = 0; x < size; ++x) {
+        const i = 4 * ((size - 1 - y) * size + x);  // render targets are bottom-up
+        const o = 3 * (y * size * panels.length + p * size + x);
+        for (let c = 0; c < 3; ++c) {
+          rgb[o + c] = against
+              ? Math.round(Math.min(1, Math.abs(image[i + c] - against[i + c]) * scaleBy) * 255)
+              : displayByte(image[i + c]);
+        }
+      }
+    }
+  });
+  writePng(path, size * panels.length, size, rgb);
+}
+
+// engine: { name (e.g. "three.js"), prefix (image file names), label (the table's first words),
+// page(config) -> HTML, prepare(dir) -> extra served folders }.
+export async function runReferenceComparison(engine, argv) {
+  const [matc, materialsDir, webDir, exampleMaps, texturedDir, ...options] = argv;
+  const markdown = options.includes("--markdown");
+  const optionValue = (name) => options.includes(name) ? options[options.indexOf(name) + 1] : null;
+  const imagesDir = optionValue("--images");
+  const lightPaths = optionValue("--lights") ?? "all";
+  const size = Number(optionValue("--size") ?? kScene.size);
+  const print = console.log;
+  if (markdown) console.log = (...args) => console.error(...args);
+  const dir = mkdtempSync(join(tmpdir(), "matc-engine-reference-"));
+  try {
+    const out = join(dir, "out");
+    run(matc, ["-q", "-o", out, "--emit", "glsl,json,lut,ltc,coefficient-table", "--lut-precision", "f32",
+               ...kMaterials.map((name) => join(materialsDir, `${name}.json`))]);
+    const cosines = Array.from({ length: kScene.fresnelSamples }, (_, i) => i / (kScene.fresnelSamples - 1));
+    const materials = kMaterials.map((name) => {
+      const compiled = JSON.parse(readFileSync(join(out, `${name}.json`), "utf8"));
+      const exact = JSON.parse(run(matc, ["eval", join(materialsDir, `${name}.json`), "--mu", cosines.join(",")]))
+                      .F_exact;
+      return { name, roughness: compiled.roughness, f0: compiled.coefficients.map((row) => row[0]),
+               exactFresnel: exact.flatMap((rgb) => [...rgb, 1]) };
+    });
+    // The inlay's maps and bake, as the examples' build makes them.
+    const textured = join(dir, "textured");
+    run(exampleMaps, ["--size", "512", "-o", join(textured, "maps")]);
+    cpSync(join(texturedDir, "inlaid_metals.json"), join(textured, "inlaid_metals.json"));
+    run(matc, ["bake", "-q", "--f0", "-o", join(textured, "baked"), join(textured, "inlaid_metals.json")]);
+    const config = { textured: { name: "inlaid_metals", roughness: 0.3 }, scene: { ...sceneWith(lightPaths), size }, materials, rect: rectLightGeometry(kScene.rect),
+                     vertexShader: kReferenceVertexShader, fragmentShader: kReferenceFragmentShader };
+    const roots = { ...kWebRoots, web: webDir, out, textured, ...(engine.prepare?.(dir) ?? {}) };
+    const result = await runPage({ html: engine.page(config), roots, dir, budgetMs: 600000 });
+    check(result.errors.length === 0, `${engine.name}: ${result.errors.join("\n")}`);
+    const rows = [];
+    for (const { name } of materials) {
+      const images = ["reference", "stock", "matc"].map((kind) => result.images[`${name} ${kind}`]);
+      check(images.every(Boolean), `${name}: not every image was rendered`);
+      if (!images.every(Boolean)) continue;
+      const [reference, stock, ours] = images.map(floats);
+      const stockErrors = regionErrors(stock, reference), oursErrors = regionErrors(ours, reference);
+      kRegions.forEach((region, r) => {
+        const s = stockErrors[r], o = oursErrors[r];
+        check(o.pixels > 50, `${name}, ${region.name}: only ${o.pixels} pixels`);
+        check(o.all <= region.bound * s.all, `${name}, ${region.name}: matc's error ${o.all.toFixed(4)} ` +
+                                             `against the stock material's ${s.all.toFixed(4)}: not ${region.means}`);
+        rows.push({ name, region: region.name, pixels: o.pixels, stock: s, ours: o });
+      });
+      if (imagesDir) {
+        writePanels(join(imagesDir, `${engine.prefix}_${name}.png`), size, [{ image: reference }, { image: stock }, { image: ours }]);
+        writePanels(join(imagesDir, `${engine.prefix}_${name}_difference.png`), size, [
+          { image: stock, against: reference, scaleBy: 4 }, { image: ours, against: reference, scaleBy: 4 }]);
+      }
+    }
+    // The inlay through the coefficient table and through its bake.
+    const inlay = config.textured.name;
+    const texturedImages = ["reference", "stock", "matc", "baked"].map((kind) => result.images[`${inlay} ${kind}`]);
+    check(texturedImages.every(Boolean), `${inlay}: not every image was rendered`);
+    if (texturedImages.every(Boolean)) {
+      const [reference, stock, table, baked] = texturedImages.map(floats);
+      const stockErrors = regionErrors(stock, reference);
+      for (const [label, image] of [["coefficient table", table], ["baked", baked]]) {
+        regionErrors(image, reference).forEach((o, r) => {
+          const s = stockErrors[r];
+          // Closer than stock, and at the centre (both with the maps' F0) within its +10%.
+          const bound = Math.max(kRegions[r].bound, 1.0);
+          check(o.all <= bound * s.all, `${inlay} (${label}), ${kRegions[r].name}: matc's error ` +
+                                        `${o.all.toFixed(4)} against the stock material's ${s.all.toFixed(4)}`);
+          rows.push({ name: `${inlay} (${label})`, region: kRegions[r].name, pixels: o.pixels, stock: s, ours: o });
+        });
+      }
+      if (imagesDir) {
+        writePanels(join(imagesDir, `${engine.prefix}_${inlay}.png`), size,
+                    [{ image: reference }, { image: stock }, { image: table }, { image: baked }]);
+        writePanels(join(imagesDir, `${engine.prefix}_${inlay}_difference.png`), size, [
+          { image: stock, against: reference, scaleBy: 4 }, { image: table, against: reference, scaleBy: 4 },
+          { image: baked, against: reference, scaleBy: 4 }]);
+      }
+    }
+    const percent = (x) => `${(100 * x).toFixed(1)}%`;
+    const table = [
+      `${engine.label}, ${size}x${size} pixels; ` +
+      `reference: ${kScene.samples.environment} environment samples and ${kScene.samples.rectSide ** 2} ` +
+      "rect-light samples per pixel. Radiance-weighted error against the reference, " +
+      "sum |render - reference| / sum reference, per region of the sphere (all channels; R, G, B):",
+      "",
+      `| material | region | pixels | stock ${engine.name} | with matc | stock R, G, B | matc R, G, B |`,
+      "|---|---|---:|---:|---:|---|---|",
+      ...rows.map(({ name, region, pixels, stock, ours }) =>
+        `| ${name} | ${region} | ${pixels} | ${percent(stock.all)} | ${percent(ours.all)} | ` +
+        `${stock.channels.map(percent).join(", ")} | ${ours.channels.map(percent).join(", ")} |`),
+    ];
+    if (options.includes("--timing")) {
+      // The page's extra frames cost, timed from outside: (frames drawn 100 times) - (0 times).
+      const frames = 100;
+      const seconds = async (timing) => {
+        const start = process.hrtime.bigint();
+        await runPage({ html: engine.page({ ...config, timing }), roots, dir, budgetMs: 600000 });
+        return Number(process.hrtime.bigint() - start) / 1e9;
+      };
+      const perFrame = {};  // the inlay's two matc paths count as one material
+      for (const kind of ["stock", "matc"]) {
+        perFrame[kind] = (1000 * ((await seconds({ kind, frames })) - (await seconds({ kind, frames: 0 })))) /
+                         (frames * (materials.length + 1));
+      }
+      table.push("", `Frame time of this ${size}x${size} frame on SwiftShader (Chromium's CPU rasteriser: ` +
+                 "it shows the shaders' ALU and texture work, not a GPU's timing), from the wall-clock " +
+                 `time of ${frames} extra frames per material: stock ${perFrame.stock.toFixed(1)} ms, ` +
+                 `with matc ${perFrame.matc.toFixed(1)} ms.`);
+    }
+    if (markdown) print(table.join("\n"));
+    else console.log(table.join("\n"));
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+  finish();
+}
