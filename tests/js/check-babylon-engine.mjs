@@ -161,6 +161,8 @@ try {
       ShaderStore.IncludesShadersStore.lightFragment = original;
     }
   });
+  await failure("unknown_area_light_option", () =>
+    useMatcFresnel(new PBRMaterial("option", scene), build, { material: materials.beryllium }, { areaLights: "fast" }));
   await failure("textured_without_edge_tint", () =>
     useMatcFresnel(new PBRMaterial("half", scene), build, { reflectivityMap: constant(scene, [1, 1, 1]) }));
 } catch (error) {

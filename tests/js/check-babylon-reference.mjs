@@ -144,6 +144,7 @@ try {
     out.images[key] = base64(await target.readPixels());
     // Frame time (--timing): the same frame drawn again, finished by reading a pixel back.
     if (withLights && config.timing?.kind && key.endsWith(config.timing.kind)) {
+      out.timedDraws = (out.timedDraws ?? 0) + 1;
       for (let i = 0; i < config.timing.frames; ++i) target.render();
       await target.readPixels(0, 0, null, true, false, 0, 0, 1, 1);
     }
@@ -249,6 +250,10 @@ try {
     const ours = useMatcFresnel(new PBRMaterial("matc", scene), build, { material: await build.loadMaterial(material.name) });
     ours.roughness = material.roughness;
     await draw(material.name + " matc", ours, true);
+    const engineLtc = useMatcFresnel(new PBRMaterial("matc-engine-ltc", scene), build,
+                                     { material: await build.loadMaterial(material.name) }, { areaLights: "engine" });
+    engineLtc.roughness = material.roughness;
+    await draw(material.name + " matc-engine-ltc", engineLtc, true);
   }
 } catch (error) {
   out.errors.push(String(error.stack || error));

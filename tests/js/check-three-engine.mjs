@@ -114,6 +114,8 @@ try {
       THREE.ShaderChunk.lights_physical_pars_fragment = original;
     }
   });
+  await failure("unknown_area_light_option", () =>
+    useMatcFresnel(new THREE.MeshPhysicalMaterial(), build, sources.beryllium, { areaLights: "fast" }));
   await failure("textured_without_edge_tint", () =>
     useMatcFresnel(new THREE.MeshPhysicalMaterial(), build, { reflectivityMap: constant([1, 1, 1]) }));
 } catch (error) {

@@ -73,6 +73,7 @@ try {
     // Frame time (--timing): the same frame drawn again, finished by reading a pixel back; timed
     // from outside, as the page's clock is virtual.
     if (withLights && config.timing?.kind && key.endsWith(config.timing.kind)) {
+      out.timedDraws = (out.timedDraws ?? 0) + 1;
       for (let i = 0; i < config.timing.frames; ++i) renderer.render(world, camera);
       renderer.readRenderTargetPixels(target, 0, 0, 1, 1, new Float32Array(4));
     }
@@ -135,6 +136,9 @@ try {
     const ours = useMatcFresnel(new THREE.MeshPhysicalMaterial({ roughness: material.roughness }), build,
                                 { material: await build.loadMaterial(material.name) });
     draw(material.name + " matc", ours, true);
+    const engineLtc = useMatcFresnel(new THREE.MeshPhysicalMaterial({ roughness: material.roughness }), build,
+                                     { material: await build.loadMaterial(material.name) }, { areaLights: "engine" });
+    draw(material.name + " matc-engine-ltc", engineLtc, true);
   }
 } catch (error) {
   out.errors.push(String(error.stack || error));

@@ -182,6 +182,7 @@ export const kFailures = {
   unknown_material: "is unobtainium one of this build's materials",
   engine_changed: "changed (0 matches for the text the patch",
   textured_without_edge_tint: "needs both reflectivityMap and edgeTintMap",
+  unknown_area_light_option: 'areaLights: "fast"; allowed: "matc", "engine"',
 };
 
 export function checkFailures(failures) {

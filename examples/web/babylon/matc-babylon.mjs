@@ -101,9 +101,13 @@ const kPatches = [
     source: "lightFragment",
     anchor: "info.specular=computeAreaSpecularLighting(preInfo,light{X}.vLightSpecular.rgb,clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90);",
     regex: "info\\.specular=computeAreaSpecularLighting\\(preInfo,light(\\d+)\\.vLightSpecular\\.rgb,clearcoatOut\\.specularEnvironmentR0,reflectivityOut\\.colorReflectanceF90\\);",
-    replacement: "info.specular=light$1.vLightSpecular.rgb*matc_rect_area_light(normalW,viewDirectionW,vPositionW,roughness," +
-                 "light$1.vLightData.xyz,light$1.vLightWidth.xyz,light$1.vLightHeight.xyz);",
-    what: "rect area lights: Babylon's LTC and its two-channel Fresnel become matc's LTC times sum_i c_i bbar_i",
+    replacement: "\n#ifdef MATC_ENGINE_LTC\n" +
+                 "info.specular=light$1.vLightSpecular.rgb*matc_fresnel_preintegrated(matc_c,matc_bbar)*preInfo.areaLightSpecular;\n" +
+                 "#else\n" +
+                 "info.specular=light$1.vLightSpecular.rgb*matc_rect_area_light(normalW,viewDirectionW,vPositionW,roughness," +
+                 "light$1.vLightData.xyz,light$1.vLightWidth.xyz,light$1.vLightHeight.xyz);\n#endif\n",
+    what: "rect area lights: Babylon's LTC and its two-channel Fresnel become matc's LTC times sum_i c_i bbar_i " +
+          "(with areaLights: \"engine\", Babylon's LTC shape times sum_i c_i bbar_i)",
   },
   {
     source: "pbrBlockReflectance",
@@ -150,7 +154,10 @@ export async function loadMatcBuild(url, scene) {
 // ---- The plugin. ----
 
 // Checks a build and a source of coefficients against Babylon's shaders; what the plugin keeps.
-function preparePlugin(build, source) {
+function preparePlugin(build, source, areaLights) {
+  if (!["matc", "engine"].includes(areaLights)) {
+    throw new MatcWebError(`areaLights: "${areaLights}"; allowed: "matc", "engine"`);
+  }
   if (!build || typeof build.library !== "string" || !build.lut) {
     throw new MatcWebError("useMatcFresnel needs the result of loadMatcBuild");
   }
@@ -162,7 +169,7 @@ function preparePlugin(build, source) {
   checkAnchors(`@babylonjs/core ${version}`, shaderSources(), kPatches, tested);
   const kind = sourceKind(build, source);
   const colour = (value) => new Vector3(...(Array.isArray(value) ? value : [value ?? 1, value ?? 1, value ?? 1]));
-  return { build, source, kind, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
+  return { build, source, kind, areaLights, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
            coefficients: kind === "material" ? source.material.coefficients.map((row) => new Vector4(...row)) : null };
 }
 
@@ -173,12 +180,12 @@ let pendingPlugin = null;
 export class MatcFresnelPlugin extends MaterialPluginBase {
   // source: { material } (build.loadMaterial), { reflectivityMap, edgeTintMap, reflectivity?,
   // edgeTint? } (through the coefficient table) or { baked: { c2Map, c3Map, f0Map? } }.
-  constructor(material, build, source) {
-    pendingPlugin = preparePlugin(build, source);
+  constructor(material, build, source, areaLights = "matc") {
+    pendingPlugin = preparePlugin(build, source, areaLights);
     try {
       super(material, "MatcFresnel", 200,
             { MATC_FRESNEL: false, MATC_SOURCE_UNIFORM: false, MATC_SOURCE_TABLE: false,
-              MATC_SOURCE_BAKED: false, MATC_BAKED_F0: false });
+              MATC_SOURCE_BAKED: false, MATC_BAKED_F0: false, MATC_ENGINE_LTC: false });
       Object.assign(this, pendingPlugin);
     } finally {
       pendingPlugin = null;
@@ -200,6 +207,7 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
     defines.MATC_SOURCE_TABLE = this.kind === "table";
     defines.MATC_SOURCE_BAKED = this.kind === "baked";
     defines.MATC_BAKED_F0 = this.kind === "baked" && Boolean(this.source.baked.f0Map);
+    defines.MATC_ENGINE_LTC = this.areaLights === "engine";
     if (this.kind !== "material") {
       defines._needUVs = true;
       defines.MAINUV1 = true;
@@ -262,15 +270,17 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
 }
 
 // Makes `material` (a PBRMaterial) a matc metal: metallic 1, its Fresnel in every light path from
-// `source`. Returns the material; its plugin is material.matcFresnel.
-export function useMatcFresnel(material, build, source) {
+// `source`. Returns the material; its plugin is material.matcFresnel. options.areaLights: "matc"
+// (default: matc's LTC table and horizon-clipped integral) or "engine" (Babylon's LTC shape with
+// matc's Fresnel: cheaper; needs Babylon's LTC tables).
+export function useMatcFresnel(material, build, source, { areaLights = "matc" } = {}) {
   if (!material?.getClassName || !["PBRMaterial"].includes(material.getClassName())) {
     throw new MatcWebError("useMatcFresnel takes a Babylon.js PBRMaterial");
   }
   if (material.iridescence?.isEnabled) {
     throw new MatcWebError("iridescence replaces the base Fresnel; it cannot be combined with matc's");
   }
-  material.matcFresnel = new MatcFresnelPlugin(material, build, source);
+  material.matcFresnel = new MatcFresnelPlugin(material, build, source, areaLights);
   material.metallic = 1;
   material.metallicTexture = null;
   return material;

@@ -110,12 +110,17 @@ export const kPatches = [
     anchor: "\t\treflectedLight.directSpecular += lightColor * fresnel * LTC_Evaluate( normal, viewDir, " +
             "position, mInv, rectCoords );\n",
     replacement: () =>
+      "#ifdef MATC_ENGINE_LTC\n" +
+      "\t\treflectedLight.directSpecular += lightColor * matc_fresnel_preintegrated( matc_c, matc_bbar ) * LTC_Evaluate( normal, viewDir, position, mInv, rectCoords );\n" +
+      "#else\n" +
       "\t\tvec4 matc_ltc_texel = texture2D( matc_ltc, matc_ltc_texcoord( saturate( dot( normal, viewDir ) ), roughness ) );\n" +
       "\t\tbool matc_lit = dot( cross( rectCoords[ 1 ] - rectCoords[ 0 ], rectCoords[ 3 ] - rectCoords[ 0 ] ), position - rectCoords[ 0 ] ) >= 0.0;\n" +
       "\t\tif ( matc_lit ) reflectedLight.directSpecular += lightColor * matc_ltc_quad_light( matc_c, matc_bbar, matc_ltc_texel, " +
-      "normal, viewDir, position, rectCoords[ 0 ], rectCoords[ 1 ], rectCoords[ 2 ], rectCoords[ 3 ] );\n",
+      "normal, viewDir, position, rectCoords[ 0 ], rectCoords[ 1 ], rectCoords[ 2 ], rectCoords[ 3 ] );\n" +
+      "#endif\n",
     what: "rect area lights: Hill's two-channel LTC Fresnel and the LTC_1 shape become matc's LTC " +
-          "(matc_ltc) times sum_i c_i bbar_i; one-sided like three's",
+          "(matc_ltc) times sum_i c_i bbar_i, one-sided like three's; with areaLights: \"engine\", " +
+          "three's LTC_1 shape times sum_i c_i bbar_i",
   },
   {
     chunk: "lights_fragment_begin",
@@ -213,7 +218,13 @@ function sourceUniforms(build, source) {
 // Makes `material` (MeshStandardMaterial or MeshPhysicalMaterial) a matc metal: metalness 1, its
 // Fresnel in every light path from `source` (see sourceUniforms). Returns the material; its
 // userData.matc.uniforms can be changed later (e.g. another compiled material's coefficients).
-export function useMatcFresnel(material, build, source) {
+// options.areaLights: "matc" (default: matc's LTC table and horizon-clipped integral, checked
+// against the CPU runtime) or "engine" (three's LTC shape with matc's Fresnel: cheaper;
+// docs/web-engines.md measures both).
+export function useMatcFresnel(material, build, source, { areaLights = "matc" } = {}) {
+  if (!["matc", "engine"].includes(areaLights)) {
+    throw new MatcWebError(`areaLights: "${areaLights}"; allowed: "matc", "engine"`);
+  }
   checkBuild(build);
   if (!material?.isMeshStandardMaterial) {
     throw new MatcWebError("useMatcFresnel takes a MeshStandardMaterial or MeshPhysicalMaterial");
@@ -234,9 +245,10 @@ export function useMatcFresnel(material, build, source) {
   material.defines = { ...(material.defines ?? {}), [define]: "" };
   if (uv) material.defines.USE_UV = "";
   if (f0) material.defines.MATC_BAKED_F0 = "";
+  if (areaLights === "engine") material.defines.MATC_ENGINE_LTC = "";
   material.userData.matc = { uniforms, source };
   material.onBeforeCompile = (shader) => {
-    if (!build.ltc && shader.numRectAreaLights > 0) {
+    if (!build.ltc && areaLights === "matc" && shader.numRectAreaLights > 0) {
       throw new MatcWebError(`${build.url}: rect area lights need matc's LTC table; compile with --emit ltc`);
     }
     for (const [name, text] of Object.entries(chunks)) {
@@ -249,7 +261,7 @@ export function useMatcFresnel(material, build, source) {
     }
     Object.assign(shader.uniforms, uniforms);
   };
-  material.customProgramCacheKey = () => `matc:${define}:${build.url}`;
+  material.customProgramCacheKey = () => `matc:${define}:${areaLights}:${build.url}`;
   material.needsUpdate = true;
   return material;
 }
