@@ -49,6 +49,60 @@ export function checkAnchors(engine, sources, patches, tested) {
   }
 }
 
+// ---- The GLSL both integrations put into their engine's physical shader. ----
+
+// Declarations of the tables and the globals the patched light paths read; `uniforms` adds the
+// coefficient sources' vector uniforms (engines that bind them through a uniform block declare
+// those themselves).
+export function declarationsGlsl(library, { uniforms }) {
+  const vectors = uniforms ? "\tuniform vec4 matc_red;\n\tuniform vec4 matc_green;\n\tuniform vec4 matc_blue;\n" : "";
+  const colours = uniforms ? "\tuniform vec3 matc_reflectivity;\n\tuniform vec3 matc_edge_tint;\n" : "";
+  return `
+${library}
+uniform sampler2D matc_lut;
+uniform sampler2D matc_ltc;
+#if defined(MATC_SOURCE_TABLE)
+	uniform sampler2D matc_coefficient_table;
+	uniform sampler2D matc_reflectivity_map;
+	uniform sampler2D matc_edge_tint_map;
+${colours}#elif defined(MATC_SOURCE_BAKED)
+	uniform sampler2D matc_c2_map;
+	uniform sampler2D matc_c3_map;
+	#ifdef MATC_BAKED_F0
+		uniform sampler2D matc_f0_map;
+	#endif
+#else
+${vectors}#endif
+MatcFresnelCoefficients matc_c;  // this pixel's coefficients
+vec4 matc_bbar;                  // and its texel of matc_lut, set before the lights
+`;
+}
+
+// What the engine's main() computes before its lights: the pixel's coefficients (MATC_SOURCE_*
+// says from where; maps at texture coordinate `uv`, F0 of baked metals without an F0 map from
+// `baseColour`) and matc_lut's texel at (`ndotv`, `roughness`), all GLSL expressions of the engine.
+export function pixelSetupGlsl({ uv, baseColour, ndotv, roughness }) {
+  return `
+#if defined(MATC_SOURCE_TABLE)
+	{
+		vec3 matc_r = texture(matc_reflectivity_map, ${uv}).rgb * matc_reflectivity;
+		vec3 matc_g = texture(matc_edge_tint_map, ${uv}).rgb * matc_edge_tint;
+		matc_c = MATC_COEFFICIENTS_FROM_TABLE(matc_coefficient_table, matc_r, matc_g);
+	}
+#elif defined(MATC_SOURCE_BAKED)
+	#ifdef MATC_BAKED_F0
+		vec3 matc_f0 = texture(matc_f0_map, ${uv}).rgb;
+	#else
+		vec3 matc_f0 = ${baseColour};
+	#endif
+	matc_c = matc_coefficients_from_baked(matc_f0, texture(matc_c2_map, ${uv}).rgb, texture(matc_c3_map, ${uv}).rgb);
+#else
+	matc_c = MatcFresnelCoefficients(matc_red, matc_green, matc_blue);
+#endif
+	matc_bbar = texture(matc_lut, matc_lut_texcoord(${ndotv}, ${roughness}));
+`;
+}
+
 // ---- A matc build directory. ----
 
 async function fetchChecked(url, hint) {

@@ -18,6 +18,7 @@ export const kWebRoots = {
   "three-addons": join(here, "node_modules", "three", "examples", "jsm"),
   babylon: join(here, "node_modules", "@babylonjs", "core"),
   "ktx-parse": join(here, "node_modules", "ktx-parse", "dist"),
+  checks: here,  // the in-page helpers of these checks (page-bad-inputs.mjs)
 };
 export const kWebImportMap = JSON.stringify({
   imports: { three: "/three/three.module.js", "three/addons/": "/three-addons/",

@@ -6,16 +6,12 @@
 // `matc bake` result (tests/js/engine-probes.mjs has the scene and the CPU side). Then the inputs
 // that must fail, as for three.js, with a Babylon whose patched shader changed.
 //   node check-babylon-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
-import { mkdtempSync, readFileSync, rmSync } from "node:fs";
-import { tmpdir } from "node:os";
+import { readFileSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
-import { kWebImportMap, kWebRoots, runPage } from "./browser-page.mjs";
-import { checkFailures, compareProbes, expectedProbes, kPointLight, kProbeMaterials, kProbePixels,
-         kProbeSize, kTextured, prepareProbeBuilds, probeRenders } from "./engine-probes.mjs";
-import { check, finish } from "./report.mjs";
+import { kWebImportMap } from "./browser-page.mjs";
+import { kProbeSize, runProbeCheck } from "./engine-probes.mjs";
 
-const [matc, materialsDir, webDir] = process.argv.slice(2);
 // Babylon's RectAreaLight: a centre, its width along world x and height along world y; it lights
 // the side towards -z (Babylon's winding), here the plane below it.
 const kRectLight = { position: [-0.4, 0.3, 0.9], width: 0.8, height: 0.5, intensity: 2.0 };
@@ -45,10 +41,10 @@ import { RenderTargetTexture } from "@babylonjs/core/Materials/Textures/renderTa
 import { ShaderStore } from "@babylonjs/core/Engines/shaderStore.js";
 import { read as readKtx2 } from "ktx-parse";
 import { loadMatcBuild, useMatcFresnel } from "/web/babylon/matc-babylon.mjs";
+import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";
 const config = JSON.parse(document.getElementById("config").textContent);
-const out = { errors: [], renders: {}, failures: {}, consoleErrors: [] };
-const consoleError = console.error;
-console.error = (...args) => { out.consoleErrors.push(args.join(" ")); consoleError(...args); };
+const out = { errors: [], renders: {} };
+recordConsoleErrors(out);
 try {
   const canvas = document.createElement("canvas");
   canvas.width = canvas.height = ${kProbeSize};
@@ -137,34 +133,16 @@ try {
     scene.environmentTexture = null;
     for (const thing of made) thing.dispose();
   }
-  // Inputs that must fail: each must throw (and write to the console).
-  const failure = async (key, action) => {
-    const before = out.consoleErrors.length;
-    try {
-      await action();
-      out.failures[key] = { thrown: false };
-    } catch (error) {
-      out.failures[key] = { thrown: true, message: String(error.message), logged: out.consoleErrors.length > before };
-    }
-  };
-  await failure("missing_directory", () => loadMatcBuild("/nothing-here/", scene));
-  await failure("no_glsl_no_lut", () => loadMatcBuild("/json-only/", scene));
-  await failure("table_of_another_basis", () => loadMatcBuild("/mixed-table/", scene));
-  await failure("coefficients_of_another_basis", () => build.loadMaterial("beryllium_extended"));
-  await failure("unknown_material", () => build.loadMaterial("unobtainium"));
   const original = ShaderStore.IncludesShadersStore.lightFragment;
-  await failure("engine_changed", () => {
-    ShaderStore.IncludesShadersStore.lightFragment = original.replaceAll("fresnelSchlickGGX(preInfo.VdotH,", "fresnelSchlickGGX(saturate(preInfo.VdotH),");
-    try {
-      useMatcFresnel(new PBRMaterial("changed", scene), build, { material: materials.beryllium });
-    } finally {
-      ShaderStore.IncludesShadersStore.lightFragment = original;
-    }
-  });
-  await failure("unknown_area_light_option", () =>
-    useMatcFresnel(new PBRMaterial("option", scene), build, { material: materials.beryllium }, { areaLights: "fast" }));
-  await failure("textured_without_edge_tint", () =>
-    useMatcFresnel(new PBRMaterial("half", scene), build, { reflectivityMap: constant(scene, [1, 1, 1]) }));
+  await checkBadInputs(out, {
+    loadMatcBuild: (url) => loadMatcBuild(url, scene), build, material: materials.beryllium,
+    texture: constant(scene, [1, 1, 1]),
+    useMatc: (source, options) => useMatcFresnel(new PBRMaterial("refused", scene), build, source, options),
+    changeEngine: () => {
+      ShaderStore.IncludesShadersStore.lightFragment =
+          original.replaceAll("fresnelSchlickGGX(preInfo.VdotH,", "fresnelSchlickGGX(saturate(preInfo.VdotH),");
+      return () => { ShaderStore.IncludesShadersStore.lightFragment = original; };
+    } });
 } catch (error) {
   out.errors.push(String(error.stack || error));
 }
@@ -175,25 +153,9 @@ document.getElementById("result").textContent = JSON.stringify(out);
 const babylonVersion = () => JSON.parse(readFileSync(join(dirname(fileURLToPath(import.meta.url)), "node_modules",
                                                           "@babylonjs", "core", "package.json"), "utf8")).version;
 
-const dir = mkdtempSync(join(tmpdir(), "matc-babylon-engine-"));
-try {
-  const { out, roots } = prepareProbeBuilds(matc, materialsDir, dir);
-  const renders = probeRenders();
-  const config = { materials: kProbeMaterials, pixels: kProbePixels, renders, point: kPointLight,
-                   rect: kRectLight, textured: kTextured };
-  const result = await runPage({ html: kPage(config), roots: { ...kWebRoots, web: webDir, ...roots }, dir });
-  check(result.errors.length === 0, `Babylon.js: ${result.errors.join("\n")}`);
-  // Babylon's GGX alpha: roughness squared plus its minimum variance, 0.0005; its energy
-  // conservation scales area lights' specular too.
-  const expected = expectedProbes({ matc, materialsDir, out, alphaOf: (r) => r * r + 0.0005,
-                                    rect: { corners: rectCorners(kRectLight), intensity: kRectLight.intensity,
-                                            compensated: true } });
-  const worst = compareProbes(result.renders, expected);
-  const refused = checkFailures(result.failures);
-  console.log(`Babylon.js ${babylonVersion()} PBRMaterial with matc's Fresnel: ` +
-              `${Object.keys(expected).length} renders x ${kProbePixels.length} probes, largest difference ` +
-              `from the CPU runtime ${worst.toExponential(2)}; ${refused} bad inputs checked`);
-} finally {
-  rmSync(dir, { recursive: true, force: true });
-}
-finish();
+await runProbeCheck({
+  name: "Babylon.js", label: `Babylon.js ${babylonVersion()} PBRMaterial`, page: kPage,
+  alphaOf: (r) => r * r + 0.0005,  // Babylon's GGX alpha: roughness squared plus its minimum variance
+  // Babylon's energy conservation scales area lights' specular too.
+  rect: { light: kRectLight, corners: rectCorners(kRectLight), compensated: true },
+}, process.argv.slice(2));

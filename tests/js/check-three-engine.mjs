@@ -11,16 +11,10 @@
 // the files the integration needs, a table of another basis than the build or the coefficients,
 // and a three.js whose patched chunk changed; each must throw and write to the console.
 //   node check-three-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
-import { mkdtempSync, rmSync } from "node:fs";
-import { tmpdir } from "node:os";
-import { join } from "node:path";
-import { kWebImportMap, kWebRoots, runPage, threeVersion } from "./browser-page.mjs";
-import { checkFailures, compareProbes, expectedProbes, kPointLight, kProbeMaterials, kProbePixels,
-         kProbeSize, kTextured, prepareProbeBuilds, probeRenders } from "./engine-probes.mjs";
+import { kWebImportMap, threeVersion } from "./browser-page.mjs";
+import { kProbeSize, runProbeCheck } from "./engine-probes.mjs";
 import { rectLightGeometry } from "./engine-scene.mjs";
-import { check, finish } from "./report.mjs";
 
-const [matc, materialsDir, webDir] = process.argv.slice(2);
 // three.js's RectAreaLight looks at the origin from here (its corners: rectLightGeometry).
 const kRectLight = { position: [-0.4, 0.3, 0.9], width: 0.8, height: 0.5, intensity: 2.0 };
 
@@ -32,10 +26,10 @@ import * as THREE from "three";
 import { KTX2Loader } from "three/addons/loaders/KTX2Loader.js";
 import { RectAreaLightUniformsLib } from "three/addons/lights/RectAreaLightUniformsLib.js";
 import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three.mjs";
+import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";
 const config = JSON.parse(document.getElementById("config").textContent);
-const out = { errors: [], renders: {}, failures: {}, consoleErrors: [] };
-const consoleError = console.error;
-console.error = (...args) => { out.consoleErrors.push(args.join(" ")); consoleError(...args); };
+const out = { errors: [], renders: {} };
+recordConsoleErrors(out);
 try {
   const renderer = new THREE.WebGLRenderer({ canvas: document.createElement("canvas") });
   renderer.debug.onShaderError = (gl, program, vertex, fragment) =>
@@ -90,34 +84,15 @@ try {
     }
     out.renders[render.key] = pixels;
   }
-  // Inputs that must fail: each must throw (and write to the console).
-  const failure = async (key, action) => {
-    const before = out.consoleErrors.length;
-    try {
-      await action();
-      out.failures[key] = { thrown: false };
-    } catch (error) {
-      out.failures[key] = { thrown: true, message: String(error.message), logged: out.consoleErrors.length > before };
-    }
-  };
-  await failure("missing_directory", () => loadMatcBuild("/nothing-here/"));
-  await failure("no_glsl_no_lut", () => loadMatcBuild("/json-only/"));
-  await failure("table_of_another_basis", () => loadMatcBuild("/mixed-table/"));
-  await failure("coefficients_of_another_basis", () => build.loadMaterial("beryllium_extended"));
-  await failure("unknown_material", () => build.loadMaterial("unobtainium"));
   const original = THREE.ShaderChunk.lights_physical_pars_fragment;
-  await failure("engine_changed", () => {
-    THREE.ShaderChunk.lights_physical_pars_fragment = original.replaceAll("F_Schlick( f0, f90, dotVH )", "F_Schlick( f0, f90, saturate( dotVH ) )");
-    try {
-      useMatcFresnel(new THREE.MeshPhysicalMaterial(), build, sources.beryllium);
-    } finally {
-      THREE.ShaderChunk.lights_physical_pars_fragment = original;
-    }
-  });
-  await failure("unknown_area_light_option", () =>
-    useMatcFresnel(new THREE.MeshPhysicalMaterial(), build, sources.beryllium, { areaLights: "fast" }));
-  await failure("textured_without_edge_tint", () =>
-    useMatcFresnel(new THREE.MeshPhysicalMaterial(), build, { reflectivityMap: constant([1, 1, 1]) }));
+  await checkBadInputs(out, {
+    loadMatcBuild, build, material: sources.beryllium.material, texture: constant([1, 1, 1]),
+    useMatc: (source, options) => useMatcFresnel(new THREE.MeshPhysicalMaterial(), build, source, options),
+    changeEngine: () => {
+      THREE.ShaderChunk.lights_physical_pars_fragment =
+          original.replaceAll("F_Schlick( f0, f90, dotVH )", "F_Schlick( f0, f90, saturate( dotVH ) )");
+      return () => { THREE.ShaderChunk.lights_physical_pars_fragment = original; };
+    } });
 } catch (error) {
   out.errors.push(String(error.stack || error));
 }
@@ -125,24 +100,8 @@ document.getElementById("result").textContent = JSON.stringify(out);
 </script></body></html>
 `;
 
-const dir = mkdtempSync(join(tmpdir(), "matc-three-engine-"));
-try {
-  const { out, roots } = prepareProbeBuilds(matc, materialsDir, dir);
-  const renders = probeRenders();
-  const config = { materials: kProbeMaterials, pixels: kProbePixels, renders, point: kPointLight,
-                   rect: kRectLight, textured: kTextured };
-  const result = await runPage({ html: kPage(config), roots: { ...kWebRoots, web: webDir, ...roots }, dir });
-  check(result.errors.length === 0, `three.js: ${result.errors.join("\n")}`);
-  // three.js's GGX alpha: roughness clamped at 0.045, squared.
-  const expected = expectedProbes({ matc, materialsDir, out, alphaOf: (r) => Math.max(r, 0.045) ** 2,
-                                    rect: { corners: rectLightGeometry(kRectLight).corners,
-                                            intensity: kRectLight.intensity } });
-  const worst = compareProbes(result.renders, expected);
-  const refused = checkFailures(result.failures);
-  console.log(`three.js ${threeVersion()} MeshPhysicalMaterial with matc's Fresnel: ` +
-              `${Object.keys(expected).length} renders x ${kProbePixels.length} probes, largest difference ` +
-              `from the CPU runtime ${worst.toExponential(2)}; ${refused} bad inputs checked`);
-} finally {
-  rmSync(dir, { recursive: true, force: true });
-}
-finish();
+await runProbeCheck({
+  name: "three.js", label: `three.js ${threeVersion()} MeshPhysicalMaterial`, page: kPage,
+  alphaOf: (r) => Math.max(r, 0.045) ** 2,  // three.js's GGX alpha: roughness clamped at 0.045, squared
+  rect: { light: kRectLight, corners: rectLightGeometry(kRectLight).corners },
+}, process.argv.slice(2));

@@ -2,10 +2,11 @@
 // probe scene (a plane z = 0 seen from z = 1 with a 90 degree field of view into a 64 x 64 float
 // target), the builds they load (good ones and the ones that must fail), the CPU runtime's value
 // at each probe pixel for each light (`matc eval`), and the comparison.
-import { cpSync } from "node:fs";
+import { cpSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
 import { join } from "node:path";
-import { readFileSync } from "node:fs";
-import { check } from "./report.mjs";
+import { kWebRoots, runPage } from "./browser-page.mjs";
+import { check, finish } from "./report.mjs";
 import { compensatedFbar, kPreintegratedTolerance, run } from "./shader-cases.mjs";
 
 export const kProbeSize = 64;
@@ -194,4 +195,29 @@ export function checkFailures(failures) {
     check(failure.logged === true, `${key}: nothing written to the console`);
   }
   return Object.keys(kFailures).length;
+}
+
+// The whole check for one engine: builds, the page (engine.page(config) -> HTML, which renders
+// config.renders into out.renders and runs page-bad-inputs.mjs), the CPU side, the comparison.
+// engine: { name, page, alphaOf (its GGX alpha for a roughness), rect: { light (for the page),
+// corners (world space), compensated } }.
+export async function runProbeCheck(engine, [matc, materialsDir, webDir]) {
+  const dir = mkdtempSync(join(tmpdir(), "matc-engine-probes-"));
+  try {
+    const { out, roots } = prepareProbeBuilds(matc, materialsDir, dir);
+    const config = { materials: kProbeMaterials, pixels: kProbePixels, renders: probeRenders(), point: kPointLight,
+                     rect: engine.rect.light, textured: kTextured };
+    const result = await runPage({ html: engine.page(config), roots: { ...kWebRoots, web: webDir, ...roots }, dir });
+    check(result.errors.length === 0, `${engine.name}: ${result.errors.join("\n")}`);
+    const expected = expectedProbes({ matc, materialsDir, out, alphaOf: engine.alphaOf,
+                                      rect: { ...engine.rect, intensity: engine.rect.light.intensity } });
+    const worst = compareProbes(result.renders, expected);
+    const refused = checkFailures(result.failures ?? {});
+    console.log(`${engine.label} with matc's Fresnel: ${Object.keys(expected).length} renders x ` +
+                `${kProbePixels.length} probes, largest difference from the CPU runtime ` +
+                `${worst.toExponential(2)}; ${refused} bad inputs checked`);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+  finish();
 }

@@ -17,7 +17,8 @@ import { ShaderStore } from "@babylonjs/core/Engines/shaderStore.js";
 import { Vector3, Vector4 } from "@babylonjs/core/Maths/math.vector.js";
 import { AbstractEngine } from "@babylonjs/core/Engines/abstractEngine.js";
 import "@babylonjs/core/Shaders/pbr.fragment.js";  // registers the shader text the anchors are checked against
-import { MatcWebError, checkAnchors, loadMatcBuildFiles, sourceKind } from "../matc-build.mjs";
+import { MatcWebError, checkAnchors, declarationsGlsl, loadMatcBuildFiles, pixelSetupGlsl,
+         sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -26,45 +27,14 @@ export { MatcWebError };
 export const kTestedBabylonVersions = ["9.31.0"];
 
 // This pixel's coefficients and its texel of matc_lut at (NdotV, roughness) as Babylon shades them.
-const kPixelSetup = `
-#if defined(MATC_SOURCE_TABLE)
-	{
-		vec3 matc_r = texture2D(matc_reflectivity_map, vMainUV1).rgb * matc_reflectivity;
-		vec3 matc_g = texture2D(matc_edge_tint_map, vMainUV1).rgb * matc_edge_tint;
-		matc_c = MATC_COEFFICIENTS_FROM_TABLE(matc_coefficient_table, matc_r, matc_g);
-	}
-#elif defined(MATC_SOURCE_BAKED)
-	#ifdef MATC_BAKED_F0
-		vec3 matc_f0 = texture2D(matc_f0_map, vMainUV1).rgb;
-	#else
-		vec3 matc_f0 = surfaceAlbedo.rgb;
-	#endif
-	matc_c = matc_coefficients_from_baked(matc_f0, texture2D(matc_c2_map, vMainUV1).rgb, texture2D(matc_c3_map, vMainUV1).rgb);
-#else
-	matc_c = MatcFresnelCoefficients(matc_red, matc_green, matc_blue);
-#endif
-	matc_bbar = texture2D(matc_lut, matc_lut_texcoord(absEps(dot(normalW, viewDirectionW)), roughness));
-`;
+const kPixelSetup = pixelSetupGlsl({ uv: "vMainUV1", baseColour: "surfaceAlbedo.rgb", roughness: "roughness",
+                                     ndotv: "absEps(dot(normalW, viewDirectionW))" });
 
-// Declarations: the matc library, the tables, and the globals the patched light paths read.
+// Declarations: the matc library, the tables, the globals the patched light paths read (the
+// vector uniforms come through the plugin's uniform block), and the rect-area-light term.
 const kDeclarations = (library) => `
 #ifdef MATC_FRESNEL
-${library}
-uniform sampler2D matc_lut;
-uniform sampler2D matc_ltc;
-#if defined(MATC_SOURCE_TABLE)
-	uniform sampler2D matc_coefficient_table;
-	uniform sampler2D matc_reflectivity_map;
-	uniform sampler2D matc_edge_tint_map;
-#elif defined(MATC_SOURCE_BAKED)
-	uniform sampler2D matc_c2_map;
-	uniform sampler2D matc_c3_map;
-	#ifdef MATC_BAKED_F0
-		uniform sampler2D matc_f0_map;
-	#endif
-#endif
-MatcFresnelCoefficients matc_c;
-vec4 matc_bbar;
+${declarationsGlsl(library, { uniforms: false })}
 // A rect area light of Babylon's (centre, half width, half height; one-sided like Babylon's):
 // matc's LTC times sum_i c_i bbar_i, as matc_ltc_quad_light.
 vec3 matc_rect_area_light(vec3 N, vec3 V, vec3 P, float roughness, vec3 centre, vec3 halfWidth, vec3 halfHeight) {

@@ -10,7 +10,8 @@
 //   const gold = new THREE.MeshPhysicalMaterial({ roughness: 0.3 });
 //   useMatcFresnel(gold, build, { material: await build.loadMaterial("gold") });
 import * as THREE from "three";
-import { MatcWebError, anchorPattern, checkAnchors, loadMatcBuildFiles, sourceKind } from "../matc-build.mjs";
+import { MatcWebError, anchorPattern, checkAnchors, declarationsGlsl, loadMatcBuildFiles, pixelSetupGlsl,
+         sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -21,15 +22,10 @@ export const kTestedThreeRevisions = ["187"];
 
 // ---- The patches: (chunk, anchor, replacement), each anchor found exactly once. ----
 
-// Appended to lights_physical_pars_fragment's declarations: the matc library and what the patched
-// light paths read (this pixel's coefficients and preintegrated basis, set in main()).
-const kDeclarations = (library) => `
-${library}
-uniform sampler2D matc_lut;
-uniform sampler2D matc_ltc;
-MatcFresnelCoefficients matc_c;
-vec4 matc_bbar;
-
+// Appended to lights_physical_pars_fragment's declarations: the matc library, the tables and
+// what the patched light paths read (this pixel's coefficients and preintegrated basis, set in
+// main()), and the image-lighting term.
+const kDeclarations = (library) => `${declarationsGlsl(library, { uniforms: true })}
 // Image lighting: the preintegrated Fresnel sum_i c_i bbar_i with matc's multiple scattering
 // (Turquin's 1 + F0 (1 - E) / E, E = bbar_0), as the CPU runtime computes it.
 void matc_image_lighting( inout vec3 singleScatter, inout vec3 multiScatter ) {
@@ -37,50 +33,10 @@ void matc_image_lighting( inout vec3 singleScatter, inout vec3 multiScatter ) {
 }
 `;
 
-// What main() computes before the lights: the coefficients of this pixel (MATC_SOURCE_* picks
-// where from) and the preintegrated table's texel at (NdotV, roughness) as the engine sees them.
-const kPixelSetup = `
-#if defined( MATC_SOURCE_TABLE )
-	{
-		vec3 matc_r = texture2D( matc_reflectivity_map, vUv ).rgb * matc_reflectivity;
-		vec3 matc_g = texture2D( matc_edge_tint_map, vUv ).rgb * matc_edge_tint;
-		matc_c = MATC_COEFFICIENTS_FROM_TABLE( matc_coefficient_table, matc_r, matc_g );
-	}
-#elif defined( MATC_SOURCE_BAKED )
-	#ifdef MATC_BAKED_F0
-		vec3 matc_f0 = texture2D( matc_f0_map, vUv ).rgb;
-	#else
-		vec3 matc_f0 = diffuseColor.rgb;
-	#endif
-	matc_c = matc_coefficients_from_baked( matc_f0, texture2D( matc_c2_map, vUv ).rgb, texture2D( matc_c3_map, vUv ).rgb );
-#else
-	matc_c = MatcFresnelCoefficients( matc_red, matc_green, matc_blue );
-#endif
-	{
-		vec3 matc_view = isOrthographic ? vec3( 0.0, 0.0, 1.0 ) : normalize( vViewPosition );
-		matc_bbar = texture2D( matc_lut, matc_lut_texcoord( saturate( dot( normal, matc_view ) ), material.roughness ) );
-	}
-`;
-
-const kSourceUniforms = `
-#if defined( MATC_SOURCE_TABLE )
-	uniform sampler2D matc_coefficient_table;
-	uniform sampler2D matc_reflectivity_map;
-	uniform sampler2D matc_edge_tint_map;
-	uniform vec3 matc_reflectivity;
-	uniform vec3 matc_edge_tint;
-#elif defined( MATC_SOURCE_BAKED )
-	uniform sampler2D matc_c2_map;
-	uniform sampler2D matc_c3_map;
-	#ifdef MATC_BAKED_F0
-		uniform sampler2D matc_f0_map;
-	#endif
-#else
-	uniform vec4 matc_red;
-	uniform vec4 matc_green;
-	uniform vec4 matc_blue;
-#endif
-`;
+// What main() computes before the lights, as three.js sees the pixel.
+const kPixelSetup = pixelSetupGlsl({
+  uv: "vUv", baseColour: "diffuseColor.rgb", roughness: "material.roughness",
+  ndotv: "saturate( dot( normal, isOrthographic ? vec3( 0.0, 0.0, 1.0 ) : normalize( vViewPosition ) ) )" });
 
 // Each patch: the chunk, the exact text it replaces (found once, or the chunk changed), the text
 // put there, and what it means (docs/web-engines.md lists these).
@@ -88,7 +44,7 @@ export const kPatches = [
   {
     chunk: "lights_physical_pars_fragment",
     anchor: "uniform sampler2D dfgLUT;\n",
-    replacement: (library) => `uniform sampler2D dfgLUT;\n${kSourceUniforms}${kDeclarations(library)}`,
+    replacement: (library) => `uniform sampler2D dfgLUT;\n${kDeclarations(library)}`,
     what: "declarations: matc_fresnel.glsl, the tables, this pixel's coefficients",
   },
   {

@@ -1,0 +1,37 @@
+// Runs in the engine pages (served as /checks/page-bad-inputs.mjs): the inputs an integration must
+// refuse, each recorded as { thrown, message, logged } in out.failures for engine-probes.mjs's
+// checkFailures. The engine page says how to load a build, make a matc material from a source,
+// and change the engine's shader text (returning a function that restores it).
+export function recordConsoleErrors(out) {
+  out.consoleErrors = [];
+  const consoleError = console.error;
+  console.error = (...args) => { out.consoleErrors.push(args.join(" ")); consoleError(...args); };
+}
+
+export async function checkBadInputs(out, { loadMatcBuild, build, material, useMatc, changeEngine, texture }) {
+  out.failures = {};
+  const failure = async (key, action) => {
+    const before = out.consoleErrors.length;
+    try {
+      await action();
+      out.failures[key] = { thrown: false };
+    } catch (error) {
+      out.failures[key] = { thrown: true, message: String(error.message), logged: out.consoleErrors.length > before };
+    }
+  };
+  await failure("missing_directory", () => loadMatcBuild("/nothing-here/"));
+  await failure("no_glsl_no_lut", () => loadMatcBuild("/json-only/"));
+  await failure("table_of_another_basis", () => loadMatcBuild("/mixed-table/"));
+  await failure("coefficients_of_another_basis", () => build.loadMaterial("beryllium_extended"));
+  await failure("unknown_material", () => build.loadMaterial("unobtainium"));
+  await failure("engine_changed", () => {
+    const restore = changeEngine();
+    try {
+      useMatc({ material });
+    } finally {
+      restore();
+    }
+  });
+  await failure("unknown_area_light_option", () => useMatc({ material }, { areaLights: "fast" }));
+  await failure("textured_without_edge_tint", () => useMatc({ reflectivityMap: texture }));
+}
