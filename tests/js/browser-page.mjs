@@ -26,6 +26,27 @@ export const kWebImportMap = JSON.stringify({
 export const threeVersion = () =>
   JSON.parse(readFileSync(join(here, "node_modules", "three", "package.json"), "utf8")).version;
 
+// A page that runs one ES module: `head` (imports, top-level helpers), then `body` with `config`
+// (the JSON given here) and `out` ({ errors }, what the page reports) in scope; an exception ends
+// up in out.errors, and out is written where runPage reads it.
+export function modulePage(config, { head, body }) {
+  return `<!doctype html><html><body><pre id="result">not run</pre>
+<script type="application/json" id="config">${JSON.stringify(config)}</script>
+<script type="importmap">${kWebImportMap}</script>
+<script type="module">
+${head}
+const config = JSON.parse(document.getElementById("config").textContent);
+const out = { errors: [] };
+try {
+${body}
+} catch (error) {
+  out.errors.push(String(error.stack || error));
+}
+document.getElementById("result").textContent = JSON.stringify(out);
+</script></body></html>
+`;
+}
+
 const kTypes = { js: "text/javascript", mjs: "text/javascript", json: "application/json",
                  html: "text/html", glsl: "text/plain" };
 

@@ -9,7 +9,7 @@
 import { readFileSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
-import { kWebImportMap } from "./browser-page.mjs";
+import { modulePage } from "./browser-page.mjs";
 import { kProbeSize, runProbeCheck } from "./engine-probes.mjs";
 
 // Babylon's RectAreaLight: a centre, its width along world x and height along world y; it lights
@@ -20,11 +20,8 @@ const rectCorners = ({ position: [x, y, z], width, height }) => {
   return [[x + w, y - h, z], [x - w, y - h, z], [x - w, y + h, z], [x + w, y + h, z]];
 };
 
-const kPage = (config) => `<!doctype html><html><body><pre id="result">not run</pre>
-<script type="application/json" id="config">${JSON.stringify(config)}</script>
-<script type="importmap">${kWebImportMap}</script>
-<script type="module">
-import { Engine } from "@babylonjs/core/Engines/engine.js";
+const kPage = (config) => modulePage(config, {
+  head: `import { Engine } from "@babylonjs/core/Engines/engine.js";
 import { Constants } from "@babylonjs/core/Engines/constants.js";
 import { Scene } from "@babylonjs/core/scene.js";
 import { FreeCamera } from "@babylonjs/core/Cameras/freeCamera.js";
@@ -42,10 +39,10 @@ import { ShaderStore } from "@babylonjs/core/Engines/shaderStore.js";
 import { read as readKtx2 } from "ktx-parse";
 import { loadMatcBuild, useMatcFresnel } from "/web/babylon/matc-babylon.mjs";
 import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";
-const config = JSON.parse(document.getElementById("config").textContent);
-const out = { errors: [], renders: {} };
-recordConsoleErrors(out);
-try {
+`,
+  body: `
+  out.renders = {};
+  recordConsoleErrors(out);
   const canvas = document.createElement("canvas");
   canvas.width = canvas.height = ${kProbeSize};
   const engine = new Engine(canvas, false, { preserveDrawingBuffer: true });
@@ -143,12 +140,8 @@ try {
           original.replaceAll("fresnelSchlickGGX(preInfo.VdotH,", "fresnelSchlickGGX(saturate(preInfo.VdotH),");
       return () => { ShaderStore.IncludesShadersStore.lightFragment = original; };
     } });
-} catch (error) {
-  out.errors.push(String(error.stack || error));
-}
-document.getElementById("result").textContent = JSON.stringify(out);
-</script></body></html>
-`;
+`,
+});
 
 const babylonVersion = () => JSON.parse(readFileSync(join(dirname(fileURLToPath(import.meta.url)), "node_modules",
                                                           "@babylonjs", "core", "package.json"), "utf8")).version;

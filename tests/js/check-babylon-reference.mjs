@@ -14,7 +14,7 @@ import { mkdirSync, readFileSync, writeFileSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
 import { RectAreaLightTexturesLib } from "three/addons/lights/RectAreaLightTexturesLib.js";
-import { kWebImportMap } from "./browser-page.mjs";
+import { modulePage } from "./browser-page.mjs";
 import { runReferenceComparison } from "./engine-reference.mjs";
 import { environmentCubeFaces, environmentRadiance } from "./engine-scene.mjs";
 
@@ -36,11 +36,8 @@ void main() {
   gl_Position = viewProjection * p;
 }`;
 
-const kPage = (config) => `<!doctype html><html><body><pre id="result">not run</pre>
-<script type="application/json" id="config">${JSON.stringify(config)}</script>
-<script type="importmap">${kWebImportMap}</script>
-<script type="module">
-import { Engine } from "@babylonjs/core/Engines/engine.js";
+const kPage = (config) => modulePage(config, {
+  head: `import { Engine } from "@babylonjs/core/Engines/engine.js";
 import { Constants } from "@babylonjs/core/Engines/constants.js";
 import { Scene } from "@babylonjs/core/scene.js";
 import { FreeCamera } from "@babylonjs/core/Cameras/freeCamera.js";
@@ -63,17 +60,17 @@ import { read as readKtx2 } from "ktx-parse";
 import { loadMatcBuild, useMatcFresnel } from "/web/babylon/matc-babylon.mjs";
 ${environmentRadiance.toString()}
 ${environmentCubeFaces.toString()}
-const config = JSON.parse(document.getElementById("config").textContent);
-const sceneConfig = config.scene;
-const size = sceneConfig.size;
-const out = { errors: [], images: {} };
-const base64 = (floats) => {
-  const bytes = new Uint8Array(floats.buffer, floats.byteOffset, floats.byteLength);
-  let binary = "";
-  for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
-  return btoa(binary);
-};
-try {
+`,
+  body: `
+  const sceneConfig = config.scene;
+  const size = sceneConfig.size;
+  out.images = {};
+  const base64 = (floats) => {
+    const bytes = new Uint8Array(floats.buffer, floats.byteOffset, floats.byteLength);
+    let binary = "";
+    for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+    return btoa(binary);
+  };
   Tools.AssetBaseUrl = location.origin + "/babylon-assets";
   const canvas = document.createElement("canvas");
   canvas.width = canvas.height = size;
@@ -255,12 +252,8 @@ try {
     engineLtc.roughness = material.roughness;
     await draw(material.name + " matc-engine-ltc", engineLtc, true);
   }
-} catch (error) {
-  out.errors.push(String(error.stack || error));
-}
-document.getElementById("result").textContent = JSON.stringify(out);
-</script></body></html>
-`;
+`,
+});
 
 // Heitz et al.'s LTC tables in Babylon's areaLightsLTC.bin layout (per texel: LTC1 then LTC2,
 // half floats), from three.js's copy.

@@ -11,26 +11,23 @@
 // the files the integration needs, a table of another basis than the build or the coefficients,
 // and a three.js whose patched chunk changed; each must throw and write to the console.
 //   node check-three-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
-import { kWebImportMap, threeVersion } from "./browser-page.mjs";
+import { modulePage, threeVersion } from "./browser-page.mjs";
 import { kProbeSize, runProbeCheck } from "./engine-probes.mjs";
 import { rectLightGeometry } from "./engine-scene.mjs";
 
 // three.js's RectAreaLight looks at the origin from here (its corners: rectLightGeometry).
 const kRectLight = { position: [-0.4, 0.3, 0.9], width: 0.8, height: 0.5, intensity: 2.0 };
 
-const kPage = (config) => `<!doctype html><html><body><pre id="result">not run</pre>
-<script type="application/json" id="config">${JSON.stringify(config)}</script>
-<script type="importmap">${kWebImportMap}</script>
-<script type="module">
-import * as THREE from "three";
+const kPage = (config) => modulePage(config, {
+  head: `import * as THREE from "three";
 import { KTX2Loader } from "three/addons/loaders/KTX2Loader.js";
 import { RectAreaLightUniformsLib } from "three/addons/lights/RectAreaLightUniformsLib.js";
 import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three.mjs";
 import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";
-const config = JSON.parse(document.getElementById("config").textContent);
-const out = { errors: [], renders: {} };
-recordConsoleErrors(out);
-try {
+`,
+  body: `
+  out.renders = {};
+  recordConsoleErrors(out);
   const renderer = new THREE.WebGLRenderer({ canvas: document.createElement("canvas") });
   renderer.debug.onShaderError = (gl, program, vertex, fragment) =>
     out.errors.push(gl.getShaderInfoLog(fragment) || gl.getShaderInfoLog(vertex) || gl.getProgramInfoLog(program));
@@ -93,12 +90,8 @@ try {
           original.replaceAll("F_Schlick( f0, f90, dotVH )", "F_Schlick( f0, f90, saturate( dotVH ) )");
       return () => { THREE.ShaderChunk.lights_physical_pars_fragment = original; };
     } });
-} catch (error) {
-  out.errors.push(String(error.stack || error));
-}
-document.getElementById("result").textContent = JSON.stringify(out);
-</script></body></html>
-`;
+`,
+});
 
 await runProbeCheck({
   name: "three.js", label: `three.js ${threeVersion()} MeshPhysicalMaterial`, page: kPage,

@@ -6,30 +6,27 @@
 // what each must show are in tests/js/engine-reference.mjs.
 //   node check-three-reference.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR MATC_EXAMPLE_MAPS
 //        EXAMPLES_TEXTURED_DIR [--markdown] [--images DIR] [--size N] [--lights PATH] [--timing]
-import { kWebImportMap, threeVersion } from "./browser-page.mjs";
+import { modulePage, threeVersion } from "./browser-page.mjs";
 import { runReferenceComparison } from "./engine-reference.mjs";
 import { environmentRadiance, environmentTexels } from "./engine-scene.mjs";
 
-const kPage = (config) => `<!doctype html><html><body><pre id="result">not run</pre>
-<script type="application/json" id="config">${JSON.stringify(config)}</script>
-<script type="importmap">${kWebImportMap}</script>
-<script type="module">
-import * as THREE from "three";
+const kPage = (config) => modulePage(config, {
+  head: `import * as THREE from "three";
 import { RectAreaLightUniformsLib } from "three/addons/lights/RectAreaLightUniformsLib.js";
 import { KTX2Loader } from "three/addons/loaders/KTX2Loader.js";
 import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three.mjs";
 ${environmentRadiance.toString()}
 ${environmentTexels.toString()}
-const config = JSON.parse(document.getElementById("config").textContent);
-const scene = config.scene;
-const out = { errors: [], images: {} };
-const base64 = (floats) => {
-  const bytes = new Uint8Array(floats.buffer);
-  let binary = "";
-  for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
-  return btoa(binary);
-};
-try {
+`,
+  body: `
+  const scene = config.scene;
+  out.images = {};
+  const base64 = (floats) => {
+    const bytes = new Uint8Array(floats.buffer);
+    let binary = "";
+    for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+    return btoa(binary);
+  };
   const renderer = new THREE.WebGLRenderer({ canvas: document.createElement("canvas") });
   renderer.debug.onShaderError = (gl, program, vertex, fragment) =>
     out.errors.push(gl.getShaderInfoLog(fragment) || gl.getShaderInfoLog(vertex) || gl.getProgramInfoLog(program));
@@ -140,12 +137,8 @@ try {
                                      { material: await build.loadMaterial(material.name) }, { areaLights: "engine" });
     draw(material.name + " matc-engine-ltc", engineLtc, true);
   }
-} catch (error) {
-  out.errors.push(String(error.stack || error));
-}
-document.getElementById("result").textContent = JSON.stringify(out);
-</script></body></html>
-`;
+`,
+});
 
 
 await runReferenceComparison({ name: "three.js", prefix: "three", page: kPage,
