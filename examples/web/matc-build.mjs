@@ -172,7 +172,8 @@ async function loadTable(url, entry, channels) {
 
 // Reads a matc build directory (`matc -o DIR`, with glsl, json and lut among --emit; ltc for area
 // lights, coefficient-table for textured metals) and checks its parts belong together.
-export async function loadMatcBuildFiles(url) {
+// `language`: the shader library to read, "glsl" (matc_fresnel.glsl, WebGL) or "wgsl" (WebGPU).
+export async function loadMatcBuildFiles(url, { language = "glsl" } = {}) {
   const base = new URL(url.endsWith("/") ? url : `${url}/`, globalThis.location?.href);
   const at = (file) => new URL(file, base).href;
   const manifestUrl = at("matc_manifest.json");
@@ -181,14 +182,14 @@ export async function loadMatcBuildFiles(url) {
     throw new MatcWebError(`${manifestUrl}: written by matc ${manifest.matc_version}; this integration reads matc ${kMatcVersion}`);
   }
   const emitted = new Set(manifest.emit ?? []);
-  for (const [needed, why] of [["glsl", "the shader library"], ["lut", "the preintegrated table"],
+  for (const [needed, why] of [[language, "the shader library"], ["lut", "the preintegrated table"],
                                ["json", "the materials' coefficients"]]) {
     if (!emitted.has(needed)) {
       throw new MatcWebError(`${manifestUrl}: the build has no ${needed} output (${why}); compile with ` +
                              `--emit ${needed} among the outputs`);
     }
   }
-  const library = await (await fetchChecked(at("matc_fresnel.glsl"), "compile with --emit glsl")).text();
+  const library = await (await fetchChecked(at(`matc_fresnel.${language}`), `compile with --emit ${language}`)).text();
   const sidecar = await fetchJson(at(`${manifest.lut.file}.json`), "compile with --emit lut");
   if (sidecar.basis !== manifest.basis || sidecar.matc_version !== manifest.matc_version) {
     throw new MatcWebError(`${at(manifest.lut.file)}: a table of basis ${sidecar.basis} from matc ` +

@@ -21,7 +21,8 @@ export const kWebRoots = {
   checks: here,  // the in-page helpers of these checks (page-bad-inputs.mjs)
 };
 export const kWebImportMap = JSON.stringify({
-  imports: { three: "/three/three.module.js", "three/addons/": "/three-addons/",
+  imports: { three: "/three/three.module.js", "three/webgpu": "/three/three.webgpu.js",
+             "three/tsl": "/three/three.tsl.js", "three/addons/": "/three-addons/",
              "@babylonjs/core/": "/babylon/", "ktx-parse": "/ktx-parse/index.mjs" } });
 export const threeVersion = () =>
   JSON.parse(readFileSync(join(here, "node_modules", "three", "package.json"), "utf8")).version;
@@ -43,6 +44,7 @@ ${body}
   out.errors.push(String(error.stack || error));
 }
 document.getElementById("result").textContent = JSON.stringify(out);
+await fetch("/result", { method: "POST", body: JSON.stringify(out) }).catch(() => {});  // runPage's realTime mode
 </script></body></html>
 `;
 }
@@ -50,10 +52,25 @@ document.getElementById("result").textContent = JSON.stringify(out);
 const kTypes = { js: "text/javascript", mjs: "text/javascript", json: "application/json",
                  html: "text/html", glsl: "text/plain" };
 
-export async function runPage({ html, roots, dir, budgetMs = 120000 }) {
+// By default the page runs under Chromium's virtual time and its DOM is read when it is done.
+// realTime: the page runs on the wall clock and posts its result to /result (modulePage does), for
+// work virtual time does not settle (WebGPU's adapter and device); browserArgs: more Chromium flags.
+export async function runPage({ html, roots, dir, budgetMs = 120000, realTime = false, browserArgs = [] }) {
+  let posted = null;
+  let finished = () => {};
   const server = createServer((request, response) => {
     const path = decodeURIComponent(new URL(request.url, "http://localhost").pathname);
     const [, root, ...rest] = path.split("/");
+    if (request.method === "POST" && path === "/result") {
+      let body = "";
+      request.on("data", (chunk) => { body += chunk; });
+      request.on("end", () => {
+        posted = body;
+        response.writeHead(200).end();
+        finished();
+      });
+      return;
+    }
     try {
       if (path === "/page.html") {
         response.writeHead(200, { "content-type": "text/html" }).end(html);
@@ -77,20 +94,30 @@ export async function runPage({ html, roots, dir, budgetMs = 120000 }) {
     const dom = await new Promise((resolve, reject) => {
       const browser = spawn(chromiumPath(), [
         "--headless", "--no-sandbox", "--disable-dev-shm-usage", "--use-angle=swiftshader",
-        "--enable-unsafe-swiftshader", `--virtual-time-budget=${budgetMs}`,
+        "--enable-unsafe-swiftshader", ...(realTime ? [] : [`--virtual-time-budget=${budgetMs}`, "--dump-dom"]),
         // MATC_BROWSER_LOG=1 shows the page's console (and Chromium's own messages) on stderr.
         ...(process.env.MATC_BROWSER_LOG ? ["--enable-logging=stderr", "--v=0"] : []),
-        `--user-data-dir=${join(dir, "profile")}`, "--dump-dom", url]);
+        ...browserArgs, `--user-data-dir=${join(dir, "profile")}`, url]);
       let text = "";
       browser.stdout.on("data", (chunk) => { text += chunk; });
       if (process.env.MATC_BROWSER_LOG) browser.stderr.on("data", (chunk) => process.stderr.write(chunk));
       browser.on("error", reject);
       browser.on("close", () => resolve(text));
+      if (realTime) {
+        const timer = setTimeout(() => browser.kill(), budgetMs);
+        finished = () => { clearTimeout(timer); browser.kill(); };
+      }
     });
-    const match = dom.match(/<pre id="result">([^<]*)<\/pre>/);
-    if (match === null) throw new Error("the page wrote no result");
-    const text = match[1].replaceAll("&quot;", "\"").replaceAll("&lt;", "<").replaceAll("&gt;", ">")
-                         .replaceAll("&amp;", "&");
+    let text;
+    if (realTime) {
+      if (posted === null) throw new Error(`the page posted no result within ${budgetMs / 1000} s`);
+      text = posted;
+    } else {
+      const match = dom.match(/<pre id="result">([^<]*)<\/pre>/);
+      if (match === null) throw new Error("the page wrote no result");
+      text = match[1].replaceAll("&quot;", "\"").replaceAll("&lt;", "<").replaceAll("&gt;", ">")
+                     .replaceAll("&amp;", "&");
+    }
     try {
       return JSON.parse(text);
     } catch {

@@ -1,0 +1,163 @@
+// matc's Fresnel in three.js's WebGPURenderer: a MeshStandardNodeMaterial or
+// MeshPhysicalNodeMaterial whose lighting model is three's PhysicalLightingModel with matc's Fresnel
+// in punctual lights, image lighting (with matc's energy compensation) and rect area lights (three's
+// LTC shape times sum_i c_i bbar_i). The Fresnel is the WGSL library matc writes
+// (matc_fresnel.wgsl) called through wgslFn, so every basis works as compiled. Compiled
+// coefficients only, so far (textured and baked metals: matc-three.mjs on WebGLRenderer).
+//
+//   import { loadMatcBuild, useMatcFresnel } from "./matc-three-webgpu.mjs";
+//   const build = await loadMatcBuild("matc-out/");
+//   const gold = useMatcFresnel(new THREE.MeshPhysicalNodeMaterial({ roughness: 0.3 }), build,
+//                               { material: await build.loadMaterial("gold") });
+import * as THREE from "three/webgpu";
+import { BRDF_GGX, LTC_Evaluate, LTC_Uv, float, mat3, normalView, positionView, positionViewDirection,
+         roughness, texture, uniform, vec3, wgsl, wgslFn } from "three/tsl";
+import { MatcWebError, checkAnchors, loadMatcBuildFiles, sourceKind } from "../matc-build.mjs";
+
+export { MatcWebError };
+
+// The three.js revisions whose PhysicalLightingModel the subclass below was written against and
+// tested with (tests/js/check-three-webgpu-engine.mjs).
+export const kTestedThreeRevisions = ["187"];
+
+// What the subclass relies on in three's PhysicalLightingModel, checked in its methods' source
+// text: a three.js where one changed makes useMatcFresnel throw.
+const kOverrides = [
+  { source: "start", anchor: "this.multiScatteringCompensation =",
+    what: "punctual lights' multiple scattering: matc_energy_compensation instead of three's" },
+  { source: "start", anchor: "this.computeMultiscattering(",
+    what: "image lighting (dielectric layer): sum_i c_i bbar_i with matc's compensation" },
+  { source: "indirectSpecular", anchor: "this.computeMultiscattering( singleScatteringMetallic, multiScatteringMetallic,",
+    what: "image lighting (metal): sum_i c_i bbar_i with matc's compensation" },
+  { source: "direct", anchor: "direct( { lightDirection, lightColor, reflectedLight }",
+    what: "punctual lights: three's GGX with matc's F(v.h)" },
+  { source: "directRectArea", anchor: "directRectArea( { lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1",
+    what: "rect area lights: three's LTC shape times sum_i c_i bbar_i" },
+];
+
+function checkLightingModel() {
+  const prototype = THREE.PhysicalLightingModel?.prototype ?? {};
+  const sources = Object.fromEntries(kOverrides.map(({ source }) =>
+    [source, typeof prototype[source] === "function" ? prototype[source].toString() : undefined]));
+  if (!kTestedThreeRevisions.includes(THREE.REVISION)) {
+    console.warn(`matc: three.js r${THREE.REVISION} is untested with WebGPURenderer (tested: r` +
+                 `${kTestedThreeRevisions.join(", r")}); its lighting model still matches`);
+  }
+  checkAnchors(`three.js r${THREE.REVISION} (WebGPURenderer)`, sources, kOverrides,
+               `three.js r${kTestedThreeRevisions.join(", r")}`);
+}
+
+// Reads a matc build directory (`matc -o DIR`, with wgsl, json and lut among --emit).
+export async function loadMatcBuild(url) {
+  const files = await loadMatcBuildFiles(url, { language: "wgsl" });
+  const lut = new THREE.DataTexture(files.lut.data, files.lut.size, files.lut.size, THREE.RGBAFormat,
+                                    files.lut.half ? THREE.HalfFloatType : THREE.FloatType);
+  lut.minFilter = lut.magFilter = THREE.LinearFilter;
+  lut.wrapS = lut.wrapT = THREE.ClampToEdgeWrapping;
+  lut.generateMipmaps = false;
+  lut.colorSpace = THREE.NoColorSpace;
+  lut.needsUpdate = true;
+  // The library once, and the entry points the lighting model calls (coefficients as three rows).
+  const library = wgsl(files.library);
+  const rows = "red: vec4f, green: vec4f, blue: vec4f";
+  const coefficients = "MatcFresnelCoefficients(red, green, blue)";
+  const entry = (name, parameters, result, call) =>
+    wgslFn(`fn ${name}(${rows}, ${parameters}) -> ${result} { return ${call}; }`, [library]);
+  const functions = {
+    fresnel: entry("matc_three_fresnel", "mu: f32", "vec3f", `matc_fresnel(${coefficients}, mu)`),
+    preintegrated: entry("matc_three_preintegrated", "bbar: vec4f", "vec3f",
+                         `matc_fresnel_preintegrated(${coefficients}, bbar)`),
+    compensation: entry("matc_three_compensation", "bbar: vec4f", "vec3f",
+                        `matc_energy_compensation(${coefficients}, bbar)`),
+    lutTexcoord: wgslFn("fn matc_three_lut_texcoord(ndotv: f32, roughness: f32) -> vec2f { " +
+                        "return matc_lut_texcoord(ndotv, roughness); }", [library]),
+  };
+  return { ...files, lut, functions };
+}
+
+// three's physical lighting with matc's Fresnel; `matc` holds the coefficient rows (uniform nodes),
+// the table and the WGSL entry points.
+class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
+  constructor(matc, material) {
+    super(material.useClearcoat, material.useSheen, material.useIridescence, material.useAnisotropy,
+          material.useTransmission, material.useDispersion, material.useRetroreflection,
+          material.useDiffuseRoughness);
+    this.matc = matc;
+    // three's start() sets its own compensation and then runs the lights: reads get matc's.
+    Object.defineProperty(this, "multiScatteringCompensation", {
+      get: () => { this.matcTerms(); return this.matcCompensation; }, set: () => {} });
+  }
+
+  // This pixel's texel of matc_lut, its preintegrated Fresnel and energy compensation, once.
+  matcTerms() {
+    if (!this.matcBbar) {
+      const { rows, functions, lut } = this.matc;
+      const ndotv = normalView.dot(positionViewDirection).clamp();
+      this.matcBbar = texture(lut, functions.lutTexcoord({ ndotv, roughness })).toConst("matc_bbar");
+      this.matcCompensation = functions.compensation({ ...rows, bbar: this.matcBbar }).toConst("matc_compensation");
+      this.matcPreintegrated = functions.preintegrated({ ...rows, bbar: this.matcBbar }).toConst("matc_preintegrated");
+    }
+  }
+
+  // Image lighting: sum_i c_i bbar_i times matc's compensation (as the CPU runtime computes it).
+  computeMultiscattering(singleScatter) {
+    this.matcTerms();
+    singleScatter.addAssign(this.matcPreintegrated.mul(this.matcCompensation));
+  }
+
+  // Punctual lights: three's GGX with a unit Fresnel (f0 = f90 = 1) times matc's F(v.h).
+  direct({ lightDirection, lightColor, reflectedLight }) {
+    const dotNL = normalView.dot(lightDirection).clamp();
+    const halfDir = lightDirection.add(positionViewDirection).normalize();
+    const dotVH = positionViewDirection.dot(halfDir).clamp();
+    const ggx = BRDF_GGX({ lightDirection, f0: vec3(1), f90: float(1), roughness });
+    const fresnel = this.matc.functions.fresnel({ ...this.matc.rows, mu: dotVH });
+    reflectedLight.directSpecular.addAssign(
+        dotNL.mul(lightColor).mul(ggx).mul(fresnel).mul(this.multiScatteringCompensation));
+  }
+
+  // Rect area lights: three's LTC shape times sum_i c_i bbar_i.
+  directRectArea({ lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1 }) {
+    this.matcTerms();
+    const p0 = lightPosition.add(halfWidth).sub(halfHeight);
+    const p1 = lightPosition.sub(halfWidth).sub(halfHeight);
+    const p2 = lightPosition.sub(halfWidth).add(halfHeight);
+    const p3 = lightPosition.add(halfWidth).add(halfHeight);
+    const N = normalView;
+    const V = positionViewDirection;
+    const P = positionView.toVar();
+    const t1 = ltc_1.sample(LTC_Uv({ N, V, roughness })).toVar();
+    const mInv = mat3(vec3(t1.x, 0, t1.y), vec3(0, 1, 0), vec3(t1.z, 0, t1.w)).toVar();
+    reflectedLight.directSpecular.addAssign(
+        lightColor.mul(this.matcPreintegrated).mul(LTC_Evaluate({ N, V, P, mInv, p0, p1, p2, p3 })));
+  }
+}
+
+// Makes `material` (MeshStandardNodeMaterial or MeshPhysicalNodeMaterial) a matc metal with
+// `source` = { material } (build.loadMaterial). Returns the material; material.userData.matc.rows
+// holds the coefficient uniforms (their .value can change without recompiling).
+// options.areaLights: "engine" only (three's LTC shape with matc's Fresnel).
+export function useMatcFresnel(material, build, source, { areaLights = "engine" } = {}) {
+  if (areaLights !== "engine") {
+    throw new MatcWebError(`areaLights: "${areaLights}"; allowed on WebGPURenderer: "engine"`);
+  }
+  if (!material?.isMeshStandardNodeMaterial) {
+    throw new MatcWebError("useMatcFresnel (WebGPU) takes a MeshStandardNodeMaterial or MeshPhysicalNodeMaterial");
+  }
+  if (!build?.functions) throw new MatcWebError("useMatcFresnel (WebGPU) needs this module's loadMatcBuild");
+  checkLightingModel();
+  if (sourceKind(build, source) !== "material") {
+    throw new MatcWebError("WebGPURenderer: compiled materials only so far; textured and baked metals need " +
+                           "matc-three.mjs (WebGLRenderer)");
+  }
+  const [red, green, blue] = source.material.coefficients.map((row) => uniform(new THREE.Vector4(...row)));
+  const matc = { rows: { red, green, blue }, functions: build.functions, lut: build.lut };
+  material.metalness = 1;
+  material.metalnessNode = null;
+  material.setupLightingModel = () => new MatcPhysicalLightingModel(matc, material);
+  material.userData.matc = matc;
+  // The coefficients are this material's uniforms: no pipeline shared with another material.
+  material.customProgramCacheKey = () => `matc:${material.uuid}`;
+  material.needsUpdate = true;
+  return material;
+}

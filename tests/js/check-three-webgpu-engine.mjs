@@ -1,0 +1,77 @@
+// matc's Fresnel in three.js's WebGPURenderer (examples/web/three/matc-three-webgpu.mjs: three's
+// PhysicalLightingModel with matc's WGSL library through wgslFn), on WebGPU in headless Chromium
+// (Dawn on SwiftShader), at the probe pixels of tests/js/engine-probes.mjs under the white
+// environment and the point light, for the Figure 2 material and beryllium at two roughnesses,
+// against the CPU runtime to 1e-4. (Its rect lights use three's LTC shape, which the CPU runtime
+// does not model.) WebGPU's adapter and device do not settle under Chromium's virtual time: the
+// page runs in real time and posts its result.
+//   node check-three-webgpu-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
+import { modulePage, threeVersion } from "./browser-page.mjs";
+import { kProbeMaterials, kProbeSize, runProbeCheck } from "./engine-probes.mjs";
+
+const kPage = (config) => modulePage(config, {
+  head: `import * as THREE from "three/webgpu";
+import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three-webgpu.mjs";
+import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";`,
+  body: `
+  out.renders = {};
+  recordConsoleErrors(out);
+  if (!navigator.gpu) throw new Error("no WebGPU in this browser");
+  // The page's own device: three's adapter request (featureLevel "compatibility") does not
+  // settle on headless Chromium's SwiftShader adapter.
+  const adapter = await navigator.gpu.requestAdapter();
+  const device = await adapter.requestDevice({ requiredFeatures: [...adapter.features].filter((f) => f === "float32-filterable") });
+  const renderer = new THREE.WebGPURenderer({ canvas: document.createElement("canvas"), device });
+  await renderer.init();
+  if (!renderer.backend.isWebGPUBackend) throw new Error("WebGPURenderer fell back to WebGL2");
+  const build = await loadMatcBuild("/out/");
+  const target = new THREE.RenderTarget(${kProbeSize}, ${kProbeSize}, { type: THREE.FloatType });
+  const camera = new THREE.PerspectiveCamera(90, 1, 0.1, 10);
+  camera.position.set(0, 0, 1);
+  const white = new THREE.DataTexture(new Float32Array(64 * 32 * 4).fill(1), 64, 32, THREE.RGBAFormat, THREE.FloatType);
+  white.mapping = THREE.EquirectangularReflectionMapping;
+  white.needsUpdate = true;
+  const materials = {};
+  for (const name of config.materials) materials[name] = await build.loadMaterial(name);
+  for (const render of config.renders) {
+    const scene = new THREE.Scene();
+    const material = useMatcFresnel(new THREE.MeshPhysicalNodeMaterial({ roughness: render.roughness }), build,
+                                    { material: materials[render.source] });
+    scene.add(new THREE.Mesh(new THREE.PlaneGeometry(4, 4), material));
+    if (render.light === "environment") scene.environment = white;
+    if (render.light === "point") {
+      const light = new THREE.PointLight(0xffffff, config.point.intensity, 0, 2);
+      light.position.set(...config.point.position);
+      scene.add(light);
+    }
+    renderer.setRenderTarget(target);
+    await renderer.renderAsync(scene, camera);
+    const pixels = [];
+    for (const [x, y] of config.pixels) {
+      const texel = await renderer.readRenderTargetPixelsAsync(target, x, ${kProbeSize} - 1 - y, 1, 1);
+      pixels.push(Array.from(texel.subarray(0, 3)));
+    }
+    out.renders[render.key] = pixels;
+  }
+  const lightingModel = THREE.PhysicalLightingModel.prototype;
+  const original = lightingModel.indirectSpecular;
+  await checkBadInputs(out, {
+    loadMatcBuild, build, material: materials.beryllium, texture: white,
+    useMatc: (source, options) => useMatcFresnel(new THREE.MeshPhysicalNodeMaterial(), build, source, options),
+    changeEngine: () => {
+      // A three.js whose metal image lighting no longer goes through computeMultiscattering.
+      lightingModel.indirectSpecular = function (builder) { return original.call(this, builder); };
+      return () => { lightingModel.indirectSpecular = original; };
+    },
+    skip: ["unknown_area_light_option"] });`,
+});
+
+await runProbeCheck({
+  name: "three.js WebGPURenderer", label: `three.js ${threeVersion()} WebGPURenderer MeshPhysicalNodeMaterial`,
+  page: kPage, alphaOf: (r) => Math.max(r, 0.045) ** 2,
+  keep: (render) => kProbeMaterials.includes(render.source) && render.light !== "rect",
+  rect: { light: { intensity: 0 }, corners: [] },
+  // areaLights has one value on WebGPURenderer ("engine"): the shared case's message differs.
+  skipBadInputs: ["unknown_area_light_option"],
+  runPage: { realTime: true, budgetMs: 120000, browserArgs: ["--enable-unsafe-webgpu", "--use-webgpu-adapter=swiftshader"] },
+}, process.argv.slice(2));
