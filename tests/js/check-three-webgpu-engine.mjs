@@ -1,16 +1,18 @@
 // matc's Fresnel in three.js's WebGPURenderer (examples/web/three/matc-three-webgpu.mjs: three's
 // PhysicalLightingModel with matc's WGSL library through wgslFn), on WebGPU in headless Chromium
 // (Dawn on SwiftShader), at the probe pixels of tests/js/engine-probes.mjs under the white
-// environment and the point light, for the Figure 2 material and beryllium at two roughnesses,
-// against the CPU runtime to 1e-4. (Its rect lights use three's LTC shape, which the CPU runtime
+// environment and the point light, for the Figure 2 material and beryllium at two roughnesses, a
+// textured metal through the coefficient table and a `matc bake` result, against the CPU runtime
+// to 1e-4. (Its rect lights use three's LTC shape, which the CPU runtime
 // does not model.) WebGPU's adapter and device do not settle under Chromium's virtual time: the
 // page runs in real time and posts its result.
 //   node check-three-webgpu-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
 import { modulePage, threeVersion } from "./browser-page.mjs";
-import { kProbeMaterials, kProbeSize, runProbeCheck } from "./engine-probes.mjs";
+import { kProbeSize, runProbeCheck } from "./engine-probes.mjs";
 
 const kPage = (config) => modulePage(config, {
   head: `import * as THREE from "three/webgpu";
+import { read as readKtx2 } from "ktx-parse";
 import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three-webgpu.mjs";
 import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";`,
   body: `
@@ -33,10 +35,27 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
   white.needsUpdate = true;
   const materials = {};
   for (const name of config.materials) materials[name] = await build.loadMaterial(name);
+  const constant = (rgb) => {
+    const texture = new THREE.DataTexture(new Float32Array([...rgb, 1]), 1, 1, THREE.RGBAFormat, THREE.FloatType);
+    texture.needsUpdate = true;
+    return texture;
+  };
+  const baked = async (file) => {
+    const container = readKtx2(new Uint8Array(await (await fetch("/baked/" + file)).arrayBuffer()));
+    const level = container.levels[0].levelData;
+    const texture = new THREE.DataTexture(new Float32Array(level.buffer.slice(level.byteOffset, level.byteOffset + level.byteLength)),
+                                          container.pixelWidth, container.pixelHeight, THREE.RGBAFormat, THREE.FloatType);
+    texture.needsUpdate = true;
+    return texture;
+  };
+  const sources = {
+    textured: { reflectivityMap: constant(config.textured.reflectivity), edgeTintMap: constant(config.textured.edgeTint) },
+    baked: { baked: { c2Map: await baked("probe_c2.ktx2"), c3Map: await baked("probe_c3.ktx2"), f0Map: await baked("probe_f0.ktx2") } },
+  };
   for (const render of config.renders) {
     const scene = new THREE.Scene();
     const material = useMatcFresnel(new THREE.MeshPhysicalNodeMaterial({ roughness: render.roughness }), build,
-                                    { material: materials[render.source] });
+                                    sources[render.source] ?? { material: materials[render.source] });
     scene.add(new THREE.Mesh(new THREE.PlaneGeometry(4, 4), material));
     if (render.light === "environment") scene.environment = white;
     if (render.light === "point") {
@@ -69,7 +88,7 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
 await runProbeCheck({
   name: "three.js WebGPURenderer", label: `three.js ${threeVersion()} WebGPURenderer MeshPhysicalNodeMaterial`,
   page: kPage, alphaOf: (r) => Math.max(r, 0.045) ** 2,
-  keep: (render) => kProbeMaterials.includes(render.source) && render.light !== "rect",
+  keep: (render) => render.light !== "rect",
   rect: { light: { intensity: 0 }, corners: [] },
   // areaLights has one value on WebGPURenderer ("engine"): the shared case's message differs.
   skipBadInputs: ["unknown_area_light_option"],

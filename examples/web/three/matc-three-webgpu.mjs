@@ -2,16 +2,16 @@
 // MeshPhysicalNodeMaterial whose lighting model is three's PhysicalLightingModel with matc's Fresnel
 // in punctual lights, image lighting (with matc's energy compensation) and rect area lights (three's
 // LTC shape times sum_i c_i bbar_i). The Fresnel is the WGSL library matc writes
-// (matc_fresnel.wgsl) called through wgslFn, so every basis works as compiled. Compiled
-// coefficients only, so far (textured and baked metals: matc-three.mjs on WebGLRenderer).
+// (matc_fresnel.wgsl) called through wgslFn, so every basis works as compiled; coefficients from a
+// compiled material, from maps through the coefficient table, or from `matc bake` textures.
 //
 //   import { loadMatcBuild, useMatcFresnel } from "./matc-three-webgpu.mjs";
 //   const build = await loadMatcBuild("matc-out/");
 //   const gold = useMatcFresnel(new THREE.MeshPhysicalNodeMaterial({ roughness: 0.3 }), build,
 //                               { material: await build.loadMaterial("gold") });
 import * as THREE from "three/webgpu";
-import { BRDF_GGX, LTC_Evaluate, LTC_Uv, float, mat3, normalView, positionView, positionViewDirection,
-         roughness, texture, uniform, vec3, wgsl, wgslFn } from "three/tsl";
+import { BRDF_GGX, LTC_Evaluate, LTC_Uv, diffuseColor, float, mat3, normalView, positionView,
+         positionViewDirection, roughness, texture, uniform, uv, vec3, vec4, wgsl, wgslFn } from "three/tsl";
 import { MatcWebError, checkAnchors, loadMatcBuildFiles, sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
@@ -48,15 +48,22 @@ function checkLightingModel() {
 }
 
 // Reads a matc build directory (`matc -o DIR`, with wgsl, json and lut among --emit).
+function tableTexture(table) {
+  const texture = new THREE.DataTexture(table.data, table.size, table.size,
+                                        table.channels === 4 ? THREE.RGBAFormat : THREE.RGFormat,
+                                        table.half ? THREE.HalfFloatType : THREE.FloatType);
+  texture.minFilter = texture.magFilter = THREE.LinearFilter;
+  texture.wrapS = texture.wrapT = THREE.ClampToEdgeWrapping;
+  texture.generateMipmaps = false;
+  texture.colorSpace = THREE.NoColorSpace;
+  texture.needsUpdate = true;
+  return texture;
+}
+
 export async function loadMatcBuild(url) {
   const files = await loadMatcBuildFiles(url, { language: "wgsl" });
-  const lut = new THREE.DataTexture(files.lut.data, files.lut.size, files.lut.size, THREE.RGBAFormat,
-                                    files.lut.half ? THREE.HalfFloatType : THREE.FloatType);
-  lut.minFilter = lut.magFilter = THREE.LinearFilter;
-  lut.wrapS = lut.wrapT = THREE.ClampToEdgeWrapping;
-  lut.generateMipmaps = false;
-  lut.colorSpace = THREE.NoColorSpace;
-  lut.needsUpdate = true;
+  const lut = tableTexture(files.lut);
+  const coefficientTable = files.coefficientTable && tableTexture(files.coefficientTable);
   // The library once, and the entry points the lighting model calls (coefficients as three rows).
   const library = wgsl(files.library);
   const rows = "red: vec4f, green: vec4f, blue: vec4f";
@@ -71,8 +78,13 @@ export async function loadMatcBuild(url) {
                         `matc_energy_compensation(${coefficients}, bbar)`),
     lutTexcoord: wgslFn("fn matc_three_lut_texcoord(ndotv: f32, roughness: f32) -> vec2f { " +
                         "return matc_lut_texcoord(ndotv, roughness); }", [library]),
+    // Textured metals: one channel's c_0..c_3 from its r and the coefficient table's texel.
+    tableTexcoord: wgslFn("fn matc_three_table_texcoord(r: f32, g: f32) -> vec2f { " +
+                          "return matc_coefficient_table_texcoord(r, g); }", [library]),
+    channel: wgslFn("fn matc_three_channel(r: f32, texel: vec2f) -> vec4f { " +
+                    "return matc_channel_coefficients(r, texel); }", [library]),
   };
-  return { ...files, lut, functions };
+  return { ...files, lut, coefficientTable, functions };
 }
 
 // three's physical lighting with matc's Fresnel; `matc` holds the coefficient rows (uniform nodes),
@@ -133,9 +145,41 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
   }
 }
 
+// The coefficients as three rows (red, green, blue: c_0..c_3) of nodes: uniforms for a compiled
+// material, per-pixel expressions for maps through the coefficient table and for baked textures.
+function coefficientRows(build, source) {
+  const kind = sourceKind(build, source);
+  if (kind === "material") {
+    const [red, green, blue] = source.material.coefficients.map((row) => uniform(new THREE.Vector4(...row)));
+    return { red, green, blue };
+  }
+  if (kind === "table") {
+    const colour = (value) => uniform(new THREE.Color(...(Array.isArray(value) ? value : [value ?? 1, value ?? 1, value ?? 1])));
+    const r = texture(source.reflectivityMap, uv()).rgb.mul(colour(source.reflectivity)).toConst("matc_r");
+    const g = texture(source.edgeTintMap, uv()).rgb.mul(colour(source.edgeTint)).toConst("matc_g");
+    const { tableTexcoord, channel } = build.functions;
+    const row = (c) => channel({ r: r[c], texel: texture(build.coefficientTable, tableTexcoord({ r: r[c], g: g[c] })).level(0).xy });
+    return { red: row("x"), green: row("y"), blue: row("z") };
+  }
+  // Baked: c_0 = F0 (the F0 map, or the material's base colour), c_1 = 1 - c_0, (c_2, c_3) the maps'.
+  const { c2Map, c3Map, f0Map } = source.baked;
+  for (const map of [c2Map, c3Map, f0Map].filter(Boolean)) {
+    map.minFilter = map.mipmaps?.length > 1 ? THREE.LinearMipmapLinearFilter : THREE.LinearFilter;
+    map.magFilter = THREE.LinearFilter;
+    map.needsUpdate = true;
+  }
+  const f0 = (f0Map ? texture(f0Map, uv()).rgb : diffuseColor.rgb).clamp(0, 1).toConst("matc_f0");
+  const c2 = texture(c2Map, uv()).rgb.toConst("matc_c2");
+  const c3 = texture(c3Map, uv()).rgb.toConst("matc_c3");
+  const row = (c) => vec4(f0[c], f0[c].oneMinus(), c2[c], c3[c]);
+  return { red: row("x"), green: row("y"), blue: row("z") };
+}
+
 // Makes `material` (MeshStandardNodeMaterial or MeshPhysicalNodeMaterial) a matc metal with
-// `source` = { material } (build.loadMaterial). Returns the material; material.userData.matc.rows
-// holds the coefficient uniforms (their .value can change without recompiling).
+// `source` = { material } (build.loadMaterial), { reflectivityMap, edgeTintMap } or { baked }, as
+// matc-three.mjs takes them. Returns the material; material.userData.matc.rows holds the
+// coefficient nodes (a compiled material's are uniforms: their .value can change without
+// recompiling).
 // options.areaLights: "engine" only (three's LTC shape with matc's Fresnel).
 export function useMatcFresnel(material, build, source, { areaLights = "engine" } = {}) {
   if (areaLights !== "engine") {
@@ -146,12 +190,7 @@ export function useMatcFresnel(material, build, source, { areaLights = "engine" 
   }
   if (!build?.functions) throw new MatcWebError("useMatcFresnel (WebGPU) needs this module's loadMatcBuild");
   checkLightingModel();
-  if (sourceKind(build, source) !== "material") {
-    throw new MatcWebError("WebGPURenderer: compiled materials only so far; textured and baked metals need " +
-                           "matc-three.mjs (WebGLRenderer)");
-  }
-  const [red, green, blue] = source.material.coefficients.map((row) => uniform(new THREE.Vector4(...row)));
-  const matc = { rows: { red, green, blue }, functions: build.functions, lut: build.lut };
+  const matc = { rows: coefficientRows(build, source), functions: build.functions, lut: build.lut };
   material.metalness = 1;
   material.metalnessNode = null;
   material.setupLightingModel = () => new MatcPhysicalLightingModel(matc, material);
