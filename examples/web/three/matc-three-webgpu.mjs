@@ -12,6 +12,7 @@
 import * as THREE from "three/webgpu";
 import { BRDF_GGX, LTC_Evaluate, LTC_Uv, diffuseColor, float, mat3, normalView, positionView,
          positionViewDirection, roughness, texture, uniform, uv, vec3, vec4, wgsl, wgslFn } from "three/tsl";
+import { sampleTrilinearly, tableTexture } from "./textures.mjs";
 import { MatcWebError, checkAnchors, loadMatcBuildFiles, sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
@@ -48,22 +49,11 @@ function checkLightingModel() {
 }
 
 // Reads a matc build directory (`matc -o DIR`, with wgsl, json and lut among --emit).
-function tableTexture(table) {
-  const texture = new THREE.DataTexture(table.data, table.size, table.size,
-                                        table.channels === 4 ? THREE.RGBAFormat : THREE.RGFormat,
-                                        table.half ? THREE.HalfFloatType : THREE.FloatType);
-  texture.minFilter = texture.magFilter = THREE.LinearFilter;
-  texture.wrapS = texture.wrapT = THREE.ClampToEdgeWrapping;
-  texture.generateMipmaps = false;
-  texture.colorSpace = THREE.NoColorSpace;
-  texture.needsUpdate = true;
-  return texture;
-}
 
 export async function loadMatcBuild(url) {
   const files = await loadMatcBuildFiles(url, { language: "wgsl" });
-  const lut = tableTexture(files.lut);
-  const coefficientTable = files.coefficientTable && tableTexture(files.coefficientTable);
+  const lut = tableTexture(THREE, files.lut);
+  const coefficientTable = files.coefficientTable && tableTexture(THREE, files.coefficientTable);
   // The library once, and the entry points the lighting model calls (coefficients as three rows).
   const library = wgsl(files.library);
   const rows = "red: vec4f, green: vec4f, blue: vec4f";
@@ -163,11 +153,7 @@ function coefficientRows(build, source) {
   }
   // Baked: c_0 = F0 (the F0 map, or the material's base colour), c_1 = 1 - c_0, (c_2, c_3) the maps'.
   const { c2Map, c3Map, f0Map } = source.baked;
-  for (const map of [c2Map, c3Map, f0Map].filter(Boolean)) {
-    map.minFilter = map.mipmaps?.length > 1 ? THREE.LinearMipmapLinearFilter : THREE.LinearFilter;
-    map.magFilter = THREE.LinearFilter;
-    map.needsUpdate = true;
-  }
+  sampleTrilinearly(THREE, [c2Map, c3Map, f0Map]);
   const f0 = (f0Map ? texture(f0Map, uv()).rgb : diffuseColor.rgb).clamp(0, 1).toConst("matc_f0");
   const c2 = texture(c2Map, uv()).rgb.toConst("matc_c2");
   const c3 = texture(c3Map, uv()).rgb.toConst("matc_c3");

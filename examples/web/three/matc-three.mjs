@@ -10,6 +10,7 @@
 //   const gold = new THREE.MeshPhysicalMaterial({ roughness: 0.3 });
 //   useMatcFresnel(gold, build, { material: await build.loadMaterial("gold") });
 import * as THREE from "three";
+import { sampleTrilinearly, tableTexture } from "./textures.mjs";
 import { MatcWebError, anchorPattern, checkAnchors, declarationsGlsl, loadMatcBuildFiles, pixelSetupGlsl,
          sourceKind } from "../matc-build.mjs";
 
@@ -109,25 +110,13 @@ export function patchChunks(chunks, library) {
 
 // ---- A matc build directory as three.js textures. ----
 
-function tableTexture(table) {
-  const format = table.channels === 4 ? THREE.RGBAFormat : THREE.RGFormat;
-  const texture = new THREE.DataTexture(table.data, table.size, table.size, format,
-                                        table.half ? THREE.HalfFloatType : THREE.FloatType);
-  texture.minFilter = THREE.LinearFilter;
-  texture.magFilter = THREE.LinearFilter;
-  texture.wrapS = texture.wrapT = THREE.ClampToEdgeWrapping;
-  texture.generateMipmaps = false;
-  texture.colorSpace = THREE.NoColorSpace;
-  texture.needsUpdate = true;
-  return texture;
-}
 
 // Reads a matc build directory (`matc -o DIR`, with glsl, json and lut among --emit; ltc for rect
 // area lights, coefficient-table for textured metals) and returns what useMatcFresnel takes.
 export async function loadMatcBuild(url) {
   const files = await loadMatcBuildFiles(url);
-  return { ...files, lut: tableTexture(files.lut), ltc: files.ltc && tableTexture(files.ltc),
-           coefficientTable: files.coefficientTable && tableTexture(files.coefficientTable) };
+  return { ...files, lut: tableTexture(THREE, files.lut), ltc: files.ltc && tableTexture(THREE, files.ltc),
+           coefficientTable: files.coefficientTable && tableTexture(THREE, files.coefficientTable) };
 }
 
 // ---- Turning a three.js material into a matc metal. ----
@@ -159,13 +148,7 @@ function sourceUniforms(build, source) {
                          matc_edge_tint: { value: colour(source.edgeTint) } } };
   }
   const { c2Map, c3Map, f0Map } = source.baked;
-  // matc bake's mips average coefficients, so one trilinear sampler for all of them is exact;
-  // KTX2Loader leaves uncompressed textures at nearest filtering.
-  for (const texture of [c2Map, c3Map, f0Map].filter(Boolean)) {
-    texture.minFilter = texture.mipmaps?.length > 1 ? THREE.LinearMipmapLinearFilter : THREE.LinearFilter;
-    texture.magFilter = THREE.LinearFilter;
-    texture.needsUpdate = true;
-  }
+  sampleTrilinearly(THREE, [c2Map, c3Map, f0Map]);
   const uniforms = { matc_c2_map: { value: c2Map }, matc_c3_map: { value: c3Map } };
   if (f0Map) uniforms.matc_f0_map = { value: f0Map };
   return { define: "MATC_SOURCE_BAKED", uv: true, f0: Boolean(f0Map), uniforms };
