@@ -110,7 +110,6 @@ export function patchChunks(chunks, library) {
 
 // ---- A matc build directory as three.js textures. ----
 
-
 // Reads a matc build directory (`matc -o DIR`, with glsl, json and lut among --emit; ltc for rect
 // area lights, coefficient-table for textured metals) and returns what useMatcFresnel takes.
 export async function loadMatcBuild(url) {
