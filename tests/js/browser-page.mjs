@@ -3,12 +3,11 @@
 // with folders mounted under /<root>/ (e.g. /three/ for three.js's build), so that module imports
 // and fetches work as on a real site.
 //   const result = await runPage({ html, roots: { out: "/tmp/x/out" }, dir: "/tmp/x" });
-import { spawn } from "node:child_process";
+import { spawn, spawnSync } from "node:child_process";
 import { createServer } from "node:http";
 import { readFileSync, statSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
-import { chromiumPath } from "./shader-cases.mjs";
 
 const here = dirname(fileURLToPath(import.meta.url));
 // The engines from npm (package-lock.json pins them): three.js's build and addons, Babylon.js's
@@ -47,6 +46,14 @@ document.getElementById("result").textContent = JSON.stringify(out);
 await fetch("/result", { method: "POST", body: JSON.stringify(out) }).catch(() => {});  // runPage's realTime mode
 </script></body></html>
 `;
+}
+
+function chromiumPath() {
+  for (const name of ["chromium", "chromium-browser"]) {
+    const found = spawnSync("sh", ["-c", `command -v ${name}`], { encoding: "utf8" });
+    if (found.status === 0) return found.stdout.trim();
+  }
+  throw new Error("chromium not found (scripts/install-deps.sh installs Debian's chromium)");
 }
 
 const kTypes = { js: "text/javascript", mjs: "text/javascript", json: "application/json",

@@ -4,17 +4,14 @@
 // pixels, whose NdotV follows from the camera, the result must be the CPU runtime's
 // Fbar * (1 + F0 (1 - E) / E) (`matc eval`; E the table's directional albedo) within 1e-4.
 //   node check-three.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
-import { spawn } from "node:child_process";
-import { createServer } from "node:http";
 import { mkdtempSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
-import { dirname, join } from "node:path";
-import { fileURLToPath } from "node:url";
+import { join } from "node:path";
+import { kWebRoots, modulePage, runPage, threeVersion } from "./browser-page.mjs";
 import { check, finish } from "./report.mjs";
-import { chromiumPath, compensatedFbar, kPreintegratedTolerance, run } from "./shader-cases.mjs";
+import { compensatedFbar, kPreintegratedTolerance, run } from "./shader-cases.mjs";
 
 const [matc, materialsDir, webDir] = process.argv.slice(2);
-const threeBuild = join(dirname(fileURLToPath(import.meta.url)), "node_modules", "three", "build");
 const kSize = 64;
 // Pixels of the 64 x 64 target and the roughness each is rendered at (one render per roughness).
 const kPixels = [[32, 32], [5, 60], [60, 10], [0, 0], [40, 20]];
@@ -27,13 +24,11 @@ const ndotvAt = ([x, y]) => {
   return Math.fround(1 / Math.sqrt(1 + u * u + v * v));
 };
 
-const kPage = `<!doctype html><html><body><pre id="result">not run</pre>
-<script type="importmap">{"imports": {"three": "/three/three.module.js"}}</script>
-<script type="module">
-import * as THREE from "three";
-import { createMatcMaterial } from "/web/matc-three.mjs";
-const out = { errors: [], pixels: [] };
-try {
+const kPage = modulePage({}, {
+  head: `import * as THREE from "three";
+import { createMatcMaterial } from "/web/matc-three.mjs";`,
+  body: `
+  out.pixels = [];
   const fetchText = async (path) => (await fetch(path)).text();
   const lut = new Float32Array(await (await fetch("/out/matc_lut.bin")).arrayBuffer());
   const renderer = new THREE.WebGLRenderer({ canvas: document.createElement("canvas") });
@@ -56,32 +51,10 @@ try {
       renderer.readRenderTargetPixels(target, x, y, 1, 1, texel);
       out.pixels.push(Array.from(texel.subarray(0, 3)));
     }
-  }
-} catch (error) {
-  out.errors.push(String(error.stack || error));
-}
-document.getElementById("result").textContent = JSON.stringify(out);
-</script></body></html>
-`;
+  }`,
+});
 
 const dir = mkdtempSync(join(tmpdir(), "matc-three-"));
-const server = createServer((request, response) => {
-  const path = decodeURIComponent(new URL(request.url, "http://localhost").pathname);
-  const [, root, ...rest] = path.split("/");
-  const base = { three: threeBuild, web: webDir, out: join(dir, "out") }[root];
-  try {
-    if (path === "/page.html") {
-      response.writeHead(200, { "content-type": "text/html" }).end(kPage);
-    } else if (base && !rest.includes("..")) {
-      const type = path.endsWith("js") ? "text/javascript" : "application/octet-stream";
-      response.writeHead(200, { "content-type": type }).end(readFileSync(join(base, ...rest)));
-    } else {
-      response.writeHead(404).end();
-    }
-  } catch {
-    response.writeHead(404).end();
-  }
-});
 try {
   const gold = join(materialsDir, "gold.json");
   run(matc, ["-q", "-o", join(dir, "out"), "--emit", "glsl,json,lut", "--lut", "raw",
@@ -96,21 +69,8 @@ try {
   const fbar = evaluate([gold]).Fbar;
   const albedo = evaluate(["--reflectivity", "1", "--edge-tint", "1"]).Fbar_table.map((e) => e[0]);
 
-  await new Promise((resolve) => server.listen(0, "127.0.0.1", resolve));
-  const url = `http://127.0.0.1:${server.address().port}/page.html`;
-  const dom = await new Promise((resolve, reject) => {
-    const browser = spawn(chromiumPath(), [
-      "--headless", "--no-sandbox", "--disable-dev-shm-usage", "--use-angle=swiftshader",
-      "--enable-unsafe-swiftshader", "--virtual-time-budget=60000",
-      `--user-data-dir=${join(dir, "profile")}`, "--dump-dom", url]);
-    let text = "";
-    browser.stdout.on("data", (chunk) => { text += chunk; });
-    browser.on("error", reject);
-    browser.on("close", () => resolve(text));
-  });
-  const match = dom.match(/<pre id="result">([^<]*)<\/pre>/);
-  check(match !== null, "the page wrote no result");
-  const result = JSON.parse(match[1].replaceAll("&quot;", "\"").replaceAll("&amp;", "&"));
+  const result = await runPage({ html: kPage, roots: { ...kWebRoots, web: webDir, out: join(dir, "out") },
+                                 dir, budgetMs: 60000 });
   check(result.errors.length === 0, `three.js: ${result.errors.join("\n")}`);
   check(result.pixels.length === ndotv.length, `${result.pixels.length} of ${ndotv.length} pixels read`);
   let worst = 0;
@@ -125,10 +85,9 @@ try {
             `channel ${c}: three.js ${pixel[c]}, CPU ${expected}`);
     }
   });
-  console.log(`three.js ${JSON.parse(readFileSync(join(threeBuild, "..", "package.json"), "utf8")).version}: ` +
+  console.log(`three.js ${threeVersion()}: ` +
               `${result.pixels.length} pixels of gold's compensated Fbar, largest difference ${worst.toExponential(2)}`);
 } finally {
-  server.close();
   rmSync(dir, { recursive: true, force: true });
 }
 finish();

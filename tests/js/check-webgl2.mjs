@@ -8,13 +8,14 @@
 // compared with the CPU runtime (`matc eval`) at matc validate's tolerances: F and the closed form
 // 1e-5, Fbar and anything through the coefficient table 1e-4.
 //   node check-webgl2.mjs MATC MATERIALS_DIR
-import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { mkdtempSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
+import { runPage } from "./browser-page.mjs";
 import { check, finish } from "./report.mjs";
 import {
-  chromiumPath, compileAndEvaluate, kClosedFormTolerance, kFresnelTolerance, kPreintegratedTolerance,
-  largestDifference, run, validationQueries,
+  compileAndEvaluate, kClosedFormTolerance, kFresnelTolerance, kPreintegratedTolerance,
+  largestDifference, validationQueries,
 } from "./shader-cases.mjs";
 
 const [matc, materialsDir] = process.argv.slice(2);
@@ -154,19 +155,11 @@ try {
     lut: lut.toString("base64"), lutSize: Math.round(Math.sqrt(lut.length / 16)),
     table: table.toString("base64"), tableSize: Math.round(Math.sqrt(table.length / 8)),
   };
-  const page = join(dir, "webgl2.html");
-  writeFileSync(page, "<!doctype html><html><body><pre id=\"result\">not run</pre>\n" +
-                      "<script type=\"application/json\" id=\"data\">" +
-                      JSON.stringify(data).replaceAll("</", "<\\/") + "</script>\n" +
-                      `<script>${kPageScript}</script></body></html>\n`);
-
-  const dom = run(chromiumPath(), [
-    "--headless", "--no-sandbox", "--disable-dev-shm-usage", "--use-angle=swiftshader",
-    "--enable-unsafe-swiftshader", "--virtual-time-budget=60000",
-    `--user-data-dir=${join(dir, "profile")}`, "--dump-dom", `file://${page}`]);
-  const match = dom.match(/<pre id="result">([^<]*)<\/pre>/);
-  check(match !== null, "the page wrote no result");
-  const result = JSON.parse(match[1].replaceAll("&quot;", "\"").replaceAll("&amp;", "&"));
+  const html = "<!doctype html><html><body><pre id=\"result\">not run</pre>\n" +
+               "<script type=\"application/json\" id=\"data\">" +
+               JSON.stringify(data).replaceAll("</", "<\\/") + "</script>\n" +
+               `<script>${kPageScript}</script></body></html>\n`;
+  const result = await runPage({ html, roots: {}, dir, budgetMs: 60000 });
   check(!result.error, `WebGL2: ${result.error}`);
   console.log(`WebGL2 renderer: ${result.renderer}`);
   check(result.materials.length === cases.length,

@@ -27,14 +27,6 @@ export function run(command, args, options = {}) {
   return result.stdout;
 }
 
-export function chromiumPath() {
-  for (const name of ["chromium", "chromium-browser"]) {
-    const found = spawnSync("sh", ["-c", `command -v ${name}`], { encoding: "utf8" });
-    if (found.status === 0) return found.stdout.trim();
-  }
-  throw new Error("chromium not found (scripts/install-deps.sh installs Debian's chromium)");
-}
-
 // matc validate's grid: (NdotV, roughness) = (i, j) / 40 over 41 x 41, each beside a cosine
 // mu_k = k / (n - 1). Values are float32, as the shaders read them; `flat` is (mu, NdotV,
 // roughness, 0) per query.
