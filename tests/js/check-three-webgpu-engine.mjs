@@ -89,7 +89,6 @@ await runProbeCheck({
   name: "three.js WebGPURenderer", label: `three.js ${threeVersion()} WebGPURenderer MeshPhysicalNodeMaterial`,
   page: kPage, alphaOf: (r) => Math.max(r, 0.045) ** 2,
   keep: (render) => render.light !== "rect",
-  rect: { light: { intensity: 0 }, corners: [] },
   // areaLights has one value on WebGPURenderer ("engine"): the shared case's message differs.
   skipBadInputs: ["unknown_area_light_option"],
   runPage: { realTime: true, budgetMs: 120000, browserArgs: ["--enable-unsafe-webgpu", "--use-webgpu-adapter=swiftshader"] },

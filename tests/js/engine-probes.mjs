@@ -96,12 +96,13 @@ export function probeRenders() {
   return renders;
 }
 
-// The CPU runtime's value at every probe of every render: compensated Fbar under the white
+// The CPU runtime's value at every probe of the given renders: compensated Fbar under the white
 // environment, irradiance x GGX x F(v.h) x compensation under the point light (alphaOf gives the
-// engine's GGX alpha for a roughness), the rect light's radiance x `L_ltc` (corners in world
-// space), times the compensation too where the engine applies it to area lights
-// (rect.compensated).
-export function expectedProbes({ matc, materialsDir, out, alphaOf, rect }) {
+// engine's GGX alpha for a roughness), the rect light's radiance (rect.light.intensity) x `L_ltc`
+// (rect.corners in world space), times the compensation too where the engine applies it to area
+// lights (rect.compensated).
+export function expectedProbes({ matc, materialsDir, out, alphaOf, rect, renders }) {
+  const wanted = new Set(renders.map((render) => render.key));
   const ndotv = kProbePixels.map((pixel) => Math.fround(dot(kNormal, viewAt(pixel))));
   const pointTerms = kProbeRoughness.map((roughness) => kProbePixels.map((pixel) => {
     const toLight = sub(kPointLight.position, pointAt(pixel));
@@ -124,6 +125,8 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, rect }) {
      kBaked.reflectivity, "Fbar_compiled", "F_compiled"],
   ]) {
     for (const roughness of source === "textured" || source === "baked" ? [0.3] : kProbeRoughness) {
+      const key = (light) => `${source} ${light} r=${roughness}`;
+      if (!["environment", "point", "rect"].some((light) => wanted.has(key(light)))) continue;
       const terms = pointTerms[kProbeRoughness.indexOf(roughness)];
       const evaluated = JSON.parse(run(matc, [
         "eval", ...args, "--lut-precision", "f32", "--no-reference", "--ndotv", list(ndotv),
@@ -131,19 +134,22 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, rect }) {
       const f0 = f0Of ?? JSON.parse(readFileSync(join(out, `${source}.json`), "utf8"))
                             .coefficients.map((row) => row[0]);
       const e = albedo(roughness);
-      expected[`${source} environment r=${roughness}`] =
-          evaluated[fbarKey].map((fbar, i) => compensatedFbar(fbar, f0, e[i]));
-      expected[`${source} point r=${roughness}`] = terms.map((t, i) => {
-        const compensated = compensatedFbar(evaluated[fKey][i], f0, e[i]);  // F (1 + F0 (1 - E) / E)
-        return compensated.map((value) => t.irradiance * t.ggx * value);
-      });
-      if (kProbeMaterials.includes(source) && rect.corners.length > 0) {
-        expected[`${source} rect r=${roughness}`] = kProbePixels.map((pixel, i) => {
+      if (wanted.has(key("environment"))) {
+        expected[key("environment")] = evaluated[fbarKey].map((fbar, i) => compensatedFbar(fbar, f0, e[i]));
+      }
+      if (wanted.has(key("point"))) {
+        expected[key("point")] = terms.map((t, i) => {
+          const compensated = compensatedFbar(evaluated[fKey][i], f0, e[i]);  // F (1 + F0 (1 - E) / E)
+          return compensated.map((value) => t.irradiance * t.ggx * value);
+        });
+      }
+      if (wanted.has(key("rect"))) {
+        expected[key("rect")] = kProbePixels.map((pixel, i) => {
           const quad = rect.corners.map((corner) => toShadingFrame(corner, pixel).join(",")).join(";");
           const light = JSON.parse(run(matc, [
             "eval", ...args, "--lut-precision", "f32", "--ndotv", String(ndotv[i]),
             "--roughness", String(roughness), "--quad-light", quad, "--light-samples", "16"]));
-          const radiance = light.L_ltc[0].map((value) => value * rect.intensity);
+          const radiance = light.L_ltc[0].map((value) => value * rect.light.intensity);
           return rect.compensated ? compensatedFbar(radiance, f0, e[i]) : radiance;
         });
       }
@@ -201,25 +207,23 @@ export function checkFailures(failures, skip = []) {
 // The whole check for one engine: builds, the page (engine.page(config) -> HTML, which renders
 // config.renders into out.renders and runs page-bad-inputs.mjs), the CPU side, the comparison.
 // engine: { name, page, alphaOf (its GGX alpha for a roughness), rect: { light (for the page),
-// corners (world space), compensated } }; optionally keep(render) to check fewer renders,
-// skipBadInputs (keys of kFailures that do not apply), and runPage options (realTime, browserArgs).
+// corners (world space), compensated } (where it renders rect lights) }; optionally keep(render)
+// to check fewer renders, skipBadInputs (keys of kFailures that do not apply), and runPage
+// options (realTime, browserArgs).
 export async function runProbeCheck(engine, [matc, materialsDir, webDir]) {
   const dir = mkdtempSync(join(tmpdir(), "matc-engine-probes-"));
   try {
     const { out, roots } = prepareProbeBuilds(matc, materialsDir, dir);
     const renders = probeRenders().filter(engine.keep ?? (() => true));
     const config = { materials: kProbeMaterials, pixels: kProbePixels, renders, point: kPointLight,
-                     rect: engine.rect.light, textured: kTextured };
+                     rect: engine.rect?.light, textured: kTextured };
     const result = await runPage({ html: engine.page(config), roots: { ...kWebRoots, web: webDir, ...roots }, dir,
                                    ...(engine.runPage ?? {}) });
     check(result.errors.length === 0, `${engine.name}: ${result.errors.join("\n")}`);
-    const expected = expectedProbes({ matc, materialsDir, out, alphaOf: engine.alphaOf,
-                                      rect: { ...engine.rect, intensity: engine.rect.light.intensity } });
-    const kept = new Set(renders.map((render) => render.key));
-    const worst = compareProbes(result.renders ?? {},
-                                Object.fromEntries(Object.entries(expected).filter(([key]) => kept.has(key))));
+    const expected = expectedProbes({ matc, materialsDir, out, alphaOf: engine.alphaOf, rect: engine.rect, renders });
+    const worst = compareProbes(result.renders ?? {}, expected);
     const refused = checkFailures(result.failures ?? {}, engine.skipBadInputs);
-    console.log(`${engine.label} with matc's Fresnel: ${kept.size} renders x ` +
+    console.log(`${engine.label} with matc's Fresnel: ${renders.length} renders x ` +
                 `${kProbePixels.length} probes, largest difference from the CPU runtime ` +
                 `${worst.toExponential(2)}; ${refused} bad inputs checked`);
   } finally {
