@@ -27,8 +27,8 @@ export const threeVersion = () =>
   JSON.parse(readFileSync(join(here, "node_modules", "three", "package.json"), "utf8")).version;
 
 // A page that runs one ES module: `head` (imports, top-level helpers), then `body` with `config`
-// (the JSON given here) and `out` ({ errors }, what the page reports) in scope; an exception ends
-// up in out.errors, and out is written where runPage reads it.
+// (the JSON given here), `out` ({ errors }, what the page reports) and base64Floats in scope; an
+// exception ends up in out.errors, and out is written where runPage reads it.
 export function modulePage(config, { head, body }) {
   return `<!doctype html><html><body><pre id="result">not run</pre>
 <script type="application/json" id="config">${JSON.stringify(config)}</script>
@@ -37,6 +37,13 @@ export function modulePage(config, { head, body }) {
 ${head}
 const config = JSON.parse(document.getElementById("config").textContent);
 const out = { errors: [] };
+// Float arrays travel in \`out\` as base64 of their bytes.
+const base64Floats = (floats) => {
+  const bytes = new Uint8Array(floats.buffer, floats.byteOffset, floats.byteLength);
+  let binary = "";
+  for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+  return btoa(binary);
+};
 try {
 ${body}
 } catch (error) {

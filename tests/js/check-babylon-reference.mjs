@@ -65,12 +65,6 @@ ${environmentCubeFaces.toString()}
   const sceneConfig = config.scene;
   const size = sceneConfig.size;
   out.images = {};
-  const base64 = (floats) => {
-    const bytes = new Uint8Array(floats.buffer, floats.byteOffset, floats.byteLength);
-    let binary = "";
-    for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
-    return btoa(binary);
-  };
   Tools.AssetBaseUrl = location.origin + "/babylon-assets";
   const canvas = document.createElement("canvas");
   canvas.width = canvas.height = size;
@@ -138,7 +132,7 @@ ${environmentCubeFaces.toString()}
     if (!material.isReady(sphere)) out.errors.push(key + ": the material never became ready");
     target.render();
     target.render();
-    out.images[key] = base64(await target.readPixels());
+    out.images[key] = base64Floats(await target.readPixels());
     // Frame time (--timing): the same frame drawn again, finished by reading a pixel back.
     if (withLights && config.timing?.kind && key.endsWith(config.timing.kind)) {
       out.timedDraws = (out.timedDraws ?? 0) + 1;

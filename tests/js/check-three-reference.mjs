@@ -21,12 +21,6 @@ ${environmentTexels.toString()}
   body: `
   const scene = config.scene;
   out.images = {};
-  const base64 = (floats) => {
-    const bytes = new Uint8Array(floats.buffer);
-    let binary = "";
-    for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
-    return btoa(binary);
-  };
   const renderer = new THREE.WebGLRenderer({ canvas: document.createElement("canvas") });
   renderer.debug.onShaderError = (gl, program, vertex, fragment) =>
     out.errors.push(gl.getShaderInfoLog(fragment) || gl.getShaderInfoLog(vertex) || gl.getProgramInfoLog(program));
@@ -66,7 +60,7 @@ ${environmentTexels.toString()}
     renderer.render(world, camera);  // compiles
     const pixels = new Float32Array(size * size * 4);
     renderer.readRenderTargetPixels(target, 0, 0, size, size, pixels);
-    out.images[key] = base64(pixels);
+    out.images[key] = base64Floats(pixels);
     // Frame time (--timing): the same frame drawn again, finished by reading a pixel back; timed
     // from outside, as the page's clock is virtual.
     if (withLights && config.timing?.kind && key.endsWith(config.timing.kind)) {
