@@ -222,6 +222,18 @@ export async function loadMatcBuildFiles(url, { language = "glsl" } = {}) {
   };
 }
 
+// A colour option of a source (reflectivity, edgeTint): [r, g, b], one grey value, or 1 when absent.
+export function rgbOf(value) {
+  return Array.isArray(value) ? value : [value ?? 1, value ?? 1, value ?? 1];
+}
+
+// Checks the areaLights option against the values an integration supports.
+export function checkAreaLights(areaLights, allowed = ["matc", "engine"]) {
+  if (!allowed.includes(areaLights)) {
+    throw new MatcWebError(`areaLights: "${areaLights}"; allowed: ${allowed.map((value) => `"${value}"`).join(", ")}`);
+  }
+}
+
 // Checks that a source of coefficients (see the integrations' useMatcFresnel) fits the build;
 // returns its kind: "material", "table" or "baked".
 export function sourceKind(build, source) {

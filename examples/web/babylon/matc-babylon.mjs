@@ -17,8 +17,8 @@ import { ShaderStore } from "@babylonjs/core/Engines/shaderStore.js";
 import { Vector3, Vector4 } from "@babylonjs/core/Maths/math.vector.js";
 import { AbstractEngine } from "@babylonjs/core/Engines/abstractEngine.js";
 import "@babylonjs/core/Shaders/pbr.fragment.js";  // registers the shader text the anchors are checked against
-import { MatcWebError, checkAnchors, declarationsGlsl, loadMatcBuildFiles, pixelSetupGlsl,
-         sourceKind } from "../matc-build.mjs";
+import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, declarationsGlsl, loadMatcBuildFiles,
+         pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -50,27 +50,24 @@ vec3 matc_rect_area_light(vec3 N, vec3 V, vec3 P, float roughness, vec3 centre, 
 `;
 
 // Each replacement: the shader source it is checked in (Babylon's ShaderStore name), its anchor
-// there, and the regular expression and text the plugin hands Babylon (applied to the shader
-// after its includes are expanded, so lightFragment's {X} is a light's number).
+// there (also what the plugin hands Babylon as a regular expression, applied to the shader after
+// its includes are expanded, where lightFragment's {X} is a light's number), and its text.
 const kPatches = [
   {
     source: "pbrPixelShader",
     anchor: "float roughness=reflectivityOut.roughness;",
-    regex: "float roughness=reflectivityOut\\.roughness;",
     replacement: `float roughness=reflectivityOut.roughness;\n#ifdef MATC_FRESNEL\n${kPixelSetup}\n#endif\n`,
     what: "this pixel's coefficients (uniform, coefficient table or baked) and its texel of matc_lut",
   },
   {
     source: "lightFragment",
     anchor: "coloredFresnel=fresnelSchlickGGX(preInfo.VdotH,clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90);",
-    regex: "coloredFresnel=fresnelSchlickGGX\\(preInfo\\.VdotH,clearcoatOut\\.specularEnvironmentR0,reflectivityOut\\.colorReflectanceF90\\);",
     replacement: "coloredFresnel=matc_fresnel(matc_c,preInfo.VdotH);",
     what: "punctual lights: fresnelSchlickGGX(VdotH, R0, R90) becomes matc_fresnel(c, VdotH)",
   },
   {
     source: "lightFragment",
     anchor: "info.specular=computeAreaSpecularLighting(preInfo,light{X}.vLightSpecular.rgb,clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90);",
-    regex: "info\\.specular=computeAreaSpecularLighting\\(preInfo,light(\\d+)\\.vLightSpecular\\.rgb,clearcoatOut\\.specularEnvironmentR0,reflectivityOut\\.colorReflectanceF90\\);",
     replacement: "\n#ifdef MATC_ENGINE_LTC\n" +
                  "info.specular=light$1.vLightSpecular.rgb*matc_fresnel_preintegrated(matc_c,matc_bbar)*preInfo.areaLightSpecular;\n" +
                  "#else\n" +
@@ -82,18 +79,22 @@ const kPatches = [
   {
     source: "pbrBlockReflectance",
     anchor: "vec3 colorSpecularEnvironmentReflectance=getReflectanceFromBRDFLookup(clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90,environmentBrdf);",
-    regex: "vec3 colorSpecularEnvironmentReflectance=getReflectanceFromBRDFLookup\\(clearcoatOut\\.specularEnvironmentR0,reflectivityOut\\.colorReflectanceF90,environmentBrdf\\);",
     replacement: "vec3 colorSpecularEnvironmentReflectance=matc_fresnel_preintegrated(matc_c,matc_bbar);",
     what: "image lighting: the BRDF lookup's R0/R90 mix becomes sum_i c_i bbar_i",
   },
   {
     source: "pbrBlockFinalLitComponents",
     anchor: "vec3 coloredEnergyConservationFactor=getEnergyConservationFactor(clearcoatOut.specularEnvironmentR0,environmentBrdf);",
-    regex: "vec3 coloredEnergyConservationFactor=getEnergyConservationFactor\\(clearcoatOut\\.specularEnvironmentR0,environmentBrdf\\);",
     replacement: "vec3 coloredEnergyConservationFactor=matc_energy_compensation(matc_c,matc_bbar);",
     what: "energy conservation of the specular lobe (direct and image lighting): F0 and E from matc",
   },
 ];
+
+// The regular expression Babylon applies for an anchor: the anchor as checked, with
+// lightFragment's {X} matching the light's number (the replacement's $1).
+function shaderRegex(anchor) {
+  return anchorPattern(anchor).source.replace("\\{X\\}", "(\\d+)");
+}
 
 function shaderSources() {
   return { pbrPixelShader: ShaderStore.ShadersStore.pbrPixelShader,
@@ -125,9 +126,7 @@ export async function loadMatcBuild(url, scene) {
 
 // Checks a build and a source of coefficients against Babylon's shaders; what the plugin keeps.
 function preparePlugin(build, source, areaLights) {
-  if (!["matc", "engine"].includes(areaLights)) {
-    throw new MatcWebError(`areaLights: "${areaLights}"; allowed: "matc", "engine"`);
-  }
+  checkAreaLights(areaLights);
   if (!build || typeof build.library !== "string" || !build.lut) {
     throw new MatcWebError("useMatcFresnel needs the result of loadMatcBuild");
   }
@@ -138,7 +137,7 @@ function preparePlugin(build, source, areaLights) {
   }
   checkAnchors(`@babylonjs/core ${version}`, shaderSources(), kPatches, tested);
   const kind = sourceKind(build, source);
-  const colour = (value) => new Vector3(...(Array.isArray(value) ? value : [value ?? 1, value ?? 1, value ?? 1]));
+  const colour = (value) => new Vector3(...rgbOf(value));
   return { build, source, kind, areaLights, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
            coefficients: kind === "material" ? source.material.coefficients.map((row) => new Vector4(...row)) : null };
 }
@@ -234,7 +233,7 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
   getCustomCode(shaderType) {
     if (shaderType !== "fragment") return null;
     const code = { CUSTOM_FRAGMENT_DEFINITIONS: kDeclarations((this.build ?? pendingPlugin.build).library) };
-    for (const patch of kPatches) code[`!${patch.regex}`] = patch.replacement;
+    for (const patch of kPatches) code[`!${shaderRegex(patch.anchor)}`] = patch.replacement;
     return code;
   }
 }

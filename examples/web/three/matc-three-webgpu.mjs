@@ -13,7 +13,7 @@ import * as THREE from "three/webgpu";
 import { BRDF_GGX, LTC_Evaluate, LTC_Uv, diffuseColor, float, mat3, normalView, positionView,
          positionViewDirection, roughness, texture, uniform, uv, vec3, vec4, wgsl, wgslFn } from "three/tsl";
 import { sampleTrilinearly, tableTexture } from "./textures.mjs";
-import { MatcWebError, checkAnchors, loadMatcBuildFiles, sourceKind } from "../matc-build.mjs";
+import { MatcWebError, checkAnchors, checkAreaLights, loadMatcBuildFiles, rgbOf, sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -144,7 +144,7 @@ function coefficientRows(build, source) {
     return { red, green, blue };
   }
   if (kind === "table") {
-    const colour = (value) => uniform(new THREE.Color(...(Array.isArray(value) ? value : [value ?? 1, value ?? 1, value ?? 1])));
+    const colour = (value) => uniform(new THREE.Color(...rgbOf(value)));
     const r = texture(source.reflectivityMap, uv()).rgb.mul(colour(source.reflectivity)).toConst("matc_r");
     const g = texture(source.edgeTintMap, uv()).rgb.mul(colour(source.edgeTint)).toConst("matc_g");
     const { tableTexcoord, channel } = build.functions;
@@ -168,9 +168,7 @@ function coefficientRows(build, source) {
 // recompiling).
 // options.areaLights: "engine" only (three's LTC shape with matc's Fresnel).
 export function useMatcFresnel(material, build, source, { areaLights = "engine" } = {}) {
-  if (areaLights !== "engine") {
-    throw new MatcWebError(`areaLights: "${areaLights}"; allowed on WebGPURenderer: "engine"`);
-  }
+  checkAreaLights(areaLights, ["engine"]);  // WebGPURenderer: three's LTC shape only
   if (!material?.isMeshStandardNodeMaterial) {
     throw new MatcWebError("useMatcFresnel (WebGPU) takes a MeshStandardNodeMaterial or MeshPhysicalNodeMaterial");
   }

@@ -11,8 +11,8 @@
 //   useMatcFresnel(gold, build, { material: await build.loadMaterial("gold") });
 import * as THREE from "three";
 import { sampleTrilinearly, tableTexture } from "./textures.mjs";
-import { MatcWebError, anchorPattern, checkAnchors, declarationsGlsl, loadMatcBuildFiles, pixelSetupGlsl,
-         sourceKind } from "../matc-build.mjs";
+import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, declarationsGlsl, loadMatcBuildFiles,
+         pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -138,7 +138,7 @@ function sourceUniforms(build, source) {
              uniforms: { matc_red: { value: red }, matc_green: { value: green }, matc_blue: { value: blue } } };
   }
   if (kind === "table") {
-    const colour = (value) => new THREE.Color(...(Array.isArray(value) ? value : [value ?? 1, value ?? 1, value ?? 1]));
+    const colour = (value) => new THREE.Color(...rgbOf(value));
     return { define: "MATC_SOURCE_TABLE", uv: true,
              uniforms: { matc_coefficient_table: { value: build.coefficientTable },
                          matc_reflectivity_map: { value: source.reflectivityMap },
@@ -160,9 +160,7 @@ function sourceUniforms(build, source) {
 // against the CPU runtime) or "engine" (three's LTC shape with matc's Fresnel: cheaper;
 // docs/web-engines.md measures both).
 export function useMatcFresnel(material, build, source, { areaLights = "matc" } = {}) {
-  if (!["matc", "engine"].includes(areaLights)) {
-    throw new MatcWebError(`areaLights: "${areaLights}"; allowed: "matc", "engine"`);
-  }
+  checkAreaLights(areaLights);
   checkBuild(build);
   if (!material?.isMeshStandardMaterial) {
     throw new MatcWebError("useMatcFresnel takes a MeshStandardMaterial or MeshPhysicalMaterial");
