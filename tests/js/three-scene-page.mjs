@@ -1,0 +1,78 @@
+// In-page helpers (served under /checks/) for the three.js reference pages: the scene of
+// engine-scene.mjs in three.js objects, and its Monte-Carlo reference as a WebGLRenderer
+// ShaderMaterial. check-three-reference.mjs draws everything with WebGLRenderer;
+// check-three-webgpu-reference.mjs draws the reference with WebGLRenderer and the engine's
+// materials with WebGPURenderer. THREE is either namespace ("three" or "three/webgpu": one core).
+import { environmentTexels, kReferenceFragmentShader, kReferenceVertexShader, rectLightGeometry } from "./engine-scene.mjs";
+
+// scene: the page config's scene (engine-scene.mjs's kScene with the light paths kept).
+export function threeScene(THREE, scene) {
+  const camera = new THREE.PerspectiveCamera(scene.camera.fov, 1, scene.camera.near, scene.camera.far);
+  camera.position.set(...scene.camera.position);
+  camera.lookAt(0, 0, 0);
+  const { width, height, intensity } = scene.environment;
+  const equirect = new THREE.DataTexture(environmentTexels(width, height, intensity), width, height,
+                                         THREE.RGBAFormat, THREE.FloatType);
+  equirect.mapping = THREE.EquirectangularReflectionMapping;
+  equirect.magFilter = equirect.minFilter = THREE.LinearFilter;
+  equirect.wrapS = THREE.RepeatWrapping;
+  equirect.needsUpdate = true;
+  const sphere = new THREE.SphereGeometry(1, 256, 128);
+  const lights = () => {
+    const point = new THREE.PointLight(0xffffff, scene.point.intensity, 0, 2);
+    point.position.set(...scene.point.position);
+    const rect = new THREE.RectAreaLight(0xffffff, scene.rect.intensity, scene.rect.width, scene.rect.height);
+    rect.position.set(...scene.rect.position);
+    rect.lookAt(0, 0, 0);
+    return [point, rect];
+  };
+  return { camera, equirect, sphere, lights };
+}
+
+// The reference's ShaderMaterial (WebGLRenderer) for `material` ({ roughness, f0, exactFresnel }
+// or the inlay's { roughness } with its maps); lut: matc_lut as a texture (channel 0: the lobe's
+// albedo, for the multiple-scattering factor).
+export function referenceMaterial(THREE, scene, equirect, lut, material, maps = null) {
+  const rect = rectLightGeometry(scene.rect);
+  const vector = (v) => new THREE.Vector3(...v);
+  const uniforms = {
+    reference_environment: { value: equirect }, reference_albedo: { value: lut },
+    reference_roughness: { value: material.roughness },
+    reference_point_position: { value: vector(scene.point.position) },
+    reference_point_intensity: { value: scene.point.intensity },
+    reference_rect_origin: { value: vector(rect.origin) }, reference_rect_u: { value: vector(rect.edgeU) },
+    reference_rect_v: { value: vector(rect.edgeV) }, reference_rect_normal: { value: vector(rect.normal) },
+    reference_rect_intensity: { value: scene.rect.intensity },
+    reference_environment_samples: { value: scene.samples.environment },
+    reference_rect_side: { value: scene.samples.rectSide },
+    reference_lut_size: { value: lut.image.width },
+    reference_textured: { value: maps ? 1 : 0 }, reference_f0: { value: vector(material.f0 ?? [0, 0, 0]) },
+  };
+  if (maps) {
+    uniforms.reference_reflectivity_map = { value: maps.reflectivity };
+    uniforms.reference_edge_tint_map = { value: maps.edgeTint };
+  } else {
+    const fresnel = new THREE.DataTexture(new Float32Array(material.exactFresnel), material.exactFresnel.length / 4, 1,
+                                          THREE.RGBAFormat, THREE.FloatType);
+    fresnel.magFilter = fresnel.minFilter = THREE.LinearFilter;
+    fresnel.needsUpdate = true;
+    uniforms.reference_fresnel = { value: fresnel };
+  }
+  // three.js widens roughness by the normal's derivative: the reference shades with it too.
+  return new THREE.ShaderMaterial({ glslVersion: THREE.GLSL3, uniforms, vertexShader: kReferenceVertexShader,
+                                    fragmentShader: kReferenceFragmentShader,
+                                    defines: { REFERENCE_GEOMETRY_ROUGHNESS: "" } });
+}
+
+// The inlay's sRGB maps (rows as stored, like the bake's KTX2 files).
+export async function inlayMaps(THREE) {
+  const loader = new THREE.TextureLoader();
+  const map = async (url) => {
+    const texture = await loader.loadAsync(url);
+    texture.colorSpace = THREE.SRGBColorSpace;
+    texture.flipY = false;
+    return texture;
+  };
+  return { reflectivity: await map("/textured/maps/inlaid_metals_r.png"),
+           edgeTint: await map("/textured/maps/inlaid_metals_g.png") };
+}
