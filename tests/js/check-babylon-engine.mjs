@@ -10,11 +10,10 @@ import { readFileSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
 import { modulePage } from "./browser-page.mjs";
-import { kProbeSize, runProbeCheck } from "./engine-probes.mjs";
+import { kProbeRectLight, kProbeSize, runProbeCheck } from "./engine-probes.mjs";
 
 // Babylon's RectAreaLight: a centre, its width along world x and height along world y; it lights
 // the side towards -z (Babylon's winding), here the plane below it.
-const kRectLight = { position: [-0.4, 0.3, 0.9], width: 0.8, height: 0.5, intensity: 2.0 };
 const rectCorners = ({ position: [x, y, z], width, height }) => {
   const w = width / 2, h = height / 2;
   return [[x + w, y - h, z], [x - w, y - h, z], [x - w, y + h, z], [x + w, y + h, z]];
@@ -150,5 +149,5 @@ await runProbeCheck({
   name: "Babylon.js", label: `Babylon.js ${babylonVersion()} PBRMaterial`, page: kPage,
   alphaOf: (r) => r * r + 0.0005,  // Babylon's GGX alpha: roughness squared plus its minimum variance
   // Babylon's energy conservation scales area lights' specular too.
-  rect: { light: kRectLight, corners: rectCorners(kRectLight), compensated: true },
+  rect: { light: kProbeRectLight, corners: rectCorners(kProbeRectLight), compensated: true },
 }, process.argv.slice(2));

@@ -12,11 +12,9 @@
 // and a three.js whose patched chunk changed; each must throw and write to the console.
 //   node check-three-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
 import { modulePage, threeVersion } from "./browser-page.mjs";
-import { kProbeSize, runProbeCheck } from "./engine-probes.mjs";
+import { kProbeRectLight, kProbeSize, runProbeCheck } from "./engine-probes.mjs";
 import { rectLightGeometry } from "./engine-scene.mjs";
 
-// three.js's RectAreaLight looks at the origin from here (its corners: rectLightGeometry).
-const kRectLight = { position: [-0.4, 0.3, 0.9], width: 0.8, height: 0.5, intensity: 2.0 };
 
 const kPage = (config) => modulePage(config, {
   head: `import * as THREE from "three";
@@ -96,5 +94,5 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
 await runProbeCheck({
   name: "three.js", label: `three.js ${threeVersion()} MeshPhysicalMaterial`, page: kPage,
   alphaOf: (r) => Math.max(r, 0.045) ** 2,  // three.js's GGX alpha: roughness clamped at 0.045, squared
-  rect: { light: kRectLight, corners: rectLightGeometry(kRectLight).corners },
+  rect: { light: kProbeRectLight, corners: rectLightGeometry(kProbeRectLight).corners },  // looks at the origin
 }, process.argv.slice(2));

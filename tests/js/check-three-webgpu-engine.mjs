@@ -1,18 +1,19 @@
 // matc's Fresnel in three.js's WebGPURenderer (examples/web/three/matc-three-webgpu.mjs: three's
 // PhysicalLightingModel with matc's WGSL library through wgslFn), on WebGPU in headless Chromium
 // (Dawn on SwiftShader), at the probe pixels of tests/js/engine-probes.mjs under the white
-// environment and the point light, for the Figure 2 material and beryllium at two roughnesses, a
-// textured metal through the coefficient table and a `matc bake` result, against the CPU runtime
-// to 1e-4. (Its rect lights use three's LTC shape, which the CPU runtime
-// does not model.) WebGPU's adapter and device do not settle under Chromium's virtual time: the
-// page runs in real time and posts its result.
+// environment, the point light and the rect area light (matc's LTC), for the Figure 2 material and
+// beryllium at two roughnesses, a textured metal through the coefficient table and a `matc bake`
+// result, against the CPU runtime to 1e-4. WebGPU's adapter and device do not settle under
+// Chromium's virtual time: the page runs in real time and posts its result.
 //   node check-three-webgpu-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
 import { modulePage, threeVersion } from "./browser-page.mjs";
-import { kProbeSize, runProbeCheck } from "./engine-probes.mjs";
+import { kProbeRectLight, kProbeSize, runProbeCheck } from "./engine-probes.mjs";
+import { rectLightGeometry } from "./engine-scene.mjs";
 
 const kPage = (config) => modulePage(config, {
   head: `import * as THREE from "three/webgpu";
 import { read as readKtx2 } from "ktx-parse";
+import { RectAreaLightTexturesLib } from "three/addons/lights/RectAreaLightTexturesLib.js";
 import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three-webgpu.mjs";
 import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";`,
   body: `
@@ -26,6 +27,7 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
   const renderer = new THREE.WebGPURenderer({ canvas: document.createElement("canvas"), device });
   await renderer.init();
   if (!renderer.backend.isWebGPUBackend) throw new Error("WebGPURenderer fell back to WebGL2");
+  THREE.RectAreaLightNode.setLTC(RectAreaLightTexturesLib.init());
   const build = await loadMatcBuild("/out/");
   const target = new THREE.RenderTarget(${kProbeSize}, ${kProbeSize}, { type: THREE.FloatType });
   const camera = new THREE.PerspectiveCamera(90, 1, 0.1, 10);
@@ -63,6 +65,12 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
       light.position.set(...config.point.position);
       scene.add(light);
     }
+    if (render.light === "rect") {
+      const light = new THREE.RectAreaLight(0xffffff, config.rect.intensity, config.rect.width, config.rect.height);
+      light.position.set(...config.rect.position);
+      light.lookAt(0, 0, 0);
+      scene.add(light);
+    }
     renderer.setRenderTarget(target);
     await renderer.renderAsync(scene, camera);
     const pixels = [];
@@ -81,15 +89,12 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
       // A three.js whose metal image lighting no longer goes through computeMultiscattering.
       lightingModel.indirectSpecular = function (builder) { return original.call(this, builder); };
       return () => { lightingModel.indirectSpecular = original; };
-    },
-    skip: ["unknown_area_light_option"] });`,
+    } });`,
 });
 
 await runProbeCheck({
   name: "three.js WebGPURenderer", label: `three.js ${threeVersion()} WebGPURenderer MeshPhysicalNodeMaterial`,
   page: kPage, alphaOf: (r) => Math.max(r, 0.045) ** 2,
-  keep: (render) => render.light !== "rect",
-  // areaLights has one value on WebGPURenderer ("engine"): the shared case's message differs.
-  skipBadInputs: ["unknown_area_light_option"],
+  rect: { light: kProbeRectLight, corners: rectLightGeometry(kProbeRectLight).corners },  // looks at the origin
   runPage: { realTime: true, budgetMs: 120000, browserArgs: ["--enable-unsafe-webgpu", "--use-webgpu-adapter=swiftshader"] },
 }, process.argv.slice(2));

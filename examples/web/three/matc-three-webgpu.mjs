@@ -1,7 +1,7 @@
 // matc's Fresnel in three.js's WebGPURenderer: a MeshStandardNodeMaterial or
 // MeshPhysicalNodeMaterial whose lighting model is three's PhysicalLightingModel with matc's Fresnel
-// in punctual lights, image lighting (with matc's energy compensation) and rect area lights (three's
-// LTC shape times sum_i c_i bbar_i). The Fresnel is the WGSL library matc writes
+// in punctual lights, image lighting (with matc's energy compensation) and rect area lights (matc's
+// LTC table and integral times sum_i c_i bbar_i, or three's LTC shape times it). The Fresnel is the WGSL library matc writes
 // (matc_fresnel.wgsl) called through wgslFn, so every basis works as compiled; coefficients from a
 // compiled material, from maps through the coefficient table, or from `matc bake` textures.
 //
@@ -11,7 +11,7 @@
 //                               { material: await build.loadMaterial("gold") });
 import * as THREE from "three/webgpu";
 import { BRDF_GGX, LTC_Evaluate, LTC_Uv, diffuseColor, float, mat3, normalView, positionView,
-         positionViewDirection, roughness, texture, uniform, uv, vec3, vec4, wgsl, wgslFn } from "three/tsl";
+         positionViewDirection, roughness, step, texture, uniform, uv, vec3, vec4, wgsl, wgslFn } from "three/tsl";
 import { sampleTrilinearly, tableTexture } from "./textures.mjs";
 import { MatcWebError, checkAnchors, checkAreaLights, loadMatcBuildFiles, rgbOf, sourceKind } from "../matc-build.mjs";
 
@@ -33,7 +33,7 @@ const kOverrides = [
   { source: "direct", anchor: "direct( { lightDirection, lightColor, reflectedLight }",
     what: "punctual lights: three's GGX with matc's F(v.h)" },
   { source: "directRectArea", anchor: "directRectArea( { lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1",
-    what: "rect area lights: three's LTC shape times sum_i c_i bbar_i" },
+    what: "rect area lights: matc's LTC (or three's LTC shape) times sum_i c_i bbar_i" },
 ];
 
 function checkLightingModel() {
@@ -48,11 +48,12 @@ function checkLightingModel() {
                `three.js r${kTestedThreeRevisions.join(", r")}`);
 }
 
-// Reads a matc build directory (`matc -o DIR`, with wgsl, json and lut among --emit).
-
+// Reads a matc build directory (`matc -o DIR`, with wgsl, json and lut among --emit; ltc for rect
+// area lights, coefficient-table for textured metals).
 export async function loadMatcBuild(url) {
   const files = await loadMatcBuildFiles(url, { language: "wgsl" });
   const lut = tableTexture(THREE, files.lut);
+  const ltc = files.ltc && tableTexture(THREE, files.ltc);
   const coefficientTable = files.coefficientTable && tableTexture(THREE, files.coefficientTable);
   // The library once, and the entry points the lighting model calls (coefficients as three rows).
   const library = wgsl(files.library);
@@ -74,7 +75,15 @@ export async function loadMatcBuild(url) {
     channel: wgslFn("fn matc_three_channel(r: f32, texel: vec2f) -> vec4f { " +
                     "return matc_channel_coefficients(r, texel); }", [library]),
   };
-  return { ...files, lut, coefficientTable, functions };
+  if (ltc) {
+    // Rect area lights (the library has matc's LTC functions when the build wrote its table).
+    functions.ltcTexcoord = wgslFn("fn matc_three_ltc_texcoord(ndotv: f32, roughness: f32) -> vec2f { " +
+                                   "return matc_ltc_texcoord(ndotv, roughness); }", [library]);
+    functions.quadLight = entry("matc_three_quad_light", "bbar: vec4f, ltc: vec4f, N: vec3f, V: vec3f, P: vec3f, " +
+                                "q0: vec3f, q1: vec3f, q2: vec3f, q3: vec3f", "vec3f",
+                                `matc_ltc_quad_light(${coefficients}, bbar, ltc, N, V, P, q0, q1, q2, q3)`);
+  }
+  return { ...files, lut, ltc, coefficientTable, functions };
 }
 
 // three's physical lighting with matc's Fresnel; `matc` holds the coefficient rows (uniform nodes),
@@ -118,7 +127,8 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
         dotNL.mul(lightColor).mul(ggx).mul(fresnel).mul(this.multiScatteringCompensation));
   }
 
-  // Rect area lights: three's LTC shape times sum_i c_i bbar_i.
+  // Rect area lights: matc's LTC table and horizon-clipped integral times sum_i c_i bbar_i,
+  // one-sided like three's (areaLights "matc"), or three's LTC shape times it ("engine").
   directRectArea({ lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1 }) {
     this.matcTerms();
     const p0 = lightPosition.add(halfWidth).sub(halfHeight);
@@ -128,6 +138,15 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
     const N = normalView;
     const V = positionViewDirection;
     const P = positionView.toVar();
+    if (this.matc.areaLights === "matc") {
+      const { functions, ltc, rows, url } = this.matc;
+      if (!ltc) throw new MatcWebError(`${url}: rect area lights need matc's LTC table; compile with --emit ltc`);
+      const texel = texture(ltc, functions.ltcTexcoord({ ndotv: N.dot(V).clamp(), roughness }));
+      const lit = step(0, p1.sub(p0).cross(p3.sub(p0)).dot(P.sub(p0)));
+      const radiance = functions.quadLight({ ...rows, bbar: this.matcBbar, ltc: texel, N, V, P, q0: p0, q1: p1, q2: p2, q3: p3 });
+      reflectedLight.directSpecular.addAssign(lightColor.mul(radiance).mul(lit));
+      return;
+    }
     const t1 = ltc_1.sample(LTC_Uv({ N, V, roughness })).toVar();
     const mInv = mat3(vec3(t1.x, 0, t1.y), vec3(0, 1, 0), vec3(t1.z, 0, t1.w)).toVar();
     reflectedLight.directSpecular.addAssign(
@@ -166,21 +185,24 @@ function coefficientRows(build, source) {
 // matc-three.mjs takes them. Returns the material; material.userData.matc.rows holds the
 // coefficient nodes (a compiled material's are uniforms: their .value can change without
 // recompiling).
-// options.areaLights: "engine" only (three's LTC shape with matc's Fresnel).
-export function useMatcFresnel(material, build, source, { areaLights = "engine" } = {}) {
-  checkAreaLights(areaLights, ["engine"]);  // WebGPURenderer: three's LTC shape only
+// options.areaLights: "matc" (default: matc's LTC table and horizon-clipped integral, checked
+// against the CPU runtime) or "engine" (three's LTC shape with matc's Fresnel: cheaper;
+// docs/web-engines.md measures both).
+export function useMatcFresnel(material, build, source, { areaLights = "matc" } = {}) {
+  checkAreaLights(areaLights);
   if (!material?.isMeshStandardNodeMaterial) {
     throw new MatcWebError("useMatcFresnel (WebGPU) takes a MeshStandardNodeMaterial or MeshPhysicalNodeMaterial");
   }
   if (!build?.functions) throw new MatcWebError("useMatcFresnel (WebGPU) needs this module's loadMatcBuild");
   checkLightingModel();
-  const matc = { rows: coefficientRows(build, source), functions: build.functions, lut: build.lut };
+  const matc = { rows: coefficientRows(build, source), functions: build.functions, lut: build.lut, ltc: build.ltc,
+                 url: build.url, areaLights };
   material.metalness = 1;
   material.metalnessNode = null;
   material.setupLightingModel = () => new MatcPhysicalLightingModel(matc, material);
   material.userData.matc = matc;
   // The coefficients are this material's uniforms: no pipeline shared with another material.
-  material.customProgramCacheKey = () => `matc:${material.uuid}`;
+  material.customProgramCacheKey = () => `matc:${material.uuid}:${areaLights}`;
   material.needsUpdate = true;
   return material;
 }
