@@ -1,8 +1,10 @@
 // The area-light study of docs/ltc.md: how well the LTC table fits GGX (per roughness band, the
 // L1 distance and the polygon-light error of each texel), and LTC with ours, with Schlick's and
 // with the exact preintegrated Fresnel against the exact integral over a grid of views,
-// roughnesses and quad lights, for every material given. With --compare-objectives it also fits
-// a table with Heitz et al.'s objective (cubed differences) in-process and shows both fits.
+// roughnesses and quad lights, for every material given. Every table is also scored on random
+// quad lights none of the fits saw (lobe_polygons.h). With --compare-objectives it also fits tables
+// to the densities' L1 distance (shipped before issue #31) and Heitz et al.'s objective (cubed
+// differences) in-process and shows all three with the shipped one (polygon objective).
 //   matc_area_light_study [--samples N] [--compare-objectives] FILES...
 #include <algorithm>
 #include <array>
@@ -17,6 +19,7 @@
 #include "matc/compile.h"
 #include "matc/emit/build.h"
 #include "matc/ltc/area_light_reference.h"
+#include "matc/ltc/lobe_polygons.h"
 #include "matc/ltc/ltc_fit.h"
 #include "matc/ltc/polygon_light.h"
 #include "matc/lut/comparison_lobes.h"
@@ -84,14 +87,18 @@ Sums study_material(const matc::CompiledMaterial& compiled, const matc::Lut& lut
   return sums;
 }
 
-// Per roughness band: the mean and largest L1 distance and polygon error of the table's texels.
+// Per roughness band: the mean and largest L1 distance, polygon error and held-out error of the
+// table's texels.
 void print_fit_quality(const char* label, const matc::runtime::LtcTableView& table,
-                       std::size_t samples) {
+                       std::size_t samples, const matc::TexelPolygons& held_out) {
   const std::vector<double> polygon = matc::ltc_polygon_errors(table, samples);
+  const std::vector<matc::PolygonSetError> held_out_errors =
+      matc::ltc_held_out_errors(table, held_out);
   constexpr std::array<std::array<double, 2>, 4> kBands = {
       {{0.0, 0.25}, {0.25, 0.5}, {0.5, 0.75}, {0.75, 1.0001}}};
   for (const auto& [low, high] : kBands) {
     double l1_sum = 0, l1_max = 0, polygon_sum = 0, polygon_max = 0, grazing_l1 = 0;
+    double held_out_sum = 0, held_out_max = 0, grazing_held_out = 0;
     std::size_t count = 0, grazing = 0;
     for (std::size_t y = 0; y < table.size; ++y) {
       const double roughness = matc::ltc_texel_roughness(y, table.size);
@@ -102,11 +109,15 @@ void print_fit_quality(const char* label, const matc::runtime::LtcTableView& tab
         const double l1 =
             matc::evaluate_ltc_cell({t[0], t[1], t[2], t[3]}, ndotv, roughness).l1_distance;
         const double error = polygon[y * table.size + x];
+        const matc::PolygonSetError& held = held_out_errors[y * table.size + x];
         if (ndotv < 0.1) {
           grazing_l1 += l1;
+          grazing_held_out += held.mean;
           ++grazing;
           continue;
         }
+        held_out_sum += held.mean;
+        held_out_max = std::max(held_out_max, held.max);
         l1_sum += l1;
         l1_max = std::max(l1_max, l1);
         polygon_sum += error;
@@ -114,34 +125,45 @@ void print_fit_quality(const char* label, const matc::runtime::LtcTableView& tab
         ++count;
       }
     }
-    fmt::print("| {} | {:.2f}-{:.2f} | {:.3f} | {:.3f} | {:.4f} | {:.4f} | {:.3f} |\n", label, low,
-               std::min(high, 1.0), l1_sum / static_cast<double>(count), l1_max,
-               polygon_sum / static_cast<double>(count), polygon_max,
-               grazing_l1 / static_cast<double>(std::max<std::size_t>(grazing, 1)));
+    const double n = static_cast<double>(count);
+    const double grazing_n = static_cast<double>(std::max<std::size_t>(grazing, 1));
+    fmt::print(
+        "| {} | {:.2f}-{:.2f} | {:.3f} | {:.3f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.3f} | "
+        "{:.4f} |\n",
+        label, low, std::min(high, 1.0), l1_sum / n, l1_max, polygon_sum / n, polygon_max,
+        held_out_sum / n, held_out_max, grazing_l1 / grazing_n, grazing_held_out / grazing_n);
   }
 }
 
+// The grid for every material with each table: with one table, the Fresnel's share and every
+// estimate's error; with several, LTC's own error (LTC x exact Fbar) per table.
 void print_grid(const std::vector<matc::CompiledMaterial>& materials, const matc::Lut& lut,
-                const matc::Lut& lobe_lut, const matc::runtime::LtcTableView& ltc,
+                const matc::Lut& lobe_lut, const std::vector<matc::runtime::LtcTableView>& tables,
                 std::size_t samples, bool fresnel_columns) {
-  std::vector<std::future<Sums>> results;
-  for (const matc::CompiledMaterial& compiled : materials) {
-    results.push_back(std::async(std::launch::async, [&, samples] {
-      return study_material(compiled, lut, lobe_lut, ltc, samples);
-    }));
+  std::vector<std::vector<std::future<Sums>>> results(materials.size());
+  for (std::size_t m = 0; m < materials.size(); ++m) {
+    for (const matc::runtime::LtcTableView& ltc : tables) {
+      results[m].push_back(std::async(std::launch::async, [&, m, ltc, samples] {
+        return study_material(materials[m], lut, lobe_lut, ltc, samples);
+      }));
+    }
   }
   for (std::size_t m = 0; m < materials.size(); ++m) {
-    const Sums s = results[m].get();
-    const double n = static_cast<double>(s.count);
-    const auto relative = [&](double sum) { return 100.0 * sum / s.reference; };
-    if (fresnel_columns) {
-      fmt::print("| {} | {:.5f} | {:.5f} | {:.3f} | {:.2f}% | {:.2f}% | {:.2f}% | {} |\n",
-                 materials[m].material.name, s.schlick_fresnel / n, s.ours_fresnel / n,
-                 s.ours_fresnel / s.schlick_fresnel, relative(s.schlick), relative(s.ours),
-                 relative(s.ltc_exact), s.ours <= s.schlick ? "yes" : "no");
-    } else {
-      fmt::print("| {} | {:.2f}% |\n", materials[m].material.name, relative(s.ltc_exact));
+    std::string row = fmt::format("| {} |", materials[m].material.name);
+    for (auto& result : results[m]) {
+      const Sums s = result.get();
+      const double n = static_cast<double>(s.count);
+      const auto relative = [&](double sum) { return 100.0 * sum / s.reference; };
+      if (fresnel_columns) {
+        row += fmt::format(
+            " {:.5f} | {:.5f} | {:.3f} | {:.2f}% | {:.2f}% | {:.2f}% | {} |", s.schlick_fresnel / n,
+            s.ours_fresnel / n, s.ours_fresnel / s.schlick_fresnel, relative(s.schlick),
+            relative(s.ours), relative(s.ltc_exact), s.ours <= s.schlick ? "yes" : "no");
+      } else {
+        row += fmt::format(" {:.2f}% |", relative(s.ltc_exact));
+      }
     }
+    fmt::print("{}\n", row);
   }
 }
 
@@ -152,10 +174,16 @@ int main(int argc, char** argv) {
   std::vector<std::string> files;
   std::size_t samples = 1u << 14;
   bool compare = false;
+  std::size_t held_out_count = 32, held_out_samples = 16384;
   app.add_option("files", files, "Material files (.json)")->required();
   app.add_option("--samples", samples, "Reference sample pairs per light")->capture_default_str();
   app.add_flag("--compare-objectives", compare,
-               "Also fit a table with Heitz et al.'s objective and compare the two");
+               "Also fit tables with Heitz et al.'s objective and the polygon objective and "
+               "compare the three");
+  app.add_option("--held-out", held_out_count, "Held-out quad lights per texel")
+      ->capture_default_str();
+  app.add_option("--held-out-samples", held_out_samples, "Reference sample pairs per held-out quad")
+      ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   const matc::Build build(matc::BuildOptions{});
@@ -171,20 +199,40 @@ int main(int argc, char** argv) {
     materials.push_back(matc::compile_material(*parsed.material, build.basis()));
   }
   const matc::runtime::LtcTableView shipped = matc::runtime::shipped_ltc_table();
-  matc::LtcTable heitz;
-  if (compare) heitz = matc::fit_ltc_table({shipped.size, 0, matc::LtcObjective::l3});
+  matc::LtcTable l1, heitz;
+  if (compare) {
+    l1 = matc::fit_ltc_table({shipped.size, 0, matc::LtcObjective::l1});
+    heitz = matc::fit_ltc_table({shipped.size, 0, matc::LtcObjective::l3});
+  }
+  const matc::TexelPolygons held_out =
+      matc::held_out_polygons(shipped.size, held_out_count, held_out_samples);
+  double noise = 0;
+  std::size_t quads = 0;
+  for (const auto& texel : held_out) {
+    for (const matc::LobePolygon& polygon : texel) {
+      noise += polygon.share_error;
+      ++quads;
+    }
+  }
 
   fmt::print(
       "The LTC table's fit per roughness band, texels with NdotV >= 0.1 (the grazing columns "
       "apart): the L1 distance between the normalised GGX lobe and the LTC (0 to 2; half of it "
       "bounds the error over any light, relative to the albedo), and the polygon-light error "
       "(the largest of three squares' |E I_ltc - integral of f cos|, relative to the albedo E, "
-      "{} reference samples):\n\n"
-      "| table | roughness | L1: mean | L1: max | polygon: mean | polygon: max | L1 at NdotV < "
-      "0.1: mean |\n|---|---|---:|---:|---:|---:|---:|\n",
-      samples);
-  print_fit_quality("shipped (L1 objective)", shipped, samples);
-  if (compare) print_fit_quality("Heitz et al.'s objective", heitz.view(), samples);
+      "{} reference samples), and the same error over {} random quad lights per texel that no "
+      "fit saw (held out: the mean over texels of each texel's mean, and the largest; "
+      "references of {} sample pairs, standard error {:.4f} on average):\n\n"
+      "| table | roughness | L1: mean | L1: max | polygon: mean | polygon: max | held out: mean | "
+      "held out: max | L1 at NdotV < 0.1: mean | held out at NdotV < 0.1: mean |\n"
+      "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+      samples, held_out_count, held_out_samples,
+      noise / static_cast<double>(std::max<std::size_t>(quads, 1)));
+  print_fit_quality("shipped (polygon objective)", shipped, samples, held_out);
+  if (compare) {
+    print_fit_quality("L1 objective", l1.view(), samples, held_out);
+    print_fit_quality("Heitz et al.'s objective", heitz.view(), samples, held_out);
+  }
 
   fmt::print(
       "\nEach material over {} views x {} roughnesses x 4 quad lights (towards the mirror "
@@ -195,12 +243,15 @@ int main(int argc, char** argv) {
       "Schlick's | LTC x ours | LTC x exact Fbar | ours <= Schlick's |\n"
       "|---|---:|---:|---:|---:|---:|---:|---|\n",
       kNdotV.size(), kRoughness.size(), samples);
-  print_grid(materials, build.stored_lut(), lobe_lut, shipped, samples, true);
+  print_grid(materials, build.stored_lut(), lobe_lut, {shipped}, samples, true);
   if (compare) {
     fmt::print(
-        "\nLTC's own error (LTC x exact Fbar against the exact integral, relative) with the table "
-        "fitted to Heitz et al.'s objective:\n\n| material | LTC x exact Fbar |\n|---|---:|\n");
-    print_grid(materials, build.stored_lut(), lobe_lut, heitz.view(), samples, false);
+        "\nLTC's own error (LTC x exact Fbar against the exact integral, relative) with each "
+        "table:\n\n| material | shipped (polygon objective) | L1 objective | Heitz et al.'s "
+        "objective |\n"
+        "|---|---:|---:|---:|\n");
+    print_grid(materials, build.stored_lut(), lobe_lut, {shipped, l1.view(), heitz.view()}, samples,
+               false);
   }
   return 0;
 }

@@ -16,7 +16,7 @@ export const kProbeMaterials = ["figure2_edge_tint", "beryllium"];
 export const kPointLight = { position: [0.3, 0.2, 0.8], intensity: 0.7 };
 // A rect area light above the probe plane: centre, size and radiance (each engine places its
 // corners: three.js's looks at the origin, Babylon's faces -z).
-export const kProbeRectLight = { position: [-0.4, 0.3, 0.9], width: 0.8, height: 0.5, intensity: 2.0 };
+export const kProbeRectLight = { position: [-0.4, 0.3, 0.9], width: 0.8, height: 0.5, intensity: 4.0 };
 export const kTextured = { reflectivity: [0.9, 0.6, 0.3], edgeTint: [0.8, 0.5, 0.2] };
 export const kBaked = { reflectivity: [0.95, 0.64, 0.54], edgeTint: [1.0, 0.75, 0.4] };
 
@@ -177,7 +177,7 @@ export function compareProbes(renders, expected) {
     }));
     // Every light must reach the probes (a light that lit nothing would pass trivially).
     const lit = pixels.filter((rgb) => rgb.some((value) => value > 1e-3)).length;
-    check(lit >= 3, `${key}: only ${lit} of ${kProbePixels.length} probes lit`);
+    check(lit >= 3, `${key}: only ${lit} of ${kProbePixels.length} probes lit (${JSON.stringify(pixels)})`);
   }
   return worst;
 }

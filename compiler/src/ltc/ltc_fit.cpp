@@ -10,6 +10,7 @@
 #include "lut/header_arrays.h"
 #include "matc/ltc/area_light_reference.h"
 #include "matc/ltc/ggx_lobe.h"
+#include "matc/ltc/lobe_polygons.h"
 #include "matc/ltc/polygon_light.h"
 #include "matc/version.h"
 #include "nelder_mead.h"
@@ -21,6 +22,7 @@ namespace {
 constexpr double kMinShape = 1e-7;  // m11, m22 stay positive
 constexpr std::size_t kMaxIterations = 400;
 constexpr double kRelativeTolerance = 1e-6;
+constexpr double kPolygonFitL1Slack = 1.5;
 
 // M = [X Y Z] S for a lobe axis Z = (zx, 0, zz), X = (zz, 0, -zx), Y = (0, 1, 0).
 struct LtcMatrix {
@@ -144,31 +146,10 @@ Errors fit_errors(const GgxLobe& lobe, const FitSamples& s, const LtcMatrix& m) 
   return {e.cubed / count, e.absolute / count};
 }
 
-}  // namespace
-
-LtcCellFit evaluate_ltc_cell(const runtime::LtcInverse& inverse, double ndotv, double roughness) {
-  const GgxLobe lobe(ndotv, roughness);
-  const LtcShape shape = shape_of(inverse);
-  const Errors errors = fit_errors(lobe, make_samples(lobe), LtcMatrix(shape));
-  return {inverse, shape, errors.cubed, errors.absolute};
-}
-
-double ltc_texel_ndotv(std::size_t x, std::size_t size) {
-  return runtime::lut_ndotv_from_u(static_cast<double>(x) / static_cast<double>(size - 1));
-}
-
-double ltc_texel_roughness(std::size_t y, std::size_t size) {
-  return static_cast<double>(y) / static_cast<double>(size - 1);
-}
-
-LtcCellFit fit_ltc_cell(double ndotv, double roughness, const LtcShape& first_guess, bool isotropic,
-                        LtcObjective objective) {
-  const GgxLobe lobe(ndotv, roughness);
-  const FitSamples samples = make_samples(lobe);
-  const auto minimised = [&](const LtcShape& shape) {
-    const Errors errors = fit_errors(lobe, samples, LtcMatrix(shape));
-    return objective == LtcObjective::l1 ? errors.absolute : errors.cubed;
-  };
+// Nelder-Mead from `first_guess` over m11 = m22 alone (isotropic) or the whole shape.
+template <typename Minimised>
+LtcCellFit fit_shape(const GgxLobe& lobe, const FitSamples& samples, const LtcShape& first_guess,
+                     bool isotropic, const Minimised& minimised) {
   LtcShape shape = first_guess;
   if (isotropic) {
     const auto best = nelder_mead_minimum<1>(
@@ -192,6 +173,50 @@ LtcCellFit fit_ltc_cell(double ndotv, double roughness, const LtcShape& first_gu
   const LtcMatrix matrix(shape);
   const Errors errors = fit_errors(lobe, samples, matrix);
   return {matrix.normalized_inverse(), shape, errors.cubed, errors.absolute};
+}
+
+}  // namespace
+
+LtcCellFit evaluate_ltc_cell(const runtime::LtcInverse& inverse, double ndotv, double roughness) {
+  const GgxLobe lobe(ndotv, roughness);
+  const LtcShape shape = shape_of(inverse);
+  const Errors errors = fit_errors(lobe, make_samples(lobe), LtcMatrix(shape));
+  return {inverse, shape, errors.cubed, errors.absolute};
+}
+
+double ltc_texel_ndotv(std::size_t x, std::size_t size) {
+  return runtime::lut_ndotv_from_u(static_cast<double>(x) / static_cast<double>(size - 1));
+}
+
+double ltc_texel_roughness(std::size_t y, std::size_t size) {
+  return static_cast<double>(y) / static_cast<double>(size - 1);
+}
+
+LtcCellFit fit_ltc_cell(double ndotv, double roughness, const LtcShape& first_guess, bool isotropic,
+                        LtcObjective objective) {
+  const GgxLobe lobe(ndotv, roughness);
+  const FitSamples samples = make_samples(lobe);
+  if (objective == LtcObjective::polygons) {
+    // From the L1 fit (a shape near the lobe everywhere), the mean error over the training quads.
+    const LtcCellFit start =
+        fit_ltc_cell(ndotv, roughness, first_guess, isotropic, LtcObjective::l1);
+    const std::vector<LobePolygon> polygons = lobe_polygons(
+        lobe, samples.albedo, lobe_polygon_seed(kTrainingPolygonSeed, ndotv, roughness),
+        kLtcTrainingPolygons, kLtcTrainingPolygonSamples);
+    // Where the quads say little (a narrow lobe inside most of them), many shapes fit them: the
+    // search stays among shapes whose L1 distance is near the L1 fit's.
+    const double l1_bound = kPolygonFitL1Slack * start.l1_distance + 0.01;
+    return fit_shape(lobe, samples, start.shape, isotropic, [&](const LtcShape& shape) {
+      const LtcMatrix matrix(shape);
+      const double l1 = fit_errors(lobe, samples, matrix).absolute;
+      return ltc_polygon_set_error(matrix.normalized_inverse(), polygons).mean +
+             std::max(0.0, l1 - l1_bound);
+    });
+  }
+  return fit_shape(lobe, samples, first_guess, isotropic, [&](const LtcShape& shape) {
+    const Errors errors = fit_errors(lobe, samples, LtcMatrix(shape));
+    return objective == LtcObjective::l1 ? errors.absolute : errors.cubed;
+  });
 }
 
 LtcTable fit_ltc_table(const LtcFitOptions& options, std::size_t first_row, std::size_t row_count) {

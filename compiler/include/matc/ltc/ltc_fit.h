@@ -1,13 +1,13 @@
 // Fitting the LTC table for GGX (matc/runtime/ltc.h): per (NdotV, roughness) texel, the matrix
 // whose transformed cosine best matches the GGX lobe normalised by its albedo, with Heitz et al.'s
-// parametrisation M = [X Y Z] [[m11, 0, m13], [0, m22, 0], [0, 0, 1]], minimised by Nelder-Mead
-// over densities integrated with samples from both (balance heuristic). Two departures from
-// their fit, both measured in docs/ltc.md: the frame's angle (Z = (sin, 0, cos)) is a fourth free
-// parameter rather than fixed at the lobe's average direction, and the default objective is the L1
-// distance of the densities (twice the largest error over any light) rather than their cubed
-// difference. Rows (roughness) are
-// independent and each sweeps from normal incidence to grazing, starting every texel from the
-// one before, so the table is the same whatever the thread count.
+// parametrisation M = [X Y Z] [[m11, 0, m13], [0, m22, 0], [0, 0, 1]], minimised by Nelder-Mead.
+// Two departures from their fit, both measured in docs/ltc.md: the frame's angle
+// (Z = (sin, 0, cos)) is a fourth free parameter rather than fixed at the lobe's average
+// direction, and the shipped objective scores what is rendered, the LTC's integral over random
+// quad lights against the lobe's (lobe_polygons.h), starting from the fit of the densities' L1
+// distance (integrated with samples from both, balance heuristic) rather than their cubed
+// difference. Rows (roughness) are independent and each sweeps from normal incidence to grazing,
+// starting every texel from the one before, so the table is the same whatever the thread count.
 #pragma once
 
 #include <cstddef>
@@ -37,13 +37,16 @@ struct LtcCellFit {
 };
 
 // What Nelder-Mead minimises: the integral of |D_ggx - D_ltc| (l1) or of its cube (Heitz et
-// al.'s, l3).
-enum class LtcObjective { l1, l3 };
+// al.'s, l3), or what a renderer sees (polygons): the mean error of the LTC's integral over
+// kLtcTrainingPolygons random quads (lobe_polygons.h) relative to the albedo, from the l1 fit.
+enum class LtcObjective { l1, l3, polygons };
+inline constexpr std::size_t kLtcTrainingPolygons = 128;
+inline constexpr std::size_t kLtcTrainingPolygonSamples = 2048;  // reference pairs per quad
 
 struct LtcFitOptions {
   std::size_t size = kDefaultLtcSize;
   unsigned threads = 0;  // 0: one per hardware thread
-  LtcObjective objective = LtcObjective::l1;
+  LtcObjective objective = LtcObjective::polygons;
 };
 
 struct LtcTable {
