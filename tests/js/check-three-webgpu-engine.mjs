@@ -15,19 +15,12 @@ const kPage = (config) => modulePage(config, {
 import { read as readKtx2 } from "ktx-parse";
 import { RectAreaLightTexturesLib } from "three/addons/lights/RectAreaLightTexturesLib.js";
 import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three-webgpu.mjs";
-import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";`,
+import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";
+import { webGpuRenderer } from "/checks/three-scene-page.mjs";`,
   body: `
   out.renders = {};
   recordConsoleErrors(out);
-  if (!navigator.gpu) throw new Error("no WebGPU in this browser");
-  // The page's own device: three's adapter request (featureLevel "compatibility") does not
-  // settle on headless Chromium's SwiftShader adapter.
-  const adapter = await navigator.gpu.requestAdapter();
-  const device = await adapter.requestDevice({ requiredFeatures: [...adapter.features].filter((f) => f === "float32-filterable") });
-  const renderer = new THREE.WebGPURenderer({ canvas: document.createElement("canvas"), device });
-  await renderer.init();
-  if (!renderer.backend.isWebGPUBackend) throw new Error("WebGPURenderer fell back to WebGL2");
-  THREE.RectAreaLightNode.setLTC(RectAreaLightTexturesLib.init());
+  const renderer = await webGpuRenderer(THREE, RectAreaLightTexturesLib);
   const build = await loadMatcBuild("/out/");
   const target = new THREE.RenderTarget(${kProbeSize}, ${kProbeSize}, { type: THREE.FloatType });
   const camera = new THREE.PerspectiveCamera(90, 1, 0.1, 10);

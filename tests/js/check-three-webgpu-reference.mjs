@@ -19,22 +19,14 @@ import { RectAreaLightTexturesLib } from "three/addons/lights/RectAreaLightTextu
 import { KTX2Loader } from "three/addons/loaders/KTX2Loader.js";
 import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three-webgpu.mjs";
 import { loadMatcBuild as loadMatcBuildForWebGL } from "/web/three/matc-three.mjs";
-import { inlayMaps, referenceMaterial, threeScene } from "/checks/three-scene-page.mjs";
+import { inlayMaps, referenceMaterial, threeScene, webGpuRenderer } from "/checks/three-scene-page.mjs";
 `,
   body: `
   const scene = config.scene;
   const size = scene.size;
   out.images = {};
-  if (!navigator.gpu) throw new Error("no WebGPU in this browser");
-  // The page's own device: three's adapter request (featureLevel "compatibility") does not
-  // settle on headless Chromium's SwiftShader adapter.
-  const adapter = await navigator.gpu.requestAdapter();
-  const device = await adapter.requestDevice({ requiredFeatures: [...adapter.features].filter((f) => f === "float32-filterable") });
-  const renderer = new THREE.WebGPURenderer({ canvas: document.createElement("canvas"), device });
-  await renderer.init();
-  if (!renderer.backend.isWebGPUBackend) throw new Error("WebGPURenderer fell back to WebGL2");
+  const renderer = await webGpuRenderer(THREE, RectAreaLightTexturesLib);
   renderer.setClearColor(0x000000, 0);
-  THREE.RectAreaLightNode.setLTC(RectAreaLightTexturesLib.init());
   const build = await loadMatcBuild("/out/");
   const target = new THREE.RenderTarget(size, size, { type: THREE.FloatType });
   const { camera, equirect, sphere, lights } = threeScene(THREE, scene);

@@ -1,9 +1,25 @@
-// In-page helpers (served under /checks/) for the three.js reference pages: the scene of
-// engine-scene.mjs in three.js objects, and its Monte-Carlo reference as a WebGLRenderer
-// ShaderMaterial. check-three-reference.mjs draws everything with WebGLRenderer;
-// check-three-webgpu-reference.mjs draws the reference with WebGLRenderer and the engine's
-// materials with WebGPURenderer. THREE is either namespace ("three" or "three/webgpu": one core).
+// In-page helpers (served under /checks/) for the three.js pages: the scene of engine-scene.mjs in
+// three.js objects, its Monte-Carlo reference as a WebGLRenderer ShaderMaterial, and a
+// WebGPURenderer on headless Chromium's adapter. check-three-reference.mjs draws everything with
+// WebGLRenderer; check-three-webgpu-reference.mjs draws the reference with WebGLRenderer and the
+// engine's materials with WebGPURenderer. THREE is either namespace ("three" or "three/webgpu":
+// one core).
 import { environmentTexels, kReferenceFragmentShader, kReferenceVertexShader, rectLightGeometry } from "./engine-scene.mjs";
+
+// A WebGPURenderer on the page's own device (three's adapter request, featureLevel
+// "compatibility", does not settle on headless Chromium's SwiftShader adapter), with three's LTC
+// tables for rect lights (ltcTables: RectAreaLightTexturesLib). THREE: "three/webgpu".
+export async function webGpuRenderer(THREE, ltcTables) {
+  if (!navigator.gpu) throw new Error("no WebGPU in this browser");
+  const adapter = await navigator.gpu.requestAdapter();
+  const device = await adapter.requestDevice({
+    requiredFeatures: [...adapter.features].filter((feature) => feature === "float32-filterable") });
+  const renderer = new THREE.WebGPURenderer({ canvas: document.createElement("canvas"), device });
+  await renderer.init();
+  if (!renderer.backend.isWebGPUBackend) throw new Error("WebGPURenderer fell back to WebGL2");
+  THREE.RectAreaLightNode.setLTC(ltcTables.init());
+  return renderer;
+}
 
 // scene: the page config's scene (engine-scene.mjs's kScene with the light paths kept).
 export function threeScene(THREE, scene) {

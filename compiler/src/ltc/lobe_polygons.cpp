@@ -8,7 +8,7 @@
 
 #include "matc/ltc/area_light_reference.h"
 #include "matc/ltc/ltc_fit.h"
-#include "parallel_rows.h"
+#include "texel_lobes.h"
 
 namespace matc {
 namespace {
@@ -108,18 +108,14 @@ PolygonSetError ltc_polygon_set_error(const runtime::LtcInverse& inverse,
 TexelPolygons held_out_polygons(std::size_t size, std::size_t count, std::size_t samples,
                                 unsigned threads) {
   TexelPolygons polygons(size * size);
-  fill_rows_in_parallel(size, threads, [&] {
-    return [&](std::size_t y) {
-      const double roughness = ltc_texel_roughness(y, size);
-      for (std::size_t x = 0; x < size; ++x) {
-        const double ndotv = ltc_texel_ndotv(x, size);
-        const GgxLobe lobe(ndotv, roughness);
-        polygons[y * size + x] =
-            lobe_polygons(lobe, lobe.albedo(kLtcFitSamplesPerAxis),
-                          lobe_polygon_seed(kHeldOutPolygonSeed, ndotv, roughness), count, samples);
-      }
-    };
-  });
+  for_each_texel_lobe(size, threads,
+                      [&](std::size_t index, std::size_t, std::size_t, const GgxLobe& lobe,
+                          double ndotv, double roughness) {
+                        polygons[index] =
+                            lobe_polygons(lobe, lobe.albedo(kLtcFitSamplesPerAxis),
+                                          lobe_polygon_seed(kHeldOutPolygonSeed, ndotv, roughness),
+                                          count, samples);
+                      });
   return polygons;
 }
 

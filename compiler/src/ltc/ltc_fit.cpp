@@ -15,6 +15,7 @@
 #include "matc/version.h"
 #include "nelder_mead.h"
 #include "parallel_rows.h"
+#include "texel_lobes.h"
 
 namespace matc {
 namespace {
@@ -267,12 +268,9 @@ std::vector<double> ltc_polygon_errors(const runtime::LtcTableView& table, std::
   const std::size_t size = table.size;
   std::vector<double> errors(size * size, 0.0);
   const FresnelAtCosine one = [](double) { return runtime::Rgb{1.0, 1.0, 1.0}; };
-  fill_rows_in_parallel(size, threads, [&] {
-    return [&](std::size_t y) {
-      const double roughness = ltc_texel_roughness(y, size);
-      for (std::size_t x = 0; x < size; ++x) {
-        const double ndotv = ltc_texel_ndotv(x, size);
-        const GgxLobe lobe(ndotv, roughness);
+  for_each_texel_lobe(
+      size, threads,
+      [&](std::size_t index, std::size_t x, std::size_t y, const GgxLobe& lobe, double, double) {
         const Vec3& v = lobe.view();
         const Vec3 mirror{-v[0], 0.0, v[2]};
         const std::array<Vec3, 3> directions = {
@@ -287,10 +285,8 @@ std::vector<double> ltc_polygon_errors(const runtime::LtcTableView& table, std::
           const double ltc = runtime::ltc_polygon_integral(inverse, square);
           worst = std::max(worst, std::abs(albedo * ltc - reference) / albedo);
         }
-        errors[y * size + x] = worst;
-      }
-    };
-  });
+        errors[index] = worst;
+      });
   return errors;
 }
 

@@ -1,0 +1,28 @@
+// Visiting every texel of an LTC table of `size` with its GGX lobe, rows on several threads
+// (fill_rows_in_parallel: the result does not depend on the thread count): what the scores of a
+// table (ltc_polygon_errors, held_out_polygons) share.
+#pragma once
+
+#include <cstddef>
+
+#include "matc/ltc/ggx_lobe.h"
+#include "matc/ltc/ltc_fit.h"
+#include "parallel_rows.h"
+
+namespace matc {
+
+// visit(index = y * size + x, x, y, lobe, ndotv, roughness) once per texel.
+template <typename Visit>
+void for_each_texel_lobe(std::size_t size, unsigned threads, const Visit& visit) {
+  fill_rows_in_parallel(size, threads, [&] {
+    return [&](std::size_t y) {
+      const double roughness = ltc_texel_roughness(y, size);
+      for (std::size_t x = 0; x < size; ++x) {
+        const double ndotv = ltc_texel_ndotv(x, size);
+        visit(y * size + x, x, y, GgxLobe(ndotv, roughness), ndotv, roughness);
+      }
+    };
+  });
+}
+
+}  // namespace matc
