@@ -100,7 +100,13 @@ AreaLightEstimate integrate_polygon_light(const GgxLobe& lobe, std::span<const V
         value[c] += weight * f[c];
     };
     // From the light's area, then from the lobe.
-    const Vec3 p = polygon.sample(uniform(), uniform(), uniform());
+    // Drawn in sequence: the order in which a call's arguments are evaluated is unspecified
+    // (GCC went right to left, Clang left to right). This is the order GCC's build drew them in,
+    // which the published numbers come from.
+    const double u_triangle_v = uniform();
+    const double u_triangle_u = uniform();
+    const double pick = uniform();
+    const Vec3 p = polygon.sample(pick, u_triangle_u, u_triangle_v);
     const double t = std::sqrt(dot(p, p));
     add({p[0] / t, p[1] / t, p[2] / t}, t);
     const double u1 = uniform(), u2 = uniform();
