@@ -2,7 +2,7 @@
 # Regenerates the area-light study of docs/ltc.md: the LTC fit's quality (the shipped table and one
 # fitted in-process to Heitz et al.'s objective) and LTC with ours, Schlick's and the exact
 # preintegrated Fresnel against the exact integral over a grid, for every example material
-# (about eight minutes on 2 cores: it fits two tables and scores three on held-out quads).
+# (about six minutes on 2 cores: it fits two tables and scores three on held-out quads).
 #   bench/area-light-study.sh [BUILD_DIR]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
