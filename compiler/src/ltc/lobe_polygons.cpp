@@ -15,6 +15,8 @@ namespace {
 
 using runtime::cross;
 using runtime::normalize;
+using runtime::plus;
+using runtime::scaled;
 
 constexpr double kLowestCentre = -0.3;  // z of a quad's centre direction (17 degrees below)
 constexpr double kSmallest = 0.03, kLargest = 1.2;  // half-width over distance
@@ -26,13 +28,6 @@ std::uint64_t mix(std::uint64_t z) {
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
   return z ^ (z >> 31);
-}
-
-Vec3 scaled(const Vec3& v, double s) {
-  return {v[0] * s, v[1] * s, v[2] * s};
-}
-Vec3 sum(const Vec3& a, const Vec3& b) {
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
 }
 
 }  // namespace
@@ -73,15 +68,15 @@ std::vector<LobePolygon> lobe_polygons(const GgxLobe& lobe, double albedo, std::
     const Vec3 across =
         normalize(std::abs(w[2]) < 0.9 ? cross(w, {0.0, 0.0, 1.0}) : cross(w, {1.0, 0.0, 0.0}));
     const Vec3 other = cross(w, across);
-    const Vec3 a = sum(scaled(across, std::cos(turn)), scaled(other, std::sin(turn)));
-    const Vec3 b0 = sum(scaled(across, -std::sin(turn)), scaled(other, std::cos(turn)));
-    const Vec3 b = sum(scaled(b0, std::cos(tilt)), scaled(w, std::sin(tilt)));
+    const Vec3 a = plus(scaled(across, std::cos(turn)), scaled(other, std::sin(turn)));
+    const Vec3 b0 = plus(scaled(across, -std::sin(turn)), scaled(other, std::cos(turn)));
+    const Vec3 b = plus(scaled(b0, std::cos(tilt)), scaled(w, std::sin(tilt)));
     LobePolygon polygon;
     constexpr std::array<std::array<double, 2>, 4> kCorners = {
         {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}};
     for (std::size_t k = 0; k < 4; ++k) {
-      polygon.vertices[k] = sum(w, sum(scaled(a, kCorners[k][0] * half * aspect),
-                                       scaled(b, kCorners[k][1] * half / aspect)));
+      polygon.vertices[k] = plus(w, plus(scaled(a, kCorners[k][0] * half * aspect),
+                                         scaled(b, kCorners[k][1] * half / aspect)));
     }
     const AreaLightEstimate estimate =
         integrate_polygon_light(lobe, polygon.vertices, one, samples, mix(seed + i));

@@ -197,27 +197,28 @@ LtcCellFit fit_ltc_cell(double ndotv, double roughness, const LtcShape& first_gu
                         LtcObjective objective) {
   const GgxLobe lobe(ndotv, roughness);
   const FitSamples samples = make_samples(lobe);
+  // The densities' distance: l3, or l1 (the polygon objective's start).
+  const LtcCellFit density_fit =
+      fit_shape(lobe, samples, first_guess, isotropic, [&](const LtcShape& shape) {
+        const Errors errors = fit_errors(lobe, samples, LtcMatrix(shape));
+        return objective == LtcObjective::l3 ? errors.cubed : errors.absolute;
+      });
   if (objective == LtcObjective::polygons) {
     // From the L1 fit (a shape near the lobe everywhere), the mean error over the training quads.
-    const LtcCellFit start =
-        fit_ltc_cell(ndotv, roughness, first_guess, isotropic, LtcObjective::l1);
     const std::vector<LobePolygon> polygons = lobe_polygons(
         lobe, samples.albedo, lobe_polygon_seed(kTrainingPolygonSeed, ndotv, roughness),
         kLtcTrainingPolygons, kLtcTrainingPolygonSamples);
     // Where the quads say little (a narrow lobe inside most of them), many shapes fit them: the
     // search stays among shapes whose L1 distance is near the L1 fit's.
-    const double l1_bound = kPolygonFitL1Slack * start.l1_distance + 0.01;
-    return fit_shape(lobe, samples, start.shape, isotropic, [&](const LtcShape& shape) {
+    const double l1_bound = kPolygonFitL1Slack * density_fit.l1_distance + 0.01;
+    return fit_shape(lobe, samples, density_fit.shape, isotropic, [&](const LtcShape& shape) {
       const LtcMatrix matrix(shape);
       const double l1 = fit_errors(lobe, samples, matrix).absolute;
       return ltc_polygon_set_error(matrix.normalized_inverse(), polygons).mean +
              std::max(0.0, l1 - l1_bound);
     });
   }
-  return fit_shape(lobe, samples, first_guess, isotropic, [&](const LtcShape& shape) {
-    const Errors errors = fit_errors(lobe, samples, LtcMatrix(shape));
-    return objective == LtcObjective::l1 ? errors.absolute : errors.cubed;
-  });
+  return density_fit;
 }
 
 LtcTable fit_ltc_table(const LtcFitOptions& options, std::size_t first_row, std::size_t row_count) {
