@@ -22,6 +22,7 @@ import { KTX2Loader } from "three/addons/loaders/KTX2Loader.js";
 import { RectAreaLightUniformsLib } from "three/addons/lights/RectAreaLightUniformsLib.js";
 import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three.mjs";
 import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";
+import { probeScene } from "/checks/three-scene-page.mjs";
 `,
   body: `
   out.renders = {};
@@ -53,22 +54,9 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
   sources.baked = { baked: { c2Map: await baked("probe_c2.ktx2"), c3Map: await baked("probe_c3.ktx2"),
                              f0Map: await baked("probe_f0.ktx2") } };
   for (const render of config.renders) {
-    const scene = new THREE.Scene();
     const material = useMatcFresnel(new THREE.MeshPhysicalMaterial({ roughness: render.roughness }),
                                     build, sources[render.source]);
-    scene.add(new THREE.Mesh(new THREE.PlaneGeometry(4, 4), material));
-    if (render.light === "environment") scene.environment = environment;
-    if (render.light === "point") {
-      const light = new THREE.PointLight(0xffffff, config.point.intensity, 0, 2);
-      light.position.set(...config.point.position);
-      scene.add(light);
-    }
-    if (render.light === "rect") {
-      const light = new THREE.RectAreaLight(0xffffff, config.rect.intensity, config.rect.width, config.rect.height);
-      light.position.set(...config.rect.position);
-      light.lookAt(0, 0, 0);
-      scene.add(light);
-    }
+    const scene = probeScene(THREE, material, render.light, config, environment);
     renderer.setRenderTarget(target);
     renderer.render(scene, camera);
     const pixels = [];

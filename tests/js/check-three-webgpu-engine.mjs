@@ -16,7 +16,7 @@ import { read as readKtx2 } from "ktx-parse";
 import { RectAreaLightTexturesLib } from "three/addons/lights/RectAreaLightTexturesLib.js";
 import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three-webgpu.mjs";
 import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";
-import { webGpuRenderer } from "/checks/three-scene-page.mjs";`,
+import { probeScene, webGpuRenderer } from "/checks/three-scene-page.mjs";`,
   body: `
   out.renders = {};
   recordConsoleErrors(out);
@@ -48,22 +48,9 @@ import { webGpuRenderer } from "/checks/three-scene-page.mjs";`,
     baked: { baked: { c2Map: await baked("probe_c2.ktx2"), c3Map: await baked("probe_c3.ktx2"), f0Map: await baked("probe_f0.ktx2") } },
   };
   for (const render of config.renders) {
-    const scene = new THREE.Scene();
     const material = useMatcFresnel(new THREE.MeshPhysicalNodeMaterial({ roughness: render.roughness }), build,
                                     sources[render.source] ?? { material: materials[render.source] });
-    scene.add(new THREE.Mesh(new THREE.PlaneGeometry(4, 4), material));
-    if (render.light === "environment") scene.environment = white;
-    if (render.light === "point") {
-      const light = new THREE.PointLight(0xffffff, config.point.intensity, 0, 2);
-      light.position.set(...config.point.position);
-      scene.add(light);
-    }
-    if (render.light === "rect") {
-      const light = new THREE.RectAreaLight(0xffffff, config.rect.intensity, config.rect.width, config.rect.height);
-      light.position.set(...config.rect.position);
-      light.lookAt(0, 0, 0);
-      scene.add(light);
-    }
+    const scene = probeScene(THREE, material, render.light, config, white);
     renderer.setRenderTarget(target);
     await renderer.renderAsync(scene, camera);
     const pixels = [];

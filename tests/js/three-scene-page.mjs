@@ -1,9 +1,9 @@
 // In-page helpers (served under /checks/) for the three.js pages: the scene of engine-scene.mjs in
-// three.js objects, its Monte-Carlo reference as a WebGLRenderer ShaderMaterial, and a
-// WebGPURenderer on headless Chromium's adapter. check-three-reference.mjs draws everything with
-// WebGLRenderer; check-three-webgpu-reference.mjs draws the reference with WebGLRenderer and the
-// engine's materials with WebGPURenderer. THREE is either namespace ("three" or "three/webgpu":
-// one core).
+// three.js objects, its Monte-Carlo reference as a WebGLRenderer ShaderMaterial, the probe checks'
+// plane scene, and a WebGPURenderer on headless Chromium's adapter. check-three-reference.mjs
+// draws everything with WebGLRenderer; check-three-webgpu-reference.mjs draws the reference with
+// WebGLRenderer and the engine's materials with WebGPURenderer. THREE is either namespace ("three"
+// or "three/webgpu": one core).
 import { environmentTexels, kReferenceFragmentShader, kReferenceVertexShader, rectLightGeometry } from "./engine-scene.mjs";
 
 // A WebGPURenderer on the page's own device (three's adapter request, featureLevel
@@ -21,6 +21,32 @@ export async function webGpuRenderer(THREE, ltcTables) {
   return renderer;
 }
 
+// The scenes' lights as three.js places them: a point light ({ position, intensity }, inverse-square
+// falloff) and a rect light ({ position, width, height, intensity }) looking at the origin.
+export function pointLight(THREE, { position, intensity }) {
+  const light = new THREE.PointLight(0xffffff, intensity, 0, 2);
+  light.position.set(...position);
+  return light;
+}
+
+export function rectLight(THREE, { position, width, height, intensity }) {
+  const light = new THREE.RectAreaLight(0xffffff, intensity, width, height);
+  light.position.set(...position);
+  light.lookAt(0, 0, 0);
+  return light;
+}
+
+// The probe checks' scene (engine-probes.mjs): a plane with `material` under one render's light
+// ("environment": `environment`; "point", "rect": config's lights).
+export function probeScene(THREE, material, light, config, environment) {
+  const scene = new THREE.Scene();
+  scene.add(new THREE.Mesh(new THREE.PlaneGeometry(4, 4), material));
+  if (light === "environment") scene.environment = environment;
+  if (light === "point") scene.add(pointLight(THREE, config.point));
+  if (light === "rect") scene.add(rectLight(THREE, config.rect));
+  return scene;
+}
+
 // scene: the page config's scene (engine-scene.mjs's kScene with the light paths kept).
 export function threeScene(THREE, scene) {
   const camera = new THREE.PerspectiveCamera(scene.camera.fov, 1, scene.camera.near, scene.camera.far);
@@ -34,14 +60,7 @@ export function threeScene(THREE, scene) {
   equirect.wrapS = THREE.RepeatWrapping;
   equirect.needsUpdate = true;
   const sphere = new THREE.SphereGeometry(1, 256, 128);
-  const lights = () => {
-    const point = new THREE.PointLight(0xffffff, scene.point.intensity, 0, 2);
-    point.position.set(...scene.point.position);
-    const rect = new THREE.RectAreaLight(0xffffff, scene.rect.intensity, scene.rect.width, scene.rect.height);
-    rect.position.set(...scene.rect.position);
-    rect.lookAt(0, 0, 0);
-    return [point, rect];
-  };
+  const lights = () => [pointLight(THREE, scene.point), rectLight(THREE, scene.rect)];
   return { camera, equirect, sphere, lights };
 }
 
