@@ -46,7 +46,7 @@ struct Comparison {
   std::optional<matc::runtime::BasisKind> basis = std::nullopt;
 };
 
-const std::array<Comparison, 10> kComparisons = {{
+const std::array<Comparison, 11> kComparisons = {{
     {"F alone, compiled coefficients", FresnelQuantity::direct, FresnelModel::ours,
      FresnelModel::schlick, std::nullopt},
     {"one GGX light, compiled coefficients", FresnelQuantity::ggx_light, FresnelModel::ours,
@@ -66,6 +66,10 @@ const std::array<Comparison, 10> kComparisons = {{
      FresnelModel::baked, FresnelModel::schlick_textured, std::nullopt},
     {"one quad light (LTC)", FresnelQuantity::quad_light, FresnelModel::ours, FresnelModel::schlick,
      1.05},
+    {"one quad light (LTC), quality level: shape and Fresnel following the light (vs "
+     "Schlick's one shape)",
+     FresnelQuantity::quad_light_following, FresnelModel::ours, FresnelModel::schlick,
+     std::nullopt},
     // Issue #28: a third of the 1586 its kernel measured, against Karis' 26 there.
     {"texture-free Fbar: our closed form vs Karis' fit", FresnelQuantity::preintegrated_closed_form,
      FresnelModel::ours, FresnelModel::schlick, 20.3},

@@ -21,6 +21,7 @@
 #include "matc/runtime/analytic_lut.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/ltc.h"
+#include "matc/runtime/ltc_following.h"
 #include "matc/runtime/lut.h"
 #include "material_inputs.h"
 #include "print_diagnostics.h"
@@ -116,7 +117,8 @@ void add_preintegrated_fresnel(const EvalOptions& options, const SplitSumInputs&
 }
 
 // A quad light's radiance at each (NdotV, roughness): LTC times Fbar as the shaders compute it
-// (ours, per set of coefficients), LTC times Schlick's split sum, LTC times the exact
+// (ours, per set of coefficients), the quality level's (the Fresnel following the light, per set
+// of coefficients), LTC times Schlick's split sum, LTC times the exact
 // preintegrated Fresnel (LTC's own error alone), and the exact integral.
 void add_quad_light(const EvalOptions& options, const std::vector<Vec3>& quad,
                     const ReflectanceCurve& curve, const SplitSumInputs& inputs,
@@ -134,7 +136,10 @@ void add_quad_light(const EvalOptions& options, const std::vector<Vec3>& quad,
   out["quad_light"] = {{"vertices", std::move(vertices)},
                        {"ltc_table", {{"size", ltc.size}}},
                        {"reference_samples", options.light_samples}};
+  const runtime::ShaderBasis& shader_basis =
+      runtime::shipped_shader_basis(basis_of(options.lut.basis));
   std::vector<ordered_json> ours(coefficients.size(), ordered_json::array());
+  std::vector<ordered_json> following(coefficients.size(), ordered_json::array());
   ordered_json schlick = ordered_json::array(), exact_fresnel = ordered_json::array(),
                reference = ordered_json::array(), standard_error = ordered_json::array();
   for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
@@ -144,6 +149,8 @@ void add_quad_light(const EvalOptions& options, const std::vector<Vec3>& quad,
     for (std::size_t k = 0; k < coefficients.size(); ++k) {
       ours[k].push_back(runtime::polygon_light_ltc(coefficients[k].second, lut.view(), ltc, ndotv,
                                                    roughness, quad));
+      following[k].push_back(runtime::polygon_light_ltc_following(
+          coefficients[k].second, lut.view(), shader_basis, ltc, ndotv, roughness, quad));
     }
     const auto lobe_values = runtime::sample_lut(schlick_lut.view(), ndotv, roughness);
     const runtime::Rgb& fbar_exact = inputs.fbar_reference[i];
@@ -162,6 +169,8 @@ void add_quad_light(const EvalOptions& options, const std::vector<Vec3>& quad,
   }
   for (std::size_t k = 0; k < coefficients.size(); ++k)
     out["L_ltc" + coefficients[k].first] = std::move(ours[k]);
+  for (std::size_t k = 0; k < coefficients.size(); ++k)
+    out["L_ltc_following" + coefficients[k].first] = std::move(following[k]);
   out["L_ltc_schlick"] = std::move(schlick);
   out["L_ltc_exact_fresnel"] = std::move(exact_fresnel);
   out["L_reference"] = std::move(reference);
@@ -340,8 +349,9 @@ Command register_eval(CLI::App& app) {
   command
       ->add_option("--quad-light", options->quad_light,
                    "A quad light of radiance 1, \"x,y,z;x,y,z;x,y,z;x,y,z\" in the shading frame "
-                   "(normal +z, view in the xz-plane towards +x): radiance by LTC with ours and "
-                   "with Schlick's Fresnel, and the exact integral (docs/ltc.md)")
+                   "(normal +z, view in the xz-plane towards +x): radiance by LTC with ours (one "
+                   "shape, and the quality level's Fresnel following the light) and with "
+                   "Schlick's Fresnel, and the exact integral (docs/ltc.md)")
       ->needs(ndotv_option)
       ->excludes(no_reference_option);
   command

@@ -1,8 +1,9 @@
 // Area-light renders on a Vulkan device (lavapipe by default): a sphere on a plane under a
-// two-sided rectangular light (templates/glsl/area_light_render.frag), four ways:
+// two-sided rectangular light (templates/glsl/area_light_render.frag), five ways:
 //   Monte-Carlo reference with the exact Fresnel | LTC x Schlick's | LTC x ours |
-//   LTC x the exact preintegrated Fresnel (LTC's own error alone).
-// Writes <name>_area.png (the four panels), <name>_area_difference.png (Schlick's and ours
+//   LTC x the exact preintegrated Fresnel (LTC's own error alone) | ours at the quality level
+//   (shape and Fresnel following the light, ltc_following.h).
+// Writes <name>_area.png (the five panels), <name>_area_difference.png (Schlick's and ours
 // against the reference, 4x) and <name>_area_fresnel_difference.png (against LTC with the exact
 // Fresnel: the Fresnel's share alone), and prints the error table of docs/rendering.md.
 //   matc_area_light_render [--size N] [--samples N] [-o DIR] [--check] FILES...
@@ -31,6 +32,7 @@ constexpr Estimate kLtcExact = kExactFbar;
 constexpr Estimate kExactLobeSplit = kPrefilteredRadiance;
 constexpr Estimate kLtcSchlick = kSchlickFbar;
 constexpr Estimate kLtcOurs = kOursFbar;
+constexpr Estimate kQuality = kOursClosedFormFbar;
 
 }  // namespace
 
@@ -70,24 +72,27 @@ int main(int argc, char** argv) {
       const Panel& ours = estimates[kLtcOurs];
       const Panel& exact = estimates[kLtcExact];
       const Panel& split = estimates[kExactLobeSplit];
+      const Panel& quality = estimates[kQuality];
       const std::string name = compiled.material.name + "_area";
       write_panels(settings.output / (name + ".png"),
-                   {reference.rgb, schlick.rgb, ours.rgb, exact.rgb}, settings.size, display);
+                   {reference.rgb, schlick.rgb, ours.rgb, exact.rgb, quality.rgb}, settings.size,
+                   display);
       write_difference_panels(settings.output, name, schlick, ours, reference, exact,
                               settings.size);
       const double roughness = compiled.material.roughness.value_or(kDefaultRoughness);
-      const std::array<std::pair<const char*, const Panel*>, 4> rows = {
+      const std::array<std::pair<const char*, const Panel*>, 5> rows = {
           std::pair{"Schlick's Fresnel", &schlick}, std::pair{"ours", &ours},
           std::pair{"the exact preintegrated Fresnel", &exact},
-          std::pair{"(no LTC: the exact lobe, the exact preintegrated Fresnel)", &split}};
+          std::pair{"(no LTC: the exact lobe, the exact preintegrated Fresnel)", &split},
+          std::pair{"ours, quality level (shape and Fresnel following the light)", &quality}};
       for (const auto& [label, panel] : rows) {
         const ErrorStats total = error_against(*panel, reference);
         const ErrorStats fresnel = error_against(*panel, exact);
         fmt::print("| {} | {:.3f} | {} | {:.4f} | {:.1f}% | {:.3f} | {} | {} |\n",
                    compiled.material.name, roughness, label, total.mean,
                    100.0 * total.relative_mean, total.max,
-                   panel == &exact || panel == &split ? "-" : fmt::format("{:.4f}", fresnel.mean),
-                   panel == &exact || panel == &split ? "-" : fmt::format("{:.3f}", fresnel.max));
+                   panel == &schlick || panel == &ours ? fmt::format("{:.4f}", fresnel.mean) : "-",
+                   panel == &schlick || panel == &ours ? fmt::format("{:.3f}", fresnel.max) : "-");
       }
       targets_met = targets_met &&
                     error_against(ours, reference).mean <= error_against(schlick, reference).mean &&

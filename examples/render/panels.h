@@ -38,7 +38,7 @@ enum Estimate : std::int32_t {
   kExactFbar = 2,
   kSchlickFbar = 3,
   kOursFbar = 4,
-  kOursClosedFormFbar = 5,  // the table's closed form (area-light render: same as kOursFbar)
+  kOursClosedFormFbar = 5,  // the table's closed form (area-light render: the quality level)
   kEstimateCount = 6,
 };
 

@@ -9,13 +9,13 @@
 namespace matc::runtime {
 namespace {
 
-// The z component of the arc integral from a to b (unit vectors): theta * normalize(a x b).z,
-// theta = angle(a, b) through atan2, which stays accurate for short and near-opposite arcs.
-double edge_integral(const Vec3& a, const Vec3& b) {
+// The arc integral from a to b (unit vectors): theta * normalize(a x b), theta = angle(a, b)
+// through atan2, which stays accurate for short and near-opposite arcs.
+Vec3 edge_integral(const Vec3& a, const Vec3& b) {
   const Vec3 normal = cross(a, b);
   const double sine = std::sqrt(dot(normal, normal));
   const double theta = std::atan2(sine, dot(a, b));
-  return sine > 0.0 ? normal[2] * (theta / sine) : 0.0;
+  return sine > 0.0 ? scaled(normal, theta / sine) : Vec3{};
 }
 
 // Where the segment from a (above the horizon) to b (on or below it) meets z = 0, as a unit
@@ -38,10 +38,10 @@ LtcInverse sample_ltc(const LtcTableView& table, double ndotv, double roughness)
   return {m[0], m[1], m[2], m[3]};
 }
 
-double clipped_polygon_form_factor(std::span<const Vec3> vertices) {
+Vec3 clipped_polygon_vector_form_factor(std::span<const Vec3> vertices) {
   // Each edge integrated where it is above the horizon; a convex polygon that crosses the horizon
   // leaves it once and comes back once, and the horizon arc between those points closes it.
-  double sum = 0.0;
+  Vec3 sum{};
   Vec3 exit{}, entry{};
   bool exits = false, enters = false;
   const std::size_t count = vertices.size();
@@ -51,19 +51,26 @@ double clipped_polygon_form_factor(std::span<const Vec3> vertices) {
     const bool a_above = a[2] > 0.0;
     const bool b_above = b[2] > 0.0;
     if (a_above && b_above) {
-      sum += edge_integral(normalize(a), normalize(b));
+      sum = plus(sum, edge_integral(normalize(a), normalize(b)));
     } else if (a_above) {
       exit = horizon_crossing(a, b);
       exits = true;
-      sum += edge_integral(normalize(a), exit);
+      sum = plus(sum, edge_integral(normalize(a), exit));
     } else if (b_above) {
       entry = horizon_crossing(b, a);
       enters = true;
-      sum += edge_integral(entry, normalize(b));
+      sum = plus(sum, edge_integral(entry, normalize(b)));
     }
   }
-  if (exits && enters) sum += edge_integral(exit, entry);
-  return std::min(1.0, std::abs(sum) / (2.0 * std::numbers::pi));
+  if (exits && enters) sum = plus(sum, edge_integral(exit, entry));
+  // Either winding: oriented so that z, the form factor, is not negative.
+  const double sign = sum[2] < 0.0 ? -1.0 : 1.0;
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  return {sign * sum[0] / kTwoPi, sign * sum[1] / kTwoPi, std::abs(sum[2]) / kTwoPi};
+}
+
+double clipped_polygon_form_factor(std::span<const Vec3> vertices) {
+  return std::min(1.0, clipped_polygon_vector_form_factor(vertices)[2]);
 }
 
 double ltc_polygon_integral(const LtcInverse& inverse, std::span<const Vec3> vertices) {

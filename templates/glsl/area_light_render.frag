@@ -8,7 +8,9 @@
 //      the split L = shape x preintegrated Fresnel without LTC's shape error
 //   2: I_ltc times the exact preintegrated Fresnel (visible-normal sampling): LTC's own error
 //   3: I_ltc times Schlick's preintegrated Fresnel (the ComparisonLobes table)
-//   4 (and 5): ours, matc_ltc_quad_light with matc_coefficients_{{name}}
+//   4: ours, matc_ltc_quad_light with matc_coefficients_{{name}}
+//   5: ours at the quality level, matc_ltc_quad_light_following (shape and Fresnel following
+//      the light)
 // Each pass writes (sum, weight) for its share of the samples; the host adds passes up and
 // divides. Background pixels write a negative weight.
 {{library}}
@@ -225,8 +227,11 @@ void main() {
     vec4 lobes = textureLod(sampler2D(lobe_lut, matc_lut_sampler),
                             matc_lut_texcoord(ndotv, panel.roughness), 0.0);
     sum = integral * (F0 * lobes.x + (vec3(1.0) - F0) * lobes.y);
-  } else {
+  } else if (panel.method == 4) {
     sum = matc_ltc_quad_light(matc_coefficients_{{name}}, bbar, ltc, N, V, P, q0, q1, q2, q3);
+  } else {
+    sum = matc_ltc_quad_light_following(matc_coefficients_{{name}}, bbar, ltc, panel.roughness, N,
+                                        V, P, q0, q1, q2, q3);
   }
   result = vec4(LIGHT_RADIANCE * sum, weight);
 }

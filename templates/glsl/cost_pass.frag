@@ -15,7 +15,7 @@ layout(set = 0, binding = 1) uniform sampler matc_lut_sampler;
 #if MATC_COST_TABLE
 layout(set = 0, binding = 2) uniform texture2D matc_coefficient_table;
 #endif
-#if MATC_COST_QUAD_LIGHT
+#if MATC_COST_QUAD_LIGHT || MATC_COST_QUAD_LIGHT_FOLLOWING
 layout(set = 0, binding = 3) uniform texture2D matc_ltc;
 #endif
 #if MATC_COST_MAPS >= 1
@@ -102,9 +102,11 @@ void main() {
   float D = a2 / (PI * d * d);
   float Vis = 0.5 / (NoL * sqrt(NoV * NoV * (1.0 - a2) + a2) + NoV * sqrt(NoL * NoL * (1.0 - a2) + a2));
   vec3 f = COST_FRESNEL(VoH) * (D * Vis * NoL);
-#elif MATC_COST_QUAD_LIGHT
+#elif MATC_COST_QUAD_LIGHT || MATC_COST_QUAD_LIGHT_FOLLOWING
   // A quad light over a field of normals: each pixel its own N (so its own NdotV), P and the
-  // roughness uv.y; the LTC integral is the same code in every variant, only the Fresnel differs.
+  // roughness uv.y; the LTC integral is the same code in every variant, only the Fresnel differs
+  // (with ours, the quality level's shape and Fresnel that follow the light in the _FOLLOWING
+  // pass).
   vec3 N = normalize(vec3(uv.x - 0.5, 0.6, uv.y - 0.5));
   vec3 V = vec3(0.0, 1.0, 0.0);
   vec3 P = vec3(2.0 * uv.x - 1.0, 0.0, 2.0 * uv.y - 1.0);
@@ -113,8 +115,14 @@ void main() {
   vec4 ltc = textureLod(sampler2D(matc_ltc, matc_lut_sampler), matc_ltc_texcoord(ndotv, uv.y), 0.0);
   vec3 q0 = vec3(-1.0, 2.0, -1.5), q1 = vec3(1.0, 2.0, -1.5);
   vec3 q2 = vec3(1.0, 2.5, -0.5), q3 = vec3(-1.0, 2.5, -0.5);
-  float integral = matc_ltc_quad_integral(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3);
-  vec3 f = integral * COST_FRESNEL_PREINTEGRATED(texel);
+  MatcLtcPolygon polygon = matc_ltc_quad_polygon(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3);
+#if MATC_COST_QUAD_LIGHT_FOLLOWING && !MATC_COST_SCHLICK
+  vec3 geometry = matc_ltc_following_geometry(polygon, ltc, ndotv, uv.y, texel.x);
+  vec3 f = matc_ltc_following_radiance(geometry, texel, COST_FRESNEL(geometry.y),
+                                       COST_FRESNEL_PREINTEGRATED(texel));
+#else
+  vec3 f = matc_ltc_polygon_result(polygon) * COST_FRESNEL_PREINTEGRATED(texel);
+#endif
 #elif MATC_COST_CLOSED_FORM
   // Fbar without a texture: the closed form of our table, or Karis' analytic fit of Schlick's
   // split sum ("Physically Based Shading on Mobile", 2014) with the same roughness.

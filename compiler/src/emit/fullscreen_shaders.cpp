@@ -43,7 +43,8 @@ std::vector<CostPassBinding> cost_pass_bindings(FresnelModel model, FresnelQuant
   std::vector<CostPassBinding> bindings = {{0, CostPassResource::table},
                                            {1, CostPassResource::sampler}};
   if (model == FresnelModel::table) bindings.push_back({2, CostPassResource::coefficient_table});
-  if (quantity == FresnelQuantity::quad_light) bindings.push_back({3, CostPassResource::ltc_table});
+  if (quantity == FresnelQuantity::quad_light || quantity == FresnelQuantity::quad_light_following)
+    bindings.push_back({3, CostPassResource::ltc_table});
   for (int map = 0; map < material_map_count(model); ++map)
     bindings.push_back({4 + static_cast<std::uint32_t>(map), CostPassResource::material_map});
   if (quantity == FresnelQuantity::preintegrated)
@@ -64,6 +65,8 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
   if (quantity == FresnelQuantity::direct) quantity_name = "F";
   if (quantity == FresnelQuantity::ggx_light) quantity_name = "one GGX light";
   if (quantity == FresnelQuantity::quad_light) quantity_name = "quad light (LTC)";
+  if (quantity == FresnelQuantity::quad_light_following)
+    quantity_name = "quad light (LTC), the Fresnel following the light";
   if (quantity == FresnelQuantity::preintegrated_closed_form) quantity_name = "Fbar in closed form";
   const auto flag = [](bool value) { return value ? 1 : 0; };
   return fill_template(
@@ -74,12 +77,14 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
         fmt::format("#define MATC_COST_SCHLICK {}\n#define MATC_COST_TABLE {}\n#define "
                     "MATC_COST_BAKED {}\n#define MATC_COST_MAPS {}\n#define MATC_COST_DIRECT "
                     "{}\n#define MATC_COST_GGX_LIGHT {}\n#define MATC_COST_QUAD_LIGHT {}\n#define "
-                    "MATC_COST_CLOSED_FORM {}\n#define MATC_COST_IMAGE_LIGHT {}",
+                    "MATC_COST_QUAD_LIGHT_FOLLOWING {}\n#define MATC_COST_CLOSED_FORM {}\n#define "
+                    "MATC_COST_IMAGE_LIGHT {}",
                     flag(schlick), flag(model == FresnelModel::table),
                     flag(model == FresnelModel::baked), material_map_count(model),
                     flag(quantity == FresnelQuantity::direct),
                     flag(quantity == FresnelQuantity::ggx_light),
                     flag(quantity == FresnelQuantity::quad_light),
+                    flag(quantity == FresnelQuantity::quad_light_following),
                     flag(quantity == FresnelQuantity::preintegrated_closed_form),
                     flag(quantity == FresnelQuantity::preintegrated))},
        {"library", build.library_source(ShaderLanguage::glsl)},

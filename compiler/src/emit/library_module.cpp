@@ -48,7 +48,10 @@ std::vector<std::string> shared_library_exports(bool embedded_lut) {
                                     "matc_ltc_sphere_integral",
                                     "matc_ltc_quad_light",
                                     "matc_ltc_disk_light",
-                                    "matc_ltc_sphere_light"};
+                                    "matc_ltc_sphere_light",
+                                    "matc_ltc_quad_light_following",
+                                    "matc_ltc_disk_light_following",
+                                    "matc_ltc_sphere_light_following"};
   if (embedded_lut) names.emplace_back("matc_preintegrated_basis_embedded");
   return names;
 }

@@ -1,5 +1,5 @@
-// The area-light check: the LTC quad, disk and sphere lights (radiance and the LTC integral)
-// against the CPU runtime.
+// The area-light check: the LTC quad, disk and sphere lights (radiance and the LTC integral, and
+// the quality level's radiance, the Fresnel following the light) against the CPU runtime.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -12,6 +12,7 @@
 #include "matc/ltc/polygon_light.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/ltc.h"
+#include "matc/runtime/ltc_following.h"
 #include "matc/runtime/lut.h"
 #include "matc/validate/device_validation.h"
 
@@ -94,7 +95,7 @@ class AreaLightCheck final : public DeviceCheck {
     return packed;
   }
 
-  std::size_t result_vec4s_per_query() const override { return 1; }
+  std::size_t result_vec4s_per_query() const override { return 2; }
 
   std::vector<CheckedQuantity> compare(std::span<const float> results) const override {
     const runtime::CoefficientTableView table = build_.stored_coefficient_table().view();
@@ -103,6 +104,8 @@ class AreaLightCheck final : public DeviceCheck {
     // The LTC matrix and Fbar both come through the sampler: the preintegrated tolerance.
     CheckedQuantity radiance{"L", tolerance_};
     CheckedQuantity integral{"I_ltc", tolerance_};
+    CheckedQuantity following{"L_following", tolerance_};
+    const runtime::ShaderBasis& basis = runtime::shipped_shader_basis(build_.options().basis);
     for (std::size_t i = 0; i < queries_.size(); ++i) {
       const AreaLightQuery& q = queries_[i];
       const ShadingFrame frame(as_vec3(q.normal), as_vec3(q.view));
@@ -121,7 +124,7 @@ class AreaLightCheck final : public DeviceCheck {
       }
       const runtime::Coefficients coefficients =
           runtime::coefficients_from_table(table, as_vec3(q.reflectivity), as_vec3(q.edge_tint));
-      const float* result = &results[4 * i];
+      const float* result = &results[8 * i];
       record_largest(
           radiance, runtime::polygon_light_ltc(coefficients, lut, ltc, q.ndotv, q.roughness, local),
           result, i);
@@ -129,8 +132,12 @@ class AreaLightCheck final : public DeviceCheck {
           runtime::ltc_polygon_integral(runtime::sample_ltc(ltc, q.ndotv, q.roughness), local);
       const float integral_result[3] = {result[3], result[3], result[3]};
       record_largest(integral, {expected, expected, expected}, integral_result, i);
+      record_largest(following,
+                     runtime::polygon_light_ltc_following(coefficients, lut, basis, ltc, q.ndotv,
+                                                          q.roughness, local),
+                     result + 4, i);
     }
-    return {radiance, integral};
+    return {radiance, integral, following};
   }
 
   std::string describe_query(std::size_t index, std::string_view) const override {

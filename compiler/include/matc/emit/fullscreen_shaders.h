@@ -21,13 +21,15 @@ enum class FresnelModel { schlick, schlick_textured, ours, table, baked };
 // F alone (mu from the pixel); F inside one GGX punctual light (D, height-correlated Smith V, F,
 // NdotL); image-based light: preintegrated Fbar from one table fetch times the prefiltered
 // environment (one more fetch, the same in every variant); a quad area light (LTC: that fetch, one
-// LTC table fetch, the polygon integral, times Fbar); or Fbar without a fetch: ours from
-// matc_preintegrated_basis_analytic, Schlick's from Karis' mobile approximation.
+// LTC table fetch, the polygon integral, times Fbar); the same quad light at the quality level,
+// ours with the Fresnel following the light (Schlick's as in quad_light); or Fbar without a fetch:
+// ours from matc_preintegrated_basis_analytic, Schlick's from Karis' mobile approximation.
 enum class FresnelQuantity {
   direct,
   ggx_light,
   preintegrated,
   quad_light,
+  quad_light_following,
   preintegrated_closed_form
 };
 

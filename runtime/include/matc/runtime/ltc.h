@@ -3,6 +3,7 @@
 // clamped cosine D_o transformed by a 3x3 matrix M, so its integral over a polygon is the cosine's
 // integral over the polygon transformed by M^-1, which has a closed form. The magnitude and the
 // Fresnel come from the preintegrated table: L = I_ltc(polygon) * sum_i c_i bbar_i (docs/ltc.md).
+// ltc_following.h has the quality level.
 //
 // Frame: the shading frame has the normal along +z and the view in the xz-plane towards +x,
 // V = (sqrt(1 - NdotV^2), 0, NdotV). Symmetry about that plane leaves four entries of M^-1:
@@ -56,6 +57,11 @@ LtcTableView shipped_ltc_table();
 // origin (vertices in either winding, a two-sided emitter), the part below the horizon z = 0
 // clipped away: a value in [0, 1].
 double clipped_polygon_form_factor(std::span<const Vec3> vertices);
+
+// The same polygon's vector form factor, (1 / pi) times the integral over its clipped part of the
+// direction: z is the form factor above (before its clamp at 1), and the vector points where the
+// lit part lies (oriented so that z is not negative).
+Vec3 clipped_polygon_vector_form_factor(std::span<const Vec3> vertices);
 
 // The integral of the LTC distribution M D_o over the polygon (vertices in the shading frame; at
 // most kMaxLightPolygonVertices, the rest ignored).
