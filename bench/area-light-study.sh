@@ -3,7 +3,7 @@
 # tables fitted in-process to the L1 and Heitz et al.'s objectives) and LTC with ours, Schlick's
 # and the exact preintegrated Fresnel against the exact integral over a grid, for every example
 # material (about 5.5 minutes on 2 cores: it fits two tables and scores three on held-out quads);
-# then the quality level against the one shape on random quads (about 2 more minutes).
+# then the quality level against the one shape on random quads (1.5 more minutes).
 #   bench/area-light-study.sh [BUILD_DIR]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
