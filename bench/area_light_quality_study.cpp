@@ -70,12 +70,18 @@ const std::array<Weight, 5> kFresnelWeights = {
      {"I (shipped)", [](double i, double) { return i; }},
      {"sqrt(I)", [](double i, double) { return std::sqrt(i); }},
      {"s", [](double, double s) { return s; }}}};
-const std::array<Weight, 5> kShapeWeights = {
+const std::array<Weight, 7> kShapeWeights = {
     {{"1 (the one shape)", [](double, double) { return 1.0; }},
      {"I", [](double i, double) { return i; }},
      {"I^(1/4)", [](double i, double) { return std::sqrt(std::sqrt(i)); }},
-     {"s (shipped)", [](double, double s) { return s; }},
-     {"s^2", [](double, double s) { return s * s; }}}};
+     {"q = sqrt(|f|)", [](double, double s) { return 1.0 - std::sqrt(1.0 - s); }},
+     {"q^2",
+      [](double, double s) {
+        const double q = 1.0 - std::sqrt(1.0 - s);
+        return q * q;
+      }},
+     {"sqrt(q)", [](double, double s) { return std::sqrt(1.0 - std::sqrt(1.0 - s)); }},
+     {"q (2 - q) (shipped)", [](double, double s) { return s; }}}};
 
 // Per roughness band, per set of lights (0 centred on the lobe, 1 anywhere): sums per channel.
 constexpr std::array<std::array<double, 2>, 3> kBands = {{{0.15, 0.4}, {0.4, 0.6}, {0.6, 0.85}}};

@@ -66,7 +66,8 @@ LtcFollowing ltc_following(const LtcInverse& inverse, double ndotv, double rough
       std::clamp(lobe * std::numbers::pi * det * det /
                      std::max(albedo * u[2] * back_length * back_length * back_length, 1e-30),
                  0.0, kMaxShapeRatio);
-  following.size = std::sqrt(std::min(length_f, 1.0));
+  const double root = std::sqrt(std::min(length_f, 1.0));
+  following.size = root * (2.0 - root);
   following.shaped = lit.integral * (following.ratio + following.size * (1.0 - following.ratio));
   return following;
 }

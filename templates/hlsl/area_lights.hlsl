@@ -172,7 +172,7 @@ float matc_ltc_ggx_lobe(float NdotV, float roughness, float3 L) {
 // the lobe is the direction L of the vector form factor f taken back through M (the adjugate of
 // M^-1; ad - bc > 0 in every texel). I' = I lerp(r, 1, s): r, the lobe's f cos over albedo times
 // the LTC's density at L (u.z |adj u|^3 / (pi det^2) for u = f / |f|), clamped to [0, 4]; s =
-// sqrt(|f|), the light's size. V.H = sqrt((1 + V.L) / 2).
+// q (2 - q) for q = sqrt(|f|), from the light's size. V.H = sqrt((1 + V.L) / 2).
 float3 matc_ltc_following_geometry(MatcLtcPolygon polygon, float4 ltc, float NdotV,
                                    float roughness, float albedo) {
   float3 f = matc_ltc_polygon_sum(polygon) * 0.15915494309189535;  // 1 / (2 pi)
@@ -190,7 +190,8 @@ float3 matc_ltc_following_geometry(MatcLtcPolygon polygon, float4 ltc, float Ndo
                           max(albedo * u.z * back_length * back_length * back_length, 1e-30),
                       0.0, 4.0);
   float integral = min(f.z, 1.0);
-  return float3(integral * lerp(ratio, 1.0, sqrt(min(length_f, 1.0))), vdoth, integral);
+  float root = sqrt(min(length_f, 1.0));
+  return float3(integral * lerp(ratio, 1.0, root * (2.0 - root)), vdoth, integral);
 }
 
 // The quality level's radiance: L = I' lerp(E F_light, Fbar, I), E = bbar.x the lobe's albedo,

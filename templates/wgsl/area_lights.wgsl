@@ -178,7 +178,7 @@ fn matc_ltc_ggx_lobe(NdotV: f32, roughness: f32, L: vec3f) -> f32 {
 // the lobe is the direction L of the vector form factor f taken back through M (the adjugate of
 // M^-1; ad - bc > 0 in every texel). I' = I mix(r, 1, s): r, the lobe's f cos over albedo times
 // the LTC's density at L (u.z |adj u|^3 / (pi det^2) for u = f / |f|), clamped to [0, 4]; s =
-// sqrt(|f|), the light's size. V.H = sqrt((1 + V.L) / 2).
+// q (2 - q) for q = sqrt(|f|), from the light's size. V.H = sqrt((1 + V.L) / 2).
 fn matc_ltc_following_geometry(polygon: MatcLtcPolygon, ltc: vec4f, NdotV: f32, roughness: f32,
                                albedo: f32) -> vec3f {
   let sum = matc_ltc_polygon_sum(polygon) * 0.15915494309189535;  // 1 / (2 pi)
@@ -196,7 +196,8 @@ fn matc_ltc_following_geometry(polygon: MatcLtcPolygon, ltc: vec4f, NdotV: f32, 
                         max(albedo * u.z * back_length * back_length * back_length, 1e-30),
                     0.0, 4.0);
   let integral = min(f.z, 1.0);
-  return vec3f(integral * mix(ratio, 1.0, sqrt(min(length_f, 1.0))), vdoth, integral);
+  let root = sqrt(min(length_f, 1.0));
+  return vec3f(integral * mix(ratio, 1.0, root * (2.0 - root)), vdoth, integral);
 }
 
 // The quality level's radiance: L = I' mix(E F_light, Fbar, I), E = bbar.x the lobe's albedo,

@@ -5,9 +5,9 @@
 // the GGX lobe's tail and horizon. Here, from where the light lies on the lobe (the direction of
 // the polygon's vector form factor, taken back through M):
 //   - shape: I' = I * mix(r, 1, s), r = (GGX f cos at that direction) / (E * the LTC's density
-//     there), clamped to [0, kMaxShapeRatio], and s = sqrt(|vector form factor|), the light's
-//     size in the cosine's space (a small light takes the lobe's own density, one over the whole
-//     lobe the LTC's integral);
+//     there), clamped to [0, kMaxShapeRatio], and s = q (2 - q) for q = sqrt(|vector form
+//     factor|), from the light's size in the cosine's space (a small light takes the lobe's own
+//     density, one over much of the lobe the LTC's integral);
 //   - Fresnel: L = I' * mix(E F(V.H), Fbar, I), F at the half vector of that direction.
 // E is the lobe's albedo, bbar_0 of the preintegrated table.
 #pragma once
@@ -44,7 +44,7 @@ double ggx_lobe_cosine(double ndotv, double roughness, const Vec3& light);
 struct LtcFollowing {
   double integral = 0.0;  // I_ltc: the Fresnel's blend weight
   double ratio = 1.0;     // r: the lobe over the LTC at the light's direction, clamped
-  double size = 0.0;      // s: sqrt(|vector form factor|), at most 1
+  double size = 0.0;      // s = q (2 - q), q = sqrt(|vector form factor|): 0 to 1
   double shaped = 0.0;    // I' = I mix(r, 1, s)
   double vdoth = 0.0;     // V.H at the light's direction on the lobe
 };
