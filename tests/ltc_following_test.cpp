@@ -65,7 +65,7 @@ TEST(LtcFollowing, ShippedTexelsHavePositiveDeterminants) {
   for (std::size_t y = 0; y < table.size; ++y) {
     for (std::size_t x = 0; x < table.size; ++x) {
       const auto t = table.texel(x, y);
-      ASSERT_GT(static_cast<double>(t[0]) * t[3] - static_cast<double>(t[1]) * t[2], 0.0)
+      ASSERT_GT((matc::runtime::LtcInverse{t[0], t[1], t[2], t[3]}.determinant()), 0.0)
           << "texel " << x << ", " << y;
     }
   }

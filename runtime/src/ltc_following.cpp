@@ -18,10 +18,7 @@ LtcLitPolygon ltc_lit_polygon(const LtcInverse& inverse, std::span<const Vec3> v
   lit.form_factor = clipped_polygon_vector_form_factor({transformed.data(), count});
   const Vec3& f = lit.form_factor;
   lit.integral = std::min(1.0, f[2]);
-  // The adjugate of ((a, 0, b), (0, 1, 0), (c, 0, d)) is ((d, 0, -b), (0, ad - bc, 0), (-c, 0, a)).
-  const Vec3 back{inverse.d * f[0] - inverse.b * f[2],
-                  (inverse.a * inverse.d - inverse.b * inverse.c) * f[1],
-                  inverse.a * f[2] - inverse.c * f[0]};
+  const Vec3 back = inverse.apply_adjugate(f);
   if (dot(back, back) > 0.0) lit.direction = normalize(back);
   return lit;
 }
@@ -57,9 +54,8 @@ LtcFollowing ltc_following(const LtcInverse& inverse, double ndotv, double rough
   const Vec3& f = lit.form_factor;
   const double length_f = std::sqrt(dot(f, f));
   const Vec3 u = length_f > 0.0 ? scaled(f, 1.0 / length_f) : Vec3{};
-  const double det = inverse.a * inverse.d - inverse.b * inverse.c;
-  const Vec3 back{inverse.d * u[0] - inverse.b * u[2], det * u[1],
-                  inverse.a * u[2] - inverse.c * u[0]};
+  const double det = inverse.determinant();
+  const Vec3 back = inverse.apply_adjugate(u);
   const double back_length = std::sqrt(dot(back, back));
   const double lobe = ggx_lobe_cosine(ndotv, roughness, lit.direction);
   following.ratio =

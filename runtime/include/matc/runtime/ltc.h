@@ -37,6 +37,13 @@ struct LtcInverse {
   Vec3 apply(const Vec3& direction) const {
     return {a * direction[0] + b * direction[2], direction[1], c * direction[0] + d * direction[2]};
   }
+  double determinant() const { return a * d - b * c; }
+  // The adjugate, determinant() times M: it takes directions back from the cosine's space where
+  // the determinant is positive, as in every fitted texel.
+  Vec3 apply_adjugate(const Vec3& direction) const {
+    return {d * direction[0] - b * direction[2], determinant() * direction[1],
+            a * direction[2] - c * direction[0]};
+  }
 };
 
 // A non-owning view of a table in the layout above (row-major, 4 floats per texel).
