@@ -59,29 +59,26 @@ const std::array<const char*, kEstimates> kEstimateNames = {"LTC x Schlick's",
                                                             "quality shape x exact Fbar",
                                                             "exact lobe x quality Fresnel"};
 
-// Other blend weights for the quality level (--compare-weights), from I_ltc and the size s.
+// Other blend weights for the quality level (--compare-weights), from I_ltc and the light's
+// extent q = sqrt(|f|) (the shipped shape weight is s = q (2 - q)).
 struct Weight {
   const char* name;
-  double (*of)(double integral, double size);
+  double (*of)(double integral, double extent);
 };
 const std::array<Weight, 5> kFresnelWeights = {
     {{"0 (F at the light alone)", [](double, double) { return 0.0; }},
      {"I^2", [](double i, double) { return i * i; }},
      {"I (shipped)", [](double i, double) { return i; }},
      {"sqrt(I)", [](double i, double) { return std::sqrt(i); }},
-     {"s", [](double, double s) { return s; }}}};
+     {"s", [](double, double q) { return q * (2.0 - q); }}}};
 const std::array<Weight, 7> kShapeWeights = {
     {{"1 (the one shape)", [](double, double) { return 1.0; }},
      {"I", [](double i, double) { return i; }},
      {"I^(1/4)", [](double i, double) { return std::sqrt(std::sqrt(i)); }},
-     {"q = sqrt(|f|)", [](double, double s) { return 1.0 - std::sqrt(1.0 - s); }},
-     {"q^2",
-      [](double, double s) {
-        const double q = 1.0 - std::sqrt(1.0 - s);
-        return q * q;
-      }},
-     {"sqrt(q)", [](double, double s) { return std::sqrt(1.0 - std::sqrt(1.0 - s)); }},
-     {"q (2 - q) (shipped)", [](double, double s) { return s; }}}};
+     {"q = sqrt(|f|)", [](double, double q) { return q; }},
+     {"q^2", [](double, double q) { return q * q; }},
+     {"sqrt(q)", [](double, double q) { return std::sqrt(q); }},
+     {"q (2 - q) (shipped)", [](double, double q) { return q * (2.0 - q); }}}};
 
 // Per roughness band, per set of lights (0 centred on the lobe, 1 anywhere): sums per channel.
 constexpr std::array<std::array<double, 2>, 3> kBands = {{{0.15, 0.4}, {0.4, 0.6}, {0.6, 0.85}}};
@@ -185,11 +182,11 @@ MaterialSums study_material(const Inputs& inputs, const matc::Material& material
         }
         for (std::size_t k = 0; k < kFresnelWeights.size(); ++k) {
           s.fresnel_weight_error[k][c] +=
-              std::abs(g.shaped * fresnel(kFresnelWeights[k].of(i, g.size)) - reference[c]);
+              std::abs(g.shaped * fresnel(kFresnelWeights[k].of(i, g.extent)) - reference[c]);
         }
         for (std::size_t k = 0; k < kShapeWeights.size(); ++k) {
           s.shape_weight_error[k][c] +=
-              std::abs(shaped(kShapeWeights[k].of(i, g.size)) * fresnel(i) - reference[c]);
+              std::abs(shaped(kShapeWeights[k].of(i, g.extent)) * fresnel(i) - reference[c]);
         }
         s.reference[c] += reference[c];
         if (reference[c] > kLitThreshold) ++s.lit[c];

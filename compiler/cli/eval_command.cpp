@@ -117,8 +117,8 @@ void add_preintegrated_fresnel(const EvalOptions& options, const SplitSumInputs&
 }
 
 // A quad light's radiance at each (NdotV, roughness): LTC times Fbar as the shaders compute it
-// (ours, per set of coefficients), the quality level's (the Fresnel following the light, per set
-// of coefficients), LTC times Schlick's split sum, LTC times the exact
+// (ours, per set of coefficients), the quality level's (the lobe's shape and the Fresnel following
+// the light, per set of coefficients), LTC times Schlick's split sum, LTC times the exact
 // preintegrated Fresnel (LTC's own error alone), and the exact integral.
 void add_quad_light(const EvalOptions& options, const std::vector<Vec3>& quad,
                     const ReflectanceCurve& curve, const SplitSumInputs& inputs,
@@ -350,8 +350,8 @@ Command register_eval(CLI::App& app) {
       ->add_option("--quad-light", options->quad_light,
                    "A quad light of radiance 1, \"x,y,z;x,y,z;x,y,z;x,y,z\" in the shading frame "
                    "(normal +z, view in the xz-plane towards +x): radiance by LTC with ours (one "
-                   "shape, and the quality level's Fresnel following the light) and with "
-                   "Schlick's Fresnel, and the exact integral (docs/ltc.md)")
+                   "shape, and the quality level's shape and Fresnel following the light) and "
+                   "with Schlick's Fresnel, and the exact integral (docs/ltc.md)")
       ->needs(ndotv_option)
       ->excludes(no_reference_option);
   command

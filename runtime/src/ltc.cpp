@@ -73,12 +73,16 @@ double clipped_polygon_form_factor(std::span<const Vec3> vertices) {
   return std::min(1.0, clipped_polygon_vector_form_factor(vertices)[2]);
 }
 
-double ltc_polygon_integral(const LtcInverse& inverse, std::span<const Vec3> vertices) {
+Vec3 ltc_polygon_vector_form_factor(const LtcInverse& inverse, std::span<const Vec3> vertices) {
   std::array<Vec3, kMaxLightPolygonVertices> transformed{};
   const std::size_t count = std::min(vertices.size(), transformed.size());
   for (std::size_t i = 0; i < count; ++i)
     transformed[i] = inverse.apply(vertices[i]);
-  return clipped_polygon_form_factor({transformed.data(), count});
+  return clipped_polygon_vector_form_factor({transformed.data(), count});
+}
+
+double ltc_polygon_integral(const LtcInverse& inverse, std::span<const Vec3> vertices) {
+  return std::min(1.0, ltc_polygon_vector_form_factor(inverse, vertices)[2]);
 }
 
 std::array<Vec3, kDiskLightSides> disk_light_polygon(const Vec3& centre, const Vec3& normal,

@@ -10,12 +10,8 @@
 namespace matc::runtime {
 
 LtcLitPolygon ltc_lit_polygon(const LtcInverse& inverse, std::span<const Vec3> vertices) {
-  std::array<Vec3, kMaxLightPolygonVertices> transformed{};
-  const std::size_t count = std::min(vertices.size(), transformed.size());
-  for (std::size_t i = 0; i < count; ++i)
-    transformed[i] = inverse.apply(vertices[i]);
   LtcLitPolygon lit;
-  lit.form_factor = clipped_polygon_vector_form_factor({transformed.data(), count});
+  lit.form_factor = ltc_polygon_vector_form_factor(inverse, vertices);
   const Vec3& f = lit.form_factor;
   lit.integral = std::min(1.0, f[2]);
   const Vec3 back = inverse.apply_adjugate(f);
@@ -62,20 +58,21 @@ LtcFollowing ltc_following(const LtcInverse& inverse, double ndotv, double rough
       std::clamp(lobe * std::numbers::pi * det * det /
                      std::max(albedo * u[2] * back_length * back_length * back_length, 1e-30),
                  0.0, kMaxShapeRatio);
-  const double root = std::sqrt(std::min(length_f, 1.0));
-  following.size = root * (2.0 - root);
-  following.shaped = lit.integral * (following.ratio + following.size * (1.0 - following.ratio));
+  following.extent = std::sqrt(std::min(length_f, 1.0));
+  const double size = following.extent * (2.0 - following.extent);
+  following.shaped = lit.integral * (following.ratio + size * (1.0 - following.ratio));
   return following;
 }
 
 Rgb polygon_light_ltc_following(const Coefficients& coefficients, const LutView& lut,
                                 const ShaderBasis& basis, const LtcTableView& ltc, double ndotv,
                                 double roughness, std::span<const Vec3> vertices) {
-  const double albedo = sample_lut(lut, ndotv, roughness)[0];
+  const std::array<double, kBasisSize> bbar = sample_lut(lut, ndotv, roughness);
+  const double albedo = bbar[0];
   const LtcFollowing following =
       ltc_following(sample_ltc(ltc, ndotv, roughness), ndotv, roughness, albedo, vertices);
   const Rgb at_light = evaluate_fresnel(coefficients, basis, following.vdoth);
-  const Rgb lobe = evaluate_fbar(coefficients, lut, ndotv, roughness);
+  const Rgb lobe = combine(coefficients, bbar);  // Fbar
   // A light over a small part of the lobe sees the Fresnel where it lies, one over all of it the
   // lobe's average.
   Rgb radiance{};

@@ -66,7 +66,7 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
   if (quantity == FresnelQuantity::ggx_light) quantity_name = "one GGX light";
   if (quantity == FresnelQuantity::quad_light) quantity_name = "quad light (LTC)";
   if (quantity == FresnelQuantity::quad_light_following)
-    quantity_name = "quad light (LTC), the Fresnel following the light";
+    quantity_name = "quad light (LTC), shape and Fresnel following the light";
   if (quantity == FresnelQuantity::preintegrated_closed_form) quantity_name = "Fbar in closed form";
   const auto flag = [](bool value) { return value ? 1 : 0; };
   return fill_template(

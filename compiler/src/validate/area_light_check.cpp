@@ -1,5 +1,5 @@
 // The area-light check: the LTC quad, disk and sphere lights (radiance and the LTC integral, and
-// the quality level's radiance, the Fresnel following the light) against the CPU runtime.
+// the quality level's radiance, shape and Fresnel following the light) against the CPU runtime.
 #include <algorithm>
 #include <cmath>
 #include <numbers>

@@ -74,6 +74,9 @@ Vec3 clipped_polygon_vector_form_factor(std::span<const Vec3> vertices);
 // most kMaxLightPolygonVertices, the rest ignored).
 inline constexpr std::size_t kMaxLightPolygonVertices = 32;
 double ltc_polygon_integral(const LtcInverse& inverse, std::span<const Vec3> vertices);
+// ... and the vector form factor of the transformed polygon (in the cosine's space), whose z is
+// that integral before its clamp at 1.
+Vec3 ltc_polygon_vector_form_factor(const LtcInverse& inverse, std::span<const Vec3> vertices);
 
 // A disk light as the shaders approximate it: a regular polygon of kDiskLightSides sides with
 // the disk's centre, plane and area (vertices written to `polygon`).

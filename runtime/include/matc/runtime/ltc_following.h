@@ -44,7 +44,7 @@ double ggx_lobe_cosine(double ndotv, double roughness, const Vec3& light);
 struct LtcFollowing {
   double integral = 0.0;  // I_ltc: the Fresnel's blend weight
   double ratio = 1.0;     // r: the lobe over the LTC at the light's direction, clamped
-  double size = 0.0;      // s = q (2 - q), q = sqrt(|vector form factor|): 0 to 1
+  double extent = 0.0;    // q = sqrt(|vector form factor|), at most 1: s = q (2 - q)
   double shaped = 0.0;    // I' = I mix(r, 1, s)
   double vdoth = 0.0;     // V.H at the light's direction on the lobe
 };
