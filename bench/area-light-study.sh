@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Regenerates the area-light studies of docs/ltc.md: the LTC fit's quality (the shipped table and
-# tables fitted in-process to the L1 and Heitz et al.'s objectives) and LTC with ours, Schlick's
-# and the exact preintegrated Fresnel against the exact integral over a grid, for every example
-# material (about 5.5 minutes on 2 cores: it fits two tables and scores three on held-out quads);
-# then the quality level against the one shape on random quads (1.5 more minutes).
+# tables fitted in-process to the L1 and Heitz et al.'s objectives, on the previous view axis and
+# with two variants of the polygon objective) per texel and at random views, and LTC with ours,
+# Schlick's and the exact preintegrated Fresnel against the exact integral over a grid, for every
+# example material (about 14 minutes on 2 cores: it fits five tables); then the quality level
+# against the one shape on random quads (1.5 more minutes).
 #   bench/area-light-study.sh [BUILD_DIR]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

@@ -2,15 +2,21 @@
 // L1 distance and the polygon-light error of each texel), and LTC with ours, with Schlick's and
 // with the exact preintegrated Fresnel against the exact integral over a grid of views,
 // roughnesses and quad lights, for every material given. Every table is also scored on random
-// quad lights none of the fits saw (lobe_polygons.h). With --compare-objectives it also fits tables
-// to the densities' L1 distance (shipped before issue #31) and Heitz et al.'s objective (cubed
-// differences) in-process and shows all three with the shipped one (polygon objective).
+// quad lights none of the fits saw (lobe_polygons.h), per texel and at random views read between
+// texels as a shader reads the table. With --compare-objectives it also fits tables to the
+// densities' L1 distance (shipped before issue #31), Heitz et al.'s objective (cubed differences)
+// and the polygon objective on the preintegrated table's view axis (sqrt(NdotV), shipped before
+// the angular axis) and with two variants of the polygon objective (more quads at grazing views,
+// a term for the mass below the horizon: ltc_fit.h) in-process and shows them with the shipped
+// one.
 //   matc_area_light_study [--samples N] [--compare-objectives] FILES...
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <future>
+#include <numbers>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <fmt/core.h>
@@ -31,6 +37,12 @@ namespace {
 
 using matc::facing_square;
 using matc::Vec3;
+
+// The polygon objective's variants (ltc_fit.h) the study tries.
+constexpr std::size_t kGrazingVariantPolygons = 4 * matc::kLtcTrainingPolygons;
+constexpr double kHorizonVariantWeight = 0.1;
+constexpr const char* kGrazingVariantLabel = "polygon objective, 4x the quads at NdotV < 0.1";
+constexpr const char* kHorizonVariantLabel = "polygon objective + 0.1 x the mass below the horizon";
 
 constexpr std::array kNdotV = {0.05, 0.15, 0.3, 0.45, 0.6, 0.75, 0.9, 1.0};
 constexpr std::array kRoughness = {0.1, 0.25, 0.4, 0.55, 0.7, 0.9};
@@ -98,7 +110,7 @@ void print_fit_quality(const char* label, const matc::runtime::LtcTableView& tab
       {{0.0, 0.25}, {0.25, 0.5}, {0.5, 0.75}, {0.75, 1.0001}}};
   for (const auto& [low, high] : kBands) {
     double l1_sum = 0, l1_max = 0, polygon_sum = 0, polygon_max = 0, grazing_l1 = 0;
-    double held_out_sum = 0, held_out_max = 0, grazing_held_out = 0;
+    double held_out_sum = 0, held_out_max = 0, grazing_held_out = 0, below_sum = 0, below_max = 0;
     std::size_t count = 0, grazing = 0;
     for (std::size_t y = 0; y < table.size; ++y) {
       const double roughness = matc::ltc_texel_roughness(y, table.size);
@@ -118,6 +130,9 @@ void print_fit_quality(const char* label, const matc::runtime::LtcTableView& tab
         }
         held_out_sum += held.mean;
         held_out_max = std::max(held_out_max, held.max);
+        const double below = matc::ltc_mass_below_horizon({t[0], t[1], t[2], t[3]});
+        below_sum += below;
+        below_max = std::max(below_max, below);
         l1_sum += l1;
         l1_max = std::max(l1_max, l1);
         polygon_sum += error;
@@ -129,9 +144,80 @@ void print_fit_quality(const char* label, const matc::runtime::LtcTableView& tab
     const double grazing_n = static_cast<double>(std::max<std::size_t>(grazing, 1));
     fmt::print(
         "| {} | {:.2f}-{:.2f} | {:.3f} | {:.3f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.3f} | "
-        "{:.4f} |\n",
+        "{:.4f} | {:.4f} | {:.4f} |\n",
         label, low, std::min(high, 1.0), l1_sum / n, l1_max, polygon_sum / n, polygon_max,
-        held_out_sum / n, held_out_max, grazing_l1 / grazing_n, grazing_held_out / grazing_n);
+        held_out_sum / n, held_out_max, grazing_l1 / grazing_n, grazing_held_out / grazing_n,
+        below_sum / n, below_max);
+  }
+}
+
+// Random views, the same for every table: view angles uniform over [0, 90) degrees, roughness
+// uniform over [0, 1], with quads drawn like the held-out ones (another seed); each table read as
+// a shader reads it, filtered between texels, on its own view axis.
+struct ViewQuads {
+  double ndotv = 0.0, roughness = 0.0;
+  std::vector<matc::LobePolygon> quads;
+};
+
+std::vector<ViewQuads> random_views(std::size_t count, std::size_t quads, std::size_t samples) {
+  constexpr std::uint64_t kViewSeed = matc::kHeldOutPolygonSeed + 1000;
+  std::vector<ViewQuads> views(count);
+  std::vector<std::future<void>> work;
+  const std::size_t chunks = std::max(1u, std::thread::hardware_concurrency());
+  for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
+    work.push_back(std::async(std::launch::async, [&, chunk] {
+      for (std::size_t i = chunk; i < count; i += chunks) {
+        // A low-discrepancy pair per view (the R2 sequence), so that every band gets its share.
+        const double u1 = std::fmod(0.5 + 0.7548776662466927 * static_cast<double>(i), 1.0);
+        const double u2 = std::fmod(0.5 + 0.5698402909980532 * static_cast<double>(i), 1.0);
+        ViewQuads& view = views[i];
+        view.ndotv = std::cos(0.5 * std::numbers::pi * u1);
+        view.roughness = u2;
+        const matc::GgxLobe lobe(view.ndotv, view.roughness);
+        view.quads = matc::lobe_polygons(
+            lobe, lobe.albedo(matc::kLtcFitSamplesPerAxis),
+            matc::lobe_polygon_seed(kViewSeed, view.ndotv, view.roughness), quads, samples);
+      }
+    }));
+  }
+  for (auto& w : work)
+    w.get();
+  return views;
+}
+
+void print_view_quality(const char* label, const matc::runtime::LtcTableView& table,
+                        const std::vector<ViewQuads>& views) {
+  constexpr double kNearNormal = 15.0;  // degrees
+  const double near_normal_cosine = std::cos(kNearNormal * std::numbers::pi / 180.0);
+  constexpr std::array<std::array<double, 2>, 4> kBands = {
+      {{0.0, 0.25}, {0.25, 0.5}, {0.5, 0.75}, {0.75, 1.0001}}};
+  for (const auto& [low, high] : kBands) {
+    double sum = 0, max = 0, near_sum = 0, near_max = 0, grazing_sum = 0;
+    std::size_t count = 0, near = 0, grazing = 0;
+    for (const ViewQuads& view : views) {
+      if (view.roughness < low || view.roughness >= high) continue;
+      const matc::PolygonSetError error = matc::ltc_polygon_set_error(
+          matc::runtime::sample_ltc(table, view.ndotv, view.roughness), view.quads);
+      if (view.ndotv < 0.1) {
+        grazing_sum += error.mean;
+        ++grazing;
+        continue;
+      }
+      sum += error.mean;
+      max = std::max(max, error.max);
+      ++count;
+      if (view.ndotv > near_normal_cosine) {
+        near_sum += error.mean;
+        near_max = std::max(near_max, error.max);
+        ++near;
+      }
+    }
+    const auto mean = [](double total, std::size_t n) {
+      return total / static_cast<double>(std::max<std::size_t>(n, 1));
+    };
+    fmt::print("| {} | {:.2f}-{:.2f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} |\n", label, low,
+               std::min(high, 1.0), mean(sum, count), max, mean(near_sum, near), near_max,
+               mean(grazing_sum, grazing));
   }
 }
 
@@ -178,11 +264,17 @@ int main(int argc, char** argv) {
   app.add_option("files", files, "Material files (.json)")->required();
   app.add_option("--samples", samples, "Reference sample pairs per light")->capture_default_str();
   app.add_flag("--compare-objectives", compare,
-               "Also fit tables with Heitz et al.'s objective and the polygon objective and "
-               "compare the three");
+               "Also fit tables to the L1 and Heitz et al.'s objectives and on the previous view "
+               "axis and compare them");
   app.add_option("--held-out", held_out_count, "Held-out quad lights per texel")
       ->capture_default_str();
   app.add_option("--held-out-samples", held_out_samples, "Reference sample pairs per held-out quad")
+      ->capture_default_str();
+  std::size_t view_count = 16384, view_quads = 16, view_samples = 4096;
+  app.add_option("--views", view_count, "Random views every table is scored at")
+      ->capture_default_str();
+  app.add_option("--view-quads", view_quads, "Quad lights per random view")->capture_default_str();
+  app.add_option("--view-samples", view_samples, "Reference sample pairs per quad of a view")
       ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
@@ -199,11 +291,18 @@ int main(int argc, char** argv) {
     materials.push_back(matc::compile_material(*parsed.material, build.basis()));
   }
   const matc::runtime::LtcTableView shipped = matc::runtime::shipped_ltc_table();
-  matc::LtcTable l1, heitz;
+  matc::LtcTable l1, heitz, previous_axis, grazing, horizon;
   if (compare) {
-    l1 = matc::fit_ltc_table({shipped.size, 0, matc::LtcObjective::l1});
-    heitz = matc::fit_ltc_table({shipped.size, 0, matc::LtcObjective::l3});
+    l1 = matc::fit_ltc_table({.size = shipped.size, .objective = matc::LtcObjective::l1});
+    heitz = matc::fit_ltc_table({.size = shipped.size, .objective = matc::LtcObjective::l3});
+    previous_axis = matc::fit_ltc_table(
+        {.size = shipped.size, .view_axis = matc::runtime::LtcViewAxis::sqrt_ndotv});
+    grazing = matc::fit_ltc_table(
+        {.size = shipped.size, .variant = {.grazing_polygons = kGrazingVariantPolygons}});
+    horizon = matc::fit_ltc_table(
+        {.size = shipped.size, .variant = {.horizon_weight = kHorizonVariantWeight}});
   }
+  const std::vector<ViewQuads> views = random_views(view_count, view_quads, view_samples);
   const matc::TexelPolygons held_out =
       matc::held_out_polygons(shipped.size, held_out_count, held_out_samples);
   double noise = 0;
@@ -222,16 +321,41 @@ int main(int argc, char** argv) {
       "(the largest of three squares' |E I_ltc - integral of f cos|, relative to the albedo E, "
       "{} reference samples), and the same error over {} random quad lights per texel that no "
       "fit saw (held out: the mean over texels of each texel's mean, and the largest; "
-      "references of {} sample pairs, standard error {:.4f} on average):\n\n"
+      "references of {} sample pairs, standard error {:.4f} on average), and the LTC's mass below "
+      "the horizon (what a light over the whole upper hemisphere misses, relative to the "
+      "albedo):\n\n"
       "| table | roughness | L1: mean | L1: max | polygon: mean | polygon: max | held out: mean | "
-      "held out: max | L1 at NdotV < 0.1: mean | held out at NdotV < 0.1: mean |\n"
-      "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+      "held out: max | L1 at NdotV < 0.1: mean | held out at NdotV < 0.1: mean | below the "
+      "horizon: mean | below the horizon: max |\n"
+      "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
       samples, held_out_count, held_out_samples,
       noise / static_cast<double>(std::max<std::size_t>(quads, 1)));
   print_fit_quality("shipped (polygon objective)", shipped, samples, held_out);
   if (compare) {
     print_fit_quality("L1 objective", l1.view(), samples, held_out);
     print_fit_quality("Heitz et al.'s objective", heitz.view(), samples, held_out);
+    print_fit_quality(kGrazingVariantLabel, grazing.view(), samples, held_out);
+    print_fit_quality(kHorizonVariantLabel, horizon.view(), samples, held_out);
+  }
+
+  fmt::print(
+      "\nWhat a renderer sees: the same error at {} views drawn once for every table (view angle "
+      "uniform over 0-90 degrees, roughness over 0-1), {} quads each like the held-out ones "
+      "({} sample pairs each), each table filtered between texels as a shader reads it. Mean over "
+      "views of each view's mean, and the largest; views within {} degrees of the normal apart; "
+      "views with NdotV < 0.1 apart:\n\n"
+      "| table | roughness | mean | max | within 15 degrees of the normal: mean | max | "
+      "NdotV < 0.1: mean |\n"
+      "|---|---|---:|---:|---:|---:|---:|\n",
+      view_count, view_quads, view_samples, 15);
+  print_view_quality("shipped (polygon objective)", shipped, views);
+  if (compare) {
+    print_view_quality("polygon objective, columns sqrt(NdotV) (shipped before)",
+                       previous_axis.view(), views);
+    print_view_quality("L1 objective", l1.view(), views);
+    print_view_quality("Heitz et al.'s objective", heitz.view(), views);
+    print_view_quality(kGrazingVariantLabel, grazing.view(), views);
+    print_view_quality(kHorizonVariantLabel, horizon.view(), views);
   }
 
   fmt::print(
@@ -247,11 +371,11 @@ int main(int argc, char** argv) {
   if (compare) {
     fmt::print(
         "\nLTC's own error (LTC x exact Fbar against the exact integral, relative) with each "
-        "table:\n\n| material | shipped (polygon objective) | L1 objective | Heitz et al.'s "
-        "objective |\n"
-        "|---|---:|---:|---:|\n");
-    print_grid(materials, build.stored_lut(), lobe_lut, {shipped, l1.view(), heitz.view()}, samples,
-               false);
+        "table:\n\n| material | shipped (polygon objective) | polygon objective, columns "
+        "sqrt(NdotV) | L1 objective | Heitz et al.'s objective |\n"
+        "|---|---:|---:|---:|---:|\n");
+    print_grid(materials, build.stored_lut(), lobe_lut,
+               {shipped, previous_axis.view(), l1.view(), heitz.view()}, samples, false);
   }
   return 0;
 }

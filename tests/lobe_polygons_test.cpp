@@ -49,9 +49,10 @@ TEST(LtcFit, ThePolygonObjectiveBeatsL1OnQuadsItDidNotSee) {
   // One row of a 16 x 16 table at roughness 0.4, both objectives, scored on held-out quads: over
   // the row (one texel can go either way; docs/ltc.md has the whole table).
   constexpr std::size_t kSize = 16, kRow = 6;
-  const matc::LtcTable l1 = matc::fit_ltc_table({kSize, 0, matc::LtcObjective::l1}, kRow, 1);
+  const matc::LtcTable l1 =
+      matc::fit_ltc_table({.size = kSize, .objective = matc::LtcObjective::l1}, kRow, 1);
   const matc::LtcTable polygons =
-      matc::fit_ltc_table({kSize, 0, matc::LtcObjective::polygons}, kRow, 1);
+      matc::fit_ltc_table({.size = kSize, .objective = matc::LtcObjective::polygons}, kRow, 1);
   double l1_error = 0.0, polygon_error = 0.0;
   for (std::size_t x = 0; x < kSize; ++x) {
     const double ndotv = matc::ltc_texel_ndotv(x, kSize);

@@ -149,7 +149,8 @@ int run_basis_ltc_table(const LtcTableOptions& options) {
   const LtcObjective objective = options.objective == "l3"         ? LtcObjective::l3
                                  : options.objective == "polygons" ? LtcObjective::polygons
                                                                    : LtcObjective::l1;
-  const LtcTable table = fit_ltc_table({kDefaultLtcSize, options.jobs, objective});
+  const LtcTable table =
+      fit_ltc_table({.size = kDefaultLtcSize, .threads = options.jobs, .objective = objective});
   fmt::print(stderr, "matc: fitted the {} x {} LTC table\n", table.size, table.size);
   if (!options.quality.empty()) {
     const std::vector<double> polygon =

@@ -32,9 +32,20 @@ std::array<float, kLtcChannels> LtcTableView::texel(std::size_t x, std::size_t y
   return {texels[offset], texels[offset + 1], texels[offset + 2], texels[offset + 3]};
 }
 
+double ltc_u_from_ndotv(double ndotv, LtcViewAxis axis) {
+  const double clamped = std::clamp(ndotv, 0.0, 1.0);
+  return axis == LtcViewAxis::angular ? 1.0 - std::sqrt(1.0 - clamped) : std::sqrt(clamped);
+}
+
+double ltc_ndotv_from_u(double u, LtcViewAxis axis) {
+  if (axis == LtcViewAxis::sqrt_ndotv) return u * u;
+  const double from_normal = 1.0 - u;
+  return 1.0 - from_normal * from_normal;
+}
+
 LtcInverse sample_ltc(const LtcTableView& table, double ndotv, double roughness) {
-  const auto m = sample_bilinear<kLtcChannels>(table, table.size, lut_u_from_ndotv(ndotv),
-                                               unit_clamp(roughness));
+  const auto m = sample_bilinear<kLtcChannels>(
+      table, table.size, ltc_u_from_ndotv(ndotv, table.view_axis), unit_clamp(roughness));
   return {m[0], m[1], m[2], m[3]};
 }
 

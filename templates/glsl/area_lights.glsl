@@ -8,9 +8,10 @@
 // Width and height of the LTC table this build wrote (matc_ltc.*).
 #define MATC_LTC_SIZE {{ltc_size}}
 
-// Where to sample the LTC table: the preintegrated table's axes, at the LTC table's size.
+// Where to sample the LTC table: 1 - sqrt(1 - NdotV), nearly linear in the view angle so that the
+// lobe's direction interpolates between texels (docs/ltc.md), and roughness.
 vec2 matc_ltc_texcoord(float NdotV, float roughness) {
-  vec2 axes = vec2(sqrt(clamp(NdotV, 0.0, 1.0)), clamp(roughness, 0.0, 1.0));
+  vec2 axes = vec2(1.0 - sqrt(1.0 - clamp(NdotV, 0.0, 1.0)), clamp(roughness, 0.0, 1.0));
   // texcoord = (axes * (size - 1) + 0.5) / size, written as one multiply-add.
   return axes * (float(MATC_LTC_SIZE - 1) / float(MATC_LTC_SIZE)) + 0.5 / float(MATC_LTC_SIZE);
 }

@@ -9,9 +9,10 @@
 // Width and height of the LTC table this build wrote (matc_ltc.*).
 const MATC_LTC_SIZE: i32 = {{ltc_size}};
 
-// Where to sample the LTC table: the preintegrated table's axes, at the LTC table's size.
+// Where to sample the LTC table: 1 - sqrt(1 - NdotV), nearly linear in the view angle so that the
+// lobe's direction interpolates between texels (docs/ltc.md), and roughness.
 fn matc_ltc_texcoord(NdotV: f32, roughness: f32) -> vec2f {
-  let axes = vec2f(sqrt(clamp(NdotV, 0.0, 1.0)), clamp(roughness, 0.0, 1.0));
+  let axes = vec2f(1.0 - sqrt(1.0 - clamp(NdotV, 0.0, 1.0)), clamp(roughness, 0.0, 1.0));
   // texcoord = (axes * (size - 1) + 0.5) / size, written as one multiply-add.
   return axes * (f32(MATC_LTC_SIZE - 1) / f32(MATC_LTC_SIZE)) + 0.5 / f32(MATC_LTC_SIZE);
 }

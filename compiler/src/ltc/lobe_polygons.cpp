@@ -101,9 +101,9 @@ PolygonSetError ltc_polygon_set_error(const runtime::LtcInverse& inverse,
 }
 
 TexelPolygons held_out_polygons(std::size_t size, std::size_t count, std::size_t samples,
-                                unsigned threads) {
+                                runtime::LtcViewAxis axis, unsigned threads) {
   TexelPolygons polygons(size * size);
-  for_each_texel_lobe(size, threads,
+  for_each_texel_lobe(size, axis, threads,
                       [&](std::size_t index, std::size_t, std::size_t, const GgxLobe& lobe,
                           double ndotv, double roughness) {
                         polygons[index] =

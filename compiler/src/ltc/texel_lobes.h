@@ -11,14 +11,16 @@
 
 namespace matc {
 
-// visit(index = y * size + x, x, y, lobe, ndotv, roughness) once per texel.
+// visit(index = y * size + x, x, y, lobe, ndotv, roughness) once per texel of a table whose
+// columns lie on `axis`.
 template <typename Visit>
-void for_each_texel_lobe(std::size_t size, unsigned threads, const Visit& visit) {
+void for_each_texel_lobe(std::size_t size, runtime::LtcViewAxis axis, unsigned threads,
+                         const Visit& visit) {
   fill_rows_in_parallel(size, threads, [&] {
     return [&](std::size_t y) {
       const double roughness = ltc_texel_roughness(y, size);
       for (std::size_t x = 0; x < size; ++x) {
-        const double ndotv = ltc_texel_ndotv(x, size);
+        const double ndotv = ltc_texel_ndotv(x, size, axis);
         visit(y * size + x, x, y, GgxLobe(ndotv, roughness), ndotv, roughness);
       }
     };

@@ -42,10 +42,11 @@ struct PolygonSetError {
 PolygonSetError ltc_polygon_set_error(const runtime::LtcInverse& inverse,
                                       std::span<const LobePolygon> polygons);
 
-// Held-out quads for every texel of a table of `size` (kHeldOutPolygonSeed): `count` per texel
-// of `samples` pairs each, rows by roughness like the table; and a table's error on them.
+// Held-out quads for every texel of a table of `size` on `axis` (kHeldOutPolygonSeed): `count` per
+// texel of `samples` pairs each, rows by roughness like the table; and a table's error on them.
 using TexelPolygons = std::vector<std::vector<LobePolygon>>;
 TexelPolygons held_out_polygons(std::size_t size, std::size_t count, std::size_t samples,
+                                runtime::LtcViewAxis axis = runtime::LtcViewAxis::angular,
                                 unsigned threads = 0);
 std::vector<PolygonSetError> ltc_held_out_errors(const runtime::LtcTableView& table,
                                                  const TexelPolygons& polygons);

@@ -43,10 +43,24 @@ enum class LtcObjective { l1, l3, polygons };
 inline constexpr std::size_t kLtcTrainingPolygons = 128;
 inline constexpr std::size_t kLtcTrainingPolygonSamples = 2048;  // reference pairs per quad
 
+// Two changes to the polygon objective that docs/ltc.md measured and did not keep: more training
+// quads at grazing views (NdotV < kLtcGrazingNdotV), where the fit is weakest, and a term for the
+// LTC's mass below the horizon (ltc_mass_below_horizon), what a light over the whole upper
+// hemisphere misses, weighted against the quads' mean error.
+inline constexpr double kLtcGrazingNdotV = 0.1;
+struct LtcPolygonVariant {
+  std::size_t grazing_polygons = kLtcTrainingPolygons;
+  double horizon_weight = 0.0;
+};
+
 struct LtcFitOptions {
   std::size_t size = kDefaultLtcSize;
   unsigned threads = 0;  // 0: one per hardware thread
   LtcObjective objective = LtcObjective::polygons;
+  // Where the columns lie (matc/runtime/ltc.h): the shaders sample the angular axis only; the
+  // other is for the study in docs/ltc.md.
+  runtime::LtcViewAxis view_axis = runtime::LtcViewAxis::angular;
+  LtcPolygonVariant variant{};  // the shipped fit: the defaults
 };
 
 struct LtcTable {
@@ -54,17 +68,20 @@ struct LtcTable {
   std::vector<float> texels;           // size * size * 4: (a, b, c, d) per texel, rows by roughness
   std::vector<double> cubed_distance;  // per texel
   std::vector<double> l1_distance;     // per texel
+  runtime::LtcViewAxis view_axis = runtime::LtcViewAxis::angular;
 
-  runtime::LtcTableView view() const { return {size, texels}; }
+  runtime::LtcTableView view() const { return {size, texels, view_axis}; }
 };
 
-// The texel's cosine and roughness on the preintegrated table's axes.
-double ltc_texel_ndotv(std::size_t x, std::size_t size);
+// The texel's cosine (on the table's view axis) and roughness.
+double ltc_texel_ndotv(std::size_t x, std::size_t size,
+                       runtime::LtcViewAxis axis = runtime::LtcViewAxis::angular);
 double ltc_texel_roughness(std::size_t y, std::size_t size);
 
 // One texel, from a first guess (the previous texel of the row, or isotropic when `isotropic`).
 LtcCellFit fit_ltc_cell(double ndotv, double roughness, const LtcShape& first_guess, bool isotropic,
-                        LtcObjective objective = LtcObjective::l1);
+                        LtcObjective objective = LtcObjective::l1,
+                        const LtcPolygonVariant& variant = {});
 
 // The distances of a given LTC (a texel as a file stores it) from the GGX lobe, measured like the
 // fit measures them.
@@ -74,6 +91,12 @@ LtcCellFit evaluate_ltc_cell(const runtime::LtcInverse& inverse, double ndotv, d
 // the whole table by default. Throws std::invalid_argument for a size outside [2, 1024].
 LtcTable fit_ltc_table(const LtcFitOptions& options, std::size_t first_row = 0,
                        std::size_t row_count = static_cast<std::size_t>(-1));
+
+// The share of an LTC's distribution below the shading horizon, which its integral clips: under
+// a light over the whole upper hemisphere the LTC gives E (1 - this) where the lobe gives E. The
+// horizon z = 0 is, in the cosine's space, the plane normal to (-c, 0, a), and a clamped cosine
+// has (1 + n.z) / 2 of its mass on the side n points to.
+double ltc_mass_below_horizon(const runtime::LtcInverse& inverse);
 
 // The polygon-light error of each texel of a table: for squares seen towards the mirror
 // direction, the normal and the horizon (one crossing it), the largest |E I_ltc(P) -

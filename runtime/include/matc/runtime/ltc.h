@@ -9,10 +9,14 @@
 // V = (sqrt(1 - NdotV^2), 0, NdotV). Symmetry about that plane leaves four entries of M^-1:
 //     M^-1 = [[a, 0, b], [0, 1, 0], [c, 0, d]]   (rows; scaled so that the middle entry is 1,
 //                                                  a scale the integral does not see).
-// Table layout: a square RGBA float texture on the preintegrated table's axes (matc/runtime/lut.h):
-// columns u = sqrt(NdotV), rows perceptual roughness (GGX alpha = roughness^2), texel (x, y)
-// holding (a, b, c, d) at u = x / (size - 1), roughness = y / (size - 1); sampled with linear
-// filtering and clamp to edge at (coordinate * (size - 1) + 0.5) / size per axis.
+// Table layout: a square RGBA float texture, columns u = 1 - sqrt(1 - NdotV) (grazing at 0, normal
+// incidence at 1), rows perceptual roughness (GGX alpha = roughness^2), texel (x, y) holding
+// (a, b, c, d) at u = x / (size - 1), roughness = y / (size - 1); sampled with linear filtering and
+// clamp to edge at (coordinate * (size - 1) + 0.5) / size per axis. The view axis is nearly
+// linear in the view angle (as Heitz et al.'s sqrt(1 - NdotV)) so that the lobe's direction
+// interpolates between texels; the preintegrated table's sqrt(NdotV) is not near normal
+// incidence, and a smooth lobe between its last two columns was misplaced by up to 3 degrees
+// (docs/ltc.md).
 #pragma once
 
 #include <array>
@@ -46,10 +50,18 @@ struct LtcInverse {
   }
 };
 
+// The table's view axis: u = 1 - sqrt(1 - NdotV) (angular, shipped), or the preintegrated
+// table's u = sqrt(NdotV) (before issue #31; kept so that the study in docs/ltc.md can refit
+// and score a table on it). NdotV clamped to [0, 1].
+enum class LtcViewAxis { angular, sqrt_ndotv };
+double ltc_u_from_ndotv(double ndotv, LtcViewAxis axis = LtcViewAxis::angular);
+double ltc_ndotv_from_u(double u, LtcViewAxis axis = LtcViewAxis::angular);
+
 // A non-owning view of a table in the layout above (row-major, 4 floats per texel).
 struct LtcTableView {
   std::size_t size = 0;
-  std::span<const float> texels;  // size * size * 4
+  std::span<const float> texels;                 // size * size * 4
+  LtcViewAxis view_axis = LtcViewAxis::angular;  // the shaders sample the angular axis only
 
   std::array<float, kLtcChannels> texel(std::size_t x, std::size_t y) const;
 };
