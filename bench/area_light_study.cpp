@@ -341,9 +341,10 @@ int main(int argc, char** argv) {
   fmt::print(
       "\nWhat a renderer sees: the same error at {} views drawn once for every table (view angle "
       "uniform over 0-90 degrees, roughness over 0-1), {} quads each like the held-out ones "
-      "({} sample pairs each), each table filtered between texels as a shader reads it. Mean over "
-      "views of each view's mean, and the largest; views within {} degrees of the normal apart; "
-      "views with NdotV < 0.1 apart:\n\n"
+      "({} sample pairs each), each table filtered between texels as a shader reads it. Mean "
+      "over the views with NdotV >= 0.1 of each view's mean, and the largest; then the same over "
+      "the views within {} degrees of the normal (a subset), and the mean over the views with "
+      "NdotV < 0.1 (not in the first):\n\n"
       "| table | roughness | mean | max | within 15 degrees of the normal: mean | max | "
       "NdotV < 0.1: mean |\n"
       "|---|---|---:|---:|---:|---:|---:|\n",
