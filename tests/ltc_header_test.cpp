@@ -29,7 +29,7 @@ TEST(LtcHeader, ManifestDescribesTheLayout) {
   EXPECT_EQ(manifest["channels"], nlohmann::json::array({"a", "b", "c", "d"}));
   EXPECT_NE(manifest["matrix"].get<std::string>().find("[[a, 0, b], [0, 1, 0], [c, 0, d]]"),
             std::string::npos);
-  EXPECT_NE(manifest["layout"]["columns"].get<std::string>().find("sqrt(NdotV)"),
+  EXPECT_NE(manifest["layout"]["columns"].get<std::string>().find("u = 1 - sqrt(1 - NdotV)"),
             std::string::npos);
 }
 

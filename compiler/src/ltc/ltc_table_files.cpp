@@ -58,12 +58,12 @@ nlohmann::ordered_json ltc_table_manifest(const runtime::LtcTableView& table, Lu
   manifest["matrix"] =
       "M^-1 = [[a, 0, b], [0, 1, 0], [c, 0, d]] (rows) in the shading frame: normal +z, view in "
       "the xz-plane towards +x";
-  manifest["layout"] = preintegrated_axes_layout("RGBA");
+  manifest["layout"] = roughness_table_layout("1 - sqrt(1 - NdotV)", "RGBA");
   manifest["magnitude"] =
       "the preintegrated table (matc_lut): L = I_ltc(light) * sum_i c_i bbar_i per channel";
   manifest["fit"] =
-      "Nelder-Mead on Heitz et al.'s cubed density difference, 32 x 32 samples from each density; "
-      "the frame angle free (docs/ltc.md)";
+      "Nelder-Mead: the densities' L1 distance, then the mean error of the integral over 128 "
+      "random quad lights against the GGX lobe's; the frame angle free (docs/ltc.md)";
   return manifest;
 }
 

@@ -111,10 +111,11 @@ std::string encode_lut(const BakedLut& baked, LutFormat format, LutPrecision pre
   return {};
 }
 
-nlohmann::ordered_json preintegrated_axes_layout(std::string_view channels) {
+nlohmann::ordered_json roughness_table_layout(std::string_view columns_from_ndotv,
+                                              std::string_view channels) {
   return {
       {"rows", "roughness (perceptual; GGX alpha = roughness^2), first row = 0"},
-      {"columns", "u = sqrt(NdotV), first column = 0"},
+      {"columns", fmt::format("u = {}, first column = 0", columns_from_ndotv)},
       {"texel_centres", "texel (x, y) holds u = x / (size - 1), roughness = y / (size - 1)"},
       {"sampling", "linear filtering, clamp to edge, at (u * (size - 1) + 0.5) / size per axis"},
       {"raw", fmt::format("row-major, {} interleaved, little-endian, tightly packed", channels)}};
@@ -132,7 +133,7 @@ nlohmann::ordered_json lut_manifest(const BakedLut& baked, LutFormat format,
   manifest["samples_per_texel"] = lut.samples;
   manifest["basis"] = runtime::basis_name(baked.basis);
   manifest["channels"] = {"bbar_0", "bbar_1", "bbar_2", "bbar_3"};
-  manifest["layout"] = preintegrated_axes_layout("RGBA");
+  manifest["layout"] = roughness_table_layout("sqrt(NdotV)", "RGBA");
   manifest["energy_compensation"] = {
       {"directional_albedo", "channel 0 (bbar_0) is E(NdotV, roughness)"},
       {"average_albedo", baked.average_albedo},

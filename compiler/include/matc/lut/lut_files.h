@@ -44,9 +44,11 @@ Lut stored_as(Lut lut, LutPrecision precision);
 // half precision when `precision` is f16, so they equal what the texture formats store).
 std::string encode_lut(const BakedLut& baked, LutFormat format, LutPrecision precision);
 
-// The "layout" of a manifest for a table on the preintegrated table's axes (rows roughness,
-// columns sqrt(NdotV)) with `channels` floats per texel: the LUT's and the LTC table's.
-nlohmann::ordered_json preintegrated_axes_layout(std::string_view channels);
+// The "layout" of a manifest for a square table with rows roughness and columns
+// u = `columns_from_ndotv` (the LUT's sqrt(NdotV), the LTC table's 1 - sqrt(1 - NdotV)), with
+// `channels` floats per texel.
+nlohmann::ordered_json roughness_table_layout(std::string_view columns_from_ndotv,
+                                              std::string_view channels);
 
 // What a renderer needs besides the texels: axes, texel-centre convention, energy tables.
 nlohmann::ordered_json lut_manifest(const BakedLut& baked, LutFormat format,
