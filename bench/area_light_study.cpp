@@ -44,6 +44,10 @@ constexpr double kHorizonVariantWeight = 0.1;
 constexpr const char* kGrazingVariantLabel = "polygon objective, 4x the quads at NdotV < 0.1";
 constexpr const char* kHorizonVariantLabel = "polygon objective + 0.1 x the mass below the horizon";
 
+// The roughness bands both fit tables report (the last one takes roughness 1 in).
+constexpr std::array<std::array<double, 2>, 4> kRoughnessBands = {
+    {{0.0, 0.25}, {0.25, 0.5}, {0.5, 0.75}, {0.75, 1.0001}}};
+
 constexpr std::array kNdotV = {0.05, 0.15, 0.3, 0.45, 0.6, 0.75, 0.9, 1.0};
 constexpr std::array kRoughness = {0.1, 0.25, 0.4, 0.55, 0.7, 0.9};
 
@@ -106,9 +110,7 @@ void print_fit_quality(const char* label, const matc::runtime::LtcTableView& tab
   const std::vector<double> polygon = matc::ltc_polygon_errors(table, samples);
   const std::vector<matc::PolygonSetError> held_out_errors =
       matc::ltc_held_out_errors(table, held_out);
-  constexpr std::array<std::array<double, 2>, 4> kBands = {
-      {{0.0, 0.25}, {0.25, 0.5}, {0.5, 0.75}, {0.75, 1.0001}}};
-  for (const auto& [low, high] : kBands) {
+  for (const auto& [low, high] : kRoughnessBands) {
     double l1_sum = 0, l1_max = 0, polygon_sum = 0, polygon_max = 0, grazing_l1 = 0;
     double held_out_sum = 0, held_out_max = 0, grazing_held_out = 0, below_sum = 0, below_max = 0;
     std::size_t count = 0, grazing = 0;
@@ -189,9 +191,7 @@ void print_view_quality(const char* label, const matc::runtime::LtcTableView& ta
                         const std::vector<ViewQuads>& views) {
   constexpr double kNearNormal = 15.0;  // degrees
   const double near_normal_cosine = std::cos(kNearNormal * std::numbers::pi / 180.0);
-  constexpr std::array<std::array<double, 2>, 4> kBands = {
-      {{0.0, 0.25}, {0.25, 0.5}, {0.5, 0.75}, {0.75, 1.0001}}};
-  for (const auto& [low, high] : kBands) {
+  for (const auto& [low, high] : kRoughnessBands) {
     double sum = 0, max = 0, near_sum = 0, near_max = 0, grazing_sum = 0;
     std::size_t count = 0, near = 0, grazing = 0;
     for (const ViewQuads& view : views) {

@@ -33,12 +33,12 @@ std::array<float, kLtcChannels> LtcTableView::texel(std::size_t x, std::size_t y
 }
 
 double ltc_u_from_ndotv(double ndotv, LtcViewAxis axis) {
-  const double clamped = std::clamp(ndotv, 0.0, 1.0);
-  return axis == LtcViewAxis::angular ? 1.0 - std::sqrt(1.0 - clamped) : std::sqrt(clamped);
+  if (axis == LtcViewAxis::sqrt_ndotv) return lut_u_from_ndotv(ndotv);
+  return 1.0 - std::sqrt(1.0 - std::clamp(ndotv, 0.0, 1.0));
 }
 
 double ltc_ndotv_from_u(double u, LtcViewAxis axis) {
-  if (axis == LtcViewAxis::sqrt_ndotv) return u * u;
+  if (axis == LtcViewAxis::sqrt_ndotv) return lut_ndotv_from_u(u);
   const double from_normal = 1.0 - u;
   return 1.0 - from_normal * from_normal;
 }
