@@ -228,7 +228,7 @@ export function rgbOf(value) {
 }
 
 // Checks the areaLights option against the values an integration supports.
-export function checkAreaLights(areaLights, allowed = ["matc", "engine"]) {
+export function checkAreaLights(areaLights, allowed = ["matc", "quality", "engine"]) {
   if (!allowed.includes(areaLights)) {
     throw new MatcWebError(`areaLights: "${areaLights}"; allowed: ${allowed.map((value) => `"${value}"`).join(", ")}`);
   }

@@ -1,10 +1,11 @@
 // matc's Fresnel inside Babylon.js's PBRMaterial (examples/web/babylon/matc-babylon.mjs, a
 // material plugin), rendered by Babylon's WebGL2 engine in headless Chromium into a float render
 // target and compared, at probe pixels, with what the CPU runtime (`matc eval`) predicts, to 1e-4
-// (relative above 1): under a white environment, a point light and a rect area light, for the
-// Figure 2 material and beryllium, a textured metal through the coefficient table and a
-// `matc bake` result (tests/js/engine-probes.mjs has the scene and the CPU side). Then the inputs
-// that must fail, as for three.js, with a Babylon whose patched shader changed.
+// (relative above 1): under a white environment, a point light and a rect area light (also at the
+// quality level, areaLights "quality"), for the Figure 2 material and beryllium, a textured metal
+// through the coefficient table and a `matc bake` result (tests/js/engine-probes.mjs has the scene
+// and the CPU side). Then the inputs that must fail, as for three.js, with a Babylon whose patched
+// shader changed.
 //   node check-babylon-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
 import { readFileSync } from "node:fs";
 import { dirname, join } from "node:path";
@@ -76,7 +77,7 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
                                      f0Map: await baked(scene, "probe_f0.ktx2") } }),
     };
     const source = sources[render.source] ? await sources[render.source]() : { material: materials[render.source] };
-    const material = useMatcFresnel(new PBRMaterial("matc", scene), build, source);
+    const material = useMatcFresnel(new PBRMaterial("matc", scene), build, source, { areaLights: render.areaLights });
     material.roughness = render.roughness;
     material.albedoColor.set(1, 1, 1);
     const plane = CreatePlane("plane", { size: 4, sideOrientation: 2 }, scene);

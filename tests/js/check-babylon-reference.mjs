@@ -249,6 +249,10 @@ ${environmentCubeFaces.toString()}
                                      { material: await build.loadMaterial(material.name) }, { areaLights: "engine" });
     engineLtc.roughness = material.roughness;
     await draw(material.name + " matc-engine-ltc", engineLtc, true);
+    const quality = useMatcFresnel(new PBRMaterial("matc-quality", scene), build,
+                                   { material: await build.loadMaterial(material.name) }, { areaLights: "quality" });
+    quality.roughness = material.roughness;
+    await draw(material.name + " matc-quality", quality, true);
   }
 `,
 });

@@ -5,7 +5,8 @@
 //   - image lighting under a white environment (PMREM of a constant): compensated Fbar;
 //   - a point light: irradiance x GGX (D, height-correlated Smith, as three.js writes them) x
 //     matc's F(v.h) x matc's energy compensation;
-//   - a rect area light: the light's radiance x `L_ltc` of `matc eval --quad-light`;
+//   - a rect area light: the light's radiance x `L_ltc` of `matc eval --quad-light`, and at the
+//     quality level (areaLights "quality") x `L_ltc_following`;
 // for the Figure 2 material and beryllium (compiled coefficients), a textured metal through the
 // coefficient table and a `matc bake` result. Then the inputs that must fail: a build without
 // the files the integration needs, a table of another basis than the build or the coefficients,
@@ -55,7 +56,7 @@ import { probeScene } from "/checks/three-scene-page.mjs";
                              f0Map: await baked("probe_f0.ktx2") } };
   for (const render of config.renders) {
     const material = useMatcFresnel(new THREE.MeshPhysicalMaterial({ roughness: render.roughness }),
-                                    build, sources[render.source]);
+                                    build, sources[render.source], { areaLights: render.areaLights });
     const scene = probeScene(THREE, material, render.light, config, environment);
     renderer.setRenderTarget(target);
     renderer.render(scene, camera);

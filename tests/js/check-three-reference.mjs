@@ -79,6 +79,9 @@ import { inlayMaps, referenceMaterial, threeScene } from "/checks/three-scene-pa
     const engineLtc = useMatcFresnel(new THREE.MeshPhysicalMaterial({ roughness: material.roughness }), build,
                                      { material: await build.loadMaterial(material.name) }, { areaLights: "engine" });
     draw(material.name + " matc-engine-ltc", engineLtc, true);
+    const quality = useMatcFresnel(new THREE.MeshPhysicalMaterial({ roughness: material.roughness }), build,
+                                   { material: await build.loadMaterial(material.name) }, { areaLights: "quality" });
+    draw(material.name + " matc-quality", quality, true);
   }
 `,
 });

@@ -1,9 +1,9 @@
 // matc's Fresnel in three.js's WebGPURenderer (examples/web/three/matc-three-webgpu.mjs: three's
 // PhysicalLightingModel with matc's WGSL library through wgslFn), on WebGPU in headless Chromium
 // (Dawn on SwiftShader), at the probe pixels of tests/js/engine-probes.mjs under the white
-// environment, the point light and the rect area light (matc's LTC), for the Figure 2 material and
-// beryllium at two roughnesses, a textured metal through the coefficient table and a `matc bake`
-// result, against the CPU runtime to 1e-4. WebGPU's adapter and device do not settle under
+// environment, the point light and the rect area light (matc's LTC, and at the quality level), for
+// the Figure 2 material and beryllium at two roughnesses, a textured metal through the coefficient
+// table and a `matc bake` result, against the CPU runtime to 1e-4. WebGPU's adapter and device do not settle under
 // Chromium's virtual time: the page runs in real time and posts its result.
 //   node check-three-webgpu-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
 import { modulePage, threeVersion } from "./browser-page.mjs";
@@ -49,7 +49,8 @@ import { probeScene, webGpuRenderer } from "/checks/three-scene-page.mjs";`,
   };
   for (const render of config.renders) {
     const material = useMatcFresnel(new THREE.MeshPhysicalNodeMaterial({ roughness: render.roughness }), build,
-                                    sources[render.source] ?? { material: materials[render.source] });
+                                    sources[render.source] ?? { material: materials[render.source] },
+                                    { areaLights: render.areaLights });
     const scene = probeScene(THREE, material, render.light, config, white);
     renderer.setRenderTarget(target);
     await renderer.renderAsync(scene, camera);

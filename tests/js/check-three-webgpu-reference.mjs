@@ -96,6 +96,8 @@ import { inlayMaps, referenceMaterial, threeScene, webGpuRenderer } from "/check
                                                        { material: await build.loadMaterial(material.name) }));
     await draw(material.name + " matc-engine-ltc", useMatcFresnel(physical({ roughness: material.roughness }), build,
         { material: await build.loadMaterial(material.name) }, { areaLights: "engine" }));
+    await draw(material.name + " matc-quality", useMatcFresnel(physical({ roughness: material.roughness }), build,
+        { material: await build.loadMaterial(material.name) }, { areaLights: "quality" }));
   }
 `,
 });

@@ -80,15 +80,19 @@ export function prepareProbeBuilds(matc, materialsDir, dir) {
                          "mixed-table": join(dir, "mixed-table") } };
 }
 
-// The renders a page makes: every material at every roughness under each light; the textured and
-// baked metals under the environment and the point light.
+// The renders a page makes: every material at every roughness under each light, and under the rect
+// light at the quality level (render.areaLights, useMatcFresnel's option); the textured and baked
+// metals under the environment and the point light.
 export function probeRenders() {
   const renders = [];
   for (const source of kProbeMaterials) {
     for (const roughness of kProbeRoughness) {
       for (const light of ["environment", "point", "rect"]) {
-        renders.push({ key: `${source} ${light} r=${roughness}`, source, light, roughness });
+        renders.push({ key: `${source} ${light} r=${roughness}`, source, light, roughness, areaLights: "matc" });
       }
+      // The rect light at the quality level (areaLights "quality").
+      renders.push({ key: `${source} rect quality r=${roughness}`, source, light: "rect", roughness,
+                     areaLights: "quality" });
     }
   }
   for (const source of ["textured", "baked"]) {
@@ -102,8 +106,8 @@ export function probeRenders() {
 // The CPU runtime's value at every probe of the given renders: compensated Fbar under the white
 // environment, irradiance x GGX x F(v.h) x compensation under the point light (alphaOf gives the
 // engine's GGX alpha for a roughness), the rect light's radiance (rect.light.intensity) x `L_ltc`
-// (rect.corners in world space), times the compensation too where the engine applies it to area
-// lights (rect.compensated).
+// (rect.corners in world space; `L_ltc_following` at the quality level), times the compensation
+// too where the engine applies it to area lights (rect.compensated).
 export function expectedProbes({ matc, materialsDir, out, alphaOf, rect, renders }) {
   const wanted = new Set(renders.map((render) => render.key));
   const ndotv = kProbePixels.map((pixel) => Math.fround(dot(kNormal, viewAt(pixel))));
@@ -129,7 +133,7 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, rect, renders
   ]) {
     for (const roughness of source === "textured" || source === "baked" ? [0.3] : kProbeRoughness) {
       const key = (light) => `${source} ${light} r=${roughness}`;
-      if (!["environment", "point", "rect"].some((light) => wanted.has(key(light)))) continue;
+      if (!["environment", "point", "rect", "rect quality"].some((light) => wanted.has(key(light)))) continue;
       const terms = pointTerms[kProbeRoughness.indexOf(roughness)];
       const evaluated = JSON.parse(run(matc, [
         "eval", ...args, "--lut-precision", "f32", "--no-reference", "--ndotv", list(ndotv),
@@ -146,15 +150,20 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, rect, renders
           return compensated.map((value) => t.irradiance * t.ggx * value);
         });
       }
-      if (wanted.has(key("rect"))) {
-        expected[key("rect")] = kProbePixels.map((pixel, i) => {
+      if (wanted.has(key("rect")) || wanted.has(key("rect quality"))) {
+        const lights = kProbePixels.map((pixel, i) => {
           const quad = rect.corners.map((corner) => toShadingFrame(corner, pixel).join(",")).join(";");
-          const light = JSON.parse(run(matc, [
+          return JSON.parse(run(matc, [
             "eval", ...args, "--lut-precision", "f32", "--ndotv", String(ndotv[i]),
             "--roughness", String(roughness), "--quad-light", quad, "--light-samples", "16"]));
-          const radiance = light.L_ltc[0].map((value) => value * rect.light.intensity);
-          return rect.compensated ? compensatedFbar(radiance, f0, e[i]) : radiance;
         });
+        // L_ltc (areaLights "matc") or L_ltc_following (the quality level).
+        const radiance = (field) => lights.map((light, i) => {
+          const rgb = light[field][0].map((value) => value * rect.light.intensity);
+          return rect.compensated ? compensatedFbar(rgb, f0, e[i]) : rgb;
+        });
+        if (wanted.has(key("rect"))) expected[key("rect")] = radiance("L_ltc");
+        if (wanted.has(key("rect quality"))) expected[key("rect quality")] = radiance("L_ltc_following");
       }
     }
   }
@@ -192,7 +201,7 @@ export const kFailures = {
   unknown_material: "is unobtainium one of this build's materials",
   engine_changed: "changed (0 matches for the text the patch",
   textured_without_edge_tint: "needs both reflectivityMap and edgeTintMap",
-  unknown_area_light_option: 'areaLights: "fast"; allowed: "matc", "engine"',
+  unknown_area_light_option: 'areaLights: "fast"; allowed: "matc", "quality", "engine"',
 };
 
 export function checkFailures(failures) {

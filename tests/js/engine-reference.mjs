@@ -3,8 +3,9 @@
 // tabulated, the textured inlay's maps and bake, the page run, the errors by region of the sphere,
 // the checks, the comparison images and docs/web-engines.md's table, and the frame timing.
 // Each engine gives a page (config -> HTML) that renders "<material> reference", "<material>
-// stock" and "<material> matc" (and "inlaid_metals baked") as base64 RGBA floats, the reference
-// with 1 + NdotV in alpha.
+// stock", "<material> matc", "<material> matc-engine-ltc" and "<material> matc-quality" (the
+// areaLights options; and "inlaid_metals baked") as base64 RGBA floats, the reference with
+// 1 + NdotV in alpha.
 //   runReferenceComparison(engine, process.argv.slice(2)), argv: MATC MATERIALS_DIR
 //   EXAMPLES_WEB_DIR MATC_EXAMPLE_MAPS EXAMPLES_TEXTURED_DIR [--markdown] [--images DIR]
 //   [--size N] [--lights environment|point|rect] [--timing]
@@ -33,6 +34,10 @@ const kRegions = [
   { name: "centre (NdotV >= 0.7)", test: (nv) => nv >= 0.7, bound: 1.1,
     means: "the split sum's own error: no more than stock + 10%" },
 ];
+
+// The renders of each material with useMatcFresnel's other areaLights options ("<material> <kind>").
+const kAreaLightVariants = [{ kind: "matc-engine-ltc", label: "engine's LTC" },
+                            { kind: "matc-quality", label: "quality level" }];
 
 const floats = (text) => new Float32Array(Buffer.from(text, "base64").buffer.slice(0));
 
@@ -125,16 +130,18 @@ export async function runReferenceComparison(engine, argv) {
                                              `against the stock material's ${s.all.toFixed(4)}: not ${region.means}`);
         rows.push({ name, region: region.name, pixels: o.pixels, stock: s, ours: o });
       });
-      // areaLights: "engine" (the engine's LTC shape with matc's Fresnel): closer than stock.
-      const engineLtc = result.images[`${name} matc-engine-ltc`];
-      check(Boolean(engineLtc), `${name}: the engine-LTC variant was not rendered`);
-      if (engineLtc) {
-        regionErrors(floats(engineLtc), reference).forEach((o, r) => {
+      // The other areaLights options: "engine" (the engine's LTC shape with matc's Fresnel) and
+      // "quality" (matc's quality level): closer than stock.
+      for (const { kind, label } of kAreaLightVariants) {
+        const image = result.images[`${name} ${kind}`];
+        check(Boolean(image), `${name}: the ${label} variant was not rendered`);
+        if (!image) continue;
+        regionErrors(floats(image), reference).forEach((o, r) => {
           const s = stockErrors[r];
           check(o.all <= Math.max(kRegions[r].bound, 1.0) * s.all,
-                `${name} (engine's LTC), ${kRegions[r].name}: matc's error ${o.all.toFixed(4)} against the stock ` +
+                `${name} (${label}), ${kRegions[r].name}: matc's error ${o.all.toFixed(4)} against the stock ` +
                 `material's ${s.all.toFixed(4)}`);
-          rows.push({ name: `${name} (engine's LTC)`, region: kRegions[r].name, pixels: o.pixels, stock: s, ours: o });
+          rows.push({ name: `${name} (${label})`, region: kRegions[r].name, pixels: o.pixels, stock: s, ours: o });
         });
       }
       if (imagesDir) {
@@ -186,7 +193,7 @@ export async function runReferenceComparison(engine, argv) {
       // no clock): per kind, the mean over its materials, the fastest of three runs.
       const frames = 100, runs = 3;
       const perFrame = {};
-      for (const kind of ["stock", "matc", "matc-engine-ltc"]) {
+      for (const kind of ["stock", "matc", ...kAreaLightVariants.map((variant) => variant.kind)]) {
         const times = [];
         for (let run = 0; run < runs; ++run) {
           const timed = await runPage({ html: engine.page({ ...config, timing: { kind, frames } }), ...pageOptions,
@@ -202,7 +209,8 @@ export async function runReferenceComparison(engine, argv) {
                  "it shows the shaders' ALU and texture work, not a GPU's timing), timed in the page " +
                  `over ${frames} frames per material, the fastest of ${runs} runs: stock ${perFrame.stock.toFixed(1)} ms, ` +
                  `with matc ${perFrame.matc.toFixed(1)} ms, with matc and the engine's LTC shape for the ` +
-                 `rect light ${perFrame["matc-engine-ltc"].toFixed(1)} ms.`);
+                 `rect light ${perFrame["matc-engine-ltc"].toFixed(1)} ms, with matc at the quality level ` +
+                 `${perFrame["matc-quality"].toFixed(1)} ms.`);
     }
     if (markdown) print(table.join("\n"));
     else console.log(table.join("\n"));

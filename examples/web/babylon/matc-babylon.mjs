@@ -36,7 +36,8 @@ const kDeclarations = (library) => `
 #ifdef MATC_FRESNEL
 ${declarationsGlsl(library, { uniforms: false })}
 // A rect area light of Babylon's (centre, half width, half height; one-sided like Babylon's):
-// matc's LTC times sum_i c_i bbar_i, as matc_ltc_quad_light.
+// matc's LTC times sum_i c_i bbar_i, as matc_ltc_quad_light (areaLights "quality": as
+// matc_ltc_quad_light_following).
 vec3 matc_rect_area_light(vec3 N, vec3 V, vec3 P, float roughness, vec3 centre, vec3 halfWidth, vec3 halfHeight) {
 	vec3 q0 = centre + halfWidth - halfHeight;
 	vec3 q1 = centre - halfWidth - halfHeight;
@@ -44,7 +45,11 @@ vec3 matc_rect_area_light(vec3 N, vec3 V, vec3 P, float roughness, vec3 centre, 
 	vec3 q3 = centre + halfWidth + halfHeight;
 	if (dot(cross(q1 - q0, q3 - q0), P - q0) < 0.0) return vec3(0.0);
 	vec4 ltc = texture2D(matc_ltc, matc_ltc_texcoord(absEps(dot(N, V)), roughness));
+#ifdef MATC_QUALITY_LTC
+	return matc_ltc_quad_light_following(matc_c, matc_bbar, ltc, roughness, N, V, P, q0, q1, q2, q3);
+#else
 	return matc_ltc_quad_light(matc_c, matc_bbar, ltc, N, V, P, q0, q1, q2, q3);
+#endif
 }
 #endif
 `;
@@ -154,7 +159,8 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
     try {
       super(material, "MatcFresnel", 200,
             { MATC_FRESNEL: false, MATC_SOURCE_UNIFORM: false, MATC_SOURCE_TABLE: false,
-              MATC_SOURCE_BAKED: false, MATC_BAKED_F0: false, MATC_ENGINE_LTC: false });
+              MATC_SOURCE_BAKED: false, MATC_BAKED_F0: false, MATC_ENGINE_LTC: false,
+              MATC_QUALITY_LTC: false });
       Object.assign(this, pendingPlugin);
     } finally {
       pendingPlugin = null;
@@ -177,6 +183,7 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
     defines.MATC_SOURCE_BAKED = this.kind === "baked";
     defines.MATC_BAKED_F0 = this.kind === "baked" && Boolean(this.source.baked.f0Map);
     defines.MATC_ENGINE_LTC = this.areaLights === "engine";
+    defines.MATC_QUALITY_LTC = this.areaLights === "quality";
     if (this.kind !== "material") {
       defines._needUVs = true;
       defines.MAINUV1 = true;
@@ -240,8 +247,9 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
 
 // Makes `material` (a PBRMaterial) a matc metal: metallic 1, its Fresnel in every light path from
 // `source`. Returns the material; its plugin is material.matcFresnel. options.areaLights: "matc"
-// (default: matc's LTC table and horizon-clipped integral) or "engine" (Babylon's LTC shape with
-// matc's Fresnel: cheaper; needs Babylon's LTC tables).
+// (default: matc's LTC table and horizon-clipped integral), "quality" (the same with matc's
+// quality level: the lobe's shape and the Fresnel follow the light across the lobe, docs/ltc.md)
+// or "engine" (Babylon's LTC shape with matc's Fresnel: cheaper; needs Babylon's LTC tables).
 export function useMatcFresnel(material, build, source, { areaLights = "matc" } = {}) {
   if (!material?.getClassName || !["PBRMaterial"].includes(material.getClassName())) {
     throw new MatcWebError("useMatcFresnel takes a Babylon.js PBRMaterial");

@@ -82,6 +82,10 @@ export async function loadMatcBuild(url) {
     functions.quadLight = entry("matc_three_quad_light", "bbar: vec4f, ltc: vec4f, N: vec3f, V: vec3f, P: vec3f, " +
                                 "q0: vec3f, q1: vec3f, q2: vec3f, q3: vec3f", "vec3f",
                                 `matc_ltc_quad_light(${coefficients}, bbar, ltc, N, V, P, q0, q1, q2, q3)`);
+    functions.quadLightFollowing = entry(
+        "matc_three_quad_light_following", "bbar: vec4f, ltc: vec4f, roughness: f32, N: vec3f, V: vec3f, " +
+        "P: vec3f, q0: vec3f, q1: vec3f, q2: vec3f, q3: vec3f", "vec3f",
+        `matc_ltc_quad_light_following(${coefficients}, bbar, ltc, roughness, N, V, P, q0, q1, q2, q3)`);
   }
   return { ...files, lut, ltc, coefficientTable, functions };
 }
@@ -128,7 +132,8 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
   }
 
   // Rect area lights: matc's LTC table and horizon-clipped integral times sum_i c_i bbar_i,
-  // one-sided like three's (areaLights "matc"), or three's LTC shape times it ("engine").
+  // one-sided like three's (areaLights "matc"), matc's quality level ("quality"), or three's LTC
+  // shape times it ("engine").
   directRectArea({ lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1 }) {
     this.matcTerms();
     const p0 = lightPosition.add(halfWidth).sub(halfHeight);
@@ -138,12 +143,15 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
     const N = normalView;
     const V = positionViewDirection;
     const P = positionView.toVar();
-    if (this.matc.areaLights === "matc") {
+    if (this.matc.areaLights !== "engine") {
       const { functions, ltc, rows, url } = this.matc;
       if (!ltc) throw new MatcWebError(`${url}: rect area lights need matc's LTC table; compile with --emit ltc`);
       const texel = texture(ltc, functions.ltcTexcoord({ ndotv: N.dot(V).clamp(), roughness }));
       const lit = step(0, p1.sub(p0).cross(p3.sub(p0)).dot(P.sub(p0)));
-      const radiance = functions.quadLight({ ...rows, bbar: this.matcBbar, ltc: texel, N, V, P, q0: p0, q1: p1, q2: p2, q3: p3 });
+      const corners = { N, V, P, q0: p0, q1: p1, q2: p2, q3: p3 };
+      const radiance = this.matc.areaLights === "quality"
+          ? functions.quadLightFollowing({ ...rows, bbar: this.matcBbar, ltc: texel, roughness, ...corners })
+          : functions.quadLight({ ...rows, bbar: this.matcBbar, ltc: texel, ...corners });
       reflectedLight.directSpecular.addAssign(lightColor.mul(radiance).mul(lit));
       return;
     }
@@ -186,8 +194,9 @@ function coefficientRows(build, source) {
 // coefficient nodes (a compiled material's are uniforms: their .value can change without
 // recompiling).
 // options.areaLights: "matc" (default: matc's LTC table and horizon-clipped integral, checked
-// against the CPU runtime) or "engine" (three's LTC shape with matc's Fresnel: cheaper;
-// docs/web-engines.md measures both).
+// against the CPU runtime), "quality" (the same with matc's quality level: the lobe's shape and
+// the Fresnel follow the light across the lobe, docs/ltc.md; a quarter more per light) or "engine"
+// (three's LTC shape with matc's Fresnel: cheaper; docs/web-engines.md measures them).
 export function useMatcFresnel(material, build, source, { areaLights = "matc" } = {}) {
   checkAreaLights(areaLights);
   if (!material?.isMeshStandardNodeMaterial) {

@@ -72,11 +72,17 @@ export const kPatches = [
       "#else\n" +
       "\t\tvec4 matc_ltc_texel = texture2D( matc_ltc, matc_ltc_texcoord( saturate( dot( normal, viewDir ) ), roughness ) );\n" +
       "\t\tbool matc_lit = dot( cross( rectCoords[ 1 ] - rectCoords[ 0 ], rectCoords[ 3 ] - rectCoords[ 0 ] ), position - rectCoords[ 0 ] ) >= 0.0;\n" +
+      "#ifdef MATC_QUALITY_LTC\n" +
+      "\t\tif ( matc_lit ) reflectedLight.directSpecular += lightColor * matc_ltc_quad_light_following( matc_c, matc_bbar, " +
+      "matc_ltc_texel, roughness, normal, viewDir, position, rectCoords[ 0 ], rectCoords[ 1 ], rectCoords[ 2 ], rectCoords[ 3 ] );\n" +
+      "#else\n" +
       "\t\tif ( matc_lit ) reflectedLight.directSpecular += lightColor * matc_ltc_quad_light( matc_c, matc_bbar, matc_ltc_texel, " +
       "normal, viewDir, position, rectCoords[ 0 ], rectCoords[ 1 ], rectCoords[ 2 ], rectCoords[ 3 ] );\n" +
+      "#endif\n" +
       "#endif\n",
     what: "rect area lights: Hill's two-channel LTC Fresnel and the LTC_1 shape become matc's LTC " +
-          "(matc_ltc) times sum_i c_i bbar_i, one-sided like three's; with areaLights: \"engine\", " +
+          "(matc_ltc) times sum_i c_i bbar_i, one-sided like three's; with areaLights: \"quality\", matc's " +
+          "quality level (the shape and the Fresnel follow the light across the lobe); with areaLights: \"engine\", " +
           "three's LTC_1 shape times sum_i c_i bbar_i",
   },
   {
@@ -157,8 +163,9 @@ function sourceUniforms(build, source) {
 // Fresnel in every light path from `source` (see sourceUniforms). Returns the material; its
 // userData.matc.uniforms can be changed later (e.g. another compiled material's coefficients).
 // options.areaLights: "matc" (default: matc's LTC table and horizon-clipped integral, checked
-// against the CPU runtime) or "engine" (three's LTC shape with matc's Fresnel: cheaper;
-// docs/web-engines.md measures both).
+// against the CPU runtime), "quality" (the same with matc's quality level: the lobe's shape and
+// the Fresnel follow the light across the lobe, docs/ltc.md; a quarter more per light) or "engine"
+// (three's LTC shape with matc's Fresnel: cheaper; docs/web-engines.md measures them).
 export function useMatcFresnel(material, build, source, { areaLights = "matc" } = {}) {
   checkAreaLights(areaLights);
   checkBuild(build);
@@ -182,9 +189,10 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc" } 
   if (uv) material.defines.USE_UV = "";
   if (f0) material.defines.MATC_BAKED_F0 = "";
   if (areaLights === "engine") material.defines.MATC_ENGINE_LTC = "";
+  if (areaLights === "quality") material.defines.MATC_QUALITY_LTC = "";
   material.userData.matc = { uniforms, source };
   material.onBeforeCompile = (shader) => {
-    if (!build.ltc && areaLights === "matc" && shader.numRectAreaLights > 0) {
+    if (!build.ltc && areaLights !== "engine" && shader.numRectAreaLights > 0) {
       throw new MatcWebError(`${build.url}: rect area lights need matc's LTC table; compile with --emit ltc`);
     }
     for (const [name, text] of Object.entries(chunks)) {
