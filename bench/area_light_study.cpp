@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <future>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <thread>
@@ -150,6 +151,88 @@ void print_fit_quality(const char* label, const matc::runtime::LtcTableView& tab
         label, low, std::min(high, 1.0), l1_sum / n, l1_max, polygon_sum / n, polygon_max,
         held_out_sum / n, held_out_max, grazing_l1 / grazing_n, grazing_held_out / grazing_n,
         below_sum / n, below_max);
+  }
+}
+
+// The floor: per texel, the LTC fitted to that texel's own held-out quads (their mean error, and
+// separately their largest; fit_ltc_to_polygons), from the better of the two tables' texels.
+// What no table of this form can beat on those quads, up to the local search.
+struct FloorErrors {
+  std::vector<double> mean, max;
+};
+
+FloorErrors held_out_floor(const matc::runtime::LtcTableView& shipped,
+                           const matc::runtime::LtcTableView& l1,
+                           const matc::TexelPolygons& held_out) {
+  const std::size_t size = shipped.size;
+  FloorErrors floor{std::vector<double>(size * size), std::vector<double>(size * size)};
+  std::vector<std::future<void>> work;
+  const std::size_t chunks = std::max(1u, std::thread::hardware_concurrency());
+  for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
+    work.push_back(std::async(std::launch::async, [&, chunk] {
+      for (std::size_t index = chunk; index < size * size; index += chunks) {
+        const std::size_t x = index % size, y = index / size;
+        const double ndotv = matc::ltc_texel_ndotv(x, size);
+        if (ndotv < matc::kLtcGrazingNdotV) continue;  // as print_floor
+        const double roughness = matc::ltc_texel_roughness(y, size);
+        const auto& quads = held_out[index];
+        for (const auto aggregate :
+             {matc::PolygonSetAggregate::mean, matc::PolygonSetAggregate::max}) {
+          double best = std::numeric_limits<double>::infinity();
+          for (const matc::runtime::LtcTableView& table : {shipped, l1}) {
+            const auto t = table.texel(x, y);
+            const matc::LtcCellFit fit = matc::fit_ltc_to_polygons({t[0], t[1], t[2], t[3]}, ndotv,
+                                                                   roughness, quads, aggregate);
+            const matc::PolygonSetError e = matc::ltc_polygon_set_error(fit.inverse, quads);
+            best = std::min(best, aggregate == matc::PolygonSetAggregate::mean ? e.mean : e.max);
+          }
+          (aggregate == matc::PolygonSetAggregate::mean ? floor.mean : floor.max)[index] = best;
+        }
+      }
+    }));
+  }
+  for (auto& w : work)
+    w.get();
+  return floor;
+}
+
+// Per roughness band (NdotV >= 0.1, as above): the held-out mean and largest error of the
+// shipped table and the L1 fit, half of the L1 fit's (issue #31's target), and the floor.
+void print_floor(const matc::runtime::LtcTableView& shipped, const matc::runtime::LtcTableView& l1,
+                 const matc::TexelPolygons& held_out, const FloorErrors& floor) {
+  const std::vector<matc::PolygonSetError> shipped_errors =
+      matc::ltc_held_out_errors(shipped, held_out);
+  const std::vector<matc::PolygonSetError> l1_errors = matc::ltc_held_out_errors(l1, held_out);
+  for (const auto& [low, high] : kRoughnessBands) {
+    double shipped_sum = 0, shipped_max = 0, l1_sum = 0, l1_max = 0, floor_sum = 0, floor_max = 0,
+           noise = 0;
+    std::size_t count = 0, quads = 0;
+    for (std::size_t y = 0; y < shipped.size; ++y) {
+      const double roughness = matc::ltc_texel_roughness(y, shipped.size);
+      if (roughness < low || roughness >= high) continue;
+      for (std::size_t x = 0; x < shipped.size; ++x) {
+        if (matc::ltc_texel_ndotv(x, shipped.size) < matc::kLtcGrazingNdotV) continue;
+        const std::size_t index = y * shipped.size + x;
+        shipped_sum += shipped_errors[index].mean;
+        shipped_max = std::max(shipped_max, shipped_errors[index].max);
+        l1_sum += l1_errors[index].mean;
+        l1_max = std::max(l1_max, l1_errors[index].max);
+        floor_sum += floor.mean[index];
+        floor_max = std::max(floor_max, floor.max[index]);
+        for (const matc::LobePolygon& quad : held_out[index]) {
+          noise += quad.share_error;
+          ++quads;
+        }
+        ++count;
+      }
+    }
+    const double n = static_cast<double>(std::max<std::size_t>(count, 1));
+    fmt::print(
+        "| {:.2f}-{:.2f} | {:.4f} / {:.4f} | {:.4f} / {:.4f} | {:.4f} / {:.4f} | {:.4f} / {:.4f} "
+        "| {:.4f} |\n",
+        low, std::min(high, 1.0), l1_sum / n, l1_max, 0.5 * l1_sum / n, 0.5 * l1_max,
+        shipped_sum / n, shipped_max, floor_sum / n, floor_max,
+        noise / static_cast<double>(std::max<std::size_t>(quads, 1)));
   }
 }
 
@@ -336,6 +419,23 @@ int main(int argc, char** argv) {
     print_fit_quality("Heitz et al.'s objective", heitz.view(), samples, held_out);
     print_fit_quality(kGrazingVariantLabel, grazing.view(), samples, held_out);
     print_fit_quality(kHorizonVariantLabel, horizon.view(), samples, held_out);
+  }
+
+  if (compare) {
+    const FloorErrors floor = held_out_floor(shipped, l1.view(), held_out);
+    fmt::print(
+        "\nThe floor of this form on the held-out quads, texels with NdotV >= 0.1: per texel, the "
+        "LTC fitted to that texel's own {} held-out quads (their mean error, and separately their "
+        "largest; Nelder-Mead from the shipped and the L1 fit's texel, restarted until it stops "
+        "improving), which no table of this form beats on them, against the shipped table, the "
+        "L1 fit (shipped before issue #31) and half of it (the issue's target); mean over texels "
+        "of each texel's mean / the largest, and the references' mean standard error, which the "
+        "mean includes:\n\n"
+        "| roughness | L1 objective | half of it | shipped (polygon objective) | floor | "
+        "references' standard error |\n"
+        "|---|---:|---:|---:|---:|---:|\n",
+        held_out_count);
+    print_floor(shipped, l1.view(), held_out, floor);
   }
 
   fmt::print(

@@ -9,6 +9,7 @@
 
 #include "matc/ltc/area_light_reference.h"
 #include "matc/ltc/ggx_lobe.h"
+#include "matc/ltc/lobe_polygons.h"
 #include "matc/ltc/ltc_fit.h"
 #include "matc/ltc/polygon_light.h"
 #include "matc/lut/preintegrate.h"
@@ -189,6 +190,31 @@ TEST(LtcFit, EvaluatingAStoredTexelGivesTheFitsDistances) {
   EXPECT_NEAR(again.cubed_distance, fit.cubed_distance, 1e-9 * fit.cubed_distance);
   EXPECT_NEAR(again.shape.angle, fit.shape.angle, 1e-9);
   EXPECT_LT(fit.l1_distance, 0.25);
+}
+
+// The floor docs/ltc.md measures: fitted to a set of quads, the LTC beats the shipped texel on
+// them, each aggregate (mean, largest) on its own terms.
+TEST(LtcFit, FittingToTheQuadsThemselvesBeatsTheTableOnThem) {
+  const double ndotv = 0.4, roughness = 0.5;
+  const matc::GgxLobe lobe(ndotv, roughness);
+  const std::vector<matc::LobePolygon> quads =
+      matc::lobe_polygons(lobe, lobe.albedo(matc::kLtcFitSamplesPerAxis),
+                          matc::lobe_polygon_seed(7, ndotv, roughness), 16, 2048);
+  const matc::runtime::LtcInverse shipped =
+      matc::runtime::sample_ltc(matc::runtime::shipped_ltc_table(), ndotv, roughness);
+  const matc::PolygonSetError before = matc::ltc_polygon_set_error(shipped, quads);
+  const matc::PolygonSetError mean_fit = matc::ltc_polygon_set_error(
+      matc::fit_ltc_to_polygons(shipped, ndotv, roughness, quads, matc::PolygonSetAggregate::mean)
+          .inverse,
+      quads);
+  const matc::PolygonSetError max_fit = matc::ltc_polygon_set_error(
+      matc::fit_ltc_to_polygons(shipped, ndotv, roughness, quads, matc::PolygonSetAggregate::max)
+          .inverse,
+      quads);
+  EXPECT_LT(mean_fit.mean, 0.95 * before.mean);
+  EXPECT_LT(max_fit.max, 0.95 * before.max);
+  EXPECT_LE(mean_fit.mean, max_fit.mean);
+  EXPECT_LE(max_fit.max, mean_fit.max);
 }
 
 TEST(GgxLobe, AlbedoMatchesThePreintegratedTable) {

@@ -185,6 +185,31 @@ LtcCellFit evaluate_ltc_cell(const runtime::LtcInverse& inverse, double ndotv, d
   return {inverse, shape, errors.cubed, errors.absolute};
 }
 
+LtcCellFit fit_ltc_to_polygons(const runtime::LtcInverse& start, double ndotv, double roughness,
+                               std::span<const LobePolygon> polygons,
+                               PolygonSetAggregate aggregate) {
+  constexpr std::size_t kMaxRestarts = 8;
+  const GgxLobe lobe(ndotv, roughness);
+  const FitSamples samples = make_samples(lobe);
+  const auto error = [&](const LtcShape& shape) {
+    const PolygonSetError e =
+        ltc_polygon_set_error(LtcMatrix(shape).normalized_inverse(), polygons);
+    return aggregate == PolygonSetAggregate::mean ? e.mean : e.max;
+  };
+  LtcCellFit best = evaluate_ltc_cell(start, ndotv, roughness);
+  double best_error = error(best.shape);
+  // A simplex collapses on the ridges of a largest error: restarting from where it stopped, with
+  // fresh steps, goes on along them.
+  for (std::size_t restart = 0; restart < kMaxRestarts; ++restart) {
+    const LtcCellFit fit = fit_shape(lobe, samples, best.shape, false, error);
+    const double fit_error = error(fit.shape);
+    if (!(fit_error < best_error * (1.0 - 1e-4))) break;
+    best = fit;
+    best_error = fit_error;
+  }
+  return best;
+}
+
 double ltc_texel_ndotv(std::size_t x, std::size_t size, runtime::LtcViewAxis axis) {
   return runtime::ltc_ndotv_from_u(static_cast<double>(x) / static_cast<double>(size - 1), axis);
 }

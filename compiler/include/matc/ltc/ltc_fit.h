@@ -11,9 +11,11 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "matc/ltc/lobe_polygons.h"
 #include "matc/runtime/ltc.h"
 
 namespace matc {
@@ -82,6 +84,16 @@ double ltc_texel_roughness(std::size_t y, std::size_t size);
 LtcCellFit fit_ltc_cell(double ndotv, double roughness, const LtcShape& first_guess, bool isotropic,
                         LtcObjective objective = LtcObjective::l1,
                         const LtcPolygonVariant& variant = {});
+
+// The LTC that fits one set of quads best, from `start`: their mean error, or their largest
+// (minimax), with no bound on the L1 distance. Fitted to a texel's held-out quads it is what no
+// table can beat on them, the floor docs/ltc.md measures the shipped fit against (Nelder-Mead
+// restarted from its own result until it stops improving: a local search, so the floor found,
+// not a proven one).
+enum class PolygonSetAggregate { mean, max };
+LtcCellFit fit_ltc_to_polygons(const runtime::LtcInverse& start, double ndotv, double roughness,
+                               std::span<const LobePolygon> polygons,
+                               PolygonSetAggregate aggregate);
 
 // The distances of a given LTC (a texel as a file stores it) from the GGX lobe, measured like the
 // fit measures them.
