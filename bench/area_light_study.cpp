@@ -154,6 +154,22 @@ void print_fit_quality(const char* label, const matc::runtime::LtcTableView& tab
   }
 }
 
+// Calls visit(i) for every i < count, spread over the hardware threads (each index on one thread,
+// so the results do not depend on the thread count).
+template <typename Visit>
+void for_each_index_in_parallel(std::size_t count, const Visit& visit) {
+  std::vector<std::future<void>> work;
+  const std::size_t chunks = std::max(1u, std::thread::hardware_concurrency());
+  for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
+    work.push_back(std::async(std::launch::async, [&, chunk] {
+      for (std::size_t i = chunk; i < count; i += chunks)
+        visit(i);
+    }));
+  }
+  for (auto& w : work)
+    w.get();
+}
+
 // The floor: per texel, the LTC fitted to that texel's own held-out quads (their mean error, and
 // separately their largest; fit_ltc_to_polygons), from the better of the two tables' texels.
 // What no table of this form can beat on those quads, up to the local search.
@@ -166,33 +182,24 @@ FloorErrors held_out_floor(const matc::runtime::LtcTableView& shipped,
                            const matc::TexelPolygons& held_out) {
   const std::size_t size = shipped.size;
   FloorErrors floor{std::vector<double>(size * size), std::vector<double>(size * size)};
-  std::vector<std::future<void>> work;
-  const std::size_t chunks = std::max(1u, std::thread::hardware_concurrency());
-  for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
-    work.push_back(std::async(std::launch::async, [&, chunk] {
-      for (std::size_t index = chunk; index < size * size; index += chunks) {
-        const std::size_t x = index % size, y = index / size;
-        const double ndotv = matc::ltc_texel_ndotv(x, size);
-        if (ndotv < matc::kLtcGrazingNdotV) continue;  // as print_floor
-        const double roughness = matc::ltc_texel_roughness(y, size);
-        const auto& quads = held_out[index];
-        for (const auto aggregate :
-             {matc::PolygonSetAggregate::mean, matc::PolygonSetAggregate::max}) {
-          double best = std::numeric_limits<double>::infinity();
-          for (const matc::runtime::LtcTableView& table : {shipped, l1}) {
-            const auto t = table.texel(x, y);
-            const matc::LtcCellFit fit = matc::fit_ltc_to_polygons({t[0], t[1], t[2], t[3]}, ndotv,
-                                                                   roughness, quads, aggregate);
-            const matc::PolygonSetError e = matc::ltc_polygon_set_error(fit.inverse, quads);
-            best = std::min(best, aggregate == matc::PolygonSetAggregate::mean ? e.mean : e.max);
-          }
-          (aggregate == matc::PolygonSetAggregate::mean ? floor.mean : floor.max)[index] = best;
-        }
+  for_each_index_in_parallel(size * size, [&](std::size_t index) {
+    const std::size_t x = index % size, y = index / size;
+    const double ndotv = matc::ltc_texel_ndotv(x, size);
+    if (ndotv < matc::kLtcGrazingNdotV) return;  // as print_floor
+    const double roughness = matc::ltc_texel_roughness(y, size);
+    const auto& quads = held_out[index];
+    for (const auto aggregate : {matc::PolygonSetAggregate::mean, matc::PolygonSetAggregate::max}) {
+      double best = std::numeric_limits<double>::infinity();
+      for (const matc::runtime::LtcTableView& table : {shipped, l1}) {
+        const auto t = table.texel(x, y);
+        const matc::LtcCellFit fit =
+            matc::fit_ltc_to_polygons({t[0], t[1], t[2], t[3]}, ndotv, roughness, quads, aggregate);
+        const matc::PolygonSetError e = matc::ltc_polygon_set_error(fit.inverse, quads);
+        best = std::min(best, aggregate == matc::PolygonSetAggregate::mean ? e.mean : e.max);
       }
-    }));
-  }
-  for (auto& w : work)
-    w.get();
+      (aggregate == matc::PolygonSetAggregate::mean ? floor.mean : floor.max)[index] = best;
+    }
+  });
   return floor;
 }
 
@@ -247,26 +254,18 @@ struct ViewQuads {
 std::vector<ViewQuads> random_views(std::size_t count, std::size_t quads, std::size_t samples) {
   constexpr std::uint64_t kViewSeed = matc::kHeldOutPolygonSeed + 1000;
   std::vector<ViewQuads> views(count);
-  std::vector<std::future<void>> work;
-  const std::size_t chunks = std::max(1u, std::thread::hardware_concurrency());
-  for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
-    work.push_back(std::async(std::launch::async, [&, chunk] {
-      for (std::size_t i = chunk; i < count; i += chunks) {
-        // A low-discrepancy pair per view (the R2 sequence), so that every band gets its share.
-        const double u1 = std::fmod(0.5 + 0.7548776662466927 * static_cast<double>(i), 1.0);
-        const double u2 = std::fmod(0.5 + 0.5698402909980532 * static_cast<double>(i), 1.0);
-        ViewQuads& view = views[i];
-        view.ndotv = std::cos(0.5 * std::numbers::pi * u1);
-        view.roughness = u2;
-        const matc::GgxLobe lobe(view.ndotv, view.roughness);
-        view.quads = matc::lobe_polygons(
-            lobe, lobe.albedo(matc::kLtcFitSamplesPerAxis),
-            matc::lobe_polygon_seed(kViewSeed, view.ndotv, view.roughness), quads, samples);
-      }
-    }));
-  }
-  for (auto& w : work)
-    w.get();
+  for_each_index_in_parallel(count, [&](std::size_t i) {
+    // A low-discrepancy pair per view (the R2 sequence), so that every band gets its share.
+    const double u1 = std::fmod(0.5 + 0.7548776662466927 * static_cast<double>(i), 1.0);
+    const double u2 = std::fmod(0.5 + 0.5698402909980532 * static_cast<double>(i), 1.0);
+    ViewQuads& view = views[i];
+    view.ndotv = std::cos(0.5 * std::numbers::pi * u1);
+    view.roughness = u2;
+    const matc::GgxLobe lobe(view.ndotv, view.roughness);
+    view.quads = matc::lobe_polygons(lobe, lobe.albedo(matc::kLtcFitSamplesPerAxis),
+                                     matc::lobe_polygon_seed(kViewSeed, view.ndotv, view.roughness),
+                                     quads, samples);
+  });
   return views;
 }
 

@@ -196,7 +196,10 @@ LtcCellFit fit_ltc_to_polygons(const runtime::LtcInverse& start, double ndotv, d
         ltc_polygon_set_error(LtcMatrix(shape).normalized_inverse(), polygons);
     return aggregate == PolygonSetAggregate::mean ? e.mean : e.max;
   };
-  LtcCellFit best = evaluate_ltc_cell(start, ndotv, roughness);
+  // As evaluate_ltc_cell, on the samples made above.
+  const LtcShape start_shape = shape_of(start);
+  const Errors start_errors = fit_errors(lobe, samples, LtcMatrix(start_shape));
+  LtcCellFit best{start, start_shape, start_errors.cubed, start_errors.absolute};
   double best_error = error(best.shape);
   // A simplex collapses on the ridges of a largest error: restarting from where it stopped, with
   // fresh steps, goes on along them.
