@@ -8,6 +8,7 @@
 #include "matc/lut/analytic_lut_fit.h"
 #include "matc/runtime/analytic_lut.h"
 #include "matc/runtime/lut.h"
+#include "sanitized_build.h"
 
 namespace {
 
@@ -16,6 +17,9 @@ using matc::runtime::BasisKind;
 class ShippedAnalyticLut : public ::testing::TestWithParam<BasisKind> {};
 
 TEST_P(ShippedAnalyticLut, RegenerationReproducesTheCheckedInTable) {
+  // Under sanitizers the default basis' refit stands for the others: the fit's code is the same.
+  if (matc::test::kSanitizedBuild && GetParam() != matc::runtime::kDefaultBasis)
+    GTEST_SKIP() << "sanitized build: the default basis' regeneration only";
   const auto fitted = matc::fit_shipped_analytic_lut(GetParam());
   const auto& shipped = matc::runtime::shipped_analytic_lut(GetParam());
   // Compared as functions: monomial coefficients reach ~1e3 and cancel.

@@ -9,6 +9,7 @@
 #include "matc/runtime/basis.h"
 #include "matc/runtime/powers_basis.h"
 #include "matc/runtime/shader_basis.h"
+#include "sanitized_build.h"
 
 namespace matc {
 namespace {
@@ -95,6 +96,9 @@ TEST(PaperBasis, InterpolationIsExactAtGridPointsAndLinearBetween) {
 }
 
 TEST_P(FittedShippedBasis, RegenerationReproducesTheCheckedInTable) {
+  // Under sanitizers one basis' refit stands for the others: the fit's code is the same.
+  if (test::kSanitizedBuild && GetParam() != runtime::kFittedBases.front())
+    GTEST_SKIP() << "sanitized build: the first fitted basis' regeneration only";
   const FittedBasis fitted = fit_shipped_basis(GetParam());
   const BasisView shipped = runtime::shipped_basis(GetParam());
   EXPECT_EQ(fitted.kind, shipped.kind);

@@ -166,22 +166,22 @@ class Importer {
                       edge_weight->value[0]));
     }
 
-    ordered_json json;
-    json["name"] = material_name(element_name, shader.material);
-    json["description"] =
+    ordered_json material_json;
+    material_json["name"] = material_name(element_name, shader.material);
+    material_json["description"] =
         fmt::format("Imported from {} (material '{}', {}{})",
                     std::filesystem::path(document_.path()).filename().string(), element_name,
                     model->node, metal < 1.0 ? fmt::format(", metal lobe of {}", metal) : "");
-    json["color_space"] = color_space_name(document_.color_space());
+    material_json["color_space"] = color_space_name(document_.color_space());
     const auto rgb = [](const Rgb& v) { return ordered_json::array({v[0], v[1], v[2]}); };
     if (model->imported == ImportedModel::artistic) {
-      json["artistic"] = {{"reflectivity", rgb(f0)}, {"edge_tint", rgb(edge)}};
+      material_json["artistic"] = {{"reflectivity", rgb(f0)}, {"edge_tint", rgb(edge)}};
     } else {
-      json["f82_tint"] = {{"f0", rgb(f0)}, {"tint", rgb(edge)}};
+      material_json["f82_tint"] = {{"f0", rgb(f0)}, {"tint", rgb(edge)}};
     }
-    if (roughness) json["roughness"] = roughness->value[0];
-    if (json["name"].get<std::string>().empty()) return;  // a name clash, reported
-    add_material(json, shader.material);
+    if (roughness) material_json["roughness"] = roughness->value[0];
+    if (material_json["name"].get<std::string>().empty()) return;  // a name clash, reported
+    add_material(material_json, shader.material);
   }
 
   void clamp_channels(Rgb& values, double low, double high, const SourceLocation& location,
@@ -237,15 +237,16 @@ class Importer {
 
   // The material file the import stands for, validated by the same parser as any material file:
   // a compile of the document and a compile of `matc import`'s file are the same material.
-  void add_material(const ordered_json& json, const pugi::xml_node& element) {
+  void add_material(const ordered_json& material_json, const pugi::xml_node& element) {
     ImportedMaterial imported;
     // Names and descriptions come from the document's bytes, which XML parsing does not check
     // for UTF-8: a bad byte becomes U+FFFD in the description (the name is ASCII by then).
-    imported.json = json.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n";
+    imported.json =
+        material_json.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n";
     ParseResult parsed = parse_material(imported.json, document_.path());
     if (!parsed.material) {
       // The importer checked every value; a refusal here is matc's bug, reported as such.
-      result_.diagnostics.error(document_.at(element), json["name"].get<std::string>(),
+      result_.diagnostics.error(document_.at(element), material_json["name"].get<std::string>(),
                                 "the imported material does not validate (an importer bug)",
                                 parsed.diagnostics.items().empty()
                                     ? std::string()
