@@ -55,7 +55,7 @@ export LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp:print_suppressions=
 export UBSAN_OPTIONS="print_stacktrace=1"
 vulkan_tests="Vulkan|DeviceValidation|validate_on_device|Validat|comparison_render|textured_render|baked_render|area_light_render|fullscreen_cost|gpu_cost"
 # The package test installs instrumented static libraries, which a plain consumer cannot link.
-# The 2,000-material Ninja test checks build edges, not memory, and output_hashes checks bytes
+# The per-material Ninja test checks build edges, not memory, and output_hashes checks bytes
 # the plain build's run already compares (the same code paths run in MatcCli under sanitizers):
 # once, unsanitised, is their budget. So is it for the browser and Dawn checks (pages in
 # Chromium, WGSL on Dawn, three.js and Babylon.js against the CPU runtime): their time goes to the

@@ -1,16 +1,16 @@
 #!/usr/bin/env bash
-# matc_add_materials(... PER_MATERIAL) with Ninja on 2,000 generated materials: the first build
+# matc_add_materials(... PER_MATERIAL) with Ninja on 500 generated materials: the first build
 # runs one shared step and one step per material, a second build does nothing, and touching one
 # material reruns that material's step alone.
 #   check_per_material_ninja.sh MATC SOURCE_DIR
 set -euo pipefail
 matc=$(realpath "$1")
 source_dir=$(realpath "$2")
-count=2000
+count=500
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/project/materials"
-for i in $(seq -w 1 $count); do
+for i in $(seq -f %04g 1 "$count"); do
   # Reflectivity and edge tint spread over the artistic range; one file per material.
   r=$(( 10#$i % 90 + 5 )); g=$(( 10#$i * 7 % 100 ))
   printf '{"name": "m%s", "artistic": {"reflectivity": 0.%02d, "edge_tint": 0.%02d}}\n' \
