@@ -176,13 +176,19 @@ LtcCellFit fit_shape(const GgxLobe& lobe, const FitSamples& samples, const LtcSh
   return {matrix.normalized_inverse(), shape, errors.cubed, errors.absolute};
 }
 
+// `inverse` as it is, scored against the lobe on `samples`.
+LtcCellFit score_ltc_cell(const GgxLobe& lobe, const FitSamples& samples,
+                          const runtime::LtcInverse& inverse) {
+  const LtcShape shape = shape_of(inverse);
+  const Errors errors = fit_errors(lobe, samples, LtcMatrix(shape));
+  return {inverse, shape, errors.cubed, errors.absolute};
+}
+
 }  // namespace
 
 LtcCellFit evaluate_ltc_cell(const runtime::LtcInverse& inverse, double ndotv, double roughness) {
   const GgxLobe lobe(ndotv, roughness);
-  const LtcShape shape = shape_of(inverse);
-  const Errors errors = fit_errors(lobe, make_samples(lobe), LtcMatrix(shape));
-  return {inverse, shape, errors.cubed, errors.absolute};
+  return score_ltc_cell(lobe, make_samples(lobe), inverse);
 }
 
 LtcCellFit fit_ltc_to_polygons(const runtime::LtcInverse& start, double ndotv, double roughness,
@@ -196,10 +202,7 @@ LtcCellFit fit_ltc_to_polygons(const runtime::LtcInverse& start, double ndotv, d
         ltc_polygon_set_error(LtcMatrix(shape).normalized_inverse(), polygons);
     return aggregate == PolygonSetAggregate::mean ? e.mean : e.max;
   };
-  // As evaluate_ltc_cell, on the samples made above.
-  const LtcShape start_shape = shape_of(start);
-  const Errors start_errors = fit_errors(lobe, samples, LtcMatrix(start_shape));
-  LtcCellFit best{start, start_shape, start_errors.cubed, start_errors.absolute};
+  LtcCellFit best = score_ltc_cell(lobe, samples, start);
   double best_error = error(best.shape);
   // A simplex collapses on the ridges of a largest error: restarting from where it stopped, with
   // fresh steps, goes on along them.
