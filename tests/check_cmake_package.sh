@@ -19,6 +19,18 @@ cp "$source/examples/textured/make_maps.cpp" "$source/examples/textured/inlaid_m
 cmake -S "$work/engine-src" -B "$work/engine" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
 cmake --build "$work/engine" >/dev/null
 "$work/engine/engine"
+# The cooker (libmatc's batch compile) writes the bytes the installed matc writes for the same
+# materials; its in-memory material is a file for matc, under the name the cooker gives it.
+(cd "$work" && engine/cooker cooked materials/gold.json materials/figure2_edge_tint.json >/dev/null)
+mkdir -p "$work/generated"
+# (without a final newline: the inputs hash covers the text's bytes)
+printf '%s' "$(sed -n 's/^      R"(\(.*\))"));$/\1/p' "$source/examples/engine/cooker.cpp")" \
+  >"$work/generated/brushed_brass.json"
+(cd "$work" && prefix/bin/matc -q -o by-matc materials/gold.json materials/figure2_edge_tint.json \
+  generated/brushed_brass.json)
+diff -r -x cook.d "$work/cooked" "$work/by-matc" ||
+  { echo "the cooker's files differ from matc's"; exit 1; }
+grep -q "gold.json" "$work/cooked/cook.d" || { echo "the cooker's depfile lacks its inputs"; exit 1; }
 # Ninja's whole output first: `ninja | grep -q` fails under pipefail when grep stops reading early
 # (gold's out-of-gamut note follows the line it matches).
 ran() { local out; out=$(ninja -C "$work/engine" "${@:2}"); grep -q "$1" <<<"$out"; }
@@ -30,4 +42,4 @@ sleep 1
 touch "$work/engine/maps/inlaid_metals_g.png"
 ran "matc bake: inlaid_metals" ||
   { echo "touching a map did not rebake its asset"; exit 1; }
-echo "cmake package: consumer built, ran, and rebuilds only when its materials or maps change"
+echo "cmake package: consumer built, ran, its cooker wrote what matc writes, and it rebuilds only when its materials or maps change"

@@ -10,7 +10,6 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "atomic_file.h"
 #include "commands.h"
 #include "generated_source.h"
 #include "lut_options.h"
@@ -21,6 +20,7 @@
 #include "matc/ltc/ltc_fit.h"
 #include "matc/lut/analytic_lut_fit.h"
 #include "matc/lut/default_lut_hashes.h"
+#include "matc/pipeline/atomic_file.h"
 #include "matc/runtime/basis.h"
 #include "matc/runtime/shipped_bases.h"
 

@@ -1,41 +1,15 @@
 #include "batch_report.h"
 
 #include <cstdio>
-#include <exception>
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
-#include "depfile.h"
 #include "print_diagnostics.h"
 
 namespace matc::cli {
 
 namespace fs = std::filesystem;
-
-InputsInOutputDirectory::InputsInOutputDirectory(const fs::path& output_directory)
-    : directory_identity_(path_identity(output_directory)) {}
-
-void InputsInOutputDirectory::add(const fs::path& path, const std::string& as_given) {
-  const fs::path identity(path_identity(path));
-  if (identity.parent_path() == directory_identity_)
-    inputs_.emplace(identity.filename().string(), as_given);
-}
-
-std::optional<std::string> InputsInOutputDirectory::overwritten_by(const fs::path& output) const {
-  const auto input = inputs_.find(output.filename().string());
-  if (input == inputs_.end()) return std::nullopt;
-  return input->second;
-}
-
-std::optional<std::string> InputsInOutputDirectory::overwrite_problem(
-    const std::vector<fs::path>& outputs) const {
-  for (const fs::path& output : outputs) {
-    if (const std::optional<std::string> input = overwritten_by(output))
-      return fmt::format("output '{}' would overwrite the input {}", output.string(), *input);
-  }
-  return std::nullopt;
-}
 
 void print_batch_summary(const BatchSummaryWords& words, const BatchCounts& counts, bool quiet,
                          std::optional<double> seconds) {
@@ -78,18 +52,6 @@ fs::path depfile_path(const std::string& depfile_option, bool write_depfile,
                       const fs::path& output_directory, const std::string& default_name) {
   if (!depfile_option.empty()) return depfile_option;
   return write_depfile ? output_directory / default_name : fs::path();
-}
-
-bool write_depfile(const fs::path& path, const std::vector<fs::path>& targets,
-                   std::vector<fs::path> dependencies) {
-  if (const fs::path self = matc_executable(); !self.empty()) dependencies.push_back(self);
-  try {
-    write_file_atomically(path, depfile_text(targets, dependencies));
-    return true;
-  } catch (const std::exception& error) {
-    fmt::print(stderr, "{}: error: {}\n", path.string(), error.what());
-    return false;
-  }
 }
 
 }  // namespace matc::cli

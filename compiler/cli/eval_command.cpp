@@ -18,12 +18,12 @@
 #include "matc/lut/comparison_lobes.h"
 #include "matc/lut/lut_files.h"
 #include "matc/lut/split_sum_reference.h"
+#include "matc/material/material_input.h"
 #include "matc/runtime/analytic_lut.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/ltc_following.h"
 #include "matc/runtime/lut.h"
-#include "material_inputs.h"
 #include "print_diagnostics.h"
 
 namespace matc::cli {

@@ -5,8 +5,8 @@
 
 #include <fmt/core.h>
 
-#include "atomic_file.h"
 #include "commands.h"
+#include "matc/pipeline/atomic_file.h"
 
 namespace matc::cli {
 

@@ -2,8 +2,8 @@
 
 #include <vector>
 
-#include "atomic_file.h"
 #include "matc/json_format.h"
+#include "matc/pipeline/atomic_file.h"
 
 namespace matc::cli {
 

@@ -2,19 +2,20 @@
 
 #include <unistd.h>
 
-#include <algorithm>
 #include <cstdio>
-#include <thread>
 
 #include <fmt/core.h>
 
+#include "print_diagnostics.h"
+
 namespace matc::cli {
 
-void ProgressLine::finished(const std::string& name) {
+void ProgressLine::update(const BatchProgress& progress) {
   if (!enabled_) return;
   const std::lock_guard lock(mutex_);
-  ++done_;
-  last_ = name;
+  done_ = progress.done;
+  total_ = progress.total;
+  last_ = progress.name;
   fmt::print(stderr, "\r\x1b[K");
   draw();
 }
@@ -38,10 +39,16 @@ void ProgressLine::clear() {
   enabled_ = false;  // for good: what is printed after the batch is not followed by the line
 }
 
-unsigned worker_count(unsigned requested, std::size_t jobs) {
-  const unsigned available = std::max(1u, std::thread::hardware_concurrency());
-  const unsigned wanted = requested == 0 ? available : requested;
-  return static_cast<unsigned>(std::clamp<std::size_t>(jobs, 1, wanted));
+BatchEvents printed_events(ProgressLine& progress) {
+  BatchEvents events;
+  events.diagnostics = [&progress](const Diagnostics& diagnostics) {
+    progress.print_above([&] { print_diagnostics(diagnostics); });
+  };
+  events.progress = [&progress](const BatchProgress& done) { progress.update(done); };
+  events.error = [&progress](const std::string& where, const std::string& message) {
+    progress.print_above([&] { fmt::print(stderr, "{}: error: {}\n", where, message); });
+  };
+  return events;
 }
 
 bool stderr_is_terminal() {

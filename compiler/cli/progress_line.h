@@ -1,5 +1,5 @@
-// What the batch commands (the compile, `matc bake`) share: a progress line on a terminal and the
-// number of worker threads for -j.
+// What the batch commands (the compile, `matc bake`) print while they run: a progress line on a
+// terminal, with the batch's other messages printed above it.
 #pragma once
 
 #include <cstddef>
@@ -7,14 +7,16 @@
 #include <mutex>
 #include <string>
 
+#include "matc/pipeline/batch.h"
+
 namespace matc::cli {
 
 // "[12/1000] gold" on one terminal line, redrawn as items finish; nothing when disabled (not a
 // TTY, or -q).
 class ProgressLine {
  public:
-  ProgressLine(std::size_t total, bool enabled) : total_(total), enabled_(enabled) {}
-  void finished(const std::string& name);
+  explicit ProgressLine(bool enabled) : enabled_(enabled) {}
+  void update(const BatchProgress& progress);
   // Runs `print` (which writes whole lines to standard error) with the line cleared first, so
   // that messages printed while workers run are not drawn over.
   void print_above(const std::function<void()>& print);
@@ -24,14 +26,15 @@ class ProgressLine {
   void draw();  // "[done/total] last", at the cursor (the mutex held)
 
   std::mutex mutex_;
-  std::size_t total_;
+  std::size_t total_ = 0;
   std::size_t done_ = 0;
   std::string last_;
   bool enabled_;
 };
 
-// -j: `requested` threads (0: one per hardware thread), never more than `jobs`, at least one.
-unsigned worker_count(unsigned requested, std::size_t jobs);
+// The events of a batch as the commands print them: diagnostics and the batch's own errors on
+// standard error above `progress`, which follows the batch.
+BatchEvents printed_events(ProgressLine& progress);
 
 // Whether standard error is a terminal (progress lines are drawn only there).
 bool stderr_is_terminal();

@@ -7,17 +7,17 @@
 
 #include <fmt/core.h>
 
-#include "atomic_file.h"
 #include "color_options.h"
 #include "commands.h"
 #include "lut_options.h"
 #include "matc/compile.h"
+#include "matc/material/material_input.h"
+#include "matc/pipeline/atomic_file.h"
+#include "matc/pipeline/unique_names.h"
 #include "matc/report/fresnel_plot.h"
 #include "matc/report/material_curves.h"
 #include "matc/report/report_page.h"
-#include "material_inputs.h"
 #include "print_diagnostics.h"
-#include "unique_names.h"
 
 namespace matc::cli {
 namespace {

@@ -7,7 +7,7 @@
 #include "device_validation_report.h"
 #include "lut_options.h"
 #include "matc/compile.h"
-#include "material_inputs.h"
+#include "matc/material/material_input.h"
 #include "print_diagnostics.h"
 
 namespace matc::cli {

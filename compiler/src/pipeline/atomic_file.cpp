@@ -1,4 +1,4 @@
-#include "atomic_file.h"
+#include "matc/pipeline/atomic_file.h"
 
 #include <signal.h>
 #include <unistd.h>
@@ -16,7 +16,7 @@
 
 #include <fmt/format.h>
 
-namespace matc::cli {
+namespace matc {
 namespace {
 
 bool holds_bytes(const std::filesystem::path& path, std::string_view bytes) {
@@ -154,4 +154,4 @@ std::string path_identity(const std::filesystem::path& path) {
   return error ? path.lexically_normal().string() : canonical.string();
 }
 
-}  // namespace matc::cli
+}  // namespace matc

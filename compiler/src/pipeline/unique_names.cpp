@@ -1,10 +1,10 @@
-#include "unique_names.h"
+#include "matc/pipeline/unique_names.h"
 
 #include <fmt/core.h>
 
 #include "matc/material/parse.h"
 
-namespace matc::cli {
+namespace matc {
 
 bool UniqueNames::claim(const Material& material, std::string_view scope,
                         Diagnostics& diagnostics) {
@@ -25,4 +25,4 @@ bool UniqueNames::claim(const std::string& name, const std::string& path,
   return false;
 }
 
-}  // namespace matc::cli
+}  // namespace matc

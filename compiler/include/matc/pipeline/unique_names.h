@@ -9,7 +9,7 @@
 #include "matc/diagnostics.h"
 #include "matc/material/material.h"
 
-namespace matc::cli {
+namespace matc {
 
 class UniqueNames {
  public:
@@ -30,4 +30,4 @@ class UniqueNames {
   std::map<std::string, FirstUse> first_use_;  // lowercase name -> where it was first used
 };
 
-}  // namespace matc::cli
+}  // namespace matc

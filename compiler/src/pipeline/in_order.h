@@ -8,7 +8,7 @@
 #include <mutex>
 #include <vector>
 
-namespace matc::cli {
+namespace matc {
 
 class InOrder {
  public:
@@ -29,4 +29,4 @@ class InOrder {
   std::function<void(std::size_t)> retire_;
 };
 
-}  // namespace matc::cli
+}  // namespace matc

@@ -1,8 +1,10 @@
-#include "depfile.h"
+#include "matc/pipeline/depfile.h"
 
 #include <set>
 
-namespace matc::cli {
+#include "matc/pipeline/atomic_file.h"
+
+namespace matc {
 namespace {
 
 std::string escaped(const std::filesystem::path& path) {
@@ -34,10 +36,16 @@ std::string depfile_text(const std::vector<std::filesystem::path>& targets,
   return text;
 }
 
+void write_depfile(const std::filesystem::path& path,
+                   const std::vector<std::filesystem::path>& targets,
+                   const std::vector<std::filesystem::path>& dependencies) {
+  write_file_atomically(path, depfile_text(targets, dependencies));
+}
+
 std::filesystem::path matc_executable() {
   std::error_code error;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
   return error ? std::filesystem::path() : self;
 }
 
-}  // namespace matc::cli
+}  // namespace matc

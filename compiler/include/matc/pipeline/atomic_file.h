@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace matc::cli {
+namespace matc {
 
 enum class WriteOutcome { written, unchanged };
 
@@ -25,4 +25,4 @@ WriteOutcome write_file_atomically(const std::filesystem::path& path,
 // input?" checks.
 std::string path_identity(const std::filesystem::path& path);
 
-}  // namespace matc::cli
+}  // namespace matc

@@ -1,6 +1,6 @@
 #include "in_order.h"
 
-namespace matc::cli {
+namespace matc {
 
 void InOrder::done(std::size_t index) {
   const std::lock_guard lock(mutex_);
@@ -19,4 +19,4 @@ void InOrder::retire_done_prefix() {
     retire_(next_++);
 }
 
-}  // namespace matc::cli
+}  // namespace matc

@@ -1,0 +1,28 @@
+// The materials an input holds: a material file (.json) holds one, a MaterialX document (.mtlx,
+// docs/interchange.md) any number. One reader, so that everything that takes materials (the batch
+// compile, report, validate, eval, an asset tool's in-memory sources) takes both.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "matc/diagnostics.h"
+#include "matc/material/material.h"
+
+namespace matc {
+
+struct MaterialInput {
+  std::vector<Material> materials;  // empty when the input has errors
+  Diagnostics diagnostics;          // the input's own (and the document's notes), to report
+};
+
+// Reads the file at `path`.
+MaterialInput read_material_input(const std::string& path);
+
+// Parses `text`, the contents of an input named `path` (its extension says which kind, `.mtlx` a
+// MaterialX document; diagnostics name it; relative spectral files resolve against its folder).
+MaterialInput parse_material_input(std::string_view text, const std::string& path);
+
+}  // namespace matc

@@ -1,0 +1,40 @@
+#include "matc/material/material_input.h"
+
+#include <utility>
+
+#include "matc/material/materialx_import.h"
+#include "matc/material/parse.h"
+
+namespace matc {
+namespace {
+
+MaterialInput from_document(MaterialXImport imported) {
+  MaterialInput input;
+  input.diagnostics = std::move(imported.diagnostics);
+  for (ImportedMaterial& material : imported.materials)
+    input.materials.push_back(std::move(material.material));
+  if (input.diagnostics.has_errors()) input.materials.clear();
+  return input;
+}
+
+MaterialInput from_material(ParseResult parsed) {
+  MaterialInput input;
+  input.diagnostics = std::move(parsed.diagnostics);
+  if (parsed.material && !input.diagnostics.has_errors())
+    input.materials.push_back(std::move(*parsed.material));
+  return input;
+}
+
+}  // namespace
+
+MaterialInput read_material_input(const std::string& path) {
+  if (is_materialx_path(path)) return from_document(read_materialx_file(path));
+  return from_material(read_material_file(path));
+}
+
+MaterialInput parse_material_input(std::string_view text, const std::string& path) {
+  if (is_materialx_path(path)) return from_document(import_materialx(text, path));
+  return from_material(parse_material(text, path));
+}
+
+}  // namespace matc

@@ -1,0 +1,75 @@
+#include "matc/pipeline/import_batch.h"
+
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "matc/material/materialx_import.h"
+#include "matc/pipeline/inputs_in_output_directory.h"
+#include "matc/pipeline/unique_names.h"
+
+namespace matc {
+
+namespace fs = std::filesystem;
+
+BatchCounts import_batch(std::span<const MaterialSource> documents, OutputSink& output,
+                         const ImportBatchOptions& options, const BatchEvents& events) {
+  const fs::path* directory = output.directory();
+  std::optional<InputsInOutputDirectory> inputs;
+  if (directory) {
+    inputs.emplace(*directory);
+    for (const MaterialSource& document : documents)
+      if (!document.text) inputs->add(document.path, document.path);
+  }
+  const auto file_name = [](const ImportedMaterial& material) {
+    return material.material.name + ".json";
+  };
+  std::vector<MaterialXImport> imports;
+  UniqueNames names;
+  BatchCounts counts;
+  for (const MaterialSource& document : documents) {
+    MaterialXImport imported;
+    if (!is_materialx_path(document.path)) {
+      imported.diagnostics.error({document.path, 0, 0}, "", "is not a MaterialX document",
+                                 "a .mtlx file");
+    } else {
+      imported = document.text ? import_materialx(*document.text, document.path)
+                               : read_materialx_file(document.path);
+    }
+    for (const ImportedMaterial& material : imported.materials) {
+      const std::optional<std::string> problem =
+          inputs ? inputs->overwrite_problem({*directory / file_name(material)}) : std::nullopt;
+      if (problem) {
+        imported.diagnostics.error(material.material.name_location, "name", *problem,
+                                   kOutputDirectoryRule);
+      } else {
+        names.claim(material.material, "an import", imported.diagnostics);
+      }
+    }
+    if (imported.diagnostics.has_errors()) ++counts.failed;
+    imports.push_back(std::move(imported));
+  }
+  const bool stop = counts.failed > 0 && !options.keep_going;
+  const std::string where = directory ? directory->string() : std::string("output");
+  for (const MaterialXImport& imported : imports) {
+    if (events.diagnostics && !imported.diagnostics.items().empty())
+      events.diagnostics(imported.diagnostics);
+    if (imported.diagnostics.has_errors()) continue;
+    if (stop) {
+      counts.not_attempted += imported.materials.size();
+      continue;
+    }
+    try {
+      for (const ImportedMaterial& material : imported.materials) {
+        counts.count(output.write(file_name(material), material.json));
+        ++counts.done;
+      }
+    } catch (const std::exception& error) {
+      if (events.error) events.error(where, error.what());
+      ++counts.failed;
+    }
+  }
+  return counts;
+}
+
+}  // namespace matc
