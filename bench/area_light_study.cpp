@@ -23,7 +23,7 @@
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/emit/build.h"
 #include "matc/ltc/area_light_reference.h"
 #include "matc/ltc/lobe_polygons.h"

@@ -14,7 +14,7 @@
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/emit/build.h"
 #include "matc/emit/fullscreen_shaders.h"
 #include "matc/lut/comparison_lobes.h"

@@ -10,7 +10,7 @@
 
 #include <fmt/core.h>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/emit/build.h"
 #include "matc/lut/analytic_lut_fit.h"
 #include "matc/lut/comparison_lobes.h"

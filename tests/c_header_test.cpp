@@ -4,7 +4,7 @@
 
 #include "beryllium.h"
 #include "gold.h"
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/material/parse.h"
 #include "matc/spirv/spirv_tools.h"
 

@@ -16,6 +16,7 @@
 #include "example_files.h"
 #include "matc/emit/output_layout.h"
 #include "matc/lut/lut_files.h"
+#include "matc/options/option_names.h"
 #include "test_images.h"
 
 namespace {
@@ -352,7 +353,7 @@ TEST_F(MatcCli, EverySharedFileStemIsReservedInEveryFormat) {
     std::transform(upper.begin(), upper.end(), upper.begin(),
                    [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
     for (const std::string& name : {stem, upper}) {
-      for (const std::string& format : matc::lut_format_names()) {
+      for (const std::string& format : matc::option_name_list<matc::LutFormat>()) {
         write_file(dir_ / "reserved.json",
                    R"({"name": ")" + name + R"(", "ior": {"n": 1.5, "k": 0}})");
         const CommandResult result = run({"-o", "out", "--lut", format, "reserved.json"});
@@ -415,9 +416,9 @@ TEST_F(MatcCli, LayoutNamesExactlyTheFilesACompileWrites) {
     return names;
   };
   std::vector<std::vector<std::string>> cases;
-  for (const std::string& kind : matc::output_kind_names())
+  for (const std::string& kind : matc::option_name_list<matc::OutputKind>())
     cases.push_back({"--emit", kind});
-  for (const std::string& format : matc::lut_format_names())
+  for (const std::string& format : matc::option_name_list<matc::LutFormat>())
     cases.push_back({"--lut", format});
   cases.push_back({"--no-shared"});
   cases.push_back({"--shared-only"});

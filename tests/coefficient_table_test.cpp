@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/fit/coefficient_table.h"
 #include "matc/fit/coefficients.h"
 #include "matc/lut/coefficient_table_files.h"

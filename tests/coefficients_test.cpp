@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/fit/accuracy.h"
 #include "matc/fit/coefficients.h"
 #include "matc/optics/gulbrandsen.h"

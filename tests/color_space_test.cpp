@@ -2,7 +2,7 @@
 // Bradford adaptation, spectral integration into each space, gamut measurement and mapping.
 #include <gtest/gtest.h>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/optics/color_space.h"
 #include "matc/optics/gamut.h"
 #include "matc/optics/presets.h"

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/material/parse.h"
-#include "matc/validate/device_validation.h"
+#include "matc/validate/device_validator.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/emit/build.h"
 #include "matc/ltc/area_light_reference.h"
 #include "matc/ltc/ggx_lobe.h"

@@ -2,7 +2,7 @@
 // spaces, and the located problems of bad documents.
 #include <gtest/gtest.h>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/material/materialx_import.h"
 #include "matc/optics/color_space.h"
 

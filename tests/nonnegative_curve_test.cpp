@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "example_files.h"
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/emit/build.h"
 #include "matc/fit/nonnegative_curve.h"
 #include "matc/lut/lut_files.h"

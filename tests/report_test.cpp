@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/material/parse.h"
 #include "matc/report/fresnel_plot.h"
 #include "matc/report/material_curves.h"

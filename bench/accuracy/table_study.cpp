@@ -14,7 +14,7 @@
 #include <fmt/core.h>
 #include <Eigen/Dense>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/fit/accuracy.h"
 #include "matc/fit/coefficient_table.h"
 #include "matc/fit/coefficients.h"

@@ -15,6 +15,7 @@
 #include "matc/material/parse.h"
 #include "matc/pipeline/bake_batch.h"
 #include "matc/pipeline/depfile.h"
+#include "named_option.h"
 #include "progress_line.h"
 
 namespace matc::cli {
@@ -22,6 +23,8 @@ namespace {
 
 // `matc bake`: asset files, and/or one asset from the map options.
 inline constexpr const char* kBakeDepfileName = "matc_bake.d";
+// The containers that hold mip chains.
+inline constexpr std::array<LutFormat, 2> kTextureFormats = {LutFormat::ktx2, LutFormat::dds};
 
 struct BakeCommandOptions {
   std::vector<std::string> files;  // asset JSON files
@@ -32,9 +35,9 @@ struct BakeCommandOptions {
   std::string name;     // its name (default: the first map file's stem)
   bool linear = false;  // its 8- and 16-bit map files hold linear values, not sRGB
   std::string output_directory = "matc-bake";
-  std::string format = "ktx2";
-  std::string precision = "f16";
-  std::string basis{runtime::basis_name(runtime::kDefaultBasis)};
+  LutFormat format = LutFormat::ktx2;
+  LutPrecision precision = LutPrecision::f16;
+  runtime::BasisKind basis = runtime::kDefaultBasis;
   bool f0 = false;
   bool error_map = false;
   bool keep_going = false;
@@ -137,12 +140,12 @@ int run_bake(const BakeCommandOptions& options) {
   }
 
   BakeBatchOptions batch;
-  batch.bake.basis = basis_of(options.basis);
+  batch.bake.basis = options.basis;
   batch.bake.f0 = options.f0;
   batch.bake.error_map = options.error_map;
   batch.bake.threads = options.jobs;
-  batch.files.format = *lut_format_from_name(options.format);
-  batch.files.precision = *lut_precision_from_name(options.precision);
+  batch.files.format = options.format;
+  batch.files.precision = options.precision;
   batch.keep_going = options.keep_going;
   batch.depfile =
       depfile_path(options.depfile, options.write_depfile, output_directory, kBakeDepfileName);
@@ -182,12 +185,9 @@ Command register_bake(CLI::App& app) {
                     "reflectivity and edge tint are sRGB-encoded; n, k are linear)");
   command->add_option("-o,--output", options->output_directory, "Output directory")
       ->capture_default_str();
-  command->add_option("--format", options->format, "Texture file format")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"ktx2", "dds"}));
-  command->add_option("--precision", options->precision, "Texel precision")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"f16", "f32"}));
+  add_named_option(*command, "--format", options->format, "Texture file format",
+                   std::span<const LutFormat>(kTextureFormats));
+  add_named_option(*command, "--precision", options->precision, "Texel precision");
   add_basis_option(*command, options->basis);
   command->add_flag("--f0", options->f0,
                     "Also write NAME_f0 (linear F0 with coefficient-space mips), for "

@@ -23,18 +23,19 @@
 #include "matc/pipeline/atomic_file.h"
 #include "matc/runtime/basis.h"
 #include "matc/runtime/shipped_bases.h"
+#include "named_option.h"
 
 namespace matc::cli {
 namespace {
 
 struct BasisOptions {
   bool json = false;
-  std::string basis{runtime::basis_name(runtime::kDefaultBasis)};
+  runtime::BasisKind basis = runtime::kDefaultBasis;
 };
 
 struct BasisFitOptions {
   std::string output;  // empty: standard output
-  std::string basis{runtime::basis_name(runtime::kDefaultBasis)};
+  runtime::BasisKind basis = runtime::kDefaultBasis;
 };
 
 // `matc basis ltc-table`: refits the shipped LTC table, writes its C++ source and, on request,
@@ -44,11 +45,11 @@ struct LtcTableOptions {
   std::string quality;
   std::size_t quality_samples = 1u << 14;
   unsigned jobs = 0;
-  std::string objective = "polygons";  // "polygons" (shipped), "l1" or "l3" (Heitz et al.'s)
+  LtcObjective objective = LtcObjective::polygons;  // shipped; l1 or l3 (Heitz et al.'s)
 };
 
 int run_basis(const BasisOptions& options) {
-  const runtime::BasisKind kind = basis_of(options.basis);
+  const runtime::BasisKind kind = options.basis;
   const runtime::BasisView basis = runtime::shipped_basis(kind);
   if (!options.json) {
     const bool closed_form = kind == runtime::BasisKind::powers;
@@ -95,7 +96,7 @@ int run_basis(const BasisOptions& options) {
 }
 
 int run_basis_fit(const BasisFitOptions& options) {
-  const runtime::BasisKind kind = basis_of(options.basis);
+  const runtime::BasisKind kind = options.basis;
   if (std::find(runtime::kFittedBases.begin(), runtime::kFittedBases.end(), kind) ==
       runtime::kFittedBases.end()) {
     std::vector<std::string_view> fitted;
@@ -114,7 +115,7 @@ int run_basis_fit(const BasisFitOptions& options) {
 }
 
 int run_basis_coefficient_table(const BasisFitOptions& options) {
-  const CoefficientTable table = fit_coefficient_table(basis_of(options.basis));
+  const CoefficientTable table = fit_coefficient_table(options.basis);
   fmt::print(stderr, "matc: fitted the {} x {} coefficient table of the {} basis\n", table.size(),
              table.size(), runtime::basis_name(table.basis));
   return write_generated_source(options.output, coefficient_table_source(table));
@@ -127,7 +128,7 @@ int run_basis_lut_hashes(const BasisFitOptions& options) {
 }
 
 int run_basis_analytic_lut(const BasisFitOptions& options) {
-  const runtime::BasisKind kind = basis_of(options.basis);
+  const runtime::BasisKind kind = options.basis;
   const runtime::BasisView basis = runtime::shipped_basis(kind);
   const Lut table = preintegrate_lut(basis, LutOptions{});
   const runtime::AnalyticLutCoefficients coefficients = fit_analytic_lut(table, kind);
@@ -146,11 +147,8 @@ int run_basis_material_modules(const BasisFitOptions& options) {
 }
 
 int run_basis_ltc_table(const LtcTableOptions& options) {
-  const LtcObjective objective = options.objective == "l3"         ? LtcObjective::l3
-                                 : options.objective == "polygons" ? LtcObjective::polygons
-                                                                   : LtcObjective::l1;
-  const LtcTable table =
-      fit_ltc_table({.size = kDefaultLtcSize, .threads = options.jobs, .objective = objective});
+  const LtcTable table = fit_ltc_table(
+      {.size = kDefaultLtcSize, .threads = options.jobs, .objective = options.objective});
   fmt::print(stderr, "matc: fitted the {} x {} LTC table\n", table.size, table.size);
   if (!options.quality.empty()) {
     const std::vector<double> polygon =
@@ -235,13 +233,10 @@ std::vector<Command> register_basis(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(std::size_t{64}, std::size_t{1} << 24));
   ltc_table_command->add_option("-j,--jobs", ltc_table->jobs, "Threads (default: one per core)");
-  ltc_table_command
-      ->add_option("--objective", ltc_table->objective,
+  add_named_option(*ltc_table_command, "--objective", ltc_table->objective,
                    "What the fit minimises: polygons, the error over random quad lights "
                    "(shipped); l1, the densities' L1 distance; or l3, Heitz et al.'s cubed "
-                   "difference (docs/ltc.md compares them)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"l1", "l3", "polygons"}));
+                   "difference (docs/ltc.md compares them)");
   commands.push_back({ltc_table_command, [ltc_table] { return run_basis_ltc_table(*ltc_table); }});
   commands.push_back({basis_command, [basis] { return run_basis(*basis); }});
   return commands;

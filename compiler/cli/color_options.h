@@ -1,22 +1,13 @@
 // --color-space and --gamut-mapping, shared by the commands that compile materials.
 #pragma once
 
-#include <string>
-
 #include <CLI/CLI.hpp>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 
 namespace matc::cli {
 
-struct ColorCliOptions {
-  std::string space{color_space_name(kDefaultColorSpace)};
-  std::string gamut_mapping{gamut_mapping_name(GamutMapping::none)};
-};
-
-void add_color_options(CLI::App& app, ColorCliOptions& options);
-
-// The validated options (CLI11 has checked the names).
-ColorOptions color_options_of(const ColorCliOptions& options);
+// Adds both options to `app`; `options` holds the defaults until they are given.
+void add_color_options(CLI::App& app, ColorOptions& options);
 
 }  // namespace matc::cli

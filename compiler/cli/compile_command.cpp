@@ -17,6 +17,7 @@
 #include "matc/emit/build.h"
 #include "matc/pipeline/compile_batch.h"
 #include "matc/pipeline/depfile.h"
+#include "named_option.h"
 #include "progress_line.h"
 
 namespace matc::cli {
@@ -31,16 +32,16 @@ struct CompileOptions {
   unsigned jobs = 0;           // -j: materials compiled at once; 0: one per hardware thread
   std::string depfile;         // --depfile FILE: Make-syntax dependencies of every output
   bool write_depfile = false;  // -MD: the same, as <output directory>/matc.d
-  std::string emit;            // comma-separated output kinds; empty: all
-  bool no_shared = false;      // --no-shared: only each material's own files
-  bool shared_only = false;    // --shared-only: only the shared files (no material given)
-  std::string lut_format = "ktx2";
+  std::set<OutputKind> emit = all_output_kinds();
+  bool no_shared = false;    // --no-shared: only each material's own files
+  bool shared_only = false;  // --shared-only: only the shared files (no material given)
+  LutFormat lut_format = LutFormat::ktx2;
   LutCliOptions lut;
   bool embed_lut = false;
   std::size_t embed_lut_size = 32;
   bool validate = false;  // run each material's shaders on a device before writing its files
   DeviceCliOptions device;
-  ColorCliOptions color;
+  ColorOptions color;
 };
 
 inline constexpr const char* kDepfileName = "matc.d";
@@ -49,9 +50,9 @@ namespace fs = std::filesystem;
 
 BuildOptions build_options(const CompileOptions& options) {
   BuildOptions build = table_build_options(options.lut, options.embed_lut, options.embed_lut_size);
-  build.emit = emitted_kinds(options.emit);
-  build.lut_format = *lut_format_from_name(options.lut_format);
-  build.color = color_options_of(options.color);
+  build.emit = options.emit;
+  build.lut_format = options.lut_format;
+  build.color = options.color;
   return build;
 }
 
@@ -154,12 +155,9 @@ Command register_compile(CLI::App& app) {
                "Write only the shared files (matc_fresnel.*, the tables), from no material file: "
                "the one shared action beside per-material --no-shared actions")
       ->excludes(no_shared_option);
-  app.add_option(
-         "--lut", options->lut_format,
-         "File format of the tables DIR/matc_lut.<ext>, DIR/matc_coefficient_table.<ext> and "
-         "DIR/matc_ltc.<ext>")
-      ->capture_default_str()
-      ->check(CLI::IsMember(matc::lut_format_names()));
+  add_named_option(app, "--lut", options->lut_format,
+                   "File format of the tables DIR/matc_lut.<ext>, DIR/matc_coefficient_table.<ext> "
+                   "and DIR/matc_ltc.<ext>");
   app.add_flag("--embed-lut", options->embed_lut,
                "Also embed a small table in matc_fresnel.glsl/.hlsl as a constant array");
   app.add_option("--embed-lut-size", options->embed_lut_size, "Width and height of that table")

@@ -9,7 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "matc/validate/device_check.h"
-#include "matc/validate/device_validation.h"
+#include "matc/validate/device_validator.h"
 
 namespace matc::cli {
 

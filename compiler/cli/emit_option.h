@@ -10,10 +10,9 @@
 
 namespace matc::cli {
 
-// Adds --emit to `command`, refusing a kind the output layout does not know.
-CLI::Option* add_emit_option(CLI::App& command, std::string& list, const std::string& help);
-
-// The kinds the (checked) list names; every kind when it is empty.
-std::set<OutputKind> emitted_kinds(const std::string& list);
+// Adds --emit to `command`, refusing a kind the registry does not name; `kinds` holds every kind
+// until the option is given.
+CLI::Option* add_emit_option(CLI::App& command, std::set<OutputKind>& kinds,
+                             const std::string& help);
 
 }  // namespace matc::cli

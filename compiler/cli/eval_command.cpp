@@ -8,10 +8,10 @@
 #include "color_options.h"
 #include "commands.h"
 #include "lut_options.h"
-#include "matc/compile.h"
+#include "matc/base/json_format.h"
+#include "matc/compile/compile.h"
 #include "matc/fit/coefficient_table.h"
 #include "matc/fit/coefficients.h"
-#include "matc/json_format.h"
 #include "matc/ltc/area_light_reference.h"
 #include "matc/ltc/polygon_light.h"
 #include "matc/lut/coefficient_table_files.h"
@@ -41,7 +41,7 @@ struct EvalOptions {
   std::size_t light_samples = 0;  // reference samples for --quad-light
   bool no_reference = false;      // --no-reference: no split-sum integral per (NdotV, roughness)
   LutCliOptions lut;
-  ColorCliOptions color;
+  ColorOptions color;
 };
 
 using nlohmann::ordered_json;
@@ -53,8 +53,7 @@ using LabelledCoefficients = std::vector<std::pair<std::string, runtime::Coeffic
 // F at each cosine as the shaders compute it, beside the exact curve.
 void add_direct_fresnel(const EvalOptions& options, const ReflectanceCurve& curve,
                         const LabelledCoefficients& coefficients, ordered_json& out) {
-  const runtime::ShaderBasis& shader_basis =
-      runtime::shipped_shader_basis(basis_of(options.lut.basis));
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(options.lut.basis);
   out["mu"] = options.mu;
   for (const auto& [label, values] : coefficients) {
     ordered_json decomposed = ordered_json::array();
@@ -79,11 +78,10 @@ struct SplitSumInputs {
 
 SplitSumInputs split_sum_inputs(const EvalOptions& options, const ReflectanceCurve& curve,
                                 const runtime::BasisView& basis) {
-  SplitSumInputs inputs{
-      stored_as(preintegrate_lut(basis, options.lut.bake), precision_of(options.lut)),
-      &runtime::shipped_analytic_lut(basis.kind),
-      TabulatedCurve(curve),
-      {}};
+  SplitSumInputs inputs{stored_as(preintegrate_lut(basis, options.lut.bake), options.lut.precision),
+                        &runtime::shipped_analytic_lut(basis.kind),
+                        TabulatedCurve(curve),
+                        {}};
   for (std::size_t i = 0; i < options.ndotv.size() && !options.no_reference; ++i) {
     inputs.fbar_reference.push_back(
         SplitSumEstimator(options.ndotv[i], options.roughness[i]).integrate(inputs.tabulated));
@@ -98,7 +96,9 @@ void add_preintegrated_fresnel(const EvalOptions& options, const SplitSumInputs&
   const Lut& lut = inputs.lut;
   out["ndotv"] = options.ndotv;
   out["roughness"] = options.roughness;
-  out["lut"] = {{"size", lut.size}, {"samples", lut.samples}, {"precision", options.lut.precision}};
+  out["lut"] = {{"size", lut.size},
+                {"samples", lut.samples},
+                {"precision", lut_precision_name(options.lut.precision)}};
   for (const auto& [label, values] : coefficients) {
     ordered_json fbar = ordered_json::array();
     for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
@@ -136,8 +136,7 @@ void add_quad_light(const EvalOptions& options, const std::vector<Vec3>& quad,
   out["quad_light"] = {{"vertices", std::move(vertices)},
                        {"ltc_table", {{"size", ltc.size}}},
                        {"reference_samples", options.light_samples}};
-  const runtime::ShaderBasis& shader_basis =
-      runtime::shipped_shader_basis(basis_of(options.lut.basis));
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(options.lut.basis);
   std::vector<ordered_json> ours(coefficients.size(), ordered_json::array());
   std::vector<ordered_json> following(coefficients.size(), ordered_json::array());
   ordered_json schlick = ordered_json::array(), exact_fresnel = ordered_json::array(),
@@ -218,12 +217,12 @@ int run_eval_artistic(const EvalOptions& options) {
   std::optional<std::vector<Vec3>> quad;
   if (!options.quad_light.empty() && !(quad = quad_light_of(options))) return kExitInputError;
 
-  const runtime::BasisKind kind = basis_of(options.lut.basis);
+  const runtime::BasisKind kind = options.lut.basis;
   const runtime::BasisView basis = runtime::shipped_basis(kind);
   const IorCurve curve = artistic_curve(reflectivity, edge_tint);
   // The table as the written file stores it (--coefficient-table-precision).
   const CoefficientTable table =
-      stored_coefficient_table(kind, coefficient_table_precision_of(options.lut));
+      stored_coefficient_table(kind, options.lut.coefficient_table_precision);
   const LabelledCoefficients coefficients = {
       {"_table", runtime::coefficients_from_table(table.view(), reflectivity, edge_tint)},
       {"_compiled", solve_coefficients(curve, basis)}};
@@ -290,8 +289,8 @@ int run_eval(const EvalOptions& options) {
   const std::optional<Material> material = chosen_material(options);
   if (!material) return kExitInputError;
 
-  const runtime::BasisView basis = runtime::shipped_basis(basis_of(options.lut.basis));
-  const ColorOptions color = color_options_of(options.color);
+  const runtime::BasisView basis = runtime::shipped_basis(options.lut.basis);
+  const ColorOptions color = options.color;
   const auto curve = make_reflectance_curve(*material, color);
   const LabelledCoefficients coefficients = {{"", solve_coefficients(*curve, basis)}};
 

@@ -12,14 +12,15 @@
 #include "generated_source.h"
 #include "matc/emit/output_layout.h"
 #include "matc/material/parse.h"
+#include "named_option.h"
 
 namespace matc::cli {
 namespace {
 
 struct LayoutOptions {
   std::vector<std::string> names;  // material names (their JSON "name")
-  std::string emit;                // comma-separated output kinds; empty: all
-  std::string lut_format = "ktx2";
+  std::set<OutputKind> emit = all_output_kinds();
+  LutFormat lut_format = LutFormat::ktx2;
   bool no_shared = false;
   bool shared_only = false;
   std::string generate;  // "cmake" or "bazel": the build systems' lists as source
@@ -38,10 +39,9 @@ int run_layout(const LayoutOptions& options) {
       return kExitUsageError;
     }
   }
-  const std::set<OutputKind> emit = emitted_kinds(options.emit);
+  const std::set<OutputKind>& emit = options.emit;
   std::vector<std::string> files;
-  if (!options.no_shared)
-    files = shared_file_names(emit, *lut_format_from_name(options.lut_format));
+  if (!options.no_shared) files = shared_file_names(emit, options.lut_format);
   for (const std::string& name : options.names)
     for (std::string& file : material_file_names(emit, name))
       files.push_back(std::move(file));
@@ -63,9 +63,8 @@ Command register_layout(CLI::App& app) {
       "material names, or the CMake and Bazel lists of them");
   command->add_option("names", options->names, "Material names (a material file's \"name\")");
   add_emit_option(*command, options->emit, "Output kinds, as the compile's --emit (default: all)");
-  command->add_option("--lut", options->lut_format, "The tables' file format, as the compile's")
-      ->capture_default_str()
-      ->check(CLI::IsMember(lut_format_names()));
+  add_named_option(*command, "--lut", options->lut_format,
+                   "The tables' file format, as the compile's");
   CLI::Option* no_shared =
       command->add_flag("--no-shared", options->no_shared, "Only the materials' own files");
   command->add_flag("--shared-only", options->shared_only, "Only the shared files")

@@ -2,6 +2,9 @@
 
 #include "commands.h"
 #include "lut_options.h"
+#include "matc/options/option_names.h"
+#include "matc/pipeline/batch.h"
+#include "matc/pipeline/output_sink.h"
 #include "matc/runtime/basis.h"
 
 namespace matc::cli {
@@ -9,14 +12,14 @@ namespace {
 
 struct LutCommandOptions {
   std::string output;
-  std::string format;  // empty: from the output's extension
+  std::optional<LutFormat> format;  // none: from the output's extension
   LutCliOptions lut;
 };
 
 int run_lut(const LutCommandOptions& options) {
   const std::filesystem::path output(options.output);
-  std::optional<LutFormat> format = lut_format_from_name(options.format);
-  if (options.format.empty()) {
+  std::optional<LutFormat> format = options.format;
+  if (!format) {
     format = lut_format_from_extension(output.extension().string());
     if (!format) {
       fmt::print(stderr,
@@ -26,15 +29,18 @@ int run_lut(const LutCommandOptions& options) {
       return kExitUsageError;
     }
   }
-  const BakedLut baked =
-      bake_lut(runtime::shipped_basis(basis_of(options.lut.basis)), options.lut.bake);
+  const BakedLut baked = bake_lut(runtime::shipped_basis(options.lut.basis), options.lut.bake);
   try {
-    const LutWriteCounts counts =
-        write_lut_files(output, baked, *format, precision_of(options.lut));
+    DirectoryOutput directory(output.has_parent_path() ? output.parent_path() : ".");
+    BatchCounts counts;
+    for (const OutputFile& file :
+         lut_output_files(baked, *format, options.lut.precision, output.filename().string()))
+      counts.count(directory.write(file.name, file.bytes));
     fmt::print(stderr,
                "matc lut: {} ({}x{}, {} samples per texel, {}, {}): {} written, {} unchanged\n",
                output.string(), baked.lut.size, baked.lut.size, baked.lut.samples,
-               lut_format_name(*format), options.lut.precision, counts.written, counts.unchanged);
+               lut_format_name(*format), lut_precision_name(options.lut.precision), counts.written,
+               counts.unchanged);
   } catch (const std::exception& error) {
     fmt::print(stderr, "{}: error: {}\n", output.string(), error.what());
     return kExitInputError;
@@ -51,8 +57,12 @@ Command register_lut(CLI::App& app) {
   command
       ->add_option("-o,--output", options->output, "Output file; a .json manifest goes beside it")
       ->required();
-  command->add_option("--format", options->format, "File format (default: from the extension)")
-      ->check(CLI::IsMember(matc::lut_format_names()));
+  command
+      ->add_option_function<std::string>(
+          "--format",
+          [options](const std::string& name) { options->format = option_value<LutFormat>(name); },
+          "File format (default: from the extension)")
+      ->check(CLI::IsMember(option_name_list<LutFormat>()));
   add_lut_options(*command, options->lut, "");
 
   return {command, [options] { return run_lut(*options); }};

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "matc/diagnostics.h"
+#include "matc/base/diagnostics.h"
 
 namespace matc::cli {
 

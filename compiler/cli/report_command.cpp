@@ -10,7 +10,7 @@
 #include "color_options.h"
 #include "commands.h"
 #include "lut_options.h"
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/material/material_input.h"
 #include "matc/pipeline/atomic_file.h"
 #include "matc/pipeline/unique_names.h"
@@ -25,8 +25,8 @@ namespace {
 struct ReportOptions {
   std::vector<std::string> files;
   std::string output_directory = "matc-report";
-  std::string basis{runtime::basis_name(runtime::kDefaultBasis)};
-  ColorCliOptions color;
+  runtime::BasisKind basis = runtime::kDefaultBasis;
+  ColorOptions color;
 };
 
 namespace fs = std::filesystem;
@@ -55,7 +55,7 @@ int run_report(const ReportOptions& options) {
     fmt::print(stderr, "matc report: nothing written: fix the inputs above\n");
     return kExitInputError;
   }
-  const runtime::BasisKind kind = basis_of(options.basis);
+  const runtime::BasisKind kind = options.basis;
   const runtime::BasisView basis = runtime::shipped_basis(kind);
   const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(kind);
 
@@ -66,8 +66,7 @@ int run_report(const ReportOptions& options) {
   std::vector<Output> outputs;
   std::vector<ReportEntry> entries;
   for (const Material& material : *materials) {
-    const CompiledMaterial compiled =
-        compile_material(material, basis, color_options_of(options.color));
+    const CompiledMaterial compiled = compile_material(material, basis, options.color);
     Diagnostics fit;
     warn_if_poor_fit(compiled, fit);
     print_diagnostics(fit);

@@ -6,7 +6,7 @@
 #include "commands.h"
 #include "device_validation_report.h"
 #include "lut_options.h"
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/material/material_input.h"
 #include "print_diagnostics.h"
 
@@ -19,13 +19,13 @@ struct ValidateOptions {
   bool embed_lut = false;
   std::size_t embed_lut_size = 32;
   DeviceCliOptions device;
-  ColorCliOptions color;
+  ColorOptions color;
 };
 
 int run_validate(const ValidateOptions& options) {
   BuildOptions build_options =
       table_build_options(options.lut, options.embed_lut, options.embed_lut_size);
-  build_options.color = color_options_of(options.color);
+  build_options.color = options.color;
   const Build build(build_options);
   const std::unique_ptr<DeviceValidator> validator = open_device_validator(build, options.device);
   if (!validator) return kExitNoDevice;

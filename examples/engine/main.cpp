@@ -18,7 +18,7 @@
 #include "figure2_edge_tint.h"  // generated at build time by matc_add_materials
 #include "gold.h"
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/emit/build.h"
 #include "matc/material/parse.h"
 #include "matc/runtime/coefficient_table.h"

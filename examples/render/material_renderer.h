@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/emit/build.h"
 #include "matc/lut/comparison_lobes.h"
 #include "matc/vulkan/buffer.h"

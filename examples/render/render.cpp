@@ -19,7 +19,7 @@
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/emit/build.h"
 #include "matc/emit/fullscreen_shaders.h"
 #include "matc/material/parse.h"

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/emit/build.h"
 #include "matc/material/parse.h"
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/material/materialx_import.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -6,9 +6,10 @@
 #include <fmt/format.h>
 #include <stb/stb_image_write.h>
 
-#include "lut/lut_writers.h"
-#include "matc/emit/content_hash.h"
-#include "matc/json_format.h"
+#include "matc/base/content_hash.h"
+#include "matc/base/json_format.h"
+#include "matc/formats/dds_writer.h"
+#include "matc/formats/ktx2_writer.h"
 #include "matc/runtime/basis.h"
 #include "matc/version.h"
 
@@ -19,11 +20,11 @@ using nlohmann::ordered_json;
 
 std::string texture_file(LutFormat format, std::vector<float> CoefficientLevel::*plane,
                          const BakedCoefficients& baked, LutPrecision precision) {
-  std::vector<lut_writers::TexelImage> levels;
+  std::vector<formats::TexelImage> levels;
   for (const CoefficientLevel& level : baked.levels)
     levels.push_back({level.width, level.height, kCoefficientTextureChannels, level.*plane});
-  return format == LutFormat::dds ? lut_writers::encode_dds(levels, precision)
-                                  : lut_writers::encode_ktx2(levels, precision);
+  return format == LutFormat::dds ? formats::encode_dds(levels, precision)
+                                  : formats::encode_ktx2(levels, precision);
 }
 
 void append_bytes(void* context, void* data, int size) {

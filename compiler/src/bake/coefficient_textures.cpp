@@ -6,12 +6,12 @@
 #include <cmath>
 #include <utility>
 
-#include "matc/compile.h"  // kPoorFitMaxError
+#include "base/parallel_rows.h"
+#include "matc/compile/compile.h"  // kPoorFitMaxError
 #include "matc/fit/conductor_solver.h"
 #include "matc/optics/gulbrandsen.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/shader_basis.h"
-#include "parallel_rows.h"
 
 namespace matc {
 namespace {

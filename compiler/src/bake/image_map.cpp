@@ -12,7 +12,7 @@
 #include <fmt/format.h>
 #include <stb/stb_image.h>
 
-#include "matc/emit/content_hash.h"
+#include "matc/base/content_hash.h"
 #include "matc/material/parse.h"  // load_file
 #include "openexr_decode.h"
 

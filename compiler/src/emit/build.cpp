@@ -6,12 +6,13 @@
 
 #include <fmt/format.h>
 
-#include "matc/emit/content_hash.h"
+#include "matc/base/content_hash.h"
+#include "matc/base/json_format.h"
 #include "matc/emit/library_module.h"
+#include "matc/emit/material_json.h"
 #include "matc/emit/material_module_template.h"
 #include "matc/emit/material_snippet.h"
 #include "matc/emit/shader_library.h"
-#include "matc/json_format.h"
 #include "matc/material/parse.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/shader_basis.h"

@@ -9,8 +9,8 @@
 
 #include <fmt/format.h>
 
-#include "matc/emit/content_hash.h"
-#include "matc/json_format.h"
+#include "matc/base/content_hash.h"
+#include "matc/base/json_format.h"
 
 namespace matc {
 namespace {

@@ -8,18 +8,6 @@
 
 namespace matc {
 
-std::string_view shader_language_name(ShaderLanguage language) {
-  switch (language) {
-    case ShaderLanguage::hlsl:
-      return "hlsl";
-    case ShaderLanguage::wgsl:
-      return "wgsl";
-    case ShaderLanguage::glsl:
-      break;
-  }
-  return "glsl";
-}
-
 std::string shader_file_extension(ShaderLanguage language) {
   return fmt::format(".{}", shader_language_name(language));
 }

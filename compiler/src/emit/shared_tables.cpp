@@ -1,7 +1,7 @@
 #include "matc/emit/shared_tables.h"
 
-#include "matc/emit/content_hash.h"
-#include "matc/json_format.h"
+#include "matc/base/content_hash.h"
+#include "matc/base/json_format.h"
 #include "matc/ltc/ltc_table_files.h"
 #include "matc/lut/coefficient_table_files.h"
 #include "matc/lut/default_lut_hashes.h"

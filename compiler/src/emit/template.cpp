@@ -5,7 +5,7 @@
 
 #include <fmt/core.h>
 
-#include "embedded_templates.h"
+#include "base/embedded_templates.h"
 
 namespace matc {
 

@@ -6,13 +6,13 @@
 
 #include <fmt/format.h>
 
-#include "lut/header_arrays.h"
+#include "base/parallel_rows.h"
 #include "matc/fit/coefficients.h"
+#include "matc/formats/header_arrays.h"
 #include "matc/optics/gulbrandsen.h"
 #include "matc/optics/reflectance_curve.h"
 #include "matc/runtime/shader_basis.h"
 #include "matc/version.h"
-#include "parallel_rows.h"
 
 namespace matc {
 namespace {
@@ -221,7 +221,7 @@ std::string coefficient_table_source(const CoefficientTable& table) {
       "namespace {{\n\n"
       "constexpr std::size_t kSize = {};\n",
       name, kVersion, table.size(), table.size(), table.size() - 1, table.size() - 1, table.size());
-  lut_writers::append_float_array(out, "constexpr", "kTexels", table.texels, 8);
+  formats::append_float_array(out, "constexpr", "kTexels", table.texels, 8);
   out += fmt::format(
       "}}  // namespace\n\n"
       "CoefficientTableView {}_coefficient_table() {{\n"

@@ -7,14 +7,14 @@
 
 #include <fmt/format.h>
 
-#include "lut/header_arrays.h"
+#include "base/parallel_rows.h"
+#include "matc/formats/header_arrays.h"
 #include "matc/ltc/area_light_reference.h"
 #include "matc/ltc/ggx_lobe.h"
 #include "matc/ltc/lobe_polygons.h"
 #include "matc/ltc/polygon_light.h"
 #include "matc/version.h"
 #include "nelder_mead.h"
-#include "parallel_rows.h"
 #include "texel_lobes.h"
 
 namespace matc {
@@ -345,7 +345,7 @@ std::string ltc_table_source(const LtcTable& table) {
       "namespace {{\n\n"
       "constexpr std::size_t kSize = {};\n",
       kVersion, table.size, table.size, table.size - 1, table.size - 1, table.size);
-  lut_writers::append_float_array(out, "constexpr", "kTexels", table.texels, 8);
+  formats::append_float_array(out, "constexpr", "kTexels", table.texels, 8);
   out +=
       "}  // namespace\n\n"
       "LtcTableView shipped_ltc_table() {\n"
@@ -353,6 +353,18 @@ std::string ltc_table_source(const LtcTable& table) {
       "}\n\n"
       "}  // namespace matc::runtime\n";
   return out;
+}
+
+std::string_view ltc_objective_name(LtcObjective objective) {
+  switch (objective) {
+    case LtcObjective::l3:
+      return "l3";
+    case LtcObjective::polygons:
+      return "polygons";
+    case LtcObjective::l1:
+      break;
+  }
+  return "l1";
 }
 
 }  // namespace matc

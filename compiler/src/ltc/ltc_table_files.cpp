@@ -2,9 +2,10 @@
 
 #include <fmt/format.h>
 
-#include "lut/header_arrays.h"
-#include "lut/lut_writers.h"
-#include "lut/texel_bytes.h"
+#include "matc/formats/dds_writer.h"
+#include "matc/formats/header_arrays.h"
+#include "matc/formats/ktx2_writer.h"
+#include "matc/formats/texel_bytes.h"
 #include "matc/version.h"
 
 namespace matc {
@@ -25,7 +26,7 @@ std::string encode_header(const runtime::LtcTableView& table) {
       "namespace matc_ltc {{\n\n"
       "inline constexpr std::size_t kSize = {};\n\n",
       kVersion, table.size);
-  lut_writers::append_float_array(out, "inline constexpr", "kTexels", table.texels, 8);
+  formats::append_float_array(out, "inline constexpr", "kTexels", table.texels, 8);
   out += "}  // namespace matc_ltc\n";
   return out;
 }
@@ -33,14 +34,14 @@ std::string encode_header(const runtime::LtcTableView& table) {
 }  // namespace
 
 std::string encode_ltc_table(const runtime::LtcTableView& table, LutFormat format) {
-  const lut_writers::TexelImage image{table.size, table.size, runtime::kLtcChannels, table.texels};
+  const formats::TexelImage image{table.size, table.size, runtime::kLtcChannels, table.texels};
   switch (format) {
     case LutFormat::ktx2:
-      return lut_writers::encode_ktx2({&image, 1}, LutPrecision::f32);
+      return formats::encode_ktx2({&image, 1}, LutPrecision::f32);
     case LutFormat::dds:
-      return lut_writers::encode_dds({&image, 1}, LutPrecision::f32);
+      return formats::encode_dds({&image, 1}, LutPrecision::f32);
     case LutFormat::raw:
-      return lut_bytes::texel_bytes(table.texels, LutPrecision::f32);
+      return formats::texel_bytes(table.texels, LutPrecision::f32);
     case LutFormat::header:
       return encode_header(table);
   }

@@ -5,9 +5,9 @@
 
 #include <cstddef>
 
+#include "base/parallel_rows.h"
 #include "matc/ltc/ggx_lobe.h"
 #include "matc/ltc/ltc_fit.h"
-#include "parallel_rows.h"
 
 namespace matc {
 

@@ -4,15 +4,16 @@
 
 #include <fmt/format.h>
 
-#include "header_arrays.h"
-#include "lut_writers.h"
+#include "matc/formats/dds_writer.h"
+#include "matc/formats/header_arrays.h"
+#include "matc/formats/ktx2_writer.h"
+#include "matc/formats/texel_bytes.h"
 #include "matc/version.h"
-#include "texel_bytes.h"
 
 namespace matc {
 namespace {
 
-lut_writers::TexelImage image_of(const CoefficientTable& table) {
+formats::TexelImage image_of(const CoefficientTable& table) {
   return {table.size(), table.size(), runtime::kCoefficientTableChannels, table.texels};
 }
 
@@ -35,7 +36,7 @@ std::string encode_header(const CoefficientTable& table, LutPrecision precision)
       kVersion, runtime::basis_name(table.basis),
       precision == LutPrecision::f16 ? "Values rounded to half precision" : "Float values",
       table.size());
-  lut_writers::append_float_array(out, "inline constexpr", "kTexels", texels, 8);
+  formats::append_float_array(out, "inline constexpr", "kTexels", texels, 8);
   out += "}  // namespace matc_coefficient_table\n";
   return out;
 }
@@ -45,7 +46,7 @@ std::string encode_header(const CoefficientTable& table, LutPrecision precision)
 CoefficientTable stored_as(CoefficientTable table, LutPrecision precision) {
   if (precision == LutPrecision::f16) {
     for (float& value : table.texels)
-      value = lut_bytes::round_to_half(value);
+      value = formats::round_to_half(value);
   }
   return table;
 }
@@ -61,15 +62,15 @@ std::string encode_coefficient_table(const CoefficientTable& table, LutFormat fo
   if (!table.shipped_layout()) throw std::logic_error("only the shipped table layout is written");
   switch (format) {
     case LutFormat::ktx2: {
-      const lut_writers::TexelImage image = image_of(table);
-      return lut_writers::encode_ktx2({&image, 1}, precision);
+      const formats::TexelImage image = image_of(table);
+      return formats::encode_ktx2({&image, 1}, precision);
     }
     case LutFormat::dds: {
-      const lut_writers::TexelImage image = image_of(table);
-      return lut_writers::encode_dds({&image, 1}, precision);
+      const formats::TexelImage image = image_of(table);
+      return formats::encode_dds({&image, 1}, precision);
     }
     case LutFormat::raw:
-      return lut_bytes::texel_bytes(table.texels, precision);
+      return formats::texel_bytes(table.texels, precision);
     case LutFormat::header:
       return encode_header(table, precision);
   }

@@ -1,6 +1,6 @@
 #include <fmt/format.h>
 
-#include "matc/emit/content_hash.h"
+#include "matc/base/content_hash.h"
 #include "matc/lut/default_lut_hashes.h"
 #include "matc/version.h"
 
@@ -22,9 +22,8 @@ std::vector<DefaultLutHash> compute_default_lut_hashes() {
   std::vector<DefaultLutHash> hashes;
   for (const runtime::BasisKind basis : runtime::kShippedBases) {
     const BakedLut baked = bake_lut(runtime::shipped_basis(basis), {});
-    for (const std::string& format_name : lut_format_names()) {
-      const LutFormat format = *lut_format_from_name(format_name);
-      for (const LutPrecision precision : {LutPrecision::f16, LutPrecision::f32})
+    for (const LutFormat format : kLutFormats) {
+      for (const LutPrecision precision : kLutPrecisions)
         hashes.push_back(
             {basis, format, precision, hash_of_bytes(encode_lut(baked, format, precision))});
     }

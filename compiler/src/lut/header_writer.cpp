@@ -1,13 +1,15 @@
 // The LUT as a self-contained C++17 header: constexpr arrays, no dependencies.
 #include <fmt/format.h>
 
-#include "header_arrays.h"
-#include "lut_writers.h"
+#include "header_writer.h"
+#include "matc/formats/header_arrays.h"
 #include "matc/version.h"
 
-namespace matc::lut_writers {
+namespace matc {
 
-std::string encode_header(const BakedLut& baked, LutPrecision precision) {
+using formats::append_float_array;
+
+std::string encode_lut_header(const BakedLut& baked, LutPrecision precision) {
   const Lut& lut = baked.lut;
   const std::vector<float> texels = stored_as(lut, precision).texels;
   std::string out = fmt::format(
@@ -35,4 +37,4 @@ std::string encode_header(const BakedLut& baked, LutPrecision precision) {
   return out;
 }
 
-}  // namespace matc::lut_writers
+}  // namespace matc

@@ -4,82 +4,28 @@
 
 #include <fmt/format.h>
 
-#include "lut_writers.h"
+#include "header_writer.h"
+#include "matc/base/json_format.h"
+#include "matc/formats/dds_writer.h"
+#include "matc/formats/ktx2_writer.h"
+#include "matc/formats/texel_bytes.h"
 #include "matc/lut/energy.h"
 #include "matc/version.h"
-#include "texel_bytes.h"
 
 namespace matc {
 
 namespace {
 
-struct FormatInfo {
-  LutFormat format;
-  std::string_view name;
-  std::string_view extension;
-};
-
-constexpr std::array<FormatInfo, 4> kFormats = {{
-    {LutFormat::ktx2, "ktx2", ".ktx2"},
-    {LutFormat::dds, "dds", ".dds"},
-    {LutFormat::raw, "raw", ".bin"},
-    {LutFormat::header, "header", ".h"},
-}};
-
-lut_writers::TexelImage image_of(const Lut& lut) {
+formats::TexelImage image_of(const Lut& lut) {
   return {lut.size, lut.size, runtime::kBasisSize, lut.texels};
-}
-
-const FormatInfo& info(LutFormat format) {
-  return *std::find_if(kFormats.begin(), kFormats.end(),
-                       [&](const FormatInfo& f) { return f.format == format; });
 }
 
 }  // namespace
 
-std::vector<std::string> lut_format_names() {
-  std::vector<std::string> names;
-  for (const FormatInfo& f : kFormats)
-    names.emplace_back(f.name);
-  return names;
-}
-
-std::optional<LutFormat> lut_format_from_name(std::string_view name) {
-  for (const FormatInfo& f : kFormats) {
-    if (f.name == name) return f.format;
-  }
-  return std::nullopt;
-}
-
-std::optional<LutFormat> lut_format_from_extension(std::string_view extension) {
-  for (const FormatInfo& f : kFormats) {
-    if (f.extension == extension) return f.format;
-  }
-  return std::nullopt;
-}
-
-std::optional<LutPrecision> lut_precision_from_name(std::string_view name) {
-  if (name == "f16") return LutPrecision::f16;
-  if (name == "f32") return LutPrecision::f32;
-  return std::nullopt;
-}
-
-std::string_view lut_format_name(LutFormat format) {
-  return info(format).name;
-}
-
-std::string_view lut_precision_name(LutPrecision precision) {
-  return precision == LutPrecision::f16 ? "f16" : "f32";
-}
-
-std::string_view lut_file_extension(LutFormat format) {
-  return info(format).extension;
-}
-
 Lut stored_as(Lut lut, LutPrecision precision) {
   if (precision == LutPrecision::f16) {
     for (float& value : lut.texels)
-      value = lut_bytes::round_to_half(value);
+      value = formats::round_to_half(value);
   }
   return lut;
 }
@@ -96,17 +42,17 @@ BakedLut bake_lut(const runtime::BasisView& basis, const LutOptions& options) {
 std::string encode_lut(const BakedLut& baked, LutFormat format, LutPrecision precision) {
   switch (format) {
     case LutFormat::ktx2: {
-      const lut_writers::TexelImage image = image_of(baked.lut);
-      return lut_writers::encode_ktx2({&image, 1}, precision);
+      const formats::TexelImage image = image_of(baked.lut);
+      return formats::encode_ktx2({&image, 1}, precision);
     }
     case LutFormat::dds: {
-      const lut_writers::TexelImage image = image_of(baked.lut);
-      return lut_writers::encode_dds({&image, 1}, precision);
+      const formats::TexelImage image = image_of(baked.lut);
+      return formats::encode_dds({&image, 1}, precision);
     }
     case LutFormat::raw:
-      return lut_bytes::texel_bytes(baked.lut.texels, precision);
+      return formats::texel_bytes(baked.lut.texels, precision);
     case LutFormat::header:
-      return lut_writers::encode_header(baked, precision);
+      return encode_lut_header(baked, precision);
   }
   return {};
 }
@@ -141,6 +87,12 @@ nlohmann::ordered_json lut_manifest(const BakedLut& baked, LutFormat format,
       {"basis_hemispherical_averages", baked.basis_averages},
       {"average_fresnel", "F_avg = sum_i c_i * basis_hemispherical_averages[i] per channel"}};
   return manifest;
+}
+
+std::vector<OutputFile> lut_output_files(const BakedLut& baked, LutFormat format,
+                                         LutPrecision precision, std::string_view file_name) {
+  return {{std::string(file_name), encode_lut(baked, format, precision)},
+          {fmt::format("{}.json", file_name), format_json(lut_manifest(baked, format, precision))}};
 }
 
 }  // namespace matc

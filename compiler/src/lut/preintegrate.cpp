@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "base/parallel_rows.h"
 #include "matc/lut/microfacet_samples.h"
-#include "parallel_rows.h"
 
 namespace matc {
 namespace {

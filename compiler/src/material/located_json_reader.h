@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "matc/diagnostics.h"
+#include "matc/base/diagnostics.h"
 #include "matc/material/located_json.h"
 #include "matc/runtime/fresnel.h"
 

@@ -15,7 +15,7 @@
 
 #include <pugixml.hpp>
 
-#include "matc/diagnostics.h"
+#include "matc/base/diagnostics.h"
 #include "matc/optics/color_space.h"
 
 namespace matc {

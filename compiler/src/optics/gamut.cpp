@@ -35,12 +35,6 @@ std::string_view gamut_mapping_name(GamutMapping mapping) {
   return mapping == GamutMapping::none ? "none" : "desaturate";
 }
 
-std::optional<GamutMapping> find_gamut_mapping(std::string_view name) {
-  for (const GamutMapping mapping : {GamutMapping::none, GamutMapping::desaturate})
-    if (gamut_mapping_name(mapping) == name) return mapping;
-  return std::nullopt;
-}
-
 Desaturation desaturation_into_unit_range(const ReflectanceCurve& curve, ColorSpace space,
                                           std::size_t samples) {
   const Matrix3 to_xyz = rgb_to_xyz(space);

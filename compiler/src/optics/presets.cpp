@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "embedded_data.h"
+#include "base/embedded_data.h"
 
 namespace matc {
 namespace {

@@ -3,8 +3,8 @@
 #include <array>
 #include <stdexcept>
 
-#include "embedded_data.h"
-#include "matc/csv_table.h"
+#include "base/embedded_data.h"
+#include "matc/base/csv_table.h"
 
 namespace matc {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "matc/csv_table.h"
+#include "matc/base/csv_table.h"
 
 namespace matc {
 

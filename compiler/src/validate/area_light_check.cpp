@@ -14,7 +14,7 @@
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/ltc_following.h"
 #include "matc/runtime/lut.h"
-#include "matc/validate/device_validation.h"
+#include "matc/validate/device_validator.h"
 
 namespace matc {
 namespace {

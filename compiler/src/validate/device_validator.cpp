@@ -4,7 +4,7 @@
 #include "matc/fit/coefficient_table.h"
 #include "matc/lut/preintegrate.h"
 #include "matc/runtime/ltc.h"
-#include "matc/validate/device_validation.h"
+#include "matc/validate/device_validator.h"
 #include "matc/vulkan/buffer.h"
 #include "matc/vulkan/compute_kernel.h"
 #include "matc/vulkan/context.h"

@@ -8,7 +8,7 @@
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/lut.h"
 #include "matc/runtime/shader_basis.h"
-#include "matc/validate/device_validation.h"
+#include "matc/validate/device_validator.h"
 
 namespace matc {
 namespace {

@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "matc/bake/image_map.h"
-#include "matc/diagnostics.h"
+#include "matc/base/diagnostics.h"
 #include "matc/runtime/fresnel.h"
 
 namespace matc {

@@ -8,7 +8,7 @@
 
 #include "matc/bake/bake_asset.h"
 #include "matc/bake/image_map.h"
-#include "matc/diagnostics.h"
+#include "matc/base/diagnostics.h"
 
 namespace matc {
 

@@ -10,7 +10,7 @@
 
 #include "matc/bake/bake_asset.h"
 #include "matc/bake/coefficient_textures.h"
-#include "matc/emit/build.h"  // OutputFile
+#include "matc/base/output_file.h"
 #include "matc/lut/lut_files.h"
 
 namespace matc {

@@ -16,7 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/emit/c_header.h"
 #include "matc/emit/output_layout.h"
 #include "matc/emit/shader_literals.h"

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/emit/build.h"
 #include "matc/spirv/shader_compiler.h"
 

@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/runtime/basis.h"
 #include "matc/spirv/shader_compiler.h"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/emit/shader_literals.h"
 #include "matc/emit/template.h"
 

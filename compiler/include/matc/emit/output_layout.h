@@ -33,9 +33,9 @@ struct OutputKindLayout {
 std::span<const OutputKindLayout> output_layout();
 const OutputKindLayout& layout_of(OutputKind kind);
 
-// "glsl", "hlsl", "wgsl", "spirv", "header", "json", "lut", "coefficient-table", "ltc".
-std::vector<std::string> output_kind_names();
-std::optional<OutputKind> output_kind_from_name(std::string_view name);
+// "glsl", "hlsl", "wgsl", "spirv", "header", "json", "lut", "coefficient-table", "ltc" (options
+// read them through matc/options/option_names.h).
+std::string_view output_kind_name(OutputKind kind);
 std::set<OutputKind> all_output_kinds();
 
 // "matc_manifest.json": what a batch (not a per-material run) writes when json is emitted.

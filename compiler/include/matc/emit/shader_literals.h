@@ -5,14 +5,11 @@
 #include <string>
 #include <string_view>
 
+#include "matc/spirv/shader_language.h"
+
 namespace matc {
 
-// The languages matc writes. GLSL and HLSL also compile to SPIR-V in-process (glslang); WGSL is
-// written as text only and proven by Dawn in the tests (docs/shaders.md).
-enum class ShaderLanguage { glsl, hlsl, wgsl };
-
-std::string_view shader_language_name(ShaderLanguage language);  // "glsl", "hlsl", "wgsl"
-std::string shader_file_extension(ShaderLanguage language);      // ".glsl", ".hlsl", ".wgsl"
+std::string shader_file_extension(ShaderLanguage language);  // ".glsl", ".hlsl", ".wgsl"
 
 // The templates/ file of a language: "<language>/<stem>.<language>" (e.g. wgsl/material.wgsl).
 std::string template_path(ShaderLanguage language, std::string_view stem);

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "matc/base/output_file.h"
 #include "matc/emit/c_header.h"
 #include "matc/emit/output_layout.h"
 #include "matc/fit/coefficient_table.h"
@@ -20,11 +21,6 @@
 #include "matc/runtime/basis.h"
 
 namespace matc {
-
-struct OutputFile {
-  std::string name;  // a plain file name inside the output directory
-  std::string bytes;
-};
 
 // What decides the tables' bytes (a build's options, less those of the shaders).
 struct SharedTableOptions {

@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/emit/build.h"
 #include "matc/emit/shader_literals.h"
 #include "matc/spirv/shader_compiler.h"

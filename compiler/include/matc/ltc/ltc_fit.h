@@ -10,9 +10,11 @@
 // starting every texel from the one before, so the table is the same whatever the thread count.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "matc/ltc/lobe_polygons.h"
@@ -42,6 +44,9 @@ struct LtcCellFit {
 // al.'s, l3), or what a renderer sees (polygons): the mean error of the LTC's integral over
 // kLtcTrainingPolygons random quads (lobe_polygons.h) relative to the albedo, from the l1 fit.
 enum class LtcObjective { l1, l3, polygons };
+inline constexpr std::array<LtcObjective, 3> kLtcObjectives = {LtcObjective::l1, LtcObjective::l3,
+                                                               LtcObjective::polygons};
+std::string_view ltc_objective_name(LtcObjective objective);  // "l1", "l3", "polygons"
 inline constexpr std::size_t kLtcTrainingPolygons = 128;
 inline constexpr std::size_t kLtcTrainingPolygonSamples = 2048;  // reference pairs per quad
 

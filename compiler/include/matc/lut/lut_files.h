@@ -10,21 +10,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "matc/base/output_file.h"
+#include "matc/formats/table_format.h"
 #include "matc/lut/preintegrate.h"
 
 namespace matc {
-
-enum class LutFormat { ktx2, dds, raw, header };
-enum class LutPrecision { f16, f32 };
-
-// "ktx2", "dds", "raw", "header": the names --format and --lut accept.
-std::vector<std::string> lut_format_names();
-std::optional<LutFormat> lut_format_from_name(std::string_view name);
-std::optional<LutFormat> lut_format_from_extension(std::string_view extension);
-std::optional<LutPrecision> lut_precision_from_name(std::string_view name);
-std::string_view lut_format_name(LutFormat format);
-std::string_view lut_precision_name(LutPrecision precision);
-std::string_view lut_file_extension(LutFormat format);  // ".ktx2", ".dds", ".bin", ".h"
 
 // A baked table with its energy-compensation companions.
 struct BakedLut {
@@ -43,6 +33,10 @@ Lut stored_as(Lut lut, LutPrecision precision);
 // The file's bytes. The header format embeds the texels as C++ constexpr arrays (rounded through
 // half precision when `precision` is f16, so they equal what the texture formats store).
 std::string encode_lut(const BakedLut& baked, LutFormat format, LutPrecision precision);
+
+// The table as the file `file_name` and its manifest `file_name` + ".json", bytes in memory.
+std::vector<OutputFile> lut_output_files(const BakedLut& baked, LutFormat format,
+                                         LutPrecision precision, std::string_view file_name);
 
 // The "layout" of a manifest for a square table with rows roughness and columns
 // u = `columns_from_ndotv` (the LUT's sqrt(NdotV), the LTC table's 1 - sqrt(1 - NdotV)), with

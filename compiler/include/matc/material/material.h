@@ -6,7 +6,7 @@
 #include <string_view>
 #include <variant>
 
-#include "matc/diagnostics.h"
+#include "matc/base/diagnostics.h"
 #include "matc/optics/color_space.h"
 #include "matc/optics/spectrum.h"
 #include "matc/runtime/fresnel.h"

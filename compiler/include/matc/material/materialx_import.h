@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "matc/diagnostics.h"
+#include "matc/base/diagnostics.h"
 #include "matc/material/material.h"
 #include "matc/material/parse.h"
 

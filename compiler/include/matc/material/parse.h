@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "matc/diagnostics.h"
+#include "matc/base/diagnostics.h"
 #include "matc/material/material.h"
 
 namespace matc {

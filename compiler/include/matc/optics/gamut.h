@@ -2,6 +2,7 @@
 // that clamp colours to that range (docs/color-spaces.md).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string_view>
 
@@ -27,8 +28,9 @@ enum class GamutMapping {
   none,        // keep the values as they are: physically meaningful, possibly above 1 or below 0
   desaturate,  // pull every angle toward its own luminance by one constant factor
 };
-std::string_view gamut_mapping_name(GamutMapping mapping);
-std::optional<GamutMapping> find_gamut_mapping(std::string_view name);
+inline constexpr std::array<GamutMapping, 2> kGamutMappings = {GamutMapping::none,
+                                                               GamutMapping::desaturate};
+std::string_view gamut_mapping_name(GamutMapping mapping);  // "none", "desaturate"
 
 // The luminance-preserving desaturation F' = Y + s (F - Y), Y the space's luminance of F, with
 // the largest s in [0, 1] that brings every channel at every sampled angle into [0, 1]; s = 1

@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-#include "matc/diagnostics.h"
+#include "matc/base/diagnostics.h"
 #include "matc/optics/fresnel.h"
 
 namespace matc {

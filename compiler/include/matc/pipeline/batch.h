@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "matc/diagnostics.h"
+#include "matc/base/diagnostics.h"
 #include "matc/pipeline/atomic_file.h"
 
 namespace matc {

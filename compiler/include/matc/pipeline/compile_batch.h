@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/emit/build.h"
 #include "matc/pipeline/batch.h"
 #include "matc/pipeline/output_sink.h"

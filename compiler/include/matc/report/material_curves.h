@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/runtime/shader_basis.h"
 
 namespace matc {

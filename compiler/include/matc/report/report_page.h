@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 
 namespace matc {
 

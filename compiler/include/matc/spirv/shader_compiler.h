@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "matc/emit/shader_literals.h"
+#include "matc/spirv/shader_language.h"
 
 namespace matc {
 

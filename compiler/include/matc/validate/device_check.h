@@ -1,7 +1,7 @@
 // One device check: proof that a family of generated functions computes on a Vulkan device what
 // the CPU runtime computes. A check is its kernel (per front end), its queries, the comparison of
 // the device's results with the runtime, and the words a report uses; each lives in one file of
-// src/validate/. DeviceValidator::run (device_validation.h) runs any check from GLSL and HLSL, and
+// src/validate/. DeviceValidator::run (device_validator.h) runs any check from GLSL and HLSL, and
 // `matc validate`, `matc --validate` and the tests walk the same checks: material_check() for each
 // material, shared_file_checks() for what the build's shared files carry.
 #pragma once
@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 #include "matc/emit/build.h"
 #include "matc/emit/shader_literals.h"
 #include "matc/spirv/shader_compiler.h"

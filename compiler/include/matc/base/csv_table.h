@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "matc/diagnostics.h"
+#include "matc/base/diagnostics.h"
 
 namespace matc {
 

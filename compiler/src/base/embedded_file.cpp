@@ -1,11 +1,11 @@
-#include "matc/embedded_file.h"
+#include "matc/base/embedded_file.h"
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
-#include "embedded_data.h"
-#include "emit/embedded_templates.h"
+#include "base/embedded_data.h"
+#include "base/embedded_templates.h"
 
 namespace matc {
 

@@ -5,9 +5,9 @@
 #include <span>
 #include <string>
 
-#include "matc/lut/lut_files.h"
+#include "matc/formats/table_format.h"
 
-namespace matc::lut_bytes {
+namespace matc::formats {
 
 void put_u16(std::string& out, std::uint16_t value);
 void put_u32(std::string& out, std::uint32_t value);
@@ -25,4 +25,4 @@ std::size_t component_bytes(LutPrecision precision);
 void write_texel_bytes(std::span<const float> texels, LutPrecision precision, char* destination);
 std::string texel_bytes(std::span<const float> texels, LutPrecision precision);
 
-}  // namespace matc::lut_bytes
+}  // namespace matc::formats

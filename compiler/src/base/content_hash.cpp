@@ -1,4 +1,4 @@
-#include "matc/emit/content_hash.h"
+#include "matc/base/content_hash.h"
 
 #include <cstdint>
 

@@ -1,4 +1,4 @@
-#include "matc/json_format.h"
+#include "matc/base/json_format.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "matc/diagnostics.h"
+#include "matc/base/diagnostics.h"
 
 #include <algorithm>
 

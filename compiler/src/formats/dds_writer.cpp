@@ -1,13 +1,11 @@
 // DirectDraw Surface with the DX10 extension header (Microsoft, "DDS file layout"): one 2D
 // texture, DXGI_FORMAT_R16G16[B16A16]_FLOAT or DXGI_FORMAT_R32G32[B32A32]_FLOAT, with its mip
 // levels (largest first) when it has more than one.
-#include "lut_writers.h"
-#include "texel_bytes.h"
+#include "matc/formats/dds_writer.h"
+#include "matc/formats/texel_bytes.h"
 
-namespace matc::lut_writers {
+namespace matc::formats {
 namespace {
-
-using namespace lut_bytes;
 
 constexpr std::uint32_t kDdsdCaps = 0x1, kDdsdHeight = 0x2, kDdsdWidth = 0x4, kDdsdPitch = 0x8;
 constexpr std::uint32_t kDdsdPixelFormat = 0x1000, kDdsdMipMapCount = 0x20000;
@@ -75,4 +73,4 @@ std::string encode_dds(std::span<const TexelImage> levels, LutPrecision precisio
   return out;
 }
 
-}  // namespace matc::lut_writers
+}  // namespace matc::formats

@@ -1,4 +1,4 @@
-#include "matc/csv_table.h"
+#include "matc/base/csv_table.h"
 
 #include <algorithm>
 #include <cctype>

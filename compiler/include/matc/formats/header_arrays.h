@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-namespace matc::lut_writers {
+namespace matc::formats {
 
 // Shortest round-trip float literal.
 inline std::string float_literal(float value) {
@@ -34,4 +34,4 @@ void append_float_array(std::string& out, std::string_view qualifiers, std::stri
   out += "};\n\n";
 }
 
-}  // namespace matc::lut_writers
+}  // namespace matc::formats

@@ -5,9 +5,7 @@
 #include <memory>
 #include <optional>
 
-#include <nlohmann/json.hpp>
-
-#include "matc/diagnostics.h"
+#include "matc/base/diagnostics.h"
 #include "matc/fit/accuracy.h"
 #include "matc/material/material.h"
 #include "matc/optics/gamut.h"
@@ -71,9 +69,5 @@ void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics
 // A note, at the material's name, when its curve leaves [0, 1] in the working space: the extent,
 // and what --gamut-mapping desaturate would keep.
 void note_if_out_of_unit_range(const CompiledMaterial& compiled, Diagnostics& diagnostics);
-
-// The per-material output `<name>.json` (field reference: docs/material-format.md).
-nlohmann::ordered_json compiled_material_json(const CompiledMaterial& compiled,
-                                              const runtime::BasisView& basis);
 
 }  // namespace matc

@@ -1,13 +1,13 @@
-#include "texel_bytes.h"
+#include "matc/formats/texel_bytes.h"
 
 #include <algorithm>
 #include <bit>
 
 #include <Eigen/Core>
 
-#include "parallel_rows.h"
+#include "base/parallel_rows.h"
 
-namespace matc::lut_bytes {
+namespace matc::formats {
 
 void put_u16(std::string& out, std::uint16_t value) {
   for (int shift = 0; shift < 16; shift += 8)
@@ -60,4 +60,4 @@ std::string texel_bytes(std::span<const float> texels, LutPrecision precision) {
   return out;
 }
 
-}  // namespace matc::lut_bytes
+}  // namespace matc::formats

@@ -5,14 +5,12 @@
 #include <utility>
 #include <vector>
 
-#include "lut_writers.h"
+#include "matc/formats/ktx2_writer.h"
+#include "matc/formats/texel_bytes.h"
 #include "matc/version.h"
-#include "texel_bytes.h"
 
-namespace matc::lut_writers {
+namespace matc::formats {
 namespace {
-
-using namespace lut_bytes;
 
 constexpr unsigned char kIdentifier[12] = {0xAB, 0x4B, 0x54, 0x58, 0x20, 0x32,
                                            0x30, 0xBB, 0x0D, 0x0A, 0x1A, 0x0A};
@@ -118,4 +116,4 @@ std::string encode_ktx2(std::span<const TexelImage> levels, LutPrecision precisi
   return out;
 }
 
-}  // namespace matc::lut_writers
+}  // namespace matc::formats

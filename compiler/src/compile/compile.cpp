@@ -1,4 +1,4 @@
-#include "matc/compile.h"
+#include "matc/compile/compile.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -15,8 +15,6 @@
 namespace matc {
 namespace {
 
-using nlohmann::ordered_json;
-
 // Artistic and ior materials: one complex IOR per channel (F82-tint and spectral have none).
 std::optional<std::array<ComplexIor, 3>> per_channel_ior(const MaterialModel& model) {
   std::array<ComplexIor, 3> ior{};
@@ -31,31 +29,6 @@ std::optional<std::array<ComplexIor, 3>> per_channel_ior(const MaterialModel& mo
     return std::nullopt;
   }
   return ior;
-}
-
-ordered_json rgb_json(const Rgb& rgb) {
-  return ordered_json::array({rgb[0], rgb[1], rgb[2]});
-}
-
-ordered_json error_stats_json(const ErrorStats& stats) {
-  return {{"max", rgb_json(stats.max_abs)}, {"rms", rgb_json(stats.rms)}};
-}
-
-ordered_json input_json(const Material& material) {
-  ordered_json input;
-  if (const auto* artistic = std::get_if<ArtisticInput>(&material.model)) {
-    input = {{"reflectivity", rgb_json(artistic->reflectivity)},
-             {"edge_tint", rgb_json(artistic->edge_tint)}};
-  } else if (const auto* ior = std::get_if<IorInput>(&material.model)) {
-    input = {{"n", rgb_json(ior->n)}, {"k", rgb_json(ior->k)}};
-  } else if (const auto* f82 = std::get_if<F82TintInput>(&material.model)) {
-    input = {{"f0", rgb_json(f82->f0)}, {"tint", rgb_json(f82->tint)}};
-  } else {
-    const auto& spectral = std::get<SpectralInput>(material.model);
-    input = spectral.preset.empty() ? ordered_json{{"file", spectral.file}}
-                                    : ordered_json{{"preset", spectral.preset}};
-  }
-  return {{std::string(model_key(material.model)), input}};
 }
 
 // `curve` with `color`'s gamut mapping applied. `sampled` is the same curve, cached where the
@@ -144,79 +117,6 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
     compiled.artistic = artistic;
   }
   return compiled;
-}
-
-ordered_json compiled_material_json(const CompiledMaterial& compiled,
-                                    const runtime::BasisView& basis) {
-  const Material& material = compiled.material;
-  ordered_json out;
-  out["matc_version"] = kVersion;
-  out["name"] = material.name;
-  // The file name only, so the output does not depend on where the build ran.
-  out["source"] = std::filesystem::path(material.source_path).filename().generic_string();
-  out["input"] = input_json(material);
-  out["roughness"] = material.roughness ? ordered_json(*material.roughness) : ordered_json();
-
-  ordered_json resolved;
-  if (compiled.ior) {
-    const auto& ior = *compiled.ior;
-    const auto& artistic = *compiled.artistic;
-    resolved["ior"] = {{"n", rgb_json({ior[0].n, ior[1].n, ior[2].n})},
-                       {"k", rgb_json({ior[0].k, ior[1].k, ior[2].k})}};
-    resolved["artistic"] = {
-        {"reflectivity",
-         rgb_json({artistic[0].reflectivity, artistic[1].reflectivity, artistic[2].reflectivity})},
-        {"edge_tint",
-         rgb_json({artistic[0].edge_tint, artistic[1].edge_tint, artistic[2].edge_tint})}};
-  } else if (const auto* spectral = std::get_if<SpectralInput>(&material.model)) {
-    const auto& spectrum = spectral->spectrum;
-    resolved["spectral"] = {
-        {"data_range_nm", {spectrum.wavelength_nm.front(), spectrum.wavelength_nm.back()}},
-        {"data_samples", spectrum.wavelength_nm.size()},
-        {"integration",
-         fmt::format("CIE 1931 2-degree observer x D65, 360-830 nm at 1 nm, Bradford-adapted to "
-                     "{}, normalised so a perfect mirror is (1, 1, 1)",
-                     color_space_name(compiled.color.working_space))}};
-  }
-  ordered_json color = {
-      {"working_space", color_space_name(compiled.color.working_space)},
-      {"input_space", std::holds_alternative<SpectralInput>(material.model)
-                          ? ordered_json("spectral")
-                          : ordered_json(color_space_name(
-                                input_color_space(material, compiled.color.working_space)))},
-      {"range", {{"min", rgb_json(compiled.range.min)}, {"max", rgb_json(compiled.range.max)}}},
-      {"within_unit_range", compiled.range.within_unit_range()},
-      {"gamut_mapping", gamut_mapping_name(compiled.color.gamut_mapping)},
-      {"saturation_kept", compiled.saturation}};
-  out["color"] = std::move(color);
-  resolved["F0"] = rgb_json(compiled.f0);
-  resolved["F82"] = rgb_json(compiled.f82);
-  out["resolved"] = resolved;
-
-  ordered_json basis_json = {{"name", runtime::basis_name(basis.kind)},
-                             {"samples", basis.samples()}};
-  if (basis.kind == runtime::BasisKind::paper) {
-    basis_json["solve"] = "probes";
-    basis_json["probes_mu"] = {basis.probe_mu(0), basis.probe_mu(1)};
-  } else {
-    basis_json["solve"] = "minimax";
-    basis_json["minimax_cosines"] = kMinimaxCosines;
-  }
-  out["basis"] = std::move(basis_json);
-  ordered_json coefficients = ordered_json::array();
-  for (const auto& channel : compiled.coefficients) {
-    coefficients.push_back({channel[0], channel[1], channel[2], channel[3]});
-  }
-  out["coefficients"] = coefficients;
-  out["energy_compensation"] = {{"F_avg", rgb_json(compiled.average_fresnel)}};
-  out["accuracy"] = {{"samples", compiled.accuracy.samples},
-                     {"metric",
-                      "absolute error vs the exact Fresnel curve over mu = cos(theta) "
-                      "uniform in [0, 1]"},
-                     {"decomposition", error_stats_json(compiled.accuracy.decomposition)},
-                     {"schlick", error_stats_json(compiled.accuracy.schlick)},
-                     {"f82_tint", error_stats_json(compiled.accuracy.f82_tint)}};
-  return out;
 }
 
 }  // namespace matc

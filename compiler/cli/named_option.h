@@ -1,0 +1,33 @@
+// Options whose value is a name from the registry (matc/options/option_names.h): CLI11 checks the
+// text against the registry's names and the option's variable holds the typed value from then
+// on, so no command looks a name up again.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "matc/options/option_names.h"
+
+namespace matc::cli {
+
+// Adds `flags` to `app`; `value` holds the default (shown in help) until the option is given.
+// `allowed`, when not empty, is the subset of the kind's values the option takes.
+template <typename Value>
+CLI::Option* add_named_option(CLI::App& app, const std::string& flags, Value& value,
+                              const std::string& help, std::span<const Value> allowed = {}) {
+  std::vector<std::string> names;
+  for (const OptionName<Value>& entry : option_names<Value>()) {
+    if (allowed.empty() || std::find(allowed.begin(), allowed.end(), entry.value) != allowed.end())
+      names.emplace_back(entry.name);
+  }
+  return app
+      .add_option_function<std::string>(
+          flags, [&value](const std::string& name) { value = *option_value<Value>(name); }, help)
+      ->default_str(std::string(option_name(value)))
+      ->check(CLI::IsMember(names));
+}
+
+}  // namespace matc::cli

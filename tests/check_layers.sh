@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# Includes point down the layers (docs/architecture.md): a module may include itself and the
+# modules of lower layers, never a module of its own layer or above. Reads every quoted #include
+# of compiler/ and runtime/ and names each one that points up or sideways.
+#   check_layers.sh REPO_ROOT
+set -euo pipefail
+root=${1:?usage: check_layers.sh REPO_ROOT}
+cd "$root"
+
+# module:layer, lowest first. Same layer: independent of each other.
+layers="runtime:0 base:1 vulkan:1 optics:2 formats:2 spirv:2 material:3 fit:3 basis:4 lut:4
+compile:5 ltc:6 bake:6 report:6 emit:7 options:8 pipeline:8 validate:8 cli:9"
+
+# The module a file belongs to; for a generated source, that of the header it implements.
+module_of_file() {
+  case $1 in
+    compiler/cli/*) echo cli ;;
+    compiler/src/generated/*)
+      grep -m1 -o '#include "matc/[a-z_]*/' "$1" | cut -d/ -f2 ;;
+    compiler/src/*/*) echo "$1" | cut -d/ -f3 ;;
+    compiler/include/matc/*/*) echo "$1" | cut -d/ -f4 ;;
+    compiler/include/matc/*) echo base ;;  # version.h.in
+    runtime/include/matc/*/*) echo "$1" | cut -d/ -f4 ;;
+    runtime/src/vulkan/*) echo vulkan ;;
+    runtime/src/*) echo runtime ;;
+    *) echo unknown ;;
+  esac
+}
+
+# The module an include names: "matc/<module>/...", "matc/version.h" (base), a private header by
+# its path under compiler/src ("<module>/x.h"), or one beside the including file.
+module_of_include() {
+  local include=$1 including_module=$2
+  case $include in
+    matc/version.h) echo base ;;
+    matc/*/*) include=${include#matc/}; echo "${include%%/*}" ;;
+    */*) echo "${include%%/*}" ;;
+    *) echo "$including_module" ;;
+  esac
+}
+
+layer_of() {
+  local entry
+  for entry in $layers; do
+    [ "${entry%%:*}" = "$1" ] && { echo "${entry#*:}"; return; }
+  done
+  echo ""
+}
+
+problems=0
+checked=0
+while IFS= read -r file; do
+  from=$(module_of_file "$file")
+  from_layer=$(layer_of "$from")
+  if [ -z "$from_layer" ]; then
+    echo "$file: module '$from' has no layer (add it to tests/check_layers.sh and docs/architecture.md)"
+    problems=$((problems + 1))
+    continue
+  fi
+  while IFS=: read -r line include; do
+    checked=$((checked + 1))
+    to=$(module_of_include "$include" "$from")
+    [ "$to" = "$from" ] && continue
+    to_layer=$(layer_of "$to")
+    if [ -z "$to_layer" ]; then
+      echo "$file:$line: includes \"$include\" of unknown module '$to'"
+      problems=$((problems + 1))
+    elif [ "$to_layer" -ge "$from_layer" ]; then
+      echo "$file:$line: $from (layer $from_layer) includes \"$include\" of $to (layer $to_layer)"
+      problems=$((problems + 1))
+    fi
+  done < <(grep -n '^#include "' "$file" | sed 's/^\([0-9]*\):#include "\([^"]*\)".*/\1:\2/')
+done < <(git ls-files compiler runtime | grep -E '\.(h|cpp|in)$')
+
+if [ "$problems" -gt 0 ]; then
+  echo "check_layers: $problems include(s) point up or sideways"
+  exit 1
+fi
+echo "check_layers: $checked includes point down the layers"
