@@ -15,7 +15,7 @@ table=$(mktemp)
 trap 'rm -f "$table"' EXIT
 "$build/bench/matc_area_light_study" --samples 16384 --compare-objectives \
   "$root"/examples/materials/*.json >"$table"
-"$root/tests/check_docs_block.sh" --update "$root/docs/ltc.md" area-light-study cat "$table"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/ltc.md" area-light-study cat "$table"
 "$build/bench/matc_area_light_quality_study" --compare-weights "$root"/examples/materials/*.json \
   >"$table"
-"$root/tests/check_docs_block.sh" --update "$root/docs/ltc.md" area-light-quality cat "$table"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/ltc.md" area-light-quality cat "$table"

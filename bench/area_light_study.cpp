@@ -427,7 +427,7 @@ int main(int argc, char** argv) {
         "LTC fitted to that texel's own {} held-out quads (their mean error, and separately their "
         "largest; Nelder-Mead from the shipped and the L1 fit's texel, restarted until it stops "
         "improving), which no table of this form beats on them, against the shipped table, the "
-        "L1 fit (shipped before issue #31) and half of it (the issue's target); mean over texels "
+        "L1 fit (the former shipped fit) and half of it (the target); mean over texels "
         "of each texel's mean / the largest, and the references' mean standard error, which the "
         "mean includes:\n\n"
         "| roughness | L1 objective | half of it | shipped (polygon objective) | floor | "

@@ -3,7 +3,7 @@
 # at -j 2 in one matc run, and the same at N/10: wall time, materials per second and peak resident
 # memory (which must barely grow with N). About 3 GB of outputs at N = 100,000. Prints the Markdown
 # table of docs/performance.md ("A very large batch"); to update it:
-#   tests/check_docs_block.sh --update docs/performance.md large-batch bench/large-batch.sh
+#   tests/scripts/check_docs_block.sh --update docs/performance.md large-batch bench/large-batch.sh
 #   bench/large-batch.sh [BUILD_DIR] [N]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

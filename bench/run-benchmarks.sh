@@ -25,18 +25,18 @@ for (const b of report.benchmarks.filter((b) => b.aggregate_name === "median")) 
               `${b.real_time.toFixed(1)} | ${(b["samples/s"] / 1e6).toFixed(0)} M |`);
 }
 JS
-"$root/tests/check_docs_block.sh" --update "$root/docs/performance.md" lut-bake cat "$report.md"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/performance.md" lut-bake cat "$report.md"
 
 # Our Fresnel against Schlick's in a 720p full-screen pass on Vulkan (lavapipe unless
 # MATC_BENCH_DEVICE names another device).
 cmake --build "$build" --target matc_fullscreen_cost >/dev/null
 "$build/bench/matc_fullscreen_cost" ${MATC_BENCH_DEVICE:+--device "$MATC_BENCH_DEVICE"} >"$report.md"
-"$root/tests/check_docs_block.sh" --update "$root/docs/performance.md" fullscreen-720p cat "$report.md"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/performance.md" fullscreen-720p cat "$report.md"
 
 # One build action per material (--no-shared) and the shared action, median wall times.
 "$root/bench/per-material.sh" "$build" >"$report.md"
-"$root/tests/check_docs_block.sh" --update "$root/docs/performance.md" per-material cat "$report.md"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/performance.md" per-material cat "$report.md"
 
 # Batch throughput and memory: 1,000 materials at -j 1 and -j 2 against a glslangValidator loop.
 "$root/bench/batch-throughput.sh" "$build" 1000 >"$report.md"
-"$root/tests/check_docs_block.sh" --update "$root/docs/performance.md" batch-throughput cat "$report.md"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/performance.md" batch-throughput cat "$report.md"

@@ -1,7 +1,7 @@
 // Prints the tables of docs/shaders.md: the SPIR-V cost of our Fresnel against Schlick's, both
 // compiled the same way, and the accuracy and cost of the embedded table (--embed-lut) against
-// the texture. Run through bench/update-shader-docs.sh; tests/check_docs_block.sh keeps the docs
-// in sync.
+// the texture. Run through bench/update-shader-docs.sh; tests/scripts/check_docs_block.sh keeps the
+// docs in sync.
 #include <algorithm>
 #include <array>
 #include <cmath>

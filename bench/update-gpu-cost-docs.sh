@@ -5,5 +5,5 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build}
 cmake --build "$build" --target matc_gpu_cost >/dev/null
-"$root/tests/check_docs_block.sh" --update "$root/docs/performance.md" gpu-cost \
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/performance.md" gpu-cost \
   "$build/bench/matc_gpu_cost"

@@ -14,4 +14,4 @@ trap 'rm -f "$report"' EXIT
     examples/materials/*.json)
   echo '```'
 } >"$report"
-"$root/tests/check_docs_block.sh" --update "$root/docs/validation.md" validate-examples cat "$report"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/validation.md" validate-examples cat "$report"

@@ -1,6 +1,7 @@
 // Prints the accuracy tables of docs/accuracy.md: the decomposition, Schlick and F82-tint against
 // the exact Fresnel curve of every measured metal, and over a grid of artistic (r, g) inputs.
-// Run through bench/accuracy/update-docs.sh; tests/check_docs_block.sh keeps the docs in sync.
+// Run through bench/accuracy/update-docs.sh; tests/scripts/check_docs_block.sh keeps the docs in
+// sync.
 #include <algorithm>
 #include <array>
 #include <cmath>

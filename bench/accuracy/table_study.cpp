@@ -226,8 +226,8 @@ std::vector<Design> designs() {
   all.push_back({fmt::format("{}², {}, {}, c_2 c_3, minimax, **f16** (shipped)", kShipped,
                              kColumnsName, kRowsName),
                  kib(kShipped, 2), from_table(matc::stored_as(shipped, matc::LutPrecision::f16))});
-  all.push_back({fmt::format("{}², **r^(1/3)**, **log n**, c_2 c_3, minimax, f32 (shipped until "
-                             "issue #28: a cube root, two log2 and three divisions a channel)",
+  all.push_back({fmt::format("{}², **r^(1/3)**, **log n**, c_2 c_3, minimax, f32 (the former axes: "
+                             "a cube root, two log2 and three divisions a channel)",
                              kShipped),
                  kib(kShipped, 4),
                  from_table(table(kShipped, ReflectivityAxis::cube_root, EdgeTintAxis::log_ior,

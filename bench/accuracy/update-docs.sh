@@ -6,27 +6,27 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${1:-$root/build}
 cmake --build "$build" --target matc_accuracy_table >/dev/null
 tool="$build/bench/matc_accuracy_table"
-"$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" accuracy-tables "$tool"
-"$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" lut-accuracy "$tool" --lut
-"$root/tests/check_docs_block.sh" --update "$root/README.md" accuracy-summary "$tool" --summary
-"$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" f82-tint "$tool" --f82-tint
-"$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" color-spaces "$tool" \
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" accuracy-tables "$tool"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" lut-accuracy "$tool" --lut
+"$root/tests/scripts/check_docs_block.sh" --update "$root/README.md" accuracy-summary "$tool" --summary
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" f82-tint "$tool" --f82-tint
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" color-spaces "$tool" \
   --color-spaces
 # The basis study (about 1.5 minutes on 2 cores; no test reruns it, the unit tests hold the
 # shipped basis to the targets it was chosen for).
 cmake --build "$build" --target matc_basis_study >/dev/null
-"$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" basis-study \
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" basis-study \
   "$build/bench/matc_basis_study"
 # The closed-form basis study (about 10 s on 2 cores): which powers of 1 - mu the default uses.
 cmake --build "$build" --target matc_closed_form_basis_study >/dev/null
-"$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" closed-form-basis-study \
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" closed-form-basis-study \
   "$build/bench/matc_closed_form_basis_study"
 # Whether a basis could fit F82-tint materials too (about 40 s on 2 cores).
 cmake --build "$build" --target matc_f82_basis_study >/dev/null
-"$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" f82-basis-study \
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" f82-basis-study \
   "$build/bench/matc_f82_basis_study"
 # The coefficient-table study (about 20 s on 2 cores; the unit tests hold the shipped table to the
 # targets it was chosen for).
 cmake --build "$build" --target matc_table_study >/dev/null
-"$root/tests/check_docs_block.sh" --update "$root/docs/accuracy.md" table-study \
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" table-study \
   "$build/bench/matc_table_study"

@@ -11,20 +11,20 @@ trap 'rm -f "$table"' EXIT
 "$build/examples/render/matc_render" --size 256 --samples 4096 -o "$root/docs/images" \
   "$root/examples/materials/figure2_edge_tint.json" "$root/examples/materials/beryllium.json" \
   >"$table"
-"$root/tests/check_docs_block.sh" --update "$root/docs/rendering.md" comparison-renders cat "$table"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/rendering.md" comparison-renders cat "$table"
 # The same renders with the authors' basis (tables only; the images stay the default basis').
 paper=$(mktemp -d)
 trap 'rm -f "$table"; rm -rf "$paper"' EXIT
 "$build/examples/render/matc_render" --size 256 --samples 4096 --basis paper -o "$paper" \
   "$root/examples/materials/figure2_edge_tint.json" "$root/examples/materials/beryllium.json" \
   >"$table"
-"$root/tests/check_docs_block.sh" --update "$root/docs/rendering.md" comparison-renders-paper \
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/rendering.md" comparison-renders-paper \
   cat "$table"
 # The textured render: per-pixel reflectivity and edge tint, the coefficient-table path.
 cmake --build "$build" --target matc_textured_render >/dev/null
 "$build/examples/render/matc_textured_render" --size 256 --samples 4096 -o "$root/docs/images" \
   >"$table"
-"$root/tests/check_docs_block.sh" --update "$root/docs/rendering.md" textured-render cat "$table"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/rendering.md" textured-render cat "$table"
 # The baked-texture render: coefficient textures of `matc bake` vs the maps' own mips, on the
 # example maps.
 cmake --build "$build" --target matc_baked_render matc_example_maps >/dev/null
@@ -33,7 +33,7 @@ trap 'rm -f "$table"; rm -rf "$paper" "$maps"' EXIT
 "$build/examples/textured/matc_example_maps" --size 512 -o "$maps"
 "$build/examples/render/matc_baked_render" --size 256 -o "$root/docs/images" \
   --reflectivity "$maps/inlaid_metals_r.png" --edge-tint "$maps/inlaid_metals_g.png" >"$table"
-"$root/tests/check_docs_block.sh" --update "$root/docs/rendering.md" baked-render cat "$table"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/rendering.md" baked-render cat "$table"
 # Area lights (LTC): every example material for the table, the Figure 2 material's and
 # beryllium's images into docs/images.
 cmake --build "$build" --target matc_area_light_render >/dev/null
@@ -45,4 +45,4 @@ for name in figure2_edge_tint beryllium; do
   cp "$area/${name}_area.png" "$area/${name}_area_difference.png" \
     "$area/${name}_area_fresnel_difference.png" "$root/docs/images/"
 done
-"$root/tests/check_docs_block.sh" --update "$root/docs/rendering.md" area-light-render cat "$table"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/rendering.md" area-light-render cat "$table"

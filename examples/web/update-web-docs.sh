@@ -11,7 +11,7 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${1:-$root/build}
 cmake --build "$build" --target matc matc_example_maps >/dev/null
 for engine in three three-webgpu babylon; do
-  "$root/tests/check_docs_block.sh" --update "$root/docs/web-engines.md" "$engine-reference" \
+  "$root/tests/scripts/check_docs_block.sh" --update "$root/docs/web-engines.md" "$engine-reference" \
     node "$root/tests/js/check-$engine-reference.mjs" "$build/matc" "$root/examples/materials" \
     "$root/examples/web" "$build/examples/textured/matc_example_maps" "$root/examples/textured" \
     --markdown --size 256 --images "$root/docs/images" --timing

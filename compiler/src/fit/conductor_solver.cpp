@@ -26,9 +26,9 @@ Eigen::Map<const Array> as_array(const std::vector<double>& values) {
 // Lawson's iterations as near_minimax_fit runs them (weighted least squares; weights times the
 // square-rooted error, rescaled to a largest weight of 1), with the 2x2 normal equations in place
 // of a QR of the 401 x 2 design, in single precision: F within 1e-5 of solve_coefficients'
-// (tests/bake_test.cpp), twenty times faster. The solve runs once per distinct texel pair, up to
-// 65,536 times a texture: the loops are SIMD reductions, compiled for AVX2 as well as the
-// baseline and picked at load time.
+// (tests/unit/bake/bake_test.cpp), twenty times faster. The solve runs once per distinct texel
+// pair, up to 65,536 times a texture: the loops are SIMD reductions, compiled for AVX2 as well as
+// the baseline and picked at load time.
 __attribute__((target_clones("avx2", "default"))) std::pair<double, double> lawson_iterations(
     const float* b2, const float* b3, const float* y, float* weights, int rows) {
   for (int j = 0; j < rows; ++j)

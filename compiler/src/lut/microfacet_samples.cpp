@@ -37,7 +37,7 @@ HammersleySet::HammersleySet(std::size_t count) : disk_x_(count), disk_y_(count)
 
 // Cloned for AVX2 with run-time dispatch; both clones compute the same IEEE results (no FMA
 // contraction in ISO C++ mode), so the table does not depend on the machine that bakes it.
-// tests/sampler_clones_test.cpp builds this file without clones and checks that claim.
+// tests/unit/lut/sampler_clones_test.cpp builds this file without clones and checks that claim.
 #ifndef MATC_NO_TARGET_CLONES
 __attribute__((target_clones("avx2", "default")))
 #endif

@@ -85,8 +85,8 @@ SpectralCurve::SpectralCurve(const Spectrum& spectrum, ColorSpace space)
 Rgb SpectralCurve::at(double mu) const {
   Rgb result{};
   for (std::size_t i = 0; i < kGridSize; ++i) {
-    // The real-arithmetic form: equal to fresnel_exact within 1e-10 (tests/bake_test.cpp) and
-    // several times faster, which is most of compiling a spectral material.
+    // The real-arithmetic form: equal to fresnel_exact within 1e-10 (tests/unit/bake/bake_test.cpp)
+    // and several times faster, which is most of compiling a spectral material.
     const double f = fresnel_conductor(mu, ior_[i]);
     for (std::size_t c = 0; c < 3; ++c)
       result[c] += weights_[i][c] * f;

@@ -20,8 +20,9 @@ class ConductorSolver {
  public:
   explicit ConductorSolver(runtime::BasisKind basis);
 
-  // Agrees with solve_coefficients on the same conductor to rounding (tests/bake_test.cpp);
-  // reflectivity and edge tint are clamped to [0, 1], r = 1 gives F = 1 (c = 1, 0, 0, 0).
+  // Agrees with solve_coefficients on the same conductor to rounding
+  // (tests/unit/bake/bake_test.cpp); reflectivity and edge tint are clamped to [0, 1], r = 1 gives
+  // F = 1 (c = 1, 0, 0, 0).
   ChannelSolution solve(double reflectivity, double edge_tint) const;
 
   runtime::BasisKind basis() const { return basis_; }

@@ -18,7 +18,7 @@ double fresnel_exact(double mu, ComplexIor ior);
 
 // The same reflectance in real arithmetic (the a^2 + b^2 form of pbrt-v3's FrConductor) for
 // n > 0, k >= 0 at mu > 0: about five times faster than the complex form, for loops over tens of
-// thousands of curves (`matc bake`); tests/optics_test.cpp checks the two agree.
+// thousands of curves (`matc bake`); tests/unit/optics/optics_test.cpp checks the two agree.
 double fresnel_conductor(double mu, ComplexIor ior);
 
 // Reflectance at normal incidence, ((n-1)^2 + k^2) / ((n+1)^2 + k^2).

@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Prints a hash of every file matc writes for the example materials with every output kind, in
 # every table format and basis (and an embedded table, two bakes, an import): one line per file,
-# "CONFIGURATION/FILE HASH" (SHA-256, 16 hex digits). tests/output_hashes.txt holds what the checked-in sources write;
-# the output_hashes test compares, so a change that moves one byte of any output is seen. After
-# an intended change:  tests/output_hashes.sh build/matc > tests/output_hashes.txt
+# "CONFIGURATION/FILE HASH" (SHA-256, 16 hex digits). tests/data/output_hashes.txt holds what the
+# checked-in sources write; the output_hashes test compares, so a change that moves one byte of any output is seen. After
+# an intended change:  tests/scripts/output_hashes.sh build/matc > tests/data/output_hashes.txt
 #   output_hashes.sh MATC
 set -euo pipefail
 matc=$(realpath "${1:?usage: output_hashes.sh MATC}")
-source_dir=$(cd "$(dirname "$0")/.." && pwd)
+source_dir=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$source_dir"

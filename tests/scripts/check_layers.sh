@@ -53,7 +53,7 @@ while IFS= read -r file; do
   from=$(module_of_file "$file")
   from_layer=$(layer_of "$from")
   if [ -z "$from_layer" ]; then
-    echo "$file: module '$from' has no layer (add it to tests/check_layers.sh and docs/architecture.md)"
+    echo "$file: module '$from' has no layer (add it to tests/scripts/check_layers.sh and docs/architecture.md)"
     problems=$((problems + 1))
     continue
   fi

@@ -1,5 +1,5 @@
 // matc_catalogue_images DIR: writes the small image files the bake cases of the bad-input
-// catalogue start from (tests/bad_inputs/README.md); their .setup scripts then break copies.
+// catalogue start from (tests/data/bad_inputs/README.md); their .setup scripts then break copies.
 #include <cmath>
 #include <limits>
 #include <string>

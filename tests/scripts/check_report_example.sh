@@ -21,7 +21,7 @@ for file in figure2_edge_tint.svg beryllium.svg; do
     cp "$work/$file" "$committed/$file"
     echo "$file updated"
   else
-    echo "$committed/$file is stale: run tests/check_report_example.sh --update build/matc ."
+    echo "$committed/$file is stale: run tests/scripts/check_report_example.sh --update build/matc ."
     status=1
   fi
 done

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# One case of the bad-input catalogue (tests/bad_inputs/README.md): runs matc on it in a scratch
+# One case of the bad-input catalogue (tests/data/bad_inputs/README.md): runs matc on it in a scratch
 # directory and checks the exit status, that every expected line appears on standard error, and
 # that a failed run wrote nothing.
 #   check_bad_input.sh MATC CATALOGUE_DIR CASE

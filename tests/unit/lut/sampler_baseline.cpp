@@ -2,7 +2,7 @@
 // so that sampler_clones_test can compare the two builds bit for bit.
 #define MATC_NO_TARGET_CLONES
 #define matc matc_baseline
-#include "../compiler/src/lut/microfacet_samples.cpp"  // NOLINT(bugprone-suspicious-include)
+#include "lut/microfacet_samples.cpp"  // NOLINT(bugprone-suspicious-include)
 #undef matc
 
 #include "sampler_baseline.h"

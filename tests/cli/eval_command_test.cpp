@@ -1,0 +1,76 @@
+// The matc binary end to end, `matc eval`: decomposed and exact Fresnel, Fbar from the table, its
+// bad inputs.
+#include "matc_cli.h"
+
+namespace matc::cli_test {
+namespace {
+
+TEST_F(MatcCli, EvalPrintsDecomposedAndExactFresnel) {
+  const CommandResult result =
+      run({"eval", std::string(MATC_EXAMPLES_DIR) + "/chromium.json", "--mu", "0,0.25,0.5,1"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto json = nlohmann::json::parse(result.out);
+  EXPECT_EQ(json["name"], "chromium");
+  EXPECT_EQ(json["basis"], "powers");
+  ASSERT_EQ(json["mu"].size(), 4u);
+  ASSERT_EQ(json["F"].size(), 4u);
+  ASSERT_EQ(json["F_exact"].size(), 4u);
+  // F as the shaders compute it: the polynomial basis holds the ends to 1e-4, not exactly.
+  for (std::size_t c = 0; c < 3; ++c) {
+    EXPECT_NEAR(json["F"][0][c].get<double>(), 1.0, 1e-4);
+    EXPECT_NEAR(json["F"][3][c].get<double>(), json["F_exact"][3][c].get<double>(), 1e-5);
+    EXPECT_NEAR(json["F"][1][c].get<double>(), json["F_exact"][1][c].get<double>(), 0.02);
+  }
+}
+
+TEST_F(MatcCli, EvalRejectsCosinesOutsideTheUnitInterval) {
+  const CommandResult result =
+      run({"eval", std::string(MATC_EXAMPLES_DIR) + "/gold.json", "--mu", "0.5,1.5"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("--mu"), std::string::npos) << result.err;
+}
+
+TEST_F(MatcCli, EvalPrintsFbarFromTheTableBesideTheReference) {
+  const CommandResult result = run({"eval", std::string(MATC_EXAMPLES_DIR) + "/beryllium.json",
+                                    "--ndotv", "0.2,0.9", "--roughness", "0.3,0.7"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto json = nlohmann::json::parse(result.out);
+  EXPECT_FALSE(json.contains("F"));
+  ASSERT_EQ(json["Fbar"].size(), 2u);
+  ASSERT_EQ(json["Fbar_reference"].size(), 2u);
+  ASSERT_EQ(json["Fbar_analytic"].size(), 2u);
+  EXPECT_EQ(json["lut"]["size"], 128);
+  for (std::size_t i = 0; i < 2; ++i) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      EXPECT_NEAR(json["Fbar"][i][c].get<double>(), json["Fbar_reference"][i][c].get<double>(),
+                  0.02);
+      // The closed form follows the table it was fitted to (issue #20: within 0.005).
+      EXPECT_NEAR(json["Fbar_analytic"][i][c].get<double>(), json["Fbar"][i][c].get<double>(),
+                  0.005);
+      EXPECT_NE(json["Fbar_analytic"][i][c].get<double>(), json["Fbar"][i][c].get<double>());
+    }
+  }
+  const CommandResult mismatched = run({"eval", std::string(MATC_EXAMPLES_DIR) + "/gold.json",
+                                        "--ndotv", "0.2,0.9", "--roughness", "0.3"});
+  EXPECT_EQ(mismatched.exit_code, 2);
+  EXPECT_NE(mismatched.err.find("pair up"), std::string::npos) << mismatched.err;
+}
+
+// --no-reference drops only the split-sum integral: the table's Fbar is the same numbers.
+TEST_F(MatcCli, EvalWithoutTheReferenceKeepsTheTablesFbar) {
+  const std::string file = std::string(MATC_EXAMPLES_DIR) + "/beryllium.json";
+  const CommandResult with = run({"eval", file, "--ndotv", "0.2,0.9", "--roughness", "0.3,0.7"});
+  const CommandResult without =
+      run({"eval", file, "--ndotv", "0.2,0.9", "--roughness", "0.3,0.7", "--no-reference"});
+  ASSERT_EQ(without.exit_code, 0) << without.err;
+  const auto full = nlohmann::json::parse(with.out);
+  const auto fast = nlohmann::json::parse(without.out);
+  EXPECT_FALSE(fast.contains("Fbar_reference"));
+  EXPECT_EQ(fast["Fbar"], full["Fbar"]);
+  EXPECT_EQ(run({"eval", file, "--ndotv", "0.5", "--roughness", "0.5", "--no-reference",
+                 "--quad-light", "1,0,1;1,1,1;0,1,1;0,0,1"})
+                .exit_code,
+            2);
+}
+}  // namespace
+}  // namespace matc::cli_test
