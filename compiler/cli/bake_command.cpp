@@ -14,7 +14,6 @@
 #include "lut_options.h"
 #include "matc/material/parse.h"
 #include "matc/pipeline/bake_batch.h"
-#include "matc/pipeline/depfile.h"
 #include "named_option.h"
 #include "progress_line.h"
 
@@ -60,11 +59,15 @@ std::optional<BakeSource> command_line_asset(const BakeCommandOptions& options) 
   const bool ior = !options.n.empty() || !options.k.empty();
   if (!artistic && !ior) return std::nullopt;
   BakeAssetResult result;
+  // The asset as the batch takes it, with what was found wrong in the options so far.
+  const auto described = [&result] {
+    return BakeSource::in_memory(std::move(result), "the command line");
+  };
   const SourceLocation command_line{"matc bake", 0, 0};
   if (artistic && ior) {
     result.diagnostics.error(command_line, "", "--reflectivity/--edge-tint and --n/--k are given",
                              "one pair: --reflectivity and --edge-tint, or --n and --k");
-    return BakeSource::in_memory(std::move(result), "the command line");
+    return described();
   }
   BakeAsset asset;
   asset.model = artistic ? BakeModel::artistic : BakeModel::ior;
@@ -101,8 +104,7 @@ std::optional<BakeSource> command_line_asset(const BakeCommandOptions& options) 
     read("--n", options.n, MapQuantity::n, asset.first);
     read("--k", options.k, MapQuantity::k, asset.second);
   }
-  if (result.diagnostics.has_errors())
-    return BakeSource::in_memory(std::move(result), "the command line");
+  if (result.diagnostics.has_errors()) return described();
   asset.name = options.name;
   if (asset.name.empty()) {
     const MapInput& named = asset.first.is_file() ? asset.first : asset.second;
@@ -117,11 +119,10 @@ std::optional<BakeSource> command_line_asset(const BakeCommandOptions& options) 
         fmt::format("{}{}", *problem, options.name.empty() ? " (from the map's file name)" : ""),
         rule);
   }
-  if (result.diagnostics.has_errors())
-    return BakeSource::in_memory(std::move(result), "the command line");
+  if (result.diagnostics.has_errors()) return described();
   asset.name_location = command_line;
   result.asset = std::move(asset);
-  return BakeSource::in_memory(std::move(result), "the command line");
+  return described();
 }
 
 int run_bake(const BakeCommandOptions& options) {
@@ -149,8 +150,7 @@ int run_bake(const BakeCommandOptions& options) {
   batch.keep_going = options.keep_going;
   batch.depfile =
       depfile_path(options.depfile, options.write_depfile, output_directory, kBakeDepfileName);
-  if (const fs::path self = matc_executable(); !self.empty())
-    batch.extra_dependencies.push_back(self);
+  batch.extra_dependencies = matc_binary_dependency();
 
   DirectoryOutput output(output_directory);
   ProgressLine progress(!options.quiet && stderr_is_terminal());

@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
+#include "matc/pipeline/depfile.h"
 #include "print_diagnostics.h"
 
 namespace matc::cli {
@@ -46,6 +47,12 @@ void add_depfile_options(CLI::App& command, std::string& depfile, bool& write_de
                          ") to FILE in the Makefile syntax Ninja and CMake read");
   command.add_flag("--MD", write_depfile,
                    "The same, as DIR/" + default_name + " (also spelled -MD)");
+}
+
+std::vector<fs::path> matc_binary_dependency() {
+  const fs::path self = matc_executable();
+  if (self.empty()) return {};
+  return {self};
 }
 
 fs::path depfile_path(const std::string& depfile_option, bool write_depfile,

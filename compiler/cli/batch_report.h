@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -31,6 +32,10 @@ void add_keep_going_and_quiet(CLI::App& command, bool& keep_going, bool& quiet,
 // --depfile FILE and --MD (DIR/`default_name`); `dependencies` says what the file lists.
 void add_depfile_options(CLI::App& command, std::string& depfile, bool& write_depfile,
                          const std::string& dependencies, const std::string& default_name);
+
+// What a depfile lists after a batch's own inputs: the matc binary (its templates, presets and
+// version are part of every output), when it can be found.
+std::vector<std::filesystem::path> matc_binary_dependency();
 
 // --depfile FILE, or -MD's DIR/`default_name`, or none (empty).
 std::filesystem::path depfile_path(const std::string& depfile_option, bool write_depfile,

@@ -2,14 +2,12 @@
 
 #include <string>
 
-#include <fmt/format.h>
-
 #include "named_option.h"
 
 namespace matc::cli {
 
 void add_color_options(CLI::App& app, ColorOptions& options) {
-  const std::string names = fmt::format("{}", fmt::join(option_name_list<ColorSpace>(), ", "));
+  const std::string names = color_space_names();
   app.add_option_function<std::string>(
          "--color-space",
          [&options](const std::string& name) {

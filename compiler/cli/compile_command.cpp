@@ -16,7 +16,6 @@
 #include "lut_options.h"
 #include "matc/emit/build.h"
 #include "matc/pipeline/compile_batch.h"
-#include "matc/pipeline/depfile.h"
 #include "named_option.h"
 #include "progress_line.h"
 
@@ -82,8 +81,7 @@ int run_compile(const CompileOptions& options) {
   const fs::path output_directory(options.output_directory);
   batch.depfile =
       depfile_path(options.depfile, options.write_depfile, output_directory, kDepfileName);
-  if (const fs::path self = matc_executable(); !self.empty())
-    batch.extra_dependencies.push_back(self);
+  batch.extra_dependencies = matc_binary_dependency();
 
   std::vector<MaterialSource> sources;
   sources.reserve(options.files.size());

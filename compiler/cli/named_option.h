@@ -3,6 +3,7 @@
 // on, so no command looks a name up again.
 #pragma once
 
+#include <algorithm>
 #include <span>
 #include <string>
 #include <vector>

@@ -19,6 +19,8 @@ constexpr std::array<FormatInfo, 4> kFormats = {{
     {LutFormat::header, "header", ".h"},
 }};
 
+static_assert(kFormats.size() == kLutFormats.size(), "every format has its name and extension");
+
 const FormatInfo& info(LutFormat format) {
   return *std::find_if(kFormats.begin(), kFormats.end(),
                        [&](const FormatInfo& f) { return f.format == format; });

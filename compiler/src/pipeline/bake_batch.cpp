@@ -6,8 +6,8 @@
 
 #include <fmt/core.h>
 
+#include "batch_reporter.h"
 #include "matc/bake/bake_inputs.h"
-#include "matc/pipeline/depfile.h"
 #include "matc/pipeline/inputs_in_output_directory.h"
 #include "matc/pipeline/unique_names.h"
 
@@ -92,15 +92,13 @@ BakeBatchResult bake_batch(std::span<const BakeSource> sources, OutputSink& outp
   const fs::path* directory = output.directory();
   if (!options.depfile.empty() && !directory)
     throw std::invalid_argument("bake_batch: a depfile needs an output directory");
-  const fs::path output_name = directory ? *directory : fs::path("output");
+  const fs::path output_label = output_name(output);
   std::vector<Asset> assets = read_assets(sources);
   check_outputs(assets, directory);
   const bool inputs_valid = std::all_of(assets.begin(), assets.end(), [](const Asset& entry) {
     return !entry.diagnostics.has_errors();
   });
-  const auto report = [&](const Diagnostics& diagnostics) {
-    if (events.diagnostics && !diagnostics.items().empty()) events.diagnostics(diagnostics);
-  };
+  BatchReporter reporter(events);
 
   BakeBatchResult result;
   BatchCounts& counts = result.counts;
@@ -110,7 +108,7 @@ BakeBatchResult bake_batch(std::span<const BakeSource> sources, OutputSink& outp
   for (Asset& entry : assets) {
     if (entry.diagnostics.has_errors()) {
       ++counts.failed;
-      report(entry.diagnostics);
+      reporter.diagnostics(entry.diagnostics);
       continue;
     }
     if (stop || options.cancel.stop_requested()) {
@@ -142,7 +140,7 @@ BakeBatchResult bake_batch(std::span<const BakeSource> sources, OutputSink& outp
           } catch (...) {
             if (!failure) failure = std::current_exception();
           }
-          targets.push_back(output_name / files[i].name);
+          targets.push_back(output_label / files[i].name);
         }
         if (failure) std::rethrow_exception(failure);
         if (!asset.source_path.empty()) dependencies.push_back(asset.source_path);
@@ -153,8 +151,8 @@ BakeBatchResult bake_batch(std::span<const BakeSource> sources, OutputSink& outp
       entry.diagnostics.error(asset.name_location, "", error.what(),
                               "a writable output directory (-o)");
     }
-    if (events.progress) events.progress({++finished, assets.size(), asset.name});
-    report(entry.diagnostics);
+    reporter.progress({++finished, assets.size(), asset.name});
+    reporter.diagnostics(entry.diagnostics);
     if (entry.diagnostics.has_errors()) {
       ++counts.failed;
       stop = !options.keep_going;
@@ -163,16 +161,10 @@ BakeBatchResult bake_batch(std::span<const BakeSource> sources, OutputSink& outp
     }
   }
   result.cancelled = options.cancel.stop_requested();
-  if (!options.depfile.empty() && counts.failed == 0 && !result.cancelled) {
-    dependencies.insert(dependencies.end(), options.extra_dependencies.begin(),
-                        options.extra_dependencies.end());
-    try {
-      write_depfile(options.depfile, targets, dependencies);
-    } catch (const std::exception& error) {
-      if (events.error) events.error(options.depfile.string(), error.what());
-      ++counts.failed;
-    }
-  }
+  if (!options.depfile.empty() && counts.failed == 0 && !result.cancelled &&
+      !write_batch_depfile(options.depfile, targets, std::move(dependencies),
+                           options.extra_dependencies, reporter))
+    ++counts.failed;
   return result;
 }
 

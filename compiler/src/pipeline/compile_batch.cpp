@@ -11,12 +11,12 @@
 
 #include <fmt/format.h>
 
+#include "batch_reporter.h"
 #include "in_order.h"
 #include "matc/emit/manifest_writer.h"
 #include "matc/material/material_input.h"
 #include "matc/material/materialx_import.h"
 #include "matc/material/parse.h"
-#include "matc/pipeline/depfile.h"
 #include "matc/pipeline/inputs_in_output_directory.h"
 #include "matc/pipeline/unique_names.h"
 
@@ -127,31 +127,6 @@ std::vector<Job> parse_jobs(std::span<const MaterialSource> sources, const fs::p
   return jobs;
 }
 
-// The events of one batch, each called under one lock so that no two run at once.
-class Reporter {
- public:
-  explicit Reporter(const BatchEvents& events) : events_(events) {}
-  void diagnostics(const Diagnostics& diagnostics) {
-    if (!events_.diagnostics || diagnostics.items().empty()) return;
-    const std::lock_guard lock(mutex_);
-    events_.diagnostics(diagnostics);
-  }
-  void progress(const BatchProgress& progress) {
-    if (!events_.progress) return;
-    const std::lock_guard lock(mutex_);
-    events_.progress(progress);
-  }
-  void error(const std::string& where, const std::string& message) {
-    if (!events_.error) return;
-    const std::lock_guard lock(mutex_);
-    events_.error(where, message);
-  }
-
- private:
-  const BatchEvents& events_;
-  std::mutex mutex_;
-};
-
 void check_options(std::span<const MaterialSource> sources, const OutputSink& output,
                    const CompileBatchOptions& options) {
   if (options.shared_only && !sources.empty())
@@ -173,7 +148,7 @@ CompileBatchResult compile_batch(const Build& build, std::span<const MaterialSou
   const bool writes_manifest =
       !options.no_shared && !options.shared_only && build.options().emit.contains(OutputKind::json);
   const fs::path* directory = output.directory();
-  const fs::path output_name = directory ? *directory : fs::path("output");
+  const fs::path output_label = output_name(output);
   std::vector<Job> jobs = parse_jobs(sources, directory);
   const bool inputs_valid =
       std::all_of(jobs.begin(), jobs.end(), [](const Job& job) { return job.admitted; });
@@ -187,7 +162,7 @@ CompileBatchResult compile_batch(const Build& build, std::span<const MaterialSou
   for (std::size_t i = 0; i < jobs.size(); ++i)
     if (queued(jobs[i])) queue.push_back(i);
 
-  Reporter reporter(events);
+  BatchReporter reporter(events);
   std::mutex check_mutex;  // checks one at a time, and never while diagnostics are reported
   CompileBatchResult result;
   BatchCounts& summary = result.counts;
@@ -295,7 +270,7 @@ CompileBatchResult compile_batch(const Build& build, std::span<const MaterialSou
   result.cancelled = options.cancel.stop_requested();
   if (result.cancelled) return result;
   if (manifest_error) {
-    reporter.error(output_name.string(), *manifest_error);
+    reporter.error(output_label.string(), *manifest_error);
     ++summary.failed;
   }
 
@@ -306,32 +281,27 @@ CompileBatchResult compile_batch(const Build& build, std::span<const MaterialSou
       if (!options.no_shared) shared = build.shared_outputs();
       for (const OutputFile& file : shared) {
         summary.count(output.write(file.name, file.bytes));
-        targets.push_back(output_name / file.name);
+        targets.push_back(output_label / file.name);
       }
       if (writes_manifest && !manifest_error) {
         summary.count(output.write(std::string(manifest_file_name()),
                                    [&](std::ostream& out) { manifest.write(out, build, shared); }));
-        targets.push_back(output_name / std::string(manifest_file_name()));
+        targets.push_back(output_label / std::string(manifest_file_name()));
       }
       if (!options.depfile.empty() && summary.failed == 0) {
         std::vector<fs::path> dependencies;
         for (const Job& job : jobs) {
           for (const std::string& file : job.written_files)
-            targets.push_back(output_name / file);
+            targets.push_back(output_label / file);
           if (!sources[job.input].text) dependencies.push_back(sources[job.input].path);
           if (!job.spectral_file.empty()) dependencies.push_back(job.spectral_file);
         }
-        dependencies.insert(dependencies.end(), options.extra_dependencies.begin(),
-                            options.extra_dependencies.end());
-        try {
-          write_depfile(options.depfile, targets, dependencies);
-        } catch (const std::exception& error) {
-          reporter.error(options.depfile.string(), error.what());
+        if (!write_batch_depfile(options.depfile, targets, std::move(dependencies),
+                                 options.extra_dependencies, reporter))
           ++summary.failed;
-        }
       }
     } catch (const std::exception& error) {
-      reporter.error(output_name.string(), error.what());
+      reporter.error(output_label.string(), error.what());
       ++summary.failed;
     }
   }

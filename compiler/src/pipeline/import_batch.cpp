@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "batch_reporter.h"
 #include "matc/material/materialx_import.h"
 #include "matc/pipeline/inputs_in_output_directory.h"
 #include "matc/pipeline/unique_names.h"
@@ -50,10 +51,10 @@ BatchCounts import_batch(std::span<const MaterialSource> documents, OutputSink& 
     imports.push_back(std::move(imported));
   }
   const bool stop = counts.failed > 0 && !options.keep_going;
-  const std::string where = directory ? directory->string() : std::string("output");
+  const std::string where = output_name(output).string();
+  BatchReporter reporter(events);
   for (const MaterialXImport& imported : imports) {
-    if (events.diagnostics && !imported.diagnostics.items().empty())
-      events.diagnostics(imported.diagnostics);
+    reporter.diagnostics(imported.diagnostics);
     if (imported.diagnostics.has_errors()) continue;
     if (stop) {
       counts.not_attempted += imported.materials.size();
@@ -65,7 +66,7 @@ BatchCounts import_batch(std::span<const MaterialSource> documents, OutputSink& 
         ++counts.done;
       }
     } catch (const std::exception& error) {
-      if (events.error) events.error(where, error.what());
+      reporter.error(where, error.what());
       ++counts.failed;
     }
   }
