@@ -1,0 +1,206 @@
+"""matc from Python: accurate, preintegrable Fresnel for real-time renderers.
+
+Materials are parsed and validated by libmatc (errors raise :class:`MaterialError` with the
+located diagnostics ``matc`` prints), compiled to the four-term decomposition
+``F(mu) = sum_i c_i b_i(mu)`` per RGB channel, evaluated over numpy arrays exactly as the CPU
+runtime and the generated shaders compute it, and written as ``matc`` writes them::
+
+    import matc
+    gold = matc.compile({"name": "gold",
+                         "artistic": {"reflectivity": [0.95, 0.64, 0.27],
+                                      "edge_tint": [1.0, 0.98, 0.62]}})
+    gold.coefficients           # (3, 4): rows R, G, B; columns c_0..c_3
+    gold.fresnel([1.0, 0.5])    # (2, 3)
+    matc.compile_batch(["materials/gold.json"], "out")   # what `matc -o out ...` writes
+
+docs/python.md describes every function.
+"""
+
+import json as _json
+import os as _os
+
+from . import _matc
+from ._defaults import default_build as _default_build
+from ._matc import (
+    BatchResult,
+    Build,
+    CoefficientTable,
+    CompiledMaterial,
+    Diagnostic,
+    Material,
+    PreintegratedTable,
+    __version__,
+    coefficient_table,
+    preintegrated_table,
+)
+from .errors import BatchError, MaterialError
+
+__all__ = [
+    "BatchError",
+    "BatchResult",
+    "Build",
+    "CoefficientTable",
+    "CompiledMaterial",
+    "Diagnostic",
+    "Material",
+    "MaterialError",
+    "PreintegratedTable",
+    "coefficient_table",
+    "compile",
+    "compile_batch",
+    "load",
+    "parse",
+    "parse_materialx",
+    "preintegrated_table",
+    "shader_sources",
+]
+
+
+def _json_value(value):
+    # numpy arrays and scalars in a material dict become JSON lists and numbers.
+    if hasattr(value, "tolist"):
+        return value.tolist()
+    raise TypeError(f"{type(value).__name__} is not a JSON value (a number, string, list or dict)")
+
+
+def _dict_text(material):
+    return _json.dumps(material, indent=2, default=_json_value)
+
+
+def _looks_like_json(text):
+    return text.lstrip().startswith("{")
+
+
+def parse(source, path=None):
+    """A :class:`Material` from a dict or the JSON text of a material file.
+
+    ``path`` names it in diagnostics (default ``<dict>`` or ``<string>``); relative spectral
+    files resolve against its folder. Raises :class:`MaterialError` for an invalid material.
+    """
+    if isinstance(source, Material):
+        return source
+    if isinstance(source, dict):
+        return _matc._parse_json(_dict_text(source), path or "<dict>")
+    if isinstance(source, bytes):
+        source = source.decode("utf-8")
+    if isinstance(source, str):
+        return _matc._parse_json(source, path or "<string>")
+    raise TypeError(
+        f"parse: a dict or JSON text, not {type(source).__name__} (files: matc.load)")
+
+
+def parse_materialx(text, path="<string>.mtlx"):
+    """The metals of a MaterialX document's text (Standard Surface or OpenPBR), as a list of
+    :class:`Material`; ``path`` names it in diagnostics. Raises :class:`MaterialError`."""
+    if isinstance(text, bytes):
+        text = text.decode("utf-8")
+    if not isinstance(text, str):
+        raise TypeError(f"parse_materialx: text, not {type(text).__name__}")
+    if not str(path).lower().endswith(".mtlx"):
+        path = f"{path}.mtlx"
+    return _matc._parse_input(text, str(path))
+
+
+def load(path):
+    """The materials a file holds, as a list of :class:`Material`: a material file (``.json``)
+    holds one, a MaterialX document (``.mtlx``) any number. Raises :class:`MaterialError`."""
+    return _matc._load(_os.fspath(path))
+
+
+def _one_material(source):
+    """A Material from anything compile() takes: a Material, a dict, JSON text, or the path of a
+    file that holds exactly one material."""
+    if isinstance(source, (Material, dict, bytes)):
+        return parse(source)
+    if isinstance(source, str) and _looks_like_json(source):
+        return parse(source)
+    if isinstance(source, (str, _os.PathLike)):
+        materials = load(source)
+        if len(materials) != 1:
+            names = ", ".join(m.name for m in materials)
+            raise ValueError(f"{_os.fspath(source)} holds {len(materials)} materials ({names}): "
+                             "pick one from matc.load()")
+        return materials[0]
+    raise TypeError(
+        "material: a matc.Material, a dict, JSON text or a file path, not "
+        f"{type(source).__name__}")
+
+
+def _build_compile(self, material):
+    """Compiles ``material`` (a :class:`Material`, dict, JSON text or file path) with this
+    build's basis and colour options: a :class:`CompiledMaterial`."""
+    return self._compile(_one_material(material))
+
+
+def _batch_source(source):
+    if isinstance(source, tuple) and len(source) == 2:
+        path, text = source
+        return (_os.fspath(path), text.decode("utf-8") if isinstance(text, bytes) else text)
+    if isinstance(source, dict):
+        return (f"{source.get('name', 'material')}.json", _dict_text(source))
+    if isinstance(source, Material):
+        path = source.path if source.path.lower().endswith(".json") else f"{source.name}.json"
+        return (path, source.json)
+    if isinstance(source, (str, _os.PathLike)):
+        return (_os.fspath(source), None)
+    raise TypeError(
+        "sources: paths, (path, text) pairs, dicts or matc.Material values, not "
+        f"{type(source).__name__}")
+
+
+def _build_compile_batch(self, sources, output=None, *, jobs=0, keep_going=False,
+                         no_shared=False, shared_only=False, depfile=None,
+                         extra_dependencies=None, progress=None):
+    """Compiles ``sources`` as ``matc -o output FILES...`` does, through the library's batch:
+    the same files, manifest and depfile (``extra_dependencies`` default to this module's own
+    file, as the CLI's name the matc program).
+
+    ``sources``: file paths (``.json``, ``.mtlx``), ``(path, text)`` pairs held in memory,
+    dicts or :class:`Material` values. ``output``: a directory, or None to keep the files in
+    memory (``result.files``). ``progress(done, total, name)`` is called after each material;
+    an exception it raises (or Ctrl-C) cancels the batch and is raised again. Raises
+    :class:`BatchError` (with ``.result``) when a material failed; returns a
+    :class:`BatchResult`. The GIL is released while materials compile.
+    """
+    if isinstance(sources, (str, bytes, dict, _os.PathLike)):
+        raise TypeError("sources: a list of sources, not one")
+    pairs = [_batch_source(s) for s in sources]
+    if extra_dependencies is None:
+        extra_dependencies = [_matc.__file__]
+    return _matc._compile_batch(
+        self, pairs, None if output is None else _os.fspath(output), jobs, keep_going, no_shared,
+        shared_only, None if depfile is None else _os.fspath(depfile),
+        [_os.fspath(d) for d in extra_dependencies], progress)
+
+
+Build.compile = _build_compile
+Build.compile_batch = _build_compile_batch
+
+
+def compile(material, **options):
+    """A :class:`CompiledMaterial` from a :class:`Material`, dict, JSON text or file path.
+
+    Options are :class:`Build`'s (``basis``, ``color_space``, ``gamut_mapping``; the table
+    options matter for shaders and files only). Raises :class:`MaterialError`.
+    """
+    return _default_build(**options).compile(material)
+
+
+def compile_batch(sources, output=None, *, jobs=0, keep_going=False, no_shared=False,
+                  shared_only=False, depfile=None, extra_dependencies=None, progress=None,
+                  **options):
+    """:meth:`Build.compile_batch` with a :class:`Build` of ``options``."""
+    return _default_build(**options).compile_batch(
+        sources, output, jobs=jobs, keep_going=keep_going, no_shared=no_shared,
+        shared_only=shared_only, depfile=depfile, extra_dependencies=extra_dependencies,
+        progress=progress)
+
+
+def shader_sources(material, languages=("glsl", "hlsl", "wgsl"), **options):
+    """The material's shader snippets by language (``{"glsl": "...", ...}``), as ``matc`` writes
+    ``<name>.glsl``, ``.hlsl`` and ``.wgsl``; options are :class:`Build`'s."""
+    build = _default_build(**options)
+    compiled = build.compile(material)
+    if isinstance(languages, str):
+        languages = (languages,)
+    return {language: build.shader(compiled, language) for language in languages}

@@ -1,0 +1,15 @@
+// The parts of the `matc` Python module: module.cpp calls one registration function per file.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+namespace matc::python {
+
+void register_errors(pybind11::module_& module);             // errors.cpp
+void register_materials(pybind11::module_& module);          // materials.cpp
+void register_compiled_material(pybind11::module_& module);  // compiled_material.cpp
+void register_tables(pybind11::module_& module);             // tables.cpp
+void register_build(pybind11::module_& module);              // build.cpp
+void register_batch(pybind11::module_& module);              // batch.cpp
+
+}  // namespace matc::python

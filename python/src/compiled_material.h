@@ -1,0 +1,28 @@
+// matc.CompiledMaterial: a material's coefficients with what they were fitted to, evaluated over
+// numpy arrays exactly as the CPU runtime (and so the shaders) computes them.
+#pragma once
+
+#include <memory>
+
+#include "matc/compile/compile.h"
+#include "matc/optics/reflectance_curve.h"
+#include "matc/runtime/basis.h"
+#include "materials.h"
+
+namespace matc::python {
+
+struct CompiledResult {
+  CompiledMaterial compiled;
+  runtime::BasisKind basis = runtime::kDefaultBasis;
+  LoadedMaterialPointer material;
+  std::shared_ptr<const ReflectanceCurve> exact;  // what the coefficients were fitted to
+  Diagnostics diagnostics;  // the input's warnings and notes, then the fit's (as the CLI's)
+};
+
+using CompiledPointer = std::shared_ptr<CompiledResult>;
+
+// compile_material with the GIL released, and the CLI's fit warnings and range notes.
+CompiledPointer compile_loaded(const LoadedMaterialPointer& material, runtime::BasisKind basis,
+                               const ColorOptions& color);
+
+}  // namespace matc::python

@@ -1,0 +1,101 @@
+// Vectorised evaluation over numpy arrays: the inputs are checked once, then every element is
+// computed in C++ with the GIL released (no Python call per sample). Results have the inputs'
+// shape plus one axis of `Width` values (RGB, or the four basis averages).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+namespace matc::python {
+
+// Any array-like of numbers as a C-ordered float64 array (copied only when it is not one).
+using DoubleArray =
+    pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast>;
+
+// ValueError naming `argument`, the first bad element and the range when a value is outside
+// [0, 1] or NaN.
+void check_unit_interval(std::string_view argument, const DoubleArray& values);
+
+// `a` and `b` broadcast against each other, as numpy would.
+std::pair<DoubleArray, DoubleArray> broadcast(const DoubleArray& a, const DoubleArray& b);
+
+std::vector<pybind11::ssize_t> shape_with_axis(const DoubleArray& values, std::size_t width);
+
+// out[..., :] = function(values[...]).
+template <std::size_t Width, typename Function>
+pybind11::array_t<double> map_values(const DoubleArray& values, const Function& function) {
+  pybind11::array_t<double> out(shape_with_axis(values, Width));
+  const double* in = values.data();
+  double* result = out.mutable_data();
+  const std::size_t count = static_cast<std::size_t>(values.size());
+  {
+    pybind11::gil_scoped_release release;
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::array<double, Width> value = function(in[i]);
+      for (std::size_t c = 0; c < Width; ++c)
+        result[i * Width + c] = value[c];
+    }
+  }
+  return out;
+}
+
+// out[..., :] = function(a[...], b[...]) over the broadcast pair.
+template <std::size_t Width, typename Function>
+pybind11::array_t<double> map_pairs(const DoubleArray& a, const DoubleArray& b,
+                                    const Function& function) {
+  const auto [first, second] = broadcast(a, b);
+  pybind11::array_t<double> out(shape_with_axis(first, Width));
+  const double* x = first.data();
+  const double* y = second.data();
+  double* result = out.mutable_data();
+  const std::size_t count = static_cast<std::size_t>(first.size());
+  {
+    pybind11::gil_scoped_release release;
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::array<double, Width> value = function(x[i], y[i]);
+      for (std::size_t c = 0; c < Width; ++c)
+        result[i * Width + c] = value[c];
+    }
+  }
+  return out;
+}
+
+// A read-only numpy view of `values` (shape `shape`) that keeps `owner` alive.
+template <typename Scalar, typename Owner>
+pybind11::array_t<Scalar> read_only_view(const Scalar* values, std::vector<pybind11::ssize_t> shape,
+                                         Owner owner) {
+  auto* kept = new Owner(std::move(owner));
+  pybind11::capsule capsule(kept, [](void* pointer) { delete static_cast<Owner*>(pointer); });
+  pybind11::array_t<Scalar> array(std::move(shape), values, capsule);
+  pybind11::detail::array_proxy(array.ptr())->flags &=
+      ~pybind11::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return array;
+}
+
+// A new float64 array (Rows, Columns) holding `rows`.
+template <std::size_t Rows, std::size_t Columns>
+pybind11::array_t<double> matrix_array(const std::array<std::array<double, Columns>, Rows>& rows) {
+  pybind11::array_t<double> array({Rows, Columns});
+  auto view = array.mutable_unchecked<2>();
+  for (std::size_t r = 0; r < Rows; ++r)
+    for (std::size_t c = 0; c < Columns; ++c)
+      view(r, c) = rows[r][c];
+  return array;
+}
+
+// A new float64 array (Size,) holding `values`.
+template <std::size_t Size>
+pybind11::array_t<double> vector_array(const std::array<double, Size>& values) {
+  pybind11::array_t<double> array(Size);
+  std::copy(values.begin(), values.end(), array.mutable_data());
+  return array;
+}
+
+}  // namespace matc::python

@@ -1,0 +1,22 @@
+#include "option_values.h"
+
+#include <array>
+
+namespace matc::python {
+
+ShaderLanguage shader_language_from_name(const std::string& name) {
+  constexpr std::array languages = {ShaderLanguage::glsl, ShaderLanguage::hlsl,
+                                    ShaderLanguage::wgsl};
+  for (const ShaderLanguage language : languages)
+    if (shader_language_name(language) == name) return language;
+  throw pybind11::value_error(fmt::format("language: '{}' is not one of glsl, hlsl, wgsl", name));
+}
+
+double checked_in_range(std::string_view argument, double value, double low, double high) {
+  if (!(value >= low && value <= high))
+    throw pybind11::value_error(
+        fmt::format("{}: {} is out of range; a number in [{}, {}]", argument, value, low, high));
+  return value;
+}
+
+}  // namespace matc::python
