@@ -17,6 +17,7 @@ docs/python.md describes every function.
 """
 
 import json as _json
+import math as _math
 import os as _os
 
 from . import _matc
@@ -31,6 +32,7 @@ from ._matc import (
     PreintegratedTable,
     __version__,
     coefficient_table,
+    fresnel_from_coefficients,
     preintegrated_table,
 )
 from .errors import BatchError, MaterialError
@@ -48,6 +50,7 @@ __all__ = [
     "coefficient_table",
     "compile",
     "compile_batch",
+    "fresnel_from_coefficients",
     "load",
     "parse",
     "parse_materialx",
@@ -63,7 +66,22 @@ def _json_value(value):
     raise TypeError(f"{type(value).__name__} is not a JSON value (a number, string, list or dict)")
 
 
+def _check_finite(value, field):
+    # JSON has no NaN or infinity: name the field here rather than leave a syntax error.
+    if hasattr(value, "tolist"):
+        value = value.tolist()
+    if isinstance(value, dict):
+        for key, member in value.items():
+            _check_finite(member, f"{field}.{key}" if field else str(key))
+    elif isinstance(value, (list, tuple)):
+        for index, member in enumerate(value):
+            _check_finite(member, f"{field}[{index}]")
+    elif isinstance(value, float) and not _math.isfinite(value):
+        raise ValueError(f"{field}: is {value}; a finite number (JSON has no NaN or infinity)")
+
+
 def _dict_text(material):
+    _check_finite(material, "")
     return _json.dumps(material, indent=2, default=_json_value)
 
 

@@ -9,8 +9,14 @@ _lock = threading.Lock()
 _builds = {}
 
 
+def _hashable(value):
+    if isinstance(value, (list, tuple, set)):
+        return tuple(value)
+    return value
+
+
 def default_build(**options):
-    key = tuple(sorted(options.items()))
+    key = tuple(sorted((name, _hashable(value)) for name, value in options.items()))
     with _lock:
         build = _builds.get(key)
         if build is None:

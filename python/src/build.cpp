@@ -6,6 +6,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <pybind11/stl.h>
@@ -25,12 +26,23 @@ namespace {
 
 using BuildPointer = std::shared_ptr<Build>;
 
+void checked_count(std::string_view argument, std::size_t value, std::size_t low,
+                   std::size_t high) {
+  if (value < low || value > high)
+    throw py::value_error(
+        fmt::format("{}: {} is out of range; an integer in [{}, {}]", argument, value, low, high));
+}
+
 BuildPointer make_build(const std::optional<std::vector<std::string>>& emit, std::size_t lut_size,
                         std::size_t lut_samples, const std::string& lut_format,
                         const std::string& lut_precision,
                         const std::string& coefficient_table_precision, std::size_t embed_lut,
                         const std::string& basis, const std::string& color_space,
                         const std::string& gamut_mapping) {
+  // The CLI's ranges for its --lut-size, --lut-samples and --embed-lut-size.
+  checked_count("lut_size", lut_size, kMinLutSize, kMaxLutSize);
+  checked_count("lut_samples", lut_samples, 1, kMaxLutSamples);
+  if (embed_lut != 0) checked_count("embed_lut", embed_lut, 2, kMaxEmbeddedLutSize);
   BuildOptions options;
   if (emit) {
     options.emit.clear();

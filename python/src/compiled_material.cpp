@@ -17,6 +17,7 @@
 #include "matc/runtime/lut.h"
 #include "matc/runtime/shader_basis.h"
 #include "numpy_arrays.h"
+#include "option_values.h"
 #include "tables.h"
 
 namespace py = pybind11;
@@ -132,9 +133,37 @@ py::array_t<double> fbar_reference(const CompiledResult& result, const DoubleArr
   });
 }
 
+// A (3, 4) array of c_0..c_3 per channel as runtime coefficients.
+runtime::Coefficients coefficients_of(const DoubleArray& values) {
+  if (values.ndim() != 2 || values.shape(0) != 3 || values.shape(1) != runtime::kBasisSize)
+    throw py::value_error("coefficients: an array of shape (3, 4): rows R, G, B; columns c_0..c_3");
+  runtime::Coefficients coefficients{};
+  const auto view = values.unchecked<2>();
+  for (py::ssize_t c = 0; c < 3; ++c)
+    for (py::ssize_t i = 0; i < static_cast<py::ssize_t>(runtime::kBasisSize); ++i)
+      coefficients[c][i] = view(c, i);
+  return coefficients;
+}
+
 }  // namespace
 
 void register_compiled_material(py::module_& module) {
+  module.def(
+      "fresnel_from_coefficients",
+      [](const DoubleArray& coefficients, const DoubleArray& mu, const std::string& basis) {
+        const runtime::Coefficients values = coefficients_of(coefficients);
+        check_unit_interval("mu", mu);
+        const runtime::ShaderBasis& shader_basis =
+            runtime::shipped_shader_basis(option_from_name<runtime::BasisKind>("basis", basis));
+        return map_values<3>(mu, [&](double cosine) {
+          return runtime::evaluate_fresnel(values, shader_basis, cosine);
+        });
+      },
+      py::arg("coefficients"), py::arg("mu"),
+      py::arg("basis") = std::string(runtime::basis_name(runtime::kDefaultBasis)),
+      "F(mu) for any (3, 4) coefficients (a coefficient table's, a texture's) as the shaders "
+      "compute it");
+
   py::class_<CompiledResult, CompiledPointer>(
       module, "CompiledMaterial",
       "A material's decomposition: coefficients c_0..c_3 per RGB channel against a basis, with "

@@ -6,6 +6,13 @@ namespace py = pybind11;
 
 namespace matc::python {
 
+py::str python_text(std::string_view text) {
+  PyObject* decoded =
+      PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "surrogateescape");
+  if (!decoded) throw py::error_already_set();
+  return py::reinterpret_steal<py::str>(decoded);
+}
+
 std::string formatted_lines(const Diagnostics& diagnostics) {
   std::string text;
   for (const Diagnostic& diagnostic : diagnostics.items()) {
@@ -24,7 +31,8 @@ py::list diagnostic_list(const Diagnostics& diagnostics) {
 
 void raise_batch_error(const Diagnostics& diagnostics, py::object result) {
   const py::object type = py::module_::import("matc.errors").attr("BatchError");
-  const py::object error = type(formatted_lines(diagnostics), diagnostic_list(diagnostics), result);
+  const py::object error =
+      type(python_text(formatted_lines(diagnostics)), diagnostic_list(diagnostics), result);
   PyErr_SetObject(type.ptr(), error.ptr());
   throw py::error_already_set();
 }
@@ -35,7 +43,7 @@ void register_errors(py::module_& module) {
                          "allowed (line 0: the whole file).")
       .def_property_readonly(
           "severity", [](const Diagnostic& d) { return std::string(severity_name(d.severity)); })
-      .def_property_readonly("path", [](const Diagnostic& d) { return d.location.path; })
+      .def_property_readonly("path", [](const Diagnostic& d) { return python_text(d.location.path); })
       .def_property_readonly("line", [](const Diagnostic& d) { return d.location.line; })
       .def_property_readonly("column", [](const Diagnostic& d) { return d.location.column; })
       .def_readonly("field", &Diagnostic::field,
@@ -51,7 +59,8 @@ void register_errors(py::module_& module) {
       if (thrown) std::rethrow_exception(thrown);
     } catch (const MaterialErrorThrown& error) {
       const py::object type = py::module_::import("matc.errors").attr("MaterialError");
-      const py::object instance = type(error.what(), diagnostic_list(error.diagnostics()));
+      const py::object instance =
+          type(python_text(error.what()), diagnostic_list(error.diagnostics()));
       PyErr_SetObject(type.ptr(), instance.ptr());
     }
   });

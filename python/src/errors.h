@@ -4,12 +4,18 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include <pybind11/pybind11.h>
 
 #include "matc/base/diagnostics.h"
 
 namespace matc::python {
+
+// Text from matc as a Python str. Diagnostics quote input bytes, which need not be UTF-8: bytes
+// that are not decode as surrogate escapes (as os.fsdecode does), so no message is lost and
+// printing it gives back what the CLI prints.
+pybind11::str python_text(std::string_view text);
 
 // The diagnostics' lines as the CLI prints them, one per line.
 std::string formatted_lines(const Diagnostics& diagnostics);
