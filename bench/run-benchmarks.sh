@@ -37,6 +37,11 @@ cmake --build "$build" --target matc_fullscreen_cost >/dev/null
 "$root/bench/per-material.sh" "$build" >"$report.md"
 "$root/tests/scripts/check_docs_block.sh" --update "$root/docs/performance.md" per-material cat "$report.md"
 
+# The Python module: F on a million cosines against the C++ runtime and plain numpy, and one
+# batch call over 1,000 materials against the CLI.
+"$root/bench/python-bench.sh" "$build" 1000 >"$report.md"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/performance.md" python cat "$report.md"
+
 # Batch throughput and memory: 1,000 materials at -j 1 and -j 2 against a glslangValidator loop.
 "$root/bench/batch-throughput.sh" "$build" 1000 >"$report.md"
 "$root/tests/scripts/check_docs_block.sh" --update "$root/docs/performance.md" batch-throughput cat "$report.md"

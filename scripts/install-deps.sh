@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package matc needs to build, test and benchmark (chromium: the report
-# test opens `matc report` in it, headless), and the npm validators the tests use (tests/js,
+# test opens `matc report` in it, headless; pybind11, numpy, pytest and matplotlib: the Python
+# module, its tests and examples), and the npm validators the tests use (tests/js,
 # pinned by its package-lock.json).
 # Idempotent; safe to run as root on a fresh machine. Waits for the dpkg lock
 # instead of failing when another apt process is running.
@@ -16,6 +17,7 @@ packages=(
   chromium fonts-dejavu-core
   bazel-bootstrap nginx
   googletest libgtest-dev libgmock-dev libbenchmark-dev
+  python3 python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
 )
 
 if [ "$(id -u)" -ne 0 ]; then

@@ -79,8 +79,9 @@ py::array_t<double> fresnel(const CompiledResult& result, const DoubleArray& mu)
   check_unit_interval("mu", mu);
   const runtime::ShaderBasis& basis = runtime::shipped_shader_basis(result.basis);
   const runtime::Coefficients& coefficients = result.compiled.coefficients;
-  return map_values<3>(
-      mu, [&](double cosine) { return runtime::evaluate_fresnel(coefficients, basis, cosine); });
+  return map_value_chunks<3>(mu, [&](const double* cosines, std::size_t count, double* rgb) {
+    runtime::evaluate_fresnel(coefficients, basis, {cosines, count}, {rgb, 3 * count});
+  });
 }
 
 py::array_t<double> exact(const CompiledResult& result, const DoubleArray& mu) {
@@ -128,9 +129,11 @@ py::array_t<double> fbar_reference(const CompiledResult& result, const DoubleArr
     py::gil_scoped_release release;
     tabulated.emplace(*result.exact);
   }
-  return map_pairs<3>(ndotv, roughness, [&](double n, double r) {
-    return SplitSumEstimator(n, r, samples).integrate(*tabulated);
-  });
+  // Each point is a Monte-Carlo integral: worth a thread from two points on.
+  return map_pairs<3>(
+      ndotv, roughness,
+      [&](double n, double r) { return SplitSumEstimator(n, r, samples).integrate(*tabulated); },
+      1);
 }
 
 // A (3, 4) array of c_0..c_3 per channel as runtime coefficients.
@@ -155,8 +158,8 @@ void register_compiled_material(py::module_& module) {
         check_unit_interval("mu", mu);
         const runtime::ShaderBasis& shader_basis =
             runtime::shipped_shader_basis(option_from_name<runtime::BasisKind>("basis", basis));
-        return map_values<3>(mu, [&](double cosine) {
-          return runtime::evaluate_fresnel(values, shader_basis, cosine);
+        return map_value_chunks<3>(mu, [&](const double* cosines, std::size_t count, double* rgb) {
+          runtime::evaluate_fresnel(values, shader_basis, {cosines, count}, {rgb, 3 * count});
         });
       },
       py::arg("coefficients"), py::arg("mu"),

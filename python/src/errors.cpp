@@ -43,7 +43,8 @@ void register_errors(py::module_& module) {
                          "allowed (line 0: the whole file).")
       .def_property_readonly(
           "severity", [](const Diagnostic& d) { return std::string(severity_name(d.severity)); })
-      .def_property_readonly("path", [](const Diagnostic& d) { return python_text(d.location.path); })
+      .def_property_readonly("path",
+                             [](const Diagnostic& d) { return python_text(d.location.path); })
       .def_property_readonly("line", [](const Diagnostic& d) { return d.location.line; })
       .def_property_readonly("column", [](const Diagnostic& d) { return d.location.column; })
       .def_readonly("field", &Diagnostic::field,

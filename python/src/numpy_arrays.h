@@ -1,12 +1,15 @@
 // Vectorised evaluation over numpy arrays: the inputs are checked once, then every element is
-// computed in C++ with the GIL released (no Python call per sample). Results have the inputs'
-// shape plus one axis of `Width` values (RGB, or the four basis averages).
+// computed in C++ with the GIL released (no Python call per sample), large arrays split over the
+// hardware threads (each element is computed alone, so the values do not depend on how many).
+// Results have the inputs' shape plus one axis of `Width` values (RGB, or the four basis
+// averages).
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <string_view>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -28,20 +31,60 @@ std::pair<DoubleArray, DoubleArray> broadcast(const DoubleArray& a, const Double
 
 std::vector<pybind11::ssize_t> shape_with_axis(const DoubleArray& values, std::size_t width);
 
+// Elements per thread below which a cheap evaluation stays on one thread (starting a thread
+// costs about as much as evaluating F this many times).
+inline constexpr std::size_t kElementsPerThread = std::size_t{1} << 15;
+
+// body(begin, end) over [0, count) in contiguous chunks of at least `per_thread` elements, one
+// chunk per hardware thread at most.
+template <typename Body>
+void for_each_chunk(std::size_t count, std::size_t per_thread, const Body& body) {
+  const std::size_t hardware = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t threads = std::min(hardware, count / std::max<std::size_t>(per_thread, 1));
+  if (threads <= 1) {
+    body(std::size_t{0}, count);
+    return;
+  }
+  const std::size_t chunk = (count + threads - 1) / threads;
+  std::vector<std::jthread> pool;
+  for (std::size_t t = 1; t < threads; ++t)
+    pool.emplace_back([&, t] { body(t * chunk, std::min(count, (t + 1) * chunk)); });
+  body(std::size_t{0}, std::min(count, chunk));
+}
+
 // out[..., :] = function(values[...]).
 template <std::size_t Width, typename Function>
-pybind11::array_t<double> map_values(const DoubleArray& values, const Function& function) {
+pybind11::array_t<double> map_values(const DoubleArray& values, const Function& function,
+                                     std::size_t per_thread = kElementsPerThread) {
   pybind11::array_t<double> out(shape_with_axis(values, Width));
   const double* in = values.data();
   double* result = out.mutable_data();
   const std::size_t count = static_cast<std::size_t>(values.size());
   {
     pybind11::gil_scoped_release release;
-    for (std::size_t i = 0; i < count; ++i) {
-      const std::array<double, Width> value = function(in[i]);
-      for (std::size_t c = 0; c < Width; ++c)
-        result[i * Width + c] = value[c];
-    }
+    for_each_chunk(count, per_thread, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::array<double, Width> value = function(in[i]);
+        for (std::size_t c = 0; c < Width; ++c)
+          result[i * Width + c] = value[c];
+      }
+    });
+  }
+  return out;
+}
+
+// out[..., :] from whole chunks: chunk(values, count, out) fills `count` rows of Width values.
+template <std::size_t Width, typename Chunk>
+pybind11::array_t<double> map_value_chunks(const DoubleArray& values, const Chunk& chunk) {
+  pybind11::array_t<double> out(shape_with_axis(values, Width));
+  const double* in = values.data();
+  double* result = out.mutable_data();
+  const std::size_t count = static_cast<std::size_t>(values.size());
+  {
+    pybind11::gil_scoped_release release;
+    for_each_chunk(count, kElementsPerThread, [&](std::size_t begin, std::size_t end) {
+      chunk(in + begin, end - begin, result + begin * Width);
+    });
   }
   return out;
 }
@@ -49,7 +92,8 @@ pybind11::array_t<double> map_values(const DoubleArray& values, const Function& 
 // out[..., :] = function(a[...], b[...]) over the broadcast pair.
 template <std::size_t Width, typename Function>
 pybind11::array_t<double> map_pairs(const DoubleArray& a, const DoubleArray& b,
-                                    const Function& function) {
+                                    const Function& function,
+                                    std::size_t per_thread = kElementsPerThread) {
   const auto [first, second] = broadcast(a, b);
   pybind11::array_t<double> out(shape_with_axis(first, Width));
   const double* x = first.data();
@@ -58,11 +102,13 @@ pybind11::array_t<double> map_pairs(const DoubleArray& a, const DoubleArray& b,
   const std::size_t count = static_cast<std::size_t>(first.size());
   {
     pybind11::gil_scoped_release release;
-    for (std::size_t i = 0; i < count; ++i) {
-      const std::array<double, Width> value = function(x[i], y[i]);
-      for (std::size_t c = 0; c < Width; ++c)
-        result[i * Width + c] = value[c];
-    }
+    for_each_chunk(count, per_thread, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::array<double, Width> value = function(x[i], y[i]);
+        for (std::size_t c = 0; c < Width; ++c)
+          result[i * Width + c] = value[c];
+      }
+    });
   }
   return out;
 }

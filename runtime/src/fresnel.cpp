@@ -1,19 +1,10 @@
 #include "matc/runtime/fresnel.h"
 
-#include <algorithm>
+#include <cassert>
+
+#include "matc/runtime/powers_basis.h"
 
 namespace matc::runtime {
-
-Rgb combine(const Coefficients& coefficients, const std::array<double, kBasisSize>& values) {
-  Rgb result{};
-  for (std::size_t channel = 0; channel < 3; ++channel) {
-    double sum = 0.0;
-    for (std::size_t i = 0; i < kBasisSize; ++i)
-      sum += coefficients[channel][i] * values[i];
-    result[channel] = std::max(0.0, sum);
-  }
-  return result;
-}
 
 Rgb evaluate_fresnel(const Coefficients& coefficients, const BasisView& basis, double mu) {
   return combine(coefficients, basis.evaluate(mu));
@@ -21,6 +12,33 @@ Rgb evaluate_fresnel(const Coefficients& coefficients, const BasisView& basis, d
 
 Rgb evaluate_fresnel(const Coefficients& coefficients, const ShaderBasis& basis, double mu) {
   return combine(coefficients, evaluate_shader_basis(basis, mu));
+}
+
+namespace {
+
+template <typename EvaluateBasis>
+void evaluate_each(const Coefficients& coefficients, std::span<const double> mu,
+                   std::span<double> rgb, const EvaluateBasis& evaluate_basis) {
+  for (std::size_t i = 0; i < mu.size(); ++i) {
+    const Rgb value = combine(coefficients, evaluate_basis(mu[i]));
+    for (std::size_t c = 0; c < 3; ++c)
+      rgb[3 * i + c] = value[c];
+  }
+}
+
+}  // namespace
+
+void evaluate_fresnel(const Coefficients& coefficients, const ShaderBasis& basis,
+                      std::span<const double> mu, std::span<double> rgb) {
+  assert(rgb.size() == 3 * mu.size());
+  if (basis.form == ShaderBasisForm::powers) {
+    evaluate_each(coefficients, mu, rgb,
+                  [](double cosine) { return evaluate_powers_basis(cosine); });
+  } else {
+    evaluate_each(coefficients, mu, rgb, [&](double cosine) {
+      return evaluate_basis_polynomial(basis.polynomial, cosine);
+    });
+  }
 }
 
 }  // namespace matc::runtime

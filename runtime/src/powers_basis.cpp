@@ -5,15 +5,6 @@
 
 namespace matc::runtime {
 
-std::array<double, kBasisSize> evaluate_powers_basis(double mu) {
-  const double x = std::clamp(mu, 0.0, 1.0);
-  const double m = 1.0 - x;
-  const double m3 = m * m * m;
-  const double b1 = m3 * m3;
-  const double b2 = x * m3;
-  return {1.0, b1, b2, b2 * b1};
-}
-
 BasisView powers_basis() {
   // The same grid as the fitted bases' checked-in tables.
   constexpr std::size_t kSamples = 1000;

@@ -9,6 +9,14 @@ source=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
+# The installed Python module imports from the prefix alone (no build tree on its path).
+python_dir=$(sed -n 's/^MATC_PYTHON_INSTALL_DIR:STRING=//p' "$build/CMakeCache.txt")
+if [ -n "$python_dir" ]; then
+  python=$(sed -n 's/^MATC_PYTHON_EXECUTABLE:INTERNAL=//p' "$build/CMakeCache.txt")
+  (cd "$work" && PYTHONPATH="$work/prefix/$python_dir" "$python" -c \
+    "import matc, sys; assert matc.__file__.startswith(sys.argv[1]), matc.__file__; print(matc.compile({'name': 'gold', 'ior': {'n': 0.2, 'k': 3.4}}).coefficients.shape)" \
+    "$work/prefix") | grep -q "(3, 4)" || { echo "the installed Python module does not import"; exit 1; }
+fi
 mkdir -p "$work/engine-src"
 cp -r "$source/examples/engine/." "$work/engine-src/"
 mkdir -p "$work/materials" "$work/textured"  # the example names ../materials, ../textured

@@ -7,6 +7,7 @@
 // would cost the shader two multiplies.
 #pragma once
 
+#include <algorithm>
 #include <array>
 
 #include "matc/runtime/basis.h"
@@ -17,8 +18,16 @@ namespace matc::runtime {
 inline constexpr double kPowersB2Peak = 27.0 / 256.0;
 inline constexpr double kPowersB3Peak = 387420489.0 / 1e10;
 
-// b_0..b_3 at mu (clamped to [0, 1]), in the order of the shaders' operations.
-std::array<double, kBasisSize> evaluate_powers_basis(double mu);
+// b_0..b_3 at mu (clamped to [0, 1]), in the order of the shaders' operations. Inline, so that
+// loops over many cosines keep it in registers.
+inline std::array<double, kBasisSize> evaluate_powers_basis(double mu) {
+  const double x = std::clamp(mu, 0.0, 1.0);
+  const double m = 1.0 - x;
+  const double m3 = m * m * m;
+  const double b1 = m3 * m3;
+  const double b2 = x * m3;
+  return {1.0, b1, b2, b2 * b1};
+}
 
 // The basis tabulated at the grid of BasisView (for the table bake and the coefficient solve's
 // collocation), computed from the closed form on first use.
