@@ -37,7 +37,7 @@ Rgb evaluate_fresnel(const Coefficients& coefficients, const BasisView& basis, d
 // ... and with the shaders' polynomial basis: what the generated shaders compute.
 Rgb evaluate_fresnel(const Coefficients& coefficients, const ShaderBasis& basis, double mu);
 // The same at every cosine of `mu`, into `rgb` (R, G, B per cosine: 3 * mu.size() values), the
-// same values in one loop: about twice as fast on many cosines (bench/fresnel_eval_benchmark.cpp).
+// same values in one loop, faster than a call per cosine (bench/fresnel_eval_benchmark.cpp).
 void evaluate_fresnel(const Coefficients& coefficients, const ShaderBasis& basis,
                       std::span<const double> mu, std::span<double> rgb);
 
