@@ -26,13 +26,6 @@ namespace {
 
 using BuildPointer = std::shared_ptr<Build>;
 
-void checked_count(std::string_view argument, std::size_t value, std::size_t low,
-                   std::size_t high) {
-  if (value < low || value > high)
-    throw py::value_error(
-        fmt::format("{}: {} is out of range; an integer in [{}, {}]", argument, value, low, high));
-}
-
 BuildPointer make_build(const std::optional<std::vector<std::string>>& emit, std::size_t lut_size,
                         std::size_t lut_samples, const std::string& lut_format,
                         const std::string& lut_precision,

@@ -121,9 +121,7 @@ py::array_t<double> fbar_reference(const CompiledResult& result, const DoubleArr
                                    const DoubleArray& roughness, std::size_t samples) {
   check_unit_interval("ndotv", ndotv);
   check_unit_interval("roughness", roughness);
-  if (samples < 16 || samples > (std::size_t{1} << 26))
-    throw py::value_error(fmt::format("samples: {} is out of range; an integer in [16, {}]",
-                                      samples, std::size_t{1} << 26));
+  checked_count("samples", samples, 16, std::size_t{1} << 26);
   std::optional<TabulatedCurve> tabulated;
   {
     py::gil_scoped_release release;

@@ -52,41 +52,47 @@ void for_each_chunk(std::size_t count, std::size_t per_thread, const Body& body)
   body(std::size_t{0}, std::min(count, chunk));
 }
 
+// A new array of shape `like`'s + (Width,), filled by fill_rows(begin, end, out) over element
+// ranges of at least `per_thread` on each thread, with the GIL released.
+template <std::size_t Width, typename FillRows>
+pybind11::array_t<double> filled_array(const DoubleArray& like, std::size_t per_thread,
+                                       const FillRows& fill_rows) {
+  pybind11::array_t<double> out(shape_with_axis(like, Width));
+  double* result = out.mutable_data();
+  const std::size_t count = static_cast<std::size_t>(like.size());
+  {
+    pybind11::gil_scoped_release release;
+    for_each_chunk(count, per_thread,
+                   [&](std::size_t begin, std::size_t end) { fill_rows(begin, end, result); });
+  }
+  return out;
+}
+
+template <std::size_t Width>
+void store_row(const std::array<double, Width>& value, double* row) {
+  std::copy(value.begin(), value.end(), row);
+}
+
 // out[..., :] = function(values[...]).
 template <std::size_t Width, typename Function>
 pybind11::array_t<double> map_values(const DoubleArray& values, const Function& function,
                                      std::size_t per_thread = kElementsPerThread) {
-  pybind11::array_t<double> out(shape_with_axis(values, Width));
   const double* in = values.data();
-  double* result = out.mutable_data();
-  const std::size_t count = static_cast<std::size_t>(values.size());
-  {
-    pybind11::gil_scoped_release release;
-    for_each_chunk(count, per_thread, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) {
-        const std::array<double, Width> value = function(in[i]);
-        for (std::size_t c = 0; c < Width; ++c)
-          result[i * Width + c] = value[c];
-      }
-    });
-  }
-  return out;
+  return filled_array<Width>(values, per_thread,
+                             [&](std::size_t begin, std::size_t end, double* result) {
+                               for (std::size_t i = begin; i < end; ++i)
+                                 store_row(function(in[i]), result + i * Width);
+                             });
 }
 
 // out[..., :] from whole chunks: chunk(values, count, out) fills `count` rows of Width values.
 template <std::size_t Width, typename Chunk>
 pybind11::array_t<double> map_value_chunks(const DoubleArray& values, const Chunk& chunk) {
-  pybind11::array_t<double> out(shape_with_axis(values, Width));
   const double* in = values.data();
-  double* result = out.mutable_data();
-  const std::size_t count = static_cast<std::size_t>(values.size());
-  {
-    pybind11::gil_scoped_release release;
-    for_each_chunk(count, kElementsPerThread, [&](std::size_t begin, std::size_t end) {
-      chunk(in + begin, end - begin, result + begin * Width);
-    });
-  }
-  return out;
+  return filled_array<Width>(values, kElementsPerThread,
+                             [&](std::size_t begin, std::size_t end, double* result) {
+                               chunk(in + begin, end - begin, result + begin * Width);
+                             });
 }
 
 // out[..., :] = function(a[...], b[...]) over the broadcast pair.
@@ -95,22 +101,13 @@ pybind11::array_t<double> map_pairs(const DoubleArray& a, const DoubleArray& b,
                                     const Function& function,
                                     std::size_t per_thread = kElementsPerThread) {
   const auto [first, second] = broadcast(a, b);
-  pybind11::array_t<double> out(shape_with_axis(first, Width));
   const double* x = first.data();
   const double* y = second.data();
-  double* result = out.mutable_data();
-  const std::size_t count = static_cast<std::size_t>(first.size());
-  {
-    pybind11::gil_scoped_release release;
-    for_each_chunk(count, per_thread, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) {
-        const std::array<double, Width> value = function(x[i], y[i]);
-        for (std::size_t c = 0; c < Width; ++c)
-          result[i * Width + c] = value[c];
-      }
-    });
-  }
-  return out;
+  return filled_array<Width>(first, per_thread,
+                             [&](std::size_t begin, std::size_t end, double* result) {
+                               for (std::size_t i = begin; i < end; ++i)
+                                 store_row(function(x[i], y[i]), result + i * Width);
+                             });
 }
 
 // A read-only numpy view of `values` (shape `shape`) that keeps `owner` alive.

@@ -19,4 +19,12 @@ double checked_in_range(std::string_view argument, double value, double low, dou
   return value;
 }
 
+std::size_t checked_count(std::string_view argument, std::size_t value, std::size_t low,
+                          std::size_t high) {
+  if (value < low || value > high)
+    throw pybind11::value_error(
+        fmt::format("{}: {} is out of range; an integer in [{}, {}]", argument, value, low, high));
+  return value;
+}
+
 }  // namespace matc::python

@@ -3,6 +3,7 @@
 // allowed name, as the CLI's errors do.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -27,5 +28,8 @@ ShaderLanguage shader_language_from_name(const std::string& name);
 
 // A value in [low, high] (NaN refused), or ValueError naming the argument and the range.
 double checked_in_range(std::string_view argument, double value, double low, double high);
+// A count in [low, high], or ValueError naming the argument and the range.
+std::size_t checked_count(std::string_view argument, std::size_t value, std::size_t low,
+                          std::size_t high);
 
 }  // namespace matc::python

@@ -103,10 +103,8 @@ void register_tables(py::module_& module) {
       "preintegrated_table",
       [](const std::string& basis, std::size_t size, std::size_t samples,
          const std::string& precision) {
-        if (size < kMinLutSize || size > kMaxLutSize || samples < 1 || samples > kMaxLutSamples)
-          throw py::value_error(
-              fmt::format("size {}, samples {}: out of range; size in [{}, {}], samples in [1, {}]",
-                          size, samples, kMinLutSize, kMaxLutSize, kMaxLutSamples));
+        checked_count("size", size, kMinLutSize, kMaxLutSize);
+        checked_count("samples", samples, 1, kMaxLutSamples);
         return cached_table({option_from_name<runtime::BasisKind>("basis", basis), size, samples,
                              option_from_name<LutPrecision>("precision", precision)});
       },
