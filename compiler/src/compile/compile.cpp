@@ -1,6 +1,7 @@
 #include "matc/compile/compile.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <variant>
 
@@ -9,6 +10,7 @@
 #include "matc/fit/coefficients.h"
 #include "matc/fit/nonnegative_curve.h"
 #include "matc/lut/energy.h"
+#include "matc/optics/coat.h"
 #include "matc/optics/spectral.h"
 #include "matc/version.h"
 
@@ -78,6 +80,88 @@ std::unique_ptr<ReflectanceCurve> make_reflectance_curve(const Material& materia
   return apply_gamut_mapping(std::move(curve), sampled, color, saturation);
 }
 
+std::unique_ptr<ReflectanceCurve> make_under_coat_curve(const Material& material,
+                                                        ColorSpace working_space) {
+  const CoatInput& coat = material.coat.value();
+  const ColorSpace space = std::holds_alternative<SpectralInput>(material.model)
+                               ? working_space
+                               : input_color_space(material, working_space);
+  std::unique_ptr<ReflectanceCurve> metal_in_coat;
+  if (const auto* spectral = std::get_if<SpectralInput>(&material.model)) {
+    Spectrum relative = spectral->spectrum;
+    for (std::size_t i = 0; i < relative.n.size(); ++i) {
+      relative.n[i] /= coat.ior;
+      relative.k[i] /= coat.ior;
+    }
+    metal_in_coat = std::make_unique<SpectralCurve>(relative, space);
+  } else {
+    std::array<ComplexIor, 3> ior{};
+    if (const auto* f82 = std::get_if<F82TintInput>(&material.model)) {
+      // F82-tint has no index: the conductor with its F0 and F(1/7) stands in for it.
+      for (std::size_t c = 0; c < 3; ++c) {
+        const double f_at_mu_bar = f82->tint[c] * fresnel_schlick(kF82MuBar, f82->f0[c]);
+        ior[c] = conductor_matching_f82(f82->f0[c], f_at_mu_bar);
+      }
+    } else {
+      ior = *per_channel_ior(material.model);
+    }
+    for (auto& channel : ior)
+      channel = under_coat(channel, coat.ior);
+    metal_in_coat = std::make_unique<IorCurve>(ior);
+  }
+  auto curve = std::make_unique<UnderCoatCurve>(std::move(metal_in_coat), coat.ior);
+  if (space == working_space) return curve;
+  return std::make_unique<TransformedCurve>(std::move(curve), rgb_to_rgb(space, working_space));
+}
+
+namespace {
+
+// The coat's coefficients and how close the layering from them is to the exact layered curve.
+CompiledCoat compile_coat(const Material& material, const runtime::Coefficients& in_air_fit,
+                          const ReflectanceCurve& in_air, const runtime::BasisView& basis,
+                          ColorSpace working_space) {
+  const CoatInput& input = *material.coat;
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(basis.kind);
+  CompiledCoat coat;
+  coat.input = input;
+  const auto under = make_under_coat_curve(material, working_space);
+  const AccuracyGridCurve under_grid(*under);
+  coat.coefficients.under_coat = solve_coefficients(under_grid, basis);
+  coat.under_coat_error =
+      measure_accuracy(under_grid, coat.coefficients.under_coat, shader_basis).decomposition;
+  const CoatCurve dielectric(input.ior);
+  coat.coefficients.coat = solve_coefficients(dielectric, basis)[0];
+  coat.coefficients.weight = input.weight;
+  coat.coefficients.roughness = input.roughness;
+  coat.coefficients.ior = input.ior;
+  coat.coefficients.color = input.color;
+  coat.coat_max_error =
+      measure_accuracy(dielectric,
+                       {coat.coefficients.coat, coat.coefficients.coat, coat.coefficients.coat},
+                       shader_basis)
+          .decomposition.max_abs[0];
+  const LayeredCurve layered(in_air, under_grid, input.weight, input.ior, input.color);
+  Rgb squares{};
+  for (std::size_t j = 0; j < kAccuracySamples; ++j) {
+    const double mu = static_cast<double>(j) / static_cast<double>(kAccuracySamples - 1);
+    const Rgb exact = layered.at(mu);
+    const auto ours =
+        runtime::evaluate_coated_fresnel(in_air_fit, coat.coefficients, shader_basis, mu);
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double error = std::abs(ours.base[c] + ours.coat - std::max(0.0, exact[c]));
+      coat.layered_error.max_abs[c] = std::max(coat.layered_error.max_abs[c], error);
+      squares[c] += error * error;
+    }
+  }
+  for (std::size_t c = 0; c < 3; ++c)
+    coat.layered_error.rms[c] = std::sqrt(squares[c] / static_cast<double>(kAccuracySamples));
+  coat.layered_f0 = layered.at(1.0);
+  coat.layered_f82 = layered.at(kF82MuBar);
+  return coat;
+}
+
+}  // namespace
+
 static_assert((kAccuracySamples - 1) % (kMinimaxCosines - 1) == 0,
               "the minimax solve's cosines must lie on the accuracy grid AccuracyGridCurve caches");
 
@@ -115,6 +199,10 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
     for (std::size_t c = 0; c < 3; ++c)
       artistic[c] = ior_to_gulbrandsen((*ior)[c]);
     compiled.artistic = artistic;
+  }
+  if (material.coat) {
+    compiled.coat =
+        compile_coat(material, compiled.coefficients, curve, basis, color.working_space);
   }
   return compiled;
 }

@@ -22,17 +22,20 @@ using runtime::Rgb;
 
 constexpr std::array<std::string_view, 4> kModelKeys = {"artistic", "ior", "spectral", "f82_tint"};
 constexpr std::string_view kOneModel = "exactly one of artistic, ior, spectral, f82_tint";
-constexpr std::array<std::string_view, 9> kTopLevelFields = {
-    "$schema",  "name",     "description", "artistic",   "ior",
-    "spectral", "f82_tint", "roughness",   "color_space"};
+constexpr std::array<std::string_view, 10> kTopLevelFields = {
+    "$schema",  "name",     "description", "artistic",    "ior",
+    "spectral", "f82_tint", "roughness",   "color_space", "coat"};
 constexpr std::array<std::string_view, 2> kF82TintFields = {"f0", "tint"};
 constexpr std::array<std::string_view, 2> kArtisticFields = {"reflectivity", "edge_tint"};
 constexpr std::array<std::string_view, 2> kIorFields = {"n", "k"};
 constexpr std::array<std::string_view, 2> kSpectralFields = {"preset", "file"};
+constexpr std::array<std::string_view, 4> kCoatFields = {"weight", "ior", "roughness", "color"};
 
 constexpr Range kReflectivityRange{0.0, 1.0, false};
 constexpr Range kUnitRange{0.0, 1.0};
 constexpr Range kIorRange{0.0, kMaxIorComponent};
+// OpenPBR's coat_ior range: 1 (no interface) to 3 (beyond any lacquer or varnish).
+constexpr Range kCoatIorRange{1.0, 3.0};
 
 class MaterialReader : LocatedJsonReader {
  public:
@@ -69,6 +72,7 @@ class MaterialReader : LocatedJsonReader {
     }
     if (root.contains("color_space")) material.color_space = read_color_space(root["color_space"]);
     if (auto model = read_model(root)) material.model = std::move(*model);
+    if (root.contains("coat")) material.coat = read_coat(root);
 
     if (diagnostics_.has_errors()) return std::nullopt;
     return material;
@@ -118,6 +122,30 @@ class MaterialReader : LocatedJsonReader {
     const auto tint = read_rgb_field(*object, "/f82_tint", "tint", kUnitRange);
     if (!f0 || !tint) return std::nullopt;
     return F82TintInput{*f0, *tint};
+  }
+
+  // Every field is optional (CoatInput's defaults); each given one is range-checked.
+  std::optional<CoatInput> read_coat(const json& root) {
+    const json* object = object_field(root, "coat", kCoatFields);
+    if (!object) return std::nullopt;
+    CoatInput coat;
+    bool ok = true;
+    const auto number = [&](std::string_view key, const Range& range, double& into) {
+      if (!object->contains(key)) return;
+      const auto value = read_number((*object)[std::string(key)], child("/coat", key), range);
+      if (value) into = *value;
+      ok = ok && value.has_value();
+    };
+    number("weight", kUnitRange, coat.weight);
+    number("ior", kCoatIorRange, coat.ior);
+    number("roughness", kUnitRange, coat.roughness);
+    if (object->contains("color")) {
+      const auto color = read_rgb((*object)["color"], "/coat/color", kUnitRange);
+      if (color) coat.color = *color;
+      ok = ok && color.has_value();
+    }
+    if (!ok) return std::nullopt;
+    return coat;
   }
 
   std::optional<ColorSpace> read_color_space(const json& value) {

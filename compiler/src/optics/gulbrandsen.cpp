@@ -33,4 +33,24 @@ ArtisticParameters ior_to_gulbrandsen(ComplexIor ior) {
   return {r, g};
 }
 
+ComplexIor conductor_matching_f82(double f0, double f_at_mu_bar) {
+  const double r = std::clamp(f0, 0.0, 0.999);
+  const auto miss = [&](double g) {
+    const double f = fresnel_exact(kF82MuBar, gulbrandsen_to_ior({r, g}));
+    return std::abs(f - f_at_mu_bar);
+  };
+  // Golden-section search: F(1/7) grows with the edge tint, so the miss has one minimum.
+  constexpr double kInverseGolden = 0.6180339887498949;
+  double low = 0.0, high = 1.0;
+  for (int i = 0; i < 80; ++i) {
+    const double a = high - kInverseGolden * (high - low);
+    const double b = low + kInverseGolden * (high - low);
+    if (miss(a) <= miss(b))
+      high = b;
+    else
+      low = a;
+  }
+  return gulbrandsen_to_ior({r, 0.5 * (low + high)});
+}
+
 }  // namespace matc

@@ -12,6 +12,7 @@
 #include "matc/optics/gulbrandsen.h"
 #include "matc/optics/reflectance_curve.h"
 #include "matc/runtime/basis.h"
+#include "matc/runtime/coat.h"
 #include "matc/runtime/fresnel.h"
 
 namespace matc {
@@ -21,6 +22,20 @@ namespace matc {
 struct ColorOptions {
   ColorSpace working_space = kDefaultColorSpace;
   GamutMapping gamut_mapping = GamutMapping::none;
+};
+
+// What a `coat` block compiles to (docs/coating.md): the metal as seen through the coat and the
+// coat's own Fresnel, each fitted with the same basis, and how far the layering the shaders do
+// from them is from the exact layered reflectance.
+struct CompiledCoat {
+  CoatInput input;
+  runtime::CoatCoefficients coefficients{};
+  ErrorStats under_coat_error;  // the under-coat fit against its exact curve (UnderCoatCurve)
+  double coat_max_error = 0.0;  // the coat's dielectric fit, max |F - exact|
+  // The shaders' F_coat + F_base (runtime::evaluate_coated_fresnel) against LayeredCurve.
+  ErrorStats layered_error;
+  Rgb layered_f0{};   // the exact layered reflectance at normal incidence
+  Rgb layered_f82{};  // ... and at mu = 1/7
 };
 
 struct CompiledMaterial {
@@ -43,6 +58,7 @@ struct CompiledMaterial {
   // Whether the decomposed curve provably stays above 0 (fit/nonnegative_curve.h): then the
   // material's own shader functions leave out the clamp at 0.
   bool fresnel_nonnegative = false;
+  std::optional<CompiledCoat> coat;  // from the material's `coat` block
 };
 
 // The space a material's RGB values are in: its own color_space, or else the working space.
@@ -54,6 +70,11 @@ std::unique_ptr<ReflectanceCurve> make_working_space_curve(const Material& mater
 // The same with the gamut mapping applied: what the coefficients are fitted to.
 std::unique_ptr<ReflectanceCurve> make_reflectance_curve(const Material& material,
                                                          const ColorOptions& color = {});
+
+// The metal of a coated material seen through its coat (UnderCoatCurve) in the working space:
+// per channel in the material's input space, then converted. Requires material.coat.
+std::unique_ptr<ReflectanceCurve> make_under_coat_curve(const Material& material,
+                                                        ColorSpace working_space);
 
 CompiledMaterial compile_material(const Material& material, const runtime::BasisView& basis,
                                   const ColorOptions& color = {});

@@ -29,6 +29,7 @@ class AccuracyGridCurve final : public ReflectanceCurve {
  public:
   explicit AccuracyGridCurve(const ReflectanceCurve& exact);
   Rgb at(double mu) const override;
+  std::optional<Rgb> grazing_value() const override { return exact_.grazing_value(); }
 
  private:
   const ReflectanceCurve& exact_;

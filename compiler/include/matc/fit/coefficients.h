@@ -9,7 +9,9 @@
 namespace matc {
 
 // Both solves fix c_0 = F(mu = 1) and c_1 = 1 - c_0, so F(mu = 0) = 1 and F(1) = F0 hold exactly
-// (b_2, b_3 vanish at both ends); they differ in how (c_2, c_3) are chosen.
+// (b_2, b_3 vanish at both ends); they differ in how (c_2, c_3) are chosen. A curve that does not
+// reach 1 at grazing (ReflectanceCurve::grazing_value: a metal seen through a coat) keeps c_0 =
+// F(1); the probe solve pins c_1 = F(0) - c_0, the minimax solve fits c_1 with (c_2, c_3).
 
 // Collocation (the authors): the 2x2 system that reproduces F exactly at the basis' two probes.
 runtime::Coefficients solve_coefficients_at_probes(const ReflectanceCurve& curve,

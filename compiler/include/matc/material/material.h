@@ -45,6 +45,19 @@ struct F82TintInput {
 
 using MaterialModel = std::variant<ArtisticInput, IorInput, SpectralInput, F82TintInput>;
 
+// A clear (or tinted) dielectric coat over the metal, named and defaulted as OpenPBR's coat_*
+// (docs/coating.md): what is absent from a `coat` block takes these values, except the weight,
+// which is 1 (a block that names a coat means one; OpenPBR's 0 is the absent coat).
+struct CoatInput {
+  double weight = 1.0;     // coverage in [0, 1]
+  double ior = 1.6;        // the coat's real index of refraction in [1, 3]
+  double roughness = 0.0;  // perceptual, in [0, 1]; the coat lobe's alpha = roughness^2
+  // The coat's transmittance over the round trip at normal incidence, per channel in [0, 1]:
+  // what it leaves of the base seen head on (Standard Surface's coat_color); longer paths at
+  // other angles tint more (Beer's law).
+  Rgb color{1.0, 1.0, 1.0};
+};
+
 struct Material {
   std::string name;  // validated identifier, see docs/material-format.md
   MaterialModel model;
@@ -55,6 +68,7 @@ struct Material {
   // The space the model's RGB values are written in ("color_space"); absent: the build's working
   // space. Spectral materials have no RGB values and ignore it.
   std::optional<ColorSpace> color_space;
+  std::optional<CoatInput> coat;  // absent: the metal is bare, seen from air
 };
 
 // "artistic", "ior", "spectral" or "f82_tint": the key that selects the model in a material file.

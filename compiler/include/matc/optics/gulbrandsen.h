@@ -18,4 +18,9 @@ ComplexIor gulbrandsen_to_ior(ArtisticParameters parameters);
 // n, k -> r, g: the inverse mapping. g leaves [0, 1] for an IOR no (r, g) in range produces.
 ArtisticParameters ior_to_gulbrandsen(ComplexIor ior);
 
+// The conductor with reflectance `f0` at normal incidence whose exact curve passes closest to
+// `f_at_mu_bar` at mu = 1/7 (the Gulbrandsen edge tint, searched in [0, 1]; f0 is held below 1):
+// an index for an F82-tint metal, which has none, where one is needed (under a coat).
+ComplexIor conductor_matching_f82(double f0, double f_at_mu_bar);
+
 }  // namespace matc

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 
 #include "matc/optics/color_space.h"
 #include "matc/optics/fresnel.h"
@@ -17,6 +18,9 @@ class ReflectanceCurve {
   virtual ~ReflectanceCurve() = default;
   // Reflectance per channel of the working space at mu = cos(theta) in [0, 1].
   virtual Rgb at(double mu) const = 0;
+  // F at mu = 0 where it is not 1: conductors and dielectrics seen from air reach 1 at grazing
+  // (the coefficient solves pin c_1 = 1 - c_0 for them); a metal seen through a coat does not.
+  virtual std::optional<Rgb> grazing_value() const { return std::nullopt; }
 };
 
 // One complex IOR per channel (from an `ior` or `artistic` material).
@@ -49,6 +53,11 @@ class TransformedCurve final : public ReflectanceCurve {
   TransformedCurve(std::unique_ptr<ReflectanceCurve> curve, const Matrix3& matrix)
       : curve_(std::move(curve)), matrix_(matrix) {}
   Rgb at(double mu) const override { return multiply(matrix_, curve_->at(mu)); }
+  std::optional<Rgb> grazing_value() const override {
+    const auto inner = curve_->grazing_value();
+    if (!inner) return std::nullopt;
+    return multiply(matrix_, *inner);
+  }
 
  private:
   std::unique_ptr<ReflectanceCurve> curve_;

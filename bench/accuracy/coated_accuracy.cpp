@@ -1,0 +1,162 @@
+// Prints the coated-metal accuracy tables of docs/coating.md: every measured metal and a grid of
+// artistic inputs under clear coats of index 1.3, 1.5 and 1.6 (and a tinted one), compiled the
+// way matc compiles a `coat` block, against the exact layered reflectance (smooth interfaces,
+// exact Fresnel at both). Beside ours: the engines' shortcuts, F0 converted into the coat's
+// medium with Schlick (Filament) and the metal's curve in air left as it is (three.js,
+// Babylon.js), each under the same coat lobe and attenuation.
+// Run through bench/accuracy/update-docs.sh; tests/scripts/check_docs_block.sh keeps the docs in
+// sync.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string_view>
+
+#include <fmt/core.h>
+
+#include "error_totals.h"
+#include "matc/compile/compile.h"
+#include "matc/optics/coat.h"
+#include "matc/optics/gulbrandsen.h"
+#include "matc/optics/presets.h"
+#include "matc/runtime/shipped_bases.h"
+
+namespace {
+
+using matc::Rgb;
+using matc::bench::Totals;
+
+constexpr std::array<double, 3> kCoatIors = {1.3, 1.5, 1.6};
+constexpr std::size_t kSamples = matc::kAccuracySamples;
+
+// F0 of a conductor seen from inside a coat of index `coat_ior`, as engines convert it: the F0
+// read as a dielectric's index, then its reflectance against the coat (Filament's
+// f0ClearCoatToSurface is a fit of this for 1.5).
+double f0_in_coat(double f0, double coat_ior) {
+  const double s = std::sqrt(std::clamp(f0, 0.0, 0.999));
+  const double n = (1.0 + s) / (1.0 - s);
+  const double r = (n - coat_ior) / (n + coat_ior);
+  return r * r;
+}
+
+struct CoatedErrors {
+  matc::ErrorStats under_coat;  // our under-coat fit
+  matc::ErrorStats layered;     // ours, layered, against the exact layered curve
+  Rgb f0_in_coat_schlick{};     // max error of the engine shortcuts, same layering
+  Rgb in_air{};
+};
+
+// The engines' shortcuts under the same layering: coat lobe w F_coat (exact), base
+// mix(base in air, (1 - F_coat)^2 v / (1 - F_coat v), w) with v their stand-in for the metal under
+// the coat.
+CoatedErrors measure(const matc::Material& material) {
+  const auto& basis = matc::runtime::shipped_basis(matc::runtime::kDefaultBasis);
+  const matc::CompiledMaterial compiled = matc::compile_material(material, basis);
+  const matc::CompiledCoat& coat = *compiled.coat;
+  CoatedErrors errors{coat.under_coat_error, coat.layered_error, {}, {}};
+  const auto in_air = matc::make_reflectance_curve(material);
+  const auto under = matc::make_under_coat_curve(material, matc::kDefaultColorSpace);
+  const matc::LayeredCurve layered(*in_air, *under, coat.input.weight, coat.input.ior,
+                                   coat.input.color);
+  const Rgb f0 = in_air->at(1.0);
+  for (std::size_t j = 0; j < kSamples; ++j) {
+    const double mu = static_cast<double>(j) / static_cast<double>(kSamples - 1);
+    const double f_coat = matc::coat_fresnel(mu, coat.input.ior);
+    const double mu_inside = matc::refracted_cosine(mu, coat.input.ior);
+    const Rgb exact = layered.at(mu);
+    const Rgb air = in_air->at(mu);
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double w = coat.input.weight;
+      const double tint = matc::coat_round_trip_transmittance(coat.input.color[c], mu_inside);
+      const auto total = [&](double under_coat) {
+        return w * f_coat + (1.0 - w) * air[c] +
+               w * matc::coated_base_reflectance(f_coat, tint * under_coat);
+      };
+      const double schlick = matc::fresnel_schlick(mu, f0_in_coat(f0[c], coat.input.ior));
+      errors.f0_in_coat_schlick[c] =
+          std::max(errors.f0_in_coat_schlick[c], std::abs(total(schlick) - exact[c]));
+      errors.in_air[c] = std::max(errors.in_air[c], std::abs(total(air[c]) - exact[c]));
+    }
+  }
+  return errors;
+}
+
+matc::Material coated(matc::MaterialModel model, double coat_ior, const Rgb& color) {
+  matc::Material material;
+  material.name = "coated";
+  material.model = std::move(model);
+  material.coat = matc::CoatInput{1.0, coat_ior, 0.0, color};
+  return material;
+}
+
+void print_measured() {
+  fmt::print(
+      "| metal | coat index | ours: under-coat fit max | ours: layered max | F0-in-coat Schlick "
+      "max | metal's curve in air max |\n|---|---:|---:|---:|---:|---:|\n");
+  Totals under, layered, schlick, air;
+  Totals tinted_layered;
+  for (const matc::MetalPreset& preset : matc::metal_presets()) {
+    if (!preset.caveat.empty()) continue;  // as the uncoated tables: the reliable metals only
+    for (const double coat_ior : kCoatIors) {
+      const CoatedErrors e = measure(coated(matc::SpectralInput{std::string(preset.symbol), "", "",
+                                                                "", matc::preset_spectrum(preset)},
+                                            coat_ior, {1.0, 1.0, 1.0}));
+      under.add(e.under_coat);
+      layered.add(e.layered);
+      schlick.add({e.f0_in_coat_schlick, {}});
+      air.add({e.in_air, {}});
+      if (coat_ior == 1.5) {
+        fmt::print("| {} {} | {:.1f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} |\n", preset.symbol,
+                   preset.name, coat_ior, matc::worst_channel(e.under_coat.max_abs),
+                   matc::worst_channel(e.layered.max_abs),
+                   matc::worst_channel(e.f0_in_coat_schlick), matc::worst_channel(e.in_air));
+      }
+    }
+    // A tinted coat: the round-trip colour of a warm lacquer.
+    const CoatedErrors tinted = measure(coated(
+        matc::SpectralInput{std::string(preset.symbol), "", "", "", matc::preset_spectrum(preset)},
+        1.5, {0.9, 0.6, 0.3}));
+    tinted_layered.add(tinted.layered);
+  }
+  fmt::print(
+      "\nOver the {} curves of {} measured metals (RGB each) under clear coats of index 1.3, 1.5 "
+      "and 1.6 ({} curves), against the exact layered reflectance:\n\n",
+      under.curves / 3 / 3 * 3, under.curves / 9, under.curves);
+  fmt::print(
+      "| model | worst-channel max error | mean of per-curve max |\n|---|---:|---:|\n"
+      "| ours: the under-coat curve alone, against its exact curve | {:.4f} | {:.4f} |\n"
+      "| ours: coat lobe + layered base | {:.4f} | {:.4f} |\n"
+      "| ours, layered, under a tinted coat (1.5, colour 0.9, 0.6, 0.3) | {:.4f} | {:.4f} |\n"
+      "| F0 converted into the coat, Schlick (Filament) | {:.4f} | {:.4f} |\n"
+      "| the metal's curve in air (three.js, Babylon.js) | {:.4f} | {:.4f} |\n",
+      under.worst, under.mean(), layered.worst, layered.mean(), tinted_layered.worst,
+      tinted_layered.mean(), schlick.worst, schlick.mean(), air.worst, air.mean());
+}
+
+// Grey artistic inputs under a clear coat of 1.5: our layered max error over an (r, g) grid.
+void print_artistic_grid() {
+  constexpr std::array<double, 7> kEdgeTints = {0.0, 0.2, 0.4, 0.6, 0.8, 0.9, 1.0};
+  fmt::print("\nGrey artistic inputs under a clear coat of index 1.5, ours layered:\n\n| r \\ g |");
+  for (const double g : kEdgeTints)
+    fmt::print(" {:.1f} |", g);
+  fmt::print("\n|---:|");
+  for (std::size_t i = 0; i < kEdgeTints.size(); ++i)
+    fmt::print("---:|");
+  fmt::print("\n");
+  for (const double r : {0.05, 0.2, 0.4, 0.6, 0.8, 0.9, 0.95, 0.99}) {
+    fmt::print("| {:.2f} |", r);
+    for (const double g : kEdgeTints) {
+      const CoatedErrors e =
+          measure(coated(matc::ArtisticInput{{r, r, r}, {g, g, g}}, 1.5, {1.0, 1.0, 1.0}));
+      fmt::print(" {:.4f} |", e.layered.max_abs[0]);
+    }
+    fmt::print("\n");
+  }
+}
+
+}  // namespace
+
+int main() {
+  print_measured();
+  print_artistic_grid();
+  return 0;
+}

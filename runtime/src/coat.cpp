@@ -1,0 +1,47 @@
+#include "matc/runtime/coat.h"
+
+#include <cmath>
+
+namespace matc::runtime {
+namespace {
+
+double coat_sum(const ChannelCoefficients& coat, const std::array<double, kBasisSize>& values) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < kBasisSize; ++i)
+    sum += coat[i] * values[i];
+  return std::max(0.0, sum);
+}
+
+}  // namespace
+
+Rgb coat_tint(const CoatCoefficients& coat, double mu) {
+  const double x = std::clamp(mu, 0.0, 1.0);
+  const double inverse_square = 1.0 / (coat.ior * coat.ior);
+  const double inverse_mu_inside = 1.0 / std::sqrt(1.0 - inverse_square * (1.0 - x * x));
+  Rgb tint{};
+  for (std::size_t c = 0; c < 3; ++c)
+    tint[c] = coat.color[c] >= 1.0
+                  ? 1.0
+                  : std::exp2(std::log2(std::max(coat.color[c], 1e-30)) * inverse_mu_inside);
+  return tint;
+}
+
+CoatedFresnel evaluate_coated_fresnel(const Coefficients& in_air, const CoatCoefficients& coat,
+                                      const ShaderBasis& basis, double mu) {
+  const auto b = evaluate_shader_basis(basis, mu);
+  const double f = coat_sum(coat.coat, b);
+  return {layered_base(combine(in_air, b), combine(coat.under_coat, b), coat_tint(coat, mu), f,
+                       coat.weight),
+          coat.weight * std::min(f, 1.0)};
+}
+
+CoatedFresnel evaluate_coated_fbar(const Coefficients& in_air, const CoatCoefficients& coat,
+                                   const LutView& lut, double ndotv, double roughness) {
+  const auto base = sample_lut(lut, ndotv, roughness);
+  const double f = coat_sum(coat.coat, sample_lut(lut, ndotv, coat.roughness));
+  return {layered_base(combine(in_air, base), combine(coat.under_coat, base),
+                       coat_tint(coat, ndotv), f, coat.weight),
+          coat.weight * std::min(f, 1.0)};
+}
+
+}  // namespace matc::runtime
