@@ -37,8 +37,16 @@ CoatedFresnel evaluate_coated_fresnel(const Coefficients& in_air, const CoatCoef
 
 CoatedFresnel evaluate_coated_fbar(const Coefficients& in_air, const CoatCoefficients& coat,
                                    const LutView& lut, double ndotv, double roughness) {
-  const auto base = sample_lut(lut, ndotv, roughness);
-  const double f = coat_sum(coat.coat, sample_lut(lut, ndotv, coat.roughness));
+  return evaluate_coated_preintegrated(in_air, coat, sample_lut(lut, ndotv, roughness),
+                                       sample_lut(lut, ndotv, coat.roughness), ndotv);
+}
+
+CoatedFresnel evaluate_coated_preintegrated(const Coefficients& in_air,
+                                            const CoatCoefficients& coat,
+                                            const std::array<double, kBasisSize>& base,
+                                            const std::array<double, kBasisSize>& coat_bbar,
+                                            double ndotv) {
+  const double f = coat_sum(coat.coat, coat_bbar);
   return {layered_base(combine(in_air, base), combine(coat.under_coat, base),
                        coat_tint(coat, ndotv), f, coat.weight),
           coat.weight * std::min(f, 1.0)};

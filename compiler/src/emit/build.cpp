@@ -151,7 +151,9 @@ SpirvWords Build::material_library_module(const CompiledMaterial& compiled,
   // no embedded table; it is empty in a bootstrap build.
   const std::span<const std::uint32_t> template_words =
       checked_in_material_module_template(options_.basis, compiled.fresnel_nonnegative);
-  if (options_.lut.size == kDefaultLutSize && !embedded_lut() && !template_words.empty())
+  // The checked-in template is an uncoated material's module; a coated one is compiled.
+  if (options_.lut.size == kDefaultLutSize && !embedded_lut() && !template_words.empty() &&
+      !compiled.coat)
     return patch_material_module(template_words, compiled);
   return compile_material_library_module(compiled, inputs_hash);
 }
@@ -166,7 +168,8 @@ SpirvWords Build::compile_material_library_module(const CompiledMaterial& compil
   return compile_library_module(
       glsl_material_module_library_ +
           material_snippet_source(ShaderLanguage::glsl, compiled, inputs_hash),
-      material_file_name(OutputKind::spirv, name), material_library_exports(name));
+      material_file_name(OutputKind::spirv, name),
+      material_library_exports(name, compiled.coat.has_value()));
 }
 
 MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const {

@@ -56,9 +56,14 @@ std::vector<std::string> shared_library_exports(bool embedded_lut) {
   return names;
 }
 
-std::vector<std::string> material_library_exports(std::string_view material_name) {
-  return {fmt::format("matc_fresnel_{}", material_name),
-          fmt::format("matc_fresnel_preintegrated_{}", material_name)};
+std::vector<std::string> material_library_exports(std::string_view material_name, bool coated) {
+  std::vector<std::string> names = {fmt::format("matc_fresnel_{}", material_name),
+                                    fmt::format("matc_fresnel_preintegrated_{}", material_name)};
+  if (coated) {
+    names.push_back(fmt::format("matc_coat_fresnel_{}", material_name));
+    names.push_back(fmt::format("matc_coat_fresnel_preintegrated_{}", material_name));
+  }
+  return names;
 }
 
 }  // namespace matc

@@ -37,6 +37,33 @@ ordered_json input_json(const Material& material) {
   return {{std::string(model_key(material.model)), input}};
 }
 
+ordered_json coefficients_json(const runtime::Coefficients& coefficients) {
+  ordered_json rows = ordered_json::array();
+  for (const auto& channel : coefficients)
+    rows.push_back({channel[0], channel[1], channel[2], channel[3]});
+  return rows;
+}
+
+// A coated material's coat (docs/coating.md): what was asked, what was fitted, how close.
+ordered_json coat_json(const CompiledCoat& coat) {
+  const runtime::CoatCoefficients& c = coat.coefficients;
+  return {{"input",
+           {{"weight", coat.input.weight},
+            {"ior", coat.input.ior},
+            {"roughness", coat.input.roughness},
+            {"color", rgb_json(coat.input.color)}}},
+          {"under_coat_coefficients", coefficients_json(c.under_coat)},
+          {"coat_coefficients", {c.coat[0], c.coat[1], c.coat[2], c.coat[3]}},
+          {"layered", {{"F0", rgb_json(coat.layered_f0)}, {"F82", rgb_json(coat.layered_f82)}}},
+          {"accuracy",
+           {{"metric",
+             "absolute error vs the exact layered reflectance (smooth interfaces) over mu = "
+             "cos(theta) uniform in [0, 1]"},
+            {"layered", error_stats_json(coat.layered_error)},
+            {"under_coat", error_stats_json(coat.under_coat_error)},
+            {"coat_max", coat.coat_max_error}}}};
+}
+
 }  // namespace
 
 ordered_json compiled_material_json(const CompiledMaterial& compiled,
@@ -96,11 +123,7 @@ ordered_json compiled_material_json(const CompiledMaterial& compiled,
     basis_json["minimax_cosines"] = kMinimaxCosines;
   }
   out["basis"] = std::move(basis_json);
-  ordered_json coefficients = ordered_json::array();
-  for (const auto& channel : compiled.coefficients) {
-    coefficients.push_back({channel[0], channel[1], channel[2], channel[3]});
-  }
-  out["coefficients"] = coefficients;
+  out["coefficients"] = coefficients_json(compiled.coefficients);
   out["energy_compensation"] = {{"F_avg", rgb_json(compiled.average_fresnel)}};
   out["accuracy"] = {{"samples", compiled.accuracy.samples},
                      {"metric",
@@ -109,6 +132,7 @@ ordered_json compiled_material_json(const CompiledMaterial& compiled,
                      {"decomposition", error_stats_json(compiled.accuracy.decomposition)},
                      {"schlick", error_stats_json(compiled.accuracy.schlick)},
                      {"f82_tint", error_stats_json(compiled.accuracy.f82_tint)}};
+  if (compiled.coat) out["coat"] = coat_json(*compiled.coat);
   return out;
 }
 

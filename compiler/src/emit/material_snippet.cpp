@@ -1,6 +1,8 @@
 #include "matc/emit/material_snippet.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -37,12 +39,46 @@ TemplateValues material_template_values(const CompiledMaterial& compiled,
       {"blue_c", fmt::format("{{{}}}", float_list(c[2], true))}};
 }
 
+namespace {
+
+// A coated material's snippet (templates/<language>/material_coated.*): the metal in air, the
+// metal under the coat and the coat's own coefficients, and the layering (docs/coating.md).
+std::string coated_snippet_source(ShaderLanguage language, const CompiledMaterial& compiled,
+                                  TemplateValues values) {
+  const CompiledCoat& coat = *compiled.coat;
+  const runtime::CoatCoefficients& c = coat.coefficients;
+  for (const char* unused : {"fresnel", "fresnel_preintegrated", "clamp_note", "max_error"})
+    values.erase(unused);
+  const double inverse_ior_squared = 1.0 / (c.ior * c.ior);
+  std::array<double, 3> log2_color{};
+  for (std::size_t i = 0; i < 3; ++i)
+    log2_color[i] = c.color[i] >= 1.0 ? 0.0 : std::log2(std::max(c.color[i], 1e-30));
+  values["under_red"] = float_list(c.under_coat[0]);
+  values["under_green"] = float_list(c.under_coat[1]);
+  values["under_blue"] = float_list(c.under_coat[2]);
+  values["coat"] = float_list(c.coat);
+  values["coat_weight"] = float_literal(c.weight);
+  values["coat_roughness"] = float_literal(c.roughness);
+  values["coat_ior"] = fmt::format("{}", c.ior);
+  values["inverse_ior_squared"] = float_literal(inverse_ior_squared);
+  values["grazing_inside_squared"] = float_literal(1.0 - inverse_ior_squared);
+  values["log2_color"] = float_list(log2_color);
+  values["layered_max_error"] = fmt::format("{:.4f}", worst_channel(coat.layered_error.max_abs));
+  values["under_coat_max_error"] =
+      fmt::format("{:.4f}", worst_channel(coat.under_coat_error.max_abs));
+  values["coat_max_error"] = fmt::format("{:.4f}", coat.coat_max_error);
+  return fill_template(template_path(language, "material_coated"), values);
+}
+
+}  // namespace
+
 std::string material_snippet_source(ShaderLanguage language, const CompiledMaterial& compiled,
                                     std::string_view inputs_hash) {
   TemplateValues values = material_template_values(compiled, inputs_hash);
   values.erase("red_c");
   values.erase("green_c");
   values.erase("blue_c");
+  if (compiled.coat) return coated_snippet_source(language, compiled, std::move(values));
   // A curve matc proved non-negative needs no clamp at 0 (fit/nonnegative_curve.h).
   const bool nonnegative = compiled.fresnel_nonnegative;
   values["fresnel"] = nonnegative ? "matc_fresnel_sum" : "matc_fresnel";

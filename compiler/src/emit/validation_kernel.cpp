@@ -19,13 +19,15 @@ SpirvWords vulkan_compute_module(ShaderLanguage language, std::string source,
 }  // namespace
 
 std::string validation_kernel_source(ShaderLanguage language, std::string_view library,
-                                     std::string_view material, std::string_view material_name) {
-  return fill_template(
-      language == ShaderLanguage::glsl ? "glsl/validate.comp" : "hlsl/validate.hlsl",
-      {{"version", kVersion},
-       {"name", std::string(material_name)},
-       {"library", std::string(library)},
-       {"material", std::string(material)}});
+                                     std::string_view material, std::string_view material_name,
+                                     bool coated) {
+  const bool glsl = language == ShaderLanguage::glsl;
+  const char* path = coated ? (glsl ? "glsl/validate_coated.comp" : "hlsl/validate_coated.hlsl")
+                            : (glsl ? "glsl/validate.comp" : "hlsl/validate.hlsl");
+  return fill_template(path, {{"version", kVersion},
+                              {"name", std::string(material_name)},
+                              {"library", std::string(library)},
+                              {"material", std::string(material)}});
 }
 
 std::string table_validation_kernel_source(ShaderLanguage language, std::string_view library) {
@@ -43,11 +45,11 @@ std::string area_light_validation_kernel_source(ShaderLanguage language, std::st
 SpirvWords material_validation_module(const Build& build, ShaderLanguage language,
                                       const CompiledMaterial& compiled) {
   const std::string& name = compiled.material.name;
-  return vulkan_compute_module(
-      language,
-      validation_kernel_source(language, build.library_source(language),
-                               build.material_source(language, compiled), name),
-      fmt::format("{}.validate{}", name, shader_file_extension(language)));
+  return vulkan_compute_module(language,
+                               validation_kernel_source(language, build.library_source(language),
+                                                        build.material_source(language, compiled),
+                                                        name, compiled.coat.has_value()),
+                               fmt::format("{}.validate{}", name, shader_file_extension(language)));
 }
 
 SpirvWords table_validation_module(const Build& build, ShaderLanguage language) {

@@ -5,6 +5,7 @@
 #include "largest_difference.h"
 #include "matc/emit/validation_kernel.h"
 #include "matc/runtime/analytic_lut.h"
+#include "matc/runtime/coat.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/lut.h"
 #include "matc/runtime/shader_basis.h"
@@ -46,6 +47,7 @@ class MaterialCheck final : public DeviceCheck {
     const Lut* embedded = build_.embedded_lut();
     const runtime::AnalyticLutCoefficients& analytic =
         runtime::shipped_analytic_lut(build_.options().basis);
+    if (compiled_.coat) return compare_coated(results, shader_basis, table, embedded, analytic);
     const runtime::Coefficients& c = compiled_.coefficients;
     CheckedQuantity fresnel{"F", tolerance_.fresnel};
     CheckedQuantity preintegrated{"Fbar", tolerance_.preintegrated};
@@ -72,11 +74,53 @@ class MaterialCheck final : public DeviceCheck {
 
   std::string describe_query(std::size_t index, std::string_view label) const override {
     const ValidationQuery& q = queries_[index];
-    if (label == "F") return fmt::format("mu {:.4f}", q.mu);
+    if (label == "F" || label == "coat F") return fmt::format("mu {:.4f}", q.mu);
     return fmt::format("NdotV {:.4f}, roughness {:.4f}", q.ndotv, q.roughness);
   }
 
  private:
+  // Both lobes of a coated material (runtime/coat.h): the base's RGB and the coat's F, each
+  // direct and through the three tables.
+  std::vector<CheckedQuantity> compare_coated(
+      std::span<const float> results, const runtime::ShaderBasis& shader_basis,
+      const runtime::LutView& table, const Lut* embedded,
+      const runtime::AnalyticLutCoefficients& analytic) const {
+    const runtime::Coefficients& c = compiled_.coefficients;
+    const runtime::CoatCoefficients& coat = compiled_.coat->coefficients;
+    std::vector<CheckedQuantity> quantities = {{"F", tolerance_.fresnel},
+                                               {"coat F", tolerance_.fresnel},
+                                               {"Fbar", tolerance_.preintegrated},
+                                               {"coat Fbar", tolerance_.preintegrated},
+                                               {"embedded Fbar", tolerance_.embedded},
+                                               {"embedded coat Fbar", tolerance_.embedded},
+                                               {"closed-form Fbar", tolerance_.analytic},
+                                               {"closed-form coat Fbar", tolerance_.analytic}};
+    const auto record = [&](std::size_t slot, const runtime::CoatedFresnel& expected,
+                            const float* actual, std::size_t query) {
+      record_largest(quantities[2 * slot], expected.base, actual, query);
+      const float coat_actual[3] = {actual[3], actual[3], actual[3]};
+      record_largest(quantities[2 * slot + 1], {expected.coat, expected.coat, expected.coat},
+                     coat_actual, query);
+    };
+    for (std::size_t i = 0; i < queries_.size(); ++i) {
+      const ValidationQuery& q = queries_[i];
+      const float* result = &results[i * kValidationResultsPerQuery * 4];
+      record(0, runtime::evaluate_coated_fresnel(c, coat, shader_basis, q.mu), result, i);
+      record(1, runtime::evaluate_coated_fbar(c, coat, table, q.ndotv, q.roughness), result + 4, i);
+      if (embedded) {
+        record(2, runtime::evaluate_coated_fbar(c, coat, embedded->view(), q.ndotv, q.roughness),
+               result + 8, i);
+      }
+      record(3,
+             runtime::evaluate_coated_preintegrated(
+                 c, coat, runtime::preintegrated_basis_analytic(analytic, q.ndotv, q.roughness),
+                 runtime::preintegrated_basis_analytic(analytic, q.ndotv, coat.roughness), q.ndotv),
+             result + 12, i);
+    }
+    if (!embedded) quantities.erase(quantities.begin() + 4, quantities.begin() + 6);
+    return quantities;
+  }
+
   const Build& build_;
   const CompiledMaterial& compiled_;
   ValidationTolerance tolerance_;

@@ -110,7 +110,7 @@ TEST(MaterialParse, UnknownFieldWarnsWithSuggestionAndStillCompiles) {
   EXPECT_EQ(all_diagnostics(result),
             "materials/m.json:2:2: warning: roughnes: unknown field, ignored (did you mean "
             "'roughness'?); known fields here: $schema, name, description, artistic, ior, "
-            "spectral, f82_tint, roughness, color_space\n");
+            "spectral, f82_tint, roughness, color_space, coat\n");
 }
 
 TEST(MaterialParse, EveryErrorInAFileIsReportedInOrder) {
@@ -263,6 +263,41 @@ TEST(MaterialNames, FollowTheDocumentedRule) {
   EXPECT_TRUE(material_name_problem("gold__x"));
   EXPECT_TRUE(material_name_problem("g\xc3\xb6ld"));
   EXPECT_TRUE(material_name_problem("../etc"));
+}
+
+TEST(MaterialParse, CoatTakesOpenPbrDefaultsButWeightOne) {
+  const auto result = parse("{\"name\": \"m\", \"ior\": {\"n\": 0.2, \"k\": 3.5}, \"coat\": {}}");
+  ASSERT_TRUE(result.material);
+  ASSERT_TRUE(result.material->coat);
+  const CoatInput& coat = *result.material->coat;
+  EXPECT_EQ(coat.weight, 1.0);
+  EXPECT_EQ(coat.ior, 1.6);
+  EXPECT_EQ(coat.roughness, 0.0);
+  EXPECT_EQ(coat.color, (Rgb{1.0, 1.0, 1.0}));
+  EXPECT_TRUE(result.diagnostics.items().empty());
+}
+
+TEST(MaterialParse, CoatReadsEveryFieldWithEveryModel) {
+  for (const char* model :
+       {"\"ior\": {\"n\": 0.2, \"k\": 3.5}",
+        "\"artistic\": {\"reflectivity\": 0.9, \"edge_tint\": 0.5}",
+        "\"f82_tint\": {\"f0\": 0.9, \"tint\": 0.8}", "\"spectral\": {\"preset\": \"Cu\"}"}) {
+    const auto result = parse(std::string("{\"name\": \"m\", ") + model +
+                              ", \"coat\": {\"weight\": 0.5, \"ior\": 1.45, \"roughness\": 0.2, "
+                              "\"color\": [0.9, 0.8, 0.7]}}");
+    ASSERT_TRUE(result.material) << model;
+    const CoatInput& coat = *result.material->coat;
+    EXPECT_EQ(coat.weight, 0.5);
+    EXPECT_EQ(coat.ior, 1.45);
+    EXPECT_EQ(coat.roughness, 0.2);
+    EXPECT_EQ(coat.color, (Rgb{0.9, 0.8, 0.7}));
+  }
+}
+
+TEST(MaterialParse, NoCoatBlockMeansNoCoat) {
+  const auto result = parse("{\"name\": \"m\", \"ior\": {\"n\": 0.2, \"k\": 3.5}}");
+  ASSERT_TRUE(result.material);
+  EXPECT_FALSE(result.material->coat);
 }
 
 }  // namespace

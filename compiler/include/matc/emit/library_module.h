@@ -20,6 +20,8 @@ std::string spirv_file_bytes(const SpirvWords& words);
 
 // The names a library module exports: the shared library's, and one material's.
 std::vector<std::string> shared_library_exports(bool embedded_lut);
-std::vector<std::string> material_library_exports(std::string_view material_name);
+// A coated material (docs/coating.md) exports its coat lobe's two functions too.
+std::vector<std::string> material_library_exports(std::string_view material_name,
+                                                  bool coated = false);
 
 }  // namespace matc

@@ -22,9 +22,12 @@ namespace matc {
 inline constexpr std::size_t kValidationGroupSize = 64;
 inline constexpr std::size_t kValidationResultsPerQuery = 4;
 
-// `library` and `material` are the sources of matc_fresnel.* and <name>.* in `language`.
+// `library` and `material` are the sources of matc_fresnel.* and <name>.* in `language`. A coated
+// material's kernel (templates/*/validate_coated.*) writes the base lobe in .xyz and the coat
+// lobe in .w of the same four results, the coat's preintegrated F sampled at its roughness.
 std::string validation_kernel_source(ShaderLanguage language, std::string_view library,
-                                     std::string_view material, std::string_view material_name);
+                                     std::string_view material, std::string_view material_name,
+                                     bool coated = false);
 
 // The coefficient-table path's kernel (templates/*/validate_table.*): bindings 0 queries (four vec4
 // each: r.rgb and mu, g.rgb and NdotV, n.rgb and roughness, k.rgb), 1 results (four vec4: F and

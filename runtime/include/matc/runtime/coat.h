@@ -55,8 +55,17 @@ inline Rgb layered_base(const Rgb& in_air, const Rgb& under_coat, const Rgb& tin
 CoatedFresnel evaluate_coated_fresnel(const Coefficients& in_air, const CoatCoefficients& coat,
                                       const ShaderBasis& basis, double mu);
 
-// Both lobes' preintegrated F through `lut`: the base's at `roughness`, the coat's at its own
-// roughness, the base attenuated by the coat's preintegrated F (its directional albedo).
+// Both lobes' preintegrated F from the preintegrated basis at (NdotV, the base's roughness),
+// `bbar`, and at (NdotV, the coat's roughness), `coat_bbar`: the base attenuated by the coat's
+// preintegrated F (its directional albedo), tinted at NdotV. Any table: the LUT, the embedded
+// one, the closed form.
+CoatedFresnel evaluate_coated_preintegrated(const Coefficients& in_air,
+                                            const CoatCoefficients& coat,
+                                            const std::array<double, kBasisSize>& bbar,
+                                            const std::array<double, kBasisSize>& coat_bbar,
+                                            double ndotv);
+
+// The same through `lut`: the base's at `roughness`, the coat's at its own.
 CoatedFresnel evaluate_coated_fbar(const Coefficients& in_air, const CoatCoefficients& coat,
                                    const LutView& lut, double ndotv, double roughness);
 

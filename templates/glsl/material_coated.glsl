@@ -1,0 +1,70 @@
+// matc {{version}}: material {{name}} from {{source_file}}, a metal under a coat (docs/coating.md).
+// Generated (inputs {{inputs_hash}}); do not edit, rerun matc. Include matc_fresnel.glsl first.
+#ifndef MATC_MATERIAL_{{name}}
+#define MATC_MATERIAL_{{name}}
+#ifndef MATC_FRESNEL_GLSL
+#error matc: include matc_fresnel.glsl before {{name}}.glsl
+#endif
+#if MATC_VERSION != {{version_number}}
+#error matc: {{name}}.glsl comes from matc {{version}} but matc_fresnel.glsl from another version; regenerate both with one matc
+#endif
+
+// Two lobes: the coat's (matc_coat_fresnel_{{name}}, sampled at the coat's roughness) and the
+// base's (matc_fresnel_{{name}}, at the metal's). Together, against the exact layered
+// reflectance (smooth interfaces) over 2001 cosines: largest |F - exact| {{layered_max_error}}.
+// The metal in air: F0 = ({{f0}}) in {{color_space}}.
+const MatcFresnelCoefficients matc_coefficients_{{name}} = MatcFresnelCoefficients(
+    vec4({{red}}),
+    vec4({{green}}),
+    vec4({{blue}}));
+// The metal seen through the coat: its curve at the metal/coat interface, at the cosines inside
+// the coat; largest |F - exact|: {{under_coat_max_error}}.
+const MatcFresnelCoefficients matc_under_coat_coefficients_{{name}} = MatcFresnelCoefficients(
+    vec4({{under_red}}),
+    vec4({{under_green}}),
+    vec4({{under_blue}}));
+// The coat's dielectric Fresnel (index {{coat_ior}}); largest |F - exact|: {{coat_max_error}}.
+const vec4 matc_coat_coefficients_{{name}} = vec4({{coat}});
+const float matc_coat_weight_{{name}} = {{coat_weight}};
+// Sample the table at this roughness for the coat lobe (perceptual, as matc_lut_texcoord takes).
+const float matc_coat_roughness_{{name}} = {{coat_roughness}};
+
+// The coat's tint over the round trip at cosine mu in air, color^(1 / mu_inside) (Beer's law).
+vec3 matc_coat_tint_{{name}}(float mu) {
+  float inverse_mu_inside = inversesqrt({{grazing_inside_squared}} + {{inverse_ior_squared}} * mu * mu);
+  return exp2(vec3({{log2_color}}) * inverse_mu_inside);
+}
+
+// The base under the coat: in through the coat, reflected by the metal and the coat's underside
+// any number of times, out again: mix(in air, (1 - f)^2 v / (1 - f min(v, 1)), weight).
+vec3 matc_coated_base_{{name}}(vec4 values, vec4 coat_values, vec3 tint) {
+  float f = clamp(dot(matc_coat_coefficients_{{name}}, coat_values), 0.0, 1.0);
+  vec3 v = matc_combine(matc_under_coat_coefficients_{{name}}, values) * tint;
+  vec3 through = (1.0 - f) * (1.0 - f) * v / max(1.0 - f * min(v, vec3(1.0)), vec3(1e-6));
+  return mix(matc_combine(matc_coefficients_{{name}}, values), through, matc_coat_weight_{{name}});
+}
+
+// The base lobe's F for a direct light: mu = dot(V, H).
+vec3 matc_fresnel_{{name}}(float mu) {
+  vec4 b = matc_basis(mu);
+  return matc_coated_base_{{name}}(b, b, matc_coat_tint_{{name}}(mu));
+}
+
+// The coat lobe's F for a direct light, its weight included: mu = dot(V, H).
+float matc_coat_fresnel_{{name}}(float mu) {
+  float f = clamp(dot(matc_coat_coefficients_{{name}}, matc_basis(mu)), 0.0, 1.0);
+  return matc_coat_weight_{{name}} * f;
+}
+
+// The base lobe's preintegrated F: bbar from the table at matc_lut_texcoord(NdotV, roughness),
+// coat_bbar at matc_lut_texcoord(NdotV, matc_coat_roughness_{{name}}).
+vec3 matc_fresnel_preintegrated_{{name}}(vec4 bbar, vec4 coat_bbar, float NdotV) {
+  return matc_coated_base_{{name}}(bbar, coat_bbar, matc_coat_tint_{{name}}(NdotV));
+}
+
+// The coat lobe's preintegrated F, its weight included.
+float matc_coat_fresnel_preintegrated_{{name}}(vec4 coat_bbar) {
+  float f = clamp(dot(matc_coat_coefficients_{{name}}, coat_bbar), 0.0, 1.0);
+  return matc_coat_weight_{{name}} * f;
+}
+#endif  // MATC_MATERIAL_{{name}}

@@ -1,0 +1,39 @@
+#version 450
+// matc {{version}}: the compute kernel that checks coated material {{name}} on a Vulkan device
+// against the CPU runtime. For each query (mu, NdotV, roughness, -) it writes the base lobe's F
+// (xyz) and the coat lobe's (w) at mu, then both preintegrated through the bound table and
+// sampler, the embedded table (zero without one) and the closed form; the coat lobe is sampled
+// at the coat's roughness.
+{{library}}
+{{material}}
+layout(local_size_x = 64) in;
+layout(std430, set = 0, binding = 0) readonly buffer MatcQueries { vec4 matc_queries[]; };
+layout(std430, set = 0, binding = 1) writeonly buffer MatcResults { vec4 matc_results[]; };
+layout(set = 0, binding = 2) uniform texture2D matc_lut;
+layout(set = 0, binding = 3) uniform sampler matc_lut_sampler;
+
+vec4 matc_lobes(vec4 bbar, vec4 coat_bbar, float NdotV) {
+  return vec4(matc_fresnel_preintegrated_{{name}}(bbar, coat_bbar, NdotV),
+              matc_coat_fresnel_preintegrated_{{name}}(coat_bbar));
+}
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  vec4 query = matc_queries[i];
+  float coat_roughness = matc_coat_roughness_{{name}};
+  vec4 bbar = textureLod(sampler2D(matc_lut, matc_lut_sampler),
+                         matc_lut_texcoord(query.y, query.z), 0.0);
+  vec4 coat_bbar = textureLod(sampler2D(matc_lut, matc_lut_sampler),
+                              matc_lut_texcoord(query.y, coat_roughness), 0.0);
+  vec4 embedded = vec4(0.0);
+#ifdef MATC_EMBEDDED_LUT_SIZE
+  embedded = matc_lobes(matc_preintegrated_basis_embedded(query.y, query.z),
+                        matc_preintegrated_basis_embedded(query.y, coat_roughness), query.y);
+#endif
+  matc_results[4u * i] = vec4(matc_fresnel_{{name}}(query.x), matc_coat_fresnel_{{name}}(query.x));
+  matc_results[4u * i + 1u] = matc_lobes(bbar, coat_bbar, query.y);
+  matc_results[4u * i + 2u] = embedded;
+  matc_results[4u * i + 3u] =
+      matc_lobes(matc_preintegrated_basis_analytic(query.y, query.z),
+                 matc_preintegrated_basis_analytic(query.y, coat_roughness), query.y);
+}

@@ -1,0 +1,37 @@
+// matc {{version}}: the compute kernel that checks coated material {{name}} on a Vulkan device
+// against the CPU runtime. For each query (mu, NdotV, roughness, -) it writes the base lobe's F
+// (xyz) and the coat lobe's (w) at mu, then both preintegrated through the bound table and
+// sampler, the embedded table (zero without one) and the closed form; the coat lobe is sampled
+// at the coat's roughness.
+{{library}}
+{{material}}
+[[vk::binding(0, 0)]] StructuredBuffer<float4> matc_queries : register(t0);
+[[vk::binding(1, 0)]] RWStructuredBuffer<float4> matc_results : register(u1);
+[[vk::binding(2, 0)]] Texture2D<float4> matc_lut : register(t2);
+[[vk::binding(3, 0)]] SamplerState matc_lut_sampler : register(s3);
+
+float4 matc_lobes(float4 bbar, float4 coat_bbar, float NdotV) {
+  return float4(matc_fresnel_preintegrated_{{name}}(bbar, coat_bbar, NdotV),
+                matc_coat_fresnel_preintegrated_{{name}}(coat_bbar));
+}
+
+[numthreads(64, 1, 1)]
+void main(uint3 id : SV_DispatchThreadID) {
+  uint i = id.x;
+  float4 query = matc_queries[i];
+  float coat_roughness = matc_coat_roughness_{{name}};
+  float4 bbar = matc_lut.SampleLevel(matc_lut_sampler, matc_lut_texcoord(query.y, query.z), 0.0);
+  float4 coat_bbar =
+      matc_lut.SampleLevel(matc_lut_sampler, matc_lut_texcoord(query.y, coat_roughness), 0.0);
+  float4 embedded = 0.0;
+#ifdef MATC_EMBEDDED_LUT_SIZE
+  embedded = matc_lobes(matc_preintegrated_basis_embedded(query.y, query.z),
+                        matc_preintegrated_basis_embedded(query.y, coat_roughness), query.y);
+#endif
+  matc_results[4 * i] = float4(matc_fresnel_{{name}}(query.x), matc_coat_fresnel_{{name}}(query.x));
+  matc_results[4 * i + 1] = matc_lobes(bbar, coat_bbar, query.y);
+  matc_results[4 * i + 2] = embedded;
+  matc_results[4 * i + 3] =
+      matc_lobes(matc_preintegrated_basis_analytic(query.y, query.z),
+                 matc_preintegrated_basis_analytic(query.y, coat_roughness), query.y);
+}

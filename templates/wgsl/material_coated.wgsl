@@ -1,0 +1,67 @@
+// matc {{version}}: material {{name}} from {{source_file}}, a metal under a coat (docs/coating.md).
+// Generated (inputs {{inputs_hash}}); do not edit, rerun matc. Needs matc_fresnel.wgsl in the
+// same shader module.
+
+// Fails to compile ("const assertion failed") when matc_fresnel.wgsl comes from another matc
+// version than this file (matc {{version}}): regenerate both with one matc. Without the library,
+// MATC_VERSION is an unresolved identifier here.
+const_assert MATC_VERSION == {{version_number}};
+
+// Two lobes: the coat's (matc_coat_fresnel_{{name}}, sampled at the coat's roughness) and the
+// base's (matc_fresnel_{{name}}, at the metal's). Together, against the exact layered
+// reflectance (smooth interfaces) over 2001 cosines: largest |F - exact| {{layered_max_error}}.
+// The metal in air: F0 = ({{f0}}) in {{color_space}}.
+const matc_coefficients_{{name}} = MatcFresnelCoefficients(
+    vec4f({{red}}),
+    vec4f({{green}}),
+    vec4f({{blue}}));
+// The metal seen through the coat: its curve at the metal/coat interface, at the cosines inside
+// the coat; largest |F - exact|: {{under_coat_max_error}}.
+const matc_under_coat_coefficients_{{name}} = MatcFresnelCoefficients(
+    vec4f({{under_red}}),
+    vec4f({{under_green}}),
+    vec4f({{under_blue}}));
+// The coat's dielectric Fresnel (index {{coat_ior}}); largest |F - exact|: {{coat_max_error}}.
+const matc_coat_coefficients_{{name}} = vec4f({{coat}});
+const matc_coat_weight_{{name}} = {{coat_weight}};
+// Sample the table at this roughness for the coat lobe (perceptual, as matc_lut_texcoord takes).
+const matc_coat_roughness_{{name}} = {{coat_roughness}};
+
+// The coat's tint over the round trip at cosine mu in air, color^(1 / mu_inside) (Beer's law).
+fn matc_coat_tint_{{name}}(mu: f32) -> vec3f {
+  let inverse_mu_inside = inverseSqrt({{grazing_inside_squared}} + {{inverse_ior_squared}} * mu * mu);
+  return exp2(vec3f({{log2_color}}) * inverse_mu_inside);
+}
+
+// The base under the coat: in through the coat, reflected by the metal and the coat's underside
+// any number of times, out again: mix(in air, (1 - f)^2 v / (1 - f min(v, 1)), weight).
+fn matc_coated_base_{{name}}(values: vec4f, coat_values: vec4f, tint: vec3f) -> vec3f {
+  let f = clamp(dot(matc_coat_coefficients_{{name}}, coat_values), 0.0, 1.0);
+  let v = matc_combine(matc_under_coat_coefficients_{{name}}, values) * tint;
+  let through = (1.0 - f) * (1.0 - f) * v / max(1.0 - f * min(v, vec3f(1.0)), vec3f(1e-6));
+  return mix(matc_combine(matc_coefficients_{{name}}, values), through, matc_coat_weight_{{name}});
+}
+
+// The base lobe's F for a direct light: mu = dot(V, H).
+fn matc_fresnel_{{name}}(mu: f32) -> vec3f {
+  let b = matc_basis(mu);
+  return matc_coated_base_{{name}}(b, b, matc_coat_tint_{{name}}(mu));
+}
+
+// The coat lobe's F for a direct light, its weight included: mu = dot(V, H).
+fn matc_coat_fresnel_{{name}}(mu: f32) -> f32 {
+  let f = clamp(dot(matc_coat_coefficients_{{name}}, matc_basis(mu)), 0.0, 1.0);
+  return matc_coat_weight_{{name}} * f;
+}
+
+// The base lobe's preintegrated F: bbar from the table at matc_lut_texcoord(NdotV, roughness),
+// coat_bbar at matc_lut_texcoord(NdotV, matc_coat_roughness_{{name}}).
+fn matc_fresnel_preintegrated_{{name}}(bbar: vec4f, coat_bbar: vec4f, NdotV: f32) -> vec3f {
+  return matc_coated_base_{{name}}(bbar, coat_bbar, matc_coat_tint_{{name}}(NdotV));
+}
+
+// The coat lobe's preintegrated F, its weight included.
+fn matc_coat_fresnel_preintegrated_{{name}}(coat_bbar: vec4f) -> f32 {
+  let f = clamp(dot(matc_coat_coefficients_{{name}}, coat_bbar), 0.0, 1.0);
+  return matc_coat_weight_{{name}} * f;
+}
