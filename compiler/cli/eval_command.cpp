@@ -16,10 +16,13 @@
 #include "matc/ltc/polygon_light.h"
 #include "matc/lut/coefficient_table_files.h"
 #include "matc/lut/comparison_lobes.h"
+#include "matc/lut/layered_reference.h"
 #include "matc/lut/lut_files.h"
 #include "matc/lut/split_sum_reference.h"
 #include "matc/material/material_input.h"
+#include "matc/optics/coat.h"
 #include "matc/runtime/analytic_lut.h"
+#include "matc/runtime/coat.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/ltc_following.h"
@@ -243,6 +246,100 @@ int run_eval_artistic(const EvalOptions& options) {
   return kExitSuccess;
 }
 
+// A coated material (docs/coating.md): both lobes as the shaders compute them and their sum,
+// beside the exact layered curve (smooth interfaces); preintegrated, the same beside the split
+// sum of each exact lobe at its own roughness and the Monte-Carlo layered reference (rough
+// interfaces, any number of bounces, no split sum).
+void add_coated(const EvalOptions& options, const CompiledMaterial& compiled,
+                const runtime::BasisView& basis, ordered_json& out) {
+  const Material& material = compiled.material;
+  const CompiledCoat& coat = *compiled.coat;
+  const runtime::CoatCoefficients& coefficients = coat.coefficients;
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(basis.kind);
+  const auto in_air = make_reflectance_curve(material, options.color);
+  const auto under = make_under_coat_curve(material, options.color.working_space);
+  const auto metal_in_coat = make_metal_in_coat_curve(material, options.color.working_space);
+  out["coat"] = {{"weight", coat.input.weight},
+                 {"ior", coat.input.ior},
+                 {"roughness", coat.input.roughness},
+                 {"color", coat.input.color}};
+  const auto sum = [](const runtime::CoatedFresnel& lobes) {
+    return runtime::Rgb{lobes.base[0] + lobes.coat, lobes.base[1] + lobes.coat,
+                        lobes.base[2] + lobes.coat};
+  };
+  if (!options.mu.empty()) {
+    out["mu"] = options.mu;
+    ordered_json total = ordered_json::array(), base = ordered_json::array(),
+                 coat_lobe = ordered_json::array(), exact = ordered_json::array();
+    const LayeredCurve both(*in_air, *under, coat.input.weight, coat.input.ior, coat.input.color);
+    for (const double mu : options.mu) {
+      const auto lobes =
+          runtime::evaluate_coated_fresnel(compiled.coefficients, coefficients, shader_basis, mu);
+      total.push_back(sum(lobes));
+      base.push_back(lobes.base);
+      coat_lobe.push_back(lobes.coat);
+      exact.push_back(both.at(mu));
+    }
+    out["F"] = std::move(total);
+    out["F_base"] = std::move(base);
+    out["F_coat"] = std::move(coat_lobe);
+    out["F_exact"] = std::move(exact);
+  }
+  if (options.ndotv.empty()) return;
+  const Lut lut = stored_as(preintegrate_lut(basis, options.lut.bake), options.lut.precision);
+  const runtime::AnalyticLutCoefficients& analytic = runtime::shipped_analytic_lut(basis.kind);
+  out["ndotv"] = options.ndotv;
+  out["roughness"] = options.roughness;
+  out["lut"] = {{"size", lut.size},
+                {"samples", lut.samples},
+                {"precision", lut_precision_name(options.lut.precision)}};
+  ordered_json total = ordered_json::array(), base = ordered_json::array(),
+               coat_lobe = ordered_json::array(), closed_form = ordered_json::array();
+  for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
+    const double ndotv = options.ndotv[i];
+    const auto lobes = runtime::evaluate_coated_fbar(compiled.coefficients, coefficients,
+                                                     lut.view(), ndotv, options.roughness[i]);
+    total.push_back(sum(lobes));
+    base.push_back(lobes.base);
+    coat_lobe.push_back(lobes.coat);
+    closed_form.push_back(sum(runtime::evaluate_coated_preintegrated(
+        compiled.coefficients, coefficients,
+        runtime::preintegrated_basis_analytic(analytic, ndotv, options.roughness[i]),
+        runtime::preintegrated_basis_analytic(analytic, ndotv, coefficients.roughness), ndotv)));
+  }
+  out["Fbar"] = std::move(total);
+  out["Fbar_base"] = std::move(base);
+  out["Fbar_coat"] = std::move(coat_lobe);
+  out["Fbar_analytic"] = std::move(closed_form);
+  if (options.no_reference) return;
+  // The split-sum layering with exact curves: each lobe's exact curve preintegrated, combined
+  // as the shaders combine the table's values (what the basis and the table cost, alone).
+  const TabulatedCurve in_air_exact(*in_air);
+  const TabulatedCurve under_exact(*under);
+  const CoatCurve coat_exact(coat.input.ior);
+  ordered_json split_sum = ordered_json::array(), monte_carlo = ordered_json::array(),
+               standard_error = ordered_json::array();
+  for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
+    const double ndotv = options.ndotv[i];
+    const SplitSumEstimator base_lobe(ndotv, options.roughness[i]);
+    const double coat_fbar =
+        SplitSumEstimator(ndotv, coat.input.roughness).integrate(coat_exact)[0];
+    const Rgb base_part = runtime::layered_base(
+        base_lobe.integrate(in_air_exact), base_lobe.integrate(under_exact),
+        runtime::coat_tint(coefficients, ndotv), coat_fbar, coat.input.weight);
+    const double coat_part = coat.input.weight * coat_fbar;
+    split_sum.push_back(
+        Rgb{base_part[0] + coat_part, base_part[1] + coat_part, base_part[2] + coat_part});
+    const LayeredEstimate estimate =
+        layered_albedo({*in_air, *metal_in_coat, coat.input, options.roughness[i]}, ndotv);
+    monte_carlo.push_back(estimate.mean);
+    standard_error.push_back(estimate.standard_error);
+  }
+  out["Fbar_reference"] = std::move(split_sum);
+  out["Fbar_layered_reference"] = std::move(monte_carlo);
+  out["Fbar_layered_reference_standard_error"] = std::move(standard_error);
+}
+
 // The material to evaluate: the file's only one, or the document's material named --material.
 std::optional<Material> chosen_material(const EvalOptions& options) {
   MaterialInput input = read_material_input(options.file);
@@ -291,6 +388,22 @@ int run_eval(const EvalOptions& options) {
 
   const runtime::BasisView basis = runtime::shipped_basis(options.lut.basis);
   const ColorOptions color = options.color;
+  if (material->coat) {
+    if (quad) {
+      fmt::print(stderr,
+                 "matc eval: error: --quad-light: {} is coated; area lights evaluate bare metals "
+                 "only (docs/coating.md)\n",
+                 material->name);
+      return kExitUsageError;
+    }
+    ordered_json out;
+    out["name"] = material->name;
+    out["basis"] = runtime::basis_name(basis.kind);
+    out["color_space"] = color_space_name(color.working_space);
+    add_coated(options, compile_material(*material, basis, color), basis, out);
+    fmt::print("{}", format_json(out));
+    return kExitSuccess;
+  }
   const auto curve = make_reflectance_curve(*material, color);
   const LabelledCoefficients coefficients = {{"", solve_coefficients(*curve, basis)}};
 

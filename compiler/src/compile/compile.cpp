@@ -80,8 +80,8 @@ std::unique_ptr<ReflectanceCurve> make_reflectance_curve(const Material& materia
   return apply_gamut_mapping(std::move(curve), sampled, color, saturation);
 }
 
-std::unique_ptr<ReflectanceCurve> make_under_coat_curve(const Material& material,
-                                                        ColorSpace working_space) {
+std::unique_ptr<ReflectanceCurve> make_metal_in_coat_curve(const Material& material,
+                                                           ColorSpace working_space) {
   const CoatInput& coat = material.coat.value();
   const ColorSpace space = std::holds_alternative<SpectralInput>(material.model)
                                ? working_space
@@ -109,9 +109,15 @@ std::unique_ptr<ReflectanceCurve> make_under_coat_curve(const Material& material
       channel = under_coat(channel, coat.ior);
     metal_in_coat = std::make_unique<IorCurve>(ior);
   }
-  auto curve = std::make_unique<UnderCoatCurve>(std::move(metal_in_coat), coat.ior);
-  if (space == working_space) return curve;
-  return std::make_unique<TransformedCurve>(std::move(curve), rgb_to_rgb(space, working_space));
+  if (space == working_space) return metal_in_coat;
+  return std::make_unique<TransformedCurve>(std::move(metal_in_coat),
+                                            rgb_to_rgb(space, working_space));
+}
+
+std::unique_ptr<ReflectanceCurve> make_under_coat_curve(const Material& material,
+                                                        ColorSpace working_space) {
+  return std::make_unique<UnderCoatCurve>(make_metal_in_coat_curve(material, working_space),
+                                          material.coat.value().ior);
 }
 
 namespace {

@@ -34,8 +34,9 @@ constexpr std::array<std::string_view, 4> kCoatFields = {"weight", "ior", "rough
 constexpr Range kReflectivityRange{0.0, 1.0, false};
 constexpr Range kUnitRange{0.0, 1.0};
 constexpr Range kIorRange{0.0, kMaxIorComponent};
-// OpenPBR's coat_ior range: 1 (no interface) to 3 (beyond any lacquer or varnish).
-constexpr Range kCoatIorRange{1.0, 3.0};
+// OpenPBR's coat_ior range, 1 (no interface) to 3, from 1.05: nearer 1 the coat's Fresnel is a
+// spike at grazing that no basis made for Fresnel curves holds (docs/coating.md).
+constexpr Range kCoatIorRange{kMinCoatIor, 3.0};
 
 class MaterialReader : LocatedJsonReader {
  public:

@@ -45,6 +45,7 @@ Rgb CoatCurve::at(double mu) const {
 
 Rgb LayeredCurve::at(double mu) const {
   const double f = coat_fresnel(mu, coat_ior_);
+  if (part_ == Part::coat) return {weight_ * f, weight_ * f, weight_ * f};
   const Rgb air = in_air_.at(mu);
   const Rgb under = under_coat_.at(mu);
   const double mu_inside = refracted_cosine(mu, coat_ior_);
@@ -52,7 +53,7 @@ Rgb LayeredCurve::at(double mu) const {
   for (std::size_t c = 0; c < 3; ++c) {
     const double tinted = coat_round_trip_transmittance(color_[c], mu_inside) * under[c];
     const double base = (1.0 - weight_) * air[c] + weight_ * coated_base_reflectance(f, tinted);
-    result[c] = weight_ * f + base;
+    result[c] = part_ == Part::base ? base : weight_ * f + base;
   }
   return result;
 }

@@ -71,8 +71,12 @@ std::unique_ptr<ReflectanceCurve> make_working_space_curve(const Material& mater
 std::unique_ptr<ReflectanceCurve> make_reflectance_curve(const Material& material,
                                                          const ColorOptions& color = {});
 
-// The metal of a coated material seen through its coat (UnderCoatCurve) in the working space:
-// per channel in the material's input space, then converted. Requires material.coat.
+// The metal of a coated material against its coat, at its own cosine (the index relative to the
+// coat), in the working space: per channel in the material's input space, then converted.
+// Requires material.coat.
+std::unique_ptr<ReflectanceCurve> make_metal_in_coat_curve(const Material& material,
+                                                           ColorSpace working_space);
+// The same seen through the coat from air (UnderCoatCurve): what its coefficients are fitted to.
 std::unique_ptr<ReflectanceCurve> make_under_coat_curve(const Material& material,
                                                         ColorSpace working_space);
 

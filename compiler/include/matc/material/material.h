@@ -48,9 +48,13 @@ using MaterialModel = std::variant<ArtisticInput, IorInput, SpectralInput, F82Ti
 // A clear (or tinted) dielectric coat over the metal, named and defaulted as OpenPBR's coat_*
 // (docs/coating.md): what is absent from a `coat` block takes these values, except the weight,
 // which is 1 (a block that names a coat means one; OpenPBR's 0 is the absent coat).
+// The lowest coat index a material may give (docs/coating.md: nearer 1 the coat's Fresnel is a
+// spike at grazing that no basis made for Fresnel curves holds).
+inline constexpr double kMinCoatIor = 1.05;
+
 struct CoatInput {
   double weight = 1.0;     // coverage in [0, 1]
-  double ior = 1.6;        // the coat's real index of refraction in [1, 3]
+  double ior = 1.6;        // the coat's real index of refraction in [kMinCoatIor, 3]
   double roughness = 0.0;  // perceptual, in [0, 1]; the coat lobe's alpha = roughness^2
   // The coat's transmittance over the round trip at normal incidence, per channel in [0, 1]:
   // what it leaves of the base seen head on (Standard Surface's coat_color); longer paths at

@@ -67,13 +67,16 @@ class CoatCurve final : public ReflectanceCurve {
 // values); both must outlive this.
 class LayeredCurve final : public ReflectanceCurve {
  public:
+  // Both lobes, or one: the split-sum reference integrates each over its own roughness.
+  enum class Part { both, base, coat };
   LayeredCurve(const ReflectanceCurve& in_air, const ReflectanceCurve& under_coat, double weight,
-               double coat_ior, const Rgb& color)
+               double coat_ior, const Rgb& color, Part part = Part::both)
       : in_air_(in_air),
         under_coat_(under_coat),
         weight_(weight),
         coat_ior_(coat_ior),
-        color_(color) {}
+        color_(color),
+        part_(part) {}
   Rgb at(double mu) const override;
 
  private:
@@ -82,6 +85,7 @@ class LayeredCurve final : public ReflectanceCurve {
   double weight_;
   double coat_ior_;
   Rgb color_;
+  Part part_;
 };
 
 }  // namespace matc
