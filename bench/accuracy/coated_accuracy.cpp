@@ -9,15 +9,21 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 #include <string_view>
 
 #include <fmt/core.h>
 
 #include "error_totals.h"
 #include "matc/compile/compile.h"
+#include "matc/lut/layered_reference.h"
+#include "matc/lut/preintegrate.h"
+#include "matc/lut/split_sum_reference.h"
+#include "matc/material/material_input.h"
 #include "matc/optics/coat.h"
 #include "matc/optics/gulbrandsen.h"
 #include "matc/optics/presets.h"
+#include "matc/runtime/coat.h"
 #include "matc/runtime/shipped_bases.h"
 
 namespace {
@@ -153,9 +159,62 @@ void print_artistic_grid() {
   }
 }
 
+// The coated examples as compiled (`matc` defaults): F against the exact layered curve, Fbar (one
+// fetch per lobe) against the split-sum layering with exact curves and against the Monte-Carlo
+// layered reference, over view cosines at the material's own roughness.
+void print_examples(std::span<char*> files) {
+  const auto& basis = matc::runtime::shipped_basis(matc::runtime::kDefaultBasis);
+  const matc::Lut lut = matc::preintegrate_lut(basis, {});
+  fmt::print(
+      "| material | coat (index, roughness, colour) | F max error | Fbar max error, split-sum "
+      "layering | Fbar against the Monte-Carlo layered reference: max, at NdotV |\n"
+      "|---|---|---:|---:|---:|\n");
+  for (char* file : files) {
+    const matc::MaterialInput input = matc::read_material_input(file);
+    for (const matc::Material& material : input.materials) {
+      if (!material.coat) continue;
+      const matc::CompiledMaterial compiled = matc::compile_material(material, basis);
+      const matc::CompiledCoat& coat = *compiled.coat;
+      const auto in_air = matc::make_reflectance_curve(material);
+      const auto under = matc::make_under_coat_curve(material, matc::kDefaultColorSpace);
+      const auto metal_in_coat = matc::make_metal_in_coat_curve(material, matc::kDefaultColorSpace);
+      const matc::TabulatedCurve in_air_table(*in_air), under_table(*under);
+      const double roughness = material.roughness.value_or(0.0);
+      double split_sum = 0.0, monte_carlo = 0.0, worst_ndotv = 0.0;
+      for (const double ndotv : {0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0}) {
+        const auto lobes = matc::runtime::evaluate_coated_fbar(
+            compiled.coefficients, coat.coefficients, lut.view(), ndotv, roughness);
+        const Rgb reference =
+            matc::layered_split_sum(in_air_table, under_table, coat.input, ndotv, roughness);
+        const matc::LayeredEstimate layered =
+            matc::layered_albedo({*in_air, *metal_in_coat, coat.input, roughness}, ndotv, 1u << 15);
+        for (std::size_t c = 0; c < 3; ++c) {
+          const double ours = lobes.base[c] + lobes.coat;
+          split_sum = std::max(split_sum, std::abs(ours - reference[c]));
+          if (std::abs(ours - layered.mean[c]) > monte_carlo) {
+            monte_carlo = std::abs(ours - layered.mean[c]);
+            worst_ndotv = ndotv;
+          }
+        }
+      }
+      fmt::print("| {} | {}, {}, ({:.2f}, {:.2f}, {:.2f}) | {:.4f} | {:.4f} | {:.3f} at {:.2f} |\n",
+                 material.name, coat.input.ior, coat.input.roughness, coat.input.color[0],
+                 coat.input.color[1], coat.input.color[2],
+                 matc::worst_channel(coat.layered_error.max_abs), split_sum, monte_carlo,
+                 worst_ndotv);
+    }
+  }
+}
+
 }  // namespace
 
-int main() {
+// No arguments: the measured metals' and the artistic grid's tables. --examples FILE...: the
+// coated examples' table.
+int main(int argc, char** argv) {
+  if (argc > 1 && std::string_view(argv[1]) == "--examples") {
+    print_examples(std::span<char*>(argv + 2, static_cast<std::size_t>(argc - 2)));
+    return 0;
+  }
   print_measured();
   print_artistic_grid();
   return 0;

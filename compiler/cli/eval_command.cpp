@@ -312,24 +312,14 @@ void add_coated(const EvalOptions& options, const CompiledMaterial& compiled,
   out["Fbar_coat"] = std::move(coat_lobe);
   out["Fbar_analytic"] = std::move(closed_form);
   if (options.no_reference) return;
-  // The split-sum layering with exact curves: each lobe's exact curve preintegrated, combined
-  // as the shaders combine the table's values (what the basis and the table cost, alone).
   const TabulatedCurve in_air_exact(*in_air);
   const TabulatedCurve under_exact(*under);
-  const CoatCurve coat_exact(coat.input.ior);
   ordered_json split_sum = ordered_json::array(), monte_carlo = ordered_json::array(),
                standard_error = ordered_json::array();
   for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
     const double ndotv = options.ndotv[i];
-    const SplitSumEstimator base_lobe(ndotv, options.roughness[i]);
-    const double coat_fbar =
-        SplitSumEstimator(ndotv, coat.input.roughness).integrate(coat_exact)[0];
-    const Rgb base_part = runtime::layered_base(
-        base_lobe.integrate(in_air_exact), base_lobe.integrate(under_exact),
-        runtime::coat_tint(coefficients, ndotv), coat_fbar, coat.input.weight);
-    const double coat_part = coat.input.weight * coat_fbar;
     split_sum.push_back(
-        Rgb{base_part[0] + coat_part, base_part[1] + coat_part, base_part[2] + coat_part});
+        layered_split_sum(in_air_exact, under_exact, coat.input, ndotv, options.roughness[i]));
     const LayeredEstimate estimate =
         layered_albedo({*in_air, *metal_in_coat, coat.input, options.roughness[i]}, ndotv);
     monte_carlo.push_back(estimate.mean);

@@ -11,8 +11,11 @@
 #include "errors.h"
 #include "matc/base/json_format.h"
 #include "matc/emit/material_json.h"
+#include "matc/lut/layered_reference.h"
 #include "matc/lut/split_sum_reference.h"
+#include "matc/optics/coat.h"
 #include "matc/optics/fresnel.h"
+#include "matc/runtime/coat.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/lut.h"
 #include "matc/runtime/shader_basis.h"
@@ -31,6 +34,13 @@ CompiledPointer compile_loaded(const LoadedMaterialPointer& material, runtime::B
     py::gil_scoped_release release;
     result->compiled = compile_material(material->material, runtime::shipped_basis(basis), color);
     result->exact = make_reflectance_curve(material->material, color);
+    if (const auto& coat = result->compiled.coat) {
+      result->in_air = result->exact;
+      result->under_coat = make_under_coat_curve(material->material, color.working_space);
+      result->exact =
+          std::make_shared<LayeredCurve>(*result->in_air, *result->under_coat, coat->input.weight,
+                                         coat->input.ior, coat->input.color);
+    }
   }
   result->basis = basis;
   result->material = material;
@@ -75,10 +85,36 @@ py::object artistic_dict(const CompiledMaterial& compiled) {
   return out;
 }
 
+// Both lobes' F (or Fbar) summed, as matc eval's F and Fbar for a coated material.
+Rgb lobes_sum(const runtime::CoatedFresnel& lobes) {
+  return {lobes.base[0] + lobes.coat, lobes.base[1] + lobes.coat, lobes.base[2] + lobes.coat};
+}
+
+py::object coat_dict(const CompiledMaterial& compiled) {
+  if (!compiled.coat) return py::none();
+  const CompiledCoat& coat = *compiled.coat;
+  py::dict out;
+  out["weight"] = coat.input.weight;
+  out["ior"] = coat.input.ior;
+  out["roughness"] = coat.input.roughness;
+  out["color"] = vector_array(coat.input.color);
+  out["under_coat_coefficients"] = matrix_array(coat.coefficients.under_coat);
+  std::array<double, runtime::kBasisSize> coat_coefficients = coat.coefficients.coat;
+  out["coat_coefficients"] = vector_array(coat_coefficients);
+  out["layered_max_error"] = vector_array(coat.layered_error.max_abs);
+  return out;
+}
+
 py::array_t<double> fresnel(const CompiledResult& result, const DoubleArray& mu) {
   check_unit_interval("mu", mu);
   const runtime::ShaderBasis& basis = runtime::shipped_shader_basis(result.basis);
   const runtime::Coefficients& coefficients = result.compiled.coefficients;
+  if (const auto& coat = result.compiled.coat) {
+    return map_values<3>(mu, [&](double cosine) {
+      return lobes_sum(
+          runtime::evaluate_coated_fresnel(coefficients, coat->coefficients, basis, cosine));
+    });
+  }
   return map_value_chunks<3>(mu, [&](const double* cosines, std::size_t count, double* rgb) {
     runtime::evaluate_fresnel(coefficients, basis, {cosines, count}, {rgb, 3 * count});
   });
@@ -112,6 +148,11 @@ py::array_t<double> fbar(const CompiledResult& result, const DoubleArray& ndotv,
   }
   const runtime::LutView view = table->lut->view();
   const runtime::Coefficients& coefficients = result.compiled.coefficients;
+  if (const auto& coat = result.compiled.coat) {
+    return map_pairs<3>(ndotv, roughness, [&](double n, double r) {
+      return lobes_sum(runtime::evaluate_coated_fbar(coefficients, coat->coefficients, view, n, r));
+    });
+  }
   return map_pairs<3>(ndotv, roughness, [&](double n, double r) {
     return runtime::evaluate_fbar(coefficients, view, n, r);
   });
@@ -122,10 +163,20 @@ py::array_t<double> fbar_reference(const CompiledResult& result, const DoubleArr
   check_unit_interval("ndotv", ndotv);
   check_unit_interval("roughness", roughness);
   checked_count("samples", samples, 16, std::size_t{1} << 26);
-  std::optional<TabulatedCurve> tabulated;
+  std::optional<TabulatedCurve> tabulated, under_coat;
   {
     py::gil_scoped_release release;
-    tabulated.emplace(*result.exact);
+    tabulated.emplace(result.in_air ? *result.in_air : *result.exact);
+    if (result.under_coat) under_coat.emplace(*result.under_coat);
+  }
+  if (const auto& coat = result.compiled.coat) {
+    // The split-sum layering with exact curves, as matc eval's Fbar_reference.
+    return map_pairs<3>(
+        ndotv, roughness,
+        [&](double n, double r) {
+          return layered_split_sum(*tabulated, *under_coat, coat->input, n, r);
+        },
+        1);
   }
   // Each point is a Monte-Carlo integral: worth a thread from two points on.
   return map_pairs<3>(
@@ -208,6 +259,10 @@ void register_compiled_material(py::module_& module) {
       .def_property_readonly(
           "accuracy", [](const CompiledResult& r) { return accuracy_dict(r.compiled.accuracy); },
           "Max and RMS |F - exact| per channel for ours, Schlick's and F82-tint's")
+      .def_property_readonly(
+          "coat", [](const CompiledResult& r) { return coat_dict(r.compiled); },
+          "A coated material's coat (docs/coating.md): its inputs, the under-coat and coat "
+          "coefficients and the layered max error; None for a bare metal")
       .def_property_readonly("saturation",
                              [](const CompiledResult& r) { return r.compiled.saturation; })
       .def_property_readonly("fresnel_nonnegative",
@@ -217,8 +272,10 @@ void register_compiled_material(py::module_& module) {
           "Warnings and notes, as matc prints them")
       .def("fresnel", &fresnel, py::arg("mu"),
            "F(mu) = max(0, sum c_i b_i(mu)) as the shaders compute it (the shaders' polynomial "
-           "basis)")
-      .def("exact", &exact, py::arg("mu"), "The exact curve the coefficients were fitted to")
+           "basis); for a coated material both lobes' sum")
+      .def("exact", &exact, py::arg("mu"),
+           "The exact curve the coefficients were fitted to; for a coated material the exact "
+           "layered reflectance")
       .def("schlick", &schlick, py::arg("mu"), "Schlick's curve with the exact F0")
       .def("fbar", &fbar, py::arg("ndotv"), py::arg("roughness"), py::arg("table") = nullptr,
            "The preintegrated Fresnel sum c_i bbar_i(NdotV, roughness), one table fetch as a "

@@ -15,7 +15,10 @@ struct CompiledResult {
   CompiledMaterial compiled;
   runtime::BasisKind basis = runtime::kDefaultBasis;
   LoadedMaterialPointer material;
-  std::shared_ptr<const ReflectanceCurve> exact;  // what the coefficients were fitted to
+  // What the coefficients were fitted to; for a coated material the exact layered curve, which
+  // refers to the two curves beside it.
+  std::shared_ptr<const ReflectanceCurve> exact;
+  std::shared_ptr<const ReflectanceCurve> in_air, under_coat;  // coated materials only
   Diagnostics diagnostics;  // the input's warnings and notes, then the fit's (as the CLI's)
 };
 

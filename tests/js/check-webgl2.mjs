@@ -132,6 +132,28 @@ void main() {
 }
 `;
 
+// The same for coated material `name` through its own functions: both lobes summed, the coat's
+// texel sampled at the coat's roughness.
+const coatedMain = (name) => `
+uniform sampler2D matc_lut;
+uniform sampler2D matc_queries;
+out vec4 matc_result;
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 query = texelFetch(matc_queries, ivec2(pixel.x, 0), 0);  // mu, NdotV, roughness
+  float coat_roughness = matc_coat_roughness_${name};
+  vec4 bbar = pixel.y == 1 ? texture(matc_lut, matc_lut_texcoord(query.y, query.z))
+                           : matc_preintegrated_basis_analytic(query.y, query.z);
+  vec4 coat_bbar = pixel.y == 1 ? texture(matc_lut, matc_lut_texcoord(query.y, coat_roughness))
+                                : matc_preintegrated_basis_analytic(query.y, coat_roughness);
+  vec3 value = pixel.y == 0
+      ? matc_fresnel_${name}(query.x) + matc_coat_fresnel_${name}(query.x)
+      : matc_fresnel_preintegrated_${name}(bbar, coat_bbar, query.y) +
+            matc_coat_fresnel_preintegrated_${name}(coat_bbar);
+  matc_result = vec4(value, 1.0);
+}
+`;
+
 const dir = mkdtempSync(join(tmpdir(), "matc-webgl2-"));
 try {
   const queries = validationQueries();
@@ -140,7 +162,7 @@ try {
       ["--lut-precision", "f32", "--coefficient-table-precision", "f32"], queries);
   const cases = materials.map((m) => ({
     name: m.name, F: m.F, Fbar: m.Fbar, FbarAnalytic: m.FbarAnalytic, tolerance: kFresnelTolerance,
-    source: m.snippet + main(`matc_coefficients_${m.name}`) }));
+    source: m.snippet + (m.coated ? coatedMain(m.name) : main(`matc_coefficients_${m.name}`)) }));
   for (const metal of textured) {
     cases.push({ name: metal.name, F: metal.F, Fbar: metal.Fbar, FbarAnalytic: metal.FbarAnalytic,
                  tolerance: kPreintegratedTolerance,

@@ -62,8 +62,9 @@ export function compileAndEvaluate(matc, materialsDir, out, language, options, q
     "--ndotv", list(queries.ndotv), "--roughness", list(queries.roughness)]));
   const materials = files.map((file) => {
     const evaluated = evaluate([file]);
+    // A coated material's F and Fbar are its two lobes' sum (docs/coating.md).
     return { name: evaluated.name, F: evaluated.F, Fbar: evaluated.Fbar,
-             FbarAnalytic: evaluated.Fbar_analytic,
+             FbarAnalytic: evaluated.Fbar_analytic, coated: "coat" in evaluated,
              snippet: readFileSync(join(out, `${evaluated.name}.${language}`), "utf8") };
   });
   const textured = kTexturedMetals.map(([reflectivity, edgeTint]) => {

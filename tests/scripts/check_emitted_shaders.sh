@@ -29,6 +29,14 @@ check() {  # description, command...
 for snippet in *.glsl; do
   [ "$snippet" = matc_fresnel.glsl ] && continue
   name=${snippet%.glsl}
+  # A coated material's (docs/coating.md) preintegrated base takes the coat's texel and NdotV
+  # too, and it has the coat lobe's function beside it.
+  glsl_fbar="matc_fresnel_preintegrated_$name(bbar)"
+  hlsl_fbar="matc_fresnel_preintegrated_$name(bbar)"
+  if grep -q "matc_coat_fresnel_$name" "$snippet"; then
+    glsl_fbar="(matc_fresnel_preintegrated_$name(bbar, bbar, values[i].y) + matc_coat_fresnel_$name(values[i].x))"
+    hlsl_fbar="(matc_fresnel_preintegrated_$name(bbar, bbar, v.y) + matc_coat_fresnel_$name(v.x))"
+  fi
   # GLSL: a compute shader calling both of the material's functions, for Vulkan (SPIR-V) ...
   {
     echo "#version 450"
@@ -40,7 +48,7 @@ layout(binding = 1) uniform sampler2D matc_lut;
 void main() {
   uint i = gl_GlobalInvocationID.x;
   vec4 bbar = texture(matc_lut, matc_lut_texcoord(values[i].y, values[i].z));
-  values[i] = vec4(matc_fresnel_$name(values[i].x) + matc_fresnel_preintegrated_$name(bbar) *
+  values[i] = vec4(matc_fresnel_$name(values[i].x) + $glsl_fbar *
                    matc_energy_compensation(matc_coefficients_$name, bbar) +
                    matc_preintegrated_basis_embedded(values[i].y, values[i].z).xyz, 1.0);
 }
@@ -68,7 +76,7 @@ SamplerState matc_lut_sampler : register(s2);
 void main(uint3 id : SV_DispatchThreadID) {
   float4 v = values[id.x];
   float4 bbar = matc_lut.SampleLevel(matc_lut_sampler, matc_lut_texcoord(v.y, v.z), 0.0);
-  values[id.x] = float4(matc_fresnel_$name(v.x) + matc_fresnel_preintegrated_$name(bbar) *
+  values[id.x] = float4(matc_fresnel_$name(v.x) + $hlsl_fbar *
                         matc_energy_compensation(matc_coefficients_$name, bbar) +
                         matc_preintegrated_basis_embedded(v.y, v.z).xyz, 1.0);
 }

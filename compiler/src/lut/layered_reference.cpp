@@ -5,7 +5,9 @@
 #include <numbers>
 #include <random>
 
+#include "matc/lut/split_sum_reference.h"
 #include "matc/optics/coat.h"
+#include "matc/runtime/coat.h"
 #include "matc/runtime/vec3.h"
 
 namespace matc {
@@ -120,6 +122,21 @@ Rgb trace_coated(const LayeredSurface& surface, const Vec3& w, std::mt19937_64& 
 }
 
 }  // namespace
+
+Rgb layered_split_sum(const ReflectanceCurve& in_air, const ReflectanceCurve& under_coat,
+                      const CoatInput& coat, double ndotv, double base_roughness) {
+  const SplitSumEstimator base_lobe(ndotv, base_roughness);
+  const double coat_fbar =
+      SplitSumEstimator(ndotv, coat.roughness).integrate(CoatCurve(coat.ior))[0];
+  runtime::CoatCoefficients tint_only;
+  tint_only.ior = coat.ior;
+  tint_only.color = coat.color;
+  const Rgb base =
+      runtime::layered_base(base_lobe.integrate(in_air), base_lobe.integrate(under_coat),
+                            runtime::coat_tint(tint_only, ndotv), coat_fbar, coat.weight);
+  const double coat_part = coat.weight * coat_fbar;
+  return {base[0] + coat_part, base[1] + coat_part, base[2] + coat_part};
+}
 
 LayeredEstimate layered_albedo(const LayeredSurface& surface, double ndotv, std::size_t paths,
                                std::uint64_t seed) {

@@ -72,11 +72,24 @@ class Importer {
   static std::string connection_advice(const MaterialXInput& input,
                                        const MaterialXShadingModel& model,
                                        const MaterialXInputSpec& spec) {
+    const std::string& file = input.image_file;
+    if (spec.name == model.coat_roughness.name) {
+      return "the coat's roughness is left out of the imported material (its default is used)";
+    }
+    if (spec.name == model.coat_weight.name || spec.name == model.coat_color.name ||
+        spec.name == model.coat_ior.name) {
+      std::string advice = "matc imports constant coats only, so this material is skipped";
+      if (!file.empty()) {
+        advice += fmt::format(
+            "; it is a plain image read of '{}', and `matc bake` does not bake coat maps yet",
+            file);
+      }
+      return advice;
+    }
     const bool fresnel_input = spec.name != model.roughness.name;
     std::string advice = fresnel_input
                              ? "matc imports constant metals only, so this material is skipped"
                              : "the roughness is left out of the imported material";
-    const std::string& file = input.image_file;
     if (!file.empty() && fresnel_input && model.bakes_image_maps) {
       advice += fmt::format(
           "; it is a plain image read of '{}': `matc bake --reflectivity {} --edge-tint G` bakes "
@@ -117,6 +130,9 @@ class Importer {
     const auto roughness = read(shader, *model, model->roughness, roughness_connected);
     if (!weight || !color || !metalness || !edge_weight || !edge_color) return;
     if (!roughness && !roughness_connected) return;
+    bool coat_connected = false;
+    const auto coat_weight = read(shader, *model, model->coat_weight, coat_connected);
+    if (!coat_weight) return;
 
     const double metal = metalness->value[0];
     const std::string metal_field = fmt::format("{}.{}", element_name, model->metalness.name);
@@ -180,8 +196,59 @@ class Importer {
       material_json["f82_tint"] = {{"f0", rgb(f0)}, {"tint", rgb(edge)}};
     }
     if (roughness) material_json["roughness"] = roughness->value[0];
+    if (coat_weight->value[0] != 0.0) {
+      auto coat =
+          read_coat(shader, *model, element_name, coat_weight->value[0], coat_weight->location);
+      if (!coat) return;
+      material_json["coat"] = std::move(*coat);
+    }
     if (material_json["name"].get<std::string>().empty()) return;  // a name clash, reported
     add_material(material_json, shader.material);
+  }
+
+  // The coat block of a material whose coat weight is above 0: its weight, colour, roughness and
+  // index, checked or clamped to what matc compiles. Nullopt after an error, or a warning for a
+  // connected input that skips the material.
+  std::optional<ordered_json> read_coat(const MaterialXShader& shader,
+                                        const MaterialXShadingModel& model,
+                                        const std::string& element_name, double weight,
+                                        const SourceLocation& weight_location) {
+    bool connected = false;
+    const auto color = read(shader, model, model.coat_color, connected);
+    bool roughness_connected = false;
+    const auto roughness = read(shader, model, model.coat_roughness, roughness_connected);
+    const auto ior = read(shader, model, model.coat_ior, connected);
+    if (!color || !ior || (!roughness && !roughness_connected)) return std::nullopt;
+    const auto field = [&](const MaterialXInputSpec& spec) {
+      return fmt::format("{}.{}", element_name, spec.name);
+    };
+    if (weight < 0.0 || weight > 1.0) {
+      result_.diagnostics.error(weight_location, field(model.coat_weight),
+                                fmt::format("{} is out of range", weight), "a number in [0, 1]");
+      return std::nullopt;
+    }
+    const double coat_roughness =
+        roughness ? roughness->value[0] : model.coat_roughness.default_value[0];
+    if (coat_roughness < 0.0 || coat_roughness > 1.0) {
+      result_.diagnostics.error(roughness->location, field(model.coat_roughness),
+                                fmt::format("{} is out of range", coat_roughness),
+                                "a number in [0, 1]");
+      return std::nullopt;
+    }
+    Rgb tint = color->value;
+    clamp_channels(tint, 0.0, 1.0, color->location, element_name, "coat colour",
+                   "[0, 1], a transmittance");
+    double index = ior->value[0];
+    if (index < kMinCoatIor || index > 3.0) {
+      const double clamped = std::clamp(index, kMinCoatIor, 3.0);
+      result_.diagnostics.warning(
+          ior->location, field(model.coat_ior), fmt::format("{} is clamped to {}", index, clamped),
+          fmt::format("[{}, 3], the coat indices matc compiles (docs/coating.md)", kMinCoatIor));
+      index = clamped;
+    }
+    const auto rgb = [](const Rgb& v) { return ordered_json::array({v[0], v[1], v[2]}); };
+    return ordered_json{
+        {"weight", weight}, {"ior", index}, {"roughness", coat_roughness}, {"color", rgb(tint)}};
   }
 
   void clamp_channels(Rgb& values, double low, double high, const SourceLocation& location,

@@ -38,6 +38,11 @@ struct MaterialXShadingModel {
   MaterialXInputSpec edge_weight;
   MaterialXInputSpec edge_color;
   MaterialXInputSpec roughness;
+  // The coat (docs/coating.md): carried when its weight is above 0.
+  MaterialXInputSpec coat_weight;
+  MaterialXInputSpec coat_color;
+  MaterialXInputSpec coat_roughness;
+  MaterialXInputSpec coat_ior;
   std::array<NotCarriedInput, 10> not_carried;
   ImportedModel imported;
   bool edge_scaled_by_weight;

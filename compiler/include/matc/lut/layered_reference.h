@@ -28,6 +28,14 @@ struct LayeredEstimate {
 
 inline constexpr std::size_t kLayeredReferencePaths = 1u << 17;
 
+// The split-sum layering with exact curves (no basis, no table): each lobe's exact curve
+// preintegrated at its own roughness (`in_air` and `under_coat` at the base's, the coat's
+// dielectric at the coat's) and combined as the shaders combine the table's values
+// (runtime::layered_base). What the basis and the table cost, alone; `in_air` and `under_coat`
+// are best tabulated (TabulatedCurve), since each call integrates them.
+Rgb layered_split_sum(const ReflectanceCurve& in_air, const ReflectanceCurve& under_coat,
+                      const CoatInput& coat, double ndotv, double base_roughness);
+
 // The albedo seen from view cosine `ndotv`: (1 - weight) x the bare metal's + weight x the coated
 // surface's, from `paths` light paths (a fixed seed: the same numbers every run).
 LayeredEstimate layered_albedo(const LayeredSurface& surface, double ndotv,
