@@ -131,7 +131,7 @@ TEST(MaterialXImport, NotCarriedInputsAreNamedOnlyAwayFromTheirNeutralValue) {
   const std::string text = all_diagnostics(imported);
   EXPECT_EQ(text.find("Neutral: not carried"), std::string::npos) << text;
   EXPECT_EQ(text.find("Opaque: not carried"), std::string::npos) << text;
-  EXPECT_NE(text.find("Coated: not carried: coat_weight, geometry_opacity, geometry_thin_walled"),
+  EXPECT_NE(text.find("Coated: not carried: geometry_opacity, geometry_thin_walled"),
             std::string::npos)
       << text;
 }
@@ -267,6 +267,68 @@ TEST(MaterialXImport, NamesFollowMatcsRule) {
   EXPECT_EQ(sanitized_material_name(std::string(100, 'a')).size(), kMaxMaterialNameLength);
   for (const char* name : {"Chrome.polished", "__gold--1__", "9lives", "Ëlément", "..."})
     EXPECT_FALSE(material_name_problem(sanitized_material_name(name))) << name;
+}
+
+// MaterialX's own copper keeps its colour in coat_color over a white metal: with the coat carried
+// it imports as copper, the coat's inputs and the Standard Surface defaults in its coat block.
+TEST(MaterialXImport, StandardSurfaceCoatIsCarried) {
+  const auto imported = import_materialx(
+      document(surface("standard_surface",
+                       input("base", "float", "1") + input("specular", "float", "0") +
+                           input("metalness", "float", "1") + input("coat", "float", "1") +
+                           input("coat_color", "color3", "0.96, 0.38, 0.26"),
+                       "Copper")),
+      "c.mtlx");
+  ASSERT_EQ(imported.materials.size(), 1u) << all_diagnostics(imported);
+  const Material& material = imported.materials[0].material;
+  ASSERT_TRUE(material.coat);
+  EXPECT_EQ(material.coat->weight, 1.0);
+  EXPECT_EQ(material.coat->ior, 1.5);        // Standard Surface's coat_IOR default
+  EXPECT_EQ(material.coat->roughness, 0.1);  // ... and coat_roughness default
+  EXPECT_EQ(material.coat->color, (Rgb{0.96, 0.38, 0.26}));
+  EXPECT_EQ(all_diagnostics(imported).find("not carried"), std::string::npos)
+      << all_diagnostics(imported);
+  const CompiledMaterial compiled =
+      compile_material(material, runtime::shipped_basis(runtime::kDefaultBasis));
+  // A coloured metal, not a white mirror: head on, about the coat's colour.
+  EXPECT_GT(compiled.coat->layered_f0[0], 0.9);
+  EXPECT_LT(compiled.coat->layered_f0[1], 0.45);
+  EXPECT_LT(compiled.coat->layered_f0[2], 0.35);
+}
+
+TEST(MaterialXImport, OpenPbrCoatTakesItsDefaultsAndClampsTheIndex) {
+  const auto imported = import_materialx(
+      document(surface("open_pbr_surface", input("base_metalness", "float", "1") +
+                                               input("coat_weight", "float", "0.5") +
+                                               input("coat_ior", "float", "1.0"))),
+      "o.mtlx");
+  ASSERT_EQ(imported.materials.size(), 1u) << all_diagnostics(imported);
+  const CoatInput& coat = *imported.materials[0].material.coat;
+  EXPECT_EQ(coat.weight, 0.5);
+  EXPECT_EQ(coat.ior, kMinCoatIor);
+  EXPECT_EQ(coat.roughness, 0.0);  // OpenPBR's coat_roughness default
+  EXPECT_NE(all_diagnostics(imported).find("Metal.coat_ior: 1 is clamped to 1.05"),
+            std::string::npos)
+      << all_diagnostics(imported);
+}
+
+TEST(MaterialXImport, AConnectedCoatSkipsTheMaterialWithTheBakeHint) {
+  const auto imported = import_materialx(
+      document(
+          "  <image name=\"tint\" type=\"color3\">\n    <input name=\"file\" "
+          "type=\"filename\" value=\"tint.png\" />\n  </image>\n" +
+          surface("standard_surface",
+                  input("metalness", "float", "1") + input("coat", "float", "1") +
+                      "    <input name=\"coat_color\" type=\"color3\" nodename=\"tint\" />\n") +
+          surface("standard_surface", input("metalness", "float", "1"), "Bare")),
+      "t.mtlx");
+  const std::string text = all_diagnostics(imported);
+  ASSERT_EQ(imported.materials.size(), 1u) << text;
+  EXPECT_EQ(imported.materials[0].material.name, "Bare");
+  EXPECT_NE(text.find("matc imports constant coats only, so this material is skipped; it is a "
+                      "plain image read of 'tint.png'"),
+            std::string::npos)
+      << text;
 }
 
 }  // namespace
