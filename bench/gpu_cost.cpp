@@ -44,9 +44,10 @@ struct Comparison {
   bool enforced = true;          // false: a target not met yet (issue #28 stays open for it)
   // Ours with this basis instead of the default (the fitted bases' piecewise polynomials).
   std::optional<matc::runtime::BasisKind> basis = std::nullopt;
+  bool tinted_coat = false;  // ours_coated under a tinted coat instead of a clear one
 };
 
-const std::array<Comparison, 11> kComparisons = {{
+const std::array<Comparison, 16> kComparisons = {{
     {"F alone, compiled coefficients", FresnelQuantity::direct, FresnelModel::ours,
      FresnelModel::schlick, std::nullopt},
     {"one GGX light, compiled coefficients", FresnelQuantity::ggx_light, FresnelModel::ours,
@@ -70,6 +71,23 @@ const std::array<Comparison, 11> kComparisons = {{
      "Schlick's one shape)",
      FresnelQuantity::quad_light_following, FresnelModel::ours, FresnelModel::schlick,
      std::nullopt},
+    // Issue #42: a coated metal's two lobes against a bare one under a Schlick coat lobe.
+    {"one GGX light, coated (docs/coating.md), clear coat: both lobes vs ours bare under a "
+     "Schlick coat lobe",
+     FresnelQuantity::ggx_light, FresnelModel::ours_coated, FresnelModel::ours_with_schlick_coat,
+     1.25},
+    {"one GGX light, coated, tinted coat (Beer's law, three exponentials) vs ours bare under a "
+     "Schlick coat lobe",
+     FresnelQuantity::ggx_light, FresnelModel::ours_coated, FresnelModel::ours_with_schlick_coat,
+     std::nullopt, true, std::nullopt, true},
+    {"one GGX light, coated vs Filament's clear coat (Schlick, F0 converted into the coat)",
+     FresnelQuantity::ggx_light, FresnelModel::ours_coated, FresnelModel::schlick_clear_coat,
+     std::nullopt},
+    {"split-sum image light, coated (a fetch per lobe) vs ours bare under a Schlick coat lobe",
+     FresnelQuantity::preintegrated, FresnelModel::ours_coated,
+     FresnelModel::ours_with_schlick_coat, std::nullopt},
+    {"split-sum image light, coated vs Filament's clear coat", FresnelQuantity::preintegrated,
+     FresnelModel::ours_coated, FresnelModel::schlick_clear_coat, std::nullopt},
     // Issue #28: a third of the 1586 its kernel measured, against Karis' 26 there.
     {"texture-free Fbar: our closed form vs Karis' fit", FresnelQuantity::preintegrated_closed_form,
      FresnelModel::ours, FresnelModel::schlick, 20.3},
@@ -130,9 +148,17 @@ int main(int argc, char** argv) {
   const matc::ParseResult parsed =
       matc::read_material_file(MATC_EXAMPLES_DIR "/figure2_edge_tint.json");
   // One build (library and compiled material) per basis the rows use.
+  // The coated rows' material: the same metal under a clear lacquer (index 1.5, roughness 0.1),
+  // or under the examples' copper_lacquered coat, tinted.
+  matc::Material clear_material = *parsed.material;
+  clear_material.coat = matc::CoatInput{1.0, 1.5, 0.1, {1.0, 1.0, 1.0}};
+  matc::Material tinted_material = *parsed.material;
+  tinted_material.coat = matc::CoatInput{1.0, 1.5, 0.1, {0.95, 0.85, 0.6}};
   struct BasisBuild {
     matc::Build build;
     matc::CompiledMaterial material;
+    matc::CompiledMaterial coated;
+    matc::CompiledMaterial tinted;
   };
   std::map<matc::runtime::BasisKind, std::unique_ptr<BasisBuild>> builds;
   for (const Comparison& row : kComparisons) {
@@ -142,14 +168,18 @@ int main(int argc, char** argv) {
     options.basis = kind;
     matc::Build build(options);
     matc::CompiledMaterial material = matc::compile_material(*parsed.material, build.basis());
-    builds[kind] = std::make_unique<BasisBuild>(BasisBuild{std::move(build), std::move(material)});
+    matc::CompiledMaterial coated = matc::compile_material(clear_material, build.basis());
+    matc::CompiledMaterial tinted = matc::compile_material(tinted_material, build.basis());
+    builds[kind] = std::make_unique<BasisBuild>(
+        BasisBuild{std::move(build), std::move(material), std::move(coated), std::move(tinted)});
   }
   const matc::SpirvWords vertex = matc::compile_fullscreen_stage(
       matc::fullscreen_vertex_source(), matc::ShaderStage::vertex, "fullscreen.vert");
   // Each variant's SPIR-V once; every family compiles the same modules.
-  using VariantKey = std::tuple<FresnelModel, FresnelQuantity, matc::runtime::BasisKind>;
+  using VariantKey = std::tuple<FresnelModel, FresnelQuantity, matc::runtime::BasisKind, bool>;
   const auto key = [](const Comparison& row, FresnelModel model) {
-    return VariantKey{model, row.quantity, row.basis.value_or(matc::runtime::kDefaultBasis)};
+    return VariantKey{model, row.quantity, row.basis.value_or(matc::runtime::kDefaultBasis),
+                      model == FresnelModel::ours_coated && row.tinted_coat};
   };
   std::map<VariantKey, matc::SpirvWords> fragments;
   for (const Comparison& row : kComparisons) {
@@ -157,8 +187,11 @@ int main(int argc, char** argv) {
       if (fragments.contains(key(row, model))) continue;
       const BasisBuild& basis_build = *builds.at(std::get<2>(key(row, model)));
       fragments[key(row, model)] = matc::compile_fullscreen_stage(
-          matc::cost_pass_source(basis_build.build, basis_build.material, model, row.quantity, 1280,
-                                 720),
+          matc::cost_pass_source(basis_build.build,
+                                 model != FresnelModel::ours_coated ? basis_build.material
+                                 : row.tinted_coat                  ? basis_build.tinted
+                                                                    : basis_build.coated,
+                                 model, row.quantity, 1280, 720),
           matc::ShaderStage::fragment, "cost_pass.frag");
     }
   }

@@ -12,6 +12,14 @@ tool="$build/bench/matc_accuracy_table"
 "$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" f82-tint "$tool" --f82-tint
 "$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" color-spaces "$tool" \
   --color-spaces
+# Coated metals against the exact layered reflectance, and the coated examples (docs/coating.md).
+cmake --build "$build" --target matc_coated_accuracy >/dev/null
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/coating.md" coated-accuracy \
+  "$build/bench/matc_coated_accuracy"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/coating.md" coated-examples \
+  "$build/bench/matc_coated_accuracy" --examples "$root/examples/materials/copper_lacquered.json" \
+  "$root/examples/materialx/standard_surface_copper.mtlx" \
+  "$root/examples/materialx/open_pbr_lacquered_gold.mtlx"
 # The basis study (about 1.5 minutes on 2 cores; no test reruns it, the unit tests hold the
 # shipped basis to the targets it was chosen for).
 cmake --build "$build" --target matc_basis_study >/dev/null

@@ -6,7 +6,9 @@
 // Bindings (set 0): 0 the preintegrated table, 1 the sampler, 2 the coefficient table (its .xy),
 // 3 the LTC table, 4-6 material maps: Schlick's textured F0 at 4; the coefficient table's
 // reflectivity and edge tint at 4 and 5; baked coefficient textures F0, C2, C3 at 4, 5, 6;
-// 7 the prefiltered environment of the image-light pass (an octahedral map).
+// 7 the prefiltered environment of the image-light pass (an octahedral map). Coated variants
+// (MATC_COST_COAT 1 ours coated, 2 ours bare under a Schlick coat lobe, 3 Filament's clear coat)
+// shade two lobes, the coat's at its own roughness, in the GGX-light and image-light passes.
 {{defines}}
 {{library}}
 {{material}}
@@ -58,6 +60,12 @@ void main() {
 #if MATC_COST_SCHLICK
 #if MATC_COST_MAPS
   vec3 F0 = a;
+#elif MATC_COST_COAT == 3
+  // Filament's f0ClearCoatToSurface: F0 seen from inside a coat of 1.5, a fit of the exact
+  // conversion.
+  const vec3 f0_air = vec3({{f0}});
+  vec3 F0 = clamp(f0_air * (f0_air * (0.941892 - 0.263008 * f0_air) + 0.346479) - 0.0285998,
+                  0.0, 1.0);
 #else
   const vec3 F0 = vec3({{f0}});
 #endif
@@ -101,7 +109,25 @@ void main() {
   float d = (NoH * a2 - NoH) * NoH + 1.0;
   float D = a2 / (PI * d * d);
   float Vis = 0.5 / (NoL * sqrt(NoV * NoV * (1.0 - a2) + a2) + NoV * sqrt(NoL * NoL * (1.0 - a2) + a2));
+#if MATC_COST_COAT
+  // The coat lobe: the same GGX D and Smith V at the coat's roughness.
+  float coat_alpha = {{coat_roughness}} * {{coat_roughness}};
+  float coat_a2 = coat_alpha * coat_alpha;
+  float coat_d = (NoH * coat_a2 - NoH) * NoH + 1.0;
+  float coat_D = coat_a2 / (PI * coat_d * coat_d);
+  float coat_Vis = 0.5 / (NoL * sqrt(NoV * NoV * (1.0 - coat_a2) + coat_a2) +
+                          NoV * sqrt(NoL * NoL * (1.0 - coat_a2) + coat_a2));
+#if MATC_COST_COAT == 1
+  vec3 base_f = matc_fresnel_{{name}}(VoH);
+  float coat_f = matc_coat_fresnel_{{name}}(VoH);
+#else
+  float coat_f = {{coat_weight}} * matc_cost_schlick(vec3(0.04), VoH).x;
+  vec3 base_f = COST_FRESNEL(VoH) * (1.0 - coat_f);
+#endif
+  vec3 f = (base_f * (D * Vis) + coat_f * (coat_D * coat_Vis)) * NoL;
+#else
   vec3 f = COST_FRESNEL(VoH) * (D * Vis * NoL);
+#endif
 #elif MATC_COST_QUAD_LIGHT || MATC_COST_QUAD_LIGHT_FOLLOWING
   // A quad light over a field of normals: each pixel its own N (so its own NdotV), P and the
   // roughness uv.y; the LTC integral is the same code in every variant, only the Fresnel differs
@@ -147,7 +173,22 @@ void main() {
   vec2 env_uv = (o.y >= 0.0 ? o.xz : (1.0 - abs(o.zx)) * sign(o.xz)) * 0.5 + 0.5;
   vec3 radiance = textureLod(sampler2D(environment, matc_lut_sampler), env_uv, uv.y * 6.0).rgb;
   vec4 texel = textureLod(sampler2D(matc_lut, matc_lut_sampler), matc_lut_texcoord(NoV, uv.y), 0.0);
+#if MATC_COST_COAT
+  // The coat lobe: the environment and the table again, at the coat's roughness.
+  vec3 coat_radiance =
+      textureLod(sampler2D(environment, matc_lut_sampler), env_uv, {{coat_roughness}} * 6.0).rgb;
+  vec4 coat_texel = textureLod(sampler2D(matc_lut, matc_lut_sampler),
+                               matc_lut_texcoord(NoV, {{coat_roughness}}), 0.0);
+#if MATC_COST_COAT == 1
+  vec3 f = matc_fresnel_preintegrated_{{name}}(texel, coat_texel, NoV) * radiance +
+           matc_coat_fresnel_preintegrated_{{name}}(coat_texel) * coat_radiance;
+#else
+  float coat_f = {{coat_weight}} * (0.04 * coat_texel.x + 0.96 * coat_texel.y);
+  vec3 f = COST_FRESNEL_PREINTEGRATED(texel) * (1.0 - coat_f) * radiance + coat_f * coat_radiance;
+#endif
+#else
   vec3 f = COST_FRESNEL_PREINTEGRATED(texel) * radiance;
+#endif
 #endif
   colour = vec4(f, 1.0);
 }

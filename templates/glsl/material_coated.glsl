@@ -29,19 +29,23 @@ const float matc_coat_weight_{{name}} = {{coat_weight}};
 // Sample the table at this roughness for the coat lobe (perceptual, as matc_lut_texcoord takes).
 const float matc_coat_roughness_{{name}} = {{coat_roughness}};
 
-// The coat's tint over the round trip at cosine mu in air, color^(1 / mu_inside) (Beer's law).
+// The coat's tint over the round trip at cosine mu in air, color^(1 / mu_inside) (Beer's law;
+// 1 for a clear coat).
 vec3 matc_coat_tint_{{name}}(float mu) {
-  float inverse_mu_inside = inversesqrt({{grazing_inside_squared}} + {{inverse_ior_squared}} * mu * mu);
-  return exp2(vec3({{log2_color}}) * inverse_mu_inside);
+{{tint_body}}
 }
 
 // The base under the coat: in through the coat, reflected by the metal and the coat's underside
-// any number of times, out again: mix(in air, (1 - f)^2 v / (1 - f min(v, 1)), weight).
+// any number of times, out again: mix(in air, (1 - f)^2 v / (1 - f min(v, 1)), weight), or
+// the second term alone under a full coat.
 vec3 matc_coated_base_{{name}}(vec4 values, vec4 coat_values, vec3 tint) {
   float f = clamp(dot(matc_coat_coefficients_{{name}}, coat_values), 0.0, 1.0);
   vec3 v = matc_combine(matc_under_coat_coefficients_{{name}}, values) * tint;
-  vec3 through = (1.0 - f) * (1.0 - f) * v / max(1.0 - f * min(v, vec3(1.0)), vec3(1e-6));
-  return mix(matc_combine(matc_coefficients_{{name}}, values), through, matc_coat_weight_{{name}});
+  // One reciprocal for the three channels' sums of bounces: 1 / d_c = (the other two) / (d_r d_g d_b).
+  vec3 d = max(1.0 - f * min(v, vec3(1.0)), vec3(1e-6));
+  float scale = (1.0 - f) * (1.0 - f) / (d.x * d.y * d.z);
+  vec3 through = v * scale * vec3(d.y * d.z, d.x * d.z, d.x * d.y);
+  return {{base}};
 }
 
 // The base lobe's F for a direct light: mu = dot(V, H).

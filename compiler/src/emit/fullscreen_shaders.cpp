@@ -1,5 +1,7 @@
 #include "matc/emit/fullscreen_shaders.h"
 
+#include <stdexcept>
+
 #include <fmt/core.h>
 
 #include "matc/emit/template.h"
@@ -32,6 +34,9 @@ int material_map_count(FresnelModel model) {
       return 3;
     case FresnelModel::schlick:
     case FresnelModel::ours:
+    case FresnelModel::ours_coated:
+    case FresnelModel::ours_with_schlick_coat:
+    case FresnelModel::schlick_clear_coat:
       break;
   }
   return 0;
@@ -55,12 +60,26 @@ std::vector<CostPassBinding> cost_pass_bindings(FresnelModel model, FresnelQuant
 std::string cost_pass_source(const Build& build, const CompiledMaterial& compiled,
                              FresnelModel model, FresnelQuantity quantity, std::uint32_t width,
                              std::uint32_t height) {
-  const bool schlick = model == FresnelModel::schlick || model == FresnelModel::schlick_textured;
+  const bool schlick = model == FresnelModel::schlick || model == FresnelModel::schlick_textured ||
+                       model == FresnelModel::schlick_clear_coat;
+  // 0: no coat; 1: ours coated; 2: ours bare under a Schlick coat; 3: Filament's clear coat.
+  int coat = 0;
+  if (model == FresnelModel::ours_coated) coat = 1;
+  if (model == FresnelModel::ours_with_schlick_coat) coat = 2;
+  if (model == FresnelModel::schlick_clear_coat) coat = 3;
+  if (coat == 1 && !compiled.coat)
+    throw std::invalid_argument("cost pass: ours_coated needs a coated material");
+  // The coat lobe's roughness and weight: the coated material's, else a lacquer's 0.1 and 1.
+  const double coat_roughness = compiled.coat ? compiled.coat->input.roughness : 0.1;
+  const double coat_weight = compiled.coat ? compiled.coat->input.weight : 1.0;
   const char* model_name = "ours";
   if (model == FresnelModel::schlick) model_name = "Schlick's";
   if (model == FresnelModel::schlick_textured) model_name = "Schlick's, F0 from a map";
   if (model == FresnelModel::table) model_name = "ours from the coefficient table";
   if (model == FresnelModel::baked) model_name = "ours from baked coefficient textures";
+  if (model == FresnelModel::ours_coated) model_name = "ours, coated (two lobes)";
+  if (model == FresnelModel::ours_with_schlick_coat) model_name = "ours under a Schlick coat lobe";
+  if (model == FresnelModel::schlick_clear_coat) model_name = "Filament's clear coat (Schlick)";
   const char* quantity_name = "Fbar";
   if (quantity == FresnelQuantity::direct) quantity_name = "F";
   if (quantity == FresnelQuantity::ggx_light) quantity_name = "one GGX light";
@@ -78,7 +97,7 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
                     "MATC_COST_BAKED {}\n#define MATC_COST_MAPS {}\n#define MATC_COST_DIRECT "
                     "{}\n#define MATC_COST_GGX_LIGHT {}\n#define MATC_COST_QUAD_LIGHT {}\n#define "
                     "MATC_COST_QUAD_LIGHT_FOLLOWING {}\n#define MATC_COST_CLOSED_FORM {}\n#define "
-                    "MATC_COST_IMAGE_LIGHT {}",
+                    "MATC_COST_IMAGE_LIGHT {}\n#define MATC_COST_COAT {}",
                     flag(schlick), flag(model == FresnelModel::table),
                     flag(model == FresnelModel::baked), material_map_count(model),
                     flag(quantity == FresnelQuantity::direct),
@@ -86,11 +105,13 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
                     flag(quantity == FresnelQuantity::quad_light),
                     flag(quantity == FresnelQuantity::quad_light_following),
                     flag(quantity == FresnelQuantity::preintegrated_closed_form),
-                    flag(quantity == FresnelQuantity::preintegrated))},
+                    flag(quantity == FresnelQuantity::preintegrated), coat)},
        {"library", build.library_source(ShaderLanguage::glsl)},
        {"material", build.material_source(ShaderLanguage::glsl, compiled)},
        {"name", compiled.material.name},
        {"f0", f0_list(compiled)},
+       {"coat_roughness", float_literal(coat_roughness)},
+       {"coat_weight", float_literal(coat_weight)},
        {"width", std::to_string(width)},
        {"height", std::to_string(height)}});
 }

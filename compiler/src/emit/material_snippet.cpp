@@ -60,9 +60,30 @@ std::string coated_snippet_source(ShaderLanguage language, const CompiledMateria
   values["coat_weight"] = float_literal(c.weight);
   values["coat_roughness"] = float_literal(c.roughness);
   values["coat_ior"] = fmt::format("{}", c.ior);
-  values["inverse_ior_squared"] = float_literal(inverse_ior_squared);
-  values["grazing_inside_squared"] = float_literal(1.0 - inverse_ior_squared);
-  values["log2_color"] = float_list(log2_color);
+  const bool clear = log2_color == std::array<double, 3>{};
+  const std::string tint_vector = language == ShaderLanguage::hlsl   ? "float3"
+                                  : language == ShaderLanguage::wgsl ? "vec3f"
+                                                                     : "vec3";
+  // A clear coat tints nothing: no exponentials where the common case needs none.
+  values["tint_body"] =
+      clear ? fmt::format("  return {}(1.0);", tint_vector)
+            : fmt::format(
+                  "  {} inverse_mu_inside = {}({} + {} * mu * mu);\n  return exp2({}({}) * "
+                  "inverse_mu_inside);",
+                  language == ShaderLanguage::wgsl ? "let" : "float",
+                  language == ShaderLanguage::hlsl   ? "rsqrt"
+                  : language == ShaderLanguage::wgsl ? "inverseSqrt"
+                                                     : "inversesqrt",
+                  float_literal(1.0 - inverse_ior_squared), float_literal(inverse_ior_squared),
+                  tint_vector, float_list(log2_color));
+  // A full coat leaves nothing of the metal in air: no mix, and no in-air sum to compute.
+  const std::string& name = compiled.material.name;
+  values["base"] = c.weight >= 1.0
+                       ? std::string("through")
+                       : fmt::format(
+                             "{}(matc_combine(matc_coefficients_{}, values), through, "
+                             "matc_coat_weight_{})",
+                             language == ShaderLanguage::hlsl ? "lerp" : "mix", name, name);
   values["layered_max_error"] = fmt::format("{:.4f}", worst_channel(coat.layered_error.max_abs));
   values["under_coat_max_error"] =
       fmt::format("{:.4f}", worst_channel(coat.under_coat_error.max_abs));

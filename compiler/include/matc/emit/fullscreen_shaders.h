@@ -16,8 +16,20 @@ namespace matc {
 
 // Schlick's with a constant F0, or with F0 from a map; ours with a material's compiled
 // coefficients; ours per pixel from reflectivity and edge-tint maps through the coefficient table
-// (a textured metal); ours from baked coefficient textures (F0, C2, C3 maps, `matc bake`).
-enum class FresnelModel { schlick, schlick_textured, ours, table, baked };
+// (a textured metal); ours from baked coefficient textures (F0, C2, C3 maps, `matc bake`). Coated
+// metals (docs/coating.md), two lobes each: ours for a coated material (its base and coat lobes);
+// ours bare with a Schlick coat lobe (F0 0.04) attenuating it; Filament's clear coat (Schlick with
+// F0 converted into the coat, f0ClearCoatToSurface, under the same Schlick coat lobe).
+enum class FresnelModel {
+  schlick,
+  schlick_textured,
+  ours,
+  table,
+  baked,
+  ours_coated,
+  ours_with_schlick_coat,
+  schlick_clear_coat
+};
 // F alone (mu from the pixel); F inside one GGX punctual light (D, height-correlated Smith V, F,
 // NdotL); image-based light: preintegrated Fbar from one table fetch times the prefiltered
 // environment (one more fetch, the same in every variant); a quad area light (LTC: that fetch, one
