@@ -1,5 +1,7 @@
 #include "matc/ltc/area_light_reference.h"
 
+#include "matc/base/rgb_mean.h"
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -87,7 +89,7 @@ AreaLightEstimate integrate_polygon_light(const GgxLobe& lobe, std::span<const V
   const auto light_pdf = [&](const Vec3& l, double t) {
     return t * t / (polygon.area() * std::abs(dot(polygon.normal(), l)));
   };
-  runtime::Rgb sum{}, sum_squares{};
+  RgbMean estimate;
   for (std::size_t k = 0; k < samples; ++k) {
     runtime::Rgb value{};
     // One direction's share, f F cos / (p_light + p_lobe): the balance heuristic.
@@ -112,19 +114,9 @@ AreaLightEstimate integrate_polygon_light(const GgxLobe& lobe, std::span<const V
     const double u1 = uniform(), u2 = uniform();
     const Vec3 l = lobe.sample(u1, u2);
     if (const double hit = polygon.hit_distance(l); hit > 0.0) add(l, hit);
-    for (std::size_t c = 0; c < 3; ++c) {
-      sum[c] += value[c];
-      sum_squares[c] += value[c] * value[c];
-    }
+    estimate.add(value);
   }
-  AreaLightEstimate estimate;
-  const auto n = static_cast<double>(samples);
-  for (std::size_t c = 0; c < 3; ++c) {
-    estimate.mean[c] = sum[c] / n;
-    const double variance = std::max(0.0, sum_squares[c] / n - estimate.mean[c] * estimate.mean[c]);
-    estimate.standard_error[c] = std::sqrt(variance / std::max(1.0, n - 1.0));
-  }
-  return estimate;
+  return {estimate.mean(), estimate.standard_error()};
 }
 
 }  // namespace matc

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <random>
 
+#include "matc/base/rgb_mean.h"
 #include "matc/lut/split_sum_reference.h"
 #include "matc/optics/coat.h"
 #include "matc/runtime/coat.h"
@@ -143,21 +144,11 @@ LayeredEstimate layered_albedo(const LayeredSurface& surface, double ndotv, std:
   const double mu = std::clamp(ndotv, 1e-4, 1.0);
   const Vec3 w = {std::sqrt(1.0 - mu * mu), 0.0, mu};
   std::mt19937_64 random(seed);
-  Rgb sum{}, sum_squares{};
-  for (std::size_t i = 0; i < paths; ++i) {
-    const Rgb value = trace_coated(surface, w, random);
-    for (std::size_t c = 0; c < 3; ++c) {
-      sum[c] += value[c];
-      sum_squares[c] += value[c] * value[c];
-    }
-  }
-  LayeredEstimate coated;
+  RgbMean paths_out;
+  for (std::size_t i = 0; i < paths; ++i)
+    paths_out.add(trace_coated(surface, w, random));
+  const LayeredEstimate coated{paths_out.mean(), paths_out.standard_error()};
   const auto count = static_cast<double>(paths);
-  for (std::size_t c = 0; c < 3; ++c) {
-    coated.mean[c] = sum[c] / count;
-    const double variance = std::max(0.0, sum_squares[c] / count - coated.mean[c] * coated.mean[c]);
-    coated.standard_error[c] = std::sqrt(variance / count);
-  }
   const double weight = surface.coat.weight;
   if (weight >= 1.0) return coated;
   // The uncovered part: the bare metal in air, one GGX scattering.
