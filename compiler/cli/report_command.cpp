@@ -72,14 +72,18 @@ int run_report(const ReportOptions& options) {
     print_diagnostics(fit);
     const MaterialCurves curves = sample_material_curves(compiled, shader_basis);
     const std::string source = fs::path(material.source_path).filename().string();
+    // A coated material's whole surface, as its curves are (docs/coating.md).
+    const FitAccuracy& accuracy =
+        compiled.coat ? compiled.coat->layered_accuracy : compiled.accuracy;
     const std::string subtitle = fmt::format(
-        "{}, basis {}: worst-channel max error ours {:.4f}, Schlick {:.4f}, F82-tint {:.4f}",
-        source, runtime::basis_name(kind), worst_channel(compiled.accuracy.decomposition.max_abs),
-        worst_channel(compiled.accuracy.schlick.max_abs),
-        worst_channel(compiled.accuracy.f82_tint.max_abs));
+        "{}, basis {}{}: worst-channel max error ours {:.4f}, Schlick {:.4f}, F82-tint {:.4f}",
+        source, runtime::basis_name(kind), compiled.coat ? ", coated" : "",
+        worst_channel(accuracy.decomposition.max_abs), worst_channel(accuracy.schlick.max_abs),
+        worst_channel(accuracy.f82_tint.max_abs));
     outputs.push_back({material.name + ".svg", fresnel_plot_svg(curves, material.name, subtitle)});
     outputs.push_back({material.name + ".csv", material_curves_csv(curves)});
-    entries.push_back({material.name, source, compiled.f0, compiled.accuracy});
+    entries.push_back(
+        {material.name, source, compiled.coat ? compiled.coat->layered_f0 : compiled.f0, accuracy});
   }
   outputs.push_back({"index.html", report_index_html(entries, runtime::basis_name(kind))});
 

@@ -163,6 +163,10 @@ CompiledCoat compile_coat(const Material& material, const runtime::Coefficients&
     coat.layered_error.rms[c] = std::sqrt(squares[c] / static_cast<double>(kAccuracySamples));
   coat.layered_f0 = layered.at(1.0);
   coat.layered_f82 = layered.at(kF82MuBar);
+  // Schlick's and F82-tint's rows measure the layered curve itself; the decomposition's row is
+  // the two lobes', measured above (the in-air coefficients passed here are not it).
+  coat.layered_accuracy = measure_accuracy(layered, in_air_fit, shader_basis);
+  coat.layered_accuracy.decomposition = coat.layered_error;
   return coat;
 }
 

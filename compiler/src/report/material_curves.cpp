@@ -1,17 +1,39 @@
 #include "matc/report/material_curves.h"
 
 #include <cmath>
+#include <memory>
 #include <numbers>
+#include <optional>
 
 #include <fmt/format.h>
 
+#include "matc/optics/coat.h"
 #include "matc/optics/fresnel.h"
+#include "matc/runtime/coat.h"
 
 namespace matc {
 
 MaterialCurves sample_material_curves(const CompiledMaterial& compiled,
                                       const runtime::ShaderBasis& shader_basis) {
-  const auto exact = make_reflectance_curve(compiled.material, compiled.color);
+  const auto in_air = make_reflectance_curve(compiled.material, compiled.color);
+  // A coated material (docs/coating.md) is plotted whole: the exact layered curve, both lobes as
+  // the shaders sum them, Schlick's and F82-tint's from the layered F0 and F(1/7).
+  std::unique_ptr<ReflectanceCurve> under_coat;
+  std::optional<LayeredCurve> layered;
+  if (const auto& coat = compiled.coat) {
+    under_coat = make_under_coat_curve(compiled.material, compiled.color.working_space);
+    layered.emplace(*in_air, *under_coat, coat->input.weight, coat->input.ior, coat->input.color);
+  }
+  const ReflectanceCurve& exact =
+      layered ? static_cast<const ReflectanceCurve&>(*layered) : *in_air;
+  const Rgb& f0 = compiled.coat ? compiled.coat->layered_f0 : compiled.f0;
+  const Rgb& f82_value = compiled.coat ? compiled.coat->layered_f82 : compiled.f82;
+  const auto ours = [&](double mu) {
+    if (!compiled.coat) return runtime::evaluate_fresnel(compiled.coefficients, shader_basis, mu);
+    const auto lobes = runtime::evaluate_coated_fresnel(
+        compiled.coefficients, compiled.coat->coefficients, shader_basis, mu);
+    return Rgb{lobes.base[0] + lobes.coat, lobes.base[1] + lobes.coat, lobes.base[2] + lobes.coat};
+  };
   MaterialCurves curves;
   for (std::size_t i = 0; i < kReportAngles; ++i) {
     const double theta = 90.0 * static_cast<double>(i) / static_cast<double>(kReportAngles - 1);
@@ -20,12 +42,12 @@ MaterialCurves sample_material_curves(const CompiledMaterial& compiled,
     Rgb schlick{};
     Rgb f82{};
     for (std::size_t c = 0; c < 3; ++c) {
-      schlick[c] = fresnel_schlick(mu, compiled.f0[c]);
-      f82[c] = fresnel_f82_tint(mu, compiled.f0[c], compiled.f82[c]);
+      schlick[c] = fresnel_schlick(mu, f0[c]);
+      f82[c] = fresnel_f82_tint(mu, f0[c], f82_value[c]);
     }
     curves.theta_degrees.push_back(theta);
-    curves.exact.push_back(exact->at(mu));
-    curves.ours.push_back(runtime::evaluate_fresnel(compiled.coefficients, shader_basis, mu));
+    curves.exact.push_back(exact.at(mu));
+    curves.ours.push_back(ours(mu));
     curves.schlick.push_back(schlick);
     curves.f82_tint.push_back(f82);
   }

@@ -36,6 +36,9 @@ struct CompiledCoat {
   ErrorStats layered_error;
   Rgb layered_f0{};   // the exact layered reflectance at normal incidence
   Rgb layered_f82{};  // ... and at mu = 1/7
+  // The whole surface against the exact layered curve: ours (layered_error), Schlick's and
+  // F82-tint's from the layered F0 and F(1/7). What `matc report` shows for a coated material.
+  FitAccuracy layered_accuracy;
 };
 
 struct CompiledMaterial {

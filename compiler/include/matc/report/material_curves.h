@@ -1,5 +1,7 @@
 // A compiled material's Fresnel curves sampled over the angle of incidence: exact, ours (as the
-// shaders evaluate it), Schlick and F82-tint. What `matc report` plots and tabulates.
+// shaders evaluate it), Schlick and F82-tint. What `matc report` plots and tabulates. A coated
+// material's are the whole surface's: the exact layered curve, both lobes summed, Schlick's and
+// F82-tint's from the layered F0 and F(1/7).
 #pragma once
 
 #include <cstddef>
