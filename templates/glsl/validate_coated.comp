@@ -3,7 +3,8 @@
 // against the CPU runtime. For each query (mu, NdotV, roughness, -) it writes the base lobe's F
 // (xyz) and the coat lobe's (w) at mu, then both preintegrated through the bound table and
 // sampler, the embedded table (zero without one) and the closed form; the coat lobe is sampled
-// at the coat's roughness.
+// at the coat's roughness. Fifth: a quad light of radiance 1 overhead (the shading frame: normal
+// +z, view in the xz-plane at NdotV) on both lobes, through matc_ltc.
 {{library}}
 {{material}}
 layout(local_size_x = 64) in;
@@ -11,6 +12,7 @@ layout(std430, set = 0, binding = 0) readonly buffer MatcQueries { vec4 matc_que
 layout(std430, set = 0, binding = 1) writeonly buffer MatcResults { vec4 matc_results[]; };
 layout(set = 0, binding = 2) uniform texture2D matc_lut;
 layout(set = 0, binding = 3) uniform sampler matc_lut_sampler;
+layout(set = 0, binding = 5) uniform texture2D matc_ltc;
 
 vec4 matc_lobes(vec4 bbar, vec4 coat_bbar, float NdotV) {
   return vec4(matc_fresnel_preintegrated_{{name}}(bbar, coat_bbar, NdotV),
@@ -30,10 +32,19 @@ void main() {
   embedded = matc_lobes(matc_preintegrated_basis_embedded(query.y, query.z),
                         matc_preintegrated_basis_embedded(query.y, coat_roughness), query.y);
 #endif
-  matc_results[4u * i] = vec4(matc_fresnel_{{name}}(query.x), matc_coat_fresnel_{{name}}(query.x));
-  matc_results[4u * i + 1u] = matc_lobes(bbar, coat_bbar, query.y);
-  matc_results[4u * i + 2u] = embedded;
-  matc_results[4u * i + 3u] =
+  vec3 V = vec3(sqrt(max(1.0 - query.y * query.y, 0.0)), 0.0, query.y);
+  vec4 ltc = textureLod(sampler2D(matc_ltc, matc_lut_sampler),
+                        matc_ltc_texcoord(query.y, query.z), 0.0);
+  vec4 coat_ltc = textureLod(sampler2D(matc_ltc, matc_lut_sampler),
+                             matc_ltc_texcoord(query.y, coat_roughness), 0.0);
+  matc_results[5u * i] = vec4(matc_fresnel_{{name}}(query.x), matc_coat_fresnel_{{name}}(query.x));
+  matc_results[5u * i + 1u] = matc_lobes(bbar, coat_bbar, query.y);
+  matc_results[5u * i + 2u] = embedded;
+  matc_results[5u * i + 4u] = vec4(
+      matc_ltc_quad_light_{{name}}(bbar, coat_bbar, ltc, coat_ltc, vec3(0.0, 0.0, 1.0), V,
+                                   vec3(0.0), {{quad}}),
+      1.0);
+  matc_results[5u * i + 3u] =
       matc_lobes(matc_preintegrated_basis_analytic(query.y, query.z),
                  matc_preintegrated_basis_analytic(query.y, coat_roughness), query.y);
 }

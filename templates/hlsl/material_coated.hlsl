@@ -71,4 +71,38 @@ float matc_coat_fresnel_preintegrated_{{name}}(float4 coat_bbar) {
   float f = clamp(dot(matc_coat_coefficients_{{name}}, coat_bbar), 0.0, 1.0);
   return matc_coat_weight_{{name}} * f;
 }
+
+#ifdef MATC_LTC_SIZE
+// Area lights of radiance 1 on both lobes (docs/coating.md): each lobe's LTC integral times its
+// preintegrated F; ltc and bbar at (NdotV, roughness) from matc_ltc and matc_lut, coat_ltc and
+// coat_bbar at (NdotV, matc_coat_roughness_{{name}}). A quad light ...
+float3 matc_ltc_quad_light_{{name}}(float4 bbar, float4 coat_bbar, float4 ltc, float4 coat_ltc, float3 N,
+                                  float3 V, float3 P, float3 q0, float3 q1, float3 q2, float3 q3) {
+  float NdotV = clamp(dot(N, V), 0.0, 1.0);
+  return matc_ltc_quad_integral(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3) *
+             matc_fresnel_preintegrated_{{name}}(bbar, coat_bbar, NdotV) +
+         matc_ltc_quad_integral(matc_ltc_transform(N, V, coat_ltc), P, q0, q1, q2, q3) *
+             matc_coat_fresnel_preintegrated_{{name}}(coat_bbar);
+}
+
+// ... a disk light ...
+float3 matc_ltc_disk_light_{{name}}(float4 bbar, float4 coat_bbar, float4 ltc, float4 coat_ltc, float3 N,
+                                  float3 V, float3 P, float3 centre, float3 normal, float radius) {
+  float NdotV = clamp(dot(N, V), 0.0, 1.0);
+  return matc_ltc_disk_integral(matc_ltc_transform(N, V, ltc), P, centre, normal, radius) *
+             matc_fresnel_preintegrated_{{name}}(bbar, coat_bbar, NdotV) +
+         matc_ltc_disk_integral(matc_ltc_transform(N, V, coat_ltc), P, centre, normal, radius) *
+             matc_coat_fresnel_preintegrated_{{name}}(coat_bbar);
+}
+
+// ... and a sphere light.
+float3 matc_ltc_sphere_light_{{name}}(float4 bbar, float4 coat_bbar, float4 ltc, float4 coat_ltc, float3 N,
+                                    float3 V, float3 P, float3 centre, float radius) {
+  float NdotV = clamp(dot(N, V), 0.0, 1.0);
+  return matc_ltc_sphere_integral(matc_ltc_transform(N, V, ltc), P, centre, radius) *
+             matc_fresnel_preintegrated_{{name}}(bbar, coat_bbar, NdotV) +
+         matc_ltc_sphere_integral(matc_ltc_transform(N, V, coat_ltc), P, centre, radius) *
+             matc_coat_fresnel_preintegrated_{{name}}(coat_bbar);
+}
+#endif
 #endif  // MATC_MATERIAL_{{name}}

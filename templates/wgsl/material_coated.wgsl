@@ -69,3 +69,38 @@ fn matc_coat_fresnel_preintegrated_{{name}}(coat_bbar: vec4f) -> f32 {
   let f = clamp(dot(matc_coat_coefficients_{{name}}, coat_bbar), 0.0, 1.0);
   return matc_coat_weight_{{name}} * f;
 }
+
+// Area lights of radiance 1 on both lobes (docs/coating.md): each lobe's LTC integral times its
+// preintegrated F; ltc and bbar at (NdotV, roughness) from matc_ltc and matc_lut, coat_ltc and
+// coat_bbar at (NdotV, matc_coat_roughness_{{name}}). A quad light ...
+fn matc_ltc_quad_light_{{name}}(bbar: vec4f, coat_bbar: vec4f, ltc: vec4f, coat_ltc: vec4f,
+                                N: vec3f, V: vec3f, P: vec3f, q0: vec3f, q1: vec3f, q2: vec3f,
+                                q3: vec3f) -> vec3f {
+  let NdotV = clamp(dot(N, V), 0.0, 1.0);
+  return matc_ltc_quad_integral(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3) *
+             matc_fresnel_preintegrated_{{name}}(bbar, coat_bbar, NdotV) +
+         matc_ltc_quad_integral(matc_ltc_transform(N, V, coat_ltc), P, q0, q1, q2, q3) *
+             matc_coat_fresnel_preintegrated_{{name}}(coat_bbar);
+}
+
+// ... a disk light ...
+fn matc_ltc_disk_light_{{name}}(bbar: vec4f, coat_bbar: vec4f, ltc: vec4f, coat_ltc: vec4f,
+                                N: vec3f, V: vec3f, P: vec3f, centre: vec3f, normal: vec3f,
+                                radius: f32) -> vec3f {
+  let NdotV = clamp(dot(N, V), 0.0, 1.0);
+  return matc_ltc_disk_integral(matc_ltc_transform(N, V, ltc), P, centre, normal, radius) *
+             matc_fresnel_preintegrated_{{name}}(bbar, coat_bbar, NdotV) +
+         matc_ltc_disk_integral(matc_ltc_transform(N, V, coat_ltc), P, centre, normal, radius) *
+             matc_coat_fresnel_preintegrated_{{name}}(coat_bbar);
+}
+
+// ... and a sphere light.
+fn matc_ltc_sphere_light_{{name}}(bbar: vec4f, coat_bbar: vec4f, ltc: vec4f, coat_ltc: vec4f,
+                                  N: vec3f, V: vec3f, P: vec3f, centre: vec3f,
+                                  radius: f32) -> vec3f {
+  let NdotV = clamp(dot(N, V), 0.0, 1.0);
+  return matc_ltc_sphere_integral(matc_ltc_transform(N, V, ltc), P, centre, radius) *
+             matc_fresnel_preintegrated_{{name}}(bbar, coat_bbar, NdotV) +
+         matc_ltc_sphere_integral(matc_ltc_transform(N, V, coat_ltc), P, centre, radius) *
+             matc_coat_fresnel_preintegrated_{{name}}(coat_bbar);
+}

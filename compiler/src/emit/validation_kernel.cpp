@@ -22,12 +22,16 @@ std::string validation_kernel_source(ShaderLanguage language, std::string_view l
                                      std::string_view material, std::string_view material_name,
                                      bool coated) {
   const bool glsl = language == ShaderLanguage::glsl;
-  const char* path = coated ? (glsl ? "glsl/validate_coated.comp" : "hlsl/validate_coated.hlsl")
-                            : (glsl ? "glsl/validate.comp" : "hlsl/validate.hlsl");
-  return fill_template(path, {{"version", kVersion},
-                              {"name", std::string(material_name)},
-                              {"library", std::string(library)},
-                              {"material", std::string(material)}});
+  TemplateValues values = {{"version", kVersion},
+                           {"name", std::string(material_name)},
+                           {"library", std::string(library)},
+                           {"material", std::string(material)}};
+  if (!coated) return fill_template(glsl ? "glsl/validate.comp" : "hlsl/validate.hlsl", values);
+  std::string quad;
+  for (const runtime::Vec3& corner : kCoatedValidationQuad)
+    quad += (quad.empty() ? "" : ", ") + vector_literal(language, corner);
+  values["quad"] = quad;
+  return fill_template(glsl ? "glsl/validate_coated.comp" : "hlsl/validate_coated.hlsl", values);
 }
 
 std::string table_validation_kernel_source(ShaderLanguage language, std::string_view library) {

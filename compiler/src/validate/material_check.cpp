@@ -7,6 +7,7 @@
 #include "matc/runtime/analytic_lut.h"
 #include "matc/runtime/coat.h"
 #include "matc/runtime/fresnel.h"
+#include "matc/runtime/ltc.h"
 #include "matc/runtime/lut.h"
 #include "matc/runtime/shader_basis.h"
 #include "matc/validate/device_validator.h"
@@ -38,7 +39,12 @@ class MaterialCheck final : public DeviceCheck {
     return packed;
   }
 
-  std::size_t result_vec4s_per_query() const override { return kValidationResultsPerQuery; }
+  std::size_t result_vec4s_per_query() const override {
+    return compiled_.coat ? kCoatedValidationResultsPerQuery : kValidationResultsPerQuery;
+  }
+
+  // A coated material's kernel lights both lobes with a quad light through the LTC table.
+  KernelTables tables() const override { return {false, compiled_.coat.has_value()}; }
 
   std::vector<CheckedQuantity> compare(std::span<const float> results) const override {
     const runtime::ShaderBasis& shader_basis =
@@ -75,6 +81,10 @@ class MaterialCheck final : public DeviceCheck {
   std::string describe_query(std::size_t index, std::string_view label) const override {
     const ValidationQuery& q = queries_[index];
     if (label == "F" || label == "coat F") return fmt::format("mu {:.4f}", q.mu);
+    if (label == "L") {
+      return fmt::format("NdotV {:.4f}, roughness {:.4f}, kCoatedValidationQuad", q.ndotv,
+                         q.roughness);
+    }
     return fmt::format("NdotV {:.4f}, roughness {:.4f}", q.ndotv, q.roughness);
   }
 
@@ -94,7 +104,8 @@ class MaterialCheck final : public DeviceCheck {
                                                {"embedded Fbar", tolerance_.embedded},
                                                {"embedded coat Fbar", tolerance_.embedded},
                                                {"closed-form Fbar", tolerance_.analytic},
-                                               {"closed-form coat Fbar", tolerance_.analytic}};
+                                               {"closed-form coat Fbar", tolerance_.analytic},
+                                               {"L", tolerance_.preintegrated}};
     const auto record = [&](std::size_t slot, const runtime::CoatedFresnel& expected,
                             const float* actual, std::size_t query) {
       record_largest(quantities[2 * slot], expected.base, actual, query);
@@ -104,8 +115,12 @@ class MaterialCheck final : public DeviceCheck {
     };
     for (std::size_t i = 0; i < queries_.size(); ++i) {
       const ValidationQuery& q = queries_[i];
-      const float* result = &results[i * kValidationResultsPerQuery * 4];
+      const float* result = &results[i * kCoatedValidationResultsPerQuery * 4];
       record(0, runtime::evaluate_coated_fresnel(c, coat, shader_basis, q.mu), result, i);
+      record_largest(quantities[8],
+                     runtime::polygon_light_ltc_coated(c, coat, table, runtime::shipped_ltc_table(),
+                                                       q.ndotv, q.roughness, kCoatedValidationQuad),
+                     result + 16, i);
       record(1, runtime::evaluate_coated_fbar(c, coat, table, q.ndotv, q.roughness), result + 4, i);
       if (embedded) {
         record(2, runtime::evaluate_coated_fbar(c, coat, embedded->view(), q.ndotv, q.roughness),

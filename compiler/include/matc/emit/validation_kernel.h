@@ -9,6 +9,10 @@
 // from the closed form.
 #pragma once
 
+#include <array>
+
+#include "matc/runtime/vec3.h"
+
 #include <string>
 #include <string_view>
 
@@ -24,7 +28,13 @@ inline constexpr std::size_t kValidationResultsPerQuery = 4;
 
 // `library` and `material` are the sources of matc_fresnel.* and <name>.* in `language`. A coated
 // material's kernel (templates/*/validate_coated.*) writes the base lobe in .xyz and the coat
-// lobe in .w of the same four results, the coat's preintegrated F sampled at its roughness.
+// lobe in .w of the same four results, the coat's preintegrated F sampled at its roughness, then
+// a fifth: kCoatedValidationQuad's light on both lobes (the LTC table at binding 5).
+inline constexpr std::size_t kCoatedValidationResultsPerQuery = 5;
+// A quad light in the shading frame (normal +z, view in the xz-plane towards +x, shading point
+// at the origin), on the reflection's side and tilted.
+inline constexpr std::array<runtime::Vec3, 4> kCoatedValidationQuad = {
+    {{-0.5, -1.0, 1.5}, {-2.0, -1.0, 0.5}, {-2.0, 1.0, 0.5}, {-0.5, 1.0, 1.5}}};
 std::string validation_kernel_source(ShaderLanguage language, std::string_view library,
                                      std::string_view material, std::string_view material_name,
                                      bool coated = false);

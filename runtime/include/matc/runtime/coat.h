@@ -5,7 +5,10 @@
 
 #include <algorithm>
 
+#include <span>
+
 #include "matc/runtime/fresnel.h"
+#include "matc/runtime/ltc.h"
 #include "matc/runtime/lut.h"
 #include "matc/runtime/shader_basis.h"
 
@@ -68,5 +71,12 @@ CoatedFresnel evaluate_coated_preintegrated(const Coefficients& in_air,
 // The same through `lut`: the base's at `roughness`, the coat's at its own.
 CoatedFresnel evaluate_coated_fbar(const Coefficients& in_air, const CoatCoefficients& coat,
                                    const LutView& lut, double ndotv, double roughness);
+
+// A polygon light of radiance 1 on both lobes, as matc_ltc_quad_light_<name> computes it: each
+// lobe's LTC integral (the table at its roughness) times its Fbar. Vertices in the shading frame
+// (normal +z, view in the xz-plane), as polygon_light_ltc takes them.
+Rgb polygon_light_ltc_coated(const Coefficients& in_air, const CoatCoefficients& coat,
+                             const LutView& lut, const LtcTableView& ltc, double ndotv,
+                             double roughness, std::span<const Vec3> vertices);
 
 }  // namespace matc::runtime
