@@ -222,7 +222,9 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
 namespace matc {
 
 void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics) {
-  const FitAccuracy& accuracy = compiled.accuracy;
+  // A coated material is judged whole (docs/coating.md): under a full coat its bare curve, which
+  // a high-reflectivity, low-edge-tint metal makes hard to fit, is never seen.
+  const FitAccuracy& accuracy = compiled.coat ? compiled.coat->layered_accuracy : compiled.accuracy;
   const auto worst = [](const ErrorStats& stats) {
     return *std::max_element(stats.max_abs.begin(), stats.max_abs.end());
   };
@@ -251,9 +253,9 @@ void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics
   }
   diagnostics.warning(
       compiled.material.name_location, std::string(model_key(compiled.material.model)),
-      fmt::format("poor fit: max |F - exact| = {:.3f} (Schlick {:.3f}, F82-tint {:.3f}; the "
+      fmt::format("poor fit{}: max |F - exact| = {:.3f} (Schlick {:.3f}, F82-tint {:.3f}; the "
                   "measured metals stay under 0.02)",
-                  ours, schlick, f82),
+                  compiled.coat ? " of the coated surface" : "", ours, schlick, f82),
       advice);
 }
 

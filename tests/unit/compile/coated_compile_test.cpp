@@ -88,5 +88,23 @@ TEST(CoatedCompile, EveryModelTakesACoat) {
   }
 }
 
+// A full coat hides the bare curve: MaterialX's copper (a white metal, r = 0.99 and g = 0, that
+// no basis fits) under its coat fits well, and the poor-fit warning judges the coated surface.
+TEST(CoatedCompile, APoorBareFitUnderAFullCoatIsNotAPoorFit) {
+  const auto& basis = runtime::shipped_basis(runtime::kDefaultBasis);
+  Material material;
+  material.name = "white_under_coat";
+  material.model = ArtisticInput{{0.99, 0.99, 0.99}, {0.0, 0.0, 0.0}};
+  Diagnostics bare;
+  warn_if_poor_fit(compile_material(material, basis), bare);
+  EXPECT_EQ(bare.items().size(), 1u);
+  material.coat = CoatInput{1.0, 1.5, 0.2, {0.96, 0.38, 0.26}};
+  const CompiledMaterial coated = compile_material(material, basis);
+  EXPECT_LE(worst_channel(coated.coat->layered_error.max_abs), 0.01);
+  Diagnostics whole;
+  warn_if_poor_fit(coated, whole);
+  EXPECT_TRUE(whole.items().empty());
+}
+
 }  // namespace
 }  // namespace matc
