@@ -17,6 +17,16 @@ namespace {
 using runtime::Vec3;
 
 constexpr int kMaxBounces = 64;
+
+// A uniform double in [0, 1) from the generator's top 53 bits: the same numbers from every
+// standard library (std::uniform_real_distribution's are not specified).
+double uniform(std::mt19937_64& random) {
+  return static_cast<double>(random() >> 11) * 0x1p-53;
+}
+
+// A visible normal from two draws made in sequence: the order in which a call's arguments are
+// evaluated is unspecified (GCC and Clang differ), and it would change every path.
+Vec3 draw_visible_normal(const Vec3& w, double alpha, std::mt19937_64& random);
 constexpr double kMinAlpha = 1e-4;  // a smooth surface, sampled as a very sharp GGX
 
 // Smith's Lambda for GGX at direction w (the normal is +z).
@@ -46,6 +56,12 @@ Vec3 sample_visible_normal(const Vec3& w, double alpha, double u1, double u2) {
   return runtime::normalize({alpha * n[0], alpha * n[1], std::max(0.0, n[2])});
 }
 
+Vec3 draw_visible_normal(const Vec3& w, double alpha, std::mt19937_64& random) {
+  const double u1 = uniform(random);
+  const double u2 = uniform(random);
+  return sample_visible_normal(w, alpha, u1, u2);
+}
+
 // One scattering event on a dielectric microsurface seen from w (w.z > 0, normal +z, relative
 // index `eta` of the far side): reflected (out.z > 0) or transmitted (out.z < 0), chosen by the
 // exact Fresnel; false where the path leaves the microsurface's single-scattering model.
@@ -55,8 +71,7 @@ struct Scatter {
 };
 bool scatter_dielectric(const Vec3& w, double alpha, double eta, std::mt19937_64& random,
                         Scatter& result) {
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  const Vec3 m = sample_visible_normal(w, alpha, uniform(random), uniform(random));
+  const Vec3 m = draw_visible_normal(w, alpha, random);
   const double cos_i = std::clamp(runtime::dot(w, m), 0.0, 1.0);
   const double fresnel = fresnel_exact(cos_i, {eta, 0.0});
   const double lambda_in = ggx_lambda(w, alpha);
@@ -86,7 +101,6 @@ Rgb trace_coated(const LayeredSurface& surface, const Vec3& w, std::mt19937_64& 
   const CoatInput& coat = surface.coat;
   const double coat_alpha = std::max(coat.roughness * coat.roughness, kMinAlpha);
   const double base_alpha = std::max(surface.base_roughness * surface.base_roughness, kMinAlpha);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
   Scatter event;
   if (!scatter_dielectric(w, coat_alpha, coat.ior, random, event)) return {};
   if (event.out[2] > 0.0) return {event.weight, event.weight, event.weight};
@@ -100,7 +114,7 @@ Rgb trace_coated(const LayeredSurface& surface, const Vec3& w, std::mt19937_64& 
     absorb(down[2]);
     // The metal, seen from where the light came from.
     const Vec3 toward = runtime::scaled(down, -1.0);
-    const Vec3 m = sample_visible_normal(toward, base_alpha, uniform(random), uniform(random));
+    const Vec3 m = draw_visible_normal(toward, base_alpha, random);
     const double cos_i = std::clamp(runtime::dot(toward, m), 0.0, 1.0);
     const Rgb reflectance = surface.metal_in_coat.at(cos_i);
     const Vec3 up = runtime::minus(runtime::scaled(m, 2.0 * cos_i), toward);
@@ -154,10 +168,9 @@ LayeredEstimate layered_albedo(const LayeredSurface& surface, double ndotv, std:
   // The uncovered part: the bare metal in air, one GGX scattering.
   std::mt19937_64 bare_random(seed + 1);
   const double alpha = std::max(surface.base_roughness * surface.base_roughness, kMinAlpha);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
   Rgb bare{};
   for (std::size_t i = 0; i < paths; ++i) {
-    const Vec3 m = sample_visible_normal(w, alpha, uniform(bare_random), uniform(bare_random));
+    const Vec3 m = draw_visible_normal(w, alpha, bare_random);
     const double cos_i = std::clamp(runtime::dot(w, m), 0.0, 1.0);
     const Vec3 out = runtime::minus(runtime::scaled(m, 2.0 * cos_i), w);
     if (out[2] <= 0.0) continue;
