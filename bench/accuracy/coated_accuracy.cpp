@@ -257,18 +257,19 @@ void print_examples(std::span<char*> files) {
       const double roughness = material.roughness.value_or(0.0);
       double split_sum = 0.0, monte_carlo = 0.0, worst_ndotv = 0.0, head_on = 0.0;
       for (const double ndotv : {0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0}) {
-        const auto lobes = matc::runtime::evaluate_coated_fbar(
-            compiled.coefficients, coat.coefficients, lut.view(), ndotv, roughness);
+        const Rgb ours = matc::runtime::evaluate_coated_fbar(
+                             compiled.coefficients, coat.coefficients, lut.view(), ndotv, roughness)
+                             .total();
         const Rgb reference =
             matc::layered_split_sum(in_air_table, under_table, coat.input, ndotv, roughness);
         const matc::LayeredEstimate layered =
             matc::layered_albedo({*in_air, *metal_in_coat, coat.input, roughness}, ndotv, 1u << 15);
         for (std::size_t c = 0; c < 3; ++c) {
-          const double ours = lobes.base[c] + lobes.coat;
-          split_sum = std::max(split_sum, std::abs(ours - reference[c]));
-          if (ndotv == 1.0) head_on = std::max(head_on, std::abs(ours - layered.mean[c]));
-          if (std::abs(ours - layered.mean[c]) > monte_carlo) {
-            monte_carlo = std::abs(ours - layered.mean[c]);
+          split_sum = std::max(split_sum, std::abs(ours[c] - reference[c]));
+          const double from_monte_carlo = std::abs(ours[c] - layered.mean[c]);
+          if (ndotv == 1.0) head_on = std::max(head_on, from_monte_carlo);
+          if (from_monte_carlo > monte_carlo) {
+            monte_carlo = from_monte_carlo;
             worst_ndotv = ndotv;
           }
         }

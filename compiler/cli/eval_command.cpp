@@ -92,16 +92,32 @@ SplitSumInputs split_sum_inputs(const EvalOptions& options, const ReflectanceCur
   return inputs;
 }
 
-// Fbar exactly as a renderer samples the table it loads and from the table's closed form (as
-// matc_preintegrated_basis_analytic computes it), beside the exact split-sum integral.
-void add_preintegrated_fresnel(const EvalOptions& options, const SplitSumInputs& inputs,
-                               const LabelledCoefficients& coefficients, ordered_json& out) {
-  const Lut& lut = inputs.lut;
+// The (NdotV, roughness) points and the table a Fbar output was read from.
+void add_preintegrated_points(const EvalOptions& options, const Lut& lut, ordered_json& out) {
   out["ndotv"] = options.ndotv;
   out["roughness"] = options.roughness;
   out["lut"] = {{"size", lut.size},
                 {"samples", lut.samples},
                 {"precision", lut_precision_name(options.lut.precision)}};
+}
+
+// The quad light and the tables its radiance outputs were computed with.
+void add_quad_light_description(const EvalOptions& options, const std::vector<Vec3>& quad,
+                                const runtime::LtcTableView& ltc, ordered_json& out) {
+  ordered_json vertices = ordered_json::array();
+  for (const Vec3& vertex : quad)
+    vertices.push_back(vertex);
+  out["quad_light"] = {{"vertices", std::move(vertices)},
+                       {"ltc_table", {{"size", ltc.size}}},
+                       {"reference_samples", options.light_samples}};
+}
+
+// Fbar exactly as a renderer samples the table it loads and from the table's closed form (as
+// matc_preintegrated_basis_analytic computes it), beside the exact split-sum integral.
+void add_preintegrated_fresnel(const EvalOptions& options, const SplitSumInputs& inputs,
+                               const LabelledCoefficients& coefficients, ordered_json& out) {
+  const Lut& lut = inputs.lut;
+  add_preintegrated_points(options, lut, out);
   for (const auto& [label, values] : coefficients) {
     ordered_json fbar = ordered_json::array();
     for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
@@ -133,12 +149,7 @@ void add_quad_light(const EvalOptions& options, const std::vector<Vec3>& quad,
   const Lut schlick_lut = preintegrate_lut(lobes.view(), options.lut.bake);
   const runtime::LtcTableView ltc = runtime::shipped_ltc_table();
   const runtime::Rgb f0 = curve.at(1.0);
-  ordered_json vertices = ordered_json::array();
-  for (const Vec3& vertex : quad)
-    vertices.push_back(vertex);
-  out["quad_light"] = {{"vertices", std::move(vertices)},
-                       {"ltc_table", {{"size", ltc.size}}},
-                       {"reference_samples", options.light_samples}};
+  add_quad_light_description(options, quad, ltc, out);
   const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(options.lut.basis);
   std::vector<ordered_json> ours(coefficients.size(), ordered_json::array());
   std::vector<ordered_json> following(coefficients.size(), ordered_json::array());
@@ -260,12 +271,7 @@ void add_coated_quad_light(const EvalOptions& options, const std::vector<Vec3>& 
   const LayeredCurve coat_lobe(in_air, under, coat.weight, coat.ior, coat.color,
                                LayeredCurve::Part::coat);
   const TabulatedCurve base_table(base), coat_table(coat_lobe);
-  ordered_json vertices = ordered_json::array();
-  for (const Vec3& vertex : quad)
-    vertices.push_back(vertex);
-  out["quad_light"] = {{"vertices", std::move(vertices)},
-                       {"ltc_table", {{"size", ltc.size}}},
-                       {"reference_samples", options.light_samples}};
+  add_quad_light_description(options, quad, ltc, out);
   ordered_json ours = ordered_json::array(), reference = ordered_json::array(),
                standard_error = ordered_json::array();
   for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
@@ -310,10 +316,6 @@ void add_coated(const EvalOptions& options, const CompiledMaterial& compiled,
                  {"ior", coat.input.ior},
                  {"roughness", coat.input.roughness},
                  {"color", coat.input.color}};
-  const auto sum = [](const runtime::CoatedFresnel& lobes) {
-    return runtime::Rgb{lobes.base[0] + lobes.coat, lobes.base[1] + lobes.coat,
-                        lobes.base[2] + lobes.coat};
-  };
   if (!options.mu.empty()) {
     out["mu"] = options.mu;
     ordered_json total = ordered_json::array(), base = ordered_json::array(),
@@ -322,7 +324,7 @@ void add_coated(const EvalOptions& options, const CompiledMaterial& compiled,
     for (const double mu : options.mu) {
       const auto lobes =
           runtime::evaluate_coated_fresnel(compiled.coefficients, coefficients, shader_basis, mu);
-      total.push_back(sum(lobes));
+      total.push_back(lobes.total());
       base.push_back(lobes.base);
       coat_lobe.push_back(lobes.coat);
       exact.push_back(both.at(mu));
@@ -335,24 +337,22 @@ void add_coated(const EvalOptions& options, const CompiledMaterial& compiled,
   if (options.ndotv.empty()) return;
   const Lut lut = stored_as(preintegrate_lut(basis, options.lut.bake), options.lut.precision);
   const runtime::AnalyticLutCoefficients& analytic = runtime::shipped_analytic_lut(basis.kind);
-  out["ndotv"] = options.ndotv;
-  out["roughness"] = options.roughness;
-  out["lut"] = {{"size", lut.size},
-                {"samples", lut.samples},
-                {"precision", lut_precision_name(options.lut.precision)}};
+  add_preintegrated_points(options, lut, out);
   ordered_json total = ordered_json::array(), base = ordered_json::array(),
                coat_lobe = ordered_json::array(), closed_form = ordered_json::array();
   for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
     const double ndotv = options.ndotv[i];
     const auto lobes = runtime::evaluate_coated_fbar(compiled.coefficients, coefficients,
                                                      lut.view(), ndotv, options.roughness[i]);
-    total.push_back(sum(lobes));
+    total.push_back(lobes.total());
     base.push_back(lobes.base);
     coat_lobe.push_back(lobes.coat);
-    closed_form.push_back(sum(runtime::evaluate_coated_preintegrated(
-        compiled.coefficients, coefficients,
-        runtime::preintegrated_basis_analytic(analytic, ndotv, options.roughness[i]),
-        runtime::preintegrated_basis_analytic(analytic, ndotv, coefficients.roughness), ndotv)));
+    closed_form.push_back(
+        runtime::evaluate_coated_preintegrated(
+            compiled.coefficients, coefficients,
+            runtime::preintegrated_basis_analytic(analytic, ndotv, options.roughness[i]),
+            runtime::preintegrated_basis_analytic(analytic, ndotv, coefficients.roughness), ndotv)
+            .total());
   }
   out["Fbar"] = std::move(total);
   out["Fbar_base"] = std::move(base);

@@ -85,11 +85,6 @@ py::object artistic_dict(const CompiledMaterial& compiled) {
   return out;
 }
 
-// Both lobes' F (or Fbar) summed, as matc eval's F and Fbar for a coated material.
-Rgb lobes_sum(const runtime::CoatedFresnel& lobes) {
-  return {lobes.base[0] + lobes.coat, lobes.base[1] + lobes.coat, lobes.base[2] + lobes.coat};
-}
-
 py::object coat_dict(const CompiledMaterial& compiled) {
   if (!compiled.coat) return py::none();
   const CompiledCoat& coat = *compiled.coat;
@@ -111,8 +106,8 @@ py::array_t<double> fresnel(const CompiledResult& result, const DoubleArray& mu)
   const runtime::Coefficients& coefficients = result.compiled.coefficients;
   if (const auto& coat = result.compiled.coat) {
     return map_values<3>(mu, [&](double cosine) {
-      return lobes_sum(
-          runtime::evaluate_coated_fresnel(coefficients, coat->coefficients, basis, cosine));
+      return runtime::evaluate_coated_fresnel(coefficients, coat->coefficients, basis, cosine)
+          .total();
     });
   }
   return map_value_chunks<3>(mu, [&](const double* cosines, std::size_t count, double* rgb) {
@@ -150,7 +145,7 @@ py::array_t<double> fbar(const CompiledResult& result, const DoubleArray& ndotv,
   const runtime::Coefficients& coefficients = result.compiled.coefficients;
   if (const auto& coat = result.compiled.coat) {
     return map_pairs<3>(ndotv, roughness, [&](double n, double r) {
-      return lobes_sum(runtime::evaluate_coated_fbar(coefficients, coat->coefficients, view, n, r));
+      return runtime::evaluate_coated_fbar(coefficients, coat->coefficients, view, n, r).total();
     });
   }
   return map_pairs<3>(ndotv, roughness, [&](double n, double r) {

@@ -146,15 +146,17 @@ CompiledCoat compile_coat(const Material& material, const runtime::Coefficients&
                        {coat.coefficients.coat, coat.coefficients.coat, coat.coefficients.coat},
                        shader_basis)
           .decomposition.max_abs[0];
-  const LayeredCurve layered(in_air, under_grid, input.weight, input.ior, input.color);
+  // Evaluated once on the accuracy grid: the loop below and the Schlick and F82-tint rows read it.
+  const LayeredCurve layered_exact(in_air, under_grid, input.weight, input.ior, input.color);
+  const AccuracyGridCurve layered(layered_exact);
   Rgb squares{};
   for (std::size_t j = 0; j < kAccuracySamples; ++j) {
     const double mu = static_cast<double>(j) / static_cast<double>(kAccuracySamples - 1);
     const Rgb exact = layered.at(mu);
-    const auto ours =
-        runtime::evaluate_coated_fresnel(in_air_fit, coat.coefficients, shader_basis, mu);
+    const Rgb ours =
+        runtime::evaluate_coated_fresnel(in_air_fit, coat.coefficients, shader_basis, mu).total();
     for (std::size_t c = 0; c < 3; ++c) {
-      const double error = std::abs(ours.base[c] + ours.coat - std::max(0.0, exact[c]));
+      const double error = std::abs(ours[c] - std::max(0.0, exact[c]));
       coat.layered_error.max_abs[c] = std::max(coat.layered_error.max_abs[c], error);
       squares[c] += error * error;
     }

@@ -30,9 +30,9 @@ MaterialCurves sample_material_curves(const CompiledMaterial& compiled,
   const Rgb& f82_value = compiled.coat ? compiled.coat->layered_f82 : compiled.f82;
   const auto ours = [&](double mu) {
     if (!compiled.coat) return runtime::evaluate_fresnel(compiled.coefficients, shader_basis, mu);
-    const auto lobes = runtime::evaluate_coated_fresnel(
-        compiled.coefficients, compiled.coat->coefficients, shader_basis, mu);
-    return Rgb{lobes.base[0] + lobes.coat, lobes.base[1] + lobes.coat, lobes.base[2] + lobes.coat};
+    return runtime::evaluate_coated_fresnel(compiled.coefficients, compiled.coat->coefficients,
+                                            shader_basis, mu)
+        .total();
   };
   MaterialCurves curves;
   for (std::size_t i = 0; i < kReportAngles; ++i) {

@@ -35,6 +35,8 @@ Rgb coat_tint(const CoatCoefficients& coat, double mu);
 struct CoatedFresnel {
   Rgb base{};         // the base lobe's, the coat's attenuation and tint included
   double coat = 0.0;  // the coat lobe's, its weight included
+  // Both lobes summed: what a mirror-like surface reflects, and matc eval's F and Fbar.
+  Rgb total() const { return {base[0] + coat, base[1] + coat, base[2] + coat}; }
 };
 
 // The base lobe's F: mix(in_air, (1 - f)^2 v / (1 - f min(v, 1)), weight) per channel with f the
