@@ -272,13 +272,17 @@ void add_coated_quad_light(const EvalOptions& options, const std::vector<Vec3>& 
                                LayeredCurve::Part::coat);
   const TabulatedCurve base_table(base), coat_table(coat_lobe);
   add_quad_light_description(options, quad, ltc, out);
-  ordered_json ours = ordered_json::array(), reference = ordered_json::array(),
+  ordered_json ours = ordered_json::array(), ours_base = ordered_json::array(),
+               ours_coat = ordered_json::array(), reference = ordered_json::array(),
                standard_error = ordered_json::array();
   for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
     const double ndotv = options.ndotv[i], roughness = options.roughness[i];
-    ours.push_back(runtime::polygon_light_ltc_coated(compiled.coefficients,
-                                                     compiled.coat->coefficients, lut.view(), ltc,
-                                                     ndotv, roughness, quad));
+    const runtime::CoatedFresnel lobes =
+        runtime::polygon_light_ltc_coated(compiled.coefficients, compiled.coat->coefficients,
+                                          lut.view(), ltc, ndotv, roughness, quad);
+    ours.push_back(lobes.total());
+    ours_base.push_back(lobes.base);
+    ours_coat.push_back(lobes.coat);
     const AreaLightEstimate base_part = integrate_polygon_light(
         GgxLobe(ndotv, roughness), quad, [&](double mu) { return base_table.at(mu); },
         options.light_samples);
@@ -294,6 +298,10 @@ void add_coated_quad_light(const EvalOptions& options, const std::vector<Vec3>& 
     standard_error.push_back(error);
   }
   out["L_ltc"] = std::move(ours);
+  // Each lobe's part (engines that scale the base's lights for multiple scattering need them
+  // apart).
+  out["L_ltc_base"] = std::move(ours_base);
+  out["L_ltc_coat"] = std::move(ours_coat);
   out["L_reference"] = std::move(reference);
   out["L_reference_standard_error"] = std::move(standard_error);
 }

@@ -52,15 +52,15 @@ CoatedFresnel evaluate_coated_preintegrated(const Coefficients& in_air,
           coat.weight * std::min(f, 1.0)};
 }
 
-Rgb polygon_light_ltc_coated(const Coefficients& in_air, const CoatCoefficients& coat,
-                             const LutView& lut, const LtcTableView& ltc, double ndotv,
-                             double roughness, std::span<const Vec3> vertices) {
+CoatedFresnel polygon_light_ltc_coated(const Coefficients& in_air, const CoatCoefficients& coat,
+                                       const LutView& lut, const LtcTableView& ltc, double ndotv,
+                                       double roughness, std::span<const Vec3> vertices) {
   const CoatedFresnel lobes = evaluate_coated_fbar(in_air, coat, lut, ndotv, roughness);
   const double base = ltc_polygon_integral(sample_ltc(ltc, ndotv, roughness), vertices);
   const double coat_lobe = ltc_polygon_integral(sample_ltc(ltc, ndotv, coat.roughness), vertices);
-  Rgb radiance{};
+  CoatedFresnel radiance{.coat = coat_lobe * lobes.coat};
   for (std::size_t c = 0; c < 3; ++c)
-    radiance[c] = base * lobes.base[c] + coat_lobe * lobes.coat;
+    radiance.base[c] = base * lobes.base[c];
   return radiance;
 }
 

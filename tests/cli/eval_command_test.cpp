@@ -72,5 +72,28 @@ TEST_F(MatcCli, EvalWithoutTheReferenceKeepsTheTablesFbar) {
                 .exit_code,
             2);
 }
+
+// A coated material: both lobes and their sum, for direct lights and from the table (what the web
+// engines' probe tests compare renders with, lobe by lobe).
+TEST_F(MatcCli, EvalPrintsBothLobesOfACoatedMaterialAndTheirSum) {
+  const CommandResult result =
+      run({"eval", std::string(MATC_EXAMPLES_DIR) + "/copper_lacquered.json", "--mu", "0.3,0.9",
+           "--ndotv", "0.3,0.9", "--roughness", "0.3,0.3", "--no-reference"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto json = nlohmann::json::parse(result.out);
+  EXPECT_EQ(json["coat"]["roughness"], 0.1);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double coat = json["F_coat"][i].get<double>();
+    const double coat_bar = json["Fbar_coat"][i].get<double>();
+    EXPECT_GT(coat, 0.03);
+    EXPECT_GT(coat_bar, 0.03);
+    for (std::size_t c = 0; c < 3; ++c) {
+      EXPECT_DOUBLE_EQ(json["F"][i][c].get<double>(), json["F_base"][i][c].get<double>() + coat);
+      EXPECT_DOUBLE_EQ(json["Fbar"][i][c].get<double>(),
+                       json["Fbar_base"][i][c].get<double>() + coat_bar);
+      EXPECT_NEAR(json["F"][i][c].get<double>(), json["F_exact"][i][c].get<double>(), 0.003);
+    }
+  }
+}
 }  // namespace
 }  // namespace matc::cli_test

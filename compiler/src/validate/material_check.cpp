@@ -119,7 +119,8 @@ class MaterialCheck final : public DeviceCheck {
       record(0, runtime::evaluate_coated_fresnel(c, coat, shader_basis, q.mu), result, i);
       record_largest(quantities[8],
                      runtime::polygon_light_ltc_coated(c, coat, table, runtime::shipped_ltc_table(),
-                                                       q.ndotv, q.roughness, kCoatedValidationQuad),
+                                                       q.ndotv, q.roughness, kCoatedValidationQuad)
+                         .total(),
                      result + 16, i);
       record(1, runtime::evaluate_coated_fbar(c, coat, table, q.ndotv, q.roughness), result + 4, i);
       if (embedded) {

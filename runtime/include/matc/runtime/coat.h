@@ -31,7 +31,7 @@ struct CoatCoefficients {
 // inversesqrt(1 - (1 - mu^2) / ior^2).
 Rgb coat_tint(const CoatCoefficients& coat, double mu);
 
-// F (or Fbar) of each lobe.
+// F, Fbar or an area light's radiance of each lobe.
 struct CoatedFresnel {
   Rgb base{};         // the base lobe's, the coat's attenuation and tint included
   double coat = 0.0;  // the coat lobe's, its weight included
@@ -74,11 +74,11 @@ CoatedFresnel evaluate_coated_preintegrated(const Coefficients& in_air,
 CoatedFresnel evaluate_coated_fbar(const Coefficients& in_air, const CoatCoefficients& coat,
                                    const LutView& lut, double ndotv, double roughness);
 
-// A polygon light of radiance 1 on both lobes, as matc_ltc_quad_light_<name> computes it: each
-// lobe's LTC integral (the table at its roughness) times its Fbar. Vertices in the shading frame
-// (normal +z, view in the xz-plane), as polygon_light_ltc takes them.
-Rgb polygon_light_ltc_coated(const Coefficients& in_air, const CoatCoefficients& coat,
-                             const LutView& lut, const LtcTableView& ltc, double ndotv,
-                             double roughness, std::span<const Vec3> vertices);
+// A polygon light of radiance 1 on both lobes, as matc_ltc_quad_light_<name> computes it (the
+// total): each lobe's LTC integral (the table at its roughness) times its Fbar. Vertices in the
+// shading frame (normal +z, view in the xz-plane), as polygon_light_ltc takes them.
+CoatedFresnel polygon_light_ltc_coated(const Coefficients& in_air, const CoatCoefficients& coat,
+                                       const LutView& lut, const LtcTableView& ltc, double ndotv,
+                                       double roughness, std::span<const Vec3> vertices);
 
 }  // namespace matc::runtime
