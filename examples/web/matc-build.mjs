@@ -78,10 +78,39 @@ vec4 matc_bbar;                  // and its texel of matc_lut, set before the li
 `;
 }
 
+// What the patched light paths call for the base lobe, and for a coated material's coat lobe
+// (docs/coating.md): the library's functions on this pixel's coefficients, or, for a material
+// loaded with a coat (build.loadMaterial), its own snippet's (<name>.glsl: the metal seen through
+// the coat, attenuated and tinted by it, and the coat's dielectric Fresnel with its weight).
+// matc_coat_bbar is matc_lut's texel at the coat's roughness and matc_ndotv the pixel's NdotV,
+// set before the lights with the rest.
+export function lobesGlsl(material) {
+  if (!material?.coat) {
+    return `
+vec3 matc_base_fresnel(float mu) { return matc_fresnel(matc_c, mu); }
+vec3 matc_base_preintegrated() { return matc_fresnel_preintegrated(matc_c, matc_bbar); }
+vec3 matc_base_compensation() { return matc_energy_compensation(matc_c, matc_bbar); }
+`;
+  }
+  const name = material.name;
+  return `
+${material.coat.snippet}
+vec4 matc_coat_bbar;
+float matc_ndotv;
+vec3 matc_base_fresnel(float mu) { return matc_fresnel_${name}(mu); }
+vec3 matc_base_preintegrated() { return matc_fresnel_preintegrated_${name}(matc_bbar, matc_coat_bbar, matc_ndotv); }
+// The base's multiple scattering as a bare metal's, with the metal's F0 under the coat.
+vec3 matc_base_compensation() { return matc_energy_compensation(matc_under_coat_coefficients_${name}, matc_bbar); }
+float matc_coat_lobe_fresnel(float mu) { return matc_coat_fresnel_${name}(mu); }
+float matc_coat_lobe_preintegrated() { return matc_coat_fresnel_preintegrated_${name}(matc_coat_bbar); }
+`;
+}
+
 // What the engine's main() computes before its lights: the pixel's coefficients (MATC_SOURCE_*
 // says from where; maps at texture coordinate `uv`, F0 of baked metals without an F0 map from
-// `baseColour`) and matc_lut's texel at (`ndotv`, `roughness`), all GLSL expressions of the engine.
-export function pixelSetupGlsl({ uv, baseColour, ndotv, roughness }) {
+// `baseColour`) and matc_lut's texel at (`ndotv`, `roughness`), and for a coated material
+// (MATC_COATED) at (`ndotv`, `coatRoughness`), all GLSL expressions of the engine.
+export function pixelSetupGlsl({ uv, baseColour, ndotv, roughness, coatRoughness }) {
   return `
 #if defined(MATC_SOURCE_TABLE)
 	{
@@ -100,6 +129,10 @@ export function pixelSetupGlsl({ uv, baseColour, ndotv, roughness }) {
 	matc_c = MatcFresnelCoefficients(matc_red, matc_green, matc_blue);
 #endif
 	matc_bbar = texture(matc_lut, matc_lut_texcoord(${ndotv}, ${roughness}));
+#ifdef MATC_COATED
+	matc_ndotv = ${ndotv};
+	matc_coat_bbar = texture(matc_lut, matc_lut_texcoord(matc_ndotv, ${coatRoughness}));
+#endif
 `;
 }
 
@@ -217,9 +250,31 @@ export async function loadMatcBuildFiles(url, { language = "glsl" } = {}) {
       if (!Array.isArray(rows) || rows.length !== 3 || rows.some((row) => row.length !== 4)) {
         throw new MatcWebError(`${file}: coefficients must be 3 rows of 4 numbers`);
       }
-      return { name: material.name, basis, coefficients: rows };
+      return { name: material.name, basis, coefficients: rows,
+               coat: material.coat ? await loadCoat(material, at(`${name}.${language}`), file) : null };
     },
   };
+}
+
+// A coated material's coat (its <name>.json's coat section) and its shader snippet, whose
+// functions the integrations call for both lobes: { weight, ior, roughness, color,
+// underCoatCoefficients (3 rows of c_0..c_3: the metal seen through the coat), snippet }.
+async function loadCoat(material, snippetUrl, file) {
+  const input = material.coat.input ?? {};
+  for (const field of ["weight", "ior", "roughness"]) {
+    if (typeof input[field] !== "number") throw new MatcWebError(`${file}: coat.input.${field} must be a number`);
+  }
+  if (!/^[A-Za-z_][A-Za-z0-9_]*$/.test(material.name ?? "")) {
+    throw new MatcWebError(`${file}: name "${material.name}" is not the identifier matc's snippets use`);
+  }
+  const snippet = await (await fetchChecked(snippetUrl, "a coated material needs its own shader snippet; " +
+                                            "compile with the shader language among --emit")).text();
+  const underCoat = material.coat.under_coat_coefficients;
+  if (!Array.isArray(underCoat) || underCoat.length !== 3 || underCoat.some((row) => row.length !== 4)) {
+    throw new MatcWebError(`${file}: coat.under_coat_coefficients must be 3 rows of 4 numbers`);
+  }
+  return { weight: input.weight, ior: input.ior, roughness: input.roughness, color: rgbOf(input.color),
+           underCoatCoefficients: underCoat, snippet };
 }
 
 // A colour option of a source (reflectivity, edgeTint): [r, g, b], one grey value, or 1 when absent.

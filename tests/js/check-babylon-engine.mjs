@@ -133,6 +133,7 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
   const original = ShaderStore.IncludesShadersStore.lightFragment;
   await checkBadInputs(out, {
     loadMatcBuild: (url) => loadMatcBuild(url, scene), build, material: materials.beryllium,
+    coated: materials[config.coated],
     texture: constant(scene, [1, 1, 1]),
     useMatc: (source, options) => useMatcFresnel(new PBRMaterial("refused", scene), build, source, options),
     changeEngine: () => {
@@ -149,6 +150,7 @@ const babylonVersion = () => JSON.parse(readFileSync(join(dirname(fileURLToPath(
 await runProbeCheck({
   name: "Babylon.js", label: `Babylon.js ${babylonVersion()} PBRMaterial`, page: kPage,
   alphaOf: (r) => r * r + 0.0005,  // Babylon's GGX alpha: roughness squared plus its minimum variance
+  coatVisibility: "kelemen",  // Babylon's coat lobe: Kelemen's visibility (computeClearCoatLighting)
   // Babylon's energy conservation scales area lights' specular too.
   rect: { light: kProbeRectLight, corners: rectCorners(kProbeRectLight), compensated: true },
 }, process.argv.slice(2));

@@ -70,7 +70,8 @@ import { probeScene } from "/checks/three-scene-page.mjs";
   }
   const original = THREE.ShaderChunk.lights_physical_pars_fragment;
   await checkBadInputs(out, {
-    loadMatcBuild, build, material: sources.beryllium.material, texture: constant([1, 1, 1]),
+    loadMatcBuild, build, material: sources.beryllium.material, coated: sources[config.coated].material,
+    texture: constant([1, 1, 1]),
     useMatc: (source, options) => useMatcFresnel(new THREE.MeshPhysicalMaterial(), build, source, options),
     changeEngine: () => {
       THREE.ShaderChunk.lights_physical_pars_fragment =

@@ -64,7 +64,7 @@ import { probeScene, webGpuRenderer } from "/checks/three-scene-page.mjs";`,
   const lightingModel = THREE.PhysicalLightingModel.prototype;
   const original = lightingModel.indirectSpecular;
   await checkBadInputs(out, {
-    loadMatcBuild, build, material: materials.beryllium, texture: white,
+    loadMatcBuild, build, material: materials.beryllium, coated: materials[config.coated], texture: white,
     useMatc: (source, options) => useMatcFresnel(new THREE.MeshPhysicalNodeMaterial(), build, source, options),
     changeEngine: () => {
       // A three.js whose metal image lighting no longer goes through computeMultiscattering.

@@ -10,9 +10,13 @@ import { check, finish } from "./report.mjs";
 import { compensatedFbar, kPreintegratedTolerance, run } from "./shader-cases.mjs";
 
 export const kProbeSize = 64;
-export const kProbePixels = [[32, 32], [5, 60], [60, 10], [1, 1], [40, 20], [62, 40]];
+// [39, 37] sees the point light near its mirror direction: the sharp coat lobe of the coated metal
+// (its peak, at [37, 35], is too steep for float32 positions to meet 1e-4).
+export const kProbePixels = [[32, 32], [5, 60], [60, 10], [1, 1], [40, 20], [62, 40], [39, 37]];
 export const kProbeRoughness = [0.3, 0.7];
 export const kProbeMaterials = ["figure2_edge_tint", "beryllium"];
+// A coated metal (measured copper under a tinted lacquer of roughness 0.1): both lobes.
+export const kProbeCoated = "copper_lacquered";
 export const kPointLight = { position: [0.3, 0.2, 0.8], intensity: 0.7 };
 // A rect area light above the probe plane: centre, size and radiance (each engine places its
 // corners: three.js's looks at the origin, Babylon's faces -z).
@@ -33,15 +37,17 @@ const kNormal = [0, 0, 1];
 const pointAt = ([x, y]) => [(2 * (x + 0.5)) / kProbeSize - 1, (2 * (y + 0.5)) / kProbeSize - 1, 0];
 const viewAt = (pixel) => normalize(sub([0, 0, 1], pointAt(pixel)));
 
-// GGX without F, D x height-correlated Smith visibility, for the engine's alpha.
-function ggxWithoutFresnel(l, v, alpha) {
+// GGX without F, D x height-correlated Smith visibility (or Kelemen's 1 / (4 (v.h)^2) with
+// visibility "kelemen"), for the engine's alpha.
+function ggxWithoutFresnel(l, v, alpha, visibilityTerm = "smith") {
   const a2 = alpha * alpha;
   const h = normalize(add(l, v));
   const nl = Math.max(dot(kNormal, l), 0), nv = Math.max(dot(kNormal, v), 0);
   const nh = Math.max(dot(kNormal, h), 0);
   const gv = nl * Math.sqrt(a2 + (1 - a2) * nv * nv);
   const gl = nv * Math.sqrt(a2 + (1 - a2) * nl * nl);
-  const visibility = 0.5 / Math.max(gv + gl, 1e-6);
+  const visibility = visibilityTerm === "kelemen" ? 0.25 / Math.max(dot(v, h) ** 2, 1e-6)
+                                                  : 0.5 / Math.max(gv + gl, 1e-6);
   const d = a2 / (Math.PI * (nh * nh * (a2 - 1) + 1) ** 2);
   return { value: d * visibility, vdoth: Math.max(dot(v, h), 0) };
 }
@@ -61,7 +67,7 @@ function toShadingFrame(corner, pixel) {
 // out/beryllium_extended.json (extended-basis coefficients beside powers tables).
 export function prepareProbeBuilds(matc, materialsDir, dir) {
   const out = join(dir, "out");
-  const materialFiles = kProbeMaterials.map((name) => join(materialsDir, `${name}.json`));
+  const materialFiles = [...kProbeMaterials, kProbeCoated].map((name) => join(materialsDir, `${name}.json`));
   run(matc, ["-q", "-o", out, "--emit", "glsl,wgsl,json,lut,ltc,coefficient-table",
              "--lut-precision", "f32", "--coefficient-table-precision", "f32", ...materialFiles]);
   run(matc, ["bake", "-q", "--reflectivity", kBaked.reflectivity.join(","), "--edge-tint",
@@ -100,6 +106,9 @@ export function probeRenders() {
       renders.push({ key: `${source} ${light} r=0.3`, source, light, roughness: 0.3 });
     }
   }
+  for (const light of ["environment", "point", "rect"]) {
+    renders.push({ key: `${kProbeCoated} ${light} r=0.3`, source: kProbeCoated, light, roughness: 0.3, areaLights: "matc" });
+  }
   return renders;
 }
 
@@ -108,7 +117,7 @@ export function probeRenders() {
 // engine's GGX alpha for a roughness), the rect light's radiance (rect.light.intensity) x `L_ltc`
 // (rect.corners in world space; `L_ltc_following` at the quality level), times the compensation
 // too where the engine applies it to area lights (rect.compensated).
-export function expectedProbes({ matc, materialsDir, out, alphaOf, rect, renders }) {
+export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibility, rect, renders }) {
   const wanted = new Set(renders.map((render) => render.key));
   const ndotv = kProbePixels.map((pixel) => Math.fround(dot(kNormal, viewAt(pixel))));
   const pointTerms = kProbeRoughness.map((roughness) => kProbePixels.map((pixel) => {
@@ -117,7 +126,7 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, rect, renders
     const l = normalize(toLight);
     const brdf = ggxWithoutFresnel(l, viewAt(pixel), alphaOf(roughness));
     return { irradiance: (kPointLight.intensity / Math.max(distance2, 0.01)) * Math.max(l[2], 0),
-             ggx: brdf.value, vdoth: brdf.vdoth };
+             ggx: brdf.value, vdoth: brdf.vdoth, light: l, view: viewAt(pixel) };
   }));
   const list = (values) => values.join(",");
   const albedo = (roughness) => JSON.parse(run(matc, [
@@ -167,6 +176,55 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, rect, renders
       }
     }
   }
+  Object.assign(expected, expectedCoatedProbes({ matc, materialsDir, out, alphaOf, coatVisibility, rect, wanted,
+                                                 ndotv, albedo, pointTerms }));
+  return expected;
+}
+
+// The coated metal's probes at roughness 0.3, both lobes as the CPU runtime evaluates them: the
+// base lobe (the metal through the coat) with the multiple scattering of a bare metal whose F0 is
+// the metal's under the coat, the coat lobe (its weight included) at the coat's roughness, without.
+// Rect lights: `L_ltc_base` and `L_ltc_coat` of `matc eval --quad-light`, the base's compensated
+// where the engine compensates rect lights. engine.coatVisibility: the coat lobe's visibility term
+// where the engine's is not the base's (Babylon's Kelemen).
+function expectedCoatedProbes({ matc, materialsDir, out, alphaOf, coatVisibility, rect, wanted, ndotv, albedo,
+                                pointTerms }) {
+  const roughness = 0.3;
+  const key = (light) => `${kProbeCoated} ${light} r=${roughness}`;
+  const expected = {};
+  if (!["environment", "point", "rect"].some((light) => wanted.has(key(light)))) return expected;
+  const file = join(materialsDir, `${kProbeCoated}.json`);
+  const compiled = JSON.parse(readFileSync(join(out, `${kProbeCoated}.json`), "utf8"));
+  const underCoatF0 = compiled.coat.under_coat_coefficients.map((row) => row[0]);
+  const coatAlpha = alphaOf(compiled.coat.input.roughness);
+  const terms = pointTerms[kProbeRoughness.indexOf(roughness)];
+  const list = (values) => values.join(",");
+  const evaluated = JSON.parse(run(matc, [
+    "eval", file, "--lut-precision", "f32", "--no-reference", "--ndotv", list(ndotv),
+    "--roughness", list(ndotv.map(() => roughness)), "--mu", list(terms.map((t) => t.vdoth))]));
+  const e = albedo(roughness);
+  const layered = (base, coat, i) => compensatedFbar(base, underCoatF0, e[i]).map((value) => value + coat);
+  if (wanted.has(key("environment"))) {
+    expected[key("environment")] = ndotv.map((_, i) => layered(evaluated.Fbar_base[i], evaluated.Fbar_coat[i], i));
+  }
+  if (wanted.has(key("point"))) {
+    expected[key("point")] = terms.map((t, i) => {
+      const coatGgx = ggxWithoutFresnel(t.light, t.view, coatAlpha, coatVisibility).value;
+      const base = compensatedFbar(evaluated.F_base[i], underCoatF0, e[i]).map((value) => value * t.ggx);
+      return base.map((value) => t.irradiance * (value + coatGgx * evaluated.F_coat[i]));
+    });
+  }
+  if (wanted.has(key("rect"))) {
+    expected[key("rect")] = kProbePixels.map((pixel, i) => {
+      const quad = rect.corners.map((corner) => toShadingFrame(corner, pixel).join(",")).join(";");
+      const light = JSON.parse(run(matc, [
+        "eval", file, "--lut-precision", "f32", "--ndotv", String(ndotv[i]), "--roughness", String(roughness),
+        "--quad-light", quad, "--light-samples", "16"]));
+      const base = light.L_ltc_base[0].map((value) => value * rect.light.intensity);
+      const coat = light.L_ltc_coat[0] * rect.light.intensity;
+      return (rect.compensated ? compensatedFbar(base, underCoatF0, e[i]) : base).map((value) => value + coat);
+    });
+  }
   return expected;
 }
 
@@ -202,6 +260,7 @@ export const kFailures = {
   engine_changed: "changed (0 matches for the text the patch",
   textured_without_edge_tint: "needs both reflectivityMap and edgeTintMap",
   unknown_area_light_option: 'areaLights: "fast"; allowed: "matc", "quality", "engine"',
+  coated_quality_area_lights: "is coated: the quality-level area lights take bare metals",
 };
 
 export function checkFailures(failures) {
@@ -225,12 +284,13 @@ export async function runProbeCheck(engine, [matc, materialsDir, webDir]) {
   try {
     const { out, roots } = prepareProbeBuilds(matc, materialsDir, dir);
     const renders = probeRenders();
-    const config = { materials: kProbeMaterials, pixels: kProbePixels, renders, point: kPointLight,
+    const config = { materials: [...kProbeMaterials, kProbeCoated], coated: kProbeCoated, pixels: kProbePixels, renders, point: kPointLight,
                      rect: engine.rect?.light, textured: kTextured };
     const result = await runPage({ html: engine.page(config), roots: { ...kWebRoots, web: webDir, ...roots }, dir,
                                    ...(engine.runPage ?? {}) });
     check(result.errors.length === 0, `${engine.name}: ${result.errors.join("\n")}`);
-    const expected = expectedProbes({ matc, materialsDir, out, alphaOf: engine.alphaOf, rect: engine.rect, renders });
+    const expected = expectedProbes({ matc, materialsDir, out, alphaOf: engine.alphaOf,
+                                      coatVisibility: engine.coatVisibility, rect: engine.rect, renders });
     const worst = compareProbes(result.renders ?? {}, expected);
     const refused = checkFailures(result.failures ?? {});
     console.log(`${engine.label} with matc's Fresnel: ${renders.length} renders x ` +

@@ -8,7 +8,7 @@ export function recordConsoleErrors(out) {
   console.error = (...args) => { out.consoleErrors.push(args.join(" ")); consoleError(...args); };
 }
 
-export async function checkBadInputs(out, { loadMatcBuild, build, material, useMatc, changeEngine, texture }) {
+export async function checkBadInputs(out, { loadMatcBuild, build, material, coated, useMatc, changeEngine, texture }) {
   out.failures = {};
   const failure = async (key, action) => {
     const before = out.consoleErrors.length;
@@ -34,4 +34,5 @@ export async function checkBadInputs(out, { loadMatcBuild, build, material, useM
   });
   await failure("unknown_area_light_option", () => useMatc({ material }, { areaLights: "fast" }));
   await failure("textured_without_edge_tint", () => useMatc({ reflectivityMap: texture }));
+  await failure("coated_quality_area_lights", () => useMatc({ material: coated }, { areaLights: "quality" }));
 }

@@ -1,7 +1,7 @@
 // matc's Fresnel inside Babylon.js's PBRMaterial, as a material plugin: the material becomes a
 // matc metal in every light path Babylon has (point, spot, directional and hemispheric lights,
 // image lighting with its energy conservation, rect area lights), with the rest of the engine
-// untouched. The plugin replaces Babylon's own shader text at anchors checked when it is created:
+// untouched; a coated matc material's coat lobe replaces Babylon's clear coat. The plugin replaces Babylon's own shader text at anchors checked when it is created:
 // a Babylon whose shaders changed makes it throw, never render wrongly. docs/web-engines.md says
 // what each replacement does.
 //
@@ -18,7 +18,7 @@ import { Vector3, Vector4 } from "@babylonjs/core/Maths/math.vector.js";
 import { AbstractEngine } from "@babylonjs/core/Engines/abstractEngine.js";
 import "@babylonjs/core/Shaders/pbr.fragment.js";  // registers the shader text the anchors are checked against
 import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, declarationsGlsl, loadMatcBuildFiles,
-         pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
+         lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -28,29 +28,57 @@ export const kTestedBabylonVersions = ["9.31.0"];
 
 // This pixel's coefficients and its texel of matc_lut at (NdotV, roughness) as Babylon shades them.
 const kPixelSetup = pixelSetupGlsl({ uv: "vMainUV1", baseColour: "surfaceAlbedo.rgb", roughness: "roughness",
-                                     ndotv: "absEps(dot(normalW, viewDirectionW))" });
+                                     ndotv: "absEps(dot(normalW, viewDirectionW))", coatRoughness: "vClearCoatParams.y" });
 
 // Declarations: the matc library, the tables, the globals the patched light paths read (the
-// vector uniforms come through the plugin's uniform block), and the rect-area-light term.
-const kDeclarations = (library) => `
+// vector uniforms come through the plugin's uniform block), the lobes' functions (a coated
+// material's from its snippet), the rect-area-light terms and a coated material's coat lobe.
+const kDeclarations = (library, material) => `
 #ifdef MATC_FRESNEL
 ${declarationsGlsl(library, { uniforms: false })}
+${lobesGlsl(material)}
 // A rect area light of Babylon's (centre, half width, half height; one-sided like Babylon's):
-// matc's LTC times sum_i c_i bbar_i, as matc_ltc_quad_light (areaLights "quality": as
-// matc_ltc_quad_light_following).
+// its corners, or false where P is behind it.
+bool matc_rect_corners(vec3 P, vec3 centre, vec3 halfWidth, vec3 halfHeight, out vec3 q0, out vec3 q1, out vec3 q2, out vec3 q3) {
+	q0 = centre + halfWidth - halfHeight;
+	q1 = centre - halfWidth - halfHeight;
+	q2 = centre - halfWidth + halfHeight;
+	q3 = centre + halfWidth + halfHeight;
+	return dot(cross(q1 - q0, q3 - q0), P - q0) >= 0.0;
+}
+// Its radiance on the base lobe: matc's LTC times sum_i c_i bbar_i, as matc_ltc_quad_light
+// (areaLights "quality": as matc_ltc_quad_light_following).
 vec3 matc_rect_area_light(vec3 N, vec3 V, vec3 P, float roughness, vec3 centre, vec3 halfWidth, vec3 halfHeight) {
-	vec3 q0 = centre + halfWidth - halfHeight;
-	vec3 q1 = centre - halfWidth - halfHeight;
-	vec3 q2 = centre - halfWidth + halfHeight;
-	vec3 q3 = centre + halfWidth + halfHeight;
-	if (dot(cross(q1 - q0, q3 - q0), P - q0) < 0.0) return vec3(0.0);
+	vec3 q0, q1, q2, q3;
+	if (!matc_rect_corners(P, centre, halfWidth, halfHeight, q0, q1, q2, q3)) return vec3(0.0);
 	vec4 ltc = texture2D(matc_ltc, matc_ltc_texcoord(absEps(dot(N, V)), roughness));
 #ifdef MATC_QUALITY_LTC
 	return matc_ltc_quad_light_following(matc_c, matc_bbar, ltc, roughness, N, V, P, q0, q1, q2, q3);
 #else
-	return matc_ltc_quad_light(matc_c, matc_bbar, ltc, N, V, P, q0, q1, q2, q3);
+	return matc_ltc_quad_integral(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3) * matc_base_preintegrated();
 #endif
 }
+#ifdef MATC_COATED
+// ... and on a coated material's coat lobe, matc's LTC at the coat's roughness (Babylon's rect
+// lights have no coat lobe of their own).
+vec3 matc_rect_coat_light(vec3 N, vec3 V, vec3 P, float coatRoughness, vec3 centre, vec3 halfWidth, vec3 halfHeight) {
+	vec3 q0, q1, q2, q3;
+	if (!matc_rect_corners(P, centre, halfWidth, halfHeight, q0, q1, q2, q3)) return vec3(0.0);
+	vec4 ltc = texture2D(matc_ltc, matc_ltc_texcoord(absEps(dot(N, V)), coatRoughness));
+	return vec3(matc_ltc_quad_integral(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3) * matc_coat_lobe_preintegrated());
+}
+// The coat lobe of a direct light as Babylon's computeClearCoatLighting computes it (GGX D,
+// Kelemen's visibility) with the coat's fitted Fresnel and weight; w = 1: the base lobe carries
+// the coat's attenuation already.
+vec4 matc_coat_light(preLightingInfo info, vec3 Ncc, float geometricRoughnessFactor, vec3 lightColor) {
+	float NccdotL = saturateEps(dot(Ncc, info.L));
+	float NccdotH = saturateEps(dot(Ncc, info.H));
+	float alphaG = convertRoughnessToAverageSlope(max(info.roughness, geometricRoughnessFactor));
+	float term = matc_coat_lobe_fresnel(info.VdotH) * normalDistributionFunction_TrowbridgeReitzGGX(NccdotH, alphaG) *
+	             visibility_Kelemen(info.VdotH);
+	return vec4(term * info.attenuation * NccdotL * lightColor, 1.0);
+}
+#endif
 #endif
 `;
 
@@ -67,31 +95,75 @@ const kPatches = [
   {
     source: "lightFragment",
     anchor: "coloredFresnel=fresnelSchlickGGX(preInfo.VdotH,clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90);",
-    replacement: "coloredFresnel=matc_fresnel(matc_c,preInfo.VdotH);",
-    what: "punctual lights: fresnelSchlickGGX(VdotH, R0, R90) becomes matc_fresnel(c, VdotH)",
+    replacement: "coloredFresnel=matc_base_fresnel(preInfo.VdotH);",
+    what: "punctual lights: fresnelSchlickGGX(VdotH, R0, R90) becomes matc_fresnel(c, VdotH) (a coated " +
+          "material's base lobe: the metal through the coat)",
+  },
+  {
+    source: "lightFragment",
+    anchor: "info.clearCoat=computeClearCoatLighting(preInfo,clearcoatOut.clearCoatNormalW,clearcoatOut.clearCoatAARoughnessFactors.x,clearcoatOut.clearCoatIntensity,diffuse{X}.rgb);",
+    replacement: "\n#ifdef MATC_COATED\n" +
+                 "info.clearCoat=matc_coat_light(preInfo,clearcoatOut.clearCoatNormalW,clearcoatOut.clearCoatAARoughnessFactors.x,diffuse$1.rgb);\n" +
+                 "#else\n" +
+                 "info.clearCoat=computeClearCoatLighting(preInfo,clearcoatOut.clearCoatNormalW,clearcoatOut.clearCoatAARoughnessFactors.x,clearcoatOut.clearCoatIntensity,diffuse$1.rgb);\n" +
+                 "#endif\n",
+    what: "a coated material's coat lobe, punctual lights: Babylon's Schlick coat Fresnel becomes the coat's " +
+          "fitted dielectric Fresnel times its weight, and the base is no longer scaled by 1 - F (matc's base lobe " +
+          "carries the coat's attenuation and tint)",
   },
   {
     source: "lightFragment",
     anchor: "info.specular=computeAreaSpecularLighting(preInfo,light{X}.vLightSpecular.rgb,clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90);",
     replacement: "\n#ifdef MATC_ENGINE_LTC\n" +
-                 "info.specular=light$1.vLightSpecular.rgb*matc_fresnel_preintegrated(matc_c,matc_bbar)*preInfo.areaLightSpecular;\n" +
+                 "info.specular=light$1.vLightSpecular.rgb*matc_base_preintegrated()*preInfo.areaLightSpecular;\n" +
                  "#else\n" +
                  "info.specular=light$1.vLightSpecular.rgb*matc_rect_area_light(normalW,viewDirectionW,vPositionW,roughness," +
-                 "light$1.vLightData.xyz,light$1.vLightWidth.xyz,light$1.vLightHeight.xyz);\n#endif\n",
+                 "light$1.vLightData.xyz,light$1.vLightWidth.xyz,light$1.vLightHeight.xyz);\n#endif\n" +
+                 "#ifdef MATC_COATED\n" +
+                 "info.clearCoat=vec4(light$1.vLightSpecular.rgb*matc_rect_coat_light(normalW,viewDirectionW,vPositionW," +
+                 "clearcoatOut.clearCoatRoughness,light$1.vLightData.xyz,light$1.vLightWidth.xyz,light$1.vLightHeight.xyz),1.0);\n" +
+                 "#endif\n",
     what: "rect area lights: Babylon's LTC and its two-channel Fresnel become matc's LTC times sum_i c_i bbar_i " +
-          "(with areaLights: \"engine\", Babylon's LTC shape times sum_i c_i bbar_i)",
+          "(with areaLights: \"engine\", Babylon's LTC shape times sum_i c_i bbar_i); a coated material's coat " +
+          "lobe, which Babylon's rect lights lack, is added with matc's LTC at the coat's roughness",
   },
   {
     source: "pbrBlockReflectance",
     anchor: "vec3 colorSpecularEnvironmentReflectance=getReflectanceFromBRDFLookup(clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90,environmentBrdf);",
-    replacement: "vec3 colorSpecularEnvironmentReflectance=matc_fresnel_preintegrated(matc_c,matc_bbar);",
+    replacement: "vec3 colorSpecularEnvironmentReflectance=matc_base_preintegrated();",
     what: "image lighting: the BRDF lookup's R0/R90 mix becomes sum_i c_i bbar_i",
   },
   {
     source: "pbrBlockFinalLitComponents",
     anchor: "vec3 coloredEnergyConservationFactor=getEnergyConservationFactor(clearcoatOut.specularEnvironmentR0,environmentBrdf);",
-    replacement: "vec3 coloredEnergyConservationFactor=matc_energy_compensation(matc_c,matc_bbar);",
-    what: "energy conservation of the specular lobe (direct and image lighting): F0 and E from matc",
+    replacement: "vec3 coloredEnergyConservationFactor=matc_base_compensation();",
+    what: "energy conservation of the specular lobe (direct and image lighting): F0 and E from matc (a coated " +
+          "material's: the metal's F0 under the coat)",
+  },
+  {
+    source: "pbrBlockClearcoat",
+    anchor: "vec3 clearCoatEnvironmentReflectance=getReflectanceFromBRDFLookup(vec3(vClearCoatRefractionParams.x),environmentClearCoatBrdf);",
+    replacement: "\n#ifdef MATC_COATED\nvec3 clearCoatEnvironmentReflectance=vec3(matc_coat_lobe_preintegrated());\n#else\n" +
+                 "vec3 clearCoatEnvironmentReflectance=getReflectanceFromBRDFLookup(vec3(vClearCoatRefractionParams.x),environmentClearCoatBrdf);\n" +
+                 "#endif\n",
+    what: "a coated material's coat lobe, image lighting: the BRDF lookup's Schlick coat becomes the coat's " +
+          "preintegrated Fresnel (matc_lut at the coat's roughness) times its weight",
+  },
+  {
+    source: "pbrBlockClearcoat",
+    anchor: "outParams.conservationFactor=(1.-fresnelIBLClearCoat);",
+    replacement: "\n#ifdef MATC_COATED\noutParams.conservationFactor=1.0;\n#else\noutParams.conservationFactor=(1.-fresnelIBLClearCoat);\n#endif\n",
+    what: "a coated material's image lighting: the base is no longer scaled by 1 - F(NdotV) (matc's base lobe " +
+          "carries the coat's attenuation)",
+  },
+  {
+    source: "pbrBlockClearcoat",
+    anchor: "outParams.energyConservationFactorClearCoat=getEnergyConservationFactor(outParams.specularEnvironmentR0,environmentClearCoatBrdf);",
+    replacement: "\n#ifdef MATC_COATED\noutParams.energyConservationFactorClearCoat=vec3(1.0);\n#else\n" +
+                 "outParams.energyConservationFactorClearCoat=getEnergyConservationFactor(outParams.specularEnvironmentR0,environmentClearCoatBrdf);\n" +
+                 "#endif\n",
+    what: "a coated material's coat lobe, direct lights: no multiple-scattering factor from the base's F0 " +
+          "(the coat is a dielectric whose single scattering matc preintegrates)",
   },
 ];
 
@@ -103,7 +175,7 @@ function shaderRegex(anchor) {
 
 function shaderSources() {
   return { pbrPixelShader: ShaderStore.ShadersStore.pbrPixelShader,
-           ...Object.fromEntries(["lightFragment", "pbrBlockReflectance", "pbrBlockFinalLitComponents"]
+           ...Object.fromEntries(["lightFragment", "pbrBlockReflectance", "pbrBlockFinalLitComponents", "pbrBlockClearcoat"]
              .map((name) => [name, ShaderStore.IncludesShadersStore[name]])) };
 }
 
@@ -142,9 +214,24 @@ function preparePlugin(build, source, areaLights) {
   }
   checkAnchors(`@babylonjs/core ${version}`, shaderSources(), kPatches, tested);
   const kind = sourceKind(build, source);
+  const coat = source.material?.coat;
+  if (coat && areaLights !== "matc") {
+    throw new MatcWebError(`${source.material.name} is coated: ` +
+                           (areaLights === "quality" ? "the quality-level area lights take bare metals; "
+                                                     : "its coat lobe on Babylon's rect lights needs matc's LTC; ") +
+                           'use areaLights "matc"');
+  }
   const colour = (value) => new Vector3(...rgbOf(value));
-  return { build, source, kind, areaLights, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
+  return { build, source, kind, areaLights, coat, coatId: coat ? coatIdOf(source.material.name) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
            coefficients: kind === "material" ? source.material.coefficients.map((row) => new Vector4(...row)) : null };
+}
+
+// Babylon keys its compiled effects on the defines: each coated material (its snippet's constants)
+// gets a number of its own.
+const kCoatIds = new Map();
+function coatIdOf(name) {
+  if (!kCoatIds.has(name)) kCoatIds.set(name, kCoatIds.size + 1);
+  return kCoatIds.get(name);
 }
 
 // Babylon's base class asks for the shader code while it constructs the plugin, before the
@@ -160,7 +247,7 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
       super(material, "MatcFresnel", 200,
             { MATC_FRESNEL: false, MATC_SOURCE_UNIFORM: false, MATC_SOURCE_TABLE: false,
               MATC_SOURCE_BAKED: false, MATC_BAKED_F0: false, MATC_ENGINE_LTC: false,
-              MATC_QUALITY_LTC: false });
+              MATC_QUALITY_LTC: false, MATC_COATED: false, MATC_COAT_ID: 0 });
       Object.assign(this, pendingPlugin);
     } finally {
       pendingPlugin = null;
@@ -184,6 +271,8 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
     defines.MATC_BAKED_F0 = this.kind === "baked" && Boolean(this.source.baked.f0Map);
     defines.MATC_ENGINE_LTC = this.areaLights === "engine";
     defines.MATC_QUALITY_LTC = this.areaLights === "quality";
+    defines.MATC_COATED = Boolean(this.coat);
+    defines.MATC_COAT_ID = this.coatId;
     if (this.kind !== "material") {
       defines._needUVs = true;
       defines.MAINUV1 = true;
@@ -239,7 +328,8 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
 
   getCustomCode(shaderType) {
     if (shaderType !== "fragment") return null;
-    const code = { CUSTOM_FRAGMENT_DEFINITIONS: kDeclarations((this.build ?? pendingPlugin.build).library) };
+    const { build, source } = this.build ? this : pendingPlugin;
+    const code = { CUSTOM_FRAGMENT_DEFINITIONS: kDeclarations(build.library, source.material) };
     for (const patch of kPatches) code[`!${shaderRegex(patch.anchor)}`] = patch.replacement;
     return code;
   }
@@ -258,6 +348,13 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc" } 
     throw new MatcWebError("iridescence replaces the base Fresnel; it cannot be combined with matc's");
   }
   material.matcFresnel = new MatcFresnelPlugin(material, build, source, areaLights);
+  const coat = material.matcFresnel.coat;
+  if (coat) {
+    // The coat's lobe and layering are the compiled material's (weight, index, colour, roughness):
+    // Babylon's clear coat only switches its coat light paths on.
+    Object.assign(material.clearCoat, { isEnabled: true, intensity: 1, roughness: coat.roughness,
+                                        indexOfRefraction: coat.ior, isTintEnabled: false });
+  }
   material.metallic = 1;
   material.metallicTexture = null;
   return material;

@@ -3,15 +3,17 @@
 // in punctual lights, image lighting (with matc's energy compensation) and rect area lights (matc's
 // LTC table and integral times sum_i c_i bbar_i, or three's LTC shape times it). The Fresnel is the WGSL library matc writes
 // (matc_fresnel.wgsl) called through wgslFn, so every basis works as compiled; coefficients from a
-// compiled material, from maps through the coefficient table, or from `matc bake` textures.
+// compiled material, from maps through the coefficient table, or from `matc bake` textures. A
+// coated matc material's coat lobe replaces three's clearcoat.
 //
 //   import { loadMatcBuild, useMatcFresnel } from "./matc-three-webgpu.mjs";
 //   const build = await loadMatcBuild("matc-out/");
 //   const gold = useMatcFresnel(new THREE.MeshPhysicalNodeMaterial({ roughness: 0.3 }), build,
 //                               { material: await build.loadMaterial("gold") });
 import * as THREE from "three/webgpu";
-import { BRDF_GGX, LTC_Evaluate, LTC_Uv, diffuseColor, float, mat3, normalView, positionView,
-         positionViewDirection, roughness, step, texture, uniform, uv, vec3, vec4, wgsl, wgslFn } from "three/tsl";
+import { BRDF_GGX, LTC_Evaluate, LTC_Uv, clearcoatNormalView, clearcoatRoughness, diffuseColor, float, mat3,
+         normalView, positionView, positionViewDirection, roughness, step, texture, uniform, uv, vec3, vec4, wgsl,
+         wgslFn } from "three/tsl";
 import { sampleTrilinearly, tableTexture } from "./textures.mjs";
 import { MatcWebError, checkAnchors, checkAreaLights, loadMatcBuildFiles, rgbOf, sourceKind } from "../matc-build.mjs";
 
@@ -34,12 +36,19 @@ const kOverrides = [
     what: "punctual lights: three's GGX with matc's F(v.h)" },
   { source: "directRectArea", anchor: "directRectArea( { lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1",
     what: "rect area lights: matc's LTC (or three's LTC shape) times sum_i c_i bbar_i" },
+  // A coated material: three's coat terms are left out while the lighting model's own run (they
+  // are switched on `this.clearcoat`), and matc's coat lobe and layering are added instead.
+  { source: "indirectSpecular", anchor: "if ( this.clearcoat === true ) { const dotNVcc = clearcoatNormalView.dot( positionViewDirection ).clamp(); const clearcoatEnv = EnvironmentBRDF(",
+    what: "a coated material's image lighting: the coat lobe's preintegrated Fresnel instead of three's Schlick DFG term" },
+  { source: "finish", anchor: "if ( this.clearcoat === true ) { const dotNVcc = clearcoatNormalView.dot( positionViewDirection ).clamp(); const Fcc = F_Schlick(",
+    what: "a coated material's layering: the base lobe carries the coat's attenuation and tint, so three's 1 - clearcoat Fcc goes" },
 ];
 
 function checkLightingModel() {
   const prototype = THREE.PhysicalLightingModel?.prototype ?? {};
   const sources = Object.fromEntries(kOverrides.map(({ source }) =>
     [source, typeof prototype[source] === "function" ? prototype[source].toString() : undefined]));
+  // The same method may carry several anchors.
   if (!kTestedThreeRevisions.includes(THREE.REVISION)) {
     console.warn(`matc: three.js r${THREE.REVISION} is untested with WebGPURenderer (tested: r` +
                  `${kTestedThreeRevisions.join(", r")}); its lighting model still matches`);
@@ -87,7 +96,28 @@ export async function loadMatcBuild(url) {
         "P: vec3f, q0: vec3f, q1: vec3f, q2: vec3f, q3: vec3f", "vec3f",
         `matc_ltc_quad_light_following(${coefficients}, bbar, ltc, roughness, N, V, P, q0, q1, q2, q3)`);
   }
-  return { ...files, lut, ltc, coefficientTable, functions };
+  functions.quadIntegral = wgslFn("fn matc_three_quad_integral(ltc: vec4f, N: vec3f, V: vec3f, P: vec3f, q0: vec3f, " +
+                                  "q1: vec3f, q2: vec3f, q3: vec3f) -> f32 { return matc_ltc_quad_integral(" +
+                                  "matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3); }", [library]);
+  const loadMaterial = files.loadMaterial;
+  // A coated material's lobes: its own snippet (<name>.wgsl) through wgslFn.
+  const withCoatFunctions = (material) => {
+    if (!material.coat) return material;
+    const snippet = wgsl(material.coat.snippet);
+    const name = material.name;
+    const fn = (code) => wgslFn(code, [library, snippet]);
+    material.coat.functions = {
+      baseFresnel: fn(`fn matc_three_base_fresnel_${name}(mu: f32) -> vec3f { return matc_fresnel_${name}(mu); }`),
+      basePreintegrated: fn(`fn matc_three_base_preintegrated_${name}(bbar: vec4f, coat_bbar: vec4f, ndotv: f32) -> vec3f ` +
+                            `{ return matc_fresnel_preintegrated_${name}(bbar, coat_bbar, ndotv); }`),
+      coatFresnel: fn(`fn matc_three_coat_fresnel_${name}(mu: f32) -> f32 { return matc_coat_fresnel_${name}(mu); }`),
+      coatPreintegrated: fn(`fn matc_three_coat_preintegrated_${name}(coat_bbar: vec4f) -> f32 ` +
+                            `{ return matc_coat_fresnel_preintegrated_${name}(coat_bbar); }`),
+    };
+    return material;
+  };
+  return { ...files, lut, ltc, coefficientTable, functions,
+           async loadMaterial(name) { return withCoatFunctions(await loadMaterial(name)); } };
 }
 
 // three's physical lighting with matc's Fresnel; `matc` holds the coefficient rows (uniform nodes),
@@ -103,15 +133,56 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
       get: () => { this.matcTerms(); return this.matcCompensation; }, set: () => {} });
   }
 
-  // This pixel's texel of matc_lut, its preintegrated Fresnel and energy compensation, once.
+  // This pixel's texel of matc_lut, its preintegrated Fresnel and energy compensation, once; for
+  // a coated material also the texel at the coat's roughness and the coat lobe's preintegrated F
+  // (the base's compensation is a bare metal's with the metal's F0 under the coat).
   matcTerms() {
     if (!this.matcBbar) {
-      const { rows, functions, lut } = this.matc;
+      const { rows, functions, lut, coat } = this.matc;
       const ndotv = normalView.dot(positionViewDirection).clamp();
       this.matcBbar = texture(lut, functions.lutTexcoord({ ndotv, roughness })).toConst("matc_bbar");
-      this.matcCompensation = functions.compensation({ ...rows, bbar: this.matcBbar }).toConst("matc_compensation");
-      this.matcPreintegrated = functions.preintegrated({ ...rows, bbar: this.matcBbar }).toConst("matc_preintegrated");
+      this.matcCompensation = functions.compensation({ ...(coat?.underCoatRows ?? rows), bbar: this.matcBbar })
+          .toConst("matc_compensation");
+      if (coat) {
+        const coatBbar = texture(lut, functions.lutTexcoord({ ndotv, roughness: clearcoatRoughness })).toConst("matc_coat_bbar");
+        this.matcCoatBbar = coatBbar;
+        this.matcPreintegrated = coat.functions.basePreintegrated({ bbar: this.matcBbar, coat_bbar: coatBbar, ndotv })
+            .toConst("matc_preintegrated");
+        this.matcCoatPreintegrated = coat.functions.coatPreintegrated({ coat_bbar: coatBbar }).toConst("matc_coat_preintegrated");
+      } else {
+        this.matcPreintegrated = functions.preintegrated({ ...rows, bbar: this.matcBbar }).toConst("matc_preintegrated");
+      }
     }
+  }
+
+  // A coated material: three's coat terms stay out of its own methods (they run on this.clearcoat).
+  withoutThreeCoat(run) {
+    if (!this.matc.coat) return run();
+    this.clearcoat = false;
+    try {
+      return run();
+    } finally {
+      this.clearcoat = true;
+    }
+  }
+
+  // Image lighting; a coated material's coat lobe: three's prefiltered radiance at the coat's
+  // roughness times the coat's preintegrated F (its weight included).
+  indirectSpecular(builder) {
+    this.withoutThreeCoat(() => super.indirectSpecular(builder));
+    if (this.matc.coat) {
+      this.matcTerms();
+      this.clearcoatSpecularIndirect.addAssign(this.clearcoatRadiance.mul(this.matcCoatPreintegrated));
+    }
+  }
+
+  // The layering: a coated material's base lobe carries the coat's attenuation and tint and the
+  // coat lobe its weight, so both are added as they are.
+  finish(builder) {
+    if (this.matc.coat) {
+      builder.context.outgoingLight.addAssign(this.clearcoatSpecularDirect.add(this.clearcoatSpecularIndirect));
+    }
+    return this.withoutThreeCoat(() => super.finish(builder));
   }
 
   // Image lighting: sum_i c_i bbar_i times matc's compensation (as the CPU runtime computes it).
@@ -126,9 +197,18 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
     const halfDir = lightDirection.add(positionViewDirection).normalize();
     const dotVH = positionViewDirection.dot(halfDir).clamp();
     const ggx = BRDF_GGX({ lightDirection, f0: vec3(1), f90: float(1), roughness });
-    const fresnel = this.matc.functions.fresnel({ ...this.matc.rows, mu: dotVH });
+    const coat = this.matc.coat;
+    const fresnel = coat ? coat.functions.baseFresnel({ mu: dotVH }) : this.matc.functions.fresnel({ ...this.matc.rows, mu: dotVH });
     reflectedLight.directSpecular.addAssign(
         dotNL.mul(lightColor).mul(ggx).mul(fresnel).mul(this.multiScatteringCompensation));
+    if (coat) {
+      // The coat lobe: three's GGX at the coat's roughness and normal times the coat's F(v.h).
+      const dotNLcc = clearcoatNormalView.dot(lightDirection).clamp();
+      const ggxCoat = BRDF_GGX({ lightDirection, f0: vec3(1), f90: float(1), roughness: clearcoatRoughness,
+                                 normalView: clearcoatNormalView });
+      this.clearcoatSpecularDirect.addAssign(
+          dotNLcc.mul(lightColor).mul(ggxCoat).mul(coat.functions.coatFresnel({ mu: dotVH })));
+    }
   }
 
   // Rect area lights: matc's LTC table and horizon-clipped integral times sum_i c_i bbar_i,
@@ -151,14 +231,31 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
       const corners = { N, V, P, q0: p0, q1: p1, q2: p2, q3: p3 };
       const radiance = this.matc.areaLights === "quality"
           ? functions.quadLightFollowing({ ...rows, bbar: this.matcBbar, ltc: texel, roughness, ...corners })
+          : this.matc.coat  // a coated material's base lobe: the metal through the coat
+          ? this.matcPreintegrated.mul(functions.quadIntegral({ ltc: texel, ...corners }))
           : functions.quadLight({ ...rows, bbar: this.matcBbar, ltc: texel, ...corners });
       reflectedLight.directSpecular.addAssign(lightColor.mul(radiance).mul(lit));
+      if (this.matc.coat) {
+        // The coat lobe: matc's LTC at the coat's roughness and normal times its preintegrated F.
+        const Ncc = clearcoatNormalView;
+        const coatTexel = texture(ltc, functions.ltcTexcoord({ ndotv: Ncc.dot(V).clamp(), roughness: clearcoatRoughness }));
+        const integral = functions.quadIntegral({ ltc: coatTexel, ...corners, N: Ncc });
+        this.clearcoatSpecularDirect.addAssign(lightColor.mul(this.matcCoatPreintegrated).mul(integral).mul(lit));
+      }
       return;
     }
     const t1 = ltc_1.sample(LTC_Uv({ N, V, roughness })).toVar();
     const mInv = mat3(vec3(t1.x, 0, t1.y), vec3(0, 1, 0), vec3(t1.z, 0, t1.w)).toVar();
     reflectedLight.directSpecular.addAssign(
         lightColor.mul(this.matcPreintegrated).mul(LTC_Evaluate({ N, V, P, mInv, p0, p1, p2, p3 })));
+    if (this.matc.coat) {
+      // The coat lobe: three's LTC shape at the coat's roughness times its preintegrated F.
+      const Ncc = clearcoatNormalView;
+      const t1Coat = ltc_1.sample(LTC_Uv({ N: Ncc, V, roughness: clearcoatRoughness })).toVar();
+      const mInvCoat = mat3(vec3(t1Coat.x, 0, t1Coat.y), vec3(0, 1, 0), vec3(t1Coat.z, 0, t1Coat.w)).toVar();
+      this.clearcoatSpecularDirect.addAssign(
+          lightColor.mul(this.matcCoatPreintegrated).mul(LTC_Evaluate({ N: Ncc, V, P, mInv: mInvCoat, p0, p1, p2, p3 })));
+    }
   }
 }
 
@@ -188,6 +285,24 @@ function coefficientRows(build, source) {
   return { red: row("x"), green: row("y"), blue: row("z") };
 }
 
+// A coated material's coat: its snippet's functions and the under-coat coefficient rows (for the
+// base's compensation). The coat's lobe and layering are the compiled material's (weight, index,
+// colour, roughness): three's clearcoat, set to 1, only switches its coat light paths on.
+function coatOf(compiled, material, areaLights) {
+  if (!material.isMeshPhysicalNodeMaterial) {
+    throw new MatcWebError(`${compiled.name} is coated: its coat lobe needs a MeshPhysicalNodeMaterial`);
+  }
+  if (areaLights === "quality") {
+    throw new MatcWebError(`${compiled.name} is coated: the quality-level area lights take bare metals; ` +
+                           'use areaLights "matc" or "engine"');
+  }
+  if (!compiled.coat.functions) throw new MatcWebError("useMatcFresnel (WebGPU) needs this module's loadMaterial");
+  material.clearcoat = 1;
+  material.clearcoatRoughness = compiled.coat.roughness;
+  const [red, green, blue] = compiled.coat.underCoatCoefficients.map((row) => uniform(new THREE.Vector4(...row)));
+  return { ...compiled.coat, underCoatRows: { red, green, blue } };
+}
+
 // Makes `material` (MeshStandardNodeMaterial or MeshPhysicalNodeMaterial) a matc metal with
 // `source` = { material } (build.loadMaterial), { reflectivityMap, edgeTintMap } or { baked }, as
 // matc-three.mjs takes them. Returns the material; material.userData.matc.rows holds the
@@ -204,8 +319,9 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc" } 
   }
   if (!build?.functions) throw new MatcWebError("useMatcFresnel (WebGPU) needs this module's loadMatcBuild");
   checkLightingModel();
+  const coat = source?.material?.coat ? coatOf(source.material, material, areaLights) : null;
   const matc = { rows: coefficientRows(build, source), functions: build.functions, lut: build.lut, ltc: build.ltc,
-                 url: build.url, areaLights };
+                 url: build.url, areaLights, coat };
   material.metalness = 1;
   material.metalnessNode = null;
   material.setupLightingModel = () => new MatcPhysicalLightingModel(matc, material);

@@ -1,7 +1,8 @@
 // matc's Fresnel inside three.js's own physical material: a MeshStandardMaterial or
 // MeshPhysicalMaterial becomes a matc metal in every light path the engine has (punctual lights,
 // image lighting with its multiple scattering, rect area lights), with the rest of the engine
-// (shadows, fog, tone mapping, maps, clearcoat) untouched. Patched at run time from the engine's
+// (shadows, fog, tone mapping, maps, clearcoat over a bare metal) untouched; a coated matc
+// material's coat lobe replaces three's clearcoat. Patched at run time from the engine's
 // own shader chunks; a chunk that changed makes it throw, never render wrongly. README.md says
 // how to use it and docs/web-engines.md what each patch replaces.
 //
@@ -12,7 +13,7 @@
 import * as THREE from "three";
 import { sampleTrilinearly, tableTexture } from "./textures.mjs";
 import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, declarationsGlsl, loadMatcBuildFiles,
-         pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
+         lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -23,21 +24,27 @@ export const kTestedThreeRevisions = ["187"];
 
 // ---- The patches: (chunk, anchor, replacement), each anchor found exactly once. ----
 
+// The physical material's own fragment shader (main(); the chunk onBeforeCompile receives as the
+// shader's text), patched where it composes the coat.
+const kMainShader = "meshphysical_frag";
+
 // Appended to lights_physical_pars_fragment's declarations: the matc library, the tables and
 // what the patched light paths read (this pixel's coefficients and preintegrated basis, set in
-// main()), and the image-lighting term.
-const kDeclarations = (library) => `${declarationsGlsl(library, { uniforms: true })}
+// main()), the lobes' functions (a coated material's from its snippet) and the image-lighting term.
+const kDeclarations = (library, material) => `${declarationsGlsl(library, { uniforms: true })}
+${lobesGlsl(material)}
 // Image lighting: the preintegrated Fresnel sum_i c_i bbar_i with matc's multiple scattering
 // (Turquin's 1 + F0 (1 - E) / E, E = bbar_0), as the CPU runtime computes it.
 void matc_image_lighting( inout vec3 singleScatter, inout vec3 multiScatter ) {
-	singleScatter += matc_fresnel_preintegrated( matc_c, matc_bbar ) * matc_energy_compensation( matc_c, matc_bbar );
+	singleScatter += matc_base_preintegrated() * matc_base_compensation();
 }
 `;
 
 // What main() computes before the lights, as three.js sees the pixel.
 const kPixelSetup = pixelSetupGlsl({
   uv: "vUv", baseColour: "diffuseColor.rgb", roughness: "material.roughness",
-  ndotv: "saturate( dot( normal, isOrthographic ? vec3( 0.0, 0.0, 1.0 ) : normalize( vViewPosition ) ) )" });
+  ndotv: "saturate( dot( normal, isOrthographic ? vec3( 0.0, 0.0, 1.0 ) : normalize( vViewPosition ) ) )",
+  coatRoughness: "material.clearcoatRoughness" });
 
 // Each patch: the chunk, the exact text it replaces (found once, or the chunk changed), the text
 // put there, and what it means (docs/web-engines.md lists these).
@@ -45,14 +52,58 @@ export const kPatches = [
   {
     chunk: "lights_physical_pars_fragment",
     anchor: "uniform sampler2D dfgLUT;\n",
-    replacement: (library) => `uniform sampler2D dfgLUT;\n${kDeclarations(library)}`,
-    what: "declarations: matc_fresnel.glsl, the tables, this pixel's coefficients",
+    replacement: (library, material) => `uniform sampler2D dfgLUT;\n${kDeclarations(library, material)}`,
+    what: "declarations: matc_fresnel.glsl, the tables, this pixel's coefficients (and a coated material's snippet)",
   },
   {
     chunk: "lights_physical_pars_fragment",
     anchor: "vec3 F = F_Schlick( f0, f90, dotVH ); #ifdef USE_IRIDESCENCE",
-    replacement: () => "\tvec3 F = matc_fresnel( matc_c, dotVH );\n\n\t#ifdef USE_IRIDESCENCE\n",
-    what: "punctual lights: F_Schlick(f0, f90, dotVH) in BRDF_GGX becomes matc_fresnel(c, dotVH)",
+    replacement: () => "\tvec3 F = matc_base_fresnel( dotVH );\n\n\t#ifdef USE_IRIDESCENCE\n",
+    what: "punctual lights: F_Schlick(f0, f90, dotVH) in BRDF_GGX becomes matc_fresnel(c, dotVH) (a coated " +
+          "material's base lobe: the metal through the coat)",
+  },
+  {
+    chunk: "lights_physical_pars_fragment",
+    anchor: "vec3 F = F_Schlick( f0, f90, dotVH ); float V = V_GGX_SmithCorrelated( alpha, dotNL, dotNV );",
+    replacement: () => "#ifdef MATC_COATED\n\t\tvec3 F = vec3( matc_coat_lobe_fresnel( dotVH ) );\n#else\n" +
+                       "\t\tvec3 F = F_Schlick( f0, f90, dotVH );\n#endif\n" +
+                       "\t\tfloat V = V_GGX_SmithCorrelated( alpha, dotNL, dotNV );\n",
+    what: "a coated material's coat lobe, punctual lights: F_Schlick(0.04, 1, dotVH) in BRDF_GGX_Clearcoat " +
+          "becomes the coat's fitted dielectric Fresnel times its weight",
+  },
+  {
+    chunk: "lights_physical_pars_fragment",
+    anchor: "clearcoatSpecularIndirect += clearcoatRadiance * EnvironmentBRDF( geometryClearcoatNormal, " +
+            "geometryViewDir, material.clearcoatF0, material.clearcoatF90, material.clearcoatRoughness );",
+    replacement: () =>
+      "#ifdef MATC_COATED\n" +
+      "\t\tclearcoatSpecularIndirect += clearcoatRadiance * matc_coat_lobe_preintegrated();\n" +
+      "#else\n" +
+      "\t\tclearcoatSpecularIndirect += clearcoatRadiance * EnvironmentBRDF( geometryClearcoatNormal, geometryViewDir, " +
+      "material.clearcoatF0, material.clearcoatF90, material.clearcoatRoughness );\n" +
+      "#endif\n",
+    what: "a coated material's coat lobe, image lighting: three's Schlick DFG term becomes the coat's " +
+          "preintegrated Fresnel (matc_lut at the coat's roughness) times its weight",
+  },
+  {
+    chunk: "lights_physical_pars_fragment",
+    anchor: "vec3 fresnelClearcoat = material.clearcoatF0 * t2Clearcoat.x + ( material.clearcoatF90 - " +
+            "material.clearcoatF0 ) * t2Clearcoat.y; clearcoatSpecularDirect += lightColor * fresnelClearcoat * " +
+            "LTC_Evaluate( Ncc, viewDir, position, mInvClearcoat, rectCoords );",
+    replacement: () =>
+      "#if defined( MATC_COATED ) && defined( MATC_ENGINE_LTC )\n" +
+      "\t\t\tclearcoatSpecularDirect += lightColor * matc_coat_lobe_preintegrated() * LTC_Evaluate( Ncc, viewDir, position, mInvClearcoat, rectCoords );\n" +
+      "#elif defined( MATC_COATED )\n" +
+      "\t\t\tvec4 matc_coat_ltc_texel = texture2D( matc_ltc, matc_ltc_texcoord( saturate( dot( Ncc, viewDir ) ), material.clearcoatRoughness ) );\n" +
+      "\t\t\tif ( matc_lit ) clearcoatSpecularDirect += lightColor * matc_coat_lobe_preintegrated() * matc_ltc_quad_integral( " +
+      "matc_ltc_transform( Ncc, viewDir, matc_coat_ltc_texel ), position, rectCoords[ 0 ], rectCoords[ 1 ], rectCoords[ 2 ], rectCoords[ 3 ] );\n" +
+      "#else\n" +
+      "\t\t\tvec3 fresnelClearcoat = material.clearcoatF0 * t2Clearcoat.x + ( material.clearcoatF90 - material.clearcoatF0 ) * t2Clearcoat.y;\n" +
+      "\t\t\tclearcoatSpecularDirect += lightColor * fresnelClearcoat * LTC_Evaluate( Ncc, viewDir, position, mInvClearcoat, rectCoords );\n" +
+      "#endif\n",
+    what: "a coated material's coat lobe, rect area lights: Hill's Schlick LTC Fresnel becomes the coat's " +
+          "preintegrated Fresnel times its weight, with matc's LTC at the coat's roughness (three's LTC_1 " +
+          "shape with areaLights: \"engine\")",
   },
   {
     chunk: "lights_physical_pars_fragment",
@@ -68,7 +119,7 @@ export const kPatches = [
             "position, mInv, rectCoords );\n",
     replacement: () =>
       "#ifdef MATC_ENGINE_LTC\n" +
-      "\t\treflectedLight.directSpecular += lightColor * matc_fresnel_preintegrated( matc_c, matc_bbar ) * LTC_Evaluate( normal, viewDir, position, mInv, rectCoords );\n" +
+      "\t\treflectedLight.directSpecular += lightColor * matc_base_preintegrated() * LTC_Evaluate( normal, viewDir, position, mInv, rectCoords );\n" +
       "#else\n" +
       "\t\tvec4 matc_ltc_texel = texture2D( matc_ltc, matc_ltc_texcoord( saturate( dot( normal, viewDir ) ), roughness ) );\n" +
       "\t\tbool matc_lit = dot( cross( rectCoords[ 1 ] - rectCoords[ 0 ], rectCoords[ 3 ] - rectCoords[ 0 ] ), position - rectCoords[ 0 ] ) >= 0.0;\n" +
@@ -76,8 +127,8 @@ export const kPatches = [
       "\t\tif ( matc_lit ) reflectedLight.directSpecular += lightColor * matc_ltc_quad_light_following( matc_c, matc_bbar, " +
       "matc_ltc_texel, roughness, normal, viewDir, position, rectCoords[ 0 ], rectCoords[ 1 ], rectCoords[ 2 ], rectCoords[ 3 ] );\n" +
       "#else\n" +
-      "\t\tif ( matc_lit ) reflectedLight.directSpecular += lightColor * matc_ltc_quad_light( matc_c, matc_bbar, matc_ltc_texel, " +
-      "normal, viewDir, position, rectCoords[ 0 ], rectCoords[ 1 ], rectCoords[ 2 ], rectCoords[ 3 ] );\n" +
+      "\t\tif ( matc_lit ) reflectedLight.directSpecular += lightColor * matc_base_preintegrated() * matc_ltc_quad_integral( " +
+      "matc_ltc_transform( normal, viewDir, matc_ltc_texel ), position, rectCoords[ 0 ], rectCoords[ 1 ], rectCoords[ 2 ], rectCoords[ 3 ] );\n" +
       "#endif\n" +
       "#endif\n",
     what: "rect area lights: Hill's two-channel LTC Fresnel and the LTC_1 shape become matc's LTC " +
@@ -89,30 +140,47 @@ export const kPatches = [
     chunk: "lights_fragment_begin",
     anchor: "\t\tmaterial.multiScatteringCompensation = 1.0 + material.specularColorBlended * " +
             "( 1.0 / EssMs - 1.0 );\n",
-    replacement: () => "\t\tmaterial.multiScatteringCompensation = matc_energy_compensation( matc_c, matc_bbar );\n",
+    replacement: () => "\t\tmaterial.multiScatteringCompensation = matc_base_compensation();\n",
     what: "punctual lights' multiple scattering: F0 from the coefficients, E from matc's table",
   },
   {
     chunk: "lights_fragment_begin",
     anchor: "vec3 geometryPosition = - vViewPosition;\n",
     replacement: () => `${kPixelSetup}\nvec3 geometryPosition = - vViewPosition;\n`,
-    what: "this pixel's coefficients (uniform, coefficient table or baked) and its texel of matc_lut",
+    what: "this pixel's coefficients (uniform, coefficient table or baked) and its texel of matc_lut " +
+          "(and a coated material's at the coat's roughness)",
+  },
+  {
+    chunk: kMainShader,
+    anchor: "outgoingLight = outgoingLight * ( 1.0 - material.clearcoat * Fcc ) + ( clearcoatSpecularDirect + " +
+            "clearcoatSpecularIndirect ) * material.clearcoat;",
+    replacement: () =>
+      "#ifdef MATC_COATED\n" +
+      "\t\toutgoingLight = outgoingLight + clearcoatSpecularDirect + clearcoatSpecularIndirect;\n" +
+      "#else\n" +
+      "\t\toutgoingLight = outgoingLight * ( 1.0 - material.clearcoat * Fcc ) + ( clearcoatSpecularDirect + " +
+      "clearcoatSpecularIndirect ) * material.clearcoat;\n" +
+      "#endif\n",
+    what: "a coated material's layering: the base lobe carries the coat's attenuation and tint and the coat " +
+          "lobe its weight, so three's 1 - clearcoat Fcc and clearcoat factors go",
   },
 ];
 
-// Applies the patches to the given chunks (name -> source), throwing when an anchor is not found
-// exactly once.
-export function patchChunks(chunks, library) {
+// Applies the patches to the given chunks (name -> source) for `material` (build.loadMaterial's, or null for maps and bakes), throwing
+// when an anchor is not found exactly once.
+export function patchChunks(chunks, library, material = null) {
   const tested = `three.js r${kTestedThreeRevisions.join(", r")}`;
   checkAnchors(`three.js r${THREE.REVISION}`, chunks, kPatches.map((patch) => ({ ...patch, source: patch.chunk })),
                tested);
   const patched = {};
   for (const patch of kPatches) {
     const source = patched[patch.chunk] ?? chunks[patch.chunk];
-    patched[patch.chunk] = source.replace(anchorPattern(patch.anchor), () => `\n${patch.replacement(library)}\n`);
+    patched[patch.chunk] = source.replace(anchorPattern(patch.anchor),
+                                          () => `\n${patch.replacement(library, material)}\n`);
   }
   return patched;
 }
+
 
 // ---- A matc build directory as three.js textures. ----
 
@@ -179,9 +247,17 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc" } 
     console.warn(`matc-three: three.js r${THREE.REVISION} is untested (tested: r` +
                  `${kTestedThreeRevisions.join(", r")}); its chunks still match the patches`);
   }
-  // Checked now, so that a changed engine fails here and not at the first frame.
-  const chunks = patchChunks(THREE.ShaderChunk, build.library);
   const { define, uv, f0, uniforms } = sourceUniforms(build, source);
+  const coat = source.material?.coat;
+  if (coat && !material.isMeshPhysicalMaterial) {
+    throw new MatcWebError(`${source.material.name} is coated: its coat lobe needs a MeshPhysicalMaterial`);
+  }
+  if (coat && areaLights === "quality") {
+    throw new MatcWebError(`${source.material.name} is coated: the quality-level area lights take bare metals; ` +
+                           'use areaLights "matc" or "engine"');
+  }
+  // Checked now, so that a changed engine fails here and not at the first frame.
+  const { [kMainShader]: main, ...chunks } = patchChunks(THREE.ShaderChunk, build.library, source.material);
   Object.assign(uniforms, { matc_lut: { value: build.lut }, matc_ltc: { value: build.ltc ?? build.lut } });
   material.metalness = 1;
   material.metalnessMap = null;
@@ -190,11 +266,22 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc" } 
   if (f0) material.defines.MATC_BAKED_F0 = "";
   if (areaLights === "engine") material.defines.MATC_ENGINE_LTC = "";
   if (areaLights === "quality") material.defines.MATC_QUALITY_LTC = "";
+  if (coat) {
+    // The coat's lobe and layering are the compiled material's (weight, index, colour and
+    // roughness); three's clearcoat only switches its coat light paths on.
+    material.defines.MATC_COATED = "";
+    material.clearcoat = 1;
+    material.clearcoatRoughness = coat.roughness;
+  }
   material.userData.matc = { uniforms, source };
   material.onBeforeCompile = (shader) => {
     if (!build.ltc && areaLights !== "engine" && shader.numRectAreaLights > 0) {
       throw new MatcWebError(`${build.url}: rect area lights need matc's LTC table; compile with --emit ltc`);
     }
+    if (shader.fragmentShader !== THREE.ShaderChunk[kMainShader]) {
+      throw new MatcWebError(`three.js r${THREE.REVISION}: the material's fragment shader is not ${kMainShader}`);
+    }
+    shader.fragmentShader = main;
     for (const [name, text] of Object.entries(chunks)) {
       const include = `#include <${name}>`;
       if (!shader.fragmentShader.includes(include)) {
@@ -205,7 +292,8 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc" } 
     }
     Object.assign(shader.uniforms, uniforms);
   };
-  material.customProgramCacheKey = () => `matc:${define}:${areaLights}:${build.url}`;
+  // A coated material's constants are in its snippet: one program per coated material.
+  material.customProgramCacheKey = () => `matc:${define}:${areaLights}:${build.url}:${coat ? source.material.name : ""}`;
   material.needsUpdate = true;
   return material;
 }
