@@ -36,16 +36,6 @@ using matc::bench::Totals;
 constexpr std::array<double, 3> kCoatIors = {1.3, 1.5, 1.6};
 constexpr std::size_t kSamples = matc::kAccuracySamples;
 
-// F0 of a conductor seen from inside a coat of index `coat_ior`, as engines convert it: the F0
-// read as a dielectric's index, then its reflectance against the coat (Filament's
-// f0ClearCoatToSurface is a fit of this for 1.5).
-double f0_in_coat(double f0, double coat_ior) {
-  const double s = std::sqrt(std::clamp(f0, 0.0, 0.999));
-  const double n = (1.0 + s) / (1.0 - s);
-  const double r = (n - coat_ior) / (n + coat_ior);
-  return r * r;
-}
-
 struct CoatedErrors {
   matc::ErrorStats under_coat;  // our under-coat fit
   matc::ErrorStats layered;     // ours, layered, against the exact layered curve
@@ -79,7 +69,8 @@ CoatedErrors measure(const matc::Material& material) {
         return w * f_coat + (1.0 - w) * air[c] +
                w * matc::coated_base_reflectance(f_coat, tint * under_coat);
       };
-      const double schlick = matc::fresnel_schlick(mu, f0_in_coat(f0[c], coat.input.ior));
+      const double schlick =
+          matc::fresnel_schlick(mu, matc::f0_seen_from_coat(f0[c], coat.input.ior));
       errors.f0_in_coat_schlick[c] =
           std::max(errors.f0_in_coat_schlick[c], std::abs(total(schlick) - exact[c]));
       errors.in_air[c] = std::max(errors.in_air[c], std::abs(total(air[c]) - exact[c]));

@@ -67,7 +67,8 @@ int main(int argc, char** argv) {
       const std::optional<matc::CompiledMaterial> material = renderer.compile(file);
       if (!material) return 1;
       const matc::CompiledMaterial& compiled = *material;
-      const std::array<Panel, kEstimateCount> estimates = renderer.render(compiled);
+      if (!MaterialRenderer::is_bare(file, compiled)) return 1;
+      const std::vector<Panel> estimates = renderer.render(compiled);
       const Panel& reference = estimates[kReference];
       const Panel& schlick = estimates[kLtcSchlick];
       const Panel& ours = estimates[kLtcOurs];
@@ -80,21 +81,15 @@ int main(int argc, char** argv) {
                    display);
       write_difference_panels(settings.output, name, schlick, ours, reference, exact,
                               settings.size);
-      const double roughness = compiled.material.roughness.value_or(kDefaultRoughness);
-      const std::array<std::pair<const char*, const Panel*>, 5> rows = {
-          std::pair{"Schlick's Fresnel", &schlick}, std::pair{"ours", &ours},
-          std::pair{"the exact preintegrated Fresnel", &exact},
-          std::pair{"(no LTC: the exact lobe, the exact preintegrated Fresnel)", &split},
-          std::pair{"ours, quality level (shape and Fresnel following the light)", &quality}};
-      for (const auto& [label, panel] : rows) {
-        const ErrorStats total = error_against(*panel, reference);
-        const ErrorStats fresnel = error_against(*panel, exact);
-        fmt::print("| {} | {:.3f} | {} | {:.4f} | {:.1f}% | {:.3f} | {} | {} |\n",
-                   compiled.material.name, roughness, label, total.mean,
-                   100.0 * total.relative_mean, total.max,
-                   panel == &schlick || panel == &ours ? fmt::format("{:.4f}", fresnel.mean) : "-",
-                   panel == &schlick || panel == &ours ? fmt::format("{:.3f}", fresnel.max) : "-");
-      }
+      const std::array<ErrorRow, 5> rows = {
+          ErrorRow{"Schlick's Fresnel", &schlick}, ErrorRow{"ours", &ours},
+          ErrorRow{"the exact preintegrated Fresnel", &exact, false},
+          ErrorRow{"(no LTC: the exact lobe, the exact preintegrated Fresnel)", &split, false},
+          ErrorRow{"ours, quality level (shape and Fresnel following the light)", &quality, false}};
+      print_error_rows(
+          compiled.material.name,
+          fmt::format("{:.3f}", compiled.material.roughness.value_or(kDefaultRoughness)), rows,
+          reference, exact);
       targets_met = targets_met &&
                     error_against(ours, reference).mean <= error_against(schlick, reference).mean &&
                     error_against(ours, exact).mean <= 0.1 * error_against(schlick, exact).mean &&

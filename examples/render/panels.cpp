@@ -65,14 +65,15 @@ Panel Panel::times(const Panel& fresnel) const {
   return product;
 }
 
-std::array<Panel, kEstimateCount> render_estimates(vulkan::FullscreenPass& pass, std::uint32_t size,
-                                                   std::uint32_t samples, float roughness) {
-  std::array<Panel, kEstimateCount> panels;
+std::vector<Panel> render_estimates(vulkan::FullscreenPass& pass, std::uint32_t size,
+                                    std::uint32_t samples, float roughness,
+                                    EstimateMethods methods) {
+  std::vector<Panel> panels(static_cast<std::size_t>(methods.count));
   const std::size_t pixels = std::size_t{size} * size;
-  for (std::int32_t method = 0; method < kEstimateCount; ++method) {
+  for (std::int32_t method = 0; method < methods.count; ++method) {
     std::vector<std::array<double, 4>> sums(pixels, {0.0, 0.0, 0.0, 0.0});
     // Table lookups are exact in one pass; Monte-Carlo estimates take all the samples.
-    const std::uint32_t method_samples = method >= kSchlickFbar ? 1 : samples;
+    const std::uint32_t method_samples = method >= methods.first_lookup ? 1 : samples;
     for (std::uint32_t first = 0; first < method_samples; first += kSamplesPerPass) {
       const PanelConstants constants{method, first,
                                      std::min(kSamplesPerPass, method_samples - first),
@@ -84,7 +85,7 @@ std::array<Panel, kEstimateCount> render_estimates(vulkan::FullscreenPass& pass,
           sums[i][c] += result[4 * i + c];
       }
     }
-    Panel& panel = panels[method];
+    Panel& panel = panels[static_cast<std::size_t>(method)];
     panel.rgb.resize(pixels);
     panel.sphere.resize(pixels);
     for (std::size_t i = 0; i < pixels; ++i) {
@@ -94,6 +95,18 @@ std::array<Panel, kEstimateCount> render_estimates(vulkan::FullscreenPass& pass,
     }
   }
   return panels;
+}
+
+void print_error_rows(const std::string& material, const std::string& roughness,
+                      std::span<const ErrorRow> rows, const Panel& reference, const Panel& exact) {
+  for (const ErrorRow& row : rows) {
+    const ErrorStats total = error_against(*row.panel, reference);
+    const ErrorStats fresnel = error_against(*row.panel, exact);
+    fmt::print("| {} | {} | {} | {:.4f} | {:.1f}% | {:.3f} | {} | {} |\n", material, roughness,
+               row.label, total.mean, 100.0 * total.relative_mean, total.max,
+               row.fresnel_alone ? fmt::format("{:.4f}", fresnel.mean) : "-",
+               row.fresnel_alone ? fmt::format("{:.3f}", fresnel.max) : "-");
+  }
 }
 
 ErrorStats error_against(const Panel& panel, const Panel& reference) {

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <vector>
 
 #include <string>
@@ -60,10 +61,18 @@ struct Panel {
   Panel times(const Panel& fresnel) const;
 };
 
-// Every estimate, linear RGB, indexed by Estimate: Monte-Carlo ones over `samples` samples (in
-// passes of 64), table lookups in one pass.
-std::array<Panel, kEstimateCount> render_estimates(vulkan::FullscreenPass& pass, std::uint32_t size,
-                                                   std::uint32_t samples, float roughness);
+// What a render's fragment shader computes: `count` methods, the Monte-Carlo ones first, table
+// lookups from `first_lookup` on (comparison_render.frag's: Estimate).
+struct EstimateMethods {
+  std::int32_t count = kEstimateCount;
+  std::int32_t first_lookup = kSchlickFbar;
+};
+
+// Every estimate, linear RGB, indexed by method (Estimate for the default methods): Monte-Carlo
+// ones over `samples` samples (in passes of 64), table lookups in one pass.
+std::vector<Panel> render_estimates(vulkan::FullscreenPass& pass, std::uint32_t size,
+                                    std::uint32_t samples, float roughness,
+                                    EstimateMethods methods = {});
 
 struct ErrorStats {
   double mean = 0.0;
@@ -73,6 +82,19 @@ struct ErrorStats {
 
 // Over the sphere's pixels and all channels.
 ErrorStats error_against(const Panel& panel, const Panel& reference);
+
+// One row of a render's error table: an estimate and whether its Fresnel-alone columns (against
+// the same method with the exact Fresnel) are printed.
+struct ErrorRow {
+  const char* label;
+  const Panel* panel;
+  bool fresnel_alone = true;
+};
+
+// The rows of a render's error table ("| material | roughness | label | mean | relative | max |
+// Fresnel alone: mean | max |"): each row's error against `reference`, and against `exact`.
+void print_error_rows(const std::string& material, const std::string& roughness,
+                      std::span<const ErrorRow> rows, const Panel& reference, const Panel& exact);
 
 // |panel - reference| per pixel and channel; zero on the background.
 std::vector<std::array<double, 3>> difference(const Panel& panel, const Panel& reference);

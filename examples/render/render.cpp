@@ -74,7 +74,8 @@ int main(int argc, char** argv) {
       const std::optional<matc::CompiledMaterial> material = renderer.compile(file);
       if (!material) return 1;
       const matc::CompiledMaterial& compiled = *material;
-      const std::array<Panel, kEstimateCount> estimates = renderer.render(compiled);
+      if (!MaterialRenderer::is_bare(file, compiled)) return 1;
+      const std::vector<Panel> estimates = renderer.render(compiled);
       const Panel& reference = estimates[kReference];
       const Panel& radiance = estimates[kPrefilteredRadiance];
       const Panel schlick = radiance.times(estimates[kSchlickFbar]);
@@ -86,19 +87,13 @@ int main(int argc, char** argv) {
                    {reference.rgb, schlick.rgb, ours.rgb, closed_form.rgb}, settings.size, display);
       write_difference_panels(settings.output, name, schlick, ours, reference, exact,
                               settings.size);
-      const double roughness = compiled.material.roughness.value_or(kDefaultRoughness);
-      const std::array<std::pair<const char*, const Panel*>, 4> rows = {
-          std::pair{"Schlick's Fresnel", &schlick}, std::pair{"ours", &ours},
-          std::pair{"ours, closed form (no fetch)", &closed_form},
-          std::pair{"the exact Fresnel", &exact}};
-      for (const auto& [label, panel] : rows) {
-        const ErrorStats total = error_against(*panel, reference);
-        const ErrorStats fresnel = error_against(*panel, exact);
-        fmt::print("| {} | {:.3f} | {} | {:.4f} | {:.1f}% | {:.3f} | {} | {} |\n", name, roughness,
-                   label, total.mean, 100.0 * total.relative_mean, total.max,
-                   panel == &exact ? "-" : fmt::format("{:.4f}", fresnel.mean),
-                   panel == &exact ? "-" : fmt::format("{:.3f}", fresnel.max));
-      }
+      const std::array<ErrorRow, 4> rows = {ErrorRow{"Schlick's Fresnel", &schlick},
+                                            ErrorRow{"ours", &ours},
+                                            ErrorRow{"ours, closed form (no fetch)", &closed_form},
+                                            ErrorRow{"the exact Fresnel", &exact, false}};
+      print_error_rows(
+          name, fmt::format("{:.3f}", compiled.material.roughness.value_or(kDefaultRoughness)),
+          rows, reference, exact);
       all_better = all_better &&
                    error_against(ours, reference).mean < error_against(schlick, reference).mean;
     }

@@ -24,6 +24,13 @@ double coat_round_trip_transmittance(double color, double mu_inside) {
   return std::pow(color, 1.0 / mu_inside);
 }
 
+double f0_seen_from_coat(double f0, double coat_ior) {
+  const double s = std::sqrt(std::clamp(f0, 0.0, 0.999));
+  const double n = (1.0 + s) / (1.0 - s);
+  const double r = (n - coat_ior) / (n + coat_ior);
+  return r * r;
+}
+
 double coated_base_reflectance(double coat_reflectance, double tinted_under_coat) {
   const double f = std::clamp(coat_reflectance, 0.0, 1.0);
   const double v = std::max(tinted_under_coat, 0.0);

@@ -32,6 +32,12 @@ double coat_round_trip_transmittance(double color, double mu_inside);
 // included.
 double coated_base_reflectance(double coat_reflectance, double tinted_under_coat);
 
+// F0 of a conductor seen from inside a coat of index `coat_ior` as engines convert it, with
+// nothing but F0: read as a dielectric's index, then its reflectance against the coat (Filament's
+// f0ClearCoatToSurface is a fit of this for 1.5). The edge tint is lost: Schlick's curve of it is
+// the engines' stand-in for the metal under the coat.
+double f0_seen_from_coat(double f0, double coat_ior);
+
 // The metal seen through the coat at cosine mu in air, without the interfaces' transmission or
 // the coat's tint: V(mu) = F_metal/coat(mu_t) with mu_t = refracted_cosine(mu). What a coated
 // material's under-coat coefficients are fitted to (the tint, color^(1 / mu_t), varies over the
