@@ -7,6 +7,7 @@
 
 #include "matc/emit/fullscreen_shaders.h"
 #include "matc/material/parse.h"
+#include "matc/optics/coat.h"
 #include "matc/runtime/ltc.h"
 #include "matc/vulkan/fullscreen_pass.h"
 
@@ -15,14 +16,40 @@ namespace {
 
 constexpr std::size_t kCurveSize = 1024;
 
+// The exact curves at kCurveSize cosines, RGBA: the material's curve in rgb; for a coated one the
+// metal under the coat in rgb and the coat's Fresnel in a, then the metal in air in rgb
+// (coated_render.frag layers them).
+std::vector<float> exact_curve(const CompiledMaterial& compiled) {
+  const auto in_air = make_reflectance_curve(compiled.material, compiled.color);
+  std::vector<float> curve(2 * kCurveSize * 4, 0.0f);
+  const auto write = [&](const ReflectanceCurve& source, std::size_t first, std::size_t channels) {
+    for (std::size_t j = 0; j < kCurveSize; ++j) {
+      const Rgb value = source.at(static_cast<double>(j) / (kCurveSize - 1));
+      for (std::size_t c = 0; c < channels; ++c)
+        curve[4 * (first + j) + c] = static_cast<float>(value[c]);
+    }
+  };
+  if (!compiled.coat) {
+    write(*in_air, 0, 3);
+    return curve;
+  }
+  write(*make_under_coat_curve(compiled.material, compiled.color.working_space), 0, 3);
+  const CoatCurve coat(compiled.coat->input.ior);
+  for (std::size_t j = 0; j < kCurveSize; ++j)
+    curve[4 * j + 3] = static_cast<float>(coat.at(static_cast<double>(j) / (kCurveSize - 1))[0]);
+  write(*in_air, kCurveSize, 3);
+  return curve;
+}
+
 }  // namespace
 
 MaterialRenderer::MaterialRenderer(const RenderSettings& settings, const BuildOptions& options,
                                    MaterialRenderSource source, std::string fragment_name,
-                                   bool with_ltc)
+                                   bool with_ltc, EstimateMethods methods)
     : settings_(settings),
       source_(source),
       fragment_name_(std::move(fragment_name)),
+      methods_(methods),
       build_(options),
       context_(vulkan::ContextOptions{settings.validation, settings.device}),
       lobes_(runtime::shipped_basis().samples()),
@@ -31,7 +58,7 @@ MaterialRenderer::MaterialRenderer(const RenderSettings& settings, const BuildOp
       ours_table_(context_, table_size_, table_size_, build_.stored_lut().texels),
       lobe_table_(context_, table_size_, table_size_, lobe_lut_.texels),
       sampler_(context_),
-      curve_(context_, kCurveSize * 4 * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      curve_(context_, 2 * kCurveSize * 4 * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       vertex_(compile_fullscreen_stage(fullscreen_vertex_source(), ShaderStage::vertex,
                                        "fullscreen.vert")) {
   if (with_ltc) {
@@ -49,15 +76,17 @@ std::optional<CompiledMaterial> MaterialRenderer::compile(const std::string& fil
   return compile_material(*parsed.material, build_.basis());
 }
 
-std::array<Panel, kEstimateCount> MaterialRenderer::render(const CompiledMaterial& compiled) {
-  const auto exact = make_reflectance_curve(compiled.material, compiled.color);
-  std::vector<float> curve(kCurveSize * 4, 0.0f);
-  for (std::size_t j = 0; j < kCurveSize; ++j) {
-    const Rgb value = exact->at(static_cast<double>(j) / (kCurveSize - 1));
-    for (std::size_t c = 0; c < 3; ++c)
-      curve[4 * j + c] = static_cast<float>(value[c]);
-  }
-  curve_.write<float>(curve);
+bool MaterialRenderer::is_bare(const std::string& file, const CompiledMaterial& compiled) {
+  if (!compiled.coat) return true;
+  fmt::print(stderr,
+             "{}: error: {} is coated: this render draws bare metals; matc_coated_render draws "
+             "coated ones\n",
+             file, compiled.material.name);
+  return false;
+}
+
+std::vector<Panel> MaterialRenderer::render(const CompiledMaterial& compiled) {
+  curve_.write<float>(exact_curve(compiled));
   const SpirvWords fragment = compile_fullscreen_stage(
       source_(build_, compiled, kCurveSize, settings_.size, settings_.size), ShaderStage::fragment,
       fragment_name_);
@@ -70,7 +99,7 @@ std::array<Panel, kEstimateCount> MaterialRenderer::render(const CompiledMateria
                               sizeof(PanelConstants));
   const auto roughness =
       static_cast<float>(compiled.material.roughness.value_or(kDefaultRoughness));
-  return render_estimates(pass, settings_.size, settings_.samples, roughness);
+  return render_estimates(pass, settings_.size, settings_.samples, roughness, methods_);
 }
 
 }  // namespace matc::render

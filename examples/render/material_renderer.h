@@ -20,17 +20,20 @@
 
 namespace matc::render {
 
-// A material's fragment shader: comparison_render_source or area_light_render_source.
+// A material's fragment shader: comparison_render_source, area_light_render_source or
+// coated_render_source.
 using MaterialRenderSource = std::string (*)(const Build& build, const CompiledMaterial& compiled,
                                              std::size_t curve_size, std::uint32_t width,
                                              std::uint32_t height);
 
 class MaterialRenderer {
  public:
-  // Bindings: 0 our table, 1 the ComparisonLobes table, 2 the sampler, 3 the exact curve, and with
-  // `with_ltc` 4 the LTC table.
+  // Bindings: 0 our table, 1 the ComparisonLobes table, 2 the sampler, 3 the exact curve (a
+  // coated material's: the base lobe in rgb, the coat lobe in a), and with `with_ltc` 4 the LTC
+  // table. `methods`: what the fragment shader computes.
   MaterialRenderer(const RenderSettings& settings, const BuildOptions& options,
-                   MaterialRenderSource source, std::string fragment_name, bool with_ltc);
+                   MaterialRenderSource source, std::string fragment_name, bool with_ltc,
+                   EstimateMethods methods = {});
 
   const vulkan::Context& context() const { return context_; }
   runtime::BasisView basis() const { return build_.basis(); }
@@ -39,13 +42,18 @@ class MaterialRenderer {
   // nothing for an invalid file.
   std::optional<CompiledMaterial> compile(const std::string& file) const;
 
-  // Every estimate of one material, linear RGB, indexed by Estimate.
-  std::array<Panel, kEstimateCount> render(const CompiledMaterial& compiled);
+  // False, with an error on standard error, for a coated material: the renders of bare metals
+  // (matc_render, matc_area_light_render) send it to matc_coated_render.
+  static bool is_bare(const std::string& file, const CompiledMaterial& compiled);
+
+  // Every estimate of one material, linear RGB, indexed by method.
+  std::vector<Panel> render(const CompiledMaterial& compiled);
 
  private:
   RenderSettings settings_;
   MaterialRenderSource source_;
   std::string fragment_name_;
+  EstimateMethods methods_;
   Build build_;
   vulkan::Context context_;
   ComparisonLobes lobes_;

@@ -20,6 +20,11 @@ trap 'rm -f "$table"; rm -rf "$paper"' EXIT
   >"$table"
 "$root/tests/scripts/check_docs_block.sh" --update "$root/docs/rendering.md" comparison-renders-paper \
   cat "$table"
+# A coated metal: copper under a warm lacquer, both lobes, beside the engines' F0-in-coat Schlick.
+cmake --build "$build" --target matc_coated_render >/dev/null
+"$build/examples/render/matc_coated_render" --size 256 --samples 4096 -o "$root/docs/images" \
+  "$root/examples/materials/copper_lacquered.json" >"$table"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/rendering.md" coated-render cat "$table"
 # The textured render: per-pixel reflectivity and edge tint, the coefficient-table path.
 cmake --build "$build" --target matc_textured_render >/dev/null
 "$build/examples/render/matc_textured_render" --size 256 --samples 4096 -o "$root/docs/images" \
@@ -34,13 +39,14 @@ trap 'rm -f "$table"; rm -rf "$paper" "$maps"' EXIT
 "$build/examples/render/matc_baked_render" --size 256 -o "$root/docs/images" \
   --reflectivity "$maps/inlaid_metals_r.png" --edge-tint "$maps/inlaid_metals_g.png" >"$table"
 "$root/tests/scripts/check_docs_block.sh" --update "$root/docs/rendering.md" baked-render cat "$table"
-# Area lights (LTC): every example material for the table, the Figure 2 material's and
-# beryllium's images into docs/images.
+# Area lights (LTC): every bare example material for the table (coated ones are the coated
+# render's), the Figure 2 material's and beryllium's images into docs/images.
 cmake --build "$build" --target matc_area_light_render >/dev/null
 area=$(mktemp -d)
 trap 'rm -f "$table"; rm -rf "$paper" "$maps" "$area"' EXIT
+mapfile -t bare < <(grep -L '"coat"' "$root"/examples/materials/*.json)
 "$build/examples/render/matc_area_light_render" --size 256 --samples 4096 -o "$area" \
-  "$root"/examples/materials/*.json >"$table"
+  "${bare[@]}" >"$table"
 for name in figure2_edge_tint beryllium; do
   cp "$area/${name}_area.png" "$area/${name}_area_difference.png" \
     "$area/${name}_area_fresnel_difference.png" "$root/docs/images/"

@@ -1,10 +1,12 @@
 #include "matc/emit/fullscreen_shaders.h"
 
+#include <array>
 #include <stdexcept>
 
 #include <fmt/core.h>
 
 #include "matc/emit/template.h"
+#include "matc/optics/coat.h"
 #include "matc/spirv/spirv_tools.h"
 #include "matc/version.h"
 
@@ -118,21 +120,22 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
 
 namespace {
 
-// A render of one material against its exact curve (comparison_render.frag and
-// area_light_render.frag take the same placeholders).
+// A render of one material against its exact curve (comparison_render.frag,
+// area_light_render.frag and coated_render.frag take the same placeholders, and `extra`).
 std::string material_render_source(std::string_view template_name, const Build& build,
                                    const CompiledMaterial& compiled, std::size_t curve_size,
-                                   std::uint32_t width, std::uint32_t height) {
-  return fill_template(template_name,
-                       {{"version", kVersion},
-                        {"render_sampling", fill_template("glsl/render_sampling.glsl", {})},
-                        {"library", build.library_source(ShaderLanguage::glsl)},
-                        {"material", build.material_source(ShaderLanguage::glsl, compiled)},
-                        {"name", compiled.material.name},
-                        {"f0", f0_list(compiled)},
-                        {"curve_size", std::to_string(curve_size)},
-                        {"width", std::to_string(width)},
-                        {"height", std::to_string(height)}});
+                                   std::uint32_t width, std::uint32_t height,
+                                   TemplateValues extra = {}) {
+  extra.insert({{"version", kVersion},
+                {"render_sampling", fill_template("glsl/render_sampling.glsl", {})},
+                {"library", build.library_source(ShaderLanguage::glsl)},
+                {"material", build.material_source(ShaderLanguage::glsl, compiled)},
+                {"name", compiled.material.name},
+                {"f0", f0_list(compiled)},
+                {"curve_size", std::to_string(curve_size)},
+                {"width", std::to_string(width)},
+                {"height", std::to_string(height)}});
+  return fill_template(template_name, extra);
 }
 
 }  // namespace
@@ -149,6 +152,20 @@ std::string area_light_render_source(const Build& build, const CompiledMaterial&
                                      std::uint32_t height) {
   return material_render_source("glsl/area_light_render.frag", build, compiled, curve_size, width,
                                 height);
+}
+
+std::string coated_render_source(const Build& build, const CompiledMaterial& compiled,
+                                 std::size_t curve_size, std::uint32_t width,
+                                 std::uint32_t height) {
+  if (!compiled.coat) {
+    throw std::invalid_argument(compiled.material.name +
+                                " has no coat: the comparison render (matc_render) draws it");
+  }
+  std::array<double, 3> f0_in_coat{};
+  for (std::size_t c = 0; c < 3; ++c)
+    f0_in_coat[c] = f0_seen_from_coat(compiled.f0[c], compiled.coat->input.ior);
+  return material_render_source("glsl/coated_render.frag", build, compiled, curve_size, width,
+                                height, {{"f0_in_coat", float_list(f0_in_coat)}});
 }
 
 std::string textured_render_source(const Build& build, std::uint32_t width, std::uint32_t height) {

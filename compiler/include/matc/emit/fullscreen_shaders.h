@@ -1,6 +1,6 @@
 // Full-screen GLSL passes that put our Fresnel beside Schlick's on a device: the cost benchmark
 // (bench/fullscreen_cost.cpp) and the comparison renders (examples/render). Not part of what
-// `matc` writes; built from templates/glsl/{fullscreen.vert,cost_pass.frag,comparison_render.frag}.
+// `matc` writes; built from templates/glsl/{fullscreen.vert,cost_pass.frag,*_render.frag}.
 #pragma once
 
 #include <cstddef>
@@ -83,6 +83,13 @@ std::string comparison_render_source(const Build& build, const CompiledMaterial&
 std::string area_light_render_source(const Build& build, const CompiledMaterial& compiled,
                                      std::size_t curve_size, std::uint32_t width,
                                      std::uint32_t height);
+
+// The coated comparison render's fragment shader (templates/glsl/coated_render.frag): the
+// comparison render's sphere and bindings for a coated material, both lobes, beside the engines'
+// F0-in-coat Schlick (the exact-curve buffer holds the base lobe in rgb, the coat lobe in a).
+// std::invalid_argument for a material without a coat.
+std::string coated_render_source(const Build& build, const CompiledMaterial& compiled,
+                                 std::size_t curve_size, std::uint32_t width, std::uint32_t height);
 
 // The textured render's fragment shader (templates/glsl/textured_render.frag): a sphere whose
 // reflectivity and edge tint vary per pixel, from a buffer (see the template for the bindings).
