@@ -103,13 +103,7 @@ int main(int argc, char** argv) {
       const std::optional<matc::CompiledMaterial> material = renderer.compile(file);
       if (!material) return 1;
       const matc::CompiledMaterial& compiled = *material;
-      if (!compiled.coat) {
-        fmt::print(stderr,
-                   "{}: error: {} has no coat: matc_coated_render draws coated metals, "
-                   "matc_render bare ones\n",
-                   file, compiled.material.name);
-        return 1;
-      }
+      if (!MaterialRenderer::draws(file, compiled, /*coated=*/true)) return 1;
       const std::vector<Panel> estimates = renderer.render(compiled);
       const Panel& reference = estimates[kCoatedReference];
       const Panel engine =

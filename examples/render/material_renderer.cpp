@@ -76,12 +76,20 @@ std::optional<CompiledMaterial> MaterialRenderer::compile(const std::string& fil
   return compile_material(*parsed.material, build_.basis());
 }
 
-bool MaterialRenderer::is_bare(const std::string& file, const CompiledMaterial& compiled) {
-  if (!compiled.coat) return true;
-  fmt::print(stderr,
-             "{}: error: {} is coated: this render draws bare metals; matc_coated_render draws "
-             "coated ones\n",
-             file, compiled.material.name);
+bool MaterialRenderer::draws(const std::string& file, const CompiledMaterial& compiled,
+                             bool coated) {
+  if (compiled.coat.has_value() == coated) return true;
+  if (coated) {
+    fmt::print(stderr,
+               "{}: error: {} has no coat: matc_coated_render draws coated metals, matc_render "
+               "bare ones\n",
+               file, compiled.material.name);
+  } else {
+    fmt::print(stderr,
+               "{}: error: {} is coated: this render draws bare metals; matc_coated_render draws "
+               "coated ones\n",
+               file, compiled.material.name);
+  }
   return false;
 }
 

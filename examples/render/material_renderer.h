@@ -42,9 +42,10 @@ class MaterialRenderer {
   // nothing for an invalid file.
   std::optional<CompiledMaterial> compile(const std::string& file) const;
 
-  // False, with an error on standard error, for a coated material: the renders of bare metals
-  // (matc_render, matc_area_light_render) send it to matc_coated_render.
-  static bool is_bare(const std::string& file, const CompiledMaterial& compiled);
+  // Whether a render of bare metals (matc_render, matc_area_light_render; `coated` false) or of
+  // coated ones (matc_coated_render) draws `compiled`; if not, false with an error on standard
+  // error naming the render that does.
+  static bool draws(const std::string& file, const CompiledMaterial& compiled, bool coated);
 
   // Every estimate of one material, linear RGB, indexed by method.
   std::vector<Panel> render(const CompiledMaterial& compiled);

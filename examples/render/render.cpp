@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
       const std::optional<matc::CompiledMaterial> material = renderer.compile(file);
       if (!material) return 1;
       const matc::CompiledMaterial& compiled = *material;
-      if (!MaterialRenderer::is_bare(file, compiled)) return 1;
+      if (!MaterialRenderer::draws(file, compiled, /*coated=*/false)) return 1;
       const std::vector<Panel> estimates = renderer.render(compiled);
       const Panel& reference = estimates[kReference];
       const Panel& radiance = estimates[kPrefilteredRadiance];

@@ -246,11 +246,7 @@ export async function loadMatcBuildFiles(url, { language = "glsl" } = {}) {
                                `but the build's tables are basis ${manifest.basis} from matc ` +
                                `${manifest.matc_version}: they do not belong together`);
       }
-      const rows = material.coefficients;
-      if (!Array.isArray(rows) || rows.length !== 3 || rows.some((row) => row.length !== 4)) {
-        throw new MatcWebError(`${file}: coefficients must be 3 rows of 4 numbers`);
-      }
-      return { name: material.name, basis, coefficients: rows,
+      return { name: material.name, basis, coefficients: checkedRows(material.coefficients, file, "coefficients"),
                coat: material.coat ? await loadCoat(material, at(`${name}.${language}`), file) : null };
     },
   };
@@ -269,12 +265,28 @@ async function loadCoat(material, snippetUrl, file) {
   }
   const snippet = await (await fetchChecked(snippetUrl, "a coated material needs its own shader snippet; " +
                                             "compile with the shader language among --emit")).text();
-  const underCoat = material.coat.under_coat_coefficients;
-  if (!Array.isArray(underCoat) || underCoat.length !== 3 || underCoat.some((row) => row.length !== 4)) {
-    throw new MatcWebError(`${file}: coat.under_coat_coefficients must be 3 rows of 4 numbers`);
-  }
   return { weight: input.weight, ior: input.ior, roughness: input.roughness, color: rgbOf(input.color),
-           underCoatCoefficients: underCoat, snippet };
+           underCoatCoefficients: checkedRows(material.coat.under_coat_coefficients, file,
+                                              "coat.under_coat_coefficients"),
+           snippet };
+}
+
+// A compiled material's coefficient rows (R, G, B: c_0..c_3), or an error naming `field` of `file`.
+function checkedRows(rows, file, field) {
+  if (!Array.isArray(rows) || rows.length !== 3 || rows.some((row) => row.length !== 4)) {
+    throw new MatcWebError(`${file}: ${field} must be 3 rows of 4 numbers`);
+  }
+  return rows;
+}
+
+// Checks the areaLights option against what a coated material takes in an integration
+// (`allowed`): the quality level's area lights take bare metals.
+export function checkCoatedAreaLights(material, areaLights, allowed = ["matc", "engine"]) {
+  if (allowed.includes(areaLights)) return;
+  const why = areaLights === "quality" ? "the quality-level area lights take bare metals"
+                                       : `its coat lobe needs matc's LTC on rect lights (areaLights "${areaLights}")`;
+  throw new MatcWebError(`${material.name} is coated: ${why}; use areaLights ` +
+                         allowed.map((value) => `"${value}"`).join(" or "));
 }
 
 // A colour option of a source (reflectivity, edgeTint): [r, g, b], one grey value, or 1 when absent.

@@ -39,36 +39,30 @@ const kBindings = `
 @group(0) @binding(5) var matc_linear: sampler;
 `;
 
-// Three results per query: F(mu), Fbar(NdotV, roughness) through the table and Fbar from the
-// table's closed form, for the coefficients `coefficients`.
-const fresnelKernel = (coefficients) => `${kBindings}
+// A compute kernel over the queries (mu, NdotV, roughness each): `body` runs for query i.
+const perQueryKernel = (body) => `${kBindings}
 @compute @workgroup_size(64)
 fn main(@builtin(global_invocation_id) id: vec3u) {
   let i = id.x;
   if (i >= arrayLength(&matc_queries)) {
     return;
   }
-  let query = matc_queries[i];  // mu, NdotV, roughness
-  let c = ${coefficients};
+  let query = matc_queries[i];
+${body}}
+`;
+
+// Three results per query: F(mu), Fbar(NdotV, roughness) through the table and Fbar from the
+// table's closed form, for the coefficients `coefficients`.
+const fresnelKernel = (coefficients) => perQueryKernel(`  let c = ${coefficients};
   let bbar = textureSampleLevel(matc_lut, matc_linear, matc_lut_texcoord(query.y, query.z), 0.0);
   matc_results[3u * i] = vec4f(matc_fresnel(c, query.x), 1.0);
   matc_results[3u * i + 1u] = vec4f(matc_fresnel_preintegrated(c, bbar), 1.0);
   matc_results[3u * i + 2u] = vec4f(matc_fresnel_preintegrated(
-                                        c, matc_preintegrated_basis_analytic(query.y, query.z)), 1.0);
-}
-`;
+                                        c, matc_preintegrated_basis_analytic(query.y, query.z)), 1.0);`);
 
 // The same for coated material `name` through its own functions: both lobes summed, the coat's
 // texel sampled at the coat's roughness.
-const coatedKernel = (name) => `${kBindings}
-@compute @workgroup_size(64)
-fn main(@builtin(global_invocation_id) id: vec3u) {
-  let i = id.x;
-  if (i >= arrayLength(&matc_queries)) {
-    return;
-  }
-  let query = matc_queries[i];  // mu, NdotV, roughness
-  let bbar = textureSampleLevel(matc_lut, matc_linear, matc_lut_texcoord(query.y, query.z), 0.0);
+const coatedKernel = (name) => perQueryKernel(`  let bbar = textureSampleLevel(matc_lut, matc_linear, matc_lut_texcoord(query.y, query.z), 0.0);
   let coat_bbar = textureSampleLevel(matc_lut, matc_linear,
                                      matc_lut_texcoord(query.y, matc_coat_roughness_${name}), 0.0);
   let analytic = matc_preintegrated_basis_analytic(query.y, query.z);
@@ -77,30 +71,19 @@ fn main(@builtin(global_invocation_id) id: vec3u) {
   matc_results[3u * i + 1u] = vec4f(matc_fresnel_preintegrated_${name}(bbar, coat_bbar, query.y) +
                                     matc_coat_fresnel_preintegrated_${name}(coat_bbar), 1.0);
   matc_results[3u * i + 2u] = vec4f(matc_fresnel_preintegrated_${name}(analytic, coat_analytic, query.y) +
-                                    matc_coat_fresnel_preintegrated_${name}(coat_analytic), 1.0);
-}
-`;
+                                    matc_coat_fresnel_preintegrated_${name}(coat_analytic), 1.0);`);
 
 // One result per query: a quad light of radiance 1 seen from the origin (`light` names the
 // one-shape function or the quality level's, which also takes the roughness).
 const quadLightKernel = (coefficients, quad, light = "matc_ltc_quad_light") => {
   const roughnessArgument = light.endsWith("_following") ? "query.z, " : "";
   const vertices = quad.split(";").map((v) => `vec3f(${v.split(",").map(Number).map((x) => x.toFixed(6)).join(", ")})`);
-  return `${kBindings}
-@compute @workgroup_size(64)
-fn main(@builtin(global_invocation_id) id: vec3u) {
-  let i = id.x;
-  if (i >= arrayLength(&matc_queries)) {
-    return;
-  }
-  let query = matc_queries[i];  // -, NdotV, roughness
-  let V = vec3f(sqrt(max(1.0 - query.y * query.y, 0.0)), 0.0, query.y);
+  return perQueryKernel(`  let V = vec3f(sqrt(max(1.0 - query.y * query.y, 0.0)), 0.0, query.y);
   let bbar = textureSampleLevel(matc_lut, matc_linear, matc_lut_texcoord(query.y, query.z), 0.0);
   let ltc = textureSampleLevel(matc_ltc, matc_linear, matc_ltc_texcoord(query.y, query.z), 0.0);
   matc_results[i] = vec4f(${light}(${coefficients}, bbar, ltc, ${roughnessArgument}vec3f(0.0, 0.0, 1.0),
                                   V, vec3f(0.0), ${vertices.join(", ")}), 1.0);
-}
-`;
+`);
 };
 
 const dir = mkdtempSync(join(tmpdir(), "matc-webgpu-"));

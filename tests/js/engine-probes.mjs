@@ -61,6 +61,27 @@ function toShadingFrame(corner, pixel) {
   return [dot(d, t1), dot(d, t2), dot(d, kNormal)];
 }
 
+const list = (values) => values.join(",");
+
+// `matc eval` of a material (`args`: its file, or --reflectivity/--edge-tint) at every probe:
+// Fbar at (NdotV, roughness) and F at the point light's v.h (`terms`).
+function evaluateAtProbes(matc, args, ndotv, roughness, terms) {
+  return JSON.parse(run(matc, [
+    "eval", ...args, "--lut-precision", "f32", "--no-reference", "--ndotv", list(ndotv),
+    "--roughness", list(ndotv.map(() => roughness)), "--mu", list(terms.map((t) => t.vdoth))]));
+}
+
+// `matc eval --quad-light` of a material at every probe for the rect light (its corners in each
+// probe's shading frame).
+function quadLightsAtProbes(matc, args, ndotv, roughness, rect) {
+  return kProbePixels.map((pixel, i) => {
+    const quad = rect.corners.map((corner) => toShadingFrame(corner, pixel).join(",")).join(";");
+    return JSON.parse(run(matc, [
+      "eval", ...args, "--lut-precision", "f32", "--ndotv", String(ndotv[i]),
+      "--roughness", String(roughness), "--quad-light", quad, "--light-samples", "16"]));
+  });
+}
+
 // Compiles what the pages load into dir: out/ (the two materials, every table in f32), baked/
 // (`matc bake` of kBaked, f32), and the builds that must be refused: json-only/ (no shader
 // library, no table), mixed-table/ (the extended basis' table beside powers coefficients) and
@@ -128,7 +149,6 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibilit
     return { irradiance: (kPointLight.intensity / Math.max(distance2, 0.01)) * Math.max(l[2], 0),
              ggx: brdf.value, vdoth: brdf.vdoth, light: l, view: viewAt(pixel) };
   }));
-  const list = (values) => values.join(",");
   const albedo = (roughness) => JSON.parse(run(matc, [
     "eval", "--reflectivity", "1", "--edge-tint", "1", "--lut-precision", "f32", "--no-reference",
     "--ndotv", list(ndotv), "--roughness", list(ndotv.map(() => roughness))])).Fbar_table.map((e) => e[0]);
@@ -144,9 +164,7 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibilit
       const key = (light) => `${source} ${light} r=${roughness}`;
       if (!["environment", "point", "rect", "rect quality"].some((light) => wanted.has(key(light)))) continue;
       const terms = pointTerms[kProbeRoughness.indexOf(roughness)];
-      const evaluated = JSON.parse(run(matc, [
-        "eval", ...args, "--lut-precision", "f32", "--no-reference", "--ndotv", list(ndotv),
-        "--roughness", list(ndotv.map(() => roughness)), "--mu", list(terms.map((t) => t.vdoth))]));
+      const evaluated = evaluateAtProbes(matc, args, ndotv, roughness, terms);
       const f0 = f0Of ?? JSON.parse(readFileSync(join(out, `${source}.json`), "utf8"))
                             .coefficients.map((row) => row[0]);
       const e = albedo(roughness);
@@ -160,12 +178,7 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibilit
         });
       }
       if (wanted.has(key("rect")) || wanted.has(key("rect quality"))) {
-        const lights = kProbePixels.map((pixel, i) => {
-          const quad = rect.corners.map((corner) => toShadingFrame(corner, pixel).join(",")).join(";");
-          return JSON.parse(run(matc, [
-            "eval", ...args, "--lut-precision", "f32", "--ndotv", String(ndotv[i]),
-            "--roughness", String(roughness), "--quad-light", quad, "--light-samples", "16"]));
-        });
+        const lights = quadLightsAtProbes(matc, args, ndotv, roughness, rect);
         // L_ltc (areaLights "matc") or L_ltc_following (the quality level).
         const radiance = (field) => lights.map((light, i) => {
           const rgb = light[field][0].map((value) => value * rect.light.intensity);
@@ -198,10 +211,7 @@ function expectedCoatedProbes({ matc, materialsDir, out, alphaOf, coatVisibility
   const underCoatF0 = compiled.coat.under_coat_coefficients.map((row) => row[0]);
   const coatAlpha = alphaOf(compiled.coat.input.roughness);
   const terms = pointTerms[kProbeRoughness.indexOf(roughness)];
-  const list = (values) => values.join(",");
-  const evaluated = JSON.parse(run(matc, [
-    "eval", file, "--lut-precision", "f32", "--no-reference", "--ndotv", list(ndotv),
-    "--roughness", list(ndotv.map(() => roughness)), "--mu", list(terms.map((t) => t.vdoth))]));
+  const evaluated = evaluateAtProbes(matc, [file], ndotv, roughness, terms);
   const e = albedo(roughness);
   const layered = (base, coat, i) => compensatedFbar(base, underCoatF0, e[i]).map((value) => value + coat);
   if (wanted.has(key("environment"))) {
@@ -215,11 +225,7 @@ function expectedCoatedProbes({ matc, materialsDir, out, alphaOf, coatVisibility
     });
   }
   if (wanted.has(key("rect"))) {
-    expected[key("rect")] = kProbePixels.map((pixel, i) => {
-      const quad = rect.corners.map((corner) => toShadingFrame(corner, pixel).join(",")).join(";");
-      const light = JSON.parse(run(matc, [
-        "eval", file, "--lut-precision", "f32", "--ndotv", String(ndotv[i]), "--roughness", String(roughness),
-        "--quad-light", quad, "--light-samples", "16"]));
+    expected[key("rect")] = quadLightsAtProbes(matc, [file], ndotv, roughness, rect).map((light, i) => {
       const base = light.L_ltc_base[0].map((value) => value * rect.light.intensity);
       const coat = light.L_ltc_coat[0] * rect.light.intensity;
       return (rect.compensated ? compensatedFbar(base, underCoatF0, e[i]) : base).map((value) => value + coat);

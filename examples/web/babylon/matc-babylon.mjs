@@ -17,8 +17,8 @@ import { ShaderStore } from "@babylonjs/core/Engines/shaderStore.js";
 import { Vector3, Vector4 } from "@babylonjs/core/Maths/math.vector.js";
 import { AbstractEngine } from "@babylonjs/core/Engines/abstractEngine.js";
 import "@babylonjs/core/Shaders/pbr.fragment.js";  // registers the shader text the anchors are checked against
-import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, declarationsGlsl, loadMatcBuildFiles,
-         lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
+import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, checkCoatedAreaLights, declarationsGlsl,
+         loadMatcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -215,12 +215,8 @@ function preparePlugin(build, source, areaLights) {
   checkAnchors(`@babylonjs/core ${version}`, shaderSources(), kPatches, tested);
   const kind = sourceKind(build, source);
   const coat = source.material?.coat;
-  if (coat && areaLights !== "matc") {
-    throw new MatcWebError(`${source.material.name} is coated: ` +
-                           (areaLights === "quality" ? "the quality-level area lights take bare metals; "
-                                                     : "its coat lobe on Babylon's rect lights needs matc's LTC; ") +
-                           'use areaLights "matc"');
-  }
+  // Babylon's rect lights have no coat lobe of their own: matc's LTC draws it.
+  if (coat) checkCoatedAreaLights(source.material, areaLights, ["matc"]);
   const colour = (value) => new Vector3(...rgbOf(value));
   return { build, source, kind, areaLights, coat, coatId: coat ? coatIdOf(source.material.name) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
            coefficients: kind === "material" ? source.material.coefficients.map((row) => new Vector4(...row)) : null };

@@ -15,7 +15,8 @@ import { BRDF_GGX, LTC_Evaluate, LTC_Uv, clearcoatNormalView, clearcoatRoughness
          normalView, positionView, positionViewDirection, roughness, step, texture, uniform, uv, vec3, vec4, wgsl,
          wgslFn } from "three/tsl";
 import { sampleTrilinearly, tableTexture } from "./textures.mjs";
-import { MatcWebError, checkAnchors, checkAreaLights, loadMatcBuildFiles, rgbOf, sourceKind } from "../matc-build.mjs";
+import { MatcWebError, checkAnchors, checkAreaLights, checkCoatedAreaLights, loadMatcBuildFiles, rgbOf,
+         sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -48,7 +49,6 @@ function checkLightingModel() {
   const prototype = THREE.PhysicalLightingModel?.prototype ?? {};
   const sources = Object.fromEntries(kOverrides.map(({ source }) =>
     [source, typeof prototype[source] === "function" ? prototype[source].toString() : undefined]));
-  // The same method may carry several anchors.
   if (!kTestedThreeRevisions.includes(THREE.REVISION)) {
     console.warn(`matc: three.js r${THREE.REVISION} is untested with WebGPURenderer (tested: r` +
                  `${kTestedThreeRevisions.join(", r")}); its lighting model still matches`);
@@ -88,17 +88,17 @@ export async function loadMatcBuild(url) {
     // Rect area lights (the library has matc's LTC functions when the build wrote its table).
     functions.ltcTexcoord = wgslFn("fn matc_three_ltc_texcoord(ndotv: f32, roughness: f32) -> vec2f { " +
                                    "return matc_ltc_texcoord(ndotv, roughness); }", [library]);
-    functions.quadLight = entry("matc_three_quad_light", "bbar: vec4f, ltc: vec4f, N: vec3f, V: vec3f, P: vec3f, " +
-                                "q0: vec3f, q1: vec3f, q2: vec3f, q3: vec3f", "vec3f",
-                                `matc_ltc_quad_light(${coefficients}, bbar, ltc, N, V, P, q0, q1, q2, q3)`);
+    // The LTC integral of a quad (bare and coated lobes multiply it by their preintegrated F, as
+    // matc_ltc_quad_light does).
+    functions.quadIntegral = wgslFn("fn matc_three_quad_integral(ltc: vec4f, N: vec3f, V: vec3f, P: vec3f, " +
+                                    "q0: vec3f, q1: vec3f, q2: vec3f, q3: vec3f) -> f32 { return " +
+                                    "matc_ltc_quad_integral(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3); }",
+                                    [library]);
     functions.quadLightFollowing = entry(
         "matc_three_quad_light_following", "bbar: vec4f, ltc: vec4f, roughness: f32, N: vec3f, V: vec3f, " +
         "P: vec3f, q0: vec3f, q1: vec3f, q2: vec3f, q3: vec3f", "vec3f",
         `matc_ltc_quad_light_following(${coefficients}, bbar, ltc, roughness, N, V, P, q0, q1, q2, q3)`);
   }
-  functions.quadIntegral = wgslFn("fn matc_three_quad_integral(ltc: vec4f, N: vec3f, V: vec3f, P: vec3f, q0: vec3f, " +
-                                  "q1: vec3f, q2: vec3f, q3: vec3f) -> f32 { return matc_ltc_quad_integral(" +
-                                  "matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3); }", [library]);
   const loadMaterial = files.loadMaterial;
   // A coated material's lobes: its own snippet (<name>.wgsl) through wgslFn.
   const withCoatFunctions = (material) => {
@@ -231,9 +231,7 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
       const corners = { N, V, P, q0: p0, q1: p1, q2: p2, q3: p3 };
       const radiance = this.matc.areaLights === "quality"
           ? functions.quadLightFollowing({ ...rows, bbar: this.matcBbar, ltc: texel, roughness, ...corners })
-          : this.matc.coat  // a coated material's base lobe: the metal through the coat
-          ? this.matcPreintegrated.mul(functions.quadIntegral({ ltc: texel, ...corners }))
-          : functions.quadLight({ ...rows, bbar: this.matcBbar, ltc: texel, ...corners });
+          : this.matcPreintegrated.mul(functions.quadIntegral({ ltc: texel, ...corners }));
       reflectedLight.directSpecular.addAssign(lightColor.mul(radiance).mul(lit));
       if (this.matc.coat) {
         // The coat lobe: matc's LTC at the coat's roughness and normal times its preintegrated F.
@@ -292,10 +290,7 @@ function coatOf(compiled, material, areaLights) {
   if (!material.isMeshPhysicalNodeMaterial) {
     throw new MatcWebError(`${compiled.name} is coated: its coat lobe needs a MeshPhysicalNodeMaterial`);
   }
-  if (areaLights === "quality") {
-    throw new MatcWebError(`${compiled.name} is coated: the quality-level area lights take bare metals; ` +
-                           'use areaLights "matc" or "engine"');
-  }
+  checkCoatedAreaLights(compiled, areaLights);
   if (!compiled.coat.functions) throw new MatcWebError("useMatcFresnel (WebGPU) needs this module's loadMaterial");
   material.clearcoat = 1;
   material.clearcoatRoughness = compiled.coat.roughness;

@@ -12,8 +12,8 @@
 //   useMatcFresnel(gold, build, { material: await build.loadMaterial("gold") });
 import * as THREE from "three";
 import { sampleTrilinearly, tableTexture } from "./textures.mjs";
-import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, declarationsGlsl, loadMatcBuildFiles,
-         lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
+import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, checkCoatedAreaLights, declarationsGlsl,
+         loadMatcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -252,10 +252,7 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc" } 
   if (coat && !material.isMeshPhysicalMaterial) {
     throw new MatcWebError(`${source.material.name} is coated: its coat lobe needs a MeshPhysicalMaterial`);
   }
-  if (coat && areaLights === "quality") {
-    throw new MatcWebError(`${source.material.name} is coated: the quality-level area lights take bare metals; ` +
-                           'use areaLights "matc" or "engine"');
-  }
+  if (coat) checkCoatedAreaLights(source.material, areaLights);
   // Checked now, so that a changed engine fails here and not at the first frame.
   const { [kMainShader]: main, ...chunks } = patchChunks(THREE.ShaderChunk, build.library, source.material);
   Object.assign(uniforms, { matc_lut: { value: build.lut }, matc_ltc: { value: build.ltc ?? build.lut } });
