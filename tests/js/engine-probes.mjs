@@ -82,10 +82,11 @@ function quadLightsAtProbes(matc, args, ndotv, roughness, rect) {
   });
 }
 
-// Compiles what the pages load into dir: out/ (the two materials, every table in f32), baked/
+// Compiles what the pages load into dir: out/ (the probe materials, every table in f32), baked/
 // (`matc bake` of kBaked, f32), and the builds that must be refused: json-only/ (no shader
 // library, no table), mixed-table/ (the extended basis' table beside powers coefficients) and
-// out/beryllium_extended.json (extended-basis coefficients beside powers tables).
+// out/beryllium_extended.json (extended-basis coefficients beside powers tables), and
+// out/copper_lacquered_without_snippet.json (a coated material without its shader snippet).
 export function prepareProbeBuilds(matc, materialsDir, dir) {
   const out = join(dir, "out");
   const materialFiles = [...kProbeMaterials, kProbeCoated].map((name) => join(materialsDir, `${name}.json`));
@@ -103,6 +104,8 @@ export function prepareProbeBuilds(matc, materialsDir, dir) {
     cpSync(join(extended, file), join(dir, "mixed-table", file));
   }
   cpSync(join(extended, "beryllium.json"), join(out, "beryllium_extended.json"));
+  // A coated material whose snippet the build lacks.
+  cpSync(join(out, `${kProbeCoated}.json`), join(out, `${kProbeCoated}_without_snippet.json`));
   return { out, roots: { out, baked: join(dir, "baked"), "json-only": join(dir, "json-only"),
                          "mixed-table": join(dir, "mixed-table") } };
 }
@@ -267,6 +270,7 @@ export const kFailures = {
   textured_without_edge_tint: "needs both reflectivityMap and edgeTintMap",
   unknown_area_light_option: 'areaLights: "fast"; allowed: "matc", "quality", "engine"',
   coated_quality_area_lights: "is coated: the quality-level area lights take bare metals",
+  coated_without_snippet: "a coated material needs its own shader snippet",
 };
 
 export function checkFailures(failures) {

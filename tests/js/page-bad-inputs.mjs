@@ -35,4 +35,5 @@ export async function checkBadInputs(out, { loadMatcBuild, build, material, coat
   await failure("unknown_area_light_option", () => useMatc({ material }, { areaLights: "fast" }));
   await failure("textured_without_edge_tint", () => useMatc({ reflectivityMap: texture }));
   await failure("coated_quality_area_lights", () => useMatc({ material: coated }, { areaLights: "quality" }));
+  await failure("coated_without_snippet", () => build.loadMaterial(`${coated.name}_without_snippet`));
 }
