@@ -27,31 +27,13 @@
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/ltc_following.h"
 #include "matc/runtime/lut.h"
+#include "eval_options.h"
 #include "print_diagnostics.h"
 
 namespace matc::cli {
 namespace {
 
-struct EvalOptions {
-  std::string file;          // a material file or MaterialX document, or:
-  std::string material;      // --material: which of a document's materials
-  std::string reflectivity;  // --reflectivity and --edge-tint: the coefficient-table path
-  std::string edge_tint;
-  std::vector<double> mu;
-  std::vector<double> ndotv;
-  std::vector<double> roughness;
-  std::string quad_light;  // "x,y,z;x,y,z;x,y,z;x,y,z" in the shading frame: area-light radiance
-  std::size_t light_samples = 0;  // reference samples for --quad-light
-  bool no_reference = false;      // --no-reference: no split-sum integral per (NdotV, roughness)
-  LutCliOptions lut;
-  ColorOptions color;
-};
 
-using nlohmann::ordered_json;
-
-// Coefficients by the JSON suffix of what they give: "" for a compiled material, "_table" and
-// "_compiled" for the coefficient-table path and the per-material compile beside it.
-using LabelledCoefficients = std::vector<std::pair<std::string, runtime::Coefficients>>;
 
 // F at each cosine as the shaders compute it, beside the exact curve.
 void add_direct_fresnel(const EvalOptions& options, const ReflectanceCurve& curve,
@@ -92,25 +74,6 @@ SplitSumInputs split_sum_inputs(const EvalOptions& options, const ReflectanceCur
   return inputs;
 }
 
-// The (NdotV, roughness) points and the table a Fbar output was read from.
-void add_preintegrated_points(const EvalOptions& options, const Lut& lut, ordered_json& out) {
-  out["ndotv"] = options.ndotv;
-  out["roughness"] = options.roughness;
-  out["lut"] = {{"size", lut.size},
-                {"samples", lut.samples},
-                {"precision", lut_precision_name(options.lut.precision)}};
-}
-
-// The quad light and the tables its radiance outputs were computed with.
-void add_quad_light_description(const EvalOptions& options, const std::vector<Vec3>& quad,
-                                const runtime::LtcTableView& ltc, ordered_json& out) {
-  ordered_json vertices = ordered_json::array();
-  for (const Vec3& vertex : quad)
-    vertices.push_back(vertex);
-  out["quad_light"] = {{"vertices", std::move(vertices)},
-                       {"ltc_table", {{"size", ltc.size}}},
-                       {"reference_samples", options.light_samples}};
-}
 
 // Fbar exactly as a renderer samples the table it loads and from the table's closed form (as
 // matc_preintegrated_basis_analytic computes it), beside the exact split-sum integral.
@@ -257,134 +220,6 @@ int run_eval_artistic(const EvalOptions& options) {
   return kExitSuccess;
 }
 
-// A quad light on a coated material's two lobes: LTC per lobe times its Fbar as the shaders
-// compute it (matc_ltc_quad_light_<name>), and the exact integral of each lobe (the base's with
-// the exact layered base curve at its half vectors, the coat's with the coat's exact Fresnel).
-void add_coated_quad_light(const EvalOptions& options, const std::vector<Vec3>& quad,
-                           const CompiledMaterial& compiled, const Lut& lut,
-                           const ReflectanceCurve& in_air, const ReflectanceCurve& under,
-                           ordered_json& out) {
-  const CoatInput& coat = compiled.coat->input;
-  const runtime::LtcTableView ltc = runtime::shipped_ltc_table();
-  const LayeredCurve base(in_air, under, coat.weight, coat.ior, coat.color,
-                          LayeredCurve::Part::base);
-  const LayeredCurve coat_lobe(in_air, under, coat.weight, coat.ior, coat.color,
-                               LayeredCurve::Part::coat);
-  const TabulatedCurve base_table(base), coat_table(coat_lobe);
-  add_quad_light_description(options, quad, ltc, out);
-  ordered_json ours = ordered_json::array(), ours_base = ordered_json::array(),
-               ours_coat = ordered_json::array(), reference = ordered_json::array(),
-               standard_error = ordered_json::array();
-  for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
-    const double ndotv = options.ndotv[i], roughness = options.roughness[i];
-    const runtime::CoatedFresnel lobes =
-        runtime::polygon_light_ltc_coated(compiled.coefficients, compiled.coat->coefficients,
-                                          lut.view(), ltc, ndotv, roughness, quad);
-    ours.push_back(lobes.total());
-    ours_base.push_back(lobes.base);
-    ours_coat.push_back(lobes.coat);
-    const AreaLightEstimate base_part = integrate_polygon_light(
-        GgxLobe(ndotv, roughness), quad, [&](double mu) { return base_table.at(mu); },
-        options.light_samples);
-    const AreaLightEstimate coat_part = integrate_polygon_light(
-        GgxLobe(ndotv, coat.roughness), quad, [&](double mu) { return coat_table.at(mu); },
-        options.light_samples);
-    Rgb sum{}, error{};
-    for (std::size_t c = 0; c < 3; ++c) {
-      sum[c] = base_part.mean[c] + coat_part.mean[c];
-      error[c] = std::hypot(base_part.standard_error[c], coat_part.standard_error[c]);
-    }
-    reference.push_back(sum);
-    standard_error.push_back(error);
-  }
-  out["L_ltc"] = std::move(ours);
-  // Each lobe's part (engines that scale the base's lights for multiple scattering need them
-  // apart).
-  out["L_ltc_base"] = std::move(ours_base);
-  out["L_ltc_coat"] = std::move(ours_coat);
-  out["L_reference"] = std::move(reference);
-  out["L_reference_standard_error"] = std::move(standard_error);
-}
-
-// A coated material (docs/coating.md): both lobes as the shaders compute them and their sum,
-// beside the exact layered curve (smooth interfaces); preintegrated, the same beside the split
-// sum of each exact lobe at its own roughness and the Monte-Carlo layered reference (rough
-// interfaces, any number of bounces, no split sum).
-void add_coated(const EvalOptions& options, const CompiledMaterial& compiled,
-                const runtime::BasisView& basis, const std::optional<std::vector<Vec3>>& quad,
-                ordered_json& out) {
-  const Material& material = compiled.material;
-  const CompiledCoat& coat = *compiled.coat;
-  const runtime::CoatCoefficients& coefficients = coat.coefficients;
-  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(basis.kind);
-  const auto in_air = make_reflectance_curve(material, options.color);
-  const auto under = make_under_coat_curve(material, options.color.working_space);
-  const auto metal_in_coat = make_metal_in_coat_curve(material, options.color.working_space);
-  out["coat"] = {{"weight", coat.input.weight},
-                 {"ior", coat.input.ior},
-                 {"roughness", coat.input.roughness},
-                 {"color", coat.input.color}};
-  if (!options.mu.empty()) {
-    out["mu"] = options.mu;
-    ordered_json total = ordered_json::array(), base = ordered_json::array(),
-                 coat_lobe = ordered_json::array(), exact = ordered_json::array();
-    const LayeredCurve both(*in_air, *under, coat.input.weight, coat.input.ior, coat.input.color);
-    for (const double mu : options.mu) {
-      const auto lobes =
-          runtime::evaluate_coated_fresnel(compiled.coefficients, coefficients, shader_basis, mu);
-      total.push_back(lobes.total());
-      base.push_back(lobes.base);
-      coat_lobe.push_back(lobes.coat);
-      exact.push_back(both.at(mu));
-    }
-    out["F"] = std::move(total);
-    out["F_base"] = std::move(base);
-    out["F_coat"] = std::move(coat_lobe);
-    out["F_exact"] = std::move(exact);
-  }
-  if (options.ndotv.empty()) return;
-  const Lut lut = stored_as(preintegrate_lut(basis, options.lut.bake), options.lut.precision);
-  const runtime::AnalyticLutCoefficients& analytic = runtime::shipped_analytic_lut(basis.kind);
-  add_preintegrated_points(options, lut, out);
-  ordered_json total = ordered_json::array(), base = ordered_json::array(),
-               coat_lobe = ordered_json::array(), closed_form = ordered_json::array();
-  for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
-    const double ndotv = options.ndotv[i];
-    const auto lobes = runtime::evaluate_coated_fbar(compiled.coefficients, coefficients,
-                                                     lut.view(), ndotv, options.roughness[i]);
-    total.push_back(lobes.total());
-    base.push_back(lobes.base);
-    coat_lobe.push_back(lobes.coat);
-    closed_form.push_back(
-        runtime::evaluate_coated_preintegrated(
-            compiled.coefficients, coefficients,
-            runtime::preintegrated_basis_analytic(analytic, ndotv, options.roughness[i]),
-            runtime::preintegrated_basis_analytic(analytic, ndotv, coefficients.roughness), ndotv)
-            .total());
-  }
-  out["Fbar"] = std::move(total);
-  out["Fbar_base"] = std::move(base);
-  out["Fbar_coat"] = std::move(coat_lobe);
-  out["Fbar_analytic"] = std::move(closed_form);
-  if (options.no_reference) return;
-  const TabulatedCurve in_air_exact(*in_air);
-  const TabulatedCurve under_exact(*under);
-  ordered_json split_sum = ordered_json::array(), monte_carlo = ordered_json::array(),
-               standard_error = ordered_json::array();
-  for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
-    const double ndotv = options.ndotv[i];
-    split_sum.push_back(
-        layered_split_sum(in_air_exact, under_exact, coat.input, ndotv, options.roughness[i]));
-    const LayeredEstimate estimate =
-        layered_albedo({*in_air, *metal_in_coat, coat.input, options.roughness[i]}, ndotv);
-    monte_carlo.push_back(estimate.mean);
-    standard_error.push_back(estimate.standard_error);
-  }
-  out["Fbar_reference"] = std::move(split_sum);
-  out["Fbar_layered_reference"] = std::move(monte_carlo);
-  out["Fbar_layered_reference_standard_error"] = std::move(standard_error);
-  if (quad) add_coated_quad_light(options, *quad, compiled, lut, *in_air, *under, out);
-}
 
 // The material to evaluate: the file's only one, or the document's material named --material.
 std::optional<Material> chosen_material(const EvalOptions& options) {

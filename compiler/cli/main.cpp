@@ -10,11 +10,14 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
+#include "empty_values.h"
+#include "interrupt_cleanup.h"
 #include "matc/version.h"
 #include "print_diagnostics.h"
 
 int main(int argc, char** argv) {
   using namespace matc::cli;
+  remove_temporaries_when_interrupted();
   CLI::App app{"matc: compiles materials into an accurate, preintegrable Fresnel decomposition",
                "matc"};
   app.set_version_flag("--version", std::string("matc ") + matc::kVersion);
@@ -40,6 +43,8 @@ int main(int argc, char** argv) {
                      "(file:line:col: error: ...) or json (one object per line)")
         ->check(CLI::IsMember({"text", "json"}));
   }
+
+  refuse_empty_values(app);
 
   // -MD, as compilers spell it: CLI11 only takes one-letter names after a single dash.
   std::vector<std::string> arguments(argv + 1, argv + argc);

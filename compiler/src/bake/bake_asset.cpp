@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "matc/base/echoed_text.h"
 #include "matc/material/material.h"
 #include "matc/material/parse.h"
 #include "matc/optics/spectrum.h"
@@ -127,7 +128,7 @@ class BakeAssetReader : LocatedJsonReader {
         if (!parsed) {
           error(child(pointer, "encoding"),
                 encoding.is_string()
-                    ? fmt::format("unknown encoding '{}'", encoding.get<std::string>())
+                    ? fmt::format("unknown encoding '{}'", echoed(encoding.get<std::string>()))
                     : fmt::format("is {}", describe_type(encoding)),
                 "\"srgb\" (colour maps, the default for reflectivity and edge tint) or "
                 "\"linear\" (data maps, the default for n and k)");

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "matc/base/echoed_text.h"
+
 namespace matc {
 
 std::string_view severity_name(Severity severity) {
@@ -18,15 +20,17 @@ std::string_view severity_name(Severity severity) {
   return "error";
 }
 
+// One line whatever the parts hold: input text that reached a part unescaped (a path, a key)
+// cannot start a line of its own or send the terminal a control sequence.
 std::string format_diagnostic(const Diagnostic& diagnostic) {
-  std::string out = diagnostic.location.path;
+  std::string out = printable(diagnostic.location.path);
   if (diagnostic.location.line > 0) {
     out += fmt::format(":{}:{}", diagnostic.location.line, diagnostic.location.column);
   }
   out += fmt::format(": {}: ", severity_name(diagnostic.severity));
-  if (!diagnostic.field.empty()) out += diagnostic.field + ": ";
-  out += diagnostic.message;
-  if (!diagnostic.allowed.empty()) out += "; " + diagnostic.allowed;
+  if (!diagnostic.field.empty()) out += printable(diagnostic.field) + ": ";
+  out += printable(diagnostic.message);
+  if (!diagnostic.allowed.empty()) out += "; " + printable(diagnostic.allowed);
   return out;
 }
 

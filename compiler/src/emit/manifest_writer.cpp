@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "matc/base/content_hash.h"
+#include "matc/base/exclusive_file.h"
 #include "matc/base/json_format.h"
 
 namespace matc {
@@ -62,16 +63,18 @@ void ManifestWriter::append(std::string_view formatted_entry) {
     return;
   }
   if (!spool_) {
-    // Created on the first entry and unlinked at once.
+    // Created on the first entry, exclusively (never an existing file of that name), and
+    // unlinked at once.
     std::filesystem::create_directories(spool_directory_);
-    const std::filesystem::path path =
-        spool_directory_ / fmt::format(".matc_manifest.entries.tmp{}", ::getpid());
-    spool_.reset(std::fopen(path.c_str(), "w+b"));
+    const ExclusiveFile file = create_exclusive_file(spool_directory_, "matc_manifest.entries");
+    spool_.reset(::fdopen(file.descriptor, "w+b"));
+    const int error = errno;
+    if (!spool_) ::close(file.descriptor);
+    discard_exclusive_file(file.path);
     if (!spool_) {
-      throw std::runtime_error(
-          fmt::format("cannot create '{}': {}", path.string(), std::strerror(errno)));
+      throw std::runtime_error(fmt::format("cannot open the manifest's entries in '{}': {}",
+                                           spool_directory_.string(), std::strerror(error)));
     }
-    std::filesystem::remove(path);
   }
   if (std::fwrite(separator.data(), 1, separator.size(), spool_.get()) != separator.size() ||
       std::fwrite(formatted_entry.data(), 1, formatted_entry.size(), spool_.get()) !=

@@ -5,6 +5,7 @@
 
 #include <fmt/core.h>
 
+#include "matc/fit/coefficients.h"
 #include "matc/version.h"
 
 namespace matc {

@@ -4,6 +4,8 @@
 #include <iterator>
 #include <optional>
 
+#include "matc/base/echoed_text.h"
+
 namespace matc {
 namespace {
 
@@ -192,6 +194,9 @@ std::size_t LocatedJson::key_or_value_offset(const std::string& pointer) const {
 }
 
 std::variant<LocatedJson, JsonSyntaxError> parse_located_json(std::string_view text) {
+  // nlohmann's lexer reads a NUL byte as the end of the input: text after one would be ignored.
+  if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos)
+    return JsonSyntaxError{nul, "a NUL byte (JSON text holds none; a string writes it \\u0000)"};
   std::size_t consumed = 0;
   LocatingHandler handler(text, &consumed);
   const char* begin = text.data();
@@ -218,7 +223,13 @@ std::string field_path(std::string_view pointer) {
     }
     const bool index = !token.empty() && std::all_of(token.begin(), token.end(),
                                                      [](char c) { return c >= '0' && c <= '9'; });
-    out += index ? "[" + token + "]" : (out.empty() ? "" : ".") + token;
+    // A key is input text: escaped and cut, as every echoed piece of input is.
+    if (index) {
+      out.append("[").append(token).append("]");
+    } else {
+      if (!out.empty()) out.push_back('.');
+      out.append(echoed(token));
+    }
     start = end;
   }
   return out;

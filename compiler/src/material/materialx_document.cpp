@@ -8,7 +8,9 @@
 
 #include <fmt/format.h>
 
+#include "matc/base/echoed_text.h"
 #include "matc/material/materialx_import.h"
+#include "xml_well_formed.h"
 
 namespace matc {
 namespace {
@@ -25,19 +27,28 @@ std::string_view materialx_type_name(MaterialXType type) {
   return type == MaterialXType::float1 ? "float" : "color3";
 }
 
+// As MaterialX's reference implementation reads a vector value (MaterialXCore/Value.cpp,
+// stringToData: splitString(value, ARRAY_VALID_SEPARATORS), where the separators are ", "): any run
+// of commas and spaces separates two numbers, and separators at either end are dropped, so
+// "0.9, 0.6, 0.3", "0.9,0.6,0.3" and "0.9 0.6 0.3" are the same colour. Each number is read in
+// full: where MaterialX's stream read would keep the prefix of "0.5abc", matc refuses it.
 std::optional<Rgb> parse_materialx_value(std::string_view text, MaterialXType type) {
+  constexpr std::string_view kSeparators = ", ";
   std::array<double, 3> values{};
   std::size_t count = 0;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    std::size_t end = text.find(',', start);
+  std::size_t start = text.find_first_not_of(kSeparators);
+  while (start != std::string_view::npos) {
+    std::size_t end = text.find_first_of(kSeparators, start);
     if (end == std::string_view::npos) end = text.size();
     std::string_view item = text.substr(start, end - start);
+    start = text.find_first_not_of(kSeparators, end);
+    // The stream read skips leading white space of every kind (tabs, line breaks).
     while (!item.empty() && std::isspace(static_cast<unsigned char>(item.front())))
       item.remove_prefix(1);
     while (!item.empty() && std::isspace(static_cast<unsigned char>(item.back())))
       item.remove_suffix(1);
-    if (item.empty() || count == 3) return std::nullopt;
+    if (item.empty()) continue;
+    if (count == 3) return std::nullopt;
     if (item.front() == '+') item.remove_prefix(1);
     double value = 0.0;
     const auto [rest, error] = std::from_chars(item.data(), item.data() + item.size(), value);
@@ -45,7 +56,6 @@ std::optional<Rgb> parse_materialx_value(std::string_view text, MaterialXType ty
       return std::nullopt;
     }
     values[count++] = value;
-    start = end + 1;
   }
   const std::size_t expected = type == MaterialXType::float1 ? 1 : 3;
   if (count != expected) return std::nullopt;
@@ -56,6 +66,12 @@ std::optional<Rgb> parse_materialx_value(std::string_view text, MaterialXType ty
 MaterialXDocument::MaterialXDocument(std::string_view text, const std::string& path,
                                      Diagnostics& diagnostics)
     : text_(text), locator_(path, text), diagnostics_(diagnostics) {
+  const std::string_view allowed = "a MaterialX document (XML 1.0, UTF-8)";
+  if (const auto problem = find_xml_character_problem(text_)) {
+    diagnostics_.error(locator_.at(problem->offset), "",
+                       fmt::format("malformed XML: {}", problem->message), std::string(allowed));
+    return;
+  }
   const pugi::xml_parse_result parsed =
       document_.load_buffer(text_.data(), text_.size(),
                             pugi::parse_default | pugi::parse_trim_pcdata, pugi::encoding_utf8);
@@ -65,9 +81,16 @@ MaterialXDocument::MaterialXDocument(std::string_view text, const std::string& p
         fmt::format("malformed XML: {}", parsed.description()), "a MaterialX document (XML)");
     return;
   }
+  if (const auto duplicate = find_duplicate_attribute(document_)) {
+    diagnostics_.error(at(duplicate->element), "",
+                       fmt::format("malformed XML: <{}> gives the attribute '{}' twice",
+                                   echoed(duplicate->element.name()), echoed(duplicate->name)),
+                       "each attribute of an element at most once (XML 1.0 section 3.1)");
+    return;
+  }
   root_ = document_.document_element();
   if (std::string_view(root_.name()) != "materialx") {
-    diagnostics_.error(at(root_), "", fmt::format("the root element is <{}>", root_.name()),
+    diagnostics_.error(at(root_), "", fmt::format("the root element is <{}>", echoed(root_.name())),
                        "a MaterialX document, whose root element is <materialx>");
     return;
   }
@@ -100,7 +123,7 @@ void MaterialXDocument::check_version() {
   for (const std::string_view known : {"1.36", "1.37", "1.38", "1.39"})
     if (version == known) return;
   diagnostics_.warning(at(root_), "version",
-                       fmt::format("MaterialX {} is not a version matc knows", version),
+                       fmt::format("MaterialX {} is not a version matc knows", echoed(version)),
                        "1.36 to 1.39; read as 1.39");
 }
 
@@ -124,7 +147,7 @@ std::optional<ColorSpace> MaterialXDocument::linear_space_of(std::string_view na
 
 void MaterialXDocument::unknown_space(const pugi::xml_node& where, const std::string& field,
                                       std::string_view name) {
-  diagnostics_.error(at(where), field, fmt::format("unknown colour space '{}'", name),
+  diagnostics_.error(at(where), field, fmt::format("unknown colour space '{}'", echoed(name)),
                      "one of " + color_space_names() +
                          ", or an encoded srgb_texture, g22_rec709, g18_rec709, g22_ap1, "
                          "g18_ap1, srgb_displayp3");
@@ -151,7 +174,8 @@ std::size_t MaterialXDocument::visit_materials(
             at(input), name + ".surfaceshader",
             shader_name.empty()
                 ? "names no node (nodename is missing)"
-                : fmt::format("names node '{}', which the document does not hold", shader_name),
+                : fmt::format("names node '{}', which the document does not hold",
+                              echoed(shader_name)),
             "the name of a shader node at the top level of the document");
         continue;
       }
@@ -175,7 +199,7 @@ std::size_t MaterialXDocument::visit_materials(
           at(element), "xi:include",
           fmt::format("includes '{}', which matc does not read: materials defined there are not "
                       "imported",
-                      element.attribute("href").value()),
+                      echoed(element.attribute("href").value(), 128)),
           "give that document to matc as an input of its own");
     }
   }
@@ -200,17 +224,17 @@ MaterialXInput MaterialXDocument::read_input(const MaterialXShader& shader, std:
   const std::string_view declared = input.attribute("type").value();
   if (!declared.empty() && declared != materialx_type_name(type)) {
     diagnostics_.error(
-        result.location, field, fmt::format("has type '{}'", declared),
+        result.location, field, fmt::format("has type '{}'", echoed(declared)),
         fmt::format("{} declares {} a {}", shader.model, name, materialx_type_name(type)));
     return result;
   }
   const auto parsed = parse_materialx_value(input.attribute("value").value(), type);
   if (!parsed) {
     diagnostics_.error(result.location, field,
-                       fmt::format("value '{}' is not a {}", input.attribute("value").value(),
+                       fmt::format("value '{}' is not a {}", echoed(input.attribute("value").value()),
                                    materialx_type_name(type)),
                        type == MaterialXType::float1 ? "one finite number"
-                                                     : "three finite numbers separated by commas");
+                                                     : "three finite numbers separated by commas or spaces");
     return result;
   }
   result.value = *parsed;
@@ -265,11 +289,11 @@ bool MaterialXDocument::convert_color(Rgb& value, const pugi::xml_node& input,
 std::string MaterialXDocument::describe_connection(const pugi::xml_node& input) const {
   std::string source;
   if (const char* graph = input.attribute("nodegraph").value(); *graph) {
-    source = fmt::format("node graph '{}'", graph);
+    source = fmt::format("node graph '{}'", echoed(graph));
   } else if (const char* node = input.attribute("nodename").value(); *node) {
-    source = fmt::format("node '{}'", node);
+    source = fmt::format("node '{}'", echoed(node));
   } else {
-    source = fmt::format("interface input '{}'", input.attribute("interfacename").value());
+    source = fmt::format("interface input '{}'", echoed(input.attribute("interfacename").value()));
   }
   return fmt::format("is driven by {}, not a constant", source);
 }

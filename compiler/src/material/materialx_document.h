@@ -88,7 +88,8 @@ class MaterialXDocument {
 // "float" or "color3".
 std::string_view materialx_type_name(MaterialXType type);
 
-// A constant's text as MaterialX writes it: one number (float) or three separated by commas.
+// A constant's text as MaterialX reads it: one number (float) or three, separated by any run of
+// commas and spaces.
 std::optional<Rgb> parse_materialx_value(std::string_view text, MaterialXType type);
 
 }  // namespace matc

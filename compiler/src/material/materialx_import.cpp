@@ -11,8 +11,10 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "matc/base/echoed_text.h"
 #include "materialx_document.h"
 #include "materialx_models.h"
+#include "suggestion.h"
 
 namespace matc {
 namespace {
@@ -72,7 +74,7 @@ class Importer {
   static std::string connection_advice(const MaterialXInput& input,
                                        const MaterialXShadingModel& model,
                                        const MaterialXInputSpec& spec) {
-    const std::string& file = input.image_file;
+    const std::string file = input.image_file.empty() ? "" : echoed(input.image_file, 128);
     if (spec.name == model.coat_roughness.name) {
       return "the coat's roughness is left out of the imported material (its default is used)";
     }
@@ -114,10 +116,11 @@ class Importer {
           shader.model.empty()
               ? "names no shading model; skipped"
               : fmt::format("uses the shading model '{}', which matc does not import; skipped",
-                            shader.model),
+                            echoed(shader.model)),
           materialx_shading_model_names());
       return;
     }
+    if (!check_inputs(shader, *model)) return;
     // A connected Fresnel input is warned about and leaves its value unset: the material is
     // skipped, since matc imports constant metals only.
     bool connected = false;
@@ -263,6 +266,40 @@ class Importer {
                     values[0], values[1], values[2], clamped[0], clamped[1], clamped[2]),
         std::string(range));
     values = clamped;
+  }
+
+  // Each input at most once (of two, one would silently win), and only the inputs the node
+  // definition declares (a misspelt input, or one of the other shading model, would silently do
+  // nothing): a duplicate is an error, an unknown input a warning with the nearest known name.
+  bool check_inputs(const MaterialXShader& shader, const MaterialXShadingModel& model) {
+    std::map<std::string, SourceLocation> seen;
+    bool unique = true;
+    for (const pugi::xml_node& input : shader.node.children(shader.input_tag)) {
+      const std::string name = input.attribute("name").value();
+      const SourceLocation location = document_.at(input);
+      const std::string field = fmt::format("{}.{}", shader.name(), echoed(name));
+      const auto [first, inserted] = seen.emplace(name, location);
+      if (!inserted) {
+        result_.diagnostics.error(location, field,
+                                  fmt::format("is given twice (first at {}:{})",
+                                              first->second.line, first->second.column),
+                                  "each input of a shader node at most once");
+        unique = false;
+        continue;
+      }
+      if (std::ranges::find(model.inputs, name) != model.inputs.end()) continue;
+      std::string message = fmt::format("is not an input of {}; ignored", model.node);
+      for (const MaterialXShadingModel& other : materialx_shading_models()) {
+        if (other.node != model.node && std::ranges::find(other.inputs, name) != other.inputs.end())
+          message = fmt::format("is an input of {}, not of {}; ignored", other.node, model.node);
+      }
+      if (const auto suggestion = closest_match(name, model.inputs))
+        message += fmt::format(" (did you mean '{}'?)", *suggestion);
+      result_.diagnostics.warning(
+          location, field, message,
+          fmt::format("the inputs MaterialX's node definition of {} declares", model.node));
+    }
+    return unique;
   }
 
   void note_not_carried(const MaterialXShader& shader, const MaterialXShadingModel& model,

@@ -51,6 +51,8 @@ struct MaterialXShadingModel {
   std::string_view f0_range;    // why that range
   std::string_view edge_words;  // "edge tint (specular x specular_color)"
   bool bakes_image_maps;        // `matc bake` takes its F0 and edge maps
+  // Every input its node definition declares (an input not among them is reported).
+  std::span<const std::string_view> inputs;
 };
 
 std::span<const MaterialXShadingModel> materialx_shading_models();

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "located_json_reader.h"
+#include "matc/base/echoed_text.h"
 #include "matc/material/located_json.h"
 #include "matc/optics/presets.h"
 #include "suggestion.h"
@@ -163,7 +164,7 @@ class MaterialReader : LocatedJsonReader {
       error(pointer,
             fmt::format("'{}' is an encoded (non-linear) space; material values are linear "
                         "reflectances: decode them, then name the linear space",
-                        name),
+                        echoed(name)),
             allowed);
       return std::nullopt;
     }
@@ -173,8 +174,9 @@ class MaterialReader : LocatedJsonReader {
     const auto suggestion = closest_match(name, names);
     error(pointer,
           suggestion
-              ? fmt::format("unknown colour space '{}' (did you mean '{}'?)", name, *suggestion)
-              : fmt::format("unknown colour space '{}'", name),
+              ? fmt::format("unknown colour space '{}' (did you mean '{}'?)", echoed(name),
+                            *suggestion)
+              : fmt::format("unknown colour space '{}'", echoed(name)),
           allowed);
     return std::nullopt;
   }
@@ -239,8 +241,9 @@ class MaterialReader : LocatedJsonReader {
       const auto suggestion = closest_match(symbol, symbols);
       error(pointer,
             suggestion
-                ? fmt::format("unknown preset '{}' (did you mean '{}'?)", symbol, *suggestion)
-                : fmt::format("unknown preset '{}'", symbol),
+                ? fmt::format("unknown preset '{}' (did you mean '{}'?)", echoed(symbol),
+                              *suggestion)
+                : fmt::format("unknown preset '{}'", echoed(symbol)),
             allowed);
       return std::nullopt;
     }
@@ -269,7 +272,7 @@ class MaterialReader : LocatedJsonReader {
     input.resolved_file = resolved.lexically_normal().generic_string();
     const LoadedFile loaded = loader_(resolved, kMaxSpectrumFileBytes);
     if (!loaded.bytes) {
-      error(pointer, fmt::format("cannot read '{}': {}", input.resolved_file, loaded.error),
+      error(pointer, fmt::format("cannot read '{}': {}", echoed(input.resolved_file, 128), loaded.error),
             allowed);
       return std::nullopt;
     }
@@ -318,7 +321,8 @@ std::optional<std::string> material_name_problem(std::string_view name) {
     if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) {
       return fmt::format("contains a non-ASCII or control byte at position {}", i + 1);
     }
-    return fmt::format("'{}' is not an identifier ('{}' at position {})", name, c, i + 1);
+    return fmt::format("'{}' is not an identifier ('{}' at position {})", echoed(name), c,
+                       i + 1);
   }
   // Generated identifiers are "matc_<kind>_<name>"; GLSL reserves every name containing "__".
   if (name.front() == '_' || name.find("__") != std::string_view::npos) {

@@ -1,20 +1,21 @@
 #include "matc/pipeline/atomic_file.h"
 
-#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
-#include <charconv>
 #include <cstring>
+#include <exception>
 #include <fstream>
+#include <future>
 #include <iterator>
-#include <mutex>
-#include <optional>
-#include <set>
 #include <stdexcept>
+#include <streambuf>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
+
+#include "matc/base/exclusive_file.h"
 
 namespace matc {
 namespace {
@@ -50,85 +51,88 @@ bool same_contents(const std::filesystem::path& a, const std::filesystem::path& 
   return in_a.eof() && in_b.eof();
 }
 
-constexpr std::string_view kTemporaryMark = ".tmp";
-
-std::filesystem::path temporary_beside(const std::filesystem::path& path) {
-  return path.parent_path() /
-         fmt::format(".{}{}{}", path.filename().string(), kTemporaryMark, ::getpid());
-}
-
-// The writer's process id in a name temporary_beside() made, if it is one.
-std::optional<pid_t> temporary_writer(std::string_view name) {
-  const std::size_t mark = name.rfind(kTemporaryMark);
-  if (name.size() < 2 || name.front() != '.' || mark == std::string_view::npos || mark < 2)
-    return std::nullopt;
-  const std::string_view digits = name.substr(mark + kTemporaryMark.size());
-  pid_t pid = 0;
-  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), pid);
-  if (digits.empty() || error != std::errc() || end != digits.data() + digits.size() || pid <= 0)
-    return std::nullopt;
-  return pid;
-}
-
-// A writer killed mid-write (SIGKILL: no chance to clean up) leaves its temporary behind; the
-// first write of this process into a directory removes those whose writer no longer exists (a
-// concurrent matc's, alive, are left alone).
-void sweep_abandoned_temporaries(const std::filesystem::path& parent) {
-  static std::mutex mutex;
-  static std::set<std::string> swept;
-  const std::filesystem::path directory = parent.empty() ? "." : parent;
-  {
-    const std::lock_guard lock(mutex);
-    if (!swept.insert(path_identity(directory)).second) return;
+// Writes what a stream is given to a file descriptor (the temporary's, opened exclusively), so
+// nothing between creating the name and writing it can redirect the bytes elsewhere.
+class DescriptorBuffer : public std::streambuf {
+ public:
+  explicit DescriptorBuffer(int descriptor) : descriptor_(descriptor), buffer_(1 << 16) {
+    setp(buffer_.data(), buffer_.data() + buffer_.size());
   }
-  std::error_code error;
-  std::filesystem::directory_iterator entries(directory, error);
-  for (; !error && entries != std::filesystem::directory_iterator(); entries.increment(error)) {
-    const std::optional<pid_t> writer = temporary_writer(entries->path().filename().string());
-    if (!writer || *writer == ::getpid()) continue;
-    if (::kill(*writer, 0) == 0 || errno != ESRCH) continue;  // alive (or not ours to probe)
-    std::error_code ignored;
-    std::filesystem::remove(entries->path(), ignored);
-  }
-}
+  ~DescriptorBuffer() override { sync(); }
 
-void write_temporary(const std::filesystem::path& temporary,
-                     const std::function<void(std::ostream&)>& produce) {
-  std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-  if (!out) {
-    throw std::runtime_error(
-        fmt::format("cannot create '{}': {}", temporary.string(), std::strerror(errno)));
+ protected:
+  int_type overflow(int_type c) override {
+    if (sync() != 0) return traits_type::eof();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
   }
+  int sync() override {
+    const char* at = pbase();
+    while (at < pptr()) {
+      const ssize_t written = ::write(descriptor_, at, static_cast<std::size_t>(pptr() - at));
+      if (written < 0 && errno == EINTR) continue;
+      if (written <= 0) return -1;
+      at += written;
+    }
+    setp(buffer_.data(), buffer_.data() + buffer_.size());
+    return 0;
+  }
+
+ private:
+  int descriptor_;
+  std::vector<char> buffer_;
+};
+
+// A temporary file beside `path`, writes it with `produce` and returns its name; nothing of it
+// is left on failure. It is created with O_EXCL under a name with an unguessable part, so it is
+// never a file that existed before: not an input, not another writer's temporary.
+std::filesystem::path write_temporary(const std::filesystem::path& path,
+                                      const std::function<void(std::ostream&)>& produce) {
+  ExclusiveFile file = create_exclusive_file(path.parent_path(), path.filename().string());
+  bool written = false;
+  std::string failure;
   try {
+    DescriptorBuffer buffer(file.descriptor);
+    std::ostream out(&buffer);
     produce(out);
-    out.close();
+    out.flush();
+    written = static_cast<bool>(out);
+    if (!written) failure = std::strerror(errno);
   } catch (...) {
-    std::filesystem::remove(temporary);
+    ::close(file.descriptor);
+    discard_exclusive_file(file.path);
     throw;
   }
-  if (!out) {
-    std::filesystem::remove(temporary);
-    throw std::runtime_error(fmt::format("cannot write '{}'", temporary.string()));
+  if (::close(file.descriptor) != 0 && written) {
+    written = false;
+    failure = std::strerror(errno);
   }
+  if (!written) {
+    discard_exclusive_file(file.path);
+    throw std::runtime_error(fmt::format("cannot write '{}': {}", path.string(), failure));
+  }
+  return file.path;
 }
 
 void move_into_place(const std::filesystem::path& temporary, const std::filesystem::path& path) {
   std::error_code error;
   std::filesystem::rename(temporary, path, error);
   if (error) {
-    std::filesystem::remove(temporary);
+    discard_exclusive_file(temporary);
     throw std::runtime_error(
         fmt::format("cannot replace '{}': {}", path.string(), error.message()));
   }
+  forget_exclusive_file(temporary);
 }
 
 }  // namespace
 
 WriteOutcome write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
-  sweep_abandoned_temporaries(path.parent_path());
   if (holds_bytes(path, bytes)) return WriteOutcome::unchanged;
-  const std::filesystem::path temporary = temporary_beside(path);
-  write_temporary(temporary, [&](std::ostream& out) {
+  const std::filesystem::path temporary = write_temporary(path, [&](std::ostream& out) {
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   });
   move_into_place(temporary, path);
@@ -137,15 +141,75 @@ WriteOutcome write_file_atomically(const std::filesystem::path& path, std::strin
 
 WriteOutcome write_file_atomically(const std::filesystem::path& path,
                                    const std::function<void(std::ostream&)>& produce) {
-  sweep_abandoned_temporaries(path.parent_path());
-  const std::filesystem::path temporary = temporary_beside(path);
-  write_temporary(temporary, produce);
+  const std::filesystem::path temporary = write_temporary(path, produce);
   if (same_contents(temporary, path)) {
-    std::filesystem::remove(temporary);
+    discard_exclusive_file(temporary);
     return WriteOutcome::unchanged;
   }
   move_into_place(temporary, path);
   return WriteOutcome::written;
+}
+
+std::vector<WriteOutcome> write_files_atomically(const std::filesystem::path& directory,
+                                                 std::span<const OutputFile> files) {
+  std::vector<WriteOutcome> outcomes(files.size(), WriteOutcome::unchanged);
+  std::vector<std::filesystem::path> temporaries(files.size());
+  const auto discard_all = [&] {
+    for (const std::filesystem::path& temporary : temporaries)
+      if (!temporary.empty()) discard_exclusive_file(temporary);
+  };
+  // Large sets (baked textures, hundreds of MB) are written on a thread per file: copying into
+  // the page cache is most of a write's time. Small ones (a material's shaders) on this thread.
+  std::size_t total_bytes = 0;
+  for (const OutputFile& file : files)
+    total_bytes += file.bytes.size();
+  const bool in_parallel = files.size() > 1 && total_bytes >= (std::size_t{8} << 20);
+  const auto prepare = [&](std::size_t i) {
+    const std::filesystem::path target = directory / files[i].name;
+    if (holds_bytes(target, files[i].bytes)) return;
+    std::error_code error;
+    if (std::filesystem::is_directory(std::filesystem::symlink_status(target, error)))
+      throw std::runtime_error(fmt::format("cannot replace '{}': it is a directory", target.string()));
+    temporaries[i] = write_temporary(target, [&](std::ostream& out) {
+      out.write(files[i].bytes.data(), static_cast<std::streamsize>(files[i].bytes.size()));
+    });
+    outcomes[i] = WriteOutcome::written;
+  };
+  std::exception_ptr failure;
+  if (in_parallel) {
+    std::vector<std::future<void>> writes;
+    for (std::size_t i = 0; i < files.size(); ++i)
+      writes.push_back(std::async(std::launch::async, prepare, i));
+    for (std::future<void>& write : writes) {  // every one waited for before rethrowing
+      try {
+        write.get();
+      } catch (...) {
+        if (!failure) failure = std::current_exception();
+      }
+    }
+  } else {
+    try {
+      for (std::size_t i = 0; i < files.size(); ++i)
+        prepare(i);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+  }
+  if (failure) {
+    discard_all();
+    std::rethrow_exception(failure);
+  }
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (temporaries[i].empty()) continue;
+    try {
+      move_into_place(temporaries[i], directory / files[i].name);
+      temporaries[i].clear();
+    } catch (...) {
+      discard_all();  // what is left: the targets already renamed hold their new bytes
+      throw;
+    }
+  }
+  return outcomes;
 }
 
 std::string path_identity(const std::filesystem::path& path) {

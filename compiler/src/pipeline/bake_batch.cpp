@@ -1,7 +1,6 @@
 #include "matc/pipeline/bake_batch.h"
 
 #include <algorithm>
-#include <future>
 #include <stdexcept>
 
 #include <fmt/core.h>
@@ -124,25 +123,11 @@ BakeBatchResult bake_batch(std::span<const BakeSource> sources, OutputSink& outp
         // Every byte exists before the first file is written: a failure leaves no partial set.
         const std::vector<OutputFile> files =
             baked_texture_files(asset, *inputs, baked, options.files);
-        // The textures run to hundreds of MB: written at once, each atomically (copying into
-        // the page cache is most of a write's time, and it runs on the writing thread).
-        std::vector<std::future<WriteOutcome>> writes;
-        for (const OutputFile& file : files) {
-          writes.push_back(std::async(std::launch::async, [&output, &file] {
-            return output.write(file.name, file.bytes);
-          }));
-        }
-        // Every write is waited for before the first failure is rethrown: none outlives `files`.
-        std::exception_ptr failure;
-        for (std::size_t i = 0; i < files.size(); ++i) {
-          try {
-            counts.count(writes[i].get());
-          } catch (...) {
-            if (!failure) failure = std::current_exception();
-          }
-          targets.push_back(output_label / files[i].name);
-        }
-        if (failure) std::rethrow_exception(failure);
+        // All of the asset's textures or none (write_all writes large sets a file per thread).
+        for (const WriteOutcome written : output.write_all(files))
+          counts.count(written);
+        for (const OutputFile& file : files)
+          targets.push_back(output_label / file.name);
         if (!asset.source_path.empty()) dependencies.push_back(asset.source_path);
         for (const MapInput* map : {&asset.first, &asset.second})
           if (map->is_file()) dependencies.push_back(map->resolved);

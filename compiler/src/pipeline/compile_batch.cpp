@@ -239,10 +239,8 @@ CompileBatchResult compile_batch(const Build& build, std::span<const MaterialSou
                                 "its shaders differ from the CPU runtime on the Vulkan device "
                                 "(lines above); nothing written for it");
         } else {
-          for (const OutputFile& file : outputs.files) {
-            const WriteOutcome written = output.write(file.name, file.bytes);
+          for (const WriteOutcome written : output.write_all(outputs.files))
             ++(written == WriteOutcome::written ? outcome.written : outcome.unchanged);
-          }
           outcome.compiled = true;
           if (writes_manifest) outcome.manifest_entry = ManifestWriter::format_entry(outputs);
           if (!options.depfile.empty()) {

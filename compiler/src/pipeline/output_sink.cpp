@@ -15,6 +15,19 @@ WriteOutcome DirectoryOutput::write(const std::string& name,
   return write_file_atomically(directory_ / name, produce);
 }
 
+// Memory writes cannot fail midway: one at a time is all or none.
+std::vector<WriteOutcome> OutputSink::write_all(std::span<const OutputFile> files) {
+  std::vector<WriteOutcome> outcomes;
+  for (const OutputFile& file : files)
+    outcomes.push_back(write(file.name, file.bytes));
+  return outcomes;
+}
+
+std::vector<WriteOutcome> DirectoryOutput::write_all(std::span<const OutputFile> files) {
+  std::filesystem::create_directories(directory_);
+  return write_files_atomically(directory_, files);
+}
+
 WriteOutcome MemoryOutput::write(const std::string& name, std::string_view bytes) {
   const std::lock_guard lock(mutex_);
   auto [file, inserted] = files_.try_emplace(name);

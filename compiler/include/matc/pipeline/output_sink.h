@@ -8,8 +8,10 @@
 #include <map>
 #include <mutex>
 #include <ostream>
+#include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "matc/pipeline/atomic_file.h"
 
@@ -24,6 +26,9 @@ class OutputSink {
   // The same for a file too large to hold in memory at once: `produce` writes its bytes.
   virtual WriteOutcome write(const std::string& name,
                              const std::function<void(std::ostream&)>& produce) = 0;
+  // All of a material's files, or none of them: a failure leaves none of `files` changed.
+  // Outcomes in the order of `files`.
+  virtual std::vector<WriteOutcome> write_all(std::span<const OutputFile> files);
   // The folder the files land in, when they land on disk: a batch then checks that no output
   // overwrites an input, spools its manifest there and can write a depfile. Null for memory.
   virtual const std::filesystem::path* directory() const { return nullptr; }
@@ -36,6 +41,7 @@ class DirectoryOutput final : public OutputSink {
   WriteOutcome write(const std::string& name, std::string_view bytes) override;
   WriteOutcome write(const std::string& name,
                      const std::function<void(std::ostream&)>& produce) override;
+  std::vector<WriteOutcome> write_all(std::span<const OutputFile> files) override;
   const std::filesystem::path* directory() const override { return &directory_; }
 
  private:

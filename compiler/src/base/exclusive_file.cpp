@@ -1,0 +1,98 @@
+#include "matc/base/exclusive_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <mutex>
+#include <random>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include <fmt/format.h>
+
+namespace matc {
+namespace {
+
+// The temporaries this process created and has not yet renamed or removed; an interrupted run
+// removes these, and only these (remove_temporaries_in_flight).
+class TemporariesInFlight {
+ public:
+  // False once the run is being interrupted: no new temporary may start then.
+  bool add(const std::string& path) {
+    const std::lock_guard lock(mutex_);
+    if (closing_) return false;
+    paths_.insert(path);
+    return true;
+  }
+  void remove(const std::string& path) {
+    const std::lock_guard lock(mutex_);
+    paths_.erase(path);
+  }
+  void remove_all_and_close() {
+    const std::lock_guard lock(mutex_);
+    closing_ = true;
+    for (const std::string& path : paths_)
+      ::unlink(path.c_str());
+    paths_.clear();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::set<std::string> paths_;
+  bool closing_ = false;
+};
+
+TemporariesInFlight& temporaries_in_flight() {
+  static TemporariesInFlight registry;
+  return registry;
+}
+
+// 64 random bits as hex: a name no other writer, and no input, can be expected to hold.
+std::string unguessable_part() {
+  static std::mutex mutex;
+  static std::random_device device;
+  const std::lock_guard lock(mutex);
+  const std::uint64_t bits = (std::uint64_t{device()} << 32) | device();
+  return fmt::format("{:016x}", bits);
+}
+
+}  // namespace
+
+ExclusiveFile create_exclusive_file(const std::filesystem::path& directory,
+                                    std::string_view stem) {
+  const std::filesystem::path parent = directory.empty() ? "." : directory;
+  for (int attempt = 0;; ++attempt) {
+    const std::filesystem::path path =
+        parent / fmt::format(".{}.matc-{}.tmp", stem, unguessable_part());
+    if (!temporaries_in_flight().add(path.string()))
+      throw std::runtime_error("interrupted: no new file is started");
+    const int descriptor =
+        ::open(path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
+    if (descriptor >= 0) return {path, descriptor};
+    const int error = errno;
+    temporaries_in_flight().remove(path.string());
+    if (error != EEXIST || attempt == 16) {
+      throw std::runtime_error(
+          fmt::format("cannot create a file in '{}': {}", parent.string(), std::strerror(error)));
+    }
+  }
+}
+
+void discard_exclusive_file(const std::filesystem::path& path) {
+  ::unlink(path.c_str());
+  forget_exclusive_file(path);
+}
+
+void forget_exclusive_file(const std::filesystem::path& path) {
+  temporaries_in_flight().remove(path.string());
+}
+
+void remove_temporaries_in_flight() {
+  temporaries_in_flight().remove_all_and_close();
+}
+
+}  // namespace matc

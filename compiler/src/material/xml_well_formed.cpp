@@ -1,0 +1,110 @@
+#include "xml_well_formed.h"
+
+#include <charconv>
+#include <set>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "matc/base/echoed_text.h"
+#include "matc/base/utf8.h"
+
+namespace matc {
+namespace {
+
+// XML 1.0, production [2] Char.
+bool is_xml_char(char32_t c) {
+  return c == 0x9 || c == 0xA || c == 0xD || (c >= 0x20 && c <= 0xD7FF) ||
+         (c >= 0xE000 && c <= 0xFFFD) || (c >= 0x10000 && c <= 0x10FFFF);
+}
+
+// Where the markup that `text[at]` opens ends (past its closing delimiter), for the constructs
+// whose text holds no references: comments, CDATA sections, processing instructions. npos when
+// none opens there.
+std::size_t end_of_literal_markup(std::string_view text, std::size_t at) {
+  const std::string_view rest = text.substr(at);
+  for (const auto& [open, close] : {std::pair<std::string_view, std::string_view>{"<!--", "-->"},
+                                    {"<![CDATA[", "]]>"},
+                                    {"<?", "?>"}}) {
+    if (!rest.starts_with(open)) continue;
+    const std::size_t end = text.find(close, at + open.size());
+    return end == std::string_view::npos ? text.size() : end + close.size();
+  }
+  return std::string_view::npos;
+}
+
+// The problem with the character reference at `text[at]` ("&#..."), if any.
+std::optional<XmlProblem> check_character_reference(std::string_view text, std::size_t at) {
+  const std::size_t end = text.find(';', at);
+  if (end == std::string_view::npos || end - at > 12) return std::nullopt;  // pugixml reports it
+  std::string_view digits = text.substr(at + 2, end - at - 2);
+  int base = 10;
+  if (!digits.empty() && digits.front() == 'x') {
+    digits.remove_prefix(1);
+    base = 16;
+  }
+  std::uint32_t value = 0;
+  const auto [last, error] =
+      std::from_chars(digits.data(), digits.data() + digits.size(), value, base);
+  if (digits.empty() || error != std::errc() || last != digits.data() + digits.size())
+    return std::nullopt;  // not a reference pugixml expands; it keeps the text as it is
+  if (is_xml_char(value)) return std::nullopt;
+  return XmlProblem{at, fmt::format("the character reference '{}' names U+{:04X}, which XML 1.0 "
+                                    "does not allow (section 4.1, Legal Character)",
+                                    echoed(text.substr(at, end - at + 1)), value)};
+}
+
+}  // namespace
+
+std::optional<XmlProblem> find_xml_character_problem(std::string_view text) {
+  // Every character, markup and literal sections included, must be an XML Char in UTF-8.
+  for (std::size_t at = 0; at < text.size();) {
+    char32_t c = 0;
+    const std::size_t length = utf8_sequence(text, at, c);
+    if (length == 0) {
+      return XmlProblem{at, fmt::format("byte 0x{:02X} is not UTF-8 (the document's encoding)",
+                                        static_cast<unsigned char>(text[at]))};
+    }
+    if (!is_xml_char(c)) {
+      return XmlProblem{at, c == 0 ? std::string("a NUL byte, which XML 1.0 does not allow")
+                                   : fmt::format("the character U+{:04X}, which XML 1.0 does not "
+                                                 "allow (section 2.2, Characters)",
+                                                 static_cast<std::uint32_t>(c))};
+    }
+    at += length;
+  }
+  // References are expanded everywhere but in comments, CDATA and processing instructions.
+  for (std::size_t at = 0; at < text.size();) {
+    if (text[at] == '<') {
+      if (const std::size_t end = end_of_literal_markup(text, at); end != std::string_view::npos) {
+        at = end;
+        continue;
+      }
+    }
+    if (text.substr(at).starts_with("&#")) {
+      if (auto problem = check_character_reference(text, at)) return problem;
+    }
+    ++at;
+  }
+  return std::nullopt;
+}
+
+std::optional<DuplicateAttribute> find_duplicate_attribute(const pugi::xml_node& root) {
+  std::vector<pugi::xml_node> pending{root};
+  while (!pending.empty()) {
+    const pugi::xml_node node = pending.back();
+    pending.pop_back();
+    std::set<std::string_view> names;
+    for (const pugi::xml_attribute& attribute : node.attributes()) {
+      if (!names.insert(attribute.name()).second) return DuplicateAttribute{node, attribute.name()};
+    }
+    // Children pushed last-first, so elements are visited in document order.
+    std::vector<pugi::xml_node> children;
+    for (const pugi::xml_node& child : node.children())
+      if (child.type() == pugi::node_element) children.push_back(child);
+    pending.insert(pending.end(), children.rbegin(), children.rend());
+  }
+  return std::nullopt;
+}
+
+}  // namespace matc
