@@ -17,7 +17,7 @@ packages=(
   chromium fonts-dejavu-core
   bazel-bootstrap nginx
   googletest libgtest-dev libgmock-dev libbenchmark-dev
-  python3 python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
+  python3 python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib python3-hypothesis
 )
 
 if [ "$(id -u)" -ne 0 ]; then

@@ -7,6 +7,7 @@
 #include "channel_list.h"
 #include "color_options.h"
 #include "commands.h"
+#include "eval_options.h"
 #include "lut_options.h"
 #include "matc/base/json_format.h"
 #include "matc/compile/compile.h"
@@ -27,13 +28,10 @@
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/ltc_following.h"
 #include "matc/runtime/lut.h"
-#include "eval_options.h"
 #include "print_diagnostics.h"
 
 namespace matc::cli {
 namespace {
-
-
 
 // F at each cosine as the shaders compute it, beside the exact curve.
 void add_direct_fresnel(const EvalOptions& options, const ReflectanceCurve& curve,
@@ -73,7 +71,6 @@ SplitSumInputs split_sum_inputs(const EvalOptions& options, const ReflectanceCur
   }
   return inputs;
 }
-
 
 // Fbar exactly as a renderer samples the table it loads and from the table's closed form (as
 // matc_preintegrated_basis_analytic computes it), beside the exact split-sum integral.
@@ -219,7 +216,6 @@ int run_eval_artistic(const EvalOptions& options) {
   fmt::print("{}", format_json(out));
   return kExitSuccess;
 }
-
 
 // The material to evaluate: the file's only one, or the document's material named --material.
 std::optional<Material> chosen_material(const EvalOptions& options) {

@@ -20,6 +20,15 @@ import json as _json
 import math as _math
 import os as _os
 
+try:
+    import numpy as _numpy  # noqa: F401  every array matc takes or returns is numpy's
+except ImportError as _missing:
+    raise ImportError(
+        f"matc needs numpy, which this Python cannot import ({_missing}). On Debian: "
+        "apt-get install python3-numpy; in a virtual environment: pip install numpy, or make "
+        "the environment with --system-site-packages (docs/python.md, 'In a virtual "
+        "environment')") from _missing
+
 from . import _matc
 from ._defaults import default_build as _default_build
 from ._matc import (
@@ -80,6 +89,41 @@ def _check_finite(value, field):
         raise ValueError(f"{field}: is {value}; a finite number (JSON has no NaN or infinity)")
 
 
+def _path(value, argument):
+    """``os.fspath(value)`` as text, refusing what no file path can hold: a NUL character would
+    end the path at the operating system's boundary, so another file would be read or written."""
+    try:
+        path = _os.fspath(value)
+    except TypeError:
+        raise TypeError(
+            f"{argument}: a path (str, bytes or os.PathLike), not {type(value).__name__}") from None
+    if isinstance(path, bytes):
+        path = _os.fsdecode(path)
+    if not path:
+        raise ValueError(f"{argument}: is empty; a file path")
+    nul = path.find("\0")
+    if nul >= 0:
+        raise ValueError(f"{argument}: the path holds a NUL character (at index {nul}), "
+                         "which no file path can")
+    return path
+
+
+def _native_path(value, argument):
+    # As the operating system names it: bytes, so undecodable names (surrogate escapes) pass.
+    return _os.fsencode(_path(value, argument))
+
+
+def _text_bytes(text):
+    # Text for the parser as bytes: what is not UTF-8 (a bytes object's, or a str's surrogate
+    # escapes) reaches it as it is and gets its located "not UTF-8" error there.
+    if isinstance(text, bytes):
+        return text
+    try:
+        return text.encode("utf-8", "surrogateescape")
+    except UnicodeEncodeError:
+        return text.encode("utf-8", "surrogatepass")
+
+
 def _dict_text(material):
     _check_finite(material, "")
     return _json.dumps(material, indent=2, default=_json_value)
@@ -98,11 +142,9 @@ def parse(source, path=None):
     if isinstance(source, Material):
         return source
     if isinstance(source, dict):
-        return _matc._parse_json(_dict_text(source), path or "<dict>")
-    if isinstance(source, bytes):
-        source = source.decode("utf-8")
-    if isinstance(source, str):
-        return _matc._parse_json(source, path or "<string>")
+        return _matc._parse_json(_dict_text(source), _native_path(path or "<dict>", "path"))
+    if isinstance(source, (bytes, str)):
+        return _matc._parse_json(_text_bytes(source), _native_path(path or "<string>", "path"))
     raise TypeError(
         f"parse: a dict or JSON text, not {type(source).__name__} (files: matc.load)")
 
@@ -110,19 +152,18 @@ def parse(source, path=None):
 def parse_materialx(text, path="<string>.mtlx"):
     """The metals of a MaterialX document's text (Standard Surface or OpenPBR), as a list of
     :class:`Material`; ``path`` names it in diagnostics. Raises :class:`MaterialError`."""
-    if isinstance(text, bytes):
-        text = text.decode("utf-8")
-    if not isinstance(text, str):
+    if not isinstance(text, (bytes, str)):
         raise TypeError(f"parse_materialx: text, not {type(text).__name__}")
-    if not str(path).lower().endswith(".mtlx"):
+    path = _path(path, "path")
+    if not path.lower().endswith(".mtlx"):
         path = f"{path}.mtlx"
-    return _matc._parse_input(text, str(path))
+    return _matc._parse_input(_text_bytes(text), _os.fsencode(path))
 
 
 def load(path):
     """The materials a file holds, as a list of :class:`Material`: a material file (``.json``)
     holds one, a MaterialX document (``.mtlx``) any number. Raises :class:`MaterialError`."""
-    return _matc._load(_os.fspath(path))
+    return _matc._load(_native_path(path, "path"))
 
 
 def _one_material(source):
@@ -136,8 +177,8 @@ def _one_material(source):
         materials = load(source)
         if len(materials) != 1:
             names = ", ".join(m.name for m in materials)
-            raise ValueError(f"{_os.fspath(source)} holds {len(materials)} materials ({names}): "
-                             "pick one from matc.load()")
+            raise ValueError(f"{_path(source, 'material')!r} holds {len(materials)} materials "
+                         f"({names}): pick one from matc.load()")
         return materials[0]
     raise TypeError(
         "material: a matc.Material, a dict, JSON text or a file path, not "
@@ -153,14 +194,18 @@ def _build_compile(self, material):
 def _batch_source(source):
     if isinstance(source, tuple) and len(source) == 2:
         path, text = source
-        return (_os.fspath(path), text.decode("utf-8") if isinstance(text, bytes) else text)
+        if not isinstance(text, (bytes, str)):
+            raise TypeError(f"sources: a (path, text) pair's text is {type(text).__name__}, "
+                            "not str or bytes")
+        return (_native_path(path, "sources"), _text_bytes(text))
     if isinstance(source, dict):
-        return (f"{source.get('name', 'material')}.json", _dict_text(source))
+        return (_os.fsencode(f"{source.get('name', 'material')}.json"),
+                _text_bytes(_dict_text(source)))
     if isinstance(source, Material):
         path = source.path if source.path.lower().endswith(".json") else f"{source.name}.json"
-        return (path, source.json)
-    if isinstance(source, (str, _os.PathLike)):
-        return (_os.fspath(source), None)
+        return (_os.fsencode(path), _text_bytes(source.json))
+    if isinstance(source, (str, bytes, _os.PathLike)):
+        return (_native_path(source, "sources"), None)
     raise TypeError(
         "sources: paths, (path, text) pairs, dicts or matc.Material values, not "
         f"{type(source).__name__}")
@@ -186,9 +231,9 @@ def _build_compile_batch(self, sources, output=None, *, jobs=0, keep_going=False
     if extra_dependencies is None:
         extra_dependencies = [_matc.__file__]
     return _matc._compile_batch(
-        self, pairs, None if output is None else _os.fspath(output), jobs, keep_going, no_shared,
-        shared_only, None if depfile is None else _os.fspath(depfile),
-        [_os.fspath(d) for d in extra_dependencies], progress)
+        self, pairs, None if output is None else _native_path(output, "output"), jobs, keep_going,
+        no_shared, shared_only, None if depfile is None else _native_path(depfile, "depfile"),
+        [_native_path(d, "extra_dependencies") for d in extra_dependencies], progress)
 
 
 Build.compile = _build_compile

@@ -1,5 +1,6 @@
 #include "compiled_material.h"
 
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -100,7 +101,8 @@ py::object coat_dict(const CompiledMaterial& compiled) {
   return out;
 }
 
-py::array_t<double> fresnel(const CompiledResult& result, const DoubleArray& mu) {
+py::array_t<double> fresnel(const CompiledResult& result, const py::object& mu_values) {
+  const DoubleArray mu = real_array(mu_values, "mu");
   check_unit_interval("mu", mu);
   const runtime::ShaderBasis& basis = runtime::shipped_shader_basis(result.basis);
   const runtime::Coefficients& coefficients = result.compiled.coefficients;
@@ -115,13 +117,15 @@ py::array_t<double> fresnel(const CompiledResult& result, const DoubleArray& mu)
   });
 }
 
-py::array_t<double> exact(const CompiledResult& result, const DoubleArray& mu) {
+py::array_t<double> exact(const CompiledResult& result, const py::object& mu_values) {
+  const DoubleArray mu = real_array(mu_values, "mu");
   check_unit_interval("mu", mu);
   const ReflectanceCurve& curve = *result.exact;
   return map_values<3>(mu, [&](double cosine) { return curve.at(cosine); });
 }
 
-py::array_t<double> schlick(const CompiledResult& result, const DoubleArray& mu) {
+py::array_t<double> schlick(const CompiledResult& result, const py::object& mu_values) {
+  const DoubleArray mu = real_array(mu_values, "mu");
   check_unit_interval("mu", mu);
   const Rgb f0 = result.compiled.f0;
   return map_values<3>(mu, [&](double cosine) {
@@ -130,8 +134,10 @@ py::array_t<double> schlick(const CompiledResult& result, const DoubleArray& mu)
   });
 }
 
-py::array_t<double> fbar(const CompiledResult& result, const DoubleArray& ndotv,
-                         const DoubleArray& roughness, const PreintegratedTable* table) {
+py::array_t<double> fbar(const CompiledResult& result, const py::object& ndotv_values,
+                         const py::object& roughness_values, const PreintegratedTable* table) {
+  const DoubleArray ndotv = real_array(ndotv_values, "ndotv");
+  const DoubleArray roughness = real_array(roughness_values, "roughness");
   check_unit_interval("ndotv", ndotv);
   check_unit_interval("roughness", roughness);
   if (!table) table = &default_preintegrated_table(result.basis);
@@ -144,17 +150,19 @@ py::array_t<double> fbar(const CompiledResult& result, const DoubleArray& ndotv,
   const runtime::LutView view = table->lut->view();
   const runtime::Coefficients& coefficients = result.compiled.coefficients;
   if (const auto& coat = result.compiled.coat) {
-    return map_pairs<3>(ndotv, roughness, [&](double n, double r) {
+    return map_pairs<3>(broadcast(ndotv, "ndotv", roughness, "roughness"), [&](double n, double r) {
       return runtime::evaluate_coated_fbar(coefficients, coat->coefficients, view, n, r).total();
     });
   }
-  return map_pairs<3>(ndotv, roughness, [&](double n, double r) {
+  return map_pairs<3>(broadcast(ndotv, "ndotv", roughness, "roughness"), [&](double n, double r) {
     return runtime::evaluate_fbar(coefficients, view, n, r);
   });
 }
 
-py::array_t<double> fbar_reference(const CompiledResult& result, const DoubleArray& ndotv,
-                                   const DoubleArray& roughness, std::size_t samples) {
+py::array_t<double> fbar_reference(const CompiledResult& result, const py::object& ndotv_values,
+                                   const py::object& roughness_values, std::size_t samples) {
+  const DoubleArray ndotv = real_array(ndotv_values, "ndotv");
+  const DoubleArray roughness = real_array(roughness_values, "roughness");
   check_unit_interval("ndotv", ndotv);
   check_unit_interval("roughness", roughness);
   checked_count("samples", samples, 16, std::size_t{1} << 26);
@@ -167,7 +175,7 @@ py::array_t<double> fbar_reference(const CompiledResult& result, const DoubleArr
   if (const auto& coat = result.compiled.coat) {
     // The split-sum layering with exact curves, as matc eval's Fbar_reference.
     return map_pairs<3>(
-        ndotv, roughness,
+        broadcast(ndotv, "ndotv", roughness, "roughness"),
         [&](double n, double r) {
           return layered_split_sum(*tabulated, *under_coat, coat->input, n, r);
         },
@@ -175,20 +183,27 @@ py::array_t<double> fbar_reference(const CompiledResult& result, const DoubleArr
   }
   // Each point is a Monte-Carlo integral: worth a thread from two points on.
   return map_pairs<3>(
-      ndotv, roughness,
+      broadcast(ndotv, "ndotv", roughness, "roughness"),
       [&](double n, double r) { return SplitSumEstimator(n, r, samples).integrate(*tabulated); },
       1);
 }
 
-// A (3, 4) array of c_0..c_3 per channel as runtime coefficients.
-runtime::Coefficients coefficients_of(const DoubleArray& values) {
+// A (3, 4) array of c_0..c_3 per channel as runtime coefficients, each finite.
+runtime::Coefficients coefficients_of(const py::object& given) {
+  const DoubleArray values = real_array(given, "coefficients");
   if (values.ndim() != 2 || values.shape(0) != 3 || values.shape(1) != runtime::kBasisSize)
     throw py::value_error("coefficients: an array of shape (3, 4): rows R, G, B; columns c_0..c_3");
   runtime::Coefficients coefficients{};
   const auto view = values.unchecked<2>();
-  for (py::ssize_t c = 0; c < 3; ++c)
-    for (py::ssize_t i = 0; i < static_cast<py::ssize_t>(runtime::kBasisSize); ++i)
+  for (py::ssize_t c = 0; c < 3; ++c) {
+    for (py::ssize_t i = 0; i < static_cast<py::ssize_t>(runtime::kBasisSize); ++i) {
       coefficients[c][i] = view(c, i);
+      if (!std::isfinite(coefficients[c][i])) {
+        throw py::value_error(
+            fmt::format("coefficients: [{}, {}] is {}; a finite number", c, i, coefficients[c][i]));
+      }
+    }
+  }
   return coefficients;
 }
 
@@ -197,8 +212,9 @@ runtime::Coefficients coefficients_of(const DoubleArray& values) {
 void register_compiled_material(py::module_& module) {
   module.def(
       "fresnel_from_coefficients",
-      [](const DoubleArray& coefficients, const DoubleArray& mu, const std::string& basis) {
+      [](const py::object& coefficients, const py::object& mu_values, const std::string& basis) {
         const runtime::Coefficients values = coefficients_of(coefficients);
+        const DoubleArray mu = real_array(mu_values, "mu");
         check_unit_interval("mu", mu);
         const runtime::ShaderBasis& shader_basis =
             runtime::shipped_shader_basis(option_from_name<runtime::BasisKind>("basis", basis));

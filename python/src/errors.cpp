@@ -1,6 +1,7 @@
 #include "errors.h"
 
 #include "bindings.h"
+#include "matc/base/echoed_text.h"
 
 namespace py = pybind11;
 
@@ -47,10 +48,15 @@ void register_errors(py::module_& module) {
                              [](const Diagnostic& d) { return python_text(d.location.path); })
       .def_property_readonly("line", [](const Diagnostic& d) { return d.location.line; })
       .def_property_readonly("column", [](const Diagnostic& d) { return d.location.column; })
-      .def_readonly("field", &Diagnostic::field,
-                    "Dotted field path, such as ior.n[1]; may be empty")
-      .def_readonly("message", &Diagnostic::message, "What is wrong")
-      .def_readonly("allowed", &Diagnostic::allowed, "What would be accepted; may be empty")
+      // As the CLI prints them: input text in them escaped (printable), never raw bytes.
+      .def_property_readonly(
+          "field", [](const Diagnostic& d) { return printable(d.field); },
+          "Dotted field path, such as ior.n[1]; may be empty")
+      .def_property_readonly(
+          "message", [](const Diagnostic& d) { return printable(d.message); }, "What is wrong")
+      .def_property_readonly(
+          "allowed", [](const Diagnostic& d) { return printable(d.allowed); },
+          "What would be accepted; may be empty")
       .def("__str__", [](const Diagnostic& d) { return format_diagnostic(d); })
       .def("__repr__",
            [](const Diagnostic& d) { return "<matc.Diagnostic " + format_diagnostic(d) + ">"; });

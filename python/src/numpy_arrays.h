@@ -22,12 +22,20 @@ namespace matc::python {
 using DoubleArray =
     pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast>;
 
+// `value` (a number, a sequence or an array of real numbers) as a C-ordered float64 array, with
+// errors that name `argument`: TypeError for complex numbers (their imaginary part would be
+// dropped) and values that are not numbers, MemoryError when numpy cannot allocate the copy,
+// ValueError for ragged sequences. Never an empty array in place of a failure.
+DoubleArray real_array(const pybind11::handle& value, std::string_view argument);
+
 // ValueError naming `argument`, the first bad element and the range when a value is outside
 // [0, 1] or NaN.
 void check_unit_interval(std::string_view argument, const DoubleArray& values);
 
-// `a` and `b` broadcast against each other, as numpy would.
-std::pair<DoubleArray, DoubleArray> broadcast(const DoubleArray& a, const DoubleArray& b);
+// `a` and `b` broadcast against each other, as numpy would, each a C-ordered copy: ValueError
+// when the shapes do not broadcast, MemoryError when the copies do not fit, naming both.
+std::pair<DoubleArray, DoubleArray> broadcast(const DoubleArray& a, std::string_view a_name,
+                                              const DoubleArray& b, std::string_view b_name);
 
 std::vector<pybind11::ssize_t> shape_with_axis(const DoubleArray& values, std::size_t width);
 
@@ -95,12 +103,12 @@ pybind11::array_t<double> map_value_chunks(const DoubleArray& values, const Chun
                              });
 }
 
-// out[..., :] = function(a[...], b[...]) over the broadcast pair.
+// out[..., :] = function(a[...], b[...]) over a pair broadcast().
 template <std::size_t Width, typename Function>
-pybind11::array_t<double> map_pairs(const DoubleArray& a, const DoubleArray& b,
+pybind11::array_t<double> map_pairs(const std::pair<DoubleArray, DoubleArray>& pair,
                                     const Function& function,
                                     std::size_t per_thread = kElementsPerThread) {
-  const auto [first, second] = broadcast(a, b);
+  const auto& [first, second] = pair;
   const double* x = first.data();
   const double* y = second.data();
   return filled_array<Width>(first, per_thread,

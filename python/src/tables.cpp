@@ -82,13 +82,16 @@ void register_tables(py::module_& module) {
                                     [](const py::object&) { return kPreintegratedLayout; })
       .def(
           "sample",
-          [](const PreintegratedTable& t, const DoubleArray& ndotv, const DoubleArray& roughness) {
+          [](const PreintegratedTable& t, const py::object& ndotv_values,
+             const py::object& roughness_values) {
+            const DoubleArray ndotv = real_array(ndotv_values, "ndotv");
+            const DoubleArray roughness = real_array(roughness_values, "roughness");
             check_unit_interval("ndotv", ndotv);
             check_unit_interval("roughness", roughness);
             const runtime::LutView view = t.lut->view();
-            return map_pairs<runtime::kBasisSize>(ndotv, roughness, [&](double n, double r) {
-              return runtime::sample_lut(view, n, r);
-            });
+            return map_pairs<runtime::kBasisSize>(
+                broadcast(ndotv, "ndotv", roughness, "roughness"),
+                [&](double n, double r) { return runtime::sample_lut(view, n, r); });
           },
           py::arg("ndotv"), py::arg("roughness"),
           "bbar_0..bbar_3, bilinearly filtered as a GPU sampler reads the table: shape "

@@ -102,7 +102,7 @@ def test_bad_types_raise_type_error(call):
     (lambda: matc.compile(GOLD).fresnel([0.5, 1.5]), r"mu: element 1 is 1.5; a number in \[0, 1\]"),
     (lambda: matc.compile(GOLD).exact(np.nan), "mu: element 0 is nan"),
     (lambda: matc.compile(GOLD).fbar(0.5, -0.1), "roughness: element 0 is -0.1"),
-    (lambda: matc.compile(GOLD).fbar(None, 0.5), "ndotv: element 0 is nan"),
+    (lambda: matc.compile(GOLD).fbar(np.nan, 0.5), "ndotv: element 0 is nan"),
     (lambda: matc.compile(GOLD).fbar_reference(0.5, 0.5, samples=1), "samples: 1 is out of range"),
     (lambda: matc.Build().shader(matc.compile(GOLD), "msl"), "language: 'msl' is not one of"),
     (lambda: matc.preintegrated_table(size=1), "out of range"),

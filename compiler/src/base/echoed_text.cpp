@@ -48,7 +48,8 @@ std::string echoed(std::string_view text, std::size_t max_bytes) {
   if (text.size() <= max_bytes) return printable(text);
   // Cut on a character boundary, so no sequence is split into escaped bytes.
   std::size_t cut = max_bytes;
-  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80)
+    --cut;
   return fmt::format("{}... ({} bytes)", printable(text.substr(0, cut)), text.size());
 }
 

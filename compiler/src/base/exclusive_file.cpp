@@ -62,8 +62,7 @@ std::string unguessable_part() {
 
 }  // namespace
 
-ExclusiveFile create_exclusive_file(const std::filesystem::path& directory,
-                                    std::string_view stem) {
+ExclusiveFile create_exclusive_file(const std::filesystem::path& directory, std::string_view stem) {
   const std::filesystem::path parent = directory.empty() ? "." : directory;
   for (int attempt = 0;; ++attempt) {
     const std::filesystem::path path =

@@ -170,13 +170,12 @@ std::size_t MaterialXDocument::visit_materials(
       const std::string shader_name = input.attribute("nodename").value();
       const auto shader = nodes_.find(shader_name);
       if (shader_name.empty() || shader == nodes_.end()) {
-        diagnostics_.error(
-            at(input), name + ".surfaceshader",
-            shader_name.empty()
-                ? "names no node (nodename is missing)"
-                : fmt::format("names node '{}', which the document does not hold",
-                              echoed(shader_name)),
-            "the name of a shader node at the top level of the document");
+        diagnostics_.error(at(input), name + ".surfaceshader",
+                           shader_name.empty()
+                               ? "names no node (nodename is missing)"
+                               : fmt::format("names node '{}', which the document does not hold",
+                                             echoed(shader_name)),
+                           "the name of a shader node at the top level of the document");
         continue;
       }
       visit({element, shader->second, shader->second.name(), "input"});
@@ -230,11 +229,12 @@ MaterialXInput MaterialXDocument::read_input(const MaterialXShader& shader, std:
   }
   const auto parsed = parse_materialx_value(input.attribute("value").value(), type);
   if (!parsed) {
-    diagnostics_.error(result.location, field,
-                       fmt::format("value '{}' is not a {}", echoed(input.attribute("value").value()),
-                                   materialx_type_name(type)),
-                       type == MaterialXType::float1 ? "one finite number"
-                                                     : "three finite numbers separated by commas or spaces");
+    diagnostics_.error(
+        result.location, field,
+        fmt::format("value '{}' is not a {}", echoed(input.attribute("value").value()),
+                    materialx_type_name(type)),
+        type == MaterialXType::float1 ? "one finite number"
+                                      : "three finite numbers separated by commas or spaces");
     return result;
   }
   result.value = *parsed;

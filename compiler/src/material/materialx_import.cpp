@@ -281,8 +281,8 @@ class Importer {
       const auto [first, inserted] = seen.emplace(name, location);
       if (!inserted) {
         result_.diagnostics.error(location, field,
-                                  fmt::format("is given twice (first at {}:{})",
-                                              first->second.line, first->second.column),
+                                  fmt::format("is given twice (first at {}:{})", first->second.line,
+                                              first->second.column),
                                   "each input of a shader node at most once");
         unique = false;
         continue;

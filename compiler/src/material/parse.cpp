@@ -173,10 +173,9 @@ class MaterialReader : LocatedJsonReader {
       names.push_back(definition.name);
     const auto suggestion = closest_match(name, names);
     error(pointer,
-          suggestion
-              ? fmt::format("unknown colour space '{}' (did you mean '{}'?)", echoed(name),
-                            *suggestion)
-              : fmt::format("unknown colour space '{}'", echoed(name)),
+          suggestion ? fmt::format("unknown colour space '{}' (did you mean '{}'?)", echoed(name),
+                                   *suggestion)
+                     : fmt::format("unknown colour space '{}'", echoed(name)),
           allowed);
     return std::nullopt;
   }
@@ -240,10 +239,9 @@ class MaterialReader : LocatedJsonReader {
     if (!preset) {
       const auto suggestion = closest_match(symbol, symbols);
       error(pointer,
-            suggestion
-                ? fmt::format("unknown preset '{}' (did you mean '{}'?)", echoed(symbol),
-                              *suggestion)
-                : fmt::format("unknown preset '{}'", echoed(symbol)),
+            suggestion ? fmt::format("unknown preset '{}' (did you mean '{}'?)", echoed(symbol),
+                                     *suggestion)
+                       : fmt::format("unknown preset '{}'", echoed(symbol)),
             allowed);
       return std::nullopt;
     }
@@ -272,7 +270,8 @@ class MaterialReader : LocatedJsonReader {
     input.resolved_file = resolved.lexically_normal().generic_string();
     const LoadedFile loaded = loader_(resolved, kMaxSpectrumFileBytes);
     if (!loaded.bytes) {
-      error(pointer, fmt::format("cannot read '{}': {}", echoed(input.resolved_file, 128), loaded.error),
+      error(pointer,
+            fmt::format("cannot read '{}': {}", echoed(input.resolved_file, 128), loaded.error),
             allowed);
       return std::nullopt;
     }
@@ -321,8 +320,7 @@ std::optional<std::string> material_name_problem(std::string_view name) {
     if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) {
       return fmt::format("contains a non-ASCII or control byte at position {}", i + 1);
     }
-    return fmt::format("'{}' is not an identifier ('{}' at position {})", echoed(name), c,
-                       i + 1);
+    return fmt::format("'{}' is not an identifier ('{}' at position {})", echoed(name), c, i + 1);
   }
   // Generated identifiers are "matc_<kind>_<name>"; GLSL reserves every name containing "__".
   if (name.front() == '_' || name.find("__") != std::string_view::npos) {

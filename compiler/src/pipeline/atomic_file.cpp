@@ -169,7 +169,8 @@ std::vector<WriteOutcome> write_files_atomically(const std::filesystem::path& di
     if (holds_bytes(target, files[i].bytes)) return;
     std::error_code error;
     if (std::filesystem::is_directory(std::filesystem::symlink_status(target, error)))
-      throw std::runtime_error(fmt::format("cannot replace '{}': it is a directory", target.string()));
+      throw std::runtime_error(
+          fmt::format("cannot replace '{}': it is a directory", target.string()));
     temporaries[i] = write_temporary(target, [&](std::ostream& out) {
       out.write(files[i].bytes.data(), static_cast<std::streamsize>(files[i].bytes.size()));
     });

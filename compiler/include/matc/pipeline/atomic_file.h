@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <functional>
 #include <ostream>
-#include <string>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
