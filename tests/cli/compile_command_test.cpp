@@ -1,5 +1,12 @@
 // The matc binary end to end, the compile (matc FILES...): outputs, manifests, determinism,
 // depfiles, --emit, names, safety, --basis, --color-space, usage errors.
+#include <signal.h>
+
+#include <chrono>
+#include <thread>
+
+#include <fmt/format.h>
+
 #include "matc_cli.h"
 
 namespace matc::cli_test {
@@ -72,24 +79,86 @@ TEST_F(MatcCli, SameInputsGiveSameBytesAndUnchangedFilesAreNotRewritten) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "a"), fs::directory_iterator()), 17);
 }
 
-// A batch killed mid-write (SIGKILL) leaves its hidden temporaries behind; the next run into the
-// directory removes those of writers that no longer exist, and nothing else.
-TEST_F(MatcCli, RemovesTemporariesOfKilledWriters) {
+// matc removes only files it created: not a temporary of the form its writers once used whose
+// process is gone (it may be a writer in another pid namespace, or an input), not a user's file,
+// not a guess at today's form. A killed run (SIGKILL) leaves its own temporaries.
+TEST_F(MatcCli, LeavesEveryFileItDidNotCreate) {
   write_file(dir_ / "m" / "good.json", kGood);
   const pid_t child = ::fork();
   if (child == 0) ::_exit(0);
   ASSERT_GT(child, 0);
   ASSERT_EQ(::waitpid(child, nullptr, 0), child);  // its process id now names no process
-  const fs::path killed = dir_ / "out" / (".good.glsl.tmp" + std::to_string(child));
-  const fs::path alive = dir_ / "out" / (".good.hlsl.tmp" + std::to_string(::getpid()));
-  const fs::path unrelated = dir_ / "out" / ".notes.tmp";
-  write_file(killed, "half a shader");
-  write_file(alive, "still being written");
-  write_file(unrelated, "not matc's");
+  const std::vector<fs::path> planted = {
+      dir_ / "out" / (".good.glsl.tmp" + std::to_string(child)),
+      dir_ / "out" / ".notes.tmp7",
+      dir_ / "out" / ".good.hlsl.matc-0123456789abcdef.tmp",
+      dir_ / "out" / ".matc_manifest.entries.matc-fedcba9876543210.tmp"};
+  for (const fs::path& path : planted)
+    write_file(path, "not matc's");
   ASSERT_EQ(run({"-q", "-o", "out", "m/good.json"}).exit_code, 0);
-  EXPECT_FALSE(fs::exists(killed));
-  EXPECT_TRUE(fs::exists(alive));
-  EXPECT_TRUE(fs::exists(unrelated));
+  for (const fs::path& path : planted)
+    EXPECT_EQ(read_file(path), "not matc's") << path;
+  // And it left none of its own.
+  std::size_t files = 0;
+  for (const auto& entry : fs::directory_iterator(dir_ / "out"))
+    files += entry.path().filename().string().find(".matc-") == std::string::npos ? 1 : 0;
+  EXPECT_EQ(files, 17u + 2u);  // its 17 and the two planted files of other forms
+}
+
+// Ctrl-C (SIGINT) or SIGTERM mid-run: matc removes the temporaries it had in flight, nothing
+// else, and dies of the signal. Whenever the signal lands, no temporary may remain.
+TEST_F(MatcCli, AnInterruptedRunRemovesItsTemporariesAndNothingElse) {
+  std::vector<std::string> args = {"-q", "-j", "2", "-o", "out"};
+  for (int i = 0; i < 200; ++i) {
+    const std::string name = fmt::format("m{:03}", i);
+    write_file(dir_ / "m" / (name + ".json"),
+               fmt::format(R"({{"name": "{}", "ior": {{"n": {}, "k": 3}}}})", name, 0.2 + i * 0.01));
+    args.push_back("m/" + name + ".json");
+  }
+  write_file(dir_ / "out" / ".notes.tmp7", "not matc's");
+  for (const int signal : {SIGINT, SIGTERM}) {
+    const pid_t child = ::fork();
+    if (child == 0) {
+      ::chdir(dir_.c_str());
+      std::vector<char*> argv = {const_cast<char*>(MATC_BINARY)};
+      for (std::string& arg : args)
+        argv.push_back(arg.data());
+      argv.push_back(nullptr);
+      ::execv(MATC_BINARY, argv.data());
+      ::_exit(127);
+    }
+    ASSERT_GT(child, 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    ::kill(child, signal);
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    EXPECT_TRUE((WIFSIGNALED(status) && WTERMSIG(status) == signal) ||
+                (WIFEXITED(status) && WEXITSTATUS(status) == 0))
+        << status;
+    for (const auto& entry : fs::directory_iterator(dir_ / "out"))
+      EXPECT_EQ(entry.path().filename().string().find(".matc-"), std::string::npos)
+          << entry.path();
+    EXPECT_EQ(read_file(dir_ / "out" / ".notes.tmp7"), "not matc's");
+  }
+}
+
+// With -k a material whose files cannot all be written leaves none of them (all or none), and
+// the other materials are written whole.
+TEST_F(MatcCli, KeepGoingWritesEachMaterialAllOrNone) {
+  write_file(dir_ / "m" / "a.json", R"({"name": "a", "ior": {"n": 0.2, "k": 3}})");
+  write_file(dir_ / "m" / "b.json", R"({"name": "b", "ior": {"n": 0.3, "k": 3}})");
+  fs::create_directories(dir_ / "out" / "b.spv" / "in_the_way");  // b's SPIR-V cannot be written
+  const CommandResult result = run({"-q", "-k", "-o", "out", "m/a.json", "m/b.json"});
+  EXPECT_EQ(result.exit_code, 1) << result.err;
+  EXPECT_NE(result.err.find("b.spv"), std::string::npos) << result.err;
+  for (const char* extension : {".json", ".glsl", ".hlsl", ".wgsl", ".spv", ".h"}) {
+    EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / (std::string("a") + extension))) << extension;
+    if (std::string(extension) != ".spv") {
+      EXPECT_FALSE(fs::exists(dir_ / "out" / (std::string("b") + extension))) << extension;
+    }
+  }
+  for (const auto& entry : fs::directory_iterator(dir_ / "out"))
+    EXPECT_EQ(entry.path().filename().string().find(".matc-"), std::string::npos) << entry.path();
 }
 
 // One action per material (--no-shared) plus one shared action (--shared-only) write the batch's

@@ -21,12 +21,19 @@ namespace {
 // removes these, and only these (remove_temporaries_in_flight).
 class TemporariesInFlight {
  public:
-  // False once the run is being interrupted: no new temporary may start then.
-  bool add(const std::string& path) {
+  // Creates the file with `open` and registers it, both under the lock, so an interruption
+  // sees every file that exists (none is created after it removed them). -1 with errno EINTR
+  // once the run is being interrupted.
+  template <typename Open>
+  int create(const std::string& path, const Open& open) {
     const std::lock_guard lock(mutex_);
-    if (closing_) return false;
-    paths_.insert(path);
-    return true;
+    if (closing_) {
+      errno = EINTR;
+      return -1;
+    }
+    const int descriptor = open();
+    if (descriptor >= 0) paths_.insert(path);
+    return descriptor;
   }
   void remove(const std::string& path) {
     const std::lock_guard lock(mutex_);
@@ -67,13 +74,12 @@ ExclusiveFile create_exclusive_file(const std::filesystem::path& directory, std:
   for (int attempt = 0;; ++attempt) {
     const std::filesystem::path path =
         parent / fmt::format(".{}.matc-{}.tmp", stem, unguessable_part());
-    if (!temporaries_in_flight().add(path.string()))
-      throw std::runtime_error("interrupted: no new file is started");
-    const int descriptor =
-        ::open(path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
+    const int descriptor = temporaries_in_flight().create(path.string(), [&] {
+      return ::open(path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
+    });
     if (descriptor >= 0) return {path, descriptor};
     const int error = errno;
-    temporaries_in_flight().remove(path.string());
+    if (error == EINTR) throw std::runtime_error("interrupted: no new file is started");
     if (error != EEXIST || attempt == 16) {
       throw std::runtime_error(
           fmt::format("cannot create a file in '{}': {}", parent.string(), std::strerror(error)));

@@ -78,7 +78,7 @@ MaterialXDocument::MaterialXDocument(std::string_view text, const std::string& p
   if (!parsed) {
     diagnostics_.error(
         locator_.at(static_cast<std::size_t>(std::max<std::ptrdiff_t>(parsed.offset, 0))), "",
-        fmt::format("malformed XML: {}", parsed.description()), "a MaterialX document (XML)");
+        fmt::format("malformed XML: {}", parsed.description()), std::string(allowed));
     return;
   }
   if (const auto duplicate = find_duplicate_attribute(document_)) {

@@ -248,14 +248,42 @@ TEST(MaterialXImport, BadDocumentsAreLocated) {
   }
 }
 
-TEST(MaterialXImport, InvalidUtf8InANameIsReplacedNotFatal) {
-  // Found by matc_materialx_fuzzer: the element name reaches the description verbatim.
+// Found by matc_materialx_fuzzer as a crash (the element name reached the description verbatim);
+// bytes that are not UTF-8 now make the document not well-formed, as every XML parser holds.
+TEST(MaterialXImport, InvalidUtf8IsALocatedErrorNotACrash) {
   const auto imported = import_materialx(
       document(surface("standard_surface", input("metalness", "float", "1"), "go\xffld")),
       "u.mtlx");
-  ASSERT_EQ(imported.materials.size(), 1u) << all_diagnostics(imported);
-  EXPECT_EQ(imported.materials[0].material.name, "go_ld");
-  EXPECT_NE(imported.materials[0].json.find("go\xef\xbf\xbdld"), std::string::npos);
+  EXPECT_TRUE(imported.materials.empty());
+  ASSERT_TRUE(imported.diagnostics.has_errors());
+  const Diagnostic& error = imported.diagnostics.items().front();
+  EXPECT_EQ(error.location.line, 3u);  // the shader node "SR_go\xffld", the first use of the name
+  EXPECT_NE(error.message.find("byte 0xFF is not UTF-8"), std::string::npos) << error.message;
+}
+
+// MaterialX reads a vector value split on any run of commas and spaces (Value.cpp, stringToData
+// with ARRAY_VALID_SEPARATORS ", "): every spelling of one colour imports the same material.
+TEST(MaterialXImport, ColorsReadAsMaterialXReadsThem) {
+  const auto import_with = [](const std::string& color) {
+    return import_materialx(document(surface("standard_surface",
+                                             input("metalness", "float", "1") +
+                                                 input("base_color", "color3", color))),
+                            "c.mtlx");
+  };
+  const auto reference = import_with("0.96, 0.37, 0.25");
+  ASSERT_EQ(reference.materials.size(), 1u) << all_diagnostics(reference);
+  for (const char* spelling : {"0.96 0.37 0.25", "0.96,0.37,0.25", " 0.96 ,0.37,,  0.25 ",
+                               "0.96, 0.37 0.25", ",0.96, 0.37, 0.25,", "+0.96 0.37 0.25"}) {
+    const auto imported = import_with(spelling);
+    ASSERT_EQ(imported.materials.size(), 1u) << spelling << ": " << all_diagnostics(imported);
+    EXPECT_EQ(imported.materials[0].json, reference.materials[0].json) << spelling;
+  }
+  // What MaterialX's stream read would cut short, or count wrongly, is refused.
+  for (const char* refused : {"0.96x 0.37 0.25", "0.96 0.37", "0.96 0.37 0.25 0.1", "0.96;0.37;0.25",
+                              "nan 0.37 0.25", ""}) {
+    const auto imported = import_with(refused);
+    EXPECT_TRUE(imported.diagnostics.has_errors()) << refused;
+  }
 }
 
 TEST(MaterialXImport, NamesFollowMatcsRule) {
