@@ -58,7 +58,8 @@ export LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp:print_suppressions=
 export UBSAN_OPTIONS="print_stacktrace=1"
 vulkan_tests="Vulkan|DeviceValidation|validate_on_device|Validat|comparison_render|textured_render|baked_render|area_light_render|fullscreen_cost|gpu_cost"
 # The package test installs instrumented static libraries, which a plain consumer cannot link.
-# The per-material Ninja test checks build edges, not memory, and output_hashes checks bytes
+# The per-material Ninja test checks build edges, not memory, the two-writer test files between
+# processes, and output_hashes checks bytes
 # the plain build's run already compares (the same code paths run in MatcCli under sanitizers):
 # once, unsanitised, is their budget. So is it for the browser and Dawn checks (pages in
 # Chromium, WGSL on Dawn, three.js and Babylon.js against the CPU runtime): their time goes to the
@@ -73,6 +74,6 @@ browser_tests="_in_browser|_against_reference|_on_dawn"
 # remote cache, which, like the Ninja test, checks build edges.
 once_only="_docs_current|_readme_current|clang_format|layers_|bazel_remote_cache"
 ctest --test-dir build-fuzz --output-on-failure --parallel "$(nproc)" \
-  -E "cmake_package_engine_example|per_material_ninja_edges|output_hashes|$once_only|$browser_tests|$vulkan_tests"
+  -E "cmake_package_engine_example|per_material_ninja_edges|output_hashes|two_writers_one_folder|$once_only|$browser_tests|$vulkan_tests"
 ASAN_OPTIONS=detect_leaks=0 ctest --test-dir build-fuzz --output-on-failure \
   --parallel "$(nproc)" -R "$vulkan_tests" -E "$once_only"

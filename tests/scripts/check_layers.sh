@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Includes point down the layers (docs/architecture.md): a module may include itself and the
 # modules of lower layers, never a module of its own layer or above. Reads every quoted #include
-# of compiler/ and runtime/ and names each one that points up or sideways.
+# of compiler/ and runtime/ (listed from the file system: a release tarball has no git) and names
+# each one that points up or sideways.
 #   check_layers.sh REPO_ROOT
 set -euo pipefail
 root=${1:?usage: check_layers.sh REPO_ROOT}
@@ -49,6 +50,7 @@ layer_of() {
 
 problems=0
 checked=0
+files=0
 while IFS= read -r file; do
   from=$(module_of_file "$file")
   from_layer=$(layer_of "$from")
@@ -70,10 +72,18 @@ while IFS= read -r file; do
       problems=$((problems + 1))
     fi
   done < <(grep -n '^#include "' "$file" | sed 's/^\([0-9]*\):#include "\([^"]*\)".*/\1:\2/')
-done < <(git ls-files compiler runtime | grep -E '\.(h|cpp|in)$')
+  files=$((files + 1))
+done < <(for tree in compiler runtime; do
+  [ ! -d "$tree" ] || find "$tree" -type f \( -name '*.h' -o -name '*.cpp' -o -name '*.in' \)
+done | LC_ALL=C sort)
 
+# A check that read nothing has checked nothing: fail, do not pass.
+if [ "$files" -eq 0 ] || [ "$checked" -eq 0 ]; then
+  echo "check_layers: read $files files and $checked includes under $root: nothing to check"
+  exit 1
+fi
 if [ "$problems" -gt 0 ]; then
   echo "check_layers: $problems include(s) point up or sideways"
   exit 1
 fi
-echo "check_layers: $checked includes point down the layers"
+echo "check_layers: $checked includes of $files files point down the layers"
