@@ -18,7 +18,7 @@ cmake --build build-fuzz
 corpus=$(mktemp -d)
 trap 'rm -rf "$corpus"' EXIT
 build-fuzz/tests/fuzz/matc_material_fuzzer -max_total_time="$fuzz_seconds" -max_len=4096 \
-  -print_final_stats=1 "$corpus" tests/fuzz/corpus 2>&1 | tail -n 20
+  -dict=tests/fuzz/material.dict -print_final_stats=1 "$corpus" tests/fuzz/corpus 2>&1 | tail -n 20
 # The textured-metal inputs (option parser, coefficient-table path): a quarter of that time.
 table_corpus=$(mktemp -d)
 trap 'rm -rf "$corpus" "$table_corpus"' EXIT
@@ -34,7 +34,7 @@ build-fuzz/tests/fuzz/matc_polygon_light_fuzzer -max_total_time=10 -max_len=256 
 mtlx_corpus=$(mktemp -d)
 trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus"' EXIT
 build-fuzz/tests/fuzz/matc_materialx_fuzzer -max_total_time=15 -max_len=4096 \
-  -print_final_stats=1 "$mtlx_corpus" tests/fuzz/corpus_materialx 2>&1 | tail -n 8
+  -dict=tests/fuzz/materialx.dict -print_final_stats=1 "$mtlx_corpus" tests/fuzz/corpus_materialx 2>&1 | tail -n 8
 # matc bake's image readers and asset parser: seeds written by matc_catalogue_images (no image is
 # stored in the repository), each once per mode (first byte: sRGB, linear, asset text); 15 s.
 image_corpus=$(mktemp -d)

@@ -29,7 +29,18 @@ except ImportError as _missing:
         "the environment with --system-site-packages (docs/python.md, 'In a virtual "
         "environment')") from _missing
 
-from . import _matc
+try:
+    from . import _matc
+except ImportError as _unloadable:
+    import pathlib as _pathlib
+    import sys as _sys
+    _built = sorted(p.name for p in _pathlib.Path(__file__).parent.glob("_matc.*"))
+    raise ImportError(
+        f"matc's compiled module ({', '.join(_built) or 'none found'}) does not load in this "
+        f"Python {_sys.version_info.major}.{_sys.version_info.minor} ({_sys.executable}): "
+        f"{_unloadable}. Run the interpreter it was built for (Debian's /usr/bin/python3 by "
+        f"default), or build it for this one: cmake -DPython3_EXECUTABLE={_sys.executable} "
+        "(docs/python.md)") from _unloadable
 from ._defaults import default_build as _default_build
 from ._matc import (
     BatchResult,

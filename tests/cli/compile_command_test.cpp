@@ -89,8 +89,7 @@ TEST_F(MatcCli, LeavesEveryFileItDidNotCreate) {
   ASSERT_GT(child, 0);
   ASSERT_EQ(::waitpid(child, nullptr, 0), child);  // its process id now names no process
   const std::vector<fs::path> planted = {
-      dir_ / "out" / (".good.glsl.tmp" + std::to_string(child)),
-      dir_ / "out" / ".notes.tmp7",
+      dir_ / "out" / (".good.glsl.tmp" + std::to_string(child)), dir_ / "out" / ".notes.tmp7",
       dir_ / "out" / ".good.hlsl.matc-0123456789abcdef.tmp",
       dir_ / "out" / ".matc_manifest.entries.matc-fedcba9876543210.tmp"};
   for (const fs::path& path : planted)
@@ -111,8 +110,9 @@ TEST_F(MatcCli, AnInterruptedRunRemovesItsTemporariesAndNothingElse) {
   std::vector<std::string> args = {"-q", "-j", "2", "-o", "out"};
   for (int i = 0; i < 200; ++i) {
     const std::string name = fmt::format("m{:03}", i);
-    write_file(dir_ / "m" / (name + ".json"),
-               fmt::format(R"({{"name": "{}", "ior": {{"n": {}, "k": 3}}}})", name, 0.2 + i * 0.01));
+    write_file(
+        dir_ / "m" / (name + ".json"),
+        fmt::format(R"({{"name": "{}", "ior": {{"n": {}, "k": 3}}}})", name, 0.2 + i * 0.01));
     args.push_back("m/" + name + ".json");
   }
   write_file(dir_ / "out" / ".notes.tmp7", "not matc's");
@@ -136,8 +136,7 @@ TEST_F(MatcCli, AnInterruptedRunRemovesItsTemporariesAndNothingElse) {
                 (WIFEXITED(status) && WEXITSTATUS(status) == 0))
         << status;
     for (const auto& entry : fs::directory_iterator(dir_ / "out"))
-      EXPECT_EQ(entry.path().filename().string().find(".matc-"), std::string::npos)
-          << entry.path();
+      EXPECT_EQ(entry.path().filename().string().find(".matc-"), std::string::npos) << entry.path();
     EXPECT_EQ(read_file(dir_ / "out" / ".notes.tmp7"), "not matc's");
   }
 }

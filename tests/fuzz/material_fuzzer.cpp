@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "diagnostic_properties.h"
 #include "matc/compile/compile.h"
 #include "matc/emit/build.h"
 #include "matc/material/parse.h"
@@ -33,11 +34,14 @@ const matc::Build& small_build() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   matc::ParseResult parsed = matc::parse_material(text, "fuzz/material.json", serve_from_memory);
+  matc::fuzz::require_printable_diagnostics(parsed.diagnostics);
+  matc::fuzz::require_refused_if_nul(text, parsed.material.has_value());
   if (!parsed.material) return 0;
   const matc::CompiledMaterial compiled =
       matc::compile_material(*parsed.material, matc::runtime::shipped_basis());
   matc::Diagnostics warnings;
   matc::warn_if_poor_fit(compiled, warnings);
+  matc::fuzz::require_printable_diagnostics(warnings);
   const matc::MaterialOutputs outputs = small_build().material_outputs(compiled);
   if (outputs.files.empty()) __builtin_trap();  // a valid material always has outputs
   return 0;

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string_view>
 
+#include "diagnostic_properties.h"
 #include "matc/compile/compile.h"
 #include "matc/material/materialx_import.h"
 
@@ -13,6 +14,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   const matc::MaterialXImport imported = matc::import_materialx(text, "fuzz.mtlx");
   if (imported.materials.empty() != imported.diagnostics.has_errors()) __builtin_trap();
+  matc::fuzz::require_printable_diagnostics(imported.diagnostics);
+  matc::fuzz::require_refused_if_nul(text, !imported.materials.empty());
   for (const matc::ImportedMaterial& material : imported.materials) {
     const matc::ParseResult reparsed = matc::parse_material(material.json, "fuzz.mtlx");
     if (!reparsed.material || reparsed.diagnostics.has_errors()) __builtin_trap();

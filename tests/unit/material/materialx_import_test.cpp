@@ -265,10 +265,10 @@ TEST(MaterialXImport, InvalidUtf8IsALocatedErrorNotACrash) {
 // with ARRAY_VALID_SEPARATORS ", "): every spelling of one colour imports the same material.
 TEST(MaterialXImport, ColorsReadAsMaterialXReadsThem) {
   const auto import_with = [](const std::string& color) {
-    return import_materialx(document(surface("standard_surface",
-                                             input("metalness", "float", "1") +
-                                                 input("base_color", "color3", color))),
-                            "c.mtlx");
+    return import_materialx(
+        document(surface("standard_surface",
+                         input("metalness", "float", "1") + input("base_color", "color3", color))),
+        "c.mtlx");
   };
   const auto reference = import_with("0.96, 0.37, 0.25");
   ASSERT_EQ(reference.materials.size(), 1u) << all_diagnostics(reference);
@@ -279,8 +279,8 @@ TEST(MaterialXImport, ColorsReadAsMaterialXReadsThem) {
     EXPECT_EQ(imported.materials[0].json, reference.materials[0].json) << spelling;
   }
   // What MaterialX's stream read would cut short, or count wrongly, is refused.
-  for (const char* refused : {"0.96x 0.37 0.25", "0.96 0.37", "0.96 0.37 0.25 0.1", "0.96;0.37;0.25",
-                              "nan 0.37 0.25", ""}) {
+  for (const char* refused : {"0.96x 0.37 0.25", "0.96 0.37", "0.96 0.37 0.25 0.1",
+                              "0.96;0.37;0.25", "nan 0.37 0.25", ""}) {
     const auto imported = import_with(refused);
     EXPECT_TRUE(imported.diagnostics.has_errors()) << refused;
   }
