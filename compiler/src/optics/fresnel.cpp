@@ -28,7 +28,10 @@ double fresnel_conductor(double mu, ComplexIor ior) {
   // eta^2 - sin^2 = (a + i b)^2 (the transmitted wave's complex cosine times eta).
   const double t0 = n2 - k2 - sin2;
   const double a2_plus_b2 = std::sqrt(t0 * t0 + 4.0 * n2 * k2);
-  const double a = std::sqrt(std::max(0.0, 0.5 * (a2_plus_b2 + t0)));
+  // a^2 = (|eta^2 - sin^2| + t0) / 2; where t0 < 0 that sum cancels (a weakly absorbing index
+  // below 1 past its critical angle), so use its equal 2 n^2 k^2 / (|...| - t0) there.
+  const double a2 = t0 >= 0.0 ? 0.5 * (a2_plus_b2 + t0) : 2.0 * n2 * k2 / (a2_plus_b2 - t0);
+  const double a = std::sqrt(std::max(0.0, a2));
   const double t1 = a2_plus_b2 + cos2, t2 = 2.0 * cos_i * a;
   const double r_perpendicular = (t1 - t2) / (t1 + t2);
   const double t3 = cos2 * a2_plus_b2 + sin2 * sin2, t4 = t2 * sin2;
@@ -47,10 +50,18 @@ double fresnel_schlick(double mu, double f0) {
   return f0 + (1.0 - f0) * m2 * m2 * m;
 }
 
+namespace {
+
+double f82_lobe(double x) {
+  return x * std::pow(1.0 - x, 6.0);
+}
+
+}  // namespace
+
 double fresnel_f82_tint(double mu, double f0, double f_at_mu_bar) {
-  const auto lobe = [](double x) { return x * std::pow(1.0 - x, 6.0); };
-  const double a = (fresnel_schlick(kF82MuBar, f0) - f_at_mu_bar) / lobe(kF82MuBar);
-  return fresnel_schlick(mu, f0) - a * lobe(std::clamp(mu, 0.0, 1.0));
+  static const double lobe_at_mu_bar = f82_lobe(kF82MuBar);  // the same value, computed once
+  const double a = (fresnel_schlick(kF82MuBar, f0) - f_at_mu_bar) / lobe_at_mu_bar;
+  return fresnel_schlick(mu, f0) - a * f82_lobe(std::clamp(mu, 0.0, 1.0));
 }
 
 }  // namespace matc

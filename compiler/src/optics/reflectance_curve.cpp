@@ -2,8 +2,12 @@
 
 namespace matc {
 
+// The real-arithmetic form: within 3e-12 of fresnel_exact's complex one (checked by
+// FresnelConductor.ConductorFormMatchesTheComplexForm), and without complex division and square
+// roots, which were a sixth of a batch's CPU time.
 Rgb IorCurve::at(double mu) const {
-  return {fresnel_exact(mu, ior_[0]), fresnel_exact(mu, ior_[1]), fresnel_exact(mu, ior_[2])};
+  return {fresnel_conductor(mu, ior_[0]), fresnel_conductor(mu, ior_[1]),
+          fresnel_conductor(mu, ior_[2])};
 }
 
 Rgb F82TintCurve::at(double mu) const {

@@ -61,6 +61,21 @@ TEST(FresnelExact, MatchesIndependentConductorFormula) {
   }
 }
 
+// IorCurve evaluates the real-arithmetic form: it must agree with the complex one for every
+// index a material or a coat can make, dielectrics (k = 0) and n < 1 beyond the critical angle
+// included.
+TEST(FresnelConductor, ConductorFormMatchesTheComplexForm) {
+  for (const double n : {0.01, 0.05, 0.3, 0.7, 1.0, 1.5, 4.0, 30.0}) {
+    for (const double k : {0.0, 1e-9, 0.01, 0.5, 2.0, 8.0, 80.0}) {
+      for (int j = 0; j <= 1000; ++j) {
+        const double mu = j / 1000.0;
+        EXPECT_NEAR(fresnel_conductor(mu, {n, k}), fresnel_exact(mu, {n, k}), 3e-12)
+            << "n=" << n << " k=" << k << " mu=" << mu;
+      }
+    }
+  }
+}
+
 TEST(FresnelExact, GrazingIncidenceReflectsEverything) {
   for (const ComplexIor ior : {ComplexIor{1.5, 0.0}, ComplexIor{0.7, 0.0}, ComplexIor{0.2, 3.0}}) {
     EXPECT_EQ(fresnel_exact(0.0, ior), 1.0);
