@@ -1,5 +1,6 @@
 #include "matc/pipeline/atomic_file.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -20,10 +21,24 @@
 namespace matc {
 namespace {
 
-bool holds_bytes(const std::filesystem::path& path, std::string_view bytes) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) return false;
-  if (std::filesystem::file_size(path, error) != bytes.size() || error) return false;
+// What is at an output's path, from one lstat (a batch makes thousands of these): nothing, a
+// regular file and its size, a directory, or something else (a symlink is replaced, never read
+// or written through).
+struct Target {
+  enum class Kind { absent, regular, directory, other } kind = Kind::absent;
+  std::uintmax_t size = 0;
+};
+
+Target inspect(const std::filesystem::path& path) {
+  struct stat status {};
+  if (::lstat(path.c_str(), &status) != 0) return {};
+  if (S_ISREG(status.st_mode))
+    return {Target::Kind::regular, static_cast<std::uintmax_t>(status.st_size)};
+  return {S_ISDIR(status.st_mode) ? Target::Kind::directory : Target::Kind::other, 0};
+}
+
+bool holds_bytes(const Target& target, const std::filesystem::path& path, std::string_view bytes) {
+  if (target.kind != Target::Kind::regular || target.size != bytes.size()) return false;
   std::ifstream in(path, std::ios::binary);
   const std::string existing((std::istreambuf_iterator<char>(in)),
                              std::istreambuf_iterator<char>());
@@ -131,7 +146,7 @@ void move_into_place(const std::filesystem::path& temporary, const std::filesyst
 }  // namespace
 
 WriteOutcome write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
-  if (holds_bytes(path, bytes)) return WriteOutcome::unchanged;
+  if (holds_bytes(inspect(path), path, bytes)) return WriteOutcome::unchanged;
   const std::filesystem::path temporary = write_temporary(path, [&](std::ostream& out) {
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   });
@@ -166,9 +181,9 @@ std::vector<WriteOutcome> write_files_atomically(const std::filesystem::path& di
   const bool in_parallel = files.size() > 1 && total_bytes >= (std::size_t{8} << 20);
   const auto prepare = [&](std::size_t i) {
     const std::filesystem::path target = directory / files[i].name;
-    if (holds_bytes(target, files[i].bytes)) return;
-    std::error_code error;
-    if (std::filesystem::is_directory(std::filesystem::symlink_status(target, error)))
+    const Target existing = inspect(target);
+    if (holds_bytes(existing, target, files[i].bytes)) return;
+    if (existing.kind == Target::Kind::directory)
       throw std::runtime_error(
           fmt::format("cannot replace '{}': it is a directory", target.string()));
     temporaries[i] = write_temporary(target, [&](std::ostream& out) {

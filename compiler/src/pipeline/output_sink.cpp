@@ -4,14 +4,19 @@
 
 namespace matc {
 
+// Created on the first write, once: a batch writes thousands of files into it.
+void DirectoryOutput::create_directory_once() {
+  std::call_once(created_, [this] { std::filesystem::create_directories(directory_); });
+}
+
 WriteOutcome DirectoryOutput::write(const std::string& name, std::string_view bytes) {
-  std::filesystem::create_directories(directory_);
+  create_directory_once();
   return write_file_atomically(directory_ / name, bytes);
 }
 
 WriteOutcome DirectoryOutput::write(const std::string& name,
                                     const std::function<void(std::ostream&)>& produce) {
-  std::filesystem::create_directories(directory_);
+  create_directory_once();
   return write_file_atomically(directory_ / name, produce);
 }
 
@@ -24,7 +29,7 @@ std::vector<WriteOutcome> OutputSink::write_all(std::span<const OutputFile> file
 }
 
 std::vector<WriteOutcome> DirectoryOutput::write_all(std::span<const OutputFile> files) {
-  std::filesystem::create_directories(directory_);
+  create_directory_once();
   return write_files_atomically(directory_, files);
 }
 

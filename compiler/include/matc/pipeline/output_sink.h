@@ -45,7 +45,10 @@ class DirectoryOutput final : public OutputSink {
   const std::filesystem::path* directory() const override { return &directory_; }
 
  private:
+  void create_directory_once();
+
   std::filesystem::path directory_;
+  std::once_flag created_;
 };
 
 // Files kept in memory, by name; a file written again with the same bytes is "unchanged".
