@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "generated_source.h"
 #include "lut_options.h"
+#include "matc/base/echoed_text.h"
 #include "matc/basis/basis_fit.h"
 #include "matc/basis/basis_polynomial_fit.h"
 #include "matc/emit/material_module_template.h"
@@ -165,7 +166,7 @@ int run_basis_ltc_table(const LtcTableOptions& options) {
     try {
       write_file_atomically(options.quality, csv);
     } catch (const std::exception& error) {
-      fmt::print(stderr, "{}: error: {}\n", options.quality, error.what());
+      fmt::print(stderr, "{}: error: {}\n", printable(options.quality), printable(error.what()));
       return kExitInputError;
     }
   }

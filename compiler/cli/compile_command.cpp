@@ -14,6 +14,7 @@
 #include "emit_option.h"
 #include "file_list.h"
 #include "lut_options.h"
+#include "matc/base/echoed_text.h"
 #include "matc/emit/build.h"
 #include "matc/pipeline/compile_batch.h"
 #include "named_option.h"
@@ -102,7 +103,8 @@ int run_compile_command(CompileOptions options) {
   if (!options.files_from.empty()) {
     const std::optional<std::vector<std::string>> listed = read_file_list(options.files_from);
     if (!listed) {
-      fmt::print(stderr, "{}: error: --files-from: cannot read the list\n", options.files_from);
+      fmt::print(stderr, "{}: error: --files-from: cannot read the list\n",
+                 printable(options.files_from));
       return kExitUsageError;
     }
     options.files.insert(options.files.end(), listed->begin(), listed->end());

@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "eval_options.h"
 #include "lut_options.h"
+#include "matc/base/echoed_text.h"
 #include "matc/base/json_format.h"
 #include "matc/compile/compile.h"
 #include "matc/fit/coefficient_table.h"
@@ -231,10 +232,10 @@ std::optional<Material> chosen_material(const EvalOptions& options) {
   }
   if (options.material.empty()) {
     fmt::print(stderr, "matc eval: error: {} holds {} materials ({}): name one with --material\n",
-               options.file, input.materials.size(), names);
+               printable(options.file), input.materials.size(), names);
   } else {
     fmt::print(stderr, "matc eval: error: --material: {} holds no material '{}' (it holds {})\n",
-               options.file, options.material, names);
+               printable(options.file), echoed(options.material), names);
   }
   return std::nullopt;
 }

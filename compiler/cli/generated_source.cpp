@@ -6,6 +6,7 @@
 #include <fmt/core.h>
 
 #include "commands.h"
+#include "matc/base/echoed_text.h"
 #include "matc/pipeline/atomic_file.h"
 
 namespace matc::cli {
@@ -18,9 +19,9 @@ int write_generated_source(const std::string& output, const std::string& source)
   try {
     const WriteOutcome outcome = write_file_atomically(output, source);
     fmt::print(stderr, "matc: {} {}\n", outcome == WriteOutcome::written ? "wrote" : "unchanged",
-               output);
+               printable(output));
   } catch (const std::exception& error) {
-    fmt::print(stderr, "{}: error: {}\n", output, error.what());
+    fmt::print(stderr, "{}: error: {}\n", printable(output), printable(error.what()));
     return kExitInputError;
   }
   return kExitSuccess;

@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "empty_values.h"
 #include "interrupt_cleanup.h"
+#include "matc/base/echoed_text.h"
 #include "matc/version.h"
 #include "print_diagnostics.h"
 
@@ -60,7 +61,8 @@ int main(int argc, char** argv) {
     fmt::print("matc {}\n", matc::kVersion);
     return kExitSuccess;
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    // CLI11's message may quote an argument: escaped, as every echoed input is.
+    fmt::print(stderr, "{}\nRun with --help for more information.\n", matc::printable(e.what()));
     return kExitUsageError;
   }
 
