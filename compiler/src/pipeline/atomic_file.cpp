@@ -45,12 +45,13 @@ bool holds_bytes(const Target& target, const std::filesystem::path& path, std::s
   return existing == bytes;
 }
 
-// Whether two files hold the same bytes, read a block at a time.
+// Whether the temporary `a` and the output `b` hold the same bytes, read a block at a time (a
+// symlink at `b` is never read: it is replaced).
 bool same_contents(const std::filesystem::path& a, const std::filesystem::path& b) {
   std::error_code error;
-  if (!std::filesystem::is_regular_file(b, error)) return false;
+  const Target existing = inspect(b);
   const auto size = std::filesystem::file_size(a, error);
-  if (error || std::filesystem::file_size(b, error) != size || error) return false;
+  if (error || existing.kind != Target::Kind::regular || existing.size != size) return false;
   std::ifstream in_a(a, std::ios::binary);
   std::ifstream in_b(b, std::ios::binary);
   std::string block_a(1 << 16, '\0');
