@@ -101,13 +101,13 @@ int run_compile(const CompileOptions& options) {
 // The command line's checks that need every file: then the batch.
 int run_compile_command(CompileOptions options) {
   if (!options.files_from.empty()) {
-    const std::optional<std::vector<std::string>> listed = read_file_list(options.files_from);
-    if (!listed) {
-      fmt::print(stderr, "{}: error: --files-from: cannot read the list\n",
-                 printable(options.files_from));
+    const FileList listed = read_file_list(options.files_from);
+    if (!listed.error.empty()) {
+      fmt::print(stderr, "{}: error: --files-from: {}\n", printable(options.files_from),
+                 listed.error);
       return kExitUsageError;
     }
-    options.files.insert(options.files.end(), listed->begin(), listed->end());
+    options.files.insert(options.files.end(), listed.paths.begin(), listed.paths.end());
   }
   if (options.shared_only && !options.files.empty()) {
     fmt::print(stderr,

@@ -3,23 +3,32 @@
 #include <fstream>
 #include <iostream>
 
+#include <fmt/format.h>
+
 namespace matc::cli {
 
-std::optional<std::vector<std::string>> read_file_list(const std::string& path) {
+FileList read_file_list(const std::string& path) {
   std::ifstream file;
   if (path != "-") {
-    file.open(path);
-    if (!file) return std::nullopt;
+    file.open(path, std::ios::binary);
+    if (!file) return {{}, "cannot read the list"};
   }
   std::istream& in = path == "-" ? std::cin : file;
-  std::vector<std::string> paths;
+  FileList list;
+  std::size_t number = 0;
   for (std::string line; std::getline(in, line);) {
+    ++number;
+    if (line.find('\0') != std::string::npos) {
+      return {
+          {},
+          fmt::format("line {} holds a NUL byte; one path per line (a path holds none)", number)};
+    }
     while (!line.empty() && (line.back() == '\r' || line.back() == ' '))
       line.pop_back();
-    if (!line.empty()) paths.push_back(std::move(line));
+    if (!line.empty()) list.paths.push_back(std::move(line));
   }
-  if (in.bad()) return std::nullopt;
-  return paths;
+  if (in.bad()) return {{}, "cannot read the list"};
+  return list;
 }
 
 }  // namespace matc::cli
