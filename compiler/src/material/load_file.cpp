@@ -12,6 +12,9 @@
 namespace matc {
 
 LoadedFile load_file(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+  // A path from an input ("file": "x.csv\u0000...") would end at the NUL: another file is read.
+  if (path.native().find('\0') != std::string::npos)
+    return {std::nullopt, "the path holds a NUL byte, which no file name can"};
   // One open and one fstat (a batch reads thousands of inputs); O_NONBLOCK so that a FIFO or a
   // device is refused below instead of blocking the open.
   const int descriptor = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
