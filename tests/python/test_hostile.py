@@ -164,7 +164,7 @@ DTYPES = st.one_of(hnp.floating_dtypes(), hnp.integer_dtypes(), hnp.boolean_dtyp
                    hnp.complex_number_dtypes())
 EVALUATIONS = ["fresnel", "exact", "schlick"]
 ALLOWED = (TypeError, ValueError, MemoryError)
-PROPERTY_SETTINGS = settings(max_examples=150, deadline=None, derandomize=True,
+PROPERTY_SETTINGS = settings(max_examples=150, deadline=None, derandomize=True, database=None,
                              suppress_health_check=[HealthCheck.function_scoped_fixture])
 
 
@@ -226,7 +226,7 @@ def test_fresnel_from_coefficients_is_finite_or_raises(address_space_limit, coef
     assert not np.any(np.isnan(result)) or not np.all(np.abs(coefficients) < 1e300)
 
 
-@settings(max_examples=100, deadline=None, derandomize=True)
+@settings(max_examples=100, deadline=None, derandomize=True, database=None)
 @given(text=st.one_of(st.binary(max_size=200), st.text(max_size=200)))
 def test_any_text_parses_or_raises_a_located_material_error(text):
     try:
@@ -237,7 +237,7 @@ def test_any_text_parses_or_raises_a_located_material_error(text):
         assert "finite" in str(error)
 
 
-@settings(max_examples=100, deadline=None, derandomize=True)
+@settings(max_examples=100, deadline=None, derandomize=True, database=None)
 @given(path=st.text(max_size=40))
 def test_any_path_loads_or_raises(path, tmp_path_factory):
     try:
