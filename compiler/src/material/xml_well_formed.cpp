@@ -1,5 +1,6 @@
 #include "xml_well_formed.h"
 
+#include <cctype>
 #include <charconv>
 #include <set>
 #include <vector>
@@ -33,25 +34,36 @@ std::size_t end_of_literal_markup(std::string_view text, std::size_t at) {
   return std::string_view::npos;
 }
 
-// The problem with the character reference at `text[at]` ("&#..."), if any.
+// The problem with the character reference at `text[at]` ("&#..."), if any. Its digits are read
+// whole, however many (pugixml expands "&#0000000000001;" to U+0001, and wraps values past 32
+// bits), and scanned once, so a document of unterminated references stays linear.
 std::optional<XmlProblem> check_character_reference(std::string_view text, std::size_t at) {
-  const std::size_t end = text.find(';', at);
-  if (end == std::string_view::npos || end - at > 12) return std::nullopt;  // pugixml reports it
-  std::string_view digits = text.substr(at + 2, end - at - 2);
-  int base = 10;
-  if (!digits.empty() && digits.front() == 'x') {
-    digits.remove_prefix(1);
-    base = 16;
-  }
+  std::size_t end = at + 2;
+  const bool hexadecimal = end < text.size() && text[end] == 'x';
+  if (hexadecimal) ++end;
+  const std::size_t first = end;
+  const auto is_digit = [hexadecimal](char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) ||
+           (hexadecimal && std::isxdigit(static_cast<unsigned char>(c)));
+  };
+  while (end < text.size() && is_digit(text[end]))
+    ++end;
+  // Not a reference pugixml expands (it keeps the text, or reports it): nothing to check.
+  if (end == first || end == text.size() || text[end] != ';') return std::nullopt;
   std::uint32_t value = 0;
   const auto [last, error] =
-      std::from_chars(digits.data(), digits.data() + digits.size(), value, base);
-  if (digits.empty() || error != std::errc() || last != digits.data() + digits.size())
-    return std::nullopt;  // not a reference pugixml expands; it keeps the text as it is
-  if (is_xml_char(value)) return std::nullopt;
-  return XmlProblem{at, fmt::format("the character reference '{}' names U+{:04X}, which XML 1.0 "
-                                    "does not allow (section 4.1, Legal Character)",
-                                    echoed(text.substr(at, end - at + 1)), value)};
+      std::from_chars(text.data() + first, text.data() + end, value, hexadecimal ? 16 : 10);
+  const bool past_unicode = error == std::errc::result_out_of_range;
+  if (!past_unicode && is_xml_char(value)) return std::nullopt;
+  const std::string reference = echoed(text.substr(at, end - at + 1));
+  return XmlProblem{at, past_unicode ? fmt::format("the character reference '{}' names no "
+                                                   "character (past U+10FFFF), which XML 1.0 "
+                                                   "does not allow (section 4.1, Legal Character)",
+                                                   reference)
+                                     : fmt::format("the character reference '{}' names U+{:04X}, "
+                                                   "which XML 1.0 does not allow (section 4.1, "
+                                                   "Legal Character)",
+                                                   reference, value)};
 }
 
 }  // namespace
