@@ -102,8 +102,7 @@ py::object coat_dict(const CompiledMaterial& compiled) {
 }
 
 py::array_t<double> fresnel(const CompiledResult& result, const py::object& mu_values) {
-  const DoubleArray mu = real_array(mu_values, "mu");
-  check_unit_interval("mu", mu);
+  const DoubleArray mu = unit_interval_array(mu_values, "mu");
   const runtime::ShaderBasis& basis = runtime::shipped_shader_basis(result.basis);
   const runtime::Coefficients& coefficients = result.compiled.coefficients;
   if (const auto& coat = result.compiled.coat) {
@@ -118,15 +117,13 @@ py::array_t<double> fresnel(const CompiledResult& result, const py::object& mu_v
 }
 
 py::array_t<double> exact(const CompiledResult& result, const py::object& mu_values) {
-  const DoubleArray mu = real_array(mu_values, "mu");
-  check_unit_interval("mu", mu);
+  const DoubleArray mu = unit_interval_array(mu_values, "mu");
   const ReflectanceCurve& curve = *result.exact;
   return map_values<3>(mu, [&](double cosine) { return curve.at(cosine); });
 }
 
 py::array_t<double> schlick(const CompiledResult& result, const py::object& mu_values) {
-  const DoubleArray mu = real_array(mu_values, "mu");
-  check_unit_interval("mu", mu);
+  const DoubleArray mu = unit_interval_array(mu_values, "mu");
   const Rgb f0 = result.compiled.f0;
   return map_values<3>(mu, [&](double cosine) {
     return Rgb{fresnel_schlick(cosine, f0[0]), fresnel_schlick(cosine, f0[1]),
@@ -136,10 +133,7 @@ py::array_t<double> schlick(const CompiledResult& result, const py::object& mu_v
 
 py::array_t<double> fbar(const CompiledResult& result, const py::object& ndotv_values,
                          const py::object& roughness_values, const PreintegratedTable* table) {
-  const DoubleArray ndotv = real_array(ndotv_values, "ndotv");
-  const DoubleArray roughness = real_array(roughness_values, "roughness");
-  check_unit_interval("ndotv", ndotv);
-  check_unit_interval("roughness", roughness);
+  const auto points = ndotv_roughness_pair(ndotv_values, roughness_values);
   if (!table) table = &default_preintegrated_table(result.basis);
   if (table->basis != result.basis) {
     throw py::value_error(
@@ -150,21 +144,17 @@ py::array_t<double> fbar(const CompiledResult& result, const py::object& ndotv_v
   const runtime::LutView view = table->lut->view();
   const runtime::Coefficients& coefficients = result.compiled.coefficients;
   if (const auto& coat = result.compiled.coat) {
-    return map_pairs<3>(broadcast(ndotv, "ndotv", roughness, "roughness"), [&](double n, double r) {
+    return map_pairs<3>(points, [&](double n, double r) {
       return runtime::evaluate_coated_fbar(coefficients, coat->coefficients, view, n, r).total();
     });
   }
-  return map_pairs<3>(broadcast(ndotv, "ndotv", roughness, "roughness"), [&](double n, double r) {
-    return runtime::evaluate_fbar(coefficients, view, n, r);
-  });
+  return map_pairs<3>(
+      points, [&](double n, double r) { return runtime::evaluate_fbar(coefficients, view, n, r); });
 }
 
 py::array_t<double> fbar_reference(const CompiledResult& result, const py::object& ndotv_values,
                                    const py::object& roughness_values, std::size_t samples) {
-  const DoubleArray ndotv = real_array(ndotv_values, "ndotv");
-  const DoubleArray roughness = real_array(roughness_values, "roughness");
-  check_unit_interval("ndotv", ndotv);
-  check_unit_interval("roughness", roughness);
+  const auto points = ndotv_roughness_pair(ndotv_values, roughness_values);
   checked_count("samples", samples, 16, std::size_t{1} << 26);
   std::optional<TabulatedCurve> tabulated, under_coat;
   {
@@ -175,7 +165,7 @@ py::array_t<double> fbar_reference(const CompiledResult& result, const py::objec
   if (const auto& coat = result.compiled.coat) {
     // The split-sum layering with exact curves, as matc eval's Fbar_reference.
     return map_pairs<3>(
-        broadcast(ndotv, "ndotv", roughness, "roughness"),
+        points,
         [&](double n, double r) {
           return layered_split_sum(*tabulated, *under_coat, coat->input, n, r);
         },
@@ -183,7 +173,7 @@ py::array_t<double> fbar_reference(const CompiledResult& result, const py::objec
   }
   // Each point is a Monte-Carlo integral: worth a thread from two points on.
   return map_pairs<3>(
-      broadcast(ndotv, "ndotv", roughness, "roughness"),
+      points,
       [&](double n, double r) { return SplitSumEstimator(n, r, samples).integrate(*tabulated); },
       1);
 }
@@ -214,8 +204,7 @@ void register_compiled_material(py::module_& module) {
       "fresnel_from_coefficients",
       [](const py::object& coefficients, const py::object& mu_values, const std::string& basis) {
         const runtime::Coefficients values = coefficients_of(coefficients);
-        const DoubleArray mu = real_array(mu_values, "mu");
-        check_unit_interval("mu", mu);
+        const DoubleArray mu = unit_interval_array(mu_values, "mu");
         const runtime::ShaderBasis& shader_basis =
             runtime::shipped_shader_basis(option_from_name<runtime::BasisKind>("basis", basis));
         return map_value_chunks<3>(mu, [&](const double* cosines, std::size_t count, double* rgb) {

@@ -87,4 +87,17 @@ std::vector<py::ssize_t> shape_with_axis(const DoubleArray& values, std::size_t 
   return shape;
 }
 
+DoubleArray unit_interval_array(const py::handle& value, std::string_view argument) {
+  DoubleArray values = real_array(value, argument);
+  check_unit_interval(argument, values);
+  return values;
+}
+
+std::pair<DoubleArray, DoubleArray> ndotv_roughness_pair(const py::handle& ndotv,
+                                                         const py::handle& roughness) {
+  const DoubleArray checked_ndotv = unit_interval_array(ndotv, "ndotv");
+  const DoubleArray checked_roughness = unit_interval_array(roughness, "roughness");
+  return broadcast(checked_ndotv, "ndotv", checked_roughness, "roughness");
+}
+
 }  // namespace matc::python

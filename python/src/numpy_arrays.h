@@ -37,6 +37,15 @@ void check_unit_interval(std::string_view argument, const DoubleArray& values);
 std::pair<DoubleArray, DoubleArray> broadcast(const DoubleArray& a, std::string_view a_name,
                                               const DoubleArray& b, std::string_view b_name);
 
+// real_array(value, argument) with every element checked to lie in [0, 1] (check_unit_interval):
+// the cosines F takes.
+DoubleArray unit_interval_array(const pybind11::handle& value, std::string_view argument);
+
+// ndotv and roughness as every preintegrated evaluation takes them: each a unit_interval_array,
+// then broadcast against each other.
+std::pair<DoubleArray, DoubleArray> ndotv_roughness_pair(const pybind11::handle& ndotv,
+                                                         const pybind11::handle& roughness);
+
 std::vector<pybind11::ssize_t> shape_with_axis(const DoubleArray& values, std::size_t width);
 
 // Elements per thread below which a cheap evaluation stays on one thread (starting a thread

@@ -84,13 +84,9 @@ void register_tables(py::module_& module) {
           "sample",
           [](const PreintegratedTable& t, const py::object& ndotv_values,
              const py::object& roughness_values) {
-            const DoubleArray ndotv = real_array(ndotv_values, "ndotv");
-            const DoubleArray roughness = real_array(roughness_values, "roughness");
-            check_unit_interval("ndotv", ndotv);
-            check_unit_interval("roughness", roughness);
             const runtime::LutView view = t.lut->view();
             return map_pairs<runtime::kBasisSize>(
-                broadcast(ndotv, "ndotv", roughness, "roughness"),
+                ndotv_roughness_pair(ndotv_values, roughness_values),
                 [&](double n, double r) { return runtime::sample_lut(view, n, r); });
           },
           py::arg("ndotv"), py::arg("roughness"),
