@@ -67,8 +67,22 @@ bool same_contents(const std::filesystem::path& a, const std::filesystem::path& 
   return in_a.eof() && in_b.eof();
 }
 
+// Writes `size` bytes to `descriptor`, through partial writes and interruptions.
+bool write_fully(int descriptor, const char* data, std::size_t size) {
+  while (size > 0) {
+    const ssize_t written = ::write(descriptor, data, size);
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) return false;
+    data += written;
+    size -= static_cast<std::size_t>(written);
+  }
+  return true;
+}
+
 // Writes what a stream is given to a file descriptor (the temporary's, opened exclusively), so
-// nothing between creating the name and writing it can redirect the bytes elsewhere.
+// nothing between creating the name and writing it can redirect the bytes elsewhere. Small pieces
+// are gathered in a buffer; a piece as large as the buffer goes straight to the descriptor (baked
+// textures run to hundreds of MB).
 class DescriptorBuffer : public std::streambuf {
  public:
   explicit DescriptorBuffer(int descriptor) : descriptor_(descriptor), buffer_(1 << 16) {
@@ -85,14 +99,14 @@ class DescriptorBuffer : public std::streambuf {
     }
     return traits_type::not_eof(c);
   }
+  std::streamsize xsputn(const char* data, std::streamsize count) override {
+    if (count < static_cast<std::streamsize>(buffer_.size()))
+      return std::streambuf::xsputn(data, count);
+    if (sync() != 0 || !write_fully(descriptor_, data, static_cast<std::size_t>(count))) return 0;
+    return count;
+  }
   int sync() override {
-    const char* at = pbase();
-    while (at < pptr()) {
-      const ssize_t written = ::write(descriptor_, at, static_cast<std::size_t>(pptr() - at));
-      if (written < 0 && errno == EINTR) continue;
-      if (written <= 0) return -1;
-      at += written;
-    }
+    if (!write_fully(descriptor_, pbase(), static_cast<std::size_t>(pptr() - pbase()))) return -1;
     setp(buffer_.data(), buffer_.data() + buffer_.size());
     return 0;
   }
@@ -133,6 +147,13 @@ std::filesystem::path write_temporary(const std::filesystem::path& path,
   return file.path;
 }
 
+// write_temporary for bytes already in memory.
+std::filesystem::path write_temporary(const std::filesystem::path& path, std::string_view bytes) {
+  return write_temporary(path, [bytes](std::ostream& out) {
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  });
+}
+
 void move_into_place(const std::filesystem::path& temporary, const std::filesystem::path& path) {
   std::error_code error;
   std::filesystem::rename(temporary, path, error);
@@ -148,9 +169,7 @@ void move_into_place(const std::filesystem::path& temporary, const std::filesyst
 
 WriteOutcome write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
   if (holds_bytes(inspect(path), path, bytes)) return WriteOutcome::unchanged;
-  const std::filesystem::path temporary = write_temporary(path, [&](std::ostream& out) {
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  });
+  const std::filesystem::path temporary = write_temporary(path, bytes);
   move_into_place(temporary, path);
   return WriteOutcome::written;
 }
@@ -187,9 +206,7 @@ std::vector<WriteOutcome> write_files_atomically(const std::filesystem::path& di
     if (existing.kind == Target::Kind::directory)
       throw std::runtime_error(
           fmt::format("cannot replace '{}': it is a directory", target.string()));
-    temporaries[i] = write_temporary(target, [&](std::ostream& out) {
-      out.write(files[i].bytes.data(), static_cast<std::streamsize>(files[i].bytes.size()));
-    });
+    temporaries[i] = write_temporary(target, files[i].bytes);
     outcomes[i] = WriteOutcome::written;
   };
   std::exception_ptr failure;

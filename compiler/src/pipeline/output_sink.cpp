@@ -20,7 +20,8 @@ WriteOutcome DirectoryOutput::write(const std::string& name,
   return write_file_atomically(directory_ / name, produce);
 }
 
-// Memory writes cannot fail midway: one at a time is all or none.
+// One file at a time: all or none for a sink whose writes cannot fail midway (MemoryOutput);
+// DirectoryOutput overrides it.
 std::vector<WriteOutcome> OutputSink::write_all(std::span<const OutputFile> files) {
   std::vector<WriteOutcome> outcomes;
   for (const OutputFile& file : files)
