@@ -10,7 +10,7 @@ cd "$root"
 
 # module:layer, lowest first. Same layer: independent of each other.
 layers="runtime:0 base:1 vulkan:1 optics:2 formats:2 spirv:2 material:3 fit:3 basis:4 lut:4
-compile:5 ltc:6 bake:6 report:6 emit:7 options:8 pipeline:8 validate:8 cli:9"
+compile:5 ltc:6 bake:6 report:6 emit:7 options:8 pipeline:8 validate:8 api:9 cli:10"
 
 # The module a file belongs to; for a generated source, that of the header it implements.
 module_of_file() {
@@ -20,6 +20,7 @@ module_of_file() {
       grep -m1 -o '#include "matc/[a-z_]*/' "$1" | cut -d/ -f2 ;;
     compiler/src/*/*) echo "$1" | cut -d/ -f3 ;;
     compiler/include/matc/*/*) echo "$1" | cut -d/ -f4 ;;
+    compiler/include/matc/matc.h) echo api ;;
     compiler/include/matc/*) echo base ;;  # version.h.in
     runtime/include/matc/*/*) echo "$1" | cut -d/ -f4 ;;
     runtime/src/vulkan/*) echo vulkan ;;
@@ -34,6 +35,7 @@ module_of_include() {
   local include=$1 including_module=$2
   case $include in
     matc/version.h) echo base ;;
+    matc/matc.h) echo api ;;
     matc/*/*) include=${include#matc/}; echo "${include%%/*}" ;;
     */*) echo "${include%%/*}" ;;
     *) echo "$including_module" ;;

@@ -26,9 +26,16 @@ void fill_rows_in_parallel(std::size_t rows, unsigned requested_threads,
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
   const unsigned threads = std::min<unsigned>(requested_threads == 0 ? hardware : requested_threads,
                                               static_cast<unsigned>(rows));
-  std::vector<std::jthread> pool;
+  // std::thread joined on every exit, not std::jthread: the WebAssembly build's libc++ has none.
+  struct JoinedThreads {
+    std::vector<std::thread> threads;
+    ~JoinedThreads() {
+      for (std::thread& thread : threads)
+        thread.join();
+    }
+  } pool;
   for (unsigned t = 1; t < threads; ++t)
-    pool.emplace_back(worker);
+    pool.threads.emplace_back(worker);
   worker();
 }
 

@@ -9,12 +9,9 @@
 #include "matc/base/content_hash.h"
 #include "matc/base/json_format.h"
 #include "matc/emit/library_module.h"
-#include "matc/emit/material_json.h"
 #include "matc/emit/material_module_template.h"
 #include "matc/emit/material_snippet.h"
-#include "matc/emit/shader_library.h"
 #include "matc/material/parse.h"
-#include "matc/runtime/ltc.h"
 #include "matc/runtime/shader_basis.h"
 #include "matc/version.h"
 
@@ -60,66 +57,12 @@ SharedTableOptions table_options(const BuildOptions& options) {
 }  // namespace
 
 Build::Build(BuildOptions options)
-    : options_(checked(std::move(options))), tables_(table_options(options_)) {
-  inputs_hash_ = ContentHash().add(options_key()).hex();
-  ShaderLibraryOptions library_options{options_.lut.size, tables_.stored_coefficient_table().size(),
-                                       embedded_lut()};
-  library_options.ltc_size = runtime::shipped_ltc_table().size;
-  library_options.analytic_lut = options_.basis;
-  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(options_.basis);
-  glsl_library_ =
-      shader_library_source(ShaderLanguage::glsl, shader_basis, library_options, inputs_hash_);
-  hlsl_library_ =
-      shader_library_source(ShaderLanguage::hlsl, shader_basis, library_options, inputs_hash_);
-  wgsl_library_ =
-      shader_library_source(ShaderLanguage::wgsl, shader_basis, library_options, inputs_hash_);
-  library_options.coefficient_table_functions = false;
-  library_options.area_light_functions = false;
-  library_options.analytic_lut.reset();
-  glsl_material_module_library_ =
-      shader_library_source(ShaderLanguage::glsl, shader_basis, library_options, inputs_hash_);
-}
-
-std::string Build::options_key() const {
-  return fmt::format("lut {}x{} samples {} {} {} embed {} basis {}", options_.lut.size,
-                     options_.lut.size, options_.lut.samples, lut_format_name(options_.lut_format),
-                     lut_precision_name(options_.lut_precision), options_.embedded_lut_size,
-                     runtime::basis_name(options_.basis));
-}
+    : options_(checked(std::move(options))),
+      tables_(table_options(options_)),
+      texts_(options_, tables_.stored_coefficient_table().size(), tables_.embedded_lut()) {}
 
 runtime::BasisView Build::basis() const {
   return runtime::shipped_basis(options_.basis);
-}
-
-const std::string& Build::library_source(ShaderLanguage language) const {
-  switch (language) {
-    case ShaderLanguage::hlsl:
-      return hlsl_library_;
-    case ShaderLanguage::wgsl:
-      return wgsl_library_;
-    case ShaderLanguage::glsl:
-      break;
-  }
-  return glsl_library_;
-}
-
-std::string Build::material_source(ShaderLanguage language,
-                                   const CompiledMaterial& compiled) const {
-  return material_snippet_source(language, compiled, material_inputs_hash(compiled.material));
-}
-
-std::string Build::material_inputs_hash(const Material& material) const {
-  ContentHash hash;
-  // The working space changes every material's numbers but none of the shared tables.
-  hash.add(options_key())
-      .add(fmt::format("color {} gamut {}", color_space_name(options_.color.working_space),
-                       gamut_mapping_name(options_.color.gamut_mapping)))
-      .add(material.source_text);
-  if (const auto* spectral = std::get_if<SpectralInput>(&material.model);
-      spectral && !spectral->resolved_file.empty()) {
-    hash.add(spectral->file_bytes);
-  }
-  return hash.hex();
 }
 
 std::vector<OutputFile> Build::shared_outputs() const {
@@ -133,8 +76,9 @@ std::vector<OutputFile> Build::shared_outputs() const {
   }
   if (emit.contains(OutputKind::spirv)) {
     const std::string name = shared_file_name(OutputKind::spirv, options_.lut_format);
-    files.push_back({name, spirv_file_bytes(compile_library_module(
-                               glsl_library_, name, shared_library_exports(embedded_lut())))});
+    files.push_back(
+        {name, spirv_file_bytes(compile_library_module(library_source(ShaderLanguage::glsl), name,
+                                                       shared_library_exports(embedded_lut())))});
   }
   for (OutputFile& table : tables_.files(emit))
     files.push_back(std::move(table));
@@ -166,7 +110,7 @@ SpirvWords Build::compile_material_library_module(const CompiledMaterial& compil
                                                   std::string_view inputs_hash) const {
   const std::string& name = compiled.material.name;
   return compile_library_module(
-      glsl_material_module_library_ +
+      texts_.material_module_library() +
           material_snippet_source(ShaderLanguage::glsl, compiled, inputs_hash),
       material_file_name(OutputKind::spirv, name),
       material_library_exports(name, compiled.coat.has_value()));
@@ -195,9 +139,8 @@ MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const 
     }
   }
   if (emit.contains(OutputKind::json)) {
-    nlohmann::ordered_json json = compiled_material_json(compiled, basis());
-    json["inputs_hash"] = out.inputs_hash;
-    out.files.push_back({material_file_name(OutputKind::json, name), format_json(json)});
+    out.files.push_back({material_file_name(OutputKind::json, name),
+                         texts_.material_json(compiled, out.inputs_hash)});
   }
   return out;
 }
@@ -205,7 +148,7 @@ MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const 
 nlohmann::ordered_json Build::description() const {
   nlohmann::ordered_json description;
   description["matc_version"] = kVersion;
-  description["inputs_hash"] = inputs_hash_;
+  description["inputs_hash"] = inputs_hash();
   std::vector<std::string> emitted;
   for (const OutputKind kind : options_.emit)
     emitted.emplace_back(layout_of(kind).name);

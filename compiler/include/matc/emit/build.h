@@ -17,29 +17,17 @@
 #include <nlohmann/json.hpp>
 
 #include "matc/compile/compile.h"
+#include "matc/emit/build_options.h"
 #include "matc/emit/c_header.h"
 #include "matc/emit/output_layout.h"
 #include "matc/emit/shader_literals.h"
 #include "matc/emit/shared_tables.h"
+#include "matc/emit/text_outputs.h"
 #include "matc/fit/coefficient_table.h"
 #include "matc/lut/lut_files.h"
 #include "matc/spirv/shader_compiler.h"
 
 namespace matc {
-
-inline constexpr std::size_t kMaxEmbeddedLutSize = 64;
-
-struct BuildOptions {
-  std::set<OutputKind> emit = all_output_kinds();
-  LutOptions lut;
-  LutFormat lut_format = LutFormat::ktx2;
-  LutPrecision lut_precision = LutPrecision::f32;
-  // The coefficient table's (its format is lut_format's): f16 costs it nothing measurable.
-  LutPrecision coefficient_table_precision = LutPrecision::f16;
-  std::size_t embedded_lut_size = 0;  // --embed-lut: 0 for none, else 2..kMaxEmbeddedLutSize
-  runtime::BasisKind basis = runtime::kDefaultBasis;  // --basis
-  ColorOptions color;                                 // --color-space, --gamut-mapping
-};
 
 struct MaterialOutputs {
   std::string name;
@@ -68,15 +56,21 @@ class Build {
   const CoefficientTable& stored_coefficient_table() const {
     return tables_.stored_coefficient_table();
   }
-  const std::string& inputs_hash() const { return inputs_hash_; }
+  const std::string& inputs_hash() const { return texts_.inputs_hash(); }
 
-  const std::string& library_source(ShaderLanguage language) const;
-  std::string material_source(ShaderLanguage language, const CompiledMaterial& compiled) const;
+  const std::string& library_source(ShaderLanguage language) const {
+    return texts_.library_source(language);
+  }
+  std::string material_source(ShaderLanguage language, const CompiledMaterial& compiled) const {
+    return texts_.material_source(language, compiled);
+  }
 
   // The hash of what a material's outputs derive from: matc's version, these options, the
   // material's JSON and any spectral file it names, as parsed (nothing is read again: a material
   // parsed from memory works the same).
-  std::string material_inputs_hash(const Material& material) const;
+  std::string material_inputs_hash(const Material& material) const {
+    return texts_.material_inputs_hash(material);
+  }
 
   // The files matc_fresnel.{glsl,hlsl,spv}, matc_lut.<ext>, matc_coefficient_table.<ext> and
   // matc_ltc.<ext> (each with its .json) the options select.
@@ -99,17 +93,9 @@ class Build {
                                      std::string_view inputs_hash) const;
   SpirvWords compile_material_library_module(const CompiledMaterial& compiled,
                                              std::string_view inputs_hash) const;
-  std::string options_key() const;
-
   BuildOptions options_;
   SharedTables tables_;
-  std::string inputs_hash_;
-  std::string glsl_library_;
-  std::string hlsl_library_;
-  std::string wgsl_library_;
-  // The GLSL library without the textured-metal functions, which no material module calls:
-  // each <name>.spv compiles it, and glslang parsing the unused functions cost a fifth of a batch.
-  std::string glsl_material_module_library_;
+  TextOutputs texts_;
 };
 
 }  // namespace matc

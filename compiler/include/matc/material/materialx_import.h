@@ -35,6 +35,10 @@ MaterialXImport import_materialx(std::string_view text, const std::string& path)
 // Reads and imports a MaterialX file.
 MaterialXImport read_materialx_file(const std::string& path, const FileLoader& loader = load_file);
 
+// Whether this build imports MaterialX documents (the WebAssembly library, built without pugixml,
+// refuses each with an error).
+bool materialx_supported();
+
 // Whether `path` names a MaterialX document (".mtlx", any case).
 bool is_materialx_path(std::string_view path);
 

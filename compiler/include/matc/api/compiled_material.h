@@ -1,0 +1,104 @@
+// Compiling a material: its coefficients c_0..c_3 per RGB channel against a basis, how close they
+// come to the exact curve, and every curve the shaders or the comparisons compute, evaluated on
+// the CPU exactly as the shaders do (docs/api.md).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "matc/api/diagnostics.h"
+#include "matc/api/material.h"
+
+namespace matc {
+struct CompiledMaterial;
+}
+
+namespace matc::api {
+
+using Rgb = std::array<double, 3>;
+// Rows R, G, B; columns c_0..c_3.
+using CoefficientRows = std::array<std::array<double, 4>, 3>;
+
+// The names the options take are the CLI's (--basis, --color-space, --gamut-mapping); empty means
+// the default. A name outside them throws std::invalid_argument naming the option and the names.
+struct CompileOptions {
+  std::string basis;
+  std::string color_space;
+  std::string gamut_mapping;
+};
+
+// Max and RMS |F - exact| per channel over the accuracy samples: the decomposition's, Schlick's
+// (exact F0) and F82-tint's (exact F0 and F(1/7)).
+struct Accuracy {
+  std::size_t samples = 0;
+  Rgb max_error{}, rms_error{};
+  Rgb schlick_max_error{}, schlick_rms_error{};
+  Rgb f82_tint_max_error{}, f82_tint_rms_error{};
+};
+
+// A `coat` block compiled (docs/coating.md).
+struct Coat {
+  double weight = 1.0;
+  double ior = 1.5;
+  double roughness = 0.0;
+  Rgb color{1.0, 1.0, 1.0};
+  CoefficientRows under_coat_coefficients{};  // the metal seen through the coat
+  std::array<double, 4> coat_coefficients{};  // the coat's own Fresnel
+  Rgb layered_max_error{};                    // the shaders' layering against the exact one
+};
+
+class CompiledMaterial {
+ public:
+  const Material& material() const { return material_; }
+  const std::string& name() const;
+  const std::string& basis() const { return basis_; }
+  const CoefficientRows& coefficients() const;
+  Rgb f0() const;   // the exact F at normal incidence
+  Rgb f82() const;  // the exact F at mu = 1/7 (about 82 degrees)
+  Accuracy accuracy() const;
+  std::optional<Coat> coat() const;
+  // The material's diagnostics and the compile's: a poor fit, a curve outside [0, 1].
+  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+
+  // Curves at cosines mu in [0, 1]: 3 values (R, G, B) per cosine. A cosine outside [0, 1] or
+  // not a number throws std::invalid_argument naming `mu` and its index.
+  // F as the shaders compute it (a coated material's both lobes summed).
+  std::vector<double> fresnel(std::span<const double> mu) const;
+  // The exact curve the coefficients were fitted to (a coated material's layered curve).
+  std::vector<double> exact(std::span<const double> mu) const;
+  // Schlick's with the exact F0, and Hoffman's F82-tint with the exact F0 and F(1/7).
+  std::vector<double> schlick(std::span<const double> mu) const;
+  std::vector<double> f82_tint(std::span<const double> mu) const;
+  // A coated material's lobes at mu (throws std::logic_error for a bare one): the base lobe's
+  // 3 values per cosine, and the coat lobe's one.
+  struct Lobes {
+    std::vector<double> base;
+    std::vector<double> coat;
+  };
+  Lobes coated_fresnel(std::span<const double> mu) const;
+  // The preintegrated F (split sum, the default table of this basis, baked on first use) at
+  // pairs (NdotV, roughness), both in [0, 1] and of one length: 3 values per pair.
+  std::vector<double> fbar(std::span<const double> ndotv, std::span<const double> roughness) const;
+
+  // The library's own value, for the library's implementation.
+  const matc::CompiledMaterial& value() const { return *value_; }
+  struct Curves;
+  CompiledMaterial(Material material, std::string basis,
+                   std::shared_ptr<const matc::CompiledMaterial> value,
+                   std::shared_ptr<const Curves> curves, std::vector<Diagnostic> diagnostics);
+
+ private:
+  Material material_;
+  std::string basis_;
+  std::shared_ptr<const matc::CompiledMaterial> value_;
+  std::shared_ptr<const Curves> curves_;
+  std::vector<Diagnostic> diagnostics_;
+};
+
+CompiledMaterial compile(const Material& material, const CompileOptions& options = {});
+
+}  // namespace matc::api

@@ -1,0 +1,55 @@
+// Reading materials: a material file's JSON or a MaterialX document, from a file or from text
+// (docs/material-format.md, docs/interchange.md). Every reader validates the whole input and
+// throws MaterialError with all its errors located; warnings and notes stay with the material.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "matc/api/diagnostics.h"
+
+namespace matc {
+struct Material;
+}
+
+namespace matc::api {
+
+// One validated material. Cheap to copy (shared, immutable).
+class Material {
+ public:
+  const std::string& name() const;
+  // "artistic", "ior", "spectral" or "f82_tint".
+  std::string model() const;
+  // The file it was read from, or the name given with its text.
+  const std::string& path() const;
+  // Its material file's JSON (for a MaterialX material, what `matc import` writes).
+  const std::string& json() const;
+  bool coated() const;
+  // The input's warnings and notes.
+  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+
+  // The library's own value, for the library's implementation.
+  const matc::Material& value() const { return *value_; }
+  Material(std::shared_ptr<const matc::Material> value, std::vector<Diagnostic> diagnostics);
+
+ private:
+  std::shared_ptr<const matc::Material> value_;
+  std::vector<Diagnostic> diagnostics_;
+};
+
+// The materials of `text`, an input called `path` in diagnostics: a MaterialX document when
+// `path` ends in .mtlx (any number of materials), else a material file's JSON (one). Relative
+// spectral files resolve against `path`'s folder.
+std::vector<Material> parse_materials(std::string_view text, std::string_view path);
+// The same for a file.
+std::vector<Material> load_materials(std::string_view path);
+
+// Whether this library reads MaterialX documents (the WebAssembly build may not).
+bool reads_materialx();
+
+// The names a spectral material's "preset" takes: the measured metals matc ships.
+std::vector<std::string> spectral_presets();
+
+}  // namespace matc::api

@@ -1,0 +1,8 @@
+// libmatc's public API: read materials, compile them, evaluate their curves and write their
+// texts. The CLI, the Python module and the WebAssembly binding are faces over it (docs/api.md).
+#pragma once
+
+#include "matc/api/compiled_material.h"
+#include "matc/api/diagnostics.h"
+#include "matc/api/material.h"
+#include "matc/api/text_outputs.h"

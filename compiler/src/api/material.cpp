@@ -1,0 +1,65 @@
+#include "matc/api/material.h"
+
+#include <string>
+#include <utility>
+
+#include "matc/material/material_input.h"
+#include "matc/material/materialx_import.h"
+#include "matc/optics/presets.h"
+#include "public_diagnostics.h"
+
+namespace matc::api {
+namespace {
+
+std::vector<Material> materials_of(MaterialInput input) {
+  throw_if_errors(input.diagnostics);
+  const std::vector<Diagnostic> diagnostics = public_diagnostics(input.diagnostics);
+  std::vector<Material> materials;
+  materials.reserve(input.materials.size());
+  for (matc::Material& material : input.materials)
+    materials.emplace_back(std::make_shared<const matc::Material>(std::move(material)),
+                           diagnostics);
+  return materials;
+}
+
+}  // namespace
+
+Material::Material(std::shared_ptr<const matc::Material> value, std::vector<Diagnostic> diagnostics)
+    : value_(std::move(value)), diagnostics_(std::move(diagnostics)) {}
+
+const std::string& Material::name() const {
+  return value_->name;
+}
+std::string Material::model() const {
+  return std::string(model_key(value_->model));
+}
+const std::string& Material::path() const {
+  return value_->source_path;
+}
+const std::string& Material::json() const {
+  return value_->source_text;
+}
+bool Material::coated() const {
+  return value_->coat.has_value();
+}
+
+std::vector<Material> parse_materials(std::string_view text, std::string_view path) {
+  return materials_of(parse_material_input(text, std::string(path)));
+}
+
+std::vector<Material> load_materials(std::string_view path) {
+  return materials_of(read_material_input(std::string(path)));
+}
+
+bool reads_materialx() {
+  return materialx_supported();
+}
+
+std::vector<std::string> spectral_presets() {
+  std::vector<std::string> names;
+  for (const MetalPreset& preset : metal_presets())
+    names.emplace_back(preset.symbol);
+  return names;
+}
+
+}  // namespace matc::api

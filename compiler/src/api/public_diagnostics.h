@@ -1,0 +1,16 @@
+// The library's diagnostics as the public face's (plain values, the CLI's text beside them).
+#pragma once
+
+#include <vector>
+
+#include "matc/api/diagnostics.h"
+#include "matc/base/diagnostics.h"
+
+namespace matc::api {
+
+std::vector<Diagnostic> public_diagnostics(const Diagnostics& diagnostics);
+
+// Throws MaterialError with `diagnostics` when they hold an error.
+void throw_if_errors(const Diagnostics& diagnostics);
+
+}  // namespace matc::api

@@ -1,0 +1,88 @@
+#include "matc/emit/text_outputs.h"
+
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "matc/base/content_hash.h"
+#include "matc/base/json_format.h"
+#include "matc/emit/material_json.h"
+#include "matc/emit/material_snippet.h"
+#include "matc/emit/shader_library.h"
+#include "matc/runtime/ltc.h"
+#include "matc/runtime/shader_basis.h"
+
+namespace matc {
+namespace {
+
+std::string options_key_of(const BuildOptions& options) {
+  return fmt::format("lut {}x{} samples {} {} {} embed {} basis {}", options.lut.size,
+                     options.lut.size, options.lut.samples, lut_format_name(options.lut_format),
+                     lut_precision_name(options.lut_precision), options.embedded_lut_size,
+                     runtime::basis_name(options.basis));
+}
+
+}  // namespace
+
+TextOutputs::TextOutputs(const BuildOptions& options, std::size_t coefficient_table_size,
+                         const Lut* embedded_lut)
+    : options_(options),
+      options_key_(options_key_of(options)),
+      inputs_hash_(ContentHash().add(options_key_).hex()) {
+  ShaderLibraryOptions library_options{options_.lut.size, coefficient_table_size, embedded_lut};
+  library_options.ltc_size = runtime::shipped_ltc_table().size;
+  library_options.analytic_lut = options_.basis;
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(options_.basis);
+  glsl_library_ =
+      shader_library_source(ShaderLanguage::glsl, shader_basis, library_options, inputs_hash_);
+  hlsl_library_ =
+      shader_library_source(ShaderLanguage::hlsl, shader_basis, library_options, inputs_hash_);
+  wgsl_library_ =
+      shader_library_source(ShaderLanguage::wgsl, shader_basis, library_options, inputs_hash_);
+  library_options.coefficient_table_functions = false;
+  library_options.area_light_functions = false;
+  library_options.analytic_lut.reset();
+  glsl_material_module_library_ =
+      shader_library_source(ShaderLanguage::glsl, shader_basis, library_options, inputs_hash_);
+}
+
+const std::string& TextOutputs::library_source(ShaderLanguage language) const {
+  switch (language) {
+    case ShaderLanguage::hlsl:
+      return hlsl_library_;
+    case ShaderLanguage::wgsl:
+      return wgsl_library_;
+    case ShaderLanguage::glsl:
+      break;
+  }
+  return glsl_library_;
+}
+
+std::string TextOutputs::material_inputs_hash(const Material& material) const {
+  ContentHash hash;
+  // The working space changes every material's numbers but none of the shared tables.
+  hash.add(options_key_)
+      .add(fmt::format("color {} gamut {}", color_space_name(options_.color.working_space),
+                       gamut_mapping_name(options_.color.gamut_mapping)))
+      .add(material.source_text);
+  if (const auto* spectral = std::get_if<SpectralInput>(&material.model);
+      spectral && !spectral->resolved_file.empty()) {
+    hash.add(spectral->file_bytes);
+  }
+  return hash.hex();
+}
+
+std::string TextOutputs::material_source(ShaderLanguage language,
+                                         const CompiledMaterial& compiled) const {
+  return material_snippet_source(language, compiled, material_inputs_hash(compiled.material));
+}
+
+std::string TextOutputs::material_json(const CompiledMaterial& compiled,
+                                       std::string_view inputs_hash) const {
+  nlohmann::ordered_json json =
+      compiled_material_json(compiled, runtime::shipped_basis(options_.basis));
+  json["inputs_hash"] = std::string(inputs_hash);
+  return format_json(json);
+}
+
+}  // namespace matc

@@ -1,0 +1,111 @@
+// The public face (matc/matc.h): what it reads, compiles and writes is what the modules and the
+// CLI's Build make, byte for byte; bad input is a MaterialError with the CLI's lines.
+#include "matc/matc.h"
+
+#include <filesystem>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "matc/emit/build.h"
+#include "matc/material/material_input.h"
+#include "matc/runtime/shader_basis.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> example_materials() {
+  std::vector<fs::path> paths;
+  for (const auto& entry : fs::directory_iterator(MATC_EXAMPLES_DIR))
+    if (entry.path().extension() == ".json") paths.push_back(entry.path());
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+TEST(PublicApi, TextsAreTheBuildsBytesForEveryExample) {
+  const matc::Build build{matc::BuildOptions{}};
+  const matc::api::TextOutputs texts;
+  for (const char* language : {"glsl", "hlsl", "wgsl"}) {
+    const auto kind = matc::shader_language_name(matc::ShaderLanguage::glsl) == language
+                          ? matc::ShaderLanguage::glsl
+                      : std::string(language) == "hlsl" ? matc::ShaderLanguage::hlsl
+                                                        : matc::ShaderLanguage::wgsl;
+    EXPECT_EQ(texts.library_source(language), build.library_source(kind)) << language;
+  }
+  std::size_t compared = 0;
+  for (const fs::path& path : example_materials()) {
+    for (const matc::api::Material& material : matc::api::load_materials(path.string())) {
+      const matc::api::CompiledMaterial compiled = matc::api::compile(material);
+      const matc::MaterialOutputs outputs = build.material_outputs(compiled.value());
+      for (const matc::OutputFile& file : outputs.files) {
+        const std::string extension = fs::path(file.name).extension().string().substr(1);
+        if (extension == "json") {
+          EXPECT_EQ(texts.material_json(compiled), file.bytes) << file.name;
+        } else if (extension == "glsl" || extension == "hlsl" || extension == "wgsl") {
+          EXPECT_EQ(texts.material_source(extension, compiled), file.bytes) << file.name;
+        } else {
+          continue;
+        }
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GE(compared, 4u * example_materials().size());
+}
+
+TEST(PublicApi, CompiledValuesAreTheLibrarys) {
+  const auto materials = matc::api::load_materials(std::string(MATC_EXAMPLES_DIR) + "/gold.json");
+  ASSERT_EQ(materials.size(), 1u);
+  const matc::api::CompiledMaterial compiled = matc::api::compile(materials[0]);
+  const matc::CompiledMaterial direct =
+      matc::compile_material(matc::read_material_input(materials[0].path()).materials.at(0),
+                             matc::runtime::shipped_basis(matc::runtime::kDefaultBasis));
+  EXPECT_EQ(compiled.coefficients(), direct.coefficients);
+  EXPECT_EQ(compiled.f0(), direct.f0);
+  const std::vector<double> mu = {0.0, 0.25, 1.0};
+  const std::vector<double> f = compiled.fresnel(mu);
+  ASSERT_EQ(f.size(), 9u);
+  for (std::size_t i = 0; i < mu.size(); ++i) {
+    const auto rgb = matc::runtime::evaluate_fresnel(
+        direct.coefficients, matc::runtime::shipped_shader_basis(matc::runtime::kDefaultBasis),
+        mu[i]);
+    for (std::size_t c = 0; c < 3; ++c)
+      EXPECT_EQ(f[3 * i + c], rgb[c]);
+  }
+  // At normal incidence (mu = 1) the exact curve and Schlick's are F0; at grazing, 1.
+  EXPECT_NEAR(compiled.exact(std::vector<double>{1.0})[0], compiled.f0()[0], 1e-12);
+  EXPECT_NEAR(compiled.schlick(std::vector<double>{0.0})[1], 1.0, 1e-12);
+  EXPECT_NEAR(compiled.f82_tint(std::vector<double>{1.0})[2], compiled.f0()[2], 1e-12);
+  EXPECT_THROW(compiled.coated_fresnel(mu), std::logic_error);
+}
+
+TEST(PublicApi, BadInputIsAMaterialErrorWithTheCliLines) {
+  try {
+    matc::api::parse_materials(R"({"name": "x", "artistic": {"reflectivity": [2, 0, 0]}})",
+                               "bad.json");
+    FAIL() << "no error";
+  } catch (const matc::api::MaterialError& error) {
+    ASSERT_FALSE(error.diagnostics().empty());
+    EXPECT_EQ(error.diagnostics()[0].severity, "error");
+    EXPECT_EQ(error.diagnostics()[0].path, "bad.json");
+    EXPECT_NE(std::string(error.what()).find("bad.json:1:"), std::string::npos) << error.what();
+  }
+}
+
+TEST(PublicApi, ArgumentsOutOfRangeAreNamed) {
+  const auto materials = matc::api::load_materials(std::string(MATC_EXAMPLES_DIR) + "/gold.json");
+  const matc::api::CompiledMaterial compiled = matc::api::compile(materials[0]);
+  EXPECT_THROW(compiled.fresnel(std::vector<double>{0.5, 1.5}), std::invalid_argument);
+  EXPECT_THROW(compiled.fbar(std::vector<double>{0.5}, std::vector<double>{}),
+               std::invalid_argument);
+  EXPECT_THROW(matc::api::compile(materials[0], {"no-such-basis", "", ""}), std::invalid_argument);
+  const matc::api::TextOutputs paper({"paper", "", ""});
+  EXPECT_THROW(paper.material_source("glsl", compiled), std::invalid_argument);
+  EXPECT_THROW(matc::api::TextOutputs().material_source("msl", compiled), std::invalid_argument);
+}
+
+}  // namespace
