@@ -12,7 +12,7 @@ fuzz_seconds=${1:-60}
 # interpreter; the module's C++ is libmatc's, which the sanitized suite covers, and its own
 # tests (with their fuzz pass) run in the plain build.
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DMATC_BUILD_FUZZERS=ON \
-  -DMATC_SANITIZE=address,undefined,fuzzer-no-link -DMATC_BUILD_PYTHON=OFF >/dev/null
+  -DMATC_SANITIZE=address,undefined,fuzzer-no-link -DMATC_BUILD_PYTHON=OFF -DMATC_BUILD_WASM=OFF >/dev/null
 cmake --build build-fuzz
 
 corpus=$(mktemp -d)

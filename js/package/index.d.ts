@@ -1,0 +1,116 @@
+// Types of the matc package (index.mjs; docs/web.md).
+
+export declare const version: string;
+
+export interface Diagnostic {
+  severity: "error" | "warning" | "note";
+  path: string;
+  /** 1-based; 0: the whole input. */
+  line: number;
+  column: number;
+  field: string;
+  message: string;
+  allowed: string;
+  /** The line the CLI prints: "path:line:col: error: field: message; allowed". */
+  text: string;
+}
+
+export declare class MatcError extends Error {
+  kind: "material" | "argument" | "memory" | "internal";
+  diagnostics: Diagnostic[];
+}
+
+export interface CompileOptions {
+  /** --basis: "powers" (default), "extended", "paper" or "f82". */
+  basis?: string;
+  /** --color-space, e.g. "lin_rec709" (default) or "acescg". */
+  colorSpace?: string;
+  /** --gamut-mapping: "none" (default) or "desaturate". */
+  gamutMapping?: string;
+}
+
+/** Numbers in: a number, an array or a typed array of numbers. */
+export type Numbers = number | ArrayLike<number> | Float64Array | Float32Array;
+/** Coefficient rows R, G, B of c_0..c_3. */
+export type CoefficientRows = [Float64Array, Float64Array, Float64Array];
+
+declare class Disposable {
+  /** Frees the native object now rather than when it is garbage-collected. */
+  dispose(): void;
+}
+
+export declare class Material extends Disposable {
+  readonly name: string;
+  readonly model: "artistic" | "ior" | "spectral" | "f82_tint";
+  readonly path: string;
+  /** Its material file's JSON. */
+  readonly json: string;
+  readonly coated: boolean;
+  readonly diagnostics: Diagnostic[];
+}
+
+export interface Accuracy {
+  samples: number;
+  maxError: Float64Array;
+  rmsError: Float64Array;
+  schlickMaxError: Float64Array;
+  schlickRmsError: Float64Array;
+  f82TintMaxError: Float64Array;
+  f82TintRmsError: Float64Array;
+}
+
+export interface Coat {
+  weight: number;
+  ior: number;
+  roughness: number;
+  color: Float64Array;
+  underCoatCoefficients: CoefficientRows;
+  coatCoefficients: Float64Array;
+  layeredMaxError: Float64Array;
+}
+
+export declare class CompiledMaterial extends Disposable {
+  readonly material: Material;
+  readonly name: string;
+  readonly basis: string;
+  readonly coefficients: CoefficientRows;
+  readonly f0: Float64Array;
+  readonly f82: Float64Array;
+  readonly accuracy: Accuracy;
+  readonly coat: Coat | null;
+  readonly diagnostics: Diagnostic[];
+  /** F as the shaders compute it: 3 values (R, G, B) per cosine in [0, 1]. */
+  fresnel(mu: Numbers): Float64Array;
+  exact(mu: Numbers): Float64Array;
+  schlick(mu: Numbers): Float64Array;
+  f82Tint(mu: Numbers): Float64Array;
+  coatedFresnel(mu: Numbers): { base: Float64Array; coat: Float64Array };
+  /** The preintegrated F at pairs (NdotV, roughness): 3 values per pair. */
+  fbar(ndotv: Numbers, roughness: Numbers): Float64Array;
+}
+
+export type ShaderLanguage = "glsl" | "hlsl" | "wgsl";
+
+export declare class TextOutputs extends Disposable {
+  librarySource(language: ShaderLanguage): string;
+  materialSource(language: ShaderLanguage, compiled: CompiledMaterial): string;
+  materialJson(compiled: CompiledMaterial): string;
+}
+
+export declare class Matc {
+  readonly version: string;
+  readonly readsMaterialX: boolean;
+  spectralPresets(): string[];
+  /** A material file's JSON or a MaterialX document (path ending in .mtlx), as text or bytes. */
+  parseMaterials(text: string | Uint8Array | ArrayBuffer, path?: string): Material[];
+  parseMaterial(input: string | Uint8Array | ArrayBuffer | object, options?: { path?: string }): Material;
+  compile(material: Material, options?: CompileOptions): CompiledMaterial;
+  textOutputs(options?: CompileOptions): TextOutputs;
+}
+
+export declare function createMatc(options?: {
+  wasmBinary?: ArrayBuffer | Uint8Array;
+  locateFile?: (path: string, prefix: string) => string;
+}): Promise<Matc>;
+
+export declare const tableFiles: { lut: string; coefficientTable: string; ltc: string };

@@ -1,0 +1,41 @@
+// Stages the npm package: the sources here, the WebAssembly build's module and binary, and the
+// shared tables written by the native matc (the same files `matc -o` writes).
+//   node stage.mjs WASM_BUILD_DIR OUT_DIR MATC
+import { execFileSync } from "node:child_process";
+import fs from "node:fs";
+import path from "node:path";
+import { fileURLToPath } from "node:url";
+
+const [wasmDir, outDir, matc] = process.argv.slice(2);
+if (!wasmDir || !outDir || !matc) {
+  console.error("usage: node stage.mjs WASM_BUILD_DIR OUT_DIR MATC");
+  process.exit(2);
+}
+const here = path.dirname(fileURLToPath(import.meta.url));
+const root = path.join(here, "..", "..");
+const project = fs.readFileSync(path.join(root, "CMakeLists.txt"), "utf8");
+const version = /^project\(matc VERSION (\d+\.\d+\.\d+)/m.exec(project)?.[1];
+const manifest = JSON.parse(fs.readFileSync(path.join(here, "package.json"), "utf8"));
+if (manifest.version !== version) {
+  console.error(`js/package/package.json: version ${manifest.version}, but the project is ${version}`);
+  process.exit(1);
+}
+
+fs.rmSync(outDir, { recursive: true, force: true });
+fs.mkdirSync(path.join(outDir, "tables"), { recursive: true });
+fs.copyFileSync(path.join(here, "package.json"), path.join(outDir, "package.json"));
+fs.copyFileSync(path.join(here, "index.d.ts"), path.join(outDir, "index.d.ts"));
+fs.copyFileSync(path.join(here, "README.md"), path.join(outDir, "README.md"));
+fs.writeFileSync(path.join(outDir, "index.mjs"),
+                 fs.readFileSync(path.join(here, "index.mjs"), "utf8").replaceAll("@MATC_VERSION@", version));
+for (const file of ["matc.mjs", "matc.wasm"]) fs.copyFileSync(path.join(wasmDir, file), path.join(outDir, file));
+
+// The tables of the default build, as `matc` writes them (KTX2, with their .json descriptions).
+const tables = path.join(outDir, "tables");
+execFileSync(matc, ["-q", "--shared-only", "--emit", "lut,coefficient-table,ltc", "-o", tables], { stdio: "inherit" });
+for (const file of fs.readdirSync(tables)) {
+  if (!/^matc_(lut|coefficient_table|ltc)\.ktx2(\.json)?$/.test(file)) {
+    console.error(`stage.mjs: unexpected table file ${file}`);
+    process.exit(1);
+  }
+}

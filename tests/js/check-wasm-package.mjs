@@ -1,0 +1,253 @@
+// The npm package (build/matc-<version>.tgz) installed into a fresh project and run from Node:
+// its compile of every example material, of the 23 measured metals bare and under 1.3-1.6 coats,
+// and of a few materials under other options, against the native library's (the public API, by
+// matc_api_dump); its shader texts against the files `matc -o` writes; the bad-input catalogue
+// through the JS API (the CLI's located lines, and an instance still usable after each).
+//   node check-wasm-package.mjs PACKAGE.tgz MATC MATC_API_DUMP REPO_ROOT
+import { execFileSync, spawnSync } from "node:child_process";
+import fs from "node:fs";
+import { tmpdir } from "node:os";
+import path from "node:path";
+import { check, finish } from "./report.mjs";
+
+const [tarball, matc, apiDump, root] = process.argv.slice(2).map((arg) => path.resolve(arg));
+const work = fs.mkdtempSync(path.join(tmpdir(), "matc-wasm-"));
+const examples = path.join(root, "examples", "materials");
+const catalogue = path.join(root, "tests", "data", "bad_inputs");
+
+// A fresh project with nothing but the package, installed from its tarball without the network.
+fs.writeFileSync(path.join(work, "package.json"), JSON.stringify({ name: "probe", private: true, type: "module" }));
+execFileSync("npm", ["install", "--offline", "--no-audit", "--no-fund", "--loglevel=error", tarball],
+             { cwd: work, stdio: "inherit" });
+const { createMatc, MatcError } = await import(path.join(work, "node_modules", "matc", "index.mjs"));
+check(fs.existsSync(path.join(work, "node_modules", "matc", "tables", "matc_lut.ktx2")), "the package has its LUT");
+const matc_ = await createMatc();
+
+// The requests: the examples (by their file names, as `matc -o` names them), every preset bare
+// and coated, and other options.
+const requests = [];
+for (const file of fs.readdirSync(examples).filter((f) => f.endsWith(".json")).sort()) {
+  requests.push({ text: fs.readFileSync(path.join(examples, file), "utf8"), path: file, example: true });
+}
+const presets = matc_.spectralPresets();
+check(presets.length >= 23, `the measured metals: ${presets.length}`);
+for (const preset of presets) {
+  const name = `p_${preset.toLowerCase()}`;
+  requests.push({ text: JSON.stringify({ name, spectral: { preset } }), path: `${name}.json` });
+  for (const ior of [1.3, 1.4, 1.5, 1.6]) {
+    requests.push({ text: JSON.stringify({ name: `${name}_coat`, spectral: { preset }, coat: { ior, roughness: 0.1 } }),
+                    path: `${name}_coat.json` });
+  }
+}
+for (const options of [{ basis: "paper" }, { basis: "extended" }, { basis: "f82" }, { colorSpace: "acescg" },
+                       { gamutMapping: "desaturate" }]) {
+  requests.push({ text: JSON.stringify({ name: "cu", spectral: { preset: "Cu" } }), path: "cu.json", options });
+  requests.push({ text: fs.readFileSync(path.join(examples, "figure2_edge_tint.json"), "utf8"),
+                  path: "figure2_edge_tint.json", options });
+}
+
+// Native: the same requests through matc_api_dump (relative spectral files resolve against the
+// examples folder: it runs there).
+const native = execFileSync(apiDump, {
+  cwd: examples, maxBuffer: 1 << 30, encoding: "utf8",
+  input: requests.map((r) => JSON.stringify({ text: r.text, path: r.path, options: r.options ?? {} })).join("\n") + "\n",
+}).trim().split("\n").map((line) => JSON.parse(line));
+
+const cosines = Array.from({ length: 65 }, (_, i) => i / 64);
+const pairs = [0.05, 0.3, 0.7, 1.0].flatMap((n) => [0.0, 0.25, 0.6, 1.0].map((r) => [n, r]));
+const largest = { coefficients: 0, fresnel: 0, exact: 0, fbar: 0 };
+const maxDifference = (a, b) => a.reduce((m, v, i) => Math.max(m, Math.abs(v - b[i])), 0);
+// Two texts that differ only in the last digits of their numbers (the coefficients, where the math
+// libraries differ in the last bits): the largest difference of their numbers, or Infinity when
+// anything else differs.
+const kNumber = /-?\d+\.\d+(?:e[-+]?\d+)?/g;
+function numbersApart(a, b) {
+  if (a.replace(kNumber, "#") !== b.replace(kNumber, "#")) return Infinity;
+  const x = a.match(kNumber) ?? [], y = b.match(kNumber) ?? [];
+  return x.reduce((m, v, i) => Math.max(m, Math.abs(Number(v) - Number(y[i]))), 0);
+}
+let largestInTexts = 0;
+let materials = 0, bitIdentical = 0, unreadable = 0;
+const sameTexts = { glsl: 0, hlsl: 0, wgsl: 0, json: 0 };
+const wasmTexts = new Map();  // example file name -> { glsl, hlsl, wgsl, json } for the CLI comparison
+
+requests.forEach((request, index) => {
+  const expected = native[index];
+  let compiled;
+  try {
+    compiled = matc_.parseMaterials(request.text, request.path).map((m) => matc_.compile(m, request.options));
+  } catch (error) {
+    // A material naming a spectral CSV: the WebAssembly library has no file system to read it.
+    const namesFile = /"file"\s*:/.test(request.text);
+    check(error instanceof MatcError && namesFile && /cannot read/.test(error.message),
+          `${request.path}: ${error.message}`);
+    unreadable += 1;
+    return;
+  }
+  check(!expected.error && expected.materials.length === compiled.length, `${request.path}: native ${expected.error ?? ""}`);
+  compiled.forEach((material, m) => {
+    const reference = expected.materials[m];
+    materials += 1;
+    const rows = (values) => values.flatMap((row) => Array.from(row));
+    const ours = rows(material.coefficients);
+    const theirs = rows(reference.coefficients);
+    if (material.coat) {
+      ours.push(...rows(material.coat.underCoatCoefficients), ...material.coat.coatCoefficients);
+      theirs.push(...rows(reference.under_coat_coefficients), ...reference.coat_coefficients);
+    }
+    const identical = ours.every((v, i) => v === theirs[i]);
+    bitIdentical += identical ? 1 : 0;
+    largest.coefficients = Math.max(largest.coefficients, maxDifference(ours, theirs));
+    largest.fresnel = Math.max(largest.fresnel, maxDifference(material.fresnel(cosines), reference.fresnel));
+    largest.exact = Math.max(largest.exact, maxDifference(material.exact(cosines), reference.exact));
+    largest.fbar = Math.max(largest.fbar, maxDifference(material.fbar(pairs.map((p) => p[0]), pairs.map((p) => p[1])),
+                                                        reference.fbar));
+    const texts = matc_.textOutputs(request.options);
+    const mine = { glsl: texts.materialSource("glsl", material), hlsl: texts.materialSource("hlsl", material),
+                   wgsl: texts.materialSource("wgsl", material), json: texts.materialJson(material) };
+    for (const [kind, text] of Object.entries(mine)) {
+      if (text === reference.texts[kind]) {
+        sameTexts[kind] += 1;
+      } else {
+        check(!identical, `${request.path} ${material.name}.${kind}: differs with bit-identical coefficients`);
+        const apart = numbersApart(text, reference.texts[kind]);
+        check(apart <= 1e-9, `${request.path} ${material.name}.${kind}: differs beyond its numbers' last digits`);
+        largestInTexts = Math.max(largestInTexts, apart);
+      }
+    }
+    if (request.example) wasmTexts.set(material.name, { texts: mine, identical });
+  });
+});
+check(largest.coefficients <= 1e-9, `coefficients differ by ${largest.coefficients}`);
+check(largest.fresnel <= 1e-9 && largest.exact <= 1e-9 && largest.fbar <= 1e-9,
+      `curves differ by ${JSON.stringify(largest)}`);
+console.log(`compared ${materials} materials (${bitIdentical} with bit-identical coefficients; ${unreadable} ` +
+            `naming a file refused); largest differences: ${JSON.stringify(largest)}; ` +
+            `texts identical of ${materials}: ${JSON.stringify(sameTexts)}, the others apart by at most ` +
+            `${largestInTexts} in a printed number`);
+
+// The texts against `matc -o`'s files for the examples.
+const out = path.join(work, "out");
+execFileSync(matc, ["-q", "--emit", "glsl,hlsl,wgsl,json", "-o", out,
+                    ...fs.readdirSync(examples).filter((f) => f.endsWith(".json")).sort().map((f) => path.join(examples, f))],
+             { stdio: ["ignore", "pipe", "pipe"] });
+const library = matc_.textOutputs();
+for (const language of ["glsl", "hlsl", "wgsl"]) {
+  check(library.librarySource(language) === fs.readFileSync(path.join(out, `matc_fresnel.${language}`), "utf8"),
+        `matc_fresnel.${language} differs from matc's`);
+}
+let files = 0, sameFiles = 0;
+for (const [name, { texts, identical }] of wasmTexts) {
+  for (const [kind, text] of Object.entries(texts)) {
+    const written = fs.readFileSync(path.join(out, `${name}.${kind}`), "utf8");
+    files += 1;
+    sameFiles += text === written ? 1 : 0;
+    // Byte for byte wherever the coefficients are bit for bit; elsewhere in the last digits only.
+    if (identical) check(text === written, `${name}.${kind} differs from matc's`);
+    else check(numbersApart(text, written) <= 1e-9, `${name}.${kind} differs from matc's beyond its numbers`);
+  }
+}
+console.log(`${files} material files compared with matc -o (${sameFiles} byte for byte), and the 3 libraries`);
+
+// The bad-input catalogue: every case that is one material file and a plain `matc -o out case`
+// (no arguments, no set-up, no spectral file), through parseMaterials and compile.
+let cases = 0;
+// Rules of a build directory, which the JS API does not write: names that would overwrite the
+// shared files.
+const kOutputDirectoryRules = new Set(["name_reserved", "name_reserved_coefficient_table"]);
+for (const file of fs.readdirSync(catalogue).filter((f) => /\.(json|mtlx)$/.test(f) && fs.statSync(path.join(catalogue, f)).isFile()).sort()) {
+  const name = file.replace(/\.(json|mtlx)$/, "");
+  if (fs.existsSync(path.join(catalogue, `${name}.args`)) || fs.existsSync(path.join(catalogue, `${name}.setup`)) ||
+      !fs.existsSync(path.join(catalogue, `${name}.expected`)) || kOutputDirectoryRules.has(name)) continue;
+  const bytes = new Uint8Array(fs.readFileSync(path.join(catalogue, file)));  // as they are, UTF-8 or not
+  const text = Buffer.from(bytes).toString("latin1");
+  const [status, ...lines] = fs.readFileSync(path.join(catalogue, `${name}.expected`), "utf8").trimEnd().split("\n");
+  cases += 1;
+  let shown = "";
+  let thrown = null;
+  try {
+    for (const material of matc_.parseMaterials(bytes, file)) {
+      const compiled = matc_.compile(material);
+      shown += compiled.diagnostics.map((d) => d.text).join("\n") + "\n";
+    }
+  } catch (error) {
+    thrown = error;
+    shown = error.message;
+  }
+  if (file.endsWith(".mtlx") && !matc_.readsMaterialX) {
+    check(thrown instanceof MatcError && /does not read MaterialX/.test(shown), `${file}: ${shown}`);
+  } else if (/"file"\s*:/.test(text)) {
+    check(thrown instanceof MatcError || status === "exit 0", `${file}: ${shown}`);
+  } else {
+    check((status === "exit 0") === (thrown === null), `${file}: ${status}, but ${thrown ? "threw" : "did not throw"}: ${shown}`);
+    if (thrown) check(thrown instanceof MatcError && thrown.kind === "material", `${file}: not a MatcError: ${thrown}`);
+    for (const line of lines) check(shown.includes(line), `${file}: missing ${line}\n  got: ${shown}`);
+  }
+  check(!/[\x00-\x09\x0b-\x1f\x7f]/.test(shown), `${file}: a control character in the message`);
+  // The instance still works.
+  check(matc_.compile(matc_.parseMaterial({ name: "probe", ior: { n: 1.5, k: 3 } })).coefficients.length === 3,
+        `${file}: the instance no longer compiles`);
+}
+console.log(`${cases} catalogue cases through the JS API`);
+
+// Arguments: refused with the argument named, the instance usable after.
+const gold = matc_.compile(matc_.parseMaterial({ name: "gold", spectral: { preset: "Au" } }));
+const throwsWith = (call, pattern, what) => {
+  try {
+    call();
+    check(false, `${what}: no error`);
+  } catch (error) {
+    check(pattern.test(error.message), `${what}: ${error.message}`);
+  }
+};
+throwsWith(() => gold.fresnel([0.5, 2]), /mu: element 1 is 2; a number in \[0, 1\]/, "mu out of range");
+throwsWith(() => gold.fresnel([NaN]), /mu: element 0 is nan/, "NaN");
+throwsWith(() => gold.fresnel("0.5"), /mu: a number or an array/, "a string mu");
+throwsWith(() => gold.fbar([0.5], [0.5, 0.5]), /one roughness per NdotV/, "fbar lengths");
+throwsWith(() => matc_.compile(gold.material, { basis: "nope\u001b[31m" }), /basis: 'nope\\x1B\[31m' is not one of powers/, "basis");
+throwsWith(() => matc_.compile(gold.material, { colour: "x" }), /unknown option 'colour'/, "an unknown option");
+throwsWith(() => matc_.textOutputs().materialSource("msl", gold), /language: 'msl' is not one of glsl, hlsl, wgsl/, "language");
+throwsWith(() => matc_.parseMaterial(42), /input: a string/, "a number as the input");
+const cyclic = {};
+cyclic.self = cyclic;
+throwsWith(() => matc_.parseMaterial(cyclic), /not representable as JSON/, "a cyclic object");
+throwsWith(() => matc_.parseMaterial("{\"name\": \"a\0b\"}"), /error/, "a NUL");
+throwsWith(() => matc_.parseMaterial("\uD800"), /error/, "a lone surrogate");
+check(gold.fresnel(1).length === 3, "usable after the refusals");
+const coated = matc_.compile(matc_.parseMaterial({ name: "c", spectral: { preset: "Cu" }, coat: { ior: 1.5 } }));
+const lobes = coated.coatedFresnel([0.25, 1]);
+const total = coated.fresnel([0.25, 1]);
+check(lobes.base.length === 6 && lobes.coat.length === 2 &&
+      total.every((v, i) => Math.abs(v - (lobes.base[i] + lobes.coat[Math.floor(i / 3)])) < 1e-15),
+      "a coated material's lobes sum to its F");
+throwsWith(() => gold.coatedFresnel([0.5]), /has no coat/, "lobes of a bare metal");
+gold.dispose();
+throwsWith(() => gold.fresnel(0.5), /used after dispose/, "after dispose()");
+
+// The declarations: a strict TypeScript program against the installed package; each
+// @ts-expect-error line must be an error, so declarations of `any` fail the check too.
+fs.writeFileSync(path.join(work, "usage.ts"), `
+import { createMatc, MatcError, type CompiledMaterial, type Diagnostic } from "matc";
+const matc = await createMatc();
+const gold: CompiledMaterial = matc.compile(matc.parseMaterial({ name: "gold", spectral: { preset: "Au" } }),
+                                            { basis: "powers", colorSpace: "acescg" });
+const f: Float64Array = gold.fresnel([0, 0.5, 1]);
+const red: Float64Array = gold.coefficients[0];
+const glsl: string = matc.textOutputs().materialSource("glsl", gold);
+const first: Diagnostic | undefined = gold.diagnostics[0];
+try { matc.parseMaterials("{}"); } catch (error) { if (error instanceof MatcError) console.log(error.diagnostics.length); }
+// @ts-expect-error: a language matc does not write
+matc.textOutputs().materialSource("msl", gold);
+// @ts-expect-error: cosines are numbers
+gold.fresnel("0.5");
+// @ts-expect-error: compile takes a Material
+matc.compile(gold);
+console.log(f, red, glsl, first, gold.accuracy.maxError, gold.coat?.ior);
+`);
+const tsc = spawnSync(path.join(root, "tests", "js", "node_modules", ".bin", "tsc"),
+                      ["--strict", "--noEmit", "--target", "es2022", "--module", "es2022", "--moduleResolution", "bundler",
+                       "--lib", "es2022,dom", "usage.ts"], { cwd: work, encoding: "utf8" });
+check(tsc.status === 0, `tsc on the declarations: ${tsc.stdout}${tsc.stderr}`);
+
+fs.rmSync(work, { recursive: true, force: true });
+finish();
