@@ -8,6 +8,7 @@ import { execFileSync, spawnSync } from "node:child_process";
 import fs from "node:fs";
 import { tmpdir } from "node:os";
 import path from "node:path";
+import { gzipSync } from "node:zlib";
 import { check, finish } from "./report.mjs";
 
 const [tarball, matc, apiDump, root] = process.argv.slice(2).map((arg) => path.resolve(arg));
@@ -22,6 +23,11 @@ execFileSync("npm", ["install", "--offline", "--no-audit", "--no-fund", "--logle
 const { createMatc, MatcError } = await import(path.join(work, "node_modules", "matc", "index.mjs"));
 check(fs.existsSync(path.join(work, "node_modules", "matc", "tables", "matc_lut.ktx2")), "the package has its LUT");
 const matc_ = await createMatc();
+// The binary's size target (docs/web.md): at most 1 MiB gzipped.
+const wasmBytes = fs.readFileSync(path.join(work, "node_modules", "matc", "matc.wasm"));
+const gzipped = gzipSync(wasmBytes, { level: 9 }).length;
+check(gzipped <= 1 << 20, `matc.wasm is ${gzipped} bytes gzipped, over 1 MiB`);
+console.log(`matc.wasm: ${wasmBytes.length} bytes, ${gzipped} gzipped`);
 
 // The requests: the examples (by their file names, as `matc -o` names them), every preset bare
 // and coated, and other options.
