@@ -113,4 +113,5 @@ export declare function createMatc(options?: {
   locateFile?: (path: string, prefix: string) => string;
 }): Promise<Matc>;
 
-export declare const tableFiles: { lut: string; coefficientTable: string; ltc: string };
+export interface TableUrls { lut: string; coefficientTable: string; ltc: string }
+export declare const tableFiles: { ktx2: TableUrls; raw: TableUrls };

@@ -195,9 +195,4 @@ export async function createMatc({ wasmBinary, locateFile } = {}) {
   return new Matc(await createMatcModule(options));
 }
 
-// The shared tables' files in the package (tables/): URLs for a page's loader.
-export const tableFiles = {
-  lut: new URL("./tables/matc_lut.ktx2", import.meta.url).href,
-  coefficientTable: new URL("./tables/matc_coefficient_table.ktx2", import.meta.url).href,
-  ltc: new URL("./tables/matc_ltc.ktx2", import.meta.url).href,
-};
+export { tableFiles } from "./tables.mjs";

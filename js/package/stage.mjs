@@ -29,12 +29,22 @@ fs.copyFileSync(path.join(here, "README.md"), path.join(outDir, "README.md"));
 fs.writeFileSync(path.join(outDir, "index.mjs"),
                  fs.readFileSync(path.join(here, "index.mjs"), "utf8").replaceAll("@MATC_VERSION@", version));
 for (const file of ["matc.mjs", "matc.wasm"]) fs.copyFileSync(path.join(wasmDir, file), path.join(outDir, file));
+// The engine integrations (one source: the tests run these files).
+for (const file of ["matc-build.mjs", "tables.mjs"]) fs.copyFileSync(path.join(here, file), path.join(outDir, file));
+for (const [folder, files] of [["three", ["matc-three.mjs", "matc-three-webgpu.mjs", "textures.mjs", "README.md"]],
+                               ["babylon", ["matc-babylon.mjs", "README.md"]]]) {
+  fs.mkdirSync(path.join(outDir, folder));
+  for (const file of files) fs.copyFileSync(path.join(here, folder, file), path.join(outDir, folder, file));
+}
 
-// The tables of the default build, as `matc` writes them (KTX2, with their .json descriptions).
+// The tables of the default build, as `matc` writes them (KTX2 and raw, each with its .json).
 const tables = path.join(outDir, "tables");
-execFileSync(matc, ["-q", "--shared-only", "--emit", "lut,coefficient-table,ltc", "-o", tables], { stdio: "inherit" });
+for (const format of ["ktx2", "raw"]) {
+  execFileSync(matc, ["-q", "--shared-only", "--emit", "lut,coefficient-table,ltc", "--lut", format, "-o", tables],
+               { stdio: "inherit" });
+}
 for (const file of fs.readdirSync(tables)) {
-  if (!/^matc_(lut|coefficient_table|ltc)\.ktx2(\.json)?$/.test(file)) {
+  if (!/^matc_(lut|coefficient_table|ltc)\.(ktx2|bin)(\.json)?$/.test(file)) {
     console.error(`stage.mjs: unexpected table file ${file}`);
     process.exit(1);
   }

@@ -63,7 +63,7 @@ function chromiumPath() {
   throw new Error("chromium not found (scripts/install-deps.sh installs Debian's chromium)");
 }
 
-const kTypes = { js: "text/javascript", mjs: "text/javascript", json: "application/json",
+const kTypes = { js: "text/javascript", mjs: "text/javascript", json: "application/json", wasm: "application/wasm",
                  html: "text/html", glsl: "text/plain" };
 
 // By default the page runs under Chromium's virtual time and its DOM is read when it is done.

@@ -1,4 +1,4 @@
-// matc's Fresnel inside Babylon.js's PBRMaterial (examples/web/babylon/matc-babylon.mjs, a
+// matc's Fresnel inside Babylon.js's PBRMaterial (js/package/babylon/matc-babylon.mjs, a
 // material plugin), rendered by Babylon's WebGL2 engine in headless Chromium into a float render
 // target and compared, at probe pixels, with what the CPU runtime (`matc eval`) predicts, to 1e-4
 // (relative above 1): under a white environment, a point light and a rect area light (also at the
@@ -37,6 +37,7 @@ import { RawCubeTexture } from "@babylonjs/core/Materials/Textures/rawCubeTextur
 import { RenderTargetTexture } from "@babylonjs/core/Materials/Textures/renderTargetTexture.js";
 import { ShaderStore } from "@babylonjs/core/Engines/shaderStore.js";
 import { read as readKtx2 } from "ktx-parse";
+import { probeBuild } from "/checks/page-probe-build.mjs";
 import { loadMatcBuild, useMatcFresnel } from "/web/babylon/matc-babylon.mjs";
 import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";
 `,
@@ -55,7 +56,8 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
   camera.fov = Math.PI / 2;
   camera.minZ = 0.1;
   camera.maxZ = 10;
-  const build = await loadMatcBuild("/out/", scene);
+  const { build, directoryBuild, loadProbeMaterial } =
+      await probeBuild(out, config, (source) => loadMatcBuild(source, scene));
   const constant = (scene, rgb) => new RawTexture(new Float32Array([...rgb, 1]), 1, 1, Constants.TEXTUREFORMAT_RGBA,
                                                   scene, false, false, Constants.TEXTURE_NEAREST_SAMPLINGMODE,
                                                   Constants.TEXTURETYPE_FLOAT);
@@ -67,7 +69,7 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
                           false, Constants.TEXTURE_BILINEAR_SAMPLINGMODE, Constants.TEXTURETYPE_FLOAT);
   };
   const materials = {};
-  for (const name of config.materials) materials[name] = await build.loadMaterial(name);
+  for (const name of config.materials) materials[name] = await loadProbeMaterial(name);
   for (const render of config.renders) {
     const made = [];  // what this render adds to the scene, disposed after it
     const sources = {
@@ -132,7 +134,7 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
   }
   const original = ShaderStore.IncludesShadersStore.lightFragment;
   await checkBadInputs(out, {
-    loadMatcBuild: (url) => loadMatcBuild(url, scene), build, material: materials.beryllium,
+    loadMatcBuild: (url) => loadMatcBuild(url, scene), build: directoryBuild, material: materials.beryllium,
     coated: materials[config.coated],
     texture: constant(scene, [1, 1, 1]),
     useMatc: (source, options) => useMatcFresnel(new PBRMaterial("refused", scene), build, source, options),

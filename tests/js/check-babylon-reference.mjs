@@ -1,4 +1,4 @@
-// Babylon.js's PBRMaterial with matc's Fresnel (examples/web/babylon) and the stock one (metallic
+// Babylon.js's PBRMaterial with matc's Fresnel (js/package/babylon) and the stock one (metallic
 // 1, albedo = the material's F0, Schlick's Fresnel), both against the project's Monte-Carlo
 // reference of the same scene (tests/js/engine-scene.mjs) run as a Babylon ShaderMaterial, in
 // headless Chromium (Babylon's WebGL2 engine), for the Figure 2 material, beryllium and the

@@ -1,4 +1,4 @@
-// matc's Fresnel inside three.js's own MeshPhysicalMaterial (examples/web/three/matc-three.mjs),
+// matc's Fresnel inside three.js's own MeshPhysicalMaterial (js/package/three/matc-three.mjs),
 // rendered by WebGLRenderer in headless Chromium into a float target and compared, at probe
 // pixels, with what the CPU runtime (`matc eval`) predicts for the same normal, view, roughness
 // and light, to 1e-4 (relative above 1):
@@ -24,6 +24,7 @@ import { RectAreaLightUniformsLib } from "three/addons/lights/RectAreaLightUnifo
 import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three.mjs";
 import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";
 import { probeScene } from "/checks/three-scene-page.mjs";
+import { probeBuild } from "/checks/page-probe-build.mjs";
 `,
   body: `
   out.renders = {};
@@ -32,7 +33,7 @@ import { probeScene } from "/checks/three-scene-page.mjs";
   renderer.debug.onShaderError = (gl, program, vertex, fragment) =>
     out.errors.push(gl.getShaderInfoLog(fragment) || gl.getShaderInfoLog(vertex) || gl.getProgramInfoLog(program));
   RectAreaLightUniformsLib.init();
-  const build = await loadMatcBuild("/out/");
+  const { build, directoryBuild, loadProbeMaterial } = await probeBuild(out, config, loadMatcBuild);
   const target = new THREE.WebGLRenderTarget(${kProbeSize}, ${kProbeSize}, { type: THREE.FloatType });
   const camera = new THREE.PerspectiveCamera(90, 1, 0.1, 10);
   camera.position.set(0, 0, 1);
@@ -49,7 +50,7 @@ import { probeScene } from "/checks/three-scene-page.mjs";
   const ktx2 = new KTX2Loader().detectSupport(renderer);
   const baked = async (name) => ktx2.loadAsync("/baked/" + name);
   const sources = {};
-  for (const name of config.materials) sources[name] = { material: await build.loadMaterial(name) };
+  for (const name of config.materials) sources[name] = { material: await loadProbeMaterial(name) };
   sources.textured = { reflectivityMap: constant(config.textured.reflectivity),
                        edgeTintMap: constant(config.textured.edgeTint) };
   sources.baked = { baked: { c2Map: await baked("probe_c2.ktx2"), c3Map: await baked("probe_c3.ktx2"),
@@ -70,7 +71,7 @@ import { probeScene } from "/checks/three-scene-page.mjs";
   }
   const original = THREE.ShaderChunk.lights_physical_pars_fragment;
   await checkBadInputs(out, {
-    loadMatcBuild, build, material: sources.beryllium.material, coated: sources[config.coated].material,
+    loadMatcBuild, build: directoryBuild, material: sources.beryllium.material, coated: sources[config.coated].material,
     texture: constant([1, 1, 1]),
     useMatc: (source, options) => useMatcFresnel(new THREE.MeshPhysicalMaterial(), build, source, options),
     changeEngine: () => {

@@ -1,4 +1,4 @@
-// three.js's MeshPhysicalMaterial with matc's Fresnel (examples/web/three) and the stock one
+// three.js's MeshPhysicalMaterial with matc's Fresnel (js/package/three) and the stock one
 // (F0 = the material's F0, Schlick's Fresnel), both against the project's Monte-Carlo reference of
 // the same scene (tests/js/engine-scene.mjs: a sphere under an environment map, a point light and
 // a rect area light), rendered by WebGLRenderer in headless Chromium for the Figure 2 material,

@@ -1,4 +1,4 @@
-// matc's Fresnel in three.js's WebGPURenderer (examples/web/three/matc-three-webgpu.mjs: three's
+// matc's Fresnel in three.js's WebGPURenderer (js/package/three/matc-three-webgpu.mjs: three's
 // PhysicalLightingModel with matc's WGSL library through wgslFn), on WebGPU in headless Chromium
 // (Dawn on SwiftShader), at the probe pixels of tests/js/engine-probes.mjs under the white
 // environment, the point light and the rect area light (matc's LTC, and at the quality level), for

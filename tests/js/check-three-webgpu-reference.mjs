@@ -1,4 +1,4 @@
-// three.js's WebGPURenderer with matc's Fresnel (examples/web/three/matc-three-webgpu.mjs) and its
+// three.js's WebGPURenderer with matc's Fresnel (js/package/three/matc-three-webgpu.mjs) and its
 // stock MeshPhysicalNodeMaterial (F0 = the material's F0, Schlick's Fresnel), both against the
 // project's Monte-Carlo reference of the scene of tests/js/engine-scene.mjs, in headless Chromium
 // (WebGPU: Dawn on SwiftShader), for the Figure 2 material, beryllium and the textured inlay

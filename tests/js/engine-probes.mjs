@@ -289,13 +289,20 @@ export function checkFailures(failures) {
 // engine: { name, page, alphaOf (its GGX alpha for a roughness), rect: { light (for the page),
 // corners (world space), compensated } (where it renders rect lights) }; optionally runPage
 // options (realTime, browserArgs).
-export async function runProbeCheck(engine, [matc, materialsDir, webDir]) {
+// With --compile-in-page after them, webDir is the staged npm package (build/npm) and the page
+// compiles the probe materials itself (tests/js/page-probe-build.mjs); the renders are those of
+// compiled materials (the textured and baked sources are the build directory's).
+export async function runProbeCheck(engine, [matc, materialsDir, webDir, mode]) {
   const dir = mkdtempSync(join(tmpdir(), "matc-engine-probes-"));
   try {
     const { out, roots } = prepareProbeBuilds(matc, materialsDir, dir);
-    const renders = probeRenders();
-    const config = { materials: [...kProbeMaterials, kProbeCoated], coated: kProbeCoated, pixels: kProbePixels, renders, point: kPointLight,
-                     rect: engine.rect?.light, textured: kTextured };
+    const materials = [...kProbeMaterials, kProbeCoated];
+    const compileInPage = mode === "--compile-in-page";
+    const renders = probeRenders().filter((render) => !compileInPage || materials.includes(render.source));
+    const materialTexts = Object.fromEntries(
+      materials.map((name) => [name, readFileSync(join(materialsDir, `${name}.json`), "utf8")]));
+    const config = { materials, coated: kProbeCoated, pixels: kProbePixels, renders, point: kPointLight,
+                     rect: engine.rect?.light, textured: kTextured, compileInPage, materialTexts };
     const result = await runPage({ html: engine.page(config), roots: { ...kWebRoots, web: webDir, ...roots }, dir,
                                    ...(engine.runPage ?? {}) });
     check(result.errors.length === 0, `${engine.name}: ${result.errors.join("\n")}`);
@@ -303,7 +310,8 @@ export async function runProbeCheck(engine, [matc, materialsDir, webDir]) {
                                       coatVisibility: engine.coatVisibility, rect: engine.rect, renders });
     const worst = compareProbes(result.renders ?? {}, expected);
     const refused = checkFailures(result.failures ?? {});
-    console.log(`${engine.label} with matc's Fresnel: ${renders.length} renders x ` +
+    console.log(`${engine.label} with matc's Fresnel${compileInPage ? " (materials compiled in the page)" : ""}: ` +
+                `${renders.length} renders x ` +
                 `${kProbePixels.length} probes, largest difference from the CPU runtime ` +
                 `${worst.toExponential(2)}; ${refused} bad inputs checked`);
   } finally {

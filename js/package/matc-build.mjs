@@ -1,9 +1,20 @@
 // What the web engine integrations share (three/matc-three.mjs, babylon/matc-babylon.mjs): reading
 // a matc build directory in a browser (manifest, shader library, tables, compiled materials,
-// each checked against the others) and patching an engine's shader text at anchors that must be
-// found exactly once. Engine-neutral: tables come back as typed arrays for the engine's own
-// texture class. KTX2 containers are read with ktx-parse (npm, the reader three.js bundles).
-import { read as readKtx2 } from "ktx-parse";
+// each checked against the others), or making the same from materials compiled in the page by
+// the package's WebAssembly compiler, and patching an engine's shader text at anchors that must
+// be found exactly once. Engine-neutral: tables come back as typed arrays for the engine's own
+// texture class. KTX2 containers are read with ktx-parse (npm, the reader three.js bundles),
+// imported when a KTX2 table is read: raw tables (the package's) need nothing else.
+import { tableFiles } from "./tables.mjs";
+
+async function ktx2Reader() {
+  try {
+    return (await import("ktx-parse")).read;
+  } catch (error) {
+    throw new MatcWebError(`KTX2 tables need the ktx-parse package (${error.message}); install it, or ` +
+                           "compile with --lut raw");
+  }
+}
 
 // The matc version whose outputs this code reads (matc_version in the manifest).
 export const kMatcVersion = "0.1.0";
@@ -171,6 +182,7 @@ async function loadTable(url, entry, channels) {
   const bytes = new Uint8Array(await (await fetchChecked(url, hint)).arrayBuffer());
   let table;
   if (entry.file.endsWith(".ktx2")) {
+    const readKtx2 = await ktx2Reader();
     let container;
     try {
       container = readKtx2(bytes);
@@ -230,7 +242,7 @@ export async function loadMatcBuildFiles(url, { language = "glsl" } = {}) {
                            `${manifest.matc_version}; rerun matc with this output directory`);
   }
   return {
-    url: base.href, manifest, library, basis: manifest.basis,
+    url: base.href, manifest, language, library, basis: manifest.basis,
     lut: await loadTable(at(manifest.lut.file), manifest.lut, 4),
     ltc: emitted.has("ltc") ? await loadTable(at(manifest.ltc_table.file), manifest.ltc_table, 4) : null,
     coefficientTable: emitted.has("coefficient-table")
@@ -250,6 +262,66 @@ export async function loadMatcBuildFiles(url, { language = "glsl" } = {}) {
                coat: material.coat ? await loadCoat(material, at(`${name}.${language}`), file) : null };
     },
   };
+}
+
+// The same as loadMatcBuildFiles for materials compiled in the page by the package's compiler
+// (`createMatc()`, no `matc -o` step): the shader library from `matc.textOutputs(options)`, the
+// package's tables (raw; `tables` names others: { lut, ltc, coefficientTable } URLs of table files
+// with their .json beside them, as `matc -o --lut raw` writes them), and `loadMaterial(compiled)`
+// taking a CompiledMaterial instead of a name.
+export async function compiledMatcBuildFiles(matc, { language = "glsl", options = {}, tables = tableFiles.raw } = {}) {
+  const texts = matc.textOutputs(options);
+  const library = texts.librarySource(language);
+  const table = async (url, channels) => {
+    const sidecar = await fetchJson(`${url}.json`, "the package's tables are in its tables/ folder");
+    const entry = { file: url, size: sidecar.size?.[0], precision: sidecar.precision };
+    return { sidecar, table: await loadTable(url, entry, channels) };
+  };
+  const lut = await table(tables.lut, 4);
+  const basis = lut.sidecar.basis;
+  if (lut.sidecar.matc_version !== kMatcVersion) {
+    throw new MatcWebError(`${tables.lut}: a table from matc ${lut.sidecar.matc_version}; this integration ` +
+                           `reads matc ${kMatcVersion}`);
+  }
+  const url = `matc:compiled/${language}/${basis}`;
+  return {
+    url, manifest: { matc_version: kMatcVersion, basis, emit: [language, "json", "lut", "ltc", "coefficient-table"] },
+    language, library, basis, lut: lut.table,
+    ltc: tables.ltc ? (await table(tables.ltc, 4)).table : null,
+    coefficientTable: tables.coefficientTable ? (await table(tables.coefficientTable, 2)).table : null,
+    // { name, basis, coefficients, coat } of a CompiledMaterial, as loadMatcBuildFiles' loadMaterial
+    // gives for a <name>.json.
+    async loadMaterial(compiled) {
+      if (typeof compiled?.fresnel !== "function" || !Array.isArray(compiled.coefficients)) {
+        throw new MatcWebError("loadMaterial of a compiled build takes a CompiledMaterial (matc.compile())");
+      }
+      if (compiled.basis !== basis) {
+        throw new MatcWebError(`${compiled.name}: compiled with basis ${compiled.basis}, but the tables ` +
+                               `are ${basis}`);
+      }
+      const rows = (values) => values.map((row) => Array.from(row));
+      const coat = compiled.coat && {
+        weight: compiled.coat.weight, ior: compiled.coat.ior, roughness: compiled.coat.roughness,
+        color: Array.from(compiled.coat.color), underCoatCoefficients: rows(compiled.coat.underCoatCoefficients),
+        snippet: texts.materialSource(language, compiled),
+      };
+      return { name: compiled.name, basis, coefficients: rows(compiled.coefficients), coat: coat ?? null };
+    },
+  };
+}
+
+// The files of a build from either source the integrations' loadMatcBuild takes: a build
+// directory's URL, or compiledMatcBuildFiles' result (whose language must be `language`).
+export async function matcBuildFiles(source, language) {
+  if (typeof source === "string" || source instanceof URL) return loadMatcBuildFiles(String(source), { language });
+  if (typeof source?.library !== "string" || !source.lut || typeof source.loadMaterial !== "function") {
+    throw new MatcWebError("loadMatcBuild takes a build directory's URL or compiledMatcBuildFiles(matc)");
+  }
+  if (source.language !== language) {
+    throw new MatcWebError(`${source.url}: a ${source.language} build; this integration needs ${language} ` +
+                           `(compiledMatcBuildFiles(matc, { language: "${language}" }))`);
+  }
+  return source;
 }
 
 // A coated material's coat (its <name>.json's coat section) and its shader snippet, whose

@@ -13,7 +13,7 @@
 import * as THREE from "three";
 import { sampleTrilinearly, tableTexture } from "./textures.mjs";
 import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, checkCoatedAreaLights, declarationsGlsl,
-         loadMatcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
+         matcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -186,8 +186,10 @@ export function patchChunks(chunks, library, material = null) {
 
 // Reads a matc build directory (`matc -o DIR`, with glsl, json and lut among --emit; ltc for rect
 // area lights, coefficient-table for textured metals) and returns what useMatcFresnel takes.
-export async function loadMatcBuild(url) {
-  const files = await loadMatcBuildFiles(url);
+// `source`: a build directory's URL (`matc -o DIR`), or the files of materials compiled in the page
+// (compiledMatcBuildFiles(matc) of ../matc-build.mjs).
+export async function loadMatcBuild(source) {
+  const files = await matcBuildFiles(source, "glsl");
   return { ...files, lut: tableTexture(THREE, files.lut), ltc: files.ltc && tableTexture(THREE, files.ltc),
            coefficientTable: files.coefficientTable && tableTexture(THREE, files.coefficientTable) };
 }

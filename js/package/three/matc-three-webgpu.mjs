@@ -15,7 +15,7 @@ import { BRDF_GGX, LTC_Evaluate, LTC_Uv, clearcoatNormalView, clearcoatRoughness
          normalView, positionView, positionViewDirection, roughness, step, texture, uniform, uv, vec3, vec4, wgsl,
          wgslFn } from "three/tsl";
 import { sampleTrilinearly, tableTexture } from "./textures.mjs";
-import { MatcWebError, checkAnchors, checkAreaLights, checkCoatedAreaLights, loadMatcBuildFiles, rgbOf,
+import { MatcWebError, checkAnchors, checkAreaLights, checkCoatedAreaLights, matcBuildFiles, rgbOf,
          sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
@@ -59,8 +59,10 @@ function checkLightingModel() {
 
 // Reads a matc build directory (`matc -o DIR`, with wgsl, json and lut among --emit; ltc for rect
 // area lights, coefficient-table for textured metals).
-export async function loadMatcBuild(url) {
-  const files = await loadMatcBuildFiles(url, { language: "wgsl" });
+// `source`: a build directory's URL (`matc -o DIR`), or the files of materials compiled in the page
+// (compiledMatcBuildFiles(matc, { language: "wgsl" }) of ../matc-build.mjs).
+export async function loadMatcBuild(source) {
+  const files = await matcBuildFiles(source, "wgsl");
   const lut = tableTexture(THREE, files.lut);
   const ltc = files.ltc && tableTexture(THREE, files.ltc);
   const coefficientTable = files.coefficientTable && tableTexture(THREE, files.coefficientTable);

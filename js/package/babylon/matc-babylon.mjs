@@ -18,7 +18,7 @@ import { Vector3, Vector4 } from "@babylonjs/core/Maths/math.vector.js";
 import { AbstractEngine } from "@babylonjs/core/Engines/abstractEngine.js";
 import "@babylonjs/core/Shaders/pbr.fragment.js";  // registers the shader text the anchors are checked against
 import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, checkCoatedAreaLights, declarationsGlsl,
-         loadMatcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
+         matcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -193,8 +193,10 @@ function tableTexture(table, scene) {
 
 // Reads a matc build directory (`matc -o DIR`, with glsl, json and lut among --emit; ltc for rect
 // area lights, coefficient-table for textured metals) into textures of `scene`.
-export async function loadMatcBuild(url, scene) {
-  const files = await loadMatcBuildFiles(url);
+// `source`: a build directory's URL (`matc -o DIR`), or the files of materials compiled in the page
+// (compiledMatcBuildFiles(matc) of ../matc-build.mjs).
+export async function loadMatcBuild(source, scene) {
+  const files = await matcBuildFiles(source, "glsl");
   return { ...files, lut: tableTexture(files.lut, scene), ltc: files.ltc && tableTexture(files.ltc, scene),
            coefficientTable: files.coefficientTable && tableTexture(files.coefficientTable, scene) };
 }
