@@ -35,11 +35,16 @@ mtlx_corpus=$(mktemp -d)
 trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus"' EXIT
 build-fuzz/tests/fuzz/matc_materialx_fuzzer -max_total_time=15 -max_len=4096 \
   -dict=tests/fuzz/materialx.dict -print_final_stats=1 "$mtlx_corpus" tests/fuzz/corpus_materialx 2>&1 | tail -n 8
+# The public API as the faces call it (options by name, any document, curves, texts): 10 s.
+api_corpus=$(mktemp -d)
+trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus" "$api_corpus"' EXIT
+build-fuzz/tests/fuzz/matc_public_api_fuzzer -max_total_time=10 -max_len=4096 \
+  -dict=tests/fuzz/material.dict -print_final_stats=1 "$api_corpus" tests/fuzz/corpus 2>&1 | tail -n 8
 # matc bake's image readers and asset parser: seeds written by matc_catalogue_images (no image is
 # stored in the repository), each once per mode (first byte: sRGB, linear, asset text); 15 s.
 image_corpus=$(mktemp -d)
 image_seeds=$(mktemp -d)
-trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus" "$image_corpus" "$image_seeds"' EXIT
+trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus" "$api_corpus" "$image_corpus" "$image_seeds"' EXIT
 build-fuzz/tests/matc_catalogue_images "$image_seeds"
 for seed in "$image_seeds"/*; do
   for mode in 0 1; do

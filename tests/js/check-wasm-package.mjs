@@ -21,6 +21,16 @@ fs.writeFileSync(path.join(work, "package.json"), JSON.stringify({ name: "probe"
 execFileSync("npm", ["install", "--offline", "--no-audit", "--no-fund", "--loglevel=error", tarball],
              { cwd: work, stdio: "inherit" });
 const { createMatc, MatcError } = await import(path.join(work, "node_modules", "matc", "index.mjs"));
+// The package's names resolve from a project that installed it (the engine modules need their
+// engine, which this project lacks: their files are checked to be there).
+const resolved = spawnSync(process.execPath, ["--input-type=module", "-e",
+  "const m = await import('matc'); const b = await import('matc/build'); " +
+  "console.log(typeof m.createMatc, typeof b.compiledMatcBuildFiles, m.version);"], { cwd: work, encoding: "utf8" });
+check(resolved.stdout.trim() === `function function ${JSON.parse(fs.readFileSync(path.join(work, "node_modules", "matc", "package.json"))).version}`,
+      `import "matc" and "matc/build" from the project: ${resolved.stdout}${resolved.stderr}`);
+for (const file of ["three/matc-three.mjs", "three/matc-three-webgpu.mjs", "babylon/matc-babylon.mjs", "tables/matc_lut.bin"]) {
+  check(fs.existsSync(path.join(work, "node_modules", "matc", file)), `the package lacks ${file}`);
+}
 check(fs.existsSync(path.join(work, "node_modules", "matc", "tables", "matc_lut.ktx2")), "the package has its LUT");
 const matc_ = await createMatc();
 // The binary's size target (docs/web.md): at most 1 MiB gzipped.

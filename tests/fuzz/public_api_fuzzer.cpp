@@ -1,0 +1,96 @@
+// libFuzzer target: the public API (matc/matc.h) as the WebAssembly and other faces call it, on
+// any bytes. The first byte picks the options (the names the faces pass through, a wrong one
+// among them) and the document kind; the rest is the document. What parses is compiled, its
+// curves evaluated on cosines read from the input (NaN and values outside [0, 1] among them) and
+// its texts written. Allowed outcomes: MaterialError (an error, every line printable),
+// std::invalid_argument for a bad option or cosine, std::logic_error for a bare metal's lobes;
+// anything else (another exception, a crash, a sanitizer report) is a finding.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "matc/matc.h"
+
+namespace {
+
+void require_printable(std::string_view text) {
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7F) __builtin_trap();
+  }
+}
+
+void require_printable(const std::vector<matc::api::Diagnostic>& diagnostics) {
+  for (const matc::api::Diagnostic& diagnostic : diagnostics) {
+    for (const std::string* part : {&diagnostic.text, &diagnostic.path, &diagnostic.field,
+                                    &diagnostic.message, &diagnostic.allowed})
+      require_printable(*part);
+  }
+}
+
+// Cosines from the input's bytes, 8 at a time as doubles (NaN, infinities and all), then a few
+// in range.
+std::vector<double> cosines_of(std::string_view text) {
+  std::vector<double> mu = {0.0, 0.5, 1.0};
+  for (std::size_t i = 0; i + 8 <= text.size() && mu.size() < 16; i += 8) {
+    double value = 0.0;
+    std::memcpy(&value, text.data() + i, sizeof value);
+    mu.push_back(value);
+  }
+  return mu;
+}
+
+template <typename Call>
+void allow_invalid_argument(const Call& call) {
+  try {
+    call();
+  } catch (const std::invalid_argument& error) {
+    require_printable(error.what());
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
+  constexpr std::array<const char*, 4> kBases = {"", "paper", "f82", "no\x1b[31mbasis"};
+  constexpr std::array<const char*, 4> kSpaces = {"", "acescg", "lin_displayp3", "\xff"};
+  constexpr std::array<const char*, 2> kMappings = {"", "desaturate"};
+  const unsigned pick = data[0];
+  const matc::api::CompileOptions options{kBases[pick & 3], kSpaces[(pick >> 2) & 3],
+                                          kMappings[(pick >> 4) & 1]};
+  const std::string_view text(reinterpret_cast<const char*>(data) + 1, size - 1);
+  const char* path = (pick & 0x20) != 0 ? "fuzz.mtlx" : "fuzz.json";
+  std::vector<matc::api::Material> materials;
+  try {
+    materials = matc::api::parse_materials(text, path);
+  } catch (const matc::api::MaterialError& error) {
+    if (error.diagnostics().empty()) __builtin_trap();
+    require_printable(error.diagnostics());
+    return 0;
+  }
+  if (text.find('\0') != std::string_view::npos) __builtin_trap();  // a NUL is never accepted
+  const std::vector<double> mu = cosines_of(text);
+  for (const matc::api::Material& material : materials) {
+    require_printable(material.diagnostics());
+    allow_invalid_argument([&] {
+      const matc::api::CompiledMaterial compiled = matc::api::compile(material, options);
+      require_printable(compiled.diagnostics());
+      allow_invalid_argument([&] { (void)compiled.fresnel(mu); });
+      allow_invalid_argument([&] { (void)compiled.exact(mu); });
+      allow_invalid_argument([&] { (void)compiled.schlick(mu); });
+      allow_invalid_argument([&] { (void)compiled.f82_tint(mu); });
+      if (compiled.coat()) allow_invalid_argument([&] { (void)compiled.coated_fresnel(mu); });
+      const matc::api::TextOutputs texts(options);
+      for (const char* language : {"glsl", "hlsl", "wgsl"})
+        if (texts.material_source(language, compiled).empty()) __builtin_trap();
+      if (texts.material_json(compiled).empty()) __builtin_trap();
+    });
+  }
+  return 0;
+}
