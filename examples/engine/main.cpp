@@ -18,9 +18,7 @@
 #include "figure2_edge_tint.h"  // generated at build time by matc_add_materials
 #include "gold.h"
 
-#include "matc/compile/compile.h"
-#include "matc/emit/build.h"
-#include "matc/material/parse.h"
+#include "matc/matc.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/ltc.h"
@@ -48,23 +46,28 @@ matc::runtime::Coefficients from_header(const MatcFresnelCoefficients& c) {
 }
 
 // BEGIN api-example
-// Compiling a material held in memory: nothing is read from or written to disk.
-std::optional<matc::CompiledMaterial> compile_in_memory(const std::string& json) {
-  // The path only names the material in diagnostics (and resolves relative spectral files).
-  matc::ParseResult parsed = matc::parse_material(json, "memory/brushed_brass.json");
-  for (const matc::Diagnostic& diagnostic : parsed.diagnostics.items())
-    std::fprintf(stderr, "%s\n", matc::format_diagnostic(diagnostic).c_str());
-  if (!parsed.material) return std::nullopt;
-  return matc::compile_material(*parsed.material, matc::runtime::shipped_basis());
+// Compiling a material held in memory with the public API (matc/matc.h): nothing is read from or
+// written to disk.
+std::optional<matc::api::CompiledMaterial> compile_in_memory(const std::string& json) {
+  try {
+    // The path only names the material in diagnostics (and resolves relative spectral files).
+    const std::vector<matc::api::Material> materials =
+        matc::api::parse_materials(json, "memory/brushed_brass.json");
+    return matc::api::compile(materials.at(0));
+  } catch (const matc::api::MaterialError& error) {
+    std::fprintf(stderr, "%s\n", error.what());  // the lines `matc` prints, one per problem
+    return std::nullopt;
+  }
 }
 
-void emit_in_memory(const matc::CompiledMaterial& material) {
-  matc::BuildOptions options;  // what `matc` writes by default; options.lut.size etc. to change
-  options.lut.size = 32;       // a small table keeps this example fast
-  const matc::Build build(options);
-  const matc::MaterialOutputs outputs = build.material_outputs(material);
-  for (const matc::OutputFile& file : outputs.files)
-    std::printf("     %s: %zu bytes\n", file.name.c_str(), file.bytes.size());
+void emit_in_memory(const matc::api::CompiledMaterial& material) {
+  const matc::api::TextOutputs texts;  // what `matc` writes by default, byte for byte
+  for (const char* language : {"glsl", "hlsl", "wgsl"}) {
+    std::printf("     %s.%s: %zu bytes\n", material.name().c_str(), language,
+                texts.material_source(language, material).size());
+  }
+  std::printf("     %s.json: %zu bytes\n", material.name().c_str(),
+              texts.material_json(material).size());
 }
 // END api-example
 
@@ -170,7 +173,7 @@ void main() {
       const auto& basis = matc::runtime::shipped_shader_basis();
       const auto table_f = matc::runtime::evaluate_fresnel(texel, basis, i / 100.0);
       const auto compiled_f =
-          matc::runtime::evaluate_fresnel(brass->coefficients, basis, i / 100.0);
+          matc::runtime::evaluate_fresnel(brass->coefficients(), basis, i / 100.0);
       for (int c = 0; c < 3; ++c)
         worst = std::max(worst, std::abs(table_f[c] - compiled_f[c]));
     }
