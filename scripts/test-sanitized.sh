@@ -36,10 +36,16 @@ trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus"' EXIT
 build-fuzz/tests/fuzz/matc_materialx_fuzzer -max_total_time=15 -max_len=4096 \
   -dict=tests/fuzz/materialx.dict -print_final_stats=1 "$mtlx_corpus" tests/fuzz/corpus_materialx 2>&1 | tail -n 8
 # The public API as the faces call it (options by name, any document, curves, texts): 10 s.
+# Seeds: the material corpus behind an options byte (defaults; the paper basis in ACEScg).
 api_corpus=$(mktemp -d)
 trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus" "$api_corpus"' EXIT
+for seed in tests/fuzz/corpus/*; do
+  for options in 000 005; do
+    { printf "\\$options"; cat "$seed"; } >"$api_corpus/$(basename "$seed").$options"
+  done
+done
 build-fuzz/tests/fuzz/matc_public_api_fuzzer -max_total_time=10 -max_len=4096 \
-  -dict=tests/fuzz/material.dict -print_final_stats=1 "$api_corpus" tests/fuzz/corpus 2>&1 | tail -n 8
+  -dict=tests/fuzz/material.dict -print_final_stats=1 "$api_corpus" 2>&1 | tail -n 8
 # matc bake's image readers and asset parser: seeds written by matc_catalogue_images (no image is
 # stored in the repository), each once per mode (first byte: sRGB, linear, asset text); 15 s.
 image_corpus=$(mktemp -d)
