@@ -16,12 +16,14 @@ import { read as readKtx2 } from "ktx-parse";
 import { RectAreaLightTexturesLib } from "three/addons/lights/RectAreaLightTexturesLib.js";
 import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three-webgpu.mjs";
 import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";
-import { probeScene, webGpuRenderer } from "/checks/three-scene-page.mjs";`,
+import { probeScene, webGpuRenderer } from "/checks/three-scene-page.mjs";
+import { probeBuild } from "/checks/page-probe-build.mjs";`,
   body: `
   out.renders = {};
   recordConsoleErrors(out);
   const renderer = await webGpuRenderer(THREE, RectAreaLightTexturesLib);
-  const build = await loadMatcBuild("/out/");
+  const { build, directoryBuild, loadProbeMaterial } =
+      await probeBuild(out, config, loadMatcBuild, { language: "wgsl" });
   const target = new THREE.RenderTarget(${kProbeSize}, ${kProbeSize}, { type: THREE.FloatType });
   const camera = new THREE.PerspectiveCamera(90, 1, 0.1, 10);
   camera.position.set(0, 0, 1);
@@ -29,7 +31,7 @@ import { probeScene, webGpuRenderer } from "/checks/three-scene-page.mjs";`,
   white.mapping = THREE.EquirectangularReflectionMapping;
   white.needsUpdate = true;
   const materials = {};
-  for (const name of config.materials) materials[name] = await build.loadMaterial(name);
+  for (const name of config.materials) materials[name] = await loadProbeMaterial(name);
   const constant = (rgb) => {
     const texture = new THREE.DataTexture(new Float32Array([...rgb, 1]), 1, 1, THREE.RGBAFormat, THREE.FloatType);
     texture.needsUpdate = true;
@@ -64,7 +66,7 @@ import { probeScene, webGpuRenderer } from "/checks/three-scene-page.mjs";`,
   const lightingModel = THREE.PhysicalLightingModel.prototype;
   const original = lightingModel.indirectSpecular;
   await checkBadInputs(out, {
-    loadMatcBuild, build, material: materials.beryllium, coated: materials[config.coated], texture: white,
+    loadMatcBuild, build: directoryBuild, material: materials.beryllium, coated: materials[config.coated], texture: white,
     useMatc: (source, options) => useMatcFresnel(new THREE.MeshPhysicalNodeMaterial(), build, source, options),
     changeEngine: () => {
       // A three.js whose metal image lighting no longer goes through computeMultiscattering.
