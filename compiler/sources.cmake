@@ -52,6 +52,7 @@ set(MATC_CORE_SOURCES
   src/api/text_outputs.cpp
 )
 set(MATC_NATIVE_SOURCES
+  src/api/batch.cpp
   src/material/xml_well_formed.cpp
   src/basis/training_set.cpp
   src/basis/basis_polynomial_fit.cpp

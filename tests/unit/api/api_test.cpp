@@ -2,6 +2,8 @@
 // CLI's Build make, byte for byte; bad input is a MaterialError with the CLI's lines.
 #include "matc/matc.h"
 
+#include "matc/api/batch.h"
+
 #include <filesystem>
 #include <span>
 #include <stdexcept>
@@ -106,6 +108,37 @@ TEST(PublicApi, ArgumentsOutOfRangeAreNamed) {
   const matc::api::TextOutputs paper({"paper", "", ""});
   EXPECT_THROW(paper.material_source("glsl", compiled), std::invalid_argument);
   EXPECT_THROW(matc::api::TextOutputs().material_source("msl", compiled), std::invalid_argument);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(PublicApi, BatchRefusesBadOptionsBeforeWriting) {
+  const std::vector<matc::api::BatchSource> sources = {
+      matc::api::BatchSource::file(std::string(MATC_EXAMPLES_DIR) + "/gold.json")};
+  matc::api::BatchOptions options;
+  EXPECT_THROW(matc::api::compile_batch(sources, options), std::invalid_argument);  // no folder
+  const fs::path folder = fs::temp_directory_path() / "matc_api_batch_test";
+  fs::remove_all(folder);
+  options.output_directory = folder.string();
+  options.emit = {"glsl", "msl"};
+  EXPECT_THROW(matc::api::compile_batch(sources, options), std::invalid_argument);
+  EXPECT_FALSE(fs::exists(folder));
+  options.emit = {"glsl", "json"};
+  std::size_t diagnostics = 0;
+  matc::api::BatchEvents events;
+  events.diagnostics = [&](const std::vector<matc::api::Diagnostic>& items) {
+    diagnostics += items.size();
+  };
+  const matc::api::BatchResult result = matc::api::compile_batch(sources, options, events);
+  EXPECT_EQ(result.compiled, 1u);
+  EXPECT_EQ(result.failed, 0u);
+  EXPECT_GT(diagnostics, 0u);  // gold's note: its curve leaves [0, 1] in Rec.709
+  EXPECT_TRUE(fs::exists(folder / "gold.glsl"));
+  EXPECT_TRUE(fs::exists(folder / "gold.json"));
+  EXPECT_FALSE(fs::exists(folder / "gold.spv"));
+  fs::remove_all(folder);
 }
 
 }  // namespace
