@@ -21,6 +21,13 @@ if (manifest.version !== version) {
   process.exit(1);
 }
 
+// The engine integrations read builds of this version (matc-build.mjs's kMatcVersion).
+const integrationVersion = /kMatcVersion = "([^"]+)"/.exec(fs.readFileSync(path.join(here, "matc-build.mjs"), "utf8"))?.[1];
+if (integrationVersion !== version) {
+  console.error(`js/package/matc-build.mjs: kMatcVersion ${integrationVersion}, but the project is ${version}`);
+  process.exit(1);
+}
+
 fs.rmSync(outDir, { recursive: true, force: true });
 fs.mkdirSync(path.join(outDir, "tables"), { recursive: true });
 fs.copyFileSync(path.join(here, "package.json"), path.join(outDir, "package.json"));
