@@ -1,14 +1,9 @@
 #include "option_values.h"
 
-#include <array>
-
 namespace matc::python {
 
 ShaderLanguage shader_language_from_name(const std::string& name) {
-  constexpr std::array languages = {ShaderLanguage::glsl, ShaderLanguage::hlsl,
-                                    ShaderLanguage::wgsl};
-  for (const ShaderLanguage language : languages)
-    if (shader_language_name(language) == name) return language;
+  if (const auto language = matc::shader_language_from_name(name)) return *language;
   throw pybind11::value_error(fmt::format("language: '{}' is not one of glsl, hlsl, wgsl", name));
 }
 

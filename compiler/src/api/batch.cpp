@@ -3,13 +3,8 @@
 #include <set>
 #include <stdexcept>
 
-#include <fmt/format.h>
-#include <fmt/ranges.h>
-
 #include "checked_options.h"
-#include "matc/base/echoed_text.h"
 #include "matc/emit/build.h"
-#include "matc/options/option_names.h"
 #include "matc/pipeline/compile_batch.h"
 #include "matc/pipeline/output_sink.h"
 #include "public_diagnostics.h"
@@ -20,14 +15,8 @@ namespace {
 std::set<OutputKind> output_kinds(const std::vector<std::string>& names) {
   if (names.empty()) return all_output_kinds();
   std::set<OutputKind> kinds;
-  for (const std::string& name : names) {
-    const auto kind = option_value<OutputKind>(name);
-    if (!kind) {
-      throw std::invalid_argument(fmt::format("emit: '{}' is not one of {}", echoed(name),
-                                              fmt::join(option_name_list<OutputKind>(), ", ")));
-    }
-    kinds.insert(*kind);
-  }
+  for (const std::string& name : names)
+    kinds.insert(checked_option_value<OutputKind>("emit", name));
   return kinds;
 }
 

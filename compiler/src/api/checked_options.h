@@ -18,11 +18,16 @@
 namespace matc::api {
 
 template <typename Value>
-Value option_from_name(std::string_view option, std::string_view name, Value default_value) {
-  if (name.empty()) return default_value;
+Value checked_option_value(std::string_view option, std::string_view name) {
   if (const auto value = option_value<Value>(name)) return *value;
   throw std::invalid_argument(fmt::format("{}: '{}' is not one of {}", option, echoed(name),
                                           fmt::join(option_name_list<Value>(), ", ")));
+}
+
+// The same where an empty name means `default_value`.
+template <typename Value>
+Value option_from_name(std::string_view option, std::string_view name, Value default_value) {
+  return name.empty() ? default_value : checked_option_value<Value>(option, name);
 }
 
 inline runtime::BasisKind basis_of(const CompileOptions& options) {

@@ -22,9 +22,11 @@
 
 namespace matc::api {
 
-// The exact curves the coefficients were fitted to: the material in air and, for a coated one,
-// the metal under its coat and both layered (which refers to the other two).
-struct CompiledMaterial::Curves {
+// What the evaluations need beside the compiled value: the basis, and the exact curves the
+// coefficients were fitted to (the material in air and, for a coated one, the metal under its
+// coat and both layered, which refers to the other two).
+struct CompiledMaterial::Evaluation {
+  runtime::BasisKind basis = runtime::kDefaultBasis;
   std::unique_ptr<ReflectanceCurve> in_air;
   std::unique_ptr<ReflectanceCurve> under_coat;
   std::unique_ptr<ReflectanceCurve> layered;
@@ -67,18 +69,20 @@ const Lut& default_table(runtime::BasisKind basis) {
 
 }  // namespace
 
-CompiledMaterial::CompiledMaterial(Material material, std::string basis,
+CompiledMaterial::CompiledMaterial(Material material,
                                    std::shared_ptr<const matc::CompiledMaterial> value,
-                                   std::shared_ptr<const Curves> curves,
+                                   std::shared_ptr<const Evaluation> evaluation,
                                    std::vector<Diagnostic> diagnostics)
     : material_(std::move(material)),
-      basis_(std::move(basis)),
       value_(std::move(value)),
-      curves_(std::move(curves)),
+      evaluation_(std::move(evaluation)),
       diagnostics_(std::move(diagnostics)) {}
 
 const std::string& CompiledMaterial::name() const {
   return material_.name();
+}
+std::string CompiledMaterial::basis() const {
+  return std::string(runtime::basis_name(evaluation_->basis));
 }
 const CoefficientRows& CompiledMaterial::coefficients() const {
   return value_->coefficients;
@@ -109,8 +113,7 @@ std::optional<Coat> CompiledMaterial::coat() const {
 }
 
 std::vector<double> CompiledMaterial::fresnel(std::span<const double> mu) const {
-  const runtime::ShaderBasis& shader_basis =
-      runtime::shipped_shader_basis(basis_of({basis_, "", ""}));
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(evaluation_->basis);
   if (const auto& coat = value_->coat) {
     return rgb_per_cosine(mu, [&](double cosine) {
       return runtime::evaluate_coated_fresnel(value_->coefficients, coat->coefficients,
@@ -125,7 +128,7 @@ std::vector<double> CompiledMaterial::fresnel(std::span<const double> mu) const 
 }
 
 std::vector<double> CompiledMaterial::exact(std::span<const double> mu) const {
-  const ReflectanceCurve& curve = curves_->exact();
+  const ReflectanceCurve& curve = evaluation_->exact();
   return rgb_per_cosine(mu, [&](double cosine) { return curve.at(cosine); });
 }
 
@@ -151,8 +154,7 @@ CompiledMaterial::Lobes CompiledMaterial::coated_fresnel(std::span<const double>
         fmt::format("coated_fresnel: {} has no coat; fresnel gives its F", echoed(name())));
   }
   check_unit_interval("mu", mu);
-  const runtime::ShaderBasis& shader_basis =
-      runtime::shipped_shader_basis(basis_of({basis_, "", ""}));
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(evaluation_->basis);
   Lobes lobes{std::vector<double>(3 * mu.size()), std::vector<double>(mu.size())};
   for (std::size_t i = 0; i < mu.size(); ++i) {
     const runtime::CoatedFresnel f = runtime::evaluate_coated_fresnel(
@@ -173,7 +175,7 @@ std::vector<double> CompiledMaterial::fbar(std::span<const double> ndotv,
   }
   check_unit_interval("ndotv", ndotv);
   check_unit_interval("roughness", roughness);
-  const runtime::LutView table = default_table(basis_of({basis_, "", ""})).view();
+  const runtime::LutView table = default_table(evaluation_->basis).view();
   std::vector<double> rgb(3 * ndotv.size());
   for (std::size_t i = 0; i < ndotv.size(); ++i) {
     const Rgb value =
@@ -194,13 +196,14 @@ CompiledMaterial compile(const Material& material, const CompileOptions& options
   const matc::Material& value = material.value();
   auto compiled = std::make_shared<matc::CompiledMaterial>(
       compile_material(value, runtime::shipped_basis(basis), color));
-  auto curves = std::make_shared<CompiledMaterial::Curves>();
-  curves->in_air = make_reflectance_curve(value, color);
+  auto evaluation = std::make_shared<CompiledMaterial::Evaluation>();
+  evaluation->basis = basis;
+  evaluation->in_air = make_reflectance_curve(value, color);
   if (const auto& coat = compiled->coat) {
-    curves->under_coat = make_under_coat_curve(value, color.working_space);
-    curves->layered =
-        std::make_unique<LayeredCurve>(*curves->in_air, *curves->under_coat, coat->input.weight,
-                                       coat->input.ior, coat->input.color);
+    evaluation->under_coat = make_under_coat_curve(value, color.working_space);
+    evaluation->layered =
+        std::make_unique<LayeredCurve>(*evaluation->in_air, *evaluation->under_coat,
+                                       coat->input.weight, coat->input.ior, coat->input.color);
   }
   Diagnostics diagnostics;
   warn_if_poor_fit(*compiled, diagnostics);
@@ -208,8 +211,7 @@ CompiledMaterial compile(const Material& material, const CompileOptions& options
   std::vector<Diagnostic> all = material.diagnostics();
   for (Diagnostic& diagnostic : public_diagnostics(diagnostics))
     all.push_back(std::move(diagnostic));
-  return CompiledMaterial(material, std::string(runtime::basis_name(basis)), std::move(compiled),
-                          std::move(curves), std::move(all));
+  return CompiledMaterial(material, std::move(compiled), std::move(evaluation), std::move(all));
 }
 
 }  // namespace matc::api

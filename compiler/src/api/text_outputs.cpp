@@ -1,6 +1,5 @@
 #include "matc/api/text_outputs.h"
 
-#include <array>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -14,10 +13,7 @@ namespace matc::api {
 namespace {
 
 ShaderLanguage language_of(std::string_view name) {
-  for (const ShaderLanguage language :
-       {ShaderLanguage::glsl, ShaderLanguage::hlsl, ShaderLanguage::wgsl}) {
-    if (shader_language_name(language) == name) return language;
-  }
+  if (const auto language = shader_language_from_name(name)) return *language;
   throw std::invalid_argument(
       fmt::format("language: '{}' is not one of glsl, hlsl, wgsl", echoed(name)));
 }

@@ -18,10 +18,6 @@
 namespace matc {
 namespace {
 
-// The shader snippets, in the order their files are written.
-constexpr std::array<ShaderLanguage, 3> kShaderLanguages = {
-    ShaderLanguage::glsl, ShaderLanguage::hlsl, ShaderLanguage::wgsl};
-
 OutputKind output_kind_of(ShaderLanguage language) {
   switch (language) {
     case ShaderLanguage::hlsl:

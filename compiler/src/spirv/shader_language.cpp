@@ -14,4 +14,10 @@ std::string_view shader_language_name(ShaderLanguage language) {
   return "glsl";
 }
 
+std::optional<ShaderLanguage> shader_language_from_name(std::string_view name) {
+  for (const ShaderLanguage language : kShaderLanguages)
+    if (shader_language_name(language) == name) return language;
+  return std::nullopt;
+}
+
 }  // namespace matc

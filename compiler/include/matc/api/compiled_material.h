@@ -55,7 +55,7 @@ class CompiledMaterial {
  public:
   const Material& material() const { return material_; }
   const std::string& name() const;
-  const std::string& basis() const { return basis_; }
+  std::string basis() const;  // its name, e.g. "powers"
   const CoefficientRows& coefficients() const;
   Rgb f0() const;   // the exact F at normal incidence
   Rgb f82() const;  // the exact F at mu = 1/7 (about 82 degrees)
@@ -86,16 +86,15 @@ class CompiledMaterial {
 
   // The library's own value, for the library's implementation.
   const matc::CompiledMaterial& value() const { return *value_; }
-  struct Curves;
-  CompiledMaterial(Material material, std::string basis,
-                   std::shared_ptr<const matc::CompiledMaterial> value,
-                   std::shared_ptr<const Curves> curves, std::vector<Diagnostic> diagnostics);
+  struct Evaluation;
+  CompiledMaterial(Material material, std::shared_ptr<const matc::CompiledMaterial> value,
+                   std::shared_ptr<const Evaluation> evaluation,
+                   std::vector<Diagnostic> diagnostics);
 
  private:
   Material material_;
-  std::string basis_;
   std::shared_ptr<const matc::CompiledMaterial> value_;
-  std::shared_ptr<const Curves> curves_;
+  std::shared_ptr<const Evaluation> evaluation_;
   std::vector<Diagnostic> diagnostics_;
 };
 
