@@ -26,13 +26,15 @@ std::string options_key_of(const BuildOptions& options) {
 
 TextOutputs::TextOutputs(const BuildOptions& options, std::size_t coefficient_table_size,
                          const Lut* embedded_lut)
-    : options_(options),
+    : basis_(options.basis),
       options_key_(options_key_of(options)),
+      color_key_(fmt::format("color {} gamut {}", color_space_name(options.color.working_space),
+                             gamut_mapping_name(options.color.gamut_mapping))),
       inputs_hash_(ContentHash().add(options_key_).hex()) {
-  ShaderLibraryOptions library_options{options_.lut.size, coefficient_table_size, embedded_lut};
+  ShaderLibraryOptions library_options{options.lut.size, coefficient_table_size, embedded_lut};
   library_options.ltc_size = runtime::shipped_ltc_table().size;
-  library_options.analytic_lut = options_.basis;
-  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(options_.basis);
+  library_options.analytic_lut = basis_;
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(basis_);
   glsl_library_ =
       shader_library_source(ShaderLanguage::glsl, shader_basis, library_options, inputs_hash_);
   hlsl_library_ =
@@ -61,10 +63,7 @@ const std::string& TextOutputs::library_source(ShaderLanguage language) const {
 std::string TextOutputs::material_inputs_hash(const Material& material) const {
   ContentHash hash;
   // The working space changes every material's numbers but none of the shared tables.
-  hash.add(options_key_)
-      .add(fmt::format("color {} gamut {}", color_space_name(options_.color.working_space),
-                       gamut_mapping_name(options_.color.gamut_mapping)))
-      .add(material.source_text);
+  hash.add(options_key_).add(color_key_).add(material.source_text);
   if (const auto* spectral = std::get_if<SpectralInput>(&material.model);
       spectral && !spectral->resolved_file.empty()) {
     hash.add(spectral->file_bytes);
@@ -79,8 +78,7 @@ std::string TextOutputs::material_source(ShaderLanguage language,
 
 std::string TextOutputs::material_json(const CompiledMaterial& compiled,
                                        std::string_view inputs_hash) const {
-  nlohmann::ordered_json json =
-      compiled_material_json(compiled, runtime::shipped_basis(options_.basis));
+  nlohmann::ordered_json json = compiled_material_json(compiled, runtime::shipped_basis(basis_));
   json["inputs_hash"] = std::string(inputs_hash);
   return format_json(json);
 }

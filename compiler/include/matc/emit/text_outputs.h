@@ -38,8 +38,9 @@ class TextOutputs {
   std::string material_json(const CompiledMaterial& compiled, std::string_view inputs_hash) const;
 
  private:
-  BuildOptions options_;
-  std::string options_key_;
+  runtime::BasisKind basis_;
+  std::string options_key_;  // the options the shared files derive from
+  std::string color_key_;    // the working space and gamut mapping: every material's numbers
   std::string inputs_hash_;
   std::string glsl_library_;
   std::string hlsl_library_;
