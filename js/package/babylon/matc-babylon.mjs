@@ -5,7 +5,7 @@
 // a Babylon whose shaders changed makes it throw, never render wrongly. docs/web-engines.md says
 // what each replacement does.
 //
-//   import { loadMatcBuild, useMatcFresnel } from "./matc-babylon.mjs";
+//   import { loadMatcBuild, useMatcFresnel } from "matc/babylon";
 //   const build = await loadMatcBuild("matc-out/", scene);  // a `matc -o matc-out` build directory
 //   const gold = useMatcFresnel(new PBRMaterial("gold", scene), build,
 //                               { material: await build.loadMaterial("gold") });

@@ -6,7 +6,7 @@
 // compiled material, from maps through the coefficient table, or from `matc bake` textures. A
 // coated matc material's coat lobe replaces three's clearcoat.
 //
-//   import { loadMatcBuild, useMatcFresnel } from "./matc-three-webgpu.mjs";
+//   import { loadMatcBuild, useMatcFresnel } from "matc/three/webgpu";
 //   const build = await loadMatcBuild("matc-out/");
 //   const gold = useMatcFresnel(new THREE.MeshPhysicalNodeMaterial({ roughness: 0.3 }), build,
 //                               { material: await build.loadMaterial("gold") });

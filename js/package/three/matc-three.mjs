@@ -6,7 +6,7 @@
 // own shader chunks; a chunk that changed makes it throw, never render wrongly. README.md says
 // how to use it and docs/web-engines.md what each patch replaces.
 //
-//   import { loadMatcBuild, useMatcFresnel } from "./matc-three.mjs";
+//   import { loadMatcBuild, useMatcFresnel } from "matc/three";
 //   const build = await loadMatcBuild("matc-out/");  // a `matc -o matc-out` build directory
 //   const gold = new THREE.MeshPhysicalMaterial({ roughness: 0.3 });
 //   useMatcFresnel(gold, build, { material: await build.loadMaterial("gold") });
