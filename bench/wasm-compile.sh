@@ -19,14 +19,14 @@ for (const file of fs.readdirSync(examples).filter((f) => f.endsWith(".json")).s
   const text = fs.readFileSync(`${examples}/${file}`, "utf8");
   if (!/"file"\s*:/.test(text)) lines.push({ text, path: file });
 }
-const presets = ["Ag", "Al", "Au", "Be", "Co", "Cr", "Cu", "CuZn", "Fe", "Hg", "Ir", "K", "Li", "Mo", "Na",
-                 "Ni", "Pd", "Pt", "Rh", "Ta", "Ti", "V", "W", "Zn"];
-for (const preset of presets) {
-  lines.push({ text: JSON.stringify({ name: `m_${preset}`, spectral: { preset } }), path: `m_${preset}.json` });
-  lines.push({ text: JSON.stringify({ name: `c_${preset}`, spectral: { preset }, coat: { ior: 1.5 } }),
-               path: `c_${preset}.json` });
-}
-for (const line of lines) console.log(JSON.stringify(line));
+import(require("path").resolve(npm, "index.mjs")).then(async ({ createMatc }) => {
+  for (const preset of (await createMatc()).spectralPresets()) {
+    lines.push({ text: JSON.stringify({ name: `m_${preset}`, spectral: { preset } }), path: `m_${preset}.json` });
+    lines.push({ text: JSON.stringify({ name: `c_${preset}`, spectral: { preset }, coat: { ior: 1.5 } }),
+                 path: `c_${preset}.json` });
+  }
+  for (const line of lines) console.log(JSON.stringify(line));
+});
 JS
 count=$(wc -l <"$work/materials.jsonl")
 read -r native_compile native_texts _ < <("$build/bench/matc_api_compile_timing" "$work/materials.jsonl" 5)
@@ -37,7 +37,7 @@ node - "$count" "$native_compile" "$native_texts" "$wasm_compile" "$wasm_texts" 
 const [count, nc, nt, wc, wt, size, gzip, cpus, node] = process.argv.slice(2);
 const per = (ms) => (Number(ms) / Number(count)).toFixed(3);
 console.log(`Measured on ${cpus} CPU(s), one thread each, Node ${node}: ${count} materials (the example ` +
-            `materials that name no file, the 24 measured metals bare and under a 1.5 coat), the fastest of 5 passes:\n`);
+            `materials that name no file, every spectral preset bare and under a 1.5 coat), the fastest of 5 passes:\n`);
 console.log("| per material | native library (ms) | WebAssembly in Node (ms) | ratio |");
 console.log("|---|---:|---:|---:|");
 console.log(`| parse + compile | ${per(nc)} | ${per(wc)} | ${(Number(wc) / Number(nc)).toFixed(2)}x |`);
