@@ -220,16 +220,17 @@ function preparePlugin(build, source, areaLights) {
   // Babylon's rect lights have no coat lobe of their own: matc's LTC draws it.
   if (coat) checkCoatedAreaLights(source.material, areaLights, ["matc"]);
   const colour = (value) => new Vector3(...rgbOf(value));
-  return { build, source, kind, areaLights, coat, coatId: coat ? coatIdOf(source.material.name) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
+  return { build, source, kind, areaLights, coat, coatId: coat ? coatIdOf(source.material.coat.snippet) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
            coefficients: kind === "material" ? source.material.coefficients.map((row) => new Vector4(...row)) : null };
 }
 
-// Babylon keys its compiled effects on the defines: each coated material (its snippet's constants)
-// gets a number of its own.
+// Babylon keys its compiled effects on the defines: each coated material's snippet (its constants)
+// gets a number of its own; by text, not name, so that a material recompiled under the same name
+// with another coat gets a new effect.
 const kCoatIds = new Map();
-function coatIdOf(name) {
-  if (!kCoatIds.has(name)) kCoatIds.set(name, kCoatIds.size + 1);
-  return kCoatIds.get(name);
+function coatIdOf(snippet) {
+  if (!kCoatIds.has(snippet)) kCoatIds.set(snippet, kCoatIds.size + 1);
+  return kCoatIds.get(snippet);
 }
 
 // Babylon's base class asks for the shader code while it constructs the plugin, before the

@@ -291,8 +291,9 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc" } 
     }
     Object.assign(shader.uniforms, uniforms);
   };
-  // A coated material's constants are in its snippet: one program per coated material.
-  material.customProgramCacheKey = () => `matc:${define}:${areaLights}:${build.url}:${coat ? source.material.name : ""}`;
+  // A coated material's constants are in its snippet: one program per snippet (not per name: a
+  // material recompiled in the page under the same name with another coat needs its own).
+  material.customProgramCacheKey = () => `matc:${define}:${areaLights}:${build.url}:${coat ? source.material.coat.snippet : ""}`;
   material.needsUpdate = true;
   return material;
 }
