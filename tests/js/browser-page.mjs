@@ -64,12 +64,15 @@ function chromiumPath() {
 }
 
 const kTypes = { js: "text/javascript", mjs: "text/javascript", json: "application/json", wasm: "application/wasm",
-                 html: "text/html", glsl: "text/plain" };
+                 html: "text/html", css: "text/css", glsl: "text/plain" };
 
 // By default the page runs under Chromium's virtual time and its DOM is read when it is done.
 // realTime: the page runs on the wall clock and posts its result to /result (modulePage does), for
 // work virtual time does not settle (WebGPU's adapter and device); browserArgs: more Chromium flags.
-export async function runPage({ html, roots, dir, budgetMs = 120000, realTime = false, browserArgs = [] }) {
+// pagePath: where the page's HTML is served (default /page.html; a page that imports modules
+// relative to its own folder is served from there); fragment: the URL's #... part.
+export async function runPage({ html, roots, dir, budgetMs = 120000, realTime = false, browserArgs = [],
+                                pagePath = "/page.html", fragment = "" }) {
   let posted = null;
   let finished = () => {};
   const server = createServer((request, response) => {
@@ -86,7 +89,7 @@ export async function runPage({ html, roots, dir, budgetMs = 120000, realTime = 
       return;
     }
     try {
-      if (path === "/page.html") {
+      if (path === pagePath) {
         response.writeHead(200, { "content-type": "text/html" }).end(html);
         return;
       }
@@ -104,7 +107,7 @@ export async function runPage({ html, roots, dir, budgetMs = 120000, realTime = 
   });
   try {
     await new Promise((resolve) => server.listen(0, "127.0.0.1", resolve));
-    const url = `http://127.0.0.1:${server.address().port}/page.html`;
+    const url = `http://127.0.0.1:${server.address().port}${pagePath}${fragment}`;
     const dom = await new Promise((resolve, reject) => {
       const browser = spawn(chromiumPath(), [
         "--headless", "--no-sandbox", "--disable-dev-shm-usage", "--use-angle=swiftshader",

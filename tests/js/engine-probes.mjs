@@ -140,8 +140,10 @@ export function probeRenders() {
 // environment, irradiance x GGX x F(v.h) x compensation under the point light (alphaOf gives the
 // engine's GGX alpha for a roughness), the rect light's radiance (rect.light.intensity) x `L_ltc`
 // (rect.corners in world space; `L_ltc_following` at the quality level), times the compensation
-// too where the engine applies it to area lights (rect.compensated).
-export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibility, rect, renders }) {
+// too where the engine applies it to area lights (rect.compensated). bare and coated name the
+// materials (<name>.json in materialsDir and, compiled, in out): the probe checks' by default.
+export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibility, rect, renders,
+                                 bare = kProbeMaterials, coated = [kProbeCoated] }) {
   const wanted = new Set(renders.map((render) => render.key));
   const ndotv = kProbePixels.map((pixel) => Math.fround(dot(kNormal, viewAt(pixel))));
   const pointTerms = kProbeRoughness.map((roughness) => kProbePixels.map((pixel) => {
@@ -157,7 +159,7 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibilit
     "--ndotv", list(ndotv), "--roughness", list(ndotv.map(() => roughness))])).Fbar_table.map((e) => e[0]);
   const expected = {};
   for (const [source, args, f0Of, fbarKey, fKey] of [
-    ...kProbeMaterials.map((name) => [name, [join(materialsDir, `${name}.json`)], null, "Fbar", "F"]),
+    ...bare.map((name) => [name, [join(materialsDir, `${name}.json`)], null, "Fbar", "F"]),
     ["textured", ["--reflectivity", list(kTextured.reflectivity), "--edge-tint", list(kTextured.edgeTint),
                   "--coefficient-table-precision", "f32"], kTextured.reflectivity, "Fbar_table", "F_table"],
     ["baked", ["--reflectivity", list(kBaked.reflectivity), "--edge-tint", list(kBaked.edgeTint)],
@@ -192,25 +194,27 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibilit
       }
     }
   }
-  Object.assign(expected, expectedCoatedProbes({ matc, materialsDir, out, alphaOf, coatVisibility, rect, wanted,
-                                                 ndotv, albedo, pointTerms }));
+  for (const name of coated) {
+    Object.assign(expected, expectedCoatedProbes({ name, matc, materialsDir, out, alphaOf, coatVisibility, rect,
+                                                   wanted, ndotv, albedo, pointTerms }));
+  }
   return expected;
 }
 
-// The coated metal's probes at roughness 0.3, both lobes as the CPU runtime evaluates them: the
+// A coated metal's probes at roughness 0.3, both lobes as the CPU runtime evaluates them: the
 // base lobe (the metal through the coat) with the multiple scattering of a bare metal whose F0 is
 // the metal's under the coat, the coat lobe (its weight included) at the coat's roughness, without.
 // Rect lights: `L_ltc_base` and `L_ltc_coat` of `matc eval --quad-light`, the base's compensated
 // where the engine compensates rect lights. engine.coatVisibility: the coat lobe's visibility term
 // where the engine's is not the base's (Babylon's Kelemen).
-function expectedCoatedProbes({ matc, materialsDir, out, alphaOf, coatVisibility, rect, wanted, ndotv, albedo,
+function expectedCoatedProbes({ name, matc, materialsDir, out, alphaOf, coatVisibility, rect, wanted, ndotv, albedo,
                                 pointTerms }) {
   const roughness = 0.3;
-  const key = (light) => `${kProbeCoated} ${light} r=${roughness}`;
+  const key = (light) => `${name} ${light} r=${roughness}`;
   const expected = {};
   if (!["environment", "point", "rect"].some((light) => wanted.has(key(light)))) return expected;
-  const file = join(materialsDir, `${kProbeCoated}.json`);
-  const compiled = JSON.parse(readFileSync(join(out, `${kProbeCoated}.json`), "utf8"));
+  const file = join(materialsDir, `${name}.json`);
+  const compiled = JSON.parse(readFileSync(join(out, `${name}.json`), "utf8"));
   const underCoatF0 = compiled.coat.under_coat_coefficients.map((row) => row[0]);
   const coatAlpha = alphaOf(compiled.coat.input.roughness);
   const terms = pointTerms[kProbeRoughness.indexOf(roughness)];

@@ -1,8 +1,10 @@
 // The native side of the WebAssembly comparison (tests/js/check-wasm-package.mjs): reads material
 // requests, one JSON object per line ({"text", "path", "options": {basis, colorSpace,
-// gamutMapping}}), compiles each through the public API (matc/matc.h) and writes one JSON line
-// per material: coefficients, F0, F82, the curves on tests' cosines and (NdotV, roughness) pairs,
-// and the four texts. Numbers are written with 17 significant digits: they read back exactly.
+// gamutMapping}, optionally "mu": the cosines to evaluate}), compiles each through the public API
+// (matc/matc.h) and writes one JSON line per material: coefficients, F0, F82, the curves (F, exact,
+// Schlick, F82-tint) on the cosines and Fbar on tests' (NdotV, roughness) pairs, and the four
+// texts. Also used by check-lookdev.mjs. Numbers are written with 17 significant digits: they read
+// back exactly.
 #include <iostream>
 #include <span>
 #include <string>
@@ -30,8 +32,7 @@ nlohmann::json rows(const matc::api::CoefficientRows& values) {
 }
 
 nlohmann::json dump(const matc::api::CompiledMaterial& compiled,
-                    const matc::api::TextOutputs& texts) {
-  const std::vector<double> mu = cosines();
+                    const matc::api::TextOutputs& texts, const std::vector<double>& mu) {
   std::vector<double> ndotv, roughness;
   for (double n : {0.05, 0.3, 0.7, 1.0}) {
     for (double r : {0.0, 0.25, 0.6, 1.0}) {
@@ -46,6 +47,8 @@ nlohmann::json dump(const matc::api::CompiledMaterial& compiled,
   out["f82"] = compiled.f82();
   out["fresnel"] = compiled.fresnel(mu);
   out["exact"] = compiled.exact(mu);
+  out["schlick"] = compiled.schlick(mu);
+  out["f82_tint"] = compiled.f82_tint(mu);
   out["fbar"] = compiled.fbar(ndotv, roughness);
   if (const auto coat = compiled.coat()) {
     out["under_coat_coefficients"] = rows(coat->under_coat_coefficients);
@@ -66,13 +69,15 @@ int main() {
     const nlohmann::json& given = request.value("options", nlohmann::json::object());
     const matc::api::CompileOptions options{given.value("basis", ""), given.value("colorSpace", ""),
                                             given.value("gamutMapping", "")};
+    const std::vector<double> mu =
+        request.contains("mu") ? request.at("mu").get<std::vector<double>>() : cosines();
     nlohmann::json result;
     try {
       const matc::api::TextOutputs texts(options);
       result["materials"] = nlohmann::json::array();
       for (const matc::api::Material& material : matc::api::parse_materials(
                request.at("text").get<std::string>(), request.at("path").get<std::string>()))
-        result["materials"].push_back(dump(matc::api::compile(material, options), texts));
+        result["materials"].push_back(dump(matc::api::compile(material, options), texts, mu));
     } catch (const matc::api::MaterialError& error) {
       result["error"] = error.what();
     }

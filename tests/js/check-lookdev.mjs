@@ -1,0 +1,194 @@
+// The look-development page (js/package/lookdev/, docs/lookdev.md), served from the staged npm
+// package as a project's node_modules and driven through its controls in headless Chromium
+// (lookdev-check-page.mjs). For materials chosen as a person would (a preset, a colour-picker
+// metal in ACEScg, typed n and k, a coated metal, a pasted material file):
+//   - no console error or warning, no uncaught exception;
+//   - the probe pixels of the page's matc material (its three.js material, under the engine checks'
+//     environment, point and rect lights) equal the CPU runtime's (`matc eval`), to 1e-4;
+//   - the plotted curves equal the native library's (`matc eval`'s F and F_exact; the public API's
+//     Schlick and F82-tint through matc_api_dump), to 1e-12;
+//   - the exports: the snippets equal `matc -o`'s files byte for byte for the exported material
+//     file, and <name>.json equals matc's up to the last digits of its numbers (the largest
+//     difference is reported: glibc's and emscripten's libm round differently, docs/web.md);
+//   - each refused value shows its located message beside its control, marks the control, and
+//     keeps the last good material (coefficients, link);
+//   - the page's link reproduces a material (a second load from the coated case's URL);
+//   - the page and its assets stay under 200 KiB.
+//   node check-lookdev.mjs MATC NPM_DIR MATC_API_DUMP
+import { execFileSync } from "node:child_process";
+import { mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+import { compareProbes, expectedProbes, kPointLight, kProbePixels, kProbeRectLight, kProbeSize } from "./engine-probes.mjs";
+import { rectLightGeometry } from "./engine-scene.mjs";
+import { runLookdevPage } from "./lookdev-page.mjs";
+import { check, finish } from "./report.mjs";
+import { run } from "./shader-cases.mjs";
+
+const [matc, npmDir, apiDump] = process.argv.slice(2);
+const kSizeLimit = 200 * 1024;
+const lights = ["environment", "point", "rect"];
+const select = (selector, value) => ({ selector, value, event: "change" });
+const input = (selector, value) => ({ selector, value });
+const ior = (field, channel, value) => input(`[data-field='ior.${field}'][data-channel='${channel}']`, value);
+
+// The cases, each through the page's controls. Probes need roughness 0.3 (engine-probes.mjs).
+const kCases = [
+  { key: "preset", name: "Cr", bare: true, steps: [input("#preset", "Cr")], lights,
+    refusals: [{ key: "name", steps: [input("#name", "9lives")], restore: [input("#name", "Cr")],
+                 messageSelector: ".message[data-for='name']", control: "#name",
+                 phrase: "material.json:2:11: error: name: '9lives' is not an identifier" }] },
+  { key: "colour pickers in ACEScg", name: "tinted", bare: true, colorSpace: "acescg",
+    steps: [select("#model", "artistic"), input("#reflectivity", "#e8b890"), input("#edge-tint", "#ffc070"),
+            input("#name", "tinted"), select("#color-space", "acescg")], lights },
+  { key: "typed n and k", name: "typed", bare: true,
+    steps: [select("#model", "ior"), input("#name", "typed"), ior("n", 0, "0.2"), ior("n", 1, "0.9"),
+            ior("n", 2, "1.1"), ior("k", 0, "3.9"), ior("k", 1, "2.5"), ior("k", 2, "2.3"),
+            select("#color-space", "lin_rec709")], lights,
+    refusals: [{ key: "n out of range", steps: [ior("n", 1, "2000")], restore: [ior("n", 1, "0.9")],
+                 messageSelector: ".message[data-for='ior']", control: "[data-field='ior.n'][data-channel='1']",
+                 phrase: "ior.n[1]: 2000 is out of range; a number in [0, 1000]" }] },
+  { key: "coated", name: "Au", bare: false,
+    steps: [select("#model", "spectral"), input("#preset", "Au"), input("#name", "Au"), { selector: "#coated", checked: true },
+            input("#coat-ior", "1.6"), input("#coat-roughness", "0.12"), input("#coat-color", "#f4e8c8"),
+            input("#coat-weight", "0.85")], lights,
+    refusals: [{ key: "coat index", steps: [input("#coat-ior", "1.01")], restore: [input("#coat-ior", "1.6")],
+                 messageSelector: ".message[data-for='coat.ior']", control: "#coat-ior", phrase: "coat.ior: 1.01" }] },
+  { key: "pasted material file", name: "pasted_steel", bare: true,
+    steps: [{ paste: JSON.stringify({ name: "pasted_steel", description: "pasted", roughness: 0.3,
+                                      f82_tint: { f0: [0.56, 0.57, 0.58], tint: [0.9, 0.93, 1.0] } }) }],
+    lights: ["environment", "point"],
+    refusals: [{ key: "pasted MaterialX", steps: [{ paste: "<?xml version=\"1.0\"?>\n<materialx version=\"1.38\"/>\n" }],
+                 messageSelector: ".message[data-for='document']",
+                 phrase: "pasted.mtlx: error: this build of matc does not read MaterialX documents" },
+               { key: "pasted broken JSON", steps: [{ paste: "{\"name\": \"x\",\n \"ior\": {\"n\": [1, 2" }],
+                 messageSelector: ".message[data-for='document']", phrase: "pasted.json:2:" }] },
+];
+
+const kConfig = { probeSize: kProbeSize, pixels: kProbePixels, point: kPointLight, rect: kProbeRectLight,
+                  cases: kCases };
+
+function pageSize() {
+  let bytes = 0;
+  for (const file of readdirSync(join(npmDir, "lookdev"))) bytes += statSync(join(npmDir, "lookdev", file)).size;
+  return bytes;
+}
+
+// The largest difference between two JSON texts' numbers (relative above 1), and whether
+// everything else (keys, strings, layout of values) is equal.
+function jsonDifference(a, b) {
+  let sameShape = true, worst = 0;
+  const walk = (x, y) => {
+    if (typeof x === "number" && typeof y === "number") {
+      worst = Math.max(worst, Math.abs(x - y) / Math.max(1, Math.abs(y)));
+    } else if (x && y && typeof x === "object" && typeof y === "object") {
+      const keys = Object.keys(x);
+      if (Array.isArray(x) !== Array.isArray(y) || keys.join() !== Object.keys(y).join()) sameShape = false;
+      else for (const key of keys) walk(x[key], y[key]);
+    } else if (x !== y) {
+      sameShape = false;
+    }
+  };
+  walk(JSON.parse(a), JSON.parse(b));
+  return { sameShape, worst };
+}
+
+function maxDifference(a, b) {
+  let worst = 0;
+  a.forEach((value, i) => { worst = Math.max(worst, Math.abs(value - b[i])); });
+  return a.length === b.length ? worst : Infinity;
+}
+
+const dir = mkdtempSync(join(tmpdir(), "matc-lookdev-"));
+try {
+  const result = await runLookdevPage({ npmDir, config: kConfig, dir: join(dir, "page") });
+  check(result.errors.length === 0, `page: ${result.errors.join("\n")}`);
+  check(result.console.length === 0, `the page's console: ${result.console.join("\n")}`);
+  check(result.start?.name === "Cu", `the page started with ${result.start?.name}, not its default Cu`);
+
+  const materials = join(dir, "materials");
+  mkdirSync(materials);
+  let worstCurve = 0, worstJson = 0, identicalSnippets = 0, identicalJson = 0;
+  const renders = {};
+  for (const testCase of kCases) {
+    const shown = result.cases[testCase.key];
+    check(Boolean(shown), `${testCase.key}: not run`);
+    if (!shown) continue;
+    check(!shown.refused && shown.messages.length === 0,
+          `${testCase.key}: the page refused it: ${shown.status} ${shown.messages.join(" | ")}`);
+    // The exported material file, compiled by the native matc as a person would.
+    const file = join(materials, `${testCase.name}.json`);
+    writeFileSync(file, shown.exports.material);
+    const out = join(dir, "out", testCase.key.replaceAll(" ", "_"));
+    run(matc, ["-q", "-o", out, "--emit", "glsl,hlsl,wgsl,json", ...(testCase.colorSpace ? ["--color-space", testCase.colorSpace] : []), file]);
+    for (const language of ["glsl", "wgsl", "hlsl"]) {
+      const written = readFileSync(join(out, `${testCase.name}.${language}`), "utf8");
+      check(shown.exports[language] === written, `${testCase.key}: the page's ${language} differs from matc's ${testCase.name}.${language}`);
+      if (shown.exports[language] === written) identicalSnippets += 1;
+    }
+    const json = readFileSync(join(out, `${testCase.name}.json`), "utf8");
+    const difference = jsonDifference(shown.exports.json, json);
+    check(difference.sameShape && difference.worst <= 1e-12,
+          `${testCase.key}: the page's coefficients differ from matc's ${testCase.name}.json (${difference.worst})`);
+    worstJson = Math.max(worstJson, difference.worst);
+    if (shown.exports.json === json) identicalJson += 1;
+
+    // The plotted curves against the native library.
+    const { mu } = shown.series;
+    const evaluated = JSON.parse(run(matc, ["eval", file, "--mu", mu.join(","),
+                                            ...(testCase.colorSpace ? ["--color-space", testCase.colorSpace] : [])]));
+    const native = JSON.parse(execFileSync(apiDump, {
+      input: `${JSON.stringify({ text: shown.exports.material, path: `${testCase.name}.json`, mu,
+                                 options: { colorSpace: testCase.colorSpace ?? "" } })}\n`, encoding: "utf8" })).materials[0];
+    for (const [plotted, reference, what] of [
+      [shown.series.ours, evaluated.F.flat(), "F (matc eval)"], [shown.series.exact, evaluated.F_exact.flat(), "F_exact (matc eval)"],
+      [shown.series.schlick, native.schlick, "Schlick"], [shown.series.f82Tint, native.f82_tint, "F82-tint"]]) {
+      const worst = maxDifference(plotted, reference);
+      check(worst <= 1e-12, `${testCase.key}: plotted ${what} differs by ${worst}`);
+      worstCurve = Math.max(worstCurve, worst);
+    }
+
+    for (const [light, pixels] of Object.entries(shown.renders)) renders[`${testCase.name} ${light} r=0.3`] = pixels;
+    for (const refusal of testCase.refusals ?? []) {
+      const refused = result.refusals[refusal.key];
+      check(Boolean(refused), `${refusal.key}: not run`);
+      if (!refused) continue;
+      check(refused.message.includes(refusal.phrase), `${refusal.key}: the message "${refused.message}" lacks "${refusal.phrase}"`);
+      check(!/[\u0000-\u0008\u000b-\u001f\u007f]/.test(refused.message), `${refusal.key}: a control byte in the message`);
+      check(refused.refused, `${refusal.key}: the status does not say refused`);
+      check(refused.kept, `${refusal.key}: the last good material was not kept`);
+      if (refusal.control) check(refused.controlMarked, `${refusal.key}: the control is not marked`);
+    }
+  }
+  const coated = result.cases.coated;
+  check(coated?.labels?.[1]?.includes("F0 in coat"), `coated: the comparison's label ${coated?.labels}`);
+
+  // The probes, each case under its lights, against the CPU runtime at the page's compile (linear Rec.709).
+  const probeOut = join(dir, "probe-out");
+  run(matc, ["-q", "-o", probeOut, "--emit", "json", ...kCases.map((c) => join(materials, `${c.name}.json`))]);
+  const probeRenders = kCases.flatMap((c) => c.lights.map((light) => ({ key: `${c.name} ${light} r=0.3`, light, roughness: 0.3 })));
+  const expected = expectedProbes({
+    matc, materialsDir: materials, out: probeOut, alphaOf: (r) => Math.max(r, 0.045) ** 2, renders: probeRenders,
+    rect: { light: kProbeRectLight, corners: rectLightGeometry(kProbeRectLight).corners },
+    bare: kCases.filter((c) => c.bare).map((c) => c.name), coated: kCases.filter((c) => !c.bare).map((c) => c.name) });
+  check(Object.keys(expected).length === probeRenders.length, `${Object.keys(expected).length} probe renders expected`);
+  const worstProbe = compareProbes(renders, expected);
+
+  // The link: the coated case's URL, opened afresh, shows the same material.
+  const again = await runLookdevPage({ npmDir, config: { cases: [] }, dir: join(dir, "link"), fragment: coated?.hash ?? "" });
+  check(again.errors.length === 0 && again.console.length === 0, `the link: ${[...again.errors, ...again.console].join("\n")}`);
+  check(again.start?.exports?.glsl === coated?.exports?.glsl, "the coated case's link does not reproduce its GLSL");
+
+  const size = pageSize();
+  check(size <= kSizeLimit, `the page and its assets: ${size} bytes, over ${kSizeLimit}`);
+  console.log(`look-development page: ${kCases.length} materials through its controls, ${probeRenders.length} ` +
+              `renders x ${kProbePixels.length} probes, largest difference from the CPU runtime ` +
+              `${worstProbe.toExponential(2)}; curves within ${worstCurve.toExponential(2)} of the native library; ` +
+              `${identicalSnippets} snippets byte-identical to matc's, ${identicalJson} of ${kCases.length} ` +
+              `<name>.json too (the others within ${worstJson.toExponential(2)}); ` +
+              `${Object.keys(result.refusals).length} refusals shown beside their controls; the link reproduces ` +
+              `a coated material; page ${(size / 1024).toFixed(1)} KiB`);
+} finally {
+  rmSync(dir, { recursive: true, force: true });
+}
+finish();
