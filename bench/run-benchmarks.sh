@@ -45,6 +45,8 @@ cmake --build "$build" --target matc_fullscreen_cost >/dev/null
 # The npm package's WebAssembly library against the native library: compile and texts.
 "$root/bench/wasm-compile.sh" "$build" >"$report.md"
 "$root/tests/scripts/check_docs_block.sh" --update "$root/docs/performance.md" wasm-compile cat "$report.md"
+"$root/bench/lookdev-latency.sh" "$build" >"$report.md"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/performance.md" lookdev-latency cat "$report.md"
 
 # Batch throughput and memory: 1,000 materials at -j 1 and -j 2 against a glslangValidator loop.
 "$root/bench/batch-throughput.sh" "$build" 1000 >"$report.md"

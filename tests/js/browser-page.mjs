@@ -70,9 +70,11 @@ const kTypes = { js: "text/javascript", mjs: "text/javascript", json: "applicati
 // realTime: the page runs on the wall clock and posts its result to /result (modulePage does), for
 // work virtual time does not settle (WebGPU's adapter and device); browserArgs: more Chromium flags.
 // pagePath: where the page's HTML is served (default /page.html; a page that imports modules
-// relative to its own folder is served from there); fragment: the URL's #... part.
+// relative to its own folder is served from there); fragment: the URL's #... part; screenshot: a
+// PNG path to write the window into when virtual time runs out, instead of reading the DOM (returns
+// null).
 export async function runPage({ html, roots, dir, budgetMs = 120000, realTime = false, browserArgs = [],
-                                pagePath = "/page.html", fragment = "" }) {
+                                pagePath = "/page.html", fragment = "", screenshot = null }) {
   let posted = null;
   let finished = () => {};
   const server = createServer((request, response) => {
@@ -111,7 +113,7 @@ export async function runPage({ html, roots, dir, budgetMs = 120000, realTime = 
     const dom = await new Promise((resolve, reject) => {
       const browser = spawn(chromiumPath(), [
         "--headless", "--no-sandbox", "--disable-dev-shm-usage", "--use-angle=swiftshader",
-        "--enable-unsafe-swiftshader", ...(realTime ? [] : [`--virtual-time-budget=${budgetMs}`, "--dump-dom"]),
+        "--enable-unsafe-swiftshader", ...(realTime ? [] : [`--virtual-time-budget=${budgetMs}`, screenshot ? `--screenshot=${screenshot}` : "--dump-dom"]),
         // MATC_BROWSER_LOG=1 shows the page's console (and Chromium's own messages) on stderr.
         ...(process.env.MATC_BROWSER_LOG ? ["--enable-logging=stderr", "--v=0"] : []),
         ...browserArgs, `--user-data-dir=${join(dir, "profile")}`, url]);
@@ -125,12 +127,13 @@ export async function runPage({ html, roots, dir, budgetMs = 120000, realTime = 
         finished = () => { clearTimeout(timer); browser.kill(); };
       }
     });
+    if (screenshot) return null;
     let text;
     if (realTime) {
       if (posted === null) throw new Error(`the page posted no result within ${budgetMs / 1000} s`);
       text = posted;
     } else {
-      const match = dom.match(/<pre id="result">([^<]*)<\/pre>/);
+      const match = dom.match(/<pre id="result"[^>]*>([^<]*)<\/pre>/);
       if (match === null) throw new Error("the page wrote no result");
       text = match[1].replaceAll("&quot;", "\"").replaceAll("&lt;", "<").replaceAll("&gt;", ">")
                      .replaceAll("&amp;", "&");

@@ -12,7 +12,8 @@
 //     difference is reported: glibc's and emscripten's libm round differently, docs/web.md);
 //   - each refused value shows its located message beside its control, marks the control, and
 //     keeps the last good material (coefficients, link);
-//   - the page's link reproduces a material (a second load from the coated case's URL);
+//   - the page's link reproduces a material (a second load from the coated case's URL), and a
+//     broken link opens the default metal with its reason;
 //   - the page and its assets stay under 200 KiB.
 //   node check-lookdev.mjs MATC NPM_DIR MATC_API_DUMP
 import { execFileSync } from "node:child_process";
@@ -178,6 +179,14 @@ try {
   const again = await runLookdevPage({ npmDir, config: { cases: [] }, dir: join(dir, "link"), fragment: coated?.hash ?? "" });
   check(again.errors.length === 0 && again.console.length === 0, `the link: ${[...again.errors, ...again.console].join("\n")}`);
   check(again.start?.exports?.glsl === coated?.exports?.glsl, "the coated case's link does not reproduce its GLSL");
+
+  // A broken link: the default metal, the reason beside the document box, the text not run as markup.
+  const broken = await runLookdevPage({ npmDir, config: { cases: [] }, dir: join(dir, "broken-link"),
+                                        fragment: "#material=%7B%3Cimg%20src%3Dx%20onerror%3Dalert(1)%3E&view=%3Cb%3E" });
+  check(broken.errors.length === 0 && broken.console.length === 0, `a broken link: ${[...broken.errors, ...broken.console].join("\n")}`);
+  check(broken.start?.name === "Cu", `a broken link opened ${broken.start?.name}, not the default Cu`);
+  check(broken.start?.documentMessage === "the link's material is not JSON",
+        `a broken link's message: ${broken.start?.documentMessage}`);
 
   const size = pageSize();
   check(size <= kSizeLimit, `the page and its assets: ${size} bytes, over ${kSizeLimit}`);

@@ -79,8 +79,7 @@ async function timeChange(lookdev, step) {
   const gl = lookdev.app.view.renderer.getContext();
   const started = performance.now();
   apply(step);
-  await lookdev.idle();
-  lookdev.app.view.render();
+  await lookdev.idle();  // draws the frame the change asked for
   gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
   return { totalMs: performance.now() - started, ...lookdev.app.lastUpdate };
 }
@@ -89,8 +88,13 @@ try {
   const lookdev = window.matcLookdev;
   await lookdev.ready;
   await settle(lookdev);
+  // The layout settles after the first frame (the curves and exports fill their column); a page
+  // redraws on resize at an animation frame, which virtual time does not run: draw now.
+  await new Promise((resolve) => setTimeout(resolve, 100));
+  lookdev.app.view.render();
   out.start = { status: $("#status").textContent, frames: lookdev.app.view.frames, name: lookdev.app.compiled?.name,
-                exports: Object.fromEntries(["material", "glsl"].map((kind) => [kind, lookdev.exportText(kind)])) };
+                exports: Object.fromEntries(["material", "glsl"].map((kind) => [kind, lookdev.exportText(kind)])),
+                documentMessage: $(".message[data-for='document']").textContent };
   for (const testCase of config.cases ?? []) {
     for (const step of testCase.steps) {
       apply(step);
@@ -130,6 +134,10 @@ try {
     }
   }
   for (const timing of config.timings ?? []) {
+    for (const step of timing.setup ?? []) {
+      apply(step);
+      await settle(lookdev);
+    }
     const samples = [];
     for (let i = 0; i < timing.repeat; ++i) samples.push(await timeChange(lookdev, timing.steps[i % timing.steps.length]));
     out.timings[timing.key] = samples;
@@ -153,6 +161,7 @@ try {
 out.console = window.lookdevConsole ?? [];
 const result = document.createElement("pre");
 result.id = "result";
+result.hidden = true;
 result.textContent = JSON.stringify(out);
 document.body.append(result);
 await fetch("/result", { method: "POST", body: JSON.stringify(out) }).catch(() => {});

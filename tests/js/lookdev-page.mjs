@@ -31,12 +31,12 @@ export function lookdevProject(npmDir, dir) {
 }
 
 export async function runLookdevPage({ npmDir, config, dir, realTime = false, windowSize = "1280,800", budgetMs,
-                                       fragment = "" }) {
+                                       fragment = "", screenshot = null, style = "" }) {
   const page = readFileSync(join(npmDir, "lookdev", "index.html"), "utf8");
-  const html = page.replace("<head>", () => `<head>\n${kConsoleRecorder}`).replace("</body>", () =>
+  const html = page.replace("<head>", () => `<head>\n${kConsoleRecorder}${style ? `<style>${style}</style>` : ""}`).replace("</body>", () =>
     `<script type="application/json" id="lookdev-check-config">${JSON.stringify(config).replaceAll("<", "\\u003c")}</script>\n` +
     `<script type="module" src="/checks/lookdev-check-page.mjs"></script>\n</body>`);
-  return runPage({ html, pagePath: kLookdevPath, fragment, dir, realTime, budgetMs,
+  return runPage({ html, pagePath: kLookdevPath, fragment, dir, realTime, budgetMs, screenshot,
                    roots: { node_modules: lookdevProject(npmDir, dir), checks: here },
                    browserArgs: [`--window-size=${windowSize}`] });
 }

@@ -61,7 +61,7 @@ export class LookdevView {
     this.meshes[1].rotation.set(-0.9, 0.35, 0);
     for (const mesh of this.meshes) this.scene.add(mesh);
     this.camera = new THREE.PerspectiveCamera(32, 1, 0.1, 50);
-    this.camera.position.set(0, 0.15, 4.2);
+    this.camera.position.set(0, 0.2, 7.2);
     this.controls = new OrbitControls(this.camera, canvas);
     this.controls.target.set(0, 0.03, 0);
     this.controls.update();

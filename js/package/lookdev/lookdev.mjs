@@ -311,7 +311,6 @@ async function start() {
   toControls(app.state.material, app.state.colorSpace);
   app.view.setMode(app.state.view);
   $("#view-mode").value = app.state.view;
-  if (fromLink?.error) $(".message[data-for='document']").textContent = fromLink.error;
 
   for (const control of $$("#controls input:not(#coated), #controls select:not(#model):not(#color-space):not(#choice)")) {
     control.addEventListener("input", () => {
@@ -379,6 +378,8 @@ async function start() {
     $("#label-right").textContent = sides[1] ? names[sides[1]] : "";
   };
   await scheduleUpdate();
+  // After the first compile, which clears the messages: why the link's material was not opened.
+  if (fromLink?.error) $(".message[data-for='document']").textContent = fromLink.error;
 }
 
 window.matcLookdev = {
