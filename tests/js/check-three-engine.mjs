@@ -23,7 +23,7 @@ import { KTX2Loader } from "three/addons/loaders/KTX2Loader.js";
 import { RectAreaLightUniformsLib } from "three/addons/lights/RectAreaLightUniformsLib.js";
 import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three.mjs";
 import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";
-import { probeScene } from "/checks/three-scene-page.mjs";
+import { probeScene, probeSetup } from "/checks/three-scene-page.mjs";
 import { probeBuild } from "/checks/page-probe-build.mjs";
 `,
   body: `
@@ -34,14 +34,7 @@ import { probeBuild } from "/checks/page-probe-build.mjs";
     out.errors.push(gl.getShaderInfoLog(fragment) || gl.getShaderInfoLog(vertex) || gl.getProgramInfoLog(program));
   RectAreaLightUniformsLib.init();
   const { build, directoryBuild, loadProbeMaterial } = await probeBuild(out, config, loadMatcBuild);
-  const target = new THREE.WebGLRenderTarget(${kProbeSize}, ${kProbeSize}, { type: THREE.FloatType });
-  const camera = new THREE.PerspectiveCamera(90, 1, 0.1, 10);
-  camera.position.set(0, 0, 1);
-  const pmrem = new THREE.PMREMGenerator(renderer);
-  const white = new THREE.DataTexture(new Float32Array(64 * 32 * 4).fill(1), 64, 32, THREE.RGBAFormat, THREE.FloatType);
-  white.mapping = THREE.EquirectangularReflectionMapping;
-  white.needsUpdate = true;
-  const environment = pmrem.fromEquirectangular(white).texture;
+  const { target, camera, environment } = probeSetup(THREE, renderer, ${kProbeSize});
   const constant = (rgb) => {
     const texture = new THREE.DataTexture(new Float32Array([...rgb, 1]), 1, 1, THREE.RGBAFormat, THREE.FloatType);
     texture.needsUpdate = true;

@@ -6,7 +6,7 @@
 // The config (<script id="lookdev-check-config">) lists the cases; the result goes into
 // <pre id="result"> and is posted to /result (runPage's realTime mode).
 import * as THREE from "three";
-import { probeScene } from "/checks/three-scene-page.mjs";
+import { probeScene, probeSetup } from "/checks/three-scene-page.mjs";
 
 const config = JSON.parse(document.getElementById("lookdev-check-config").textContent);
 const out = { errors: [], cases: {}, refusals: {}, timings: {} };
@@ -43,14 +43,7 @@ async function settle(lookdev) {
 // The page's matc material on the probe plane under each light, read at the probe pixels.
 function probeRenders(view, lights) {
   const renderer = view.renderer;
-  const target = new THREE.WebGLRenderTarget(config.probeSize, config.probeSize, { type: THREE.FloatType });
-  const camera = new THREE.PerspectiveCamera(90, 1, 0.1, 10);
-  camera.position.set(0, 0, 1);
-  const pmrem = new THREE.PMREMGenerator(renderer);
-  const white = new THREE.DataTexture(new Float32Array(64 * 32 * 4).fill(1), 64, 32, THREE.RGBAFormat, THREE.FloatType);
-  white.mapping = THREE.EquirectangularReflectionMapping;
-  white.needsUpdate = true;
-  const environment = pmrem.fromEquirectangular(white).texture;
+  const { target, camera, pmrem, environment } = probeSetup(THREE, renderer, config.probeSize);
   const renders = {};
   for (const light of lights) {
     const scene = probeScene(THREE, view.matcMaterial, light, config, environment);

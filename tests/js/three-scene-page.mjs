@@ -36,6 +36,19 @@ export function rectLight(THREE, { position, width, height, intensity }) {
   return light;
 }
 
+// The probe checks' target, camera (a 90 degree view of the plane z = 0 from z = 1) and white
+// environment (PMREM of a constant) for a WebGLRenderer; the caller disposes the target and pmrem.
+export function probeSetup(THREE, renderer, size) {
+  const target = new THREE.WebGLRenderTarget(size, size, { type: THREE.FloatType });
+  const camera = new THREE.PerspectiveCamera(90, 1, 0.1, 10);
+  camera.position.set(0, 0, 1);
+  const pmrem = new THREE.PMREMGenerator(renderer);
+  const white = new THREE.DataTexture(new Float32Array(64 * 32 * 4).fill(1), 64, 32, THREE.RGBAFormat, THREE.FloatType);
+  white.mapping = THREE.EquirectangularReflectionMapping;
+  white.needsUpdate = true;
+  return { target, camera, pmrem, environment: pmrem.fromEquirectangular(white).texture };
+}
+
 // The probe checks' scene (engine-probes.mjs): a plane with `material` under one render's light
 // ("environment": `environment`; "point", "rect": config's lights).
 export function probeScene(THREE, material, light, config, environment) {
