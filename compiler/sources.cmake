@@ -29,6 +29,10 @@ set(MATC_CORE_SOURCES
   src/material/load_file.cpp
   src/material/material.cpp
   src/material/materialx_file.cpp
+  src/material/document_import.cpp
+  src/material/gltf_asset.cpp
+  src/material/gltf_import.cpp
+  src/material/tinygltf_implementation.cpp
   src/material/parse.cpp
   src/material/suggestion.cpp
   src/material/material_input.cpp

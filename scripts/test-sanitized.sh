@@ -35,10 +35,15 @@ mtlx_corpus=$(mktemp -d)
 trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus"' EXIT
 build-fuzz/tests/fuzz/matc_materialx_fuzzer -max_total_time=15 -max_len=4096 \
   -dict=tests/fuzz/materialx.dict -print_final_stats=1 "$mtlx_corpus" tests/fuzz/corpus_materialx 2>&1 | tail -n 8
+# The glTF importer (assets re-read and compiled; first byte: .glb when odd): 10 s.
+gltf_corpus=$(mktemp -d)
+trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus" "$gltf_corpus"' EXIT
+build-fuzz/tests/fuzz/matc_gltf_fuzzer -max_total_time=10 -max_len=4096 \
+  -dict=tests/fuzz/gltf.dict -print_final_stats=1 "$gltf_corpus" tests/fuzz/corpus_gltf 2>&1 | tail -n 8
 # The public API as the faces call it (options by name, any document, curves, texts): 10 s.
 # Seeds: the material corpus behind an options byte (defaults; the paper basis in ACEScg).
 api_corpus=$(mktemp -d)
-trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus" "$api_corpus"' EXIT
+trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus" "$gltf_corpus" "$api_corpus"' EXIT
 for seed in tests/fuzz/corpus/*; do
   for options in 000 005; do
     { printf "\\$options"; cat "$seed"; } >"$api_corpus/$(basename "$seed").$options"
@@ -50,7 +55,7 @@ build-fuzz/tests/fuzz/matc_public_api_fuzzer -max_total_time=10 -max_len=4096 \
 # stored in the repository), each once per mode (first byte: sRGB, linear, asset text); 15 s.
 image_corpus=$(mktemp -d)
 image_seeds=$(mktemp -d)
-trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus" "$api_corpus" "$image_corpus" "$image_seeds"' EXIT
+trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus" "$gltf_corpus" "$api_corpus" "$image_corpus" "$image_seeds"' EXIT
 build-fuzz/tests/matc_catalogue_images "$image_seeds"
 for seed in "$image_seeds"/*; do
   for mode in 0 1; do

@@ -101,7 +101,8 @@ export declare class Matc {
   readonly version: string;
   readonly readsMaterialX: boolean;
   spectralPresets(): string[];
-  /** A material file's JSON or a MaterialX document (path ending in .mtlx), as text or bytes. */
+  /** A material file's JSON, a MaterialX document (path ending in .mtlx) or a glTF asset (.gltf
+   *  or .glb, its metals; a .glb as bytes; external buffers cannot be read here), as text or bytes. */
   parseMaterials(text: string | Uint8Array | ArrayBuffer, path?: string): Material[];
   parseMaterial(input: string | Uint8Array | ArrayBuffer | object, options?: { path?: string }): Material;
   compile(material: Material, options?: CompileOptions): CompiledMaterial;

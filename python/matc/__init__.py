@@ -173,7 +173,8 @@ def parse_materialx(text, path="<string>.mtlx"):
 
 def load(path):
     """The materials a file holds, as a list of :class:`Material`: a material file (``.json``)
-    holds one, a MaterialX document (``.mtlx``) any number. Raises :class:`MaterialError`."""
+    holds one, a MaterialX document (``.mtlx``) or a glTF asset (``.gltf``, ``.glb``; its
+    metallic materials) any number. Raises :class:`MaterialError`."""
     return _matc._load(_native_path(path, "path"))
 
 

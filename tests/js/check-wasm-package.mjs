@@ -165,15 +165,20 @@ for (const [name, { texts, identical }] of wasmTexts) {
 }
 console.log(`${files} material files compared with matc -o (${sameFiles} byte for byte), and the 3 libraries`);
 
-// The bad-input catalogue: every case that is one material file and a plain `matc -o out case`
-// (no arguments, no set-up, no spectral file), through parseMaterials and compile.
+// The bad-input catalogue: every case that is one material file or glTF asset and a plain
+// `matc -o out case` (no other arguments, no set-up, no spectral file), through parseMaterials
+// and compile.
 let cases = 0;
 // Rules of a build directory, which the JS API does not write: names that would overwrite the
 // shared files.
 const kOutputDirectoryRules = new Set(["name_reserved", "name_reserved_coefficient_table"]);
-for (const file of fs.readdirSync(catalogue).filter((f) => /\.(json|mtlx)$/.test(f) && fs.statSync(path.join(catalogue, f)).isFile()).sort()) {
-  const name = file.replace(/\.(json|mtlx)$/, "");
-  if (fs.existsSync(path.join(catalogue, `${name}.args`)) || fs.existsSync(path.join(catalogue, `${name}.setup`)) ||
+const plainArguments = (name, file) => {
+  const args = path.join(catalogue, `${name}.args`);
+  return !fs.existsSync(args) || fs.readFileSync(args, "utf8").trim() === `-o out ${file}`;
+};
+for (const file of fs.readdirSync(catalogue).filter((f) => /\.(json|mtlx|gltf)$/.test(f) && fs.statSync(path.join(catalogue, f)).isFile()).sort()) {
+  const name = file.replace(/\.(json|mtlx|gltf)$/, "");
+  if (!plainArguments(name, file) || fs.existsSync(path.join(catalogue, `${name}.setup`)) ||
       !fs.existsSync(path.join(catalogue, `${name}.expected`)) || kOutputDirectoryRules.has(name)) continue;
   const bytes = new Uint8Array(fs.readFileSync(path.join(catalogue, file)));  // as they are, UTF-8 or not
   const text = Buffer.from(bytes).toString("latin1");

@@ -2,13 +2,13 @@
 
 #include <utility>
 
-#include "matc/material/materialx_import.h"
+#include "matc/material/document_import.h"
 #include "matc/material/parse.h"
 
 namespace matc {
 namespace {
 
-MaterialInput from_document(MaterialXImport imported) {
+MaterialInput from_document(DocumentImport imported) {
   MaterialInput input;
   input.diagnostics = std::move(imported.diagnostics);
   for (ImportedMaterial& material : imported.materials)
@@ -28,12 +28,12 @@ MaterialInput from_material(ParseResult parsed) {
 }  // namespace
 
 MaterialInput read_material_input(const std::string& path) {
-  if (is_materialx_path(path)) return from_document(read_materialx_file(path));
+  if (is_document_path(path)) return from_document(read_document_file(path));
   return from_material(read_material_file(path));
 }
 
 MaterialInput parse_material_input(std::string_view text, const std::string& path) {
-  if (is_materialx_path(path)) return from_document(import_materialx(text, path));
+  if (is_document_path(path)) return from_document(import_document(text, path));
   return from_material(parse_material(text, path));
 }
 

@@ -319,24 +319,11 @@ class Importer {
   // The matc name for a material element: sanitised, and unique in the document ignoring case.
   // Empty after reporting a clash.
   std::string material_name(const std::string& element_name, const pugi::xml_node& material) {
-    const std::string name = sanitized_material_name(element_name);
     const SourceLocation location = document_.at(material);
-    if (name != element_name) {
-      result_.diagnostics.note(location, element_name, fmt::format("imported as '{}'", name),
-                               std::string(kMaterialNameRule));
-    }
-    const auto [first, inserted] =
-        names_.emplace(material_name_key(name), FirstName{name, element_name, location});
-    if (!inserted) {
-      result_.diagnostics.error(
-          location, element_name,
-          fmt::format("becomes '{}', which is '{}' (material '{}' at {}:{}) ignoring case", name,
-                      first->second.name, first->second.element, first->second.location.line,
-                      first->second.location.column),
-          "material names that still differ after sanitising, ignoring case (they name files)");
-      return {};
-    }
-    return name;
+    return names_.claim(
+        element_name, location, element_name,
+        fmt::format("material '{}' at {}:{}", element_name, location.line, location.column),
+        result_.diagnostics);
   }
 
   // The material file the import stands for, validated by the same parser as any material file:
@@ -364,12 +351,7 @@ class Importer {
 
   MaterialXImport result_;  // before document_, which reports into its diagnostics
   MaterialXDocument document_;
-  struct FirstName {
-    std::string name;     // as imported
-    std::string element;  // as the document writes it
-    SourceLocation location;
-  };
-  std::map<std::string, FirstName> names_;  // name key -> its first use
+  DocumentNames names_;
 };
 
 }  // namespace

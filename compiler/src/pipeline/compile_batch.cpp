@@ -14,8 +14,8 @@
 #include "batch_reporter.h"
 #include "in_order.h"
 #include "matc/emit/manifest_writer.h"
+#include "matc/material/document_import.h"
 #include "matc/material/material_input.h"
-#include "matc/material/materialx_import.h"
 #include "matc/material/parse.h"
 #include "matc/pipeline/inputs_in_output_directory.h"
 #include "matc/pipeline/unique_names.h"
@@ -116,7 +116,7 @@ std::vector<Job> parse_jobs(std::span<const MaterialSource> sources, const fs::p
       jobs.push_back(std::move(first));
       continue;
     }
-    const bool keep = is_materialx_path(sources[input].path);
+    const bool keep = is_document_path(sources[input].path);
     for (std::size_t i = 0; i < read.materials.size(); ++i) {
       Job job = i == 0 ? std::move(first) : Job{};
       job.input = input;

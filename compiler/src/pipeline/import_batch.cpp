@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "batch_reporter.h"
-#include "matc/material/materialx_import.h"
+#include "matc/material/document_import.h"
 #include "matc/pipeline/inputs_in_output_directory.h"
 #include "matc/pipeline/unique_names.h"
 
@@ -25,17 +25,18 @@ BatchCounts import_batch(std::span<const MaterialSource> documents, OutputSink& 
   const auto file_name = [](const ImportedMaterial& material) {
     return material.material.name + ".json";
   };
-  std::vector<MaterialXImport> imports;
+  std::vector<DocumentImport> imports;
   UniqueNames names;
   BatchCounts counts;
   for (const MaterialSource& document : documents) {
-    MaterialXImport imported;
-    if (!is_materialx_path(document.path)) {
-      imported.diagnostics.error({document.path, 0, 0}, "", "is not a MaterialX document",
-                                 "a .mtlx file");
+    DocumentImport imported;
+    if (!is_document_path(document.path)) {
+      imported.diagnostics.error({document.path, 0, 0}, "",
+                                 "is not a MaterialX document or a glTF asset",
+                                 "a .mtlx, .gltf or .glb file");
     } else {
-      imported = document.text ? import_materialx(*document.text, document.path)
-                               : read_materialx_file(document.path);
+      imported = document.text ? import_document(*document.text, document.path)
+                               : read_document_file(document.path);
     }
     for (const ImportedMaterial& material : imported.materials) {
       const std::optional<std::string> problem =
@@ -53,7 +54,7 @@ BatchCounts import_batch(std::span<const MaterialSource> documents, OutputSink& 
   const bool stop = counts.failed > 0 && !options.keep_going;
   const std::string where = output_name(output).string();
   BatchReporter reporter(events);
-  for (const MaterialXImport& imported : imports) {
+  for (const DocumentImport& imported : imports) {
     reporter.diagnostics(imported.diagnostics);
     if (imported.diagnostics.has_errors()) continue;
     if (stop) {

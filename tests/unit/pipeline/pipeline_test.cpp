@@ -288,7 +288,9 @@ TEST_F(Pipeline, ImportsADocumentFromMemory) {
       matc::MaterialSource::in_memory("gold.json", kGold)};
   EXPECT_EQ(matc::import_batch(wrong, output, {}, recorded.events()).failed, 1u);
   ASSERT_EQ(recorded.diagnostics.size(), 1u);
-  EXPECT_EQ(recorded.diagnostics[0], "gold.json: error: is not a MaterialX document; a .mtlx file");
+  EXPECT_EQ(recorded.diagnostics[0],
+            "gold.json: error: is not a MaterialX document or a glTF asset; a .mtlx, .gltf or .glb "
+            "file");
 }
 
 TEST_F(Pipeline, BakesAnAssetDescribedInMemory) {

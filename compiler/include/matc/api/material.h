@@ -1,6 +1,6 @@
-// Reading materials: a material file's JSON or a MaterialX document, from a file or from text
-// (docs/material-format.md, docs/interchange.md). Every reader validates the whole input and
-// throws MaterialError with all its errors located; warnings and notes stay with the material.
+// Reading materials: a material file's JSON, a MaterialX document or a glTF asset, from a file or
+// from text (docs/material-format.md, docs/interchange.md). Every reader validates the whole input
+// and throws MaterialError with all its errors located; warnings and notes stay with the material.
 #pragma once
 
 #include <memory>
@@ -40,8 +40,9 @@ class Material {
 };
 
 // The materials of `text`, an input called `path` in diagnostics: a MaterialX document when
-// `path` ends in .mtlx (any number of materials), else a material file's JSON (one). Relative
-// spectral files resolve against `path`'s folder.
+// `path` ends in .mtlx, a glTF asset (its metals) when it ends in .gltf or .glb (any number of
+// materials), else a material file's JSON (one). Relative spectral files and a glTF's external
+// buffers resolve against `path`'s folder.
 std::vector<Material> parse_materials(std::string_view text, std::string_view path);
 // The same for a file.
 std::vector<Material> load_materials(std::string_view path);

@@ -1,6 +1,7 @@
 // The materials an input holds: a material file (.json) holds one, a MaterialX document (.mtlx,
-// docs/interchange.md) any number. One reader, so that everything that takes materials (the batch
-// compile, report, validate, eval, an asset tool's in-memory sources) takes both.
+// docs/interchange.md) or a glTF asset (.gltf, .glb, docs/gltf.md) any number. One reader, so that
+// everything that takes materials (the batch compile, report, validate, eval, an asset tool's
+// in-memory sources) takes all of them.
 #pragma once
 
 #include <optional>

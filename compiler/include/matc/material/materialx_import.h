@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "matc/base/diagnostics.h"
+#include "matc/material/document_import.h"
 #include "matc/material/material.h"
 #include "matc/material/parse.h"
 
@@ -17,17 +18,7 @@ inline constexpr std::uintmax_t kMaxMaterialXFileBytes = 16u << 20;  // 16 MiB
 // Top-level elements read at most: a larger document is refused before anything is imported.
 inline constexpr std::size_t kMaxMaterialXElements = 100000;
 
-struct ImportedMaterial {
-  // Validated as any material file is: source_path is the document, name_location its material
-  // element, source_text the material file below.
-  Material material;
-  std::string json;  // the matc material file it stands for (what `matc import` writes)
-};
-
-struct MaterialXImport {
-  std::vector<ImportedMaterial> materials;  // in document order; empty when there are errors
-  Diagnostics diagnostics;  // errors, warnings, and notes for every material skipped
-};
+using MaterialXImport = DocumentImport;
 
 // Imports every metallic surface material of the document `text`; `path` names it in diagnostics.
 MaterialXImport import_materialx(std::string_view text, const std::string& path);

@@ -1,0 +1,58 @@
+// Documents that hold materials in another format than matc's material file: MaterialX
+// (materialx_import.h) and glTF (gltf_import.h). Each import hands over the matc material files
+// its metals stand for, validated by the same parser as any material file, with the document's
+// notes for everything it did not carry; the path's extension says which reader.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "matc/base/diagnostics.h"
+#include "matc/material/material.h"
+#include "matc/material/parse.h"
+
+namespace matc {
+
+struct ImportedMaterial {
+  // Validated as any material file is: source_path is the document, name_location its material
+  // element, source_text the material file below.
+  Material material;
+  std::string json;  // the matc material file it stands for (what `matc import` writes)
+};
+
+struct DocumentImport {
+  std::vector<ImportedMaterial> materials;  // in document order; empty when there are errors
+  Diagnostics diagnostics;  // errors, warnings, and notes for every material skipped
+};
+
+// Whether `path` names a document an importer reads (.mtlx, .gltf, .glb; any case).
+bool is_document_path(std::string_view path);
+
+// Imports the document `bytes` named `path` (its extension says the format; diagnostics name it;
+// a glTF's external buffers resolve against its folder through `loader`).
+DocumentImport import_document(std::string_view bytes, const std::string& path,
+                               const FileLoader& loader = load_file);
+
+// Reads and imports the document at `path`.
+DocumentImport read_document_file(const std::string& path, const FileLoader& loader = load_file);
+
+// Names for a document's materials: sanitised (sanitized_material_name) with a note when that
+// changes them, and unique ignoring case (they name files), an error on a clash.
+class DocumentNames {
+ public:
+  // The matc name for a material the document names `document_name`, at `location`; `field`
+  // names it in diagnostics and `description` in a later clash's message. Empty after an error.
+  std::string claim(const std::string& document_name, const SourceLocation& location,
+                    const std::string& field, const std::string& description,
+                    Diagnostics& diagnostics);
+
+ private:
+  struct First {
+    std::string name;  // as imported
+    std::string description;
+  };
+  std::vector<std::pair<std::string, First>> taken_;  // name key -> its first use
+};
+
+}  // namespace matc

@@ -1,0 +1,65 @@
+#include "matc/material/document_import.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include <fmt/format.h>
+
+#include "matc/material/gltf_import.h"
+#include "matc/material/materialx_import.h"
+
+namespace matc {
+
+namespace {
+
+bool has_extension(std::string_view path, std::string_view extension) {
+  if (path.size() < extension.size()) return false;
+  return std::equal(
+      extension.begin(), extension.end(), path.end() - extension.size(),
+      [](char a, char b) { return a == std::tolower(static_cast<unsigned char>(b)); });
+}
+
+}  // namespace
+
+bool is_gltf_path(std::string_view path) {
+  return has_extension(path, ".gltf") || has_extension(path, ".glb");
+}
+
+bool is_document_path(std::string_view path) {
+  return is_materialx_path(path) || is_gltf_path(path);
+}
+
+DocumentImport import_document(std::string_view bytes, const std::string& path,
+                               const FileLoader& loader) {
+  if (is_gltf_path(path)) return import_gltf(bytes, path, loader);
+  return import_materialx(bytes, path);
+}
+
+DocumentImport read_document_file(const std::string& path, const FileLoader& loader) {
+  if (is_gltf_path(path)) return read_gltf_file(path, loader);
+  return read_materialx_file(path, loader);
+}
+
+std::string DocumentNames::claim(const std::string& document_name, const SourceLocation& location,
+                                 const std::string& field, const std::string& description,
+                                 Diagnostics& diagnostics) {
+  const std::string name = sanitized_material_name(document_name);
+  if (name != document_name)
+    diagnostics.note(location, field, fmt::format("imported as '{}'", name),
+                     std::string(kMaterialNameRule));
+  const std::string key = material_name_key(name);
+  const auto first = std::find_if(taken_.begin(), taken_.end(),
+                                  [&](const auto& entry) { return entry.first == key; });
+  if (first != taken_.end()) {
+    diagnostics.error(location, field,
+                      fmt::format("becomes '{}', which is '{}' ({}) ignoring case", name,
+                                  first->second.name, first->second.description),
+                      "material names that still differ after sanitising, ignoring case (they "
+                      "name files)");
+    return {};
+  }
+  taken_.emplace_back(key, First{name, description});
+  return name;
+}
+
+}  // namespace matc

@@ -1,0 +1,307 @@
+#include "matc/material/gltf_import.h"
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "gltf_asset.h"
+#include "matc/base/echoed_text.h"
+
+namespace matc {
+
+namespace {
+
+using nlohmann::ordered_json;
+using Rgb3 = std::array<double, 3>;
+
+constexpr std::string_view kClearcoat = "KHR_materials_clearcoat";
+constexpr std::string_view kClearcoatIor = "KHR_materials_clearcoat_ior";
+constexpr std::string_view kSpecular = "KHR_materials_specular";
+constexpr std::string_view kEdgeColor = "EXT_materials_specular_edge_color";
+
+// Material extensions that change a metal's reflectance in ways matc does not carry (named in
+// a note when present), and those that make the material something other than a metal.
+constexpr std::array<std::string_view, 7> kNotCarriedExtensions{
+    "KHR_materials_iridescence",  "KHR_materials_anisotropy", "KHR_materials_sheen",
+    "KHR_materials_transmission", "KHR_materials_volume",     "KHR_materials_diffuse_transmission",
+    "KHR_materials_dispersion"};
+constexpr std::array<std::string_view, 2> kNotMetalExtensions{"KHR_materials_pbrSpecularGlossiness",
+                                                              "KHR_materials_unlit"};
+
+const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, std::string_view name) {
+  const auto found = extensions.find(std::string(name));
+  return found == extensions.end() ? nullptr : &found->second;
+}
+
+bool has_texture(const tinygltf::Value& object, const char* key) {
+  return object.IsObject() && object.Has(key) && object.Get(key).IsObject();
+}
+
+class Importer {
+ public:
+  Importer(const tinygltf::Model& model, const std::string& path, DocumentImport& result)
+      : model_(model), path_(path), result_(result) {}
+
+  void run() {
+    for (std::size_t i = 0; i < model_.materials.size(); ++i)
+      material(i);
+    if (result_.materials.empty() && !result_.diagnostics.has_errors()) {
+      result_.diagnostics.error(
+          {path_, 0, 0}, "",
+          model_.materials.empty()
+              ? std::string("holds no materials")
+              : fmt::format("holds no metal (none of its {} materials has metallicFactor above 0)",
+                            model_.materials.size()),
+          "a glTF asset with at least one metallic material");
+    }
+    if (result_.diagnostics.has_errors()) result_.materials.clear();
+  }
+
+ private:
+  // `materials[3] "CarPaint"` (the name escaped when printed), or `materials[3]`.
+  std::string field_of(std::size_t index) const {
+    const std::string& name = model_.materials[index].name;
+    return name.empty() ? fmt::format("materials[{}]", index)
+                        : fmt::format("materials[{}] \"{}\"", index, echoed(name, 64));
+  }
+
+  SourceLocation where() const { return {path_, 0, 0}; }
+
+  void note(const std::string& field, const std::string& message) {
+    result_.diagnostics.note(where(), field, message);
+  }
+
+  void error(const std::string& field, const std::string& message, const std::string& allowed) {
+    result_.diagnostics.error(where(), field, message, allowed);
+  }
+
+  // A factor in [low, high], or an error naming the property.
+  bool in_range(const std::string& field, const std::string& property, double value, double low,
+                double high) {
+    if (value >= low && value <= high) return true;
+    error(field, fmt::format("{} is {}", property, value), fmt::format("[{}, {}]", low, high));
+    return false;
+  }
+
+  // A number in an extension's object (its default where absent); false after an error.
+  bool number(const std::string& field, const tinygltf::Value& object, const char* key,
+              double& value) {
+    if (!object.IsObject() || !object.Has(key)) return true;
+    const tinygltf::Value& given = object.Get(key);
+    if (!given.IsNumber()) {
+      error(field, fmt::format("{} is not a number", key), "a number");
+      return false;
+    }
+    value = given.GetNumberAsDouble();
+    return true;
+  }
+
+  // An RGB array in an extension's object (its default where absent); false after an error.
+  bool rgb(const std::string& field, const tinygltf::Value& object, const char* key, Rgb3& value) {
+    if (!object.IsObject() || !object.Has(key)) return true;
+    const tinygltf::Value& given = object.Get(key);
+    if (!given.IsArray() || given.ArrayLen() != 3 || !given.Get(0).IsNumber() ||
+        !given.Get(1).IsNumber() || !given.Get(2).IsNumber()) {
+      error(field, fmt::format("{} is not three numbers", key), "[r, g, b]");
+      return false;
+    }
+    for (int c = 0; c < 3; ++c)
+      value[static_cast<std::size_t>(c)] = given.Get(c).GetNumberAsDouble();
+    return true;
+  }
+
+  void material(std::size_t index) {
+    const tinygltf::Material& source = model_.materials[index];
+    const std::string field = field_of(index);
+    const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
+    for (const std::string_view name : kNotMetalExtensions) {
+      if (extension(source.extensions, name)) {
+        note(field, fmt::format("not imported: {} is not a metallic-roughness metal", name));
+        return;
+      }
+    }
+    if (!(pbr.metallicFactor > 0)) {
+      note(field, "not imported: not a metal (metallicFactor 0); the engine keeps it");
+      return;
+    }
+    if (!in_range(field, "pbrMetallicRoughness.metallicFactor", pbr.metallicFactor, 0, 1)) return;
+    if (pbr.baseColorFactor.size() != 4) {
+      error(field, "pbrMetallicRoughness.baseColorFactor is not four numbers", "[r, g, b, a]");
+      return;
+    }
+    Rgb3 f0{};
+    for (std::size_t c = 0; c < 3; ++c) {
+      f0[c] = pbr.baseColorFactor[c];
+      if (!in_range(field, fmt::format("pbrMetallicRoughness.baseColorFactor[{}]", c), f0[c], 0, 1))
+        return;
+    }
+    if (!in_range(field, "pbrMetallicRoughness.roughnessFactor", pbr.roughnessFactor, 0, 1)) return;
+    std::vector<std::string> not_carried;
+    if (pbr.metallicFactor < 1)
+      not_carried.push_back(
+          fmt::format("partial metalness (metallicFactor {}: compiled as a full "
+                      "metal; the engine mixes in its dielectric)",
+                      pbr.metallicFactor));
+    if (pbr.baseColorTexture.index >= 0)
+      not_carried.push_back(
+          "baseColorTexture (F0 is baseColorFactor; `matc bake` bakes a "
+          "textured metal)");
+    if (pbr.metallicRoughnessTexture.index >= 0)
+      not_carried.push_back("metallicRoughnessTexture's metalness (compiled as a full metal)");
+
+    ordered_json material_json;
+    material_json["name"] = "";
+    material_json["description"] = fmt::format("glTF materials[{}] of {}", index,
+                                               std::filesystem::path(path_).filename().string());
+    material_json["color_space"] = "lin_rec709";  // glTF's colours are linear Rec.709
+    Rgb3 tint{1, 1, 1};                           // Schlick's curve: F82-tint with a white tint
+    if (!edge_color(field, source, tint, not_carried)) return;
+    const auto array = [](const Rgb3& v) { return ordered_json::array({v[0], v[1], v[2]}); };
+    material_json["f82_tint"] = {{"f0", array(f0)}, {"tint", array(tint)}};
+    material_json["roughness"] = pbr.roughnessFactor;
+    std::optional<ordered_json> coat;
+    if (!read_coat(field, source, coat, not_carried)) return;
+    if (coat) material_json["coat"] = std::move(*coat);
+    for (const std::string_view name : kNotCarriedExtensions)
+      if (extension(source.extensions, name)) not_carried.push_back(std::string(name));
+    if (!not_carried.empty()) {
+      std::string list;
+      for (const std::string& entry : not_carried)
+        list += (list.empty() ? "" : "; ") + entry;
+      note(field, fmt::format("not carried: {} (matc compiles the metal's Fresnel; docs/gltf.md "
+                              "lists what is left out and why)",
+                              list));
+    }
+    const std::string document_name =
+        source.name.empty() ? fmt::format("material_{}", index) : source.name;
+    const std::string name =
+        names_.claim(document_name, where(), field, field, result_.diagnostics);
+    if (name.empty()) return;
+    material_json["name"] = name;
+    add_material(material_json, field);
+  }
+
+  // EXT_materials_specular_edge_color inside KHR_materials_specular: the specular colour times
+  // the specular factor is the metal's F82 tint (clamped to [0, 1], as the extension clamps).
+  bool edge_color(const std::string& field, const tinygltf::Material& source, Rgb3& tint,
+                  std::vector<std::string>& not_carried) {
+    const tinygltf::Value* specular = extension(source.extensions, kSpecular);
+    if (!specular || !specular->IsObject()) return true;
+    const tinygltf::Value& nested = specular->Get("extensions");
+    const tinygltf::Value& edge = nested.IsObject() ? nested.Get(std::string(kEdgeColor)) : nested;
+    const bool enabled = edge.IsObject() && edge.Has("specularEdgeColorEnabled") &&
+                         edge.Get("specularEdgeColorEnabled").IsBool() &&
+                         edge.Get("specularEdgeColorEnabled").Get<bool>();
+    if (!enabled) return true;  // KHR_materials_specular alone does not change a metal
+    double factor = 1;
+    Rgb3 color{1, 1, 1};
+    const std::string where_field = fmt::format("{}: {}", field, kSpecular);
+    if (!number(where_field, *specular, "specularFactor", factor) ||
+        !rgb(where_field, *specular, "specularColorFactor", color))
+      return false;
+    if (!in_range(field, std::string(kSpecular) + ".specularFactor", factor, 0, 1)) return false;
+    bool clamped = false;
+    for (std::size_t c = 0; c < 3; ++c) {
+      if (!(color[c] >= 0)) {
+        error(field, fmt::format("{}.specularColorFactor[{}] is {}", kSpecular, c, color[c]),
+              "a number of at least 0");
+        return false;
+      }
+      const double value = color[c] * factor;
+      tint[c] = std::min(value, 1.0);
+      clamped = clamped || value > 1;
+    }
+    if (clamped)
+      note(field, fmt::format("{}'s edge colour above 1 clamped to 1 (as {} clamps it)", kSpecular,
+                              kEdgeColor));
+    if (has_texture(*specular, "specularTexture") || has_texture(*specular, "specularColorTexture"))
+      not_carried.push_back(std::string(kSpecular) +
+                            "'s textures (the edge colour is its factors)");
+    return true;
+  }
+
+  // KHR_materials_clearcoat (and KHR_materials_clearcoat_ior inside it): a coat of weight
+  // clearcoatFactor, roughness clearcoatRoughnessFactor and index clearcoatIor (1.5).
+  bool read_coat(const std::string& field, const tinygltf::Material& source,
+                 std::optional<ordered_json>& coat, std::vector<std::string>& not_carried) {
+    const tinygltf::Value* clearcoat = extension(source.extensions, kClearcoat);
+    if (!clearcoat || !clearcoat->IsObject()) return true;
+    const std::string where_field = fmt::format("{}: {}", field, kClearcoat);
+    double weight = 0, roughness = 0, ior = 1.5;
+    if (!number(where_field, *clearcoat, "clearcoatFactor", weight) ||
+        !number(where_field, *clearcoat, "clearcoatRoughnessFactor", roughness))
+      return false;
+    const tinygltf::Value& nested = clearcoat->Get("extensions");
+    if (nested.IsObject() && nested.Has(std::string(kClearcoatIor)) &&
+        !number(where_field, nested.Get(std::string(kClearcoatIor)), "clearcoatIor", ior))
+      return false;
+    if (!in_range(field, std::string(kClearcoat) + ".clearcoatFactor", weight, 0, 1) ||
+        !in_range(field, std::string(kClearcoat) + ".clearcoatRoughnessFactor", roughness, 0, 1))
+      return false;
+    if (has_texture(*clearcoat, "clearcoatTexture") ||
+        has_texture(*clearcoat, "clearcoatRoughnessTexture"))
+      not_carried.push_back(std::string(kClearcoat) +
+                            "'s weight and roughness textures (the coat "
+                            "is its factors)");
+    if (weight == 0) return true;  // no coat
+    if (!(ior >= 1.05 && ior <= 3)) {
+      error(field, fmt::format("{}.clearcoatIor is {}", kClearcoatIor, ior),
+            "a coat index in [1.05, 3] (matc's coats; nearer 1 the coat's Fresnel is a spike no "
+            "basis holds)");
+      return false;
+    }
+    coat = ordered_json{{"weight", weight}, {"ior", ior}, {"roughness", roughness}};
+    return true;
+  }
+
+  // The material file the import stands for, validated by the same parser as any material file.
+  void add_material(const ordered_json& material_json, const std::string& field) {
+    ImportedMaterial imported;
+    imported.json =
+        material_json.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n";
+    ParseResult parsed = parse_material(imported.json, path_);
+    if (!parsed.material) {
+      // The importer checked every value; a refusal here is matc's bug, reported as such.
+      error(field, "the imported material does not validate (an importer bug)",
+            parsed.diagnostics.items().empty() ? std::string()
+                                               : parsed.diagnostics.items().front().message);
+      return;
+    }
+    imported.material = std::move(*parsed.material);
+    imported.material.name_location = where();
+    result_.materials.push_back(std::move(imported));
+  }
+
+  const tinygltf::Model& model_;
+  const std::string& path_;
+  DocumentImport& result_;
+  DocumentNames names_;
+};
+
+}  // namespace
+
+DocumentImport import_gltf(std::string_view bytes, const std::string& path,
+                           const FileLoader& loader) {
+  DocumentImport result;
+  const std::optional<tinygltf::Model> model =
+      read_gltf_asset(bytes, path, loader, result.diagnostics);
+  if (!model) return result;
+  Importer(*model, path, result).run();
+  return result;
+}
+
+DocumentImport read_gltf_file(const std::string& path, const FileLoader& loader) {
+  const LoadedFile loaded = loader(path, kMaxGltfFileBytes);
+  if (!loaded.bytes) {
+    DocumentImport result;
+    result.diagnostics.error({path, 0, 0}, "", fmt::format("cannot read: {}", loaded.error),
+                             "a glTF asset of at most 256 MiB");
+    return result;
+  }
+  return import_gltf(*loaded.bytes, path, loader);
+}
+
+}  // namespace matc

@@ -1,0 +1,38 @@
+// libFuzzer target for the glTF importer: arbitrary bytes as a .glb (first byte odd) or a .gltf
+// asset (the rest). Whatever it reads, the importer must not crash, must report an error exactly
+// when it imports nothing, must read no file (external buffers are refused through a loader that
+// holds none), and every material it returns must be one the material parser accepts from its own
+// JSON and the compiler compiles. Built with -DMATC_BUILD_FUZZERS=ON (clang).
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "diagnostic_properties.h"
+#include "matc/compile/compile.h"
+#include "matc/material/gltf_import.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
+  const bool binary = (data[0] & 1u) != 0;
+  const std::string_view bytes(reinterpret_cast<const char*>(data) + 1, size - 1);
+  const matc::FileLoader no_files = [](const std::filesystem::path&, std::uintmax_t) {
+    return matc::LoadedFile{std::nullopt, "no files while fuzzing"};
+  };
+  const matc::DocumentImport imported =
+      matc::import_gltf(bytes, binary ? "fuzz.glb" : "fuzz.gltf", no_files);
+  if (imported.materials.empty() != imported.diagnostics.has_errors()) __builtin_trap();
+  matc::fuzz::require_printable_diagnostics(imported.diagnostics);
+  for (const matc::ImportedMaterial& material : imported.materials) {
+    const matc::ParseResult reparsed = matc::parse_material(material.json, "fuzz.gltf");
+    if (!reparsed.material || reparsed.diagnostics.has_errors()) __builtin_trap();
+    if (reparsed.material->name != material.material.name) __builtin_trap();
+  }
+  if (!imported.materials.empty()) {
+    const auto compiled =
+        matc::compile_material(imported.materials.front().material, matc::runtime::shipped_basis());
+    for (const auto& channel : compiled.coefficients)
+      for (const double c : channel)
+        if (!(c == c)) __builtin_trap();  // no NaN
+  }
+  return 0;
+}
