@@ -1,5 +1,5 @@
 // Writes 8-bit RGB PNG files with Node's zlib (no dependency): for the comparison images of
-// docs/web-engines.md.
+// docs/web-engines.md and the textures of the glTF assets the tests build.
 import { writeFileSync } from "node:fs";
 import { deflateSync } from "node:zlib";
 
@@ -26,6 +26,11 @@ function chunk(type, data) {
 
 // rgb: width * height * 3 bytes, first row at the top.
 export function writePng(path, width, height, rgb) {
+  writeFileSync(path, pngBytes(width, height, rgb));
+}
+
+// The PNG file's bytes (a texture for the glTF assets the tests build).
+export function pngBytes(width, height, rgb) {
   const header = Buffer.alloc(13);
   header.writeUInt32BE(width, 0);
   header.writeUInt32BE(height, 4);
@@ -36,9 +41,8 @@ export function writePng(path, width, height, rgb) {
     rows.set(rgb.subarray(y * width * 3, (y + 1) * width * 3), y * (width * 3 + 1) + 1);
   }
   const signature = Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
-  writeFileSync(path, Buffer.concat([signature, chunk("IHDR", header),
-                                     chunk("IDAT", deflateSync(rows, { level: 9 })),
-                                     chunk("IEND", Buffer.alloc(0))]));
+  return Buffer.concat([signature, chunk("IHDR", header), chunk("IDAT", deflateSync(rows, { level: 9 })),
+                        chunk("IEND", Buffer.alloc(0))]);
 }
 
 // Linear radiance to display: x / (1 + x) (Reinhard), then the sRGB transfer.

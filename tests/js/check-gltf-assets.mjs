@@ -1,0 +1,199 @@
+// glTF assets as artists make them, built with glTF-Transform (npm @gltf-transform/core and
+// extensions), read by matc (docs/gltf.md):
+//   - car.glb: a car-paint material (a metallic base under KHR_materials_clearcoat, a base-colour
+//     texture, normals and texture coordinates on its mesh), a chrome trim, a rubber tyre;
+//   - trim.gltf (JSON, external .bin and .png beside it): a chrome whose specular colour is its F82
+//     edge colour (EXT_materials_specular_edge_color inside KHR_materials_specular) and a
+//     lacquered copper with KHR_materials_clearcoat_ior, both drafts glTF-Transform does not know,
+//     written into its JSON as an exporter would.
+// Checks: `matc import` writes each metal's material file with the asset's values (coat weight,
+// roughness and index; F0; the edge colour) and notes what it does not carry (the texture, the
+// tyre); `matc eval`'s exact curve is the glTF definition of each metal (Schlick's from F0; the
+// F82-tint curve with the edge colour) and its F that curve within the compile's accuracy;
+// `matc -o` compiles both assets; the npm package's compiler imports the same material files from
+// the same bytes.
+//   node check-gltf-assets.mjs MATC NPM_DIR
+import { spawnSync } from "node:child_process";
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join, resolve } from "node:path";
+import { Document, NodeIO } from "@gltf-transform/core";
+import { KHRMaterialsClearcoat, KHRMaterialsSpecular } from "@gltf-transform/extensions";
+import { pngBytes } from "./png.mjs";
+import { check, finish } from "./report.mjs";
+import { run } from "./shader-cases.mjs";
+
+const [matc, npmDir] = process.argv.slice(2);
+
+// A UV sphere's positions, normals, texture coordinates and indices.
+function sphere(document, buffer, segments = 16, rings = 8) {
+  const positions = [], normals = [], uvs = [], indices = [];
+  for (let r = 0; r <= rings; ++r) {
+    for (let s = 0; s <= segments; ++s) {
+      const theta = (Math.PI * r) / rings, phi = (2 * Math.PI * s) / segments;
+      const n = [Math.sin(theta) * Math.cos(phi), Math.cos(theta), Math.sin(theta) * Math.sin(phi)];
+      positions.push(...n);
+      normals.push(...n);
+      uvs.push(s / segments, r / rings);
+    }
+  }
+  for (let r = 0; r < rings; ++r) {
+    for (let s = 0; s < segments; ++s) {
+      const a = r * (segments + 1) + s, b = a + segments + 1;
+      indices.push(a, b, a + 1, b, b + 1, a + 1);
+    }
+  }
+  const accessor = (type, array) => document.createAccessor().setType(type).setArray(array).setBuffer(buffer);
+  return document.createPrimitive()
+    .setAttribute("POSITION", accessor("VEC3", new Float32Array(positions)))
+    .setAttribute("NORMAL", accessor("VEC3", new Float32Array(normals)))
+    .setAttribute("TEXCOORD_0", accessor("VEC2", new Float32Array(uvs)))
+    .setIndices(accessor("SCALAR", new Uint16Array(indices)));
+}
+
+function scene(document, materials) {
+  const buffer = document.createBuffer("geometry");
+  const root = document.createScene("scene");
+  materials.forEach((material, i) => {
+    const mesh = document.createMesh(material.getName()).addPrimitive(sphere(document, buffer).setMaterial(material));
+    root.addChild(document.createNode(material.getName()).setMesh(mesh).setTranslation([2.5 * i, 0, 0]));
+  });
+}
+
+// car.glb: the car-paint asset.
+async function carAsset(path) {
+  const document = new Document();
+  const clearcoat = document.createExtension(KHRMaterialsClearcoat);
+  const flakes = new Uint8Array(8 * 8 * 3).map((_, i) => (i % 3 === 0 ? 200 : 40) + (i % 7));
+  const texture = document.createTexture("paint").setImage(pngBytes(8, 8, flakes)).setMimeType("image/png");
+  const paint = document.createMaterial("Car Paint").setBaseColorFactor([0.55, 0.06, 0.05, 1])
+    .setMetallicFactor(1).setRoughnessFactor(0.4).setBaseColorTexture(texture)
+    .setExtension("KHR_materials_clearcoat", clearcoat.createClearcoat().setClearcoatFactor(1).setClearcoatRoughnessFactor(0.03));
+  const chrome = document.createMaterial("Chrome").setBaseColorFactor([0.55, 0.556, 0.554, 1])
+    .setMetallicFactor(1).setRoughnessFactor(0.08);
+  const tyre = document.createMaterial("Tyre").setBaseColorFactor([0.02, 0.02, 0.02, 1])
+    .setMetallicFactor(0).setRoughnessFactor(0.9);
+  scene(document, [paint, chrome, tyre]);
+  writeFileSync(path, await new NodeIO().registerExtensions([KHRMaterialsClearcoat]).writeBinary(document));
+}
+
+// trim.gltf: JSON with its resources beside it, the draft extensions added to the JSON.
+async function trimAsset(dir) {
+  const document = new Document();
+  const specular = document.createExtension(KHRMaterialsSpecular);
+  const clearcoat = document.createExtension(KHRMaterialsClearcoat);
+  const chrome = document.createMaterial("EdgeChrome").setBaseColorFactor([0.55, 0.556, 0.554, 1])
+    .setMetallicFactor(1).setRoughnessFactor(0.1)
+    .setExtension("KHR_materials_specular", specular.createSpecular().setSpecularColorFactor([0.65, 0.68, 0.74]));
+  const copper = document.createMaterial("LacqueredCopper").setBaseColorFactor([0.93, 0.62, 0.52, 1])
+    .setMetallicFactor(1).setRoughnessFactor(0.3)
+    .setExtension("KHR_materials_clearcoat", clearcoat.createClearcoat().setClearcoatFactor(0.8).setClearcoatRoughnessFactor(0.1));
+  scene(document, [chrome, copper]);
+  const { json, resources } = await new NodeIO().registerExtensions([KHRMaterialsSpecular, KHRMaterialsClearcoat])
+    .writeJSON(document, { basename: "trim" });
+  json.materials[0].extensions.KHR_materials_specular.extensions =
+    { EXT_materials_specular_edge_color: { specularEdgeColorEnabled: true } };
+  json.materials[1].extensions.KHR_materials_clearcoat.extensions = { KHR_materials_clearcoat_ior: { clearcoatIor: 1.6 } };
+  json.extensionsUsed.push("EXT_materials_specular_edge_color", "KHR_materials_clearcoat_ior");
+  writeFileSync(join(dir, "trim.gltf"), JSON.stringify(json, null, 2));
+  for (const [name, bytes] of Object.entries(resources)) writeFileSync(join(dir, name), bytes);
+}
+
+const schlick = (mu, f0) => f0 + (1 - f0) * (1 - mu) ** 5;
+// Hoffman's F82-tint: Schlick's curve less a mu (1 - mu)^6, a so that F(1/7) = tint x Schlick(1/7).
+function f82Tint(mu, f0, tint) {
+  const bar = 1 / 7;
+  const a = (schlick(bar, f0) * (1 - tint)) / (bar * (1 - bar) ** 6);
+  return schlick(mu, f0) - a * mu * (1 - mu) ** 6;
+}
+
+const kCosines = Array.from({ length: 21 }, (_, i) => i / 20);
+
+// `matc eval` of one material of an asset: its exact curve equals `definition` (the glTF
+// metal's); its F is that curve within the compile's own accuracy (`accuracy`: the largest error
+// per channel in the build's <name>.json), and within 1e-6 with the f82 basis, which holds Schlick
+// and F82-tint curves exactly (up to the float32 its coefficients are evaluated in).
+function checkCurves(asset, material, definition, accuracy) {
+  const evaluate = (basis) => JSON.parse(run(matc, ["eval", asset, "--material", material, "--basis", basis,
+                                                    "--mu", kCosines.join(",")]));
+  const powers = evaluate("powers"), exactBasis = evaluate("f82");
+  let exact = 0, fitted = 0, f82 = 0;
+  kCosines.forEach((mu, i) => {
+    for (let c = 0; c < 3; ++c) {
+      const expected = definition(mu, c);
+      exact = Math.max(exact, Math.abs(powers.F_exact[i][c] - expected));
+      const error = Math.abs(powers.F[i][c] - expected);
+      check(error <= accuracy[c] + 1e-12, `${material}: F at mu ${mu} is ${error} from the glTF definition, ` +
+                                          `beyond the compile's accuracy ${accuracy[c]}`);
+      fitted = Math.max(fitted, error);
+      f82 = Math.max(f82, Math.abs(exactBasis.F[i][c] - expected));
+    }
+  });
+  check(exact < 1e-12, `${material}: matc's exact curve is ${exact} from the glTF definition`);
+  check(f82 < 1e-6, `${material}: with the f82 basis F is ${f82} from the glTF definition`);
+  return { exact, fitted, f82 };
+}
+
+const dir = mkdtempSync(join(tmpdir(), "matc-gltf-assets-"));
+try {
+  const car = join(dir, "car.glb");
+  await carAsset(car);
+  await trimAsset(dir);
+  const trim = join(dir, "trim.gltf");
+
+  // matc import: the material files, and the notes.
+  const out = join(dir, "imported");
+  const importRun = spawnSync(matc, ["import", "-o", out, car, trim], { encoding: "utf8" });
+  check(importRun.status === 0, `matc import: exit ${importRun.status}\n${importRun.stderr}`);
+  const notes = importRun.stderr;
+  const imported = (name) => JSON.parse(readFileSync(join(out, `${name}.json`), "utf8"));
+  const paint = imported("Car_Paint");
+  check(JSON.stringify(paint.f82_tint) === JSON.stringify({ f0: [0.55, 0.06, 0.05], tint: [1, 1, 1] }),
+        `Car_Paint: ${JSON.stringify(paint.f82_tint)}`);
+  check(paint.coat?.weight === 1 && paint.coat?.ior === 1.5 && paint.coat?.roughness === 0.03,
+        `Car_Paint's coat: ${JSON.stringify(paint.coat)}`);
+  const copper = imported("LacqueredCopper");
+  check(copper.coat?.weight === 0.8 && copper.coat?.ior === 1.6, `LacqueredCopper's coat: ${JSON.stringify(copper.coat)}`);
+  const edge = imported("EdgeChrome");
+  check(JSON.stringify(edge.f82_tint.tint) === JSON.stringify([0.65, 0.68, 0.74]),
+        `EdgeChrome's tint: ${JSON.stringify(edge.f82_tint)}`);
+  for (const phrase of ['materials[0] "Car Paint": not carried: baseColorTexture',
+                        'materials[2] "Tyre": not imported: not a metal']) {
+    check(notes.includes(phrase), `matc import's notes lack ${phrase}:\n${notes}`);
+  }
+
+  // The curves: the glTF definition of each metal.
+  const f0Chrome = [0.55, 0.556, 0.554];
+  const tint = [0.65, 0.68, 0.74];
+  // Both assets compile; then the curves against the glTF definition of each metal.
+  run(matc, ["-q", "-o", join(dir, "build"), "--emit", "glsl,json", car, trim]);
+  for (const name of ["Car_Paint", "Chrome", "EdgeChrome", "LacqueredCopper"]) {
+    check(readFileSync(join(dir, "build", `${name}.glsl`), "utf8").includes(`matc_fresnel_${name}`), `${name}.glsl`);
+  }
+  const accuracy = (name) =>
+    JSON.parse(readFileSync(join(dir, "build", `${name}.json`), "utf8")).accuracy.decomposition.max;
+  const chromeCurves = checkCurves(car, "Chrome", (mu, c) => schlick(mu, f0Chrome[c]), accuracy("Chrome"));
+  const edgeCurves = checkCurves(trim, "EdgeChrome", (mu, c) => f82Tint(mu, f0Chrome[c], tint[c]),
+                                 accuracy("EdgeChrome"));
+
+  // The npm package's compiler: the same material files from the same bytes (a .gltf's external
+  // buffers cannot be read there: the .glb only).
+  const { createMatc } = await import(resolve(npmDir, "index.mjs"));
+  const wasm = await createMatc();
+  const materials = wasm.parseMaterials(new Uint8Array(readFileSync(car)), "car.glb");
+  check(materials.map((m) => m.name).join() === "Car_Paint,Chrome", `the package imports ${materials.map((m) => m.name)}`);
+  for (const material of materials) {
+    check(material.json === readFileSync(join(out, `${material.name}.json`), "utf8"),
+          `${material.name}: the package's material file differs from matc import's`);
+  }
+  console.log(`glTF assets built with glTF-Transform: 4 metals imported (2 coated, 1 edge-coloured), ` +
+              `notes for the texture and the non-metal; exact curves equal the glTF definitions ` +
+              `(${Math.max(chromeCurves.exact, edgeCurves.exact).toExponential(1)}), F within ` +
+              `${chromeCurves.fitted.toFixed(4)} (Schlick's chrome) and ${edgeCurves.fitted.toFixed(4)} (the edge-coloured ` +
+              `one) with the default basis, ${Math.max(chromeCurves.f82, edgeCurves.f82).toExponential(1)} with ` +
+              `--basis f82; the npm package ` +
+              `imports the .glb's material files byte for byte`);
+} finally {
+  rmSync(dir, { recursive: true, force: true });
+}
+finish();
