@@ -24,6 +24,11 @@ function(_matc_json_name path caller kind out_var)
             "the materials inside it: write its material files with `matc import` and list those "
             "(docs/interchange.md)")
   endif()
+  if(path MATCHES "\\.([gG][lL][tT][fF]|[gG][lL][bB])$")
+    message(FATAL_ERROR "${caller}: ${path} is a glTF asset, whose outputs are named after the "
+            "metals inside it: write their material files with `matc import` and list those "
+            "(docs/gltf.md)")
+  endif()
   file(READ "${path}" _json)
   string(JSON _name ERROR_VARIABLE _error GET "${_json}" name)
   if(_error)
