@@ -1,7 +1,8 @@
 // The look-development page (js/package/lookdev/, docs/lookdev.md), served from the staged npm
 // package as a project's node_modules and driven through its controls in headless Chromium
 // (lookdev-check-page.mjs). For materials chosen as a person would (a preset, a colour-picker
-// metal in ACEScg, typed n and k, a coated metal, a pasted material file):
+// metal in ACEScg, typed n and k, a coated metal, a pasted material file, a pasted glTF asset of
+// several metals, one chosen):
 //   - no console error or warning, no uncaught exception;
 //   - the probe pixels of the page's matc material (its three.js material, under the engine checks'
 //     environment, point and rect lights) equal the CPU runtime's (`matc eval`), to 1e-4;
@@ -64,6 +65,15 @@ const kCases = [
                  phrase: "pasted.mtlx: error: this build of matc does not read MaterialX documents" },
                { key: "pasted broken JSON", steps: [{ paste: "{\"name\": \"x\",\n \"ior\": {\"n\": [1, 2" }],
                  messageSelector: ".message[data-for='document']", phrase: "pasted.json:2:" }] },
+  // A glTF asset of two metals and a non-metal: the page offers its metals, the second chosen.
+  { key: "pasted glTF asset", name: "Trim", bare: true, choices: ["Paint", "Trim"],
+    steps: [{ paste: JSON.stringify({ asset: { version: "2.0" }, materials: [
+      { name: "Paint", pbrMetallicRoughness: { baseColorFactor: [0.6, 0.05, 0.04, 1], roughnessFactor: 0.3 },
+        extensions: { KHR_materials_clearcoat: { clearcoatFactor: 1 } } },
+      { name: "Rubber", pbrMetallicRoughness: { metallicFactor: 0 } },
+      { name: "Trim", pbrMetallicRoughness: { baseColorFactor: [0.55, 0.556, 0.554, 1], roughnessFactor: 0.3 } }] }) },
+            select("#choice", "1")],
+    lights: ["environment", "point"] },
 ];
 
 const kConfig = { probeSize: kProbeSize, pixels: kProbePixels, point: kPointLight, rect: kProbeRectLight,
@@ -117,6 +127,9 @@ try {
     if (!shown) continue;
     check(!shown.refused && shown.messages.length === 0,
           `${testCase.key}: the page refused it: ${shown.status} ${shown.messages.join(" | ")}`);
+    if (testCase.choices) {
+      check(shown.choices.join() === testCase.choices.join(), `${testCase.key}: the page offers ${shown.choices}`);
+    }
     // The exported material file, compiled by the native matc as a person would.
     const file = join(materials, `${testCase.name}.json`);
     writeFileSync(file, shown.exports.material);

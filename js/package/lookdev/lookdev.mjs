@@ -294,8 +294,18 @@ function chooseDocumentMaterial(index) {
   scheduleUpdate();
 }
 
-// A pasted text is MaterialX when it starts with "<" (an XML declaration or element).
-const pastedPath = (text) => (text.trimStart().startsWith("<") ? "pasted.mtlx" : "pasted.json");
+// A pasted text is MaterialX when it starts with "<" (an XML declaration or element), a glTF
+// asset when it is JSON with an "asset" object, else a material file.
+function pastedPath(text) {
+  if (text.trimStart().startsWith("<")) return "pasted.mtlx";
+  try {
+    const value = JSON.parse(text);
+    if (value && typeof value === "object" && value.asset && typeof value.asset === "object") return "pasted.gltf";
+  } catch {
+    // not JSON: the material parser says where
+  }
+  return "pasted.json";
+}
 
 // ---- Start. ----
 
