@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "matc/material/gltf_import.h"
 #include "matc/material/materialx_import.h"
@@ -38,6 +39,25 @@ DocumentImport import_document(std::string_view bytes, const std::string& path,
 DocumentImport read_document_file(const std::string& path, const FileLoader& loader) {
   if (is_gltf_path(path)) return read_gltf_file(path, loader);
   return read_materialx_file(path, loader);
+}
+
+void add_imported_material(DocumentImport& result, const nlohmann::ordered_json& material_json,
+                           const std::string& path, const SourceLocation& location,
+                           const std::string& field) {
+  ImportedMaterial imported;
+  imported.json =
+      material_json.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+  ParseResult parsed = parse_material(imported.json, path);
+  if (!parsed.material) {
+    result.diagnostics.error(
+        location, field, "the imported material does not validate (an importer bug)",
+        parsed.diagnostics.items().empty() ? std::string()
+                                           : parsed.diagnostics.items().front().message);
+    return;
+  }
+  imported.material = std::move(*parsed.material);
+  imported.material.name_location = location;
+  result.materials.push_back(std::move(imported));
 }
 
 std::string DocumentNames::claim(const std::string& document_name, const SourceLocation& location,

@@ -181,7 +181,7 @@ class Importer {
         names_.claim(document_name, where(), field, field, result_.diagnostics);
     if (name.empty()) return;
     material_json["name"] = name;
-    add_material(material_json, field);
+    add_imported_material(result_, material_json, path_, where(), field);
   }
 
   // EXT_materials_specular_edge_color inside KHR_materials_specular: the specular colour times
@@ -255,24 +255,6 @@ class Importer {
     }
     coat = ordered_json{{"weight", weight}, {"ior", ior}, {"roughness", roughness}};
     return true;
-  }
-
-  // The material file the import stands for, validated by the same parser as any material file.
-  void add_material(const ordered_json& material_json, const std::string& field) {
-    ImportedMaterial imported;
-    imported.json =
-        material_json.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n";
-    ParseResult parsed = parse_material(imported.json, path_);
-    if (!parsed.material) {
-      // The importer checked every value; a refusal here is matc's bug, reported as such.
-      error(field, "the imported material does not validate (an importer bug)",
-            parsed.diagnostics.items().empty() ? std::string()
-                                               : parsed.diagnostics.items().front().message);
-      return;
-    }
-    imported.material = std::move(*parsed.material);
-    imported.material.name_location = where();
-    result_.materials.push_back(std::move(imported));
   }
 
   const tinygltf::Model& model_;

@@ -206,7 +206,8 @@ class Importer {
       material_json["coat"] = std::move(*coat);
     }
     if (material_json["name"].get<std::string>().empty()) return;  // a name clash, reported
-    add_material(material_json, shader.material);
+    add_imported_material(result_, material_json, document_.path(), document_.at(shader.material),
+                          material_json["name"].get<std::string>());
   }
 
   // The coat block of a material whose coat weight is above 0: its weight, colour, roughness and
@@ -324,29 +325,6 @@ class Importer {
         element_name, location, element_name,
         fmt::format("material '{}' at {}:{}", element_name, location.line, location.column),
         result_.diagnostics);
-  }
-
-  // The material file the import stands for, validated by the same parser as any material file:
-  // a compile of the document and a compile of `matc import`'s file are the same material.
-  void add_material(const ordered_json& material_json, const pugi::xml_node& element) {
-    ImportedMaterial imported;
-    // Names and descriptions come from the document's bytes, which XML parsing does not check
-    // for UTF-8: a bad byte becomes U+FFFD in the description (the name is ASCII by then).
-    imported.json =
-        material_json.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n";
-    ParseResult parsed = parse_material(imported.json, document_.path());
-    if (!parsed.material) {
-      // The importer checked every value; a refusal here is matc's bug, reported as such.
-      result_.diagnostics.error(document_.at(element), material_json["name"].get<std::string>(),
-                                "the imported material does not validate (an importer bug)",
-                                parsed.diagnostics.items().empty()
-                                    ? std::string()
-                                    : parsed.diagnostics.items().front().message);
-      return;
-    }
-    imported.material = std::move(*parsed.material);
-    imported.material.name_location = document_.at(element);
-    result_.materials.push_back(std::move(imported));
   }
 
   MaterialXImport result_;  // before document_, which reports into its diagnostics

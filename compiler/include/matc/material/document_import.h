@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "matc/base/diagnostics.h"
 #include "matc/material/material.h"
 #include "matc/material/parse.h"
@@ -36,6 +38,14 @@ DocumentImport import_document(std::string_view bytes, const std::string& path,
 
 // Reads and imports the document at `path`.
 DocumentImport read_document_file(const std::string& path, const FileLoader& loader = load_file);
+
+// Adds the material file an import stands for to `result`, validated by the same parser as any
+// material file (so a compile of the document and of `matc import`'s file are the same material),
+// named at `location` (`field` in diagnostics). A refusal there is an importer's bug, reported as
+// one. Bytes that are not UTF-8 in the document's text become U+FFFD in the file.
+void add_imported_material(DocumentImport& result, const nlohmann::ordered_json& material_json,
+                           const std::string& path, const SourceLocation& location,
+                           const std::string& field);
 
 // Names for a document's materials: sanitised (sanitized_material_name) with a note when that
 // changes them, and unique ignoring case (they name files), an error on a clash.
