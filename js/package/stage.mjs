@@ -38,7 +38,7 @@ fs.writeFileSync(path.join(outDir, "index.mjs"),
 for (const file of ["matc.mjs", "matc.wasm"]) fs.copyFileSync(path.join(wasmDir, file), path.join(outDir, file));
 // The engine integrations (one source: the tests run these files).
 for (const file of ["matc-build.mjs", "tables.mjs"]) fs.copyFileSync(path.join(here, file), path.join(outDir, file));
-for (const [folder, files] of [["three", ["matc-three.mjs", "matc-three-webgpu.mjs", "textures.mjs", "README.md"]],
+for (const [folder, files] of [["three", ["matc-three.mjs", "matc-three-webgpu.mjs", "matc-gltf.mjs", "textures.mjs", "README.md"]],
                                ["babylon", ["matc-babylon.mjs", "README.md"]],
                                ["lookdev", ["index.html", "lookdev.css", "lookdev.mjs", "lookdev-plot.mjs",
                                             "lookdev-state.mjs", "lookdev-view.mjs", "README.md"]]]) {

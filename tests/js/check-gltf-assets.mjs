@@ -17,87 +17,11 @@ import { spawnSync } from "node:child_process";
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
-import { Document, NodeIO } from "@gltf-transform/core";
-import { KHRMaterialsClearcoat, KHRMaterialsSpecular } from "@gltf-transform/extensions";
-import { pngBytes } from "./png.mjs";
+import { carAsset, trimAsset } from "./gltf-assets.mjs";
 import { check, finish } from "./report.mjs";
 import { run } from "./shader-cases.mjs";
 
 const [matc, npmDir] = process.argv.slice(2);
-
-// A UV sphere's positions, normals, texture coordinates and indices.
-function sphere(document, buffer, segments = 16, rings = 8) {
-  const positions = [], normals = [], uvs = [], indices = [];
-  for (let r = 0; r <= rings; ++r) {
-    for (let s = 0; s <= segments; ++s) {
-      const theta = (Math.PI * r) / rings, phi = (2 * Math.PI * s) / segments;
-      const n = [Math.sin(theta) * Math.cos(phi), Math.cos(theta), Math.sin(theta) * Math.sin(phi)];
-      positions.push(...n);
-      normals.push(...n);
-      uvs.push(s / segments, r / rings);
-    }
-  }
-  for (let r = 0; r < rings; ++r) {
-    for (let s = 0; s < segments; ++s) {
-      const a = r * (segments + 1) + s, b = a + segments + 1;
-      indices.push(a, b, a + 1, b, b + 1, a + 1);
-    }
-  }
-  const accessor = (type, array) => document.createAccessor().setType(type).setArray(array).setBuffer(buffer);
-  return document.createPrimitive()
-    .setAttribute("POSITION", accessor("VEC3", new Float32Array(positions)))
-    .setAttribute("NORMAL", accessor("VEC3", new Float32Array(normals)))
-    .setAttribute("TEXCOORD_0", accessor("VEC2", new Float32Array(uvs)))
-    .setIndices(accessor("SCALAR", new Uint16Array(indices)));
-}
-
-function scene(document, materials) {
-  const buffer = document.createBuffer("geometry");
-  const root = document.createScene("scene");
-  materials.forEach((material, i) => {
-    const mesh = document.createMesh(material.getName()).addPrimitive(sphere(document, buffer).setMaterial(material));
-    root.addChild(document.createNode(material.getName()).setMesh(mesh).setTranslation([2.5 * i, 0, 0]));
-  });
-}
-
-// car.glb: the car-paint asset.
-async function carAsset(path) {
-  const document = new Document();
-  const clearcoat = document.createExtension(KHRMaterialsClearcoat);
-  const flakes = new Uint8Array(8 * 8 * 3).map((_, i) => (i % 3 === 0 ? 200 : 40) + (i % 7));
-  const texture = document.createTexture("paint").setImage(pngBytes(8, 8, flakes)).setMimeType("image/png");
-  const paint = document.createMaterial("Car Paint").setBaseColorFactor([0.55, 0.06, 0.05, 1])
-    .setMetallicFactor(1).setRoughnessFactor(0.4).setBaseColorTexture(texture)
-    .setExtension("KHR_materials_clearcoat", clearcoat.createClearcoat().setClearcoatFactor(1).setClearcoatRoughnessFactor(0.03));
-  const chrome = document.createMaterial("Chrome").setBaseColorFactor([0.55, 0.556, 0.554, 1])
-    .setMetallicFactor(1).setRoughnessFactor(0.08);
-  const tyre = document.createMaterial("Tyre").setBaseColorFactor([0.02, 0.02, 0.02, 1])
-    .setMetallicFactor(0).setRoughnessFactor(0.9);
-  scene(document, [paint, chrome, tyre]);
-  writeFileSync(path, await new NodeIO().registerExtensions([KHRMaterialsClearcoat]).writeBinary(document));
-}
-
-// trim.gltf: JSON with its resources beside it, the draft extensions added to the JSON.
-async function trimAsset(dir) {
-  const document = new Document();
-  const specular = document.createExtension(KHRMaterialsSpecular);
-  const clearcoat = document.createExtension(KHRMaterialsClearcoat);
-  const chrome = document.createMaterial("EdgeChrome").setBaseColorFactor([0.55, 0.556, 0.554, 1])
-    .setMetallicFactor(1).setRoughnessFactor(0.1)
-    .setExtension("KHR_materials_specular", specular.createSpecular().setSpecularColorFactor([0.65, 0.68, 0.74]));
-  const copper = document.createMaterial("LacqueredCopper").setBaseColorFactor([0.93, 0.62, 0.52, 1])
-    .setMetallicFactor(1).setRoughnessFactor(0.3)
-    .setExtension("KHR_materials_clearcoat", clearcoat.createClearcoat().setClearcoatFactor(0.8).setClearcoatRoughnessFactor(0.1));
-  scene(document, [chrome, copper]);
-  const { json, resources } = await new NodeIO().registerExtensions([KHRMaterialsSpecular, KHRMaterialsClearcoat])
-    .writeJSON(document, { basename: "trim" });
-  json.materials[0].extensions.KHR_materials_specular.extensions =
-    { EXT_materials_specular_edge_color: { specularEdgeColorEnabled: true } };
-  json.materials[1].extensions.KHR_materials_clearcoat.extensions = { KHR_materials_clearcoat_ior: { clearcoatIor: 1.6 } };
-  json.extensionsUsed.push("EXT_materials_specular_edge_color", "KHR_materials_clearcoat_ior");
-  writeFileSync(join(dir, "trim.gltf"), JSON.stringify(json, null, 2));
-  for (const [name, bytes] of Object.entries(resources)) writeFileSync(join(dir, name), bytes);
-}
 
 const schlick = (mu, f0) => f0 + (1 - f0) * (1 - mu) ** 5;
 // Hoffman's F82-tint: Schlick's curve less a mu (1 - mu)^6, a so that F(1/7) = tint x Schlick(1/7).
