@@ -41,8 +41,13 @@ export function matcGltfPlugin({ matc, build, compile = {}, areaLights = "matc" 
           try {
             const [material] = matc.parseMaterials(materialAsset(parser.json, index), "asset.gltf");
             loaded = material ? await build.loadMaterial(matc.compile(material, compile)) : null;
-          } catch {
-            loaded = null;  // not a metal (or not one matc reads): three.js's material stays
+          } catch (error) {
+            // Not a metal: three.js's material stays, silently. Anything else (a value matc
+            // refuses, options that do not fit the build) is said.
+            if (!/holds no metal/.test(error.message)) {
+              console.warn(`matc: glTF materials[${index}] "${parser.json.materials[index].name ?? ""}" keeps ` +
+                           `three.js's Fresnel: ${error.message}`);
+            }
           }
           compiled.set(index, loaded);
         }
