@@ -1,6 +1,8 @@
 #include "gltf_asset.h"
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cstdint>
 #include <filesystem>
 #include <limits>
@@ -328,8 +330,11 @@ class ModelChecks {
 
 std::optional<tinygltf::Model> read_gltf_asset(std::string_view bytes, const std::string& path,
                                                const FileLoader& loader, Diagnostics& diagnostics) {
-  const bool binary = path.size() >= 4 && (path.compare(path.size() - 4, 4, ".glb") == 0 ||
-                                           path.compare(path.size() - 4, 4, ".GLB") == 0);
+  // ".glb" in any case, as is_gltf_path takes it.
+  const bool binary =
+      path.size() >= 4 && std::equal(path.end() - 4, path.end(), ".glb", [](char a, char b) {
+        return std::tolower(static_cast<unsigned char>(a)) == b;
+      });
   if (bytes.size() > kMaxGltfFileBytes) {
     diagnostics.error({path, 0, 0}, "", fmt::format("{} bytes", bytes.size()),
                       "a glTF asset of at most 256 MiB");

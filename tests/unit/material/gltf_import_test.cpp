@@ -188,6 +188,8 @@ TEST(GltfImport, AGlbImportsAsItsJsonDoes) {
       "accessors": [{"bufferView": 0, "componentType": 5126, "count": 1, "type": "VEC3"}])");
   const auto binary = import_gltf(glb(json, std::string(12, '\0')), "car.glb");
   ASSERT_EQ(binary.materials.size(), 1u) << all_diagnostics(binary);
+  // The extension in any case, as every reader takes it.
+  EXPECT_EQ(import_gltf(glb(json, std::string(12, '\0')), "CAR.Glb").materials.size(), 1u);
   const auto text = import_gltf(asset(kCarPaint), "car.gltf");
   ASSERT_EQ(text.materials.size(), 1u);
   EXPECT_EQ(binary.materials[0].json.substr(binary.materials[0].json.find("\"color_space\"")),
