@@ -11,19 +11,15 @@
 
 namespace matc {
 
-namespace {
-
-bool has_extension(std::string_view path, std::string_view extension) {
+bool path_has_extension(std::string_view path, std::string_view extension) {
   if (path.size() < extension.size()) return false;
   return std::equal(
       extension.begin(), extension.end(), path.end() - extension.size(),
       [](char a, char b) { return a == std::tolower(static_cast<unsigned char>(b)); });
 }
 
-}  // namespace
-
 bool is_gltf_path(std::string_view path) {
-  return has_extension(path, ".gltf") || has_extension(path, ".glb");
+  return path_has_extension(path, ".gltf") || path_has_extension(path, ".glb");
 }
 
 bool is_document_path(std::string_view path) {
@@ -37,8 +33,16 @@ DocumentImport import_document(std::string_view bytes, const std::string& path,
 }
 
 DocumentImport read_document_file(const std::string& path, const FileLoader& loader) {
-  if (is_gltf_path(path)) return read_gltf_file(path, loader);
-  return read_materialx_file(path, loader);
+  const bool gltf = is_gltf_path(path);
+  const LoadedFile loaded = loader(path, gltf ? kMaxGltfFileBytes : kMaxMaterialXFileBytes);
+  if (!loaded.bytes) {
+    DocumentImport result;
+    result.diagnostics.error(
+        {path, 0, 0}, "", fmt::format("cannot read: {}", loaded.error),
+        gltf ? "a glTF asset of at most 256 MiB" : "a MaterialX document of at most 16 MiB");
+    return result;
+  }
+  return import_document(*loaded.bytes, path, loader);
 }
 
 void add_imported_material(DocumentImport& result, const nlohmann::ordered_json& material_json,

@@ -1,15 +1,13 @@
 #include "gltf_asset.h"
 
-#include <algorithm>
 #include <array>
-#include <cctype>
 #include <cstdint>
 #include <filesystem>
-#include <limits>
 
 #include <fmt/format.h>
 
 #include "matc/base/echoed_text.h"
+#include "matc/material/document_import.h"
 #include "matc/material/gltf_import.h"
 
 namespace matc {
@@ -330,11 +328,7 @@ class ModelChecks {
 
 std::optional<tinygltf::Model> read_gltf_asset(std::string_view bytes, const std::string& path,
                                                const FileLoader& loader, Diagnostics& diagnostics) {
-  // ".glb" in any case, as is_gltf_path takes it.
-  const bool binary =
-      path.size() >= 4 && std::equal(path.end() - 4, path.end(), ".glb", [](char a, char b) {
-        return std::tolower(static_cast<unsigned char>(a)) == b;
-      });
+  const bool binary = path_has_extension(path, ".glb");
   if (bytes.size() > kMaxGltfFileBytes) {
     diagnostics.error({path, 0, 0}, "", fmt::format("{} bytes", bytes.size()),
                       "a glTF asset of at most 256 MiB");

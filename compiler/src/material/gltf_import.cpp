@@ -275,15 +275,4 @@ DocumentImport import_gltf(std::string_view bytes, const std::string& path,
   return result;
 }
 
-DocumentImport read_gltf_file(const std::string& path, const FileLoader& loader) {
-  const LoadedFile loaded = loader(path, kMaxGltfFileBytes);
-  if (!loaded.bytes) {
-    DocumentImport result;
-    result.diagnostics.error({path, 0, 0}, "", fmt::format("cannot read: {}", loaded.error),
-                             "a glTF asset of at most 256 MiB");
-    return result;
-  }
-  return import_gltf(*loaded.bytes, path, loader);
-}
-
 }  // namespace matc

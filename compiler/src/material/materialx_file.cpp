@@ -1,8 +1,5 @@
-// The parts of MaterialX reading that need no XML parser: names, extensions, reading the file.
-#include <algorithm>
+// The parts of MaterialX reading that need no XML parser: names and extensions.
 #include <cctype>
-
-#include <fmt/format.h>
 
 #include "matc/material/materialx_import.h"
 
@@ -24,22 +21,7 @@ std::string sanitized_material_name(std::string_view name) {
 }
 
 bool is_materialx_path(std::string_view path) {
-  if (path.size() < 5) return false;
-  std::string extension(path.substr(path.size() - 5));
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension == ".mtlx";
-}
-
-MaterialXImport read_materialx_file(const std::string& path, const FileLoader& loader) {
-  const LoadedFile loaded = loader(path, kMaxMaterialXFileBytes);
-  if (!loaded.bytes) {
-    MaterialXImport result;
-    result.diagnostics.error({path, 0, 0}, "", fmt::format("cannot read: {}", loaded.error),
-                             "a MaterialX document of at most 16 MiB");
-    return result;
-  }
-  return import_materialx(*loaded.bytes, path);
+  return path_has_extension(path, ".mtlx");
 }
 
 }  // namespace matc

@@ -28,6 +28,9 @@ struct DocumentImport {
   Diagnostics diagnostics;  // errors, warnings, and notes for every material skipped
 };
 
+// Whether `path` ends in `extension` (given in lower case, with its dot), in any case.
+bool path_has_extension(std::string_view path, std::string_view extension);
+
 // Whether `path` names a document an importer reads (.mtlx, .gltf, .glb; any case).
 bool is_document_path(std::string_view path);
 
@@ -36,7 +39,7 @@ bool is_document_path(std::string_view path);
 DocumentImport import_document(std::string_view bytes, const std::string& path,
                                const FileLoader& loader = load_file);
 
-// Reads and imports the document at `path`.
+// Reads the document at `path` (through `loader`, at most its format's size) and imports it.
 DocumentImport read_document_file(const std::string& path, const FileLoader& loader = load_file);
 
 // Adds the material file an import stands for to `result`, validated by the same parser as any

@@ -31,7 +31,4 @@ bool is_gltf_path(std::string_view path);
 DocumentImport import_gltf(std::string_view bytes, const std::string& path,
                            const FileLoader& loader = load_file);
 
-// Reads and imports a glTF asset.
-DocumentImport read_gltf_file(const std::string& path, const FileLoader& loader = load_file);
-
 }  // namespace matc

@@ -23,9 +23,6 @@ using MaterialXImport = DocumentImport;
 // Imports every metallic surface material of the document `text`; `path` names it in diagnostics.
 MaterialXImport import_materialx(std::string_view text, const std::string& path);
 
-// Reads and imports a MaterialX file.
-MaterialXImport read_materialx_file(const std::string& path, const FileLoader& loader = load_file);
-
 // Whether this build imports MaterialX documents (the WebAssembly library, built without pugixml,
 // refuses each with an error).
 bool materialx_supported();
