@@ -21,8 +21,8 @@ import { execFileSync } from "node:child_process";
 import { mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
-import { compareProbes, expectedProbes, kPointLight, kProbePixels, kProbeRectLight, kProbeSize } from "./engine-probes.mjs";
-import { rectLightGeometry } from "./engine-scene.mjs";
+import { compareProbes, expectedProbes, kPointLight, kProbePixels, kProbeRectLight, kProbeSize,
+         kThreeJsProbeTerms } from "./engine-probes.mjs";
 import { runLookdevPage } from "./lookdev-page.mjs";
 import { check, finish } from "./report.mjs";
 import { run } from "./shader-cases.mjs";
@@ -182,8 +182,7 @@ try {
   run(matc, ["-q", "-o", probeOut, "--emit", "json", ...kCases.map((c) => join(materials, `${c.name}.json`))]);
   const probeRenders = kCases.flatMap((c) => c.lights.map((light) => ({ key: `${c.name} ${light} r=0.3`, light, roughness: 0.3 })));
   const expected = expectedProbes({
-    matc, materialsDir: materials, out: probeOut, alphaOf: (r) => Math.max(r, 0.045) ** 2, renders: probeRenders,
-    rect: { light: kProbeRectLight, corners: rectLightGeometry(kProbeRectLight).corners },
+    matc, materialsDir: materials, out: probeOut, ...kThreeJsProbeTerms, renders: probeRenders,
     bare: kCases.filter((c) => c.bare).map((c) => c.name), coated: kCases.filter((c) => !c.bare).map((c) => c.name) });
   check(Object.keys(expected).length === probeRenders.length, `${Object.keys(expected).length} probe renders expected`);
   const worstProbe = compareProbes(renders, expected);

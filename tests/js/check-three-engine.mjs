@@ -13,8 +13,7 @@
 // and a three.js whose patched chunk changed; each must throw and write to the console.
 //   node check-three-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
 import { modulePage, threeVersion } from "./browser-page.mjs";
-import { kProbeRectLight, kProbeSize, runProbeCheck } from "./engine-probes.mjs";
-import { rectLightGeometry } from "./engine-scene.mjs";
+import { kProbeSize, kThreeJsProbeTerms, runProbeCheck } from "./engine-probes.mjs";
 
 
 const kPage = (config) => modulePage(config, {
@@ -23,7 +22,7 @@ import { KTX2Loader } from "three/addons/loaders/KTX2Loader.js";
 import { RectAreaLightUniformsLib } from "three/addons/lights/RectAreaLightUniformsLib.js";
 import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three.mjs";
 import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";
-import { probeScene, probeSetup } from "/checks/three-scene-page.mjs";
+import { probeScene, probeSetup, renderProbePixels } from "/checks/three-scene-page.mjs";
 import { probeBuild } from "/checks/page-probe-build.mjs";
 `,
   body: `
@@ -51,16 +50,8 @@ import { probeBuild } from "/checks/page-probe-build.mjs";
   for (const render of config.renders) {
     const material = useMatcFresnel(new THREE.MeshPhysicalMaterial({ roughness: render.roughness }),
                                     build, sources[render.source], { areaLights: render.areaLights });
-    const scene = probeScene(THREE, material, render.light, config, environment);
-    renderer.setRenderTarget(target);
-    renderer.render(scene, camera);
-    const pixels = [];
-    for (const [x, y] of config.pixels) {
-      const texel = new Float32Array(4);
-      renderer.readRenderTargetPixels(target, x, y, 1, 1, texel);
-      pixels.push(Array.from(texel.subarray(0, 3)));
-    }
-    out.renders[render.key] = pixels;
+    out.renders[render.key] = renderProbePixels(renderer, probeScene(THREE, material, render.light, config, environment),
+                                                camera, target, config.pixels);
   }
   const original = THREE.ShaderChunk.lights_physical_pars_fragment;
   await checkBadInputs(out, {
@@ -77,6 +68,5 @@ import { probeBuild } from "/checks/page-probe-build.mjs";
 
 await runProbeCheck({
   name: "three.js", label: `three.js ${threeVersion()} MeshPhysicalMaterial`, page: kPage,
-  alphaOf: (r) => Math.max(r, 0.045) ** 2,  // three.js's GGX alpha: roughness clamped at 0.045, squared
-  rect: { light: kProbeRectLight, corners: rectLightGeometry(kProbeRectLight).corners },  // looks at the origin
+  ...kThreeJsProbeTerms,
 }, process.argv.slice(2));

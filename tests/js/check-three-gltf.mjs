@@ -11,8 +11,8 @@ import { mkdirSync, mkdtempSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { kWebRoots, modulePage, runPage } from "./browser-page.mjs";
-import { compareProbes, expectedProbes, kPointLight, kProbePixels, kProbeRectLight, kProbeSize } from "./engine-probes.mjs";
-import { rectLightGeometry } from "./engine-scene.mjs";
+import { compareProbes, expectedProbes, kPointLight, kProbePixels, kProbeRectLight, kProbeSize,
+         kThreeJsProbeTerms } from "./engine-probes.mjs";
 import { carAsset } from "./gltf-assets.mjs";
 import { check, finish } from "./report.mjs";
 import { run } from "./shader-cases.mjs";
@@ -30,7 +30,7 @@ import { createMatc } from "/web/index.mjs";
 import { compiledMatcBuildFiles } from "/web/matc-build.mjs";
 import { loadMatcBuild } from "/web/three/matc-three.mjs";
 import { matcGltfPlugin } from "/web/three/matc-gltf.mjs";
-import { probeScene, probeSetup } from "/checks/three-scene-page.mjs";
+import { probeScene, probeSetup, renderProbePixels } from "/checks/three-scene-page.mjs";
 `,
   body: `
   out.console = [];
@@ -51,13 +51,8 @@ import { probeScene, probeSetup } from "/checks/three-scene-page.mjs";
   out.renders = {};
   for (const [name, key] of Object.entries(config.probed)) {
     for (const light of config.lights) {
-      renderer.setRenderTarget(target);
-      renderer.render(probeScene(THREE, byName[name], light, config, environment), camera);
-      out.renders[key + " " + light + " r=0.3"] = config.pixels.map(([x, y]) => {
-        const texel = new Float32Array(4);
-        renderer.readRenderTargetPixels(target, x, y, 1, 1, texel);
-        return Array.from(texel.subarray(0, 3));
-      });
+      out.renders[key + " " + light + " r=0.3"] = renderProbePixels(
+          renderer, probeScene(THREE, byName[name], light, config, environment), camera, target, config.pixels);
     }
   }
 `,
@@ -89,8 +84,7 @@ try {
   run(matc, ["-q", "-o", out, "--emit", "json", ...Object.values(kProbed).map((name) => join(materials, `${name}.json`))]);
   const renders = Object.values(kProbed).flatMap((name) => kLights.map((light) => ({ key: `${name} ${light} r=0.3`, light })));
   const expected = expectedProbes({
-    matc, materialsDir: materials, out, alphaOf: (r) => Math.max(r, 0.045) ** 2, renders,
-    rect: { light: kProbeRectLight, corners: rectLightGeometry(kProbeRectLight).corners },
+    matc, materialsDir: materials, out, ...kThreeJsProbeTerms, renders,
     bare: ["Chrome"], coated: ["Car_Paint"] });
   check(Object.keys(expected).length === renders.length, `${Object.keys(expected).length} renders expected`);
   const worst = compareProbes(result.renders ?? {}, expected);

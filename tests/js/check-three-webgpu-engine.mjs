@@ -7,8 +7,7 @@
 // Chromium's virtual time: the page runs in real time and posts its result.
 //   node check-three-webgpu-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
 import { modulePage, threeVersion } from "./browser-page.mjs";
-import { kProbeRectLight, kProbeSize, runProbeCheck } from "./engine-probes.mjs";
-import { rectLightGeometry } from "./engine-scene.mjs";
+import { kProbeSize, kThreeJsProbeTerms, runProbeCheck } from "./engine-probes.mjs";
 
 const kPage = (config) => modulePage(config, {
   head: `import * as THREE from "three/webgpu";
@@ -77,7 +76,6 @@ import { probeBuild } from "/checks/page-probe-build.mjs";`,
 
 await runProbeCheck({
   name: "three.js WebGPURenderer", label: `three.js ${threeVersion()} WebGPURenderer MeshPhysicalNodeMaterial`,
-  page: kPage, alphaOf: (r) => Math.max(r, 0.045) ** 2,
-  rect: { light: kProbeRectLight, corners: rectLightGeometry(kProbeRectLight).corners },  // looks at the origin
+  page: kPage, ...kThreeJsProbeTerms,
   runPage: { realTime: true, budgetMs: 120000, browserArgs: ["--enable-unsafe-webgpu", "--use-webgpu-adapter=swiftshader"] },
 }, process.argv.slice(2));

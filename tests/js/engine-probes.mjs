@@ -6,6 +6,7 @@ import { cpSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { kWebRoots, runPage } from "./browser-page.mjs";
+import { rectLightGeometry } from "./engine-scene.mjs";
 import { check, finish } from "./report.mjs";
 import { compensatedFbar, kPreintegratedTolerance, run } from "./shader-cases.mjs";
 
@@ -21,6 +22,12 @@ export const kPointLight = { position: [0.3, 0.2, 0.8], intensity: 0.7 };
 // A rect area light above the probe plane: centre, size and radiance (each engine places its
 // corners: three.js's looks at the origin, Babylon's faces -z).
 export const kProbeRectLight = { position: [-0.4, 0.3, 0.9], width: 0.8, height: 0.5, intensity: 4.0 };
+// How three.js (WebGL and WebGPU) renders the probes: its GGX alpha (roughness clamped at 0.045,
+// squared) and its rect light, which looks at the origin.
+export const kThreeJsProbeTerms = {
+  alphaOf: (r) => Math.max(r, 0.045) ** 2,
+  rect: { light: kProbeRectLight, corners: rectLightGeometry(kProbeRectLight).corners },
+};
 export const kTextured = { reflectivity: [0.9, 0.6, 0.3], edgeTint: [0.8, 0.5, 0.2] };
 export const kBaked = { reflectivity: [0.95, 0.64, 0.54], edgeTint: [1.0, 0.75, 0.4] };
 

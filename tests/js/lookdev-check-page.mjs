@@ -6,7 +6,7 @@
 // The config (<script id="lookdev-check-config">) lists the cases; the result goes into
 // <pre id="result"> and is posted to /result (runPage's realTime mode).
 import * as THREE from "three";
-import { probeScene, probeSetup } from "/checks/three-scene-page.mjs";
+import { probeScene, probeSetup, renderProbePixels } from "/checks/three-scene-page.mjs";
 
 const config = JSON.parse(document.getElementById("lookdev-check-config").textContent);
 const out = { errors: [], cases: {}, refusals: {}, timings: {} };
@@ -46,14 +46,8 @@ function probeRenders(view, lights) {
   const { target, camera, pmrem, environment } = probeSetup(THREE, renderer, config.probeSize);
   const renders = {};
   for (const light of lights) {
-    const scene = probeScene(THREE, view.matcMaterial, light, config, environment);
-    renderer.setRenderTarget(target);
-    renderer.render(scene, camera);
-    renders[light] = config.pixels.map(([x, y]) => {
-      const texel = new Float32Array(4);
-      renderer.readRenderTargetPixels(target, x, y, 1, 1, texel);
-      return Array.from(texel.subarray(0, 3));
-    });
+    renders[light] = renderProbePixels(renderer, probeScene(THREE, view.matcMaterial, light, config, environment),
+                                       camera, target, config.pixels);
   }
   renderer.setRenderTarget(null);
   target.dispose();

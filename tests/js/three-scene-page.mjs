@@ -49,6 +49,17 @@ export function probeSetup(THREE, renderer, size) {
   return { target, camera, pmrem, environment: pmrem.fromEquirectangular(white).texture };
 }
 
+// Renders `scene` into the probe target and reads the RGB of each of `pixels` ([x, y], y up).
+export function renderProbePixels(renderer, scene, camera, target, pixels) {
+  renderer.setRenderTarget(target);
+  renderer.render(scene, camera);
+  return pixels.map(([x, y]) => {
+    const texel = new Float32Array(4);
+    renderer.readRenderTargetPixels(target, x, y, 1, 1, texel);
+    return Array.from(texel.subarray(0, 3));
+  });
+}
+
 // The probe checks' scene (engine-probes.mjs): a plane with `material` under one render's light
 // ("environment": `environment`; "point", "rect": config's lights).
 export function probeScene(THREE, material, light, config, environment) {
