@@ -71,10 +71,8 @@ std::string DocumentNames::claim(const std::string& document_name, const SourceL
   if (name != document_name)
     diagnostics.note(location, field, fmt::format("imported as '{}'", name),
                      std::string(kMaterialNameRule));
-  const std::string key = material_name_key(name);
-  const auto first = std::find_if(taken_.begin(), taken_.end(),
-                                  [&](const auto& entry) { return entry.first == key; });
-  if (first != taken_.end()) {
+  const auto [first, inserted] = taken_.emplace(material_name_key(name), First{name, description});
+  if (!inserted) {
     diagnostics.error(location, field,
                       fmt::format("becomes '{}', which is '{}' ({}) ignoring case", name,
                                   first->second.name, first->second.description),
@@ -82,7 +80,6 @@ std::string DocumentNames::claim(const std::string& document_name, const SourceL
                       "name files)");
     return {};
   }
-  taken_.emplace_back(key, First{name, description});
   return name;
 }
 

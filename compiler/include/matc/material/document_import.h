@@ -4,6 +4,7 @@
 // notes for everything it did not carry; the path's extension says which reader.
 #pragma once
 
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -65,7 +66,7 @@ class DocumentNames {
     std::string name;  // as imported
     std::string description;
   };
-  std::vector<std::pair<std::string, First>> taken_;  // name key -> its first use
+  std::map<std::string, First> taken_;  // name key -> its first use
 };
 
 }  // namespace matc
