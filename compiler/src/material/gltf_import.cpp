@@ -15,7 +15,6 @@ namespace matc {
 namespace {
 
 using nlohmann::ordered_json;
-using Rgb3 = std::array<double, 3>;
 
 constexpr std::string_view kClearcoat = "KHR_materials_clearcoat";
 constexpr std::string_view kClearcoatIor = "KHR_materials_clearcoat_ior";
@@ -100,7 +99,7 @@ class Importer {
   }
 
   // An RGB array in an extension's object (its default where absent); false after an error.
-  bool rgb(const std::string& field, const tinygltf::Value& object, const char* key, Rgb3& value) {
+  bool rgb(const std::string& field, const tinygltf::Value& object, const char* key, Rgb& value) {
     if (!object.IsObject() || !object.Has(key)) return true;
     const tinygltf::Value& given = object.Get(key);
     if (!given.IsArray() || given.ArrayLen() != 3 || !given.Get(0).IsNumber() ||
@@ -132,7 +131,7 @@ class Importer {
       error(field, "pbrMetallicRoughness.baseColorFactor is not four numbers", "[r, g, b, a]");
       return;
     }
-    Rgb3 f0{};
+    Rgb f0{};
     for (std::size_t c = 0; c < 3; ++c) {
       f0[c] = pbr.baseColorFactor[c];
       if (!in_range(field, fmt::format("pbrMetallicRoughness.baseColorFactor[{}]", c), f0[c], 0, 1))
@@ -157,9 +156,9 @@ class Importer {
     material_json["description"] = fmt::format("glTF materials[{}] of {}", index,
                                                std::filesystem::path(path_).filename().string());
     material_json["color_space"] = "lin_rec709";  // glTF's colours are linear Rec.709
-    Rgb3 tint{1, 1, 1};                           // Schlick's curve: F82-tint with a white tint
+    Rgb tint{1, 1, 1};                            // Schlick's curve: F82-tint with a white tint
     if (!edge_color(field, source, tint, not_carried)) return;
-    const auto array = [](const Rgb3& v) { return ordered_json::array({v[0], v[1], v[2]}); };
+    const auto array = [](const Rgb& v) { return ordered_json::array({v[0], v[1], v[2]}); };
     material_json["f82_tint"] = {{"f0", array(f0)}, {"tint", array(tint)}};
     material_json["roughness"] = pbr.roughnessFactor;
     std::optional<ordered_json> coat;
@@ -186,7 +185,7 @@ class Importer {
 
   // EXT_materials_specular_edge_color inside KHR_materials_specular: the specular colour times
   // the specular factor is the metal's F82 tint (clamped to [0, 1], as the extension clamps).
-  bool edge_color(const std::string& field, const tinygltf::Material& source, Rgb3& tint,
+  bool edge_color(const std::string& field, const tinygltf::Material& source, Rgb& tint,
                   std::vector<std::string>& not_carried) {
     const tinygltf::Value* specular = extension(source.extensions, kSpecular);
     if (!specular || !specular->IsObject()) return true;
@@ -197,7 +196,7 @@ class Importer {
                          edge.Get("specularEdgeColorEnabled").Get<bool>();
     if (!enabled) return true;  // KHR_materials_specular alone does not change a metal
     double factor = 1;
-    Rgb3 color{1, 1, 1};
+    Rgb color{1, 1, 1};
     const std::string where_field = fmt::format("{}: {}", field, kSpecular);
     if (!number(where_field, *specular, "specularFactor", factor) ||
         !rgb(where_field, *specular, "specularColorFactor", color))
