@@ -6,6 +6,7 @@
 #include <cstring>
 #include <map>
 
+#include "diagnostic_text.h"
 #include "matc/compile/compile.h"
 #include "matc/material/gltf_import.h"
 #include "matc/optics/fresnel.h"
@@ -15,10 +16,7 @@ namespace matc {
 namespace {
 
 std::string all_diagnostics(const DocumentImport& imported) {
-  std::string text;
-  for (const Diagnostic& d : imported.diagnostics.items())
-    text += format_diagnostic(d) + "\n";
-  return text;
+  return test::diagnostic_text(imported.diagnostics);
 }
 
 std::string asset(const std::string& materials, const std::string& rest = "") {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <ostream>
 
+#include "diagnostic_text.h"
 #include "matc/material/located_json.h"
 #include "matc/material/parse.h"
 
@@ -26,10 +27,7 @@ ParseResult parse(const std::string& text, const FileLoader& loader = memory_loa
 }
 
 std::string all_diagnostics(const ParseResult& result) {
-  std::string out;
-  for (const Diagnostic& d : result.diagnostics.items())
-    out += format_diagnostic(d) + "\n";
-  return out;
+  return test::diagnostic_text(result.diagnostics);
 }
 
 TEST(MaterialParse, ArtisticWithGreyScalars) {

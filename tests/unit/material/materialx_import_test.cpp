@@ -2,6 +2,7 @@
 // spaces, and the located problems of bad documents.
 #include <gtest/gtest.h>
 
+#include "diagnostic_text.h"
 #include "matc/compile/compile.h"
 #include "matc/material/materialx_import.h"
 #include "matc/optics/color_space.h"
@@ -10,10 +11,7 @@ namespace matc {
 namespace {
 
 std::string all_diagnostics(const MaterialXImport& imported) {
-  std::string text;
-  for (const Diagnostic& d : imported.diagnostics.items())
-    text += format_diagnostic(d) + "\n";
-  return text;
+  return test::diagnostic_text(imported.diagnostics);
 }
 
 std::string document(const std::string& body, const std::string& attributes = "") {
