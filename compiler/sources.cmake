@@ -41,10 +41,12 @@ set(MATC_CORE_SOURCES
   src/lut/preintegrate.cpp
   src/lut/energy.cpp
   src/formats/table_format.cpp
+  src/formats/glb_container.cpp
   src/compile/compile.cpp
   src/emit/template.cpp
   src/emit/shader_literals.cpp
   src/emit/material_json.cpp
+  src/emit/gltf_fresnel_extension.cpp
   src/emit/shader_library.cpp
   src/emit/material_snippet.cpp
   src/emit/text_outputs.cpp
@@ -54,6 +56,7 @@ set(MATC_CORE_SOURCES
   src/api/material.cpp
   src/api/compiled_material.cpp
   src/api/text_outputs.cpp
+  src/api/gltf.cpp
 )
 set(MATC_NATIVE_SOURCES
   src/api/batch.cpp

@@ -35,6 +35,7 @@ Command register_lut(CLI::App& app);
 Command register_bake(CLI::App& app);
 Command register_report(CLI::App& app);
 Command register_import(CLI::App& app);
+Command register_gltf(CLI::App& app);
 Command register_layout(CLI::App& app);
 
 }  // namespace matc::cli

@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
   for (Command& command : register_basis(app))
     commands.push_back(std::move(command));
   for (Command (*add)(CLI::App&) : {register_lut, register_bake, register_report, register_import,
-                                    register_layout, register_compile})
+                                    register_gltf, register_layout, register_compile})
     commands.push_back(add(app));
 
   std::string diagnostics_format = "text";

@@ -23,6 +23,15 @@ std::string as_json_line(const Diagnostic& diagnostic) {
   return object.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
+std::string as_json_line(const api::Diagnostic& diagnostic) {
+  const nlohmann::ordered_json object = {
+      {"file", diagnostic.path},      {"line", diagnostic.line},
+      {"column", diagnostic.column},  {"severity", diagnostic.severity},
+      {"field", diagnostic.field},    {"message", diagnostic.message},
+      {"allowed", diagnostic.allowed}};
+  return object.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+}
+
 }  // namespace
 
 void set_diagnostics_format(DiagnosticsFormat format) {
@@ -37,6 +46,16 @@ void print_diagnostics(const Diagnostics& diagnostics) {
   const bool json = chosen_format == DiagnosticsFormat::json;
   for (const Diagnostic& diagnostic : diagnostics.items())
     fmt::print(stderr, "{}\n", json ? as_json_line(diagnostic) : format_diagnostic(diagnostic));
+}
+
+}  // namespace matc::cli
+
+namespace matc::cli {
+
+void print_diagnostics(const std::vector<api::Diagnostic>& diagnostics, std::size_t from) {
+  const bool json = chosen_format == DiagnosticsFormat::json;
+  for (std::size_t i = from; i < diagnostics.size(); ++i)
+    fmt::print(stderr, "{}\n", json ? as_json_line(diagnostics[i]) : diagnostics[i].text);
 }
 
 }  // namespace matc::cli

@@ -1,5 +1,9 @@
 #pragma once
 
+#include <cstddef>
+#include <vector>
+
+#include "matc/api/diagnostics.h"
 #include "matc/base/diagnostics.h"
 
 namespace matc::cli {
@@ -12,5 +16,7 @@ DiagnosticsFormat diagnostics_format();
 
 // Writes each diagnostic on its own line to standard error, in the format set above.
 void print_diagnostics(const Diagnostics& diagnostics);
+// The same for the public API's diagnostics, from the one at `from` on.
+void print_diagnostics(const std::vector<api::Diagnostic>& diagnostics, std::size_t from = 0);
 
 }  // namespace matc::cli

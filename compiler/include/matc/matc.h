@@ -5,5 +5,6 @@
 
 #include "matc/api/compiled_material.h"
 #include "matc/api/diagnostics.h"
+#include "matc/api/gltf.h"
 #include "matc/api/material.h"
 #include "matc/api/text_outputs.h"

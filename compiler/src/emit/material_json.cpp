@@ -13,10 +13,6 @@ namespace {
 
 using nlohmann::ordered_json;
 
-ordered_json rgb_json(const Rgb& rgb) {
-  return ordered_json::array({rgb[0], rgb[1], rgb[2]});
-}
-
 ordered_json error_stats_json(const ErrorStats& stats) {
   return {{"max", rgb_json(stats.max_abs)}, {"rms", rgb_json(stats.rms)}};
 }
@@ -38,13 +34,6 @@ ordered_json input_json(const Material& material) {
   return {{std::string(model_key(material.model)), input}};
 }
 
-ordered_json coefficients_json(const runtime::Coefficients& coefficients) {
-  ordered_json rows = ordered_json::array();
-  for (const auto& channel : coefficients)
-    rows.push_back({channel[0], channel[1], channel[2], channel[3]});
-  return rows;
-}
-
 // A coated material's coat (docs/coating.md): what was asked, what was fitted, how close.
 ordered_json coat_json(const CompiledCoat& coat) {
   const runtime::CoatCoefficients& c = coat.coefficients;
@@ -53,7 +42,7 @@ ordered_json coat_json(const CompiledCoat& coat) {
             {"ior", coat.input.ior},
             {"roughness", coat.input.roughness},
             {"color", rgb_json(coat.input.color)}}},
-          {"under_coat_coefficients", coefficients_json(c.under_coat)},
+          {"under_coat_coefficients", coefficient_rows_json(c.under_coat)},
           {"coat_coefficients", {c.coat[0], c.coat[1], c.coat[2], c.coat[3]}},
           {"layered", {{"F0", rgb_json(coat.layered_f0)}, {"F82", rgb_json(coat.layered_f82)}}},
           {"accuracy",
@@ -66,6 +55,17 @@ ordered_json coat_json(const CompiledCoat& coat) {
 }
 
 }  // namespace
+
+ordered_json rgb_json(const Rgb& rgb) {
+  return ordered_json::array({rgb[0], rgb[1], rgb[2]});
+}
+
+ordered_json coefficient_rows_json(const runtime::Coefficients& coefficients) {
+  ordered_json rows = ordered_json::array();
+  for (const auto& channel : coefficients)
+    rows.push_back({channel[0], channel[1], channel[2], channel[3]});
+  return rows;
+}
 
 ordered_json compiled_material_json(const CompiledMaterial& compiled,
                                     const runtime::BasisView& basis) {
@@ -124,7 +124,7 @@ ordered_json compiled_material_json(const CompiledMaterial& compiled,
     basis_json["minimax_cosines"] = kMinimaxCosines;
   }
   out["basis"] = std::move(basis_json);
-  out["coefficients"] = coefficients_json(compiled.coefficients);
+  out["coefficients"] = coefficient_rows_json(compiled.coefficients);
   out["energy_compensation"] = {{"F_avg", rgb_json(compiled.average_fresnel)}};
   out["accuracy"] = {{"samples", compiled.accuracy.samples},
                      {"metric",

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "matc/base/echoed_text.h"
+#include "matc/formats/glb_container.h"
 #include "matc/material/document_import.h"
 #include "matc/material/gltf_import.h"
 
@@ -17,45 +18,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::string_view kAllowedAsset = "a glTF 2.0 asset (docs/gltf.md)";
-
-std::uint32_t little_endian_u32(std::string_view bytes, std::size_t offset) {
-  std::uint32_t value = 0;
-  for (std::size_t i = 0; i < 4; ++i)
-    value |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[offset + i])) << (8 * i);
-  return value;
-}
-
-// The GLB container (12-byte header, a JSON chunk, an optional BIN chunk), checked before
-// tinygltf reads it: its own checks let a BIN chunk end up to its 8-byte header past the file.
-std::string glb_layout_problem(std::string_view bytes) {
-  if (bytes.size() < 20)
-    return fmt::format("{} bytes: shorter than a GLB header and a chunk header (20 bytes)",
-                       bytes.size());
-  if (bytes.substr(0, 4) != "glTF") return "does not start with the GLB magic 'glTF'";
-  if (const std::uint32_t version = little_endian_u32(bytes, 4); version != 2)
-    return fmt::format("GLB version {}; matc reads version 2", version);
-  if (const std::uint32_t length = little_endian_u32(bytes, 8); length != bytes.size())
-    return fmt::format("the GLB header says {} bytes, the file has {} (truncated or padded)",
-                       length, bytes.size());
-  const std::uint64_t json_length = little_endian_u32(bytes, 12);
-  if (little_endian_u32(bytes, 16) != 0x4E4F534Au) return "the first GLB chunk is not JSON";
-  if (json_length == 0 || json_length % 4 != 0)
-    return fmt::format("the JSON chunk's length {} is not a positive multiple of 4", json_length);
-  if (20 + json_length > bytes.size())
-    return fmt::format("the JSON chunk ({} bytes) runs past the end of the file", json_length);
-  const std::uint64_t rest = bytes.size() - 20 - json_length;
-  if (rest == 0) return {};
-  if (rest < 8) return "a chunk header after the JSON chunk is truncated";
-  const auto bin_header = static_cast<std::size_t>(20 + json_length);  // inside the file (above)
-  const std::uint64_t bin_length = little_endian_u32(bytes, bin_header);
-  if (little_endian_u32(bytes, bin_header + 4) != 0x004E4942u)
-    return "the second GLB chunk is not BIN";
-  if (bin_length % 4 != 0)
-    return fmt::format("the BIN chunk's length {} is not a multiple of 4", bin_length);
-  if (28 + json_length + bin_length > bytes.size())
-    return fmt::format("the BIN chunk ({} bytes) runs past the end of the file", bin_length);
-  return {};
-}
 
 // %XX sequences of a URI decoded (the file name it stands for).
 std::string percent_decoded(std::string_view uri) {

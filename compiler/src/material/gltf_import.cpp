@@ -180,7 +180,9 @@ class Importer {
         names_.claim(document_name, where(), field, field, result_.diagnostics);
     if (name.empty()) return;
     material_json["name"] = name;
+    const std::size_t added = result_.materials.size();
     add_imported_material(result_, material_json, path_, where(), field);
+    if (result_.materials.size() > added) result_.materials.back().document_index = index;
   }
 
   // EXT_materials_specular_edge_color inside KHR_materials_specular: the specular colour times

@@ -169,6 +169,7 @@ class LocatingHandler {
 
   bool close() {
     last_end_ = *consumed_;
+    result_.container_ends[frames_.back().pointer] = *consumed_;
     frames_.pop_back();
     return true;
   }

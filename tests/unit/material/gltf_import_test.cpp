@@ -7,6 +7,7 @@
 #include <map>
 
 #include "diagnostic_text.h"
+#include "glb_bytes.h"
 #include "matc/compile/compile.h"
 #include "matc/material/gltf_import.h"
 #include "matc/optics/fresnel.h"
@@ -43,27 +44,8 @@ struct MemoryFiles {
 };
 
 // The asset as a GLB: header, the JSON chunk (padded with spaces), an optional BIN chunk.
-std::string glb(std::string json, const std::string& bin = "") {
-  while (json.size() % 4 != 0)
-    json += ' ';
-  std::string out;
-  const auto u32 = [&out](std::uint32_t v) {
-    for (int i = 0; i < 4; ++i)
-      out += static_cast<char>((v >> (8 * i)) & 0xffu);
-  };
-  const std::size_t length = 12 + 8 + json.size() + (bin.empty() ? 0 : 8 + bin.size());
-  out += "glTF";
-  u32(2);
-  u32(static_cast<std::uint32_t>(length));
-  u32(static_cast<std::uint32_t>(json.size()));
-  out += "JSON";
-  out += json;
-  if (!bin.empty()) {
-    u32(static_cast<std::uint32_t>(bin.size()));
-    out += std::string("BIN\0", 4);
-    out += bin;
-  }
-  return out;
+std::string glb(const std::string& json, const std::string& bin = "") {
+  return test::glb_bytes(json, bin);
 }
 
 TEST(GltfImport, ACoreMetalIsSchlicksCurveFromItsBaseColour) {

@@ -8,6 +8,11 @@
 
 namespace matc {
 
+// [r, g, b], and coefficient rows as [[c_0, c_1, c_2, c_3] per channel]: how matc's JSON outputs
+// write them.
+nlohmann::ordered_json rgb_json(const Rgb& rgb);
+nlohmann::ordered_json coefficient_rows_json(const runtime::Coefficients& coefficients);
+
 nlohmann::ordered_json compiled_material_json(const CompiledMaterial& compiled,
                                               const runtime::BasisView& basis);
 

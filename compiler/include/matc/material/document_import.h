@@ -22,6 +22,7 @@ struct ImportedMaterial {
   // element, source_text the material file below.
   Material material;
   std::string json;  // the matc material file it stands for (what `matc import` writes)
+  std::size_t document_index = 0;  // its entry in the document (glTF: materials[document_index])
 };
 
 struct DocumentImport {

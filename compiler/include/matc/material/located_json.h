@@ -25,6 +25,8 @@ struct LocatedJson {
   nlohmann::json value;  // on duplicate keys the last occurrence wins; see `duplicates`
   std::unordered_map<std::string, std::size_t> value_offsets;  // JSON pointer -> value start
   std::unordered_map<std::string, std::size_t> key_offsets;    // JSON pointer -> key start
+  // JSON pointer of an object or array -> one past its closing bracket (for splicing text).
+  std::unordered_map<std::string, std::size_t> container_ends;
   std::vector<DuplicateKey> duplicates;
 
   std::size_t value_offset(const std::string& pointer) const;

@@ -1,0 +1,138 @@
+// `matc gltf`: a glTF asset written back with each metal's compiled coefficients in the vendor
+// extension MATC_materials_fresnel, every other byte carried through (docs/gltf.md).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "color_options.h"
+#include "commands.h"
+#include "lut_options.h"
+#include "matc/base/echoed_text.h"
+#include "matc/matc.h"
+#include "matc/options/option_names.h"
+#include "matc/pipeline/atomic_file.h"
+#include "print_diagnostics.h"
+
+namespace matc::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct GltfOptions {
+  std::string input;
+  std::string output;
+  runtime::BasisKind basis = runtime::kDefaultBasis;
+  ColorOptions color;
+  bool quiet = false;
+};
+
+bool ends_with_any_case(const std::string& path, std::string_view extension) {
+  if (path.size() < extension.size()) return false;
+  for (std::size_t i = 0; i < extension.size(); ++i) {
+    const char c = path[path.size() - extension.size() + i];
+    if (static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c) != extension[i]) return false;
+  }
+  return true;
+}
+
+// Why the asset may not be written to `output`: into its own input, or a .gltf away from the
+// files it names beside it (they would not resolve). Empty when it may.
+std::string output_problem(const GltfOptions& options, const api::GltfAsset& asset) {
+  const fs::path input(options.input);
+  const fs::path output(options.output);
+  if (path_identity(output) == path_identity(input))
+    return fmt::format("output '{}' would overwrite its input", printable(options.output));
+  for (const std::string& uri : asset.external_uris) {
+    if (path_identity(output) == path_identity(input.parent_path() / uri))
+      return fmt::format("output '{}' would overwrite '{}', a file the asset names",
+                         printable(options.output), echoed(uri, 128));
+  }
+  if (!asset.external_uris.empty() &&
+      path_identity(output.parent_path().empty() ? fs::path(".") : output.parent_path()) !=
+          path_identity(input.parent_path().empty() ? fs::path(".") : input.parent_path())) {
+    return fmt::format(
+        "output '{}' is not in the folder of '{}', whose asset names {} file(s) beside it "
+        "('{}'...): they would not resolve from there",
+        printable(options.output), printable(options.input), asset.external_uris.size(),
+        echoed(asset.external_uris.front(), 128));
+  }
+  return {};
+}
+
+int run_gltf(const GltfOptions& options) {
+  const bool binary = ends_with_any_case(options.input, ".glb");
+  if (!binary && !ends_with_any_case(options.input, ".gltf")) {
+    fmt::print(stderr,
+               "matc gltf: error: '{}' names no glTF asset; an asset ending in .gltf or .glb\n",
+               printable(options.input));
+    return kExitUsageError;
+  }
+  if (!ends_with_any_case(options.output, binary ? ".glb" : ".gltf")) {
+    fmt::print(stderr,
+               "matc gltf: error: --output '{}': the asset is a {} and is written as one; an "
+               "output ending in {}\n",
+               printable(options.output), binary ? ".glb" : ".gltf", binary ? ".glb" : ".gltf");
+    return kExitUsageError;
+  }
+  const api::CompileOptions compile{std::string(option_name(options.basis)),
+                                    std::string(option_name(options.color.working_space)),
+                                    std::string(option_name(options.color.gamut_mapping))};
+  api::GltfAsset asset;
+  try {
+    asset = api::compile_gltf_file(options.input, compile);
+  } catch (const api::MaterialError& error) {
+    print_diagnostics(error.diagnostics());
+    return kExitInputError;
+  }
+  // Every material carries the asset's notes; each compile adds its own after them.
+  const std::size_t asset_notes = asset.materials.front().material().diagnostics().size();
+  print_diagnostics(asset.materials.front().material().diagnostics());
+  for (const api::CompiledMaterial& material : asset.materials)
+    print_diagnostics(material.diagnostics(), asset_notes);
+  if (const std::string problem = output_problem(options, asset); !problem.empty()) {
+    fmt::print(stderr, "matc gltf: error: {}\n", problem);
+    return kExitInputError;
+  }
+  try {
+    const fs::path output(options.output);
+    if (!output.parent_path().empty()) fs::create_directories(output.parent_path());
+    write_file_atomically(output, asset.bytes);
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "matc gltf: error: cannot write '{}': {}\n", printable(options.output),
+               printable(error.what()));
+    return kExitInputError;
+  }
+  if (!options.quiet) {
+    std::string names;
+    for (const api::CompiledMaterial& material : asset.materials)
+      names += (names.empty() ? "" : ", ") + material.name();
+    fmt::print("matc gltf: {}: {} metal(s) with MATC_materials_fresnel ({}; basis {})\n",
+               printable(options.output), asset.materials.size(), names,
+               option_name(options.basis));
+  }
+  return kExitSuccess;
+}
+
+}  // namespace
+
+Command register_gltf(CLI::App& app) {
+  auto options = std::make_shared<GltfOptions>();
+  CLI::App* command = app.add_subcommand(
+      "gltf",
+      "Write a glTF asset back with each metal's compiled coefficients in the vendor extension "
+      "MATC_materials_fresnel, every other byte as it was (docs/gltf.md)");
+  command->add_option("asset", options->input, "The glTF asset (.gltf or .glb)")->required();
+  command
+      ->add_option("-o,--output", options->output,
+                   "The asset written (.glb for a .glb, .gltf for a .gltf; a .gltf that names "
+                   "files beside it goes into its own folder)")
+      ->required();
+  add_basis_option(*command, options->basis);
+  add_color_options(*command, options->color);
+  command->add_flag("-q,--quiet", options->quiet, "No summary line");
+  return {command, [options] { return run_gltf(*options); }, true};
+}
+
+}  // namespace matc::cli

@@ -1,0 +1,32 @@
+// glTF out (docs/gltf.md): the metals of a glTF asset compiled and written back into it, each in
+// the vendor extension MATC_materials_fresnel (its coefficients, basis, coat), every other byte
+// of the asset carried through: `matc gltf`, Python's matc.compile_gltf and the npm package's
+// compileGltf are this call.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "matc/api/compiled_material.h"
+
+namespace matc::api {
+
+struct GltfAsset {
+  std::string bytes;                        // the asset, in its own container (.glb or .gltf)
+  std::vector<CompiledMaterial> materials;  // its metals compiled, in the asset's order
+  // The relative URIs of the files a .gltf names beside it (buffers, images; not data URIs):
+  // the written asset needs them beside it too.
+  std::vector<std::string> external_uris;
+};
+
+// The asset `bytes` called `path` (".glb" binary, ".gltf" JSON, any case; a .gltf's external
+// buffers resolve against path's folder) with its metals compiled with `options`. Throws
+// MaterialError with the asset's errors (as parse_materials reads it), std::invalid_argument for
+// a path that names no glTF asset or an option outside its names.
+GltfAsset compile_gltf(std::string_view bytes, std::string_view path,
+                       const CompileOptions& options = {});
+// The same for the asset at `path`.
+GltfAsset compile_gltf_file(std::string_view path, const CompileOptions& options = {});
+
+}  // namespace matc::api

@@ -1,0 +1,71 @@
+#include "matc/api/gltf.h"
+
+#include <map>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "checked_options.h"
+#include "matc/base/echoed_text.h"
+#include "matc/emit/gltf_fresnel_extension.h"
+#include "matc/material/document_import.h"
+#include "matc/material/gltf_import.h"
+#include "matc/runtime/basis.h"
+#include "public_diagnostics.h"
+
+namespace matc::api {
+namespace {
+
+void require_gltf_path(std::string_view path) {
+  if (!is_gltf_path(path))
+    throw std::invalid_argument(fmt::format(
+        "path: '{}' names no glTF asset; a path ending in .gltf or .glb", echoed(path)));
+}
+
+GltfAsset compile_imported(std::string_view bytes, const std::string& path,
+                           const CompileOptions& options) {
+  const runtime::BasisKind basis = basis_of(options);
+  color_options_of(options);  // an option outside its names throws before any work
+  DocumentImport imported = import_document(bytes, path);
+  throw_if_errors(imported.diagnostics);
+  const std::vector<Diagnostic> notes = public_diagnostics(imported.diagnostics);
+  GltfAsset asset;
+  std::map<std::size_t, nlohmann::ordered_json> extensions;
+  for (ImportedMaterial& material : imported.materials) {
+    const std::size_t index = material.document_index;
+    Material value(std::make_shared<const matc::Material>(std::move(material.material)), notes);
+    asset.materials.push_back(compile(value, options));
+    extensions.emplace(index, gltf_fresnel_extension(asset.materials.back().value(),
+                                                     runtime::shipped_basis(basis)));
+  }
+  Diagnostics diagnostics;
+  std::optional<GltfWithExtensions> written = gltf_with_fresnel_extensions(
+      bytes, path_has_extension(path, ".glb"), extensions, path, diagnostics);
+  throw_if_errors(diagnostics);
+  asset.bytes = std::move(written->bytes);
+  asset.external_uris = std::move(written->external_uris);
+  return asset;
+}
+
+}  // namespace
+
+GltfAsset compile_gltf(std::string_view bytes, std::string_view path,
+                       const CompileOptions& options) {
+  require_gltf_path(path);
+  return compile_imported(bytes, std::string(path), options);
+}
+
+GltfAsset compile_gltf_file(std::string_view path, const CompileOptions& options) {
+  require_gltf_path(path);
+  const std::string file(path);
+  const LoadedFile loaded = load_file(file, kMaxGltfFileBytes);
+  if (!loaded.bytes) {
+    Diagnostics diagnostics;
+    diagnostics.error({file, 0, 0}, "", fmt::format("cannot read: {}", loaded.error),
+                      "a glTF asset of at most 256 MiB");
+    throw_if_errors(diagnostics);
+  }
+  return compile_imported(*loaded.bytes, file, options);
+}
+
+}  // namespace matc::api

@@ -1,0 +1,232 @@
+#include "matc/emit/gltf_fresnel_extension.h"
+
+#include <algorithm>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "matc/emit/material_json.h"
+#include "matc/formats/glb_container.h"
+#include "matc/material/located_json.h"
+#include "matc/version.h"
+
+namespace matc {
+namespace {
+
+using nlohmann::ordered_json;
+
+// One change to the JSON text: `erase` bytes at `offset` replaced by `insert`.
+struct Edit {
+  std::size_t offset = 0;
+  std::size_t erase = 0;
+  std::string insert;
+};
+
+bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
+
+// Edits the asset's JSON text; each problem is an error naming its entry.
+class JsonSplicer {
+ public:
+  JsonSplicer(std::string_view text, const LocatedJson& document, const std::string& path,
+              Diagnostics& diagnostics)
+      : text_(text), document_(document), path_(path), diagnostics_(diagnostics) {}
+
+  std::optional<std::string> run(const std::map<std::size_t, ordered_json>& extensions) {
+    if (!document_.value.is_object()) {
+      error("", "the asset's JSON is not an object", "a glTF 2.0 asset");
+      return std::nullopt;
+    }
+    static const nlohmann::json kNoMaterials = nlohmann::json::array();
+    const auto found_materials = document_.value.find("materials");
+    const nlohmann::json& materials =
+        found_materials == document_.value.end() ? kNoMaterials : *found_materials;
+    if (!materials.is_array()) {
+      error("materials", "is not an array", "an array of materials");
+      return std::nullopt;
+    }
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+      const auto found = extensions.find(i);
+      material(i, materials[i], found == extensions.end() ? nullptr : &found->second);
+    }
+    if (!extensions.empty()) list_in_extensions_used();
+    if (diagnostics_.has_errors()) return std::nullopt;
+    std::sort(edits_.begin(), edits_.end(),
+              [](const Edit& a, const Edit& b) { return a.offset > b.offset; });
+    std::string out(text_);
+    for (const Edit& edit : edits_)
+      out.replace(edit.offset, edit.erase, edit.insert);
+    return out;
+  }
+
+ private:
+  void error(const std::string& field, const std::string& message, const std::string& allowed) {
+    diagnostics_.error({path_, 0, 0}, field, message, allowed);
+  }
+
+  // Inserts a member (`"key":value`) first in the object at `pointer`.
+  void insert_member(const std::string& pointer, const nlohmann::json& object,
+                     const std::string& member) {
+    edits_.push_back(
+        {document_.value_offset(pointer) + 1, 0, member + (object.empty() ? "" : ",")});
+  }
+
+  void material(std::size_t index, const nlohmann::json& value, const ordered_json* extension) {
+    const std::string pointer = fmt::format("/materials/{}", index);
+    const std::string field = fmt::format("materials[{}]", index);
+    if (!value.is_object()) {
+      error(field, "is not an object", "a material object");
+      return;
+    }
+    const std::string member =
+        extension
+            ? fmt::format("\"{}\":{}", kGltfFresnelExtension,
+                          extension->dump(-1, ' ', false, ordered_json::error_handler_t::replace))
+            : std::string();
+    const auto extensions = value.find("extensions");
+    if (extensions == value.end()) {
+      if (extension) insert_member(pointer, value, fmt::format("\"extensions\":{{{}}}", member));
+      return;
+    }
+    const std::string extensions_pointer = pointer + "/extensions";
+    if (!extensions->is_object()) {
+      error(field + ".extensions", "is not an object", "an object of extensions");
+      return;
+    }
+    const std::string ours = fmt::format("{}/{}", extensions_pointer, kGltfFresnelExtension);
+    const auto previous = extensions->find(std::string(kGltfFresnelExtension));
+    if (previous == extensions->end()) {
+      if (extension) insert_member(extensions_pointer, *extensions, member);
+      return;
+    }
+    if (!previous->is_object()) {
+      error(fmt::format("{}.extensions.{}", field, kGltfFresnelExtension), "is not an object",
+            "the object matc writes (docs/gltf.md)");
+      return;
+    }
+    const std::size_t start = document_.value_offset(ours);
+    const std::size_t end = document_.container_ends.at(ours);
+    if (extension) {  // written by an earlier run: replaced
+      edits_.push_back({start, end - start,
+                        extension->dump(-1, ' ', false, ordered_json::error_handler_t::replace)});
+      return;
+    }
+    // The material is no longer a metal matc compiles: the member goes, with one comma.
+    std::size_t from = document_.key_offsets.at(ours);
+    std::size_t to = end;
+    std::size_t after = to;
+    while (after < text_.size() && is_space(text_[after]))
+      ++after;
+    if (after < text_.size() && text_[after] == ',') {
+      to = after + 1;
+    } else {
+      std::size_t before = from;
+      while (before > 0 && is_space(text_[before - 1]))
+        --before;
+      if (before > 0 && text_[before - 1] == ',') from = before - 1;
+    }
+    edits_.push_back({from, to - from, {}});
+  }
+
+  void list_in_extensions_used() {
+    const std::string name = fmt::format("\"{}\"", kGltfFresnelExtension);
+    const auto used = document_.value.find("extensionsUsed");
+    if (used == document_.value.end()) {
+      insert_member("", document_.value, fmt::format("\"extensionsUsed\":[{}]", name));
+      return;
+    }
+    if (!used->is_array()) {
+      error("extensionsUsed", "is not an array", "an array of extension names");
+      return;
+    }
+    if (std::find(used->begin(), used->end(), std::string(kGltfFresnelExtension)) != used->end())
+      return;
+    edits_.push_back(
+        {document_.value_offset("/extensionsUsed") + 1, 0, name + (used->empty() ? "" : ",")});
+  }
+
+  std::string_view text_;
+  const LocatedJson& document_;
+  const std::string& path_;
+  Diagnostics& diagnostics_;
+  std::vector<Edit> edits_;
+};
+
+// The URIs of the asset's external files: buffers' and images' that are not data URIs.
+std::vector<std::string> external_uris(const nlohmann::json& root) {
+  std::vector<std::string> uris;
+  for (const char* array : {"buffers", "images"}) {
+    const auto entries = root.find(array);
+    if (entries == root.end() || !entries->is_array()) continue;
+    for (const nlohmann::json& entry : *entries) {
+      const auto uri = entry.is_object() ? entry.find("uri") : entry.end();
+      if (uri != entry.end() && uri->is_string() && !uri->get<std::string>().starts_with("data:"))
+        uris.push_back(uri->get<std::string>());
+    }
+  }
+  return uris;
+}
+
+}  // namespace
+
+ordered_json gltf_fresnel_extension(const CompiledMaterial& compiled,
+                                    const runtime::BasisView& basis) {
+  ordered_json out;
+  out["name"] = compiled.material.name;
+  out["basis"] = runtime::basis_name(basis.kind);
+  out["matcVersion"] = kVersion;
+  out["colorSpace"] = color_space_name(compiled.color.working_space);
+  out["coefficients"] = coefficient_rows_json(compiled.coefficients);
+  out["maxError"] = rgb_json(compiled.accuracy.decomposition.max_abs);
+  if (compiled.coat) {
+    const CompiledCoat& coat = *compiled.coat;
+    const runtime::CoatCoefficients& c = coat.coefficients;
+    out["maxError"] = rgb_json(coat.layered_error.max_abs);
+    out["coat"] = {{"weight", coat.input.weight},
+                   {"ior", coat.input.ior},
+                   {"roughness", coat.input.roughness},
+                   {"color", rgb_json(coat.input.color)},
+                   {"underCoatCoefficients", coefficient_rows_json(c.under_coat)},
+                   {"coatCoefficients", {c.coat[0], c.coat[1], c.coat[2], c.coat[3]}}};
+  }
+  return out;
+}
+
+std::optional<GltfWithExtensions> gltf_with_fresnel_extensions(
+    std::string_view asset, bool binary, const std::map<std::size_t, ordered_json>& extensions,
+    const std::string& path, Diagnostics& diagnostics) {
+  GlbParts parts{asset, {}};
+  if (binary) {
+    if (const std::string problem = glb_layout_problem(asset); !problem.empty()) {
+      diagnostics.error({path, 0, 0}, "", problem, "a GLB 2.0 container");
+      return std::nullopt;
+    }
+    parts = glb_parts(asset);
+  }
+  auto parsed = parse_located_json(parts.json);
+  if (const auto* syntax = std::get_if<JsonSyntaxError>(&parsed)) {
+    diagnostics.error({path, 0, 0}, "",
+                      fmt::format("its JSON at byte {}: {}", syntax->offset, syntax->message),
+                      "a glTF 2.0 asset");
+    return std::nullopt;
+  }
+  const LocatedJson& document = std::get<LocatedJson>(parsed);
+  // A key given twice is read as its last value by tinygltf; an edit could land in either.
+  for (const DuplicateKey& duplicate : document.duplicates) {
+    diagnostics.error({path, 0, 0}, field_path(duplicate.pointer),
+                      fmt::format("given twice (bytes {} and {} of its JSON)",
+                                  duplicate.first_offset, duplicate.offset),
+                      "each key once");
+  }
+  if (diagnostics.has_errors()) return std::nullopt;
+  std::optional<std::string> json =
+      JsonSplicer(parts.json, document, path, diagnostics).run(extensions);
+  if (!json) return std::nullopt;
+  GltfWithExtensions result;
+  result.bytes = binary ? glb_file(*json, parts.after_json) : std::move(*json);
+  result.external_uris = external_uris(document.value);
+  return result;
+}
+
+}  // namespace matc

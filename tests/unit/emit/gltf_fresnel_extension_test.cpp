@@ -1,0 +1,174 @@
+// glTF out: the asset written back with MATC_materials_fresnel in each metal, every other byte as
+// it was (the JSON edited in place, a GLB's later chunks carried), a second run replacing the
+// first's extension, a stale one removed, and the entries a reader could take two ways refused.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "diagnostic_text.h"
+#include "glb_bytes.h"
+#include "matc/emit/gltf_fresnel_extension.h"
+#include "matc/formats/glb_container.h"
+#include "matc/matc.h"
+
+namespace matc {
+namespace {
+
+using nlohmann::json;
+using nlohmann::ordered_json;
+
+const ordered_json kExtension = {{"name", "a"}, {"coefficients", {{1, 0, 0, 0}}}};
+const std::string kMember = R"("MATC_materials_fresnel":{"name":"a","coefficients":[[1,0,0,0]]})";
+
+// The asset `text` (.gltf) with `extensions`; fails the test on an error.
+std::string written(const std::string& text,
+                    const std::map<std::size_t, ordered_json>& extensions) {
+  Diagnostics diagnostics;
+  const auto result = gltf_with_fresnel_extensions(text, false, extensions, "a.gltf", diagnostics);
+  EXPECT_TRUE(result) << test::diagnostic_text(diagnostics);
+  return result ? result->bytes : std::string();
+}
+
+std::string refusal(const std::string& text,
+                    const std::map<std::size_t, ordered_json>& extensions) {
+  Diagnostics diagnostics;
+  const auto result = gltf_with_fresnel_extensions(text, false, extensions, "a.gltf", diagnostics);
+  EXPECT_FALSE(result);
+  return test::diagnostic_text(diagnostics);
+}
+
+TEST(GltfFresnelExtension, InsertsTheExtensionAndKeepsEveryOtherByte) {
+  // Formatting, number spellings, key order and unknown members as the asset has them.
+  const std::string text =
+      "{\n  \"asset\" : {\"version\": \"2.0\", \"generator\": \"x\"},\n"
+      "  \"materials\": [\n    {\"name\": \"m\", \"pbrMetallicRoughness\": {\"metallicFactor\": "
+      "1.0e0}},"
+      "\n    {\"extensions\": {}},\n    {\"extensions\": {\"KHR_x\": {\"v\": 0.10}}}\n  ],"
+      "\n  \"extras\": {\"\\u00e9\": [1e2]}\n}\n";
+  const std::string out = written(text, {{0, kExtension}, {1, kExtension}, {2, kExtension}});
+  const std::string expected =
+      "{\"extensionsUsed\":[\"MATC_materials_fresnel\"],\n  \"asset\" : {\"version\": \"2.0\", "
+      "\"generator\": \"x\"},\n  \"materials\": [\n    {\"extensions\":{" +
+      kMember +
+      "},\"name\": \"m\", \"pbrMetallicRoughness\": {\"metallicFactor\": 1.0e0}},\n    "
+      "{\"extensions\": {" +
+      kMember + "}},\n    {\"extensions\": {" + kMember +
+      ",\"KHR_x\": {\"v\": 0.10}}}\n  ],\n  \"extras\": {\"\\u00e9\": [1e2]}\n}\n";
+  EXPECT_EQ(out, expected);
+}
+
+TEST(GltfFresnelExtension, ListsItInExtensionsUsedOnce) {
+  EXPECT_EQ(written(R"({"extensionsUsed": [], "materials": [{}]})", {{0, kExtension}}),
+            R"({"extensionsUsed": ["MATC_materials_fresnel"], "materials": [{"extensions":{)" +
+                kMember + "}}]}");
+  EXPECT_EQ(
+      written(R"({"extensionsUsed": ["KHR_a"], "materials": [{}]})", {{0, kExtension}}),
+      R"({"extensionsUsed": ["MATC_materials_fresnel","KHR_a"], "materials": [{"extensions":{)" +
+          kMember + "}}]}");
+  const std::string listed = R"({"extensionsUsed": ["MATC_materials_fresnel"], "materials": [{}]})";
+  EXPECT_EQ(written(listed, {{0, kExtension}}),
+            R"({"extensionsUsed": ["MATC_materials_fresnel"], "materials": [{"extensions":{)" +
+                kMember + "}}]}");
+}
+
+TEST(GltfFresnelExtension, ASecondRunReplacesTheFirstsAndGivesTheSameBytes) {
+  const std::string text = R"({"materials": [{"name": "m"}, {"name": "n"}]})";
+  const std::string once = written(text, {{0, kExtension}, {1, kExtension}});
+  EXPECT_EQ(written(once, {{0, kExtension}, {1, kExtension}}), once);
+  ordered_json changed = kExtension;
+  changed["name"] = "b";
+  const std::string twice = written(once, {{0, changed}, {1, kExtension}});
+  EXPECT_NE(twice.find(R"({"name":"b")"), std::string::npos) << twice;
+  EXPECT_EQ(twice.find(R"("name":"a","coefficients":[[1,0,0,0]]},"name": "m")"), std::string::npos)
+      << twice;
+}
+
+TEST(GltfFresnelExtension, AMaterialNoLongerAMetalLosesTheExtension) {
+  const std::string first =
+      R"({"materials": [{"extensions": {"MATC_materials_fresnel": {"x": 1}, "K": {}}}]})";
+  EXPECT_EQ(written(first, {}), R"({"materials": [{"extensions": { "K": {}}}]})");
+  const std::string last =
+      R"({"materials": [{"extensions": {"K": {} , "MATC_materials_fresnel": {"x": [1]} }}]})";
+  EXPECT_EQ(written(last, {}), R"({"materials": [{"extensions": {"K": {}  }}]})");
+  const std::string only = R"({"materials": [{"extensions": {"MATC_materials_fresnel": {}}}]})";
+  EXPECT_EQ(written(only, {}), R"({"materials": [{"extensions": {}}]})");
+}
+
+TEST(GltfFresnelExtension, RefusesWhatAReaderCouldTakeTwoWays) {
+  EXPECT_NE(refusal(R"({"materials": [{"name": "a", "name": "b"}]})", {{0, kExtension}})
+                .find("materials[0].name: given twice"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"materials": [{"extensions": []}]})", {{0, kExtension}})
+                .find("materials[0].extensions: is not an object"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"materials": [{"extensions": {"MATC_materials_fresnel": 1}}]})",
+                    {{0, kExtension}})
+                .find("materials[0].extensions.MATC_materials_fresnel: is not an object"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"extensionsUsed": {}, "materials": [{}]})", {{0, kExtension}})
+                .find("extensionsUsed: is not an array"),
+            std::string::npos);
+}
+
+TEST(GltfFresnelExtension, AGlbKeepsItsBinAndLaterChunksByteForByte) {
+  const std::string bin("\x01\x00\x02\x03", 4);
+  const std::string other_chunk = std::string("\x04\x00\x00\x00XTRA", 8) + "abcd";
+  const std::string asset = test::glb_bytes(R"({"materials": [{}]})", bin, other_chunk);
+  Diagnostics diagnostics;
+  const auto result =
+      gltf_with_fresnel_extensions(asset, true, {{0, kExtension}}, "a.glb", diagnostics);
+  ASSERT_TRUE(result) << test::diagnostic_text(diagnostics);
+  EXPECT_EQ(glb_layout_problem(result->bytes), "");
+  const GlbParts parts = glb_parts(result->bytes);
+  EXPECT_EQ(parts.json,
+            R"({"extensionsUsed":["MATC_materials_fresnel"],"materials": [{"extensions":{)" +
+                kMember + "}}]}");
+  EXPECT_EQ(std::string(parts.after_json), glb_parts(asset).after_json);
+  EXPECT_EQ(result->bytes.size() % 4, 0u);
+  // What an independent writer makes of the same JSON and chunks.
+  EXPECT_EQ(result->bytes, test::glb_bytes(std::string(parts.json), bin, other_chunk));
+}
+
+TEST(GltfFresnelExtension, NamesTheFilesAGltfNeedsBesideIt) {
+  Diagnostics diagnostics;
+  const auto result = gltf_with_fresnel_extensions(
+      R"({"materials": [{}], "buffers": [{"uri": "a.bin"}, {"uri": "data:x;base64,"}, {}],
+          "images": [{"uri": "t%20x.png"}]})",
+      false, {{0, kExtension}}, "a.gltf", diagnostics);
+  ASSERT_TRUE(result) << test::diagnostic_text(diagnostics);
+  EXPECT_EQ(result->external_uris, (std::vector<std::string>{"a.bin", "t%20x.png"}));
+}
+
+// The public call: the metals compiled as compile() compiles them, the extension carrying them.
+TEST(GltfFresnelExtension, ThePublicCallCompilesEachMetalIntoItsMaterial) {
+  const std::string text = R"({"asset": {"version": "2.0"}, "materials": [
+      {"name": "plastic", "pbrMetallicRoughness": {"metallicFactor": 0}},
+      {"name": "Gold", "pbrMetallicRoughness": {"baseColorFactor": [1, 0.78, 0.34, 1]},
+       "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1}}}]})";
+  const api::GltfAsset asset = api::compile_gltf(text, "car.gltf", {"f82", "", ""});
+  ASSERT_EQ(asset.materials.size(), 1u);
+  const api::CompiledMaterial direct =
+      api::compile(api::parse_materials(text, "car.gltf").front(), {"f82", "", ""});
+  const json written_json = json::parse(asset.bytes);
+  EXPECT_FALSE(written_json["materials"][0].contains("extensions"));
+  const json& extension = written_json["materials"][1]["extensions"]["MATC_materials_fresnel"];
+  EXPECT_EQ(extension["name"], "Gold");
+  EXPECT_EQ(extension["basis"], "f82");
+  for (std::size_t c = 0; c < 3; ++c)
+    for (std::size_t i = 0; i < 4; ++i)
+      EXPECT_EQ(extension["coefficients"][c][i].get<double>(), direct.coefficients()[c][i]);
+  ASSERT_TRUE(direct.coat());
+  EXPECT_EQ(extension["coat"]["ior"], 1.5);
+  for (std::size_t c = 0; c < 3; ++c)
+    for (std::size_t i = 0; i < 4; ++i)
+      EXPECT_EQ(extension["coat"]["underCoatCoefficients"][c][i].get<double>(),
+                direct.coat()->under_coat_coefficients[c][i]);
+  EXPECT_THROW(api::compile_gltf(text, "car.json"), std::invalid_argument);
+  EXPECT_THROW(api::compile_gltf(text, "car.gltf", {"nope", "", ""}), std::invalid_argument);
+  EXPECT_THROW(api::compile_gltf(R"({"materials": []})", "car.gltf"), api::MaterialError);
+}
+
+}  // namespace
+}  // namespace matc
