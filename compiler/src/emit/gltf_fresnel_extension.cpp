@@ -22,6 +22,33 @@ struct Edit {
   std::string insert;
 };
 
+// Errors located in the asset's JSON: at its line and column in a .gltf; in a GLB, at the file
+// with the line and column of its JSON chunk in the message.
+class JsonErrors {
+ public:
+  JsonErrors(std::string_view json, bool binary, const std::string& path, Diagnostics& diagnostics)
+      : locator_(path, json), binary_(binary), diagnostics_(diagnostics) {}
+
+  void error(std::size_t offset, const std::string& field, const std::string& message,
+             const std::string& allowed) {
+    const SourceLocation at = locator_.at(offset);
+    if (!binary_) {
+      diagnostics_.error(at, field, message, allowed);
+      return;
+    }
+    diagnostics_.error(
+        locator_.whole_file(), field,
+        fmt::format("{} (line {}, column {} of its JSON chunk)", message, at.line, at.column),
+        allowed);
+  }
+  bool has_errors() const { return diagnostics_.has_errors(); }
+
+ private:
+  TextLocator locator_;
+  bool binary_;
+  Diagnostics& diagnostics_;
+};
+
 bool is_space(char c) {
   return c == ' ' || c == '\t' || c == '\n' || c == '\r';
 }
@@ -29,13 +56,12 @@ bool is_space(char c) {
 // Edits the asset's JSON text; each problem is an error naming its entry.
 class JsonSplicer {
  public:
-  JsonSplicer(std::string_view text, const LocatedJson& document, const std::string& path,
-              Diagnostics& diagnostics)
-      : text_(text), document_(document), path_(path), diagnostics_(diagnostics) {}
+  JsonSplicer(std::string_view text, const LocatedJson& document, JsonErrors& errors)
+      : text_(text), document_(document), errors_(errors) {}
 
   std::optional<std::string> run(const std::map<std::size_t, ordered_json>& extensions) {
     if (!document_.value.is_object()) {
-      error("", "the asset's JSON is not an object", "a glTF 2.0 asset");
+      errors_.error(0, "", "the asset's JSON is not an object", "a glTF 2.0 asset");
       return std::nullopt;
     }
     static const nlohmann::json kNoMaterials = nlohmann::json::array();
@@ -43,7 +69,7 @@ class JsonSplicer {
     const nlohmann::json& materials =
         found_materials == document_.value.end() ? kNoMaterials : *found_materials;
     if (!materials.is_array()) {
-      error("materials", "is not an array", "an array of materials");
+      error("/materials", "is not an array", "an array of materials");
       return std::nullopt;
     }
     for (std::size_t i = 0; i < materials.size(); ++i) {
@@ -51,7 +77,7 @@ class JsonSplicer {
       material(i, materials[i], found == extensions.end() ? nullptr : &found->second);
     }
     if (!extensions.empty()) list_in_extensions_used();
-    if (diagnostics_.has_errors()) return std::nullopt;
+    if (errors_.has_errors()) return std::nullopt;
     std::sort(edits_.begin(), edits_.end(),
               [](const Edit& a, const Edit& b) { return a.offset > b.offset; });
     std::string out(text_);
@@ -61,8 +87,9 @@ class JsonSplicer {
   }
 
  private:
-  void error(const std::string& field, const std::string& message, const std::string& allowed) {
-    diagnostics_.error({path_, 0, 0}, field, message, allowed);
+  // An error at the value at `pointer`.
+  void error(const std::string& pointer, const std::string& message, const std::string& allowed) {
+    errors_.error(document_.value_offset(pointer), field_path(pointer), message, allowed);
   }
 
   // Inserts a member (`"key":value`) first in the object at `pointer`.
@@ -74,9 +101,8 @@ class JsonSplicer {
 
   void material(std::size_t index, const nlohmann::json& value, const ordered_json* extension) {
     const std::string pointer = fmt::format("/materials/{}", index);
-    const std::string field = fmt::format("materials[{}]", index);
     if (!value.is_object()) {
-      error(field, "is not an object", "a material object");
+      error(pointer, "is not an object", "a material object");
       return;
     }
     const std::string member =
@@ -91,7 +117,7 @@ class JsonSplicer {
     }
     const std::string extensions_pointer = pointer + "/extensions";
     if (!extensions->is_object()) {
-      error(field + ".extensions", "is not an object", "an object of extensions");
+      error(pointer + "/extensions", "is not an object", "an object of extensions");
       return;
     }
     const std::string ours = fmt::format("{}/{}", extensions_pointer, kGltfFresnelExtension);
@@ -101,8 +127,7 @@ class JsonSplicer {
       return;
     }
     if (!previous->is_object()) {
-      error(fmt::format("{}.extensions.{}", field, kGltfFresnelExtension), "is not an object",
-            "the object matc writes (docs/gltf.md)");
+      error(ours, "is not an object", "the object matc writes (docs/gltf.md)");
       return;
     }
     const std::size_t start = document_.value_offset(ours);
@@ -137,7 +162,7 @@ class JsonSplicer {
       return;
     }
     if (!used->is_array()) {
-      error("extensionsUsed", "is not an array", "an array of extension names");
+      error("/extensionsUsed", "is not an array", "an array of extension names");
       return;
     }
     if (std::find(used->begin(), used->end(), std::string(kGltfFresnelExtension)) != used->end())
@@ -148,8 +173,7 @@ class JsonSplicer {
 
   std::string_view text_;
   const LocatedJson& document_;
-  const std::string& path_;
-  Diagnostics& diagnostics_;
+  JsonErrors& errors_;
   std::vector<Edit> edits_;
 };
 
@@ -204,24 +228,23 @@ std::optional<GltfWithExtensions> gltf_with_fresnel_extensions(
     }
     parts = glb_parts(asset);
   }
+  JsonErrors errors(parts.json, binary, path, diagnostics);
   auto parsed = parse_located_json(parts.json);
   if (const auto* syntax = std::get_if<JsonSyntaxError>(&parsed)) {
-    diagnostics.error({path, 0, 0}, "",
-                      fmt::format("its JSON at byte {}: {}", syntax->offset, syntax->message),
-                      "a glTF 2.0 asset");
+    errors.error(syntax->offset, "", syntax->message, "a glTF 2.0 asset");
     return std::nullopt;
   }
   const LocatedJson& document = std::get<LocatedJson>(parsed);
   // A key given twice is read as its last value by tinygltf; an edit could land in either.
+  const TextLocator locator(path, parts.json);
   for (const DuplicateKey& duplicate : document.duplicates) {
-    diagnostics.error({path, 0, 0}, field_path(duplicate.pointer),
-                      fmt::format("given twice (bytes {} and {} of its JSON)",
-                                  duplicate.first_offset, duplicate.offset),
-                      "each key once");
+    const SourceLocation first = locator.at(duplicate.first_offset);
+    errors.error(duplicate.offset, field_path(duplicate.pointer),
+                 fmt::format("given twice (first at line {}, column {})", first.line, first.column),
+                 "each key once (readers differ on which one counts)");
   }
   if (diagnostics.has_errors()) return std::nullopt;
-  std::optional<std::string> json =
-      JsonSplicer(parts.json, document, path, diagnostics).run(extensions);
+  std::optional<std::string> json = JsonSplicer(parts.json, document, errors).run(extensions);
   if (!json) return std::nullopt;
   GltfWithExtensions result;
   result.bytes = binary ? glb_file(*json, parts.after_json) : std::move(*json);

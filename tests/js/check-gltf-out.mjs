@@ -1,0 +1,164 @@
+// glTF out (docs/gltf.md): `matc gltf` writes glTF-Transform-built assets back with each metal's
+// compiled coefficients in MATC_materials_fresnel, checked by independent readers:
+//   - the Khronos glTF-Validator (npm gltf-validator) reports no error, and exactly the input's
+//     messages plus one: that it does not know the vendor extension (information, not a warning);
+//   - every other byte is carried: a GLB's BIN chunk byte for byte; the JSON, with the extension
+//     and its extensionsUsed entry taken out, deep-equals the input's (a .gltf's too);
+//   - glTF-Transform reads the output: the same materials, factors, texture bytes and geometry;
+//   - each extension object passes docs/gltf/MATC_materials_fresnel.schema.json (Ajv), and its
+//     coefficients (and coat) equal those `matc -o` writes into <name>.json for the same asset;
+//   - a second run over the output gives the same bytes; outputs that would overwrite the input,
+//     leave a .gltf's buffers behind or change the container are refused, nothing written.
+//   node check-gltf-out.mjs MATC SCHEMA
+import { spawnSync } from "node:child_process";
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+import { Logger, NodeIO } from "@gltf-transform/core";
+import { KHRONOS_EXTENSIONS } from "@gltf-transform/extensions";
+import Ajv from "ajv";
+import validator from "gltf-validator";
+import { carAsset, trimAsset } from "./gltf-assets.mjs";
+import { check, finish } from "./report.mjs";
+import { run } from "./shader-cases.mjs";
+
+const [matc, schemaPath] = process.argv.slice(2);
+const kExtension = "MATC_materials_fresnel";
+const validateExtension = new Ajv({ allErrors: true, strict: true }).compile(JSON.parse(readFileSync(schemaPath, "utf8")));
+
+// The GLB's JSON (parsed) and the bytes after its JSON chunk.
+function glbParts(bytes) {
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const jsonLength = view.getUint32(12, true);
+  return { json: JSON.parse(new TextDecoder().decode(bytes.subarray(20, 20 + jsonLength))),
+           rest: bytes.subarray(20 + jsonLength) };
+}
+
+// The glTF-Validator's report of the asset at `path` (external resources beside it).
+async function validated(path, dir) {
+  const bytes = new Uint8Array(readFileSync(path));
+  return validator.validateBytes(bytes, {
+    uri: path, maxIssues: 1000,
+    externalResourceFunction: async (uri) => new Uint8Array(readFileSync(join(dir, decodeURIComponent(uri)))),
+  });
+}
+
+// Its messages; extensionsUsed's indices left out (the vendor extension's name goes first there).
+const messages = (report) => report.issues.messages
+  .map((m) => `${m.code} ${(m.pointer ?? "").replace(/^\/extensionsUsed\/\d+$/, "/extensionsUsed")} ${m.message}`).sort();
+
+// The JSON without what matc adds: the extension in each material, its extensionsUsed entry, and
+// an `extensions` object left empty by it where the input had none.
+function withoutExtension(json, input) {
+  const copy = structuredClone(json);
+  copy.extensionsUsed = copy.extensionsUsed.filter((name) => name !== kExtension);
+  if (copy.extensionsUsed.length === 0 && !input.extensionsUsed) delete copy.extensionsUsed;
+  copy.materials.forEach((material, i) => {
+    if (!material.extensions) return;
+    delete material.extensions[kExtension];
+    if (Object.keys(material.extensions).length === 0 && !input.materials[i].extensions) delete material.extensions;
+  });
+  return copy;
+}
+
+const sameJson = (a, b) => JSON.stringify(a) === JSON.stringify(b);
+
+// glTF-Transform's view of an asset: materials with their factors, texture bytes, accessor data.
+async function transformView(path) {
+  const document = await new NodeIO().setLogger(new Logger(Logger.Verbosity.ERROR))
+    .registerExtensions(KHRONOS_EXTENSIONS).read(path);
+  const root = document.getRoot();
+  return {
+    materials: root.listMaterials().map((m) => [m.getName(), m.getBaseColorFactor(), m.getMetallicFactor(),
+                                                m.getRoughnessFactor(), [...m.listExtensions()].map((e) => e.extensionName)]),
+    textures: root.listTextures().map((t) => Buffer.from(t.getImage()).toString("base64")),
+    accessors: root.listAccessors().map((a) => Array.from(a.getArray())),
+  };
+}
+
+// Each extension against the schema and the compile's <name>.json.
+function checkExtensions(json, build, asset) {
+  let count = 0;
+  for (const material of json.materials) {
+    const extension = material.extensions?.[kExtension];
+    if (!extension) continue;
+    ++count;
+    check(validateExtension(extension), `${asset}: ${material.name}: the schema refuses the extension: ` +
+                                        JSON.stringify(validateExtension.errors));
+    const compiled = JSON.parse(readFileSync(join(build, `${extension.name}.json`), "utf8"));
+    check(sameJson(extension.coefficients, compiled.coefficients), `${asset}: ${extension.name}'s coefficients ` +
+          `differ from <name>.json's`);
+    check(extension.basis === compiled.basis.name && extension.matcVersion === compiled.matc_version,
+          `${asset}: ${extension.name}: basis ${extension.basis} ${extension.matcVersion}`);
+    check(!compiled.coat === !extension.coat, `${asset}: ${extension.name}: coat ${!!extension.coat} vs ${!!compiled.coat}`);
+    if (compiled.coat) {
+      check(sameJson(extension.coat.underCoatCoefficients, compiled.coat.under_coat_coefficients) &&
+            sameJson(extension.coat.coatCoefficients, compiled.coat.coat_coefficients) &&
+            extension.coat.ior === compiled.coat.input.ior && extension.coat.weight === compiled.coat.input.weight,
+            `${asset}: ${extension.name}'s coat differs from <name>.json's`);
+      check(sameJson(extension.maxError, compiled.coat.accuracy.layered.max), `${asset}: ${extension.name} maxError`);
+    } else {
+      check(sameJson(extension.maxError, compiled.accuracy.decomposition.max), `${asset}: ${extension.name} maxError`);
+    }
+  }
+  return count;
+}
+
+const dir = mkdtempSync(join(tmpdir(), "matc-gltf-out-"));
+try {
+  const car = join(dir, "car.glb");
+  await carAsset(car, { foil: true });
+  await trimAsset(dir);
+  const trim = join(dir, "trim.gltf");
+  const build = join(dir, "build");
+  run(matc, ["-q", "-o", build, "--emit", "json", car, trim]);
+  mkdirSync(join(dir, "out"));
+  const carOut = join(dir, "out", "car.glb");
+  const trimOut = join(dir, "trim_matc.gltf");
+  run(matc, ["gltf", "-q", car, "-o", carOut]);
+  run(matc, ["gltf", "-q", trim, "-o", trimOut]);
+
+  let metals = 0;
+  for (const [input, output, binary] of [[car, carOut, true], [trim, trimOut, false]]) {
+    const inBytes = new Uint8Array(readFileSync(input)), outBytes = new Uint8Array(readFileSync(output));
+    // The validator: no error; its messages those of the input plus one for the vendor extension.
+    const [before, after] = [await validated(input, dir), await validated(output, dir)];
+    check(after.issues.numErrors === 0, `${output}: glTF-Validator errors: ${messages(after).join("\n")}`);
+    const added = messages(after).filter((m) => !messages(before).includes(m));
+    check(added.length === 1 && added[0].startsWith("UNSUPPORTED_EXTENSION") && added[0].includes(kExtension) &&
+          after.issues.numWarnings === before.issues.numWarnings,
+          `${output}: the validator's messages beyond the input's: ${added.join("; ")}`);
+    // Every other byte.
+    const [inJson, outJson] = binary ? [glbParts(inBytes).json, glbParts(outBytes).json]
+                                     : [JSON.parse(readFileSync(input, "utf8")), JSON.parse(readFileSync(output, "utf8"))];
+    check(sameJson(withoutExtension(outJson, inJson), inJson), `${output}: the JSON beside the extension changed`);
+    if (binary) check(Buffer.compare(glbParts(inBytes).rest, glbParts(outBytes).rest) === 0, `${output}: the BIN chunk changed`);
+    check(outJson.extensionsUsed.includes(kExtension) && !(outJson.extensionsRequired ?? []).includes(kExtension),
+          `${output}: extensionsUsed ${outJson.extensionsUsed}, extensionsRequired ${outJson.extensionsRequired}`);
+    // glTF-Transform reads it as it reads the input.
+    check(sameJson(await transformView(output), await transformView(input)), `${output}: glTF-Transform reads it differently`);
+    metals += checkExtensions(outJson, build, output);
+    // A second run over the output: the same bytes.
+    const again = join(dir, binary ? "again.glb" : "again.gltf");
+    run(matc, ["gltf", "-q", output, "-o", again]);
+    check(Buffer.compare(readFileSync(again), outBytes) === 0, `${output}: a second run changed the bytes`);
+  }
+  check(metals === 5, `${metals} metals carry the extension (car: paint, chrome, foil; trim: 2)`);
+
+  // Refusals: nothing written.
+  const refused = (args, status, phrase) => {
+    const result = spawnSync(matc, ["gltf", ...args], { encoding: "utf8" });
+    check(result.status === status && result.stderr.includes(phrase),
+          `matc gltf ${args.join(" ")}: exit ${result.status}, ${result.stderr}`);
+  };
+  refused([car, "-o", car], 1, "would overwrite its input");
+  refused([trim, "-o", join(dir, "out", "trim.gltf")], 1, "would not resolve from there");
+  refused([car, "-o", join(dir, "out", "car.gltf")], 2, "an output ending in .glb");
+  check(!existsSync(join(dir, "out", "trim.gltf")) && !existsSync(join(dir, "out", "car.gltf")), "a refused run wrote its output");
+  console.log(`matc gltf: ${metals} metals written into 2 glTF-Transform assets (.glb, .gltf beside its buffer); ` +
+              `glTF-Validator: no errors, only the vendor extension's information added; every other byte ` +
+              `carried; glTF-Transform reads the same materials, textures and geometry; a second run gives the same bytes`);
+} finally {
+  rmSync(dir, { recursive: true, force: true });
+}
+finish();
