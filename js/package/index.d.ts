@@ -106,6 +106,13 @@ export declare class Matc {
   parseMaterials(text: string | Uint8Array | ArrayBuffer, path?: string): Material[];
   parseMaterial(input: string | Uint8Array | ArrayBuffer | object, options?: { path?: string }): Material;
   compile(material: Material, options?: CompileOptions): CompiledMaterial;
+  /**
+   * A glTF asset (a .glb, or a .gltf whose buffers are data URIs; `path` ends in .glb or .gltf)
+   * written back with each metal's compiled coefficients in MATC_materials_fresnel, every other
+   * byte as it was (`matc gltf`, docs/gltf.md).
+   */
+  compileGltf(bytes: Uint8Array | ArrayBuffer | string, path?: string, options?: CompileOptions):
+    { bytes: Uint8Array; materials: CompiledMaterial[] };
   textOutputs(options?: CompileOptions): TextOutputs;
 }
 

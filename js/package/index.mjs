@@ -175,6 +175,16 @@ export class Matc {
     const handle = unwrapped(this.#module.compile(material.handle, ...optionStrings(options)));
     return new CompiledMaterial(handle, material);
   }
+  // A glTF asset (a .glb's bytes, or a .gltf whose buffers are data URIs; `path` ends in .glb or
+  // .gltf) written back with each metal's compiled coefficients in the vendor extension
+  // MATC_materials_fresnel, every other byte as it was (`matc gltf`, docs/gltf.md):
+  // { bytes: Uint8Array, materials: CompiledMaterial[] (its metals, in the asset's order) }.
+  compileGltf(bytes, path = "asset.glb", options = {}) {
+    const result = unwrapped(this.#module.compileGltf(checkedText(bytes, "bytes"), checkedString(path, "path"),
+                                                      ...optionStrings(options)));
+    return { bytes: result.bytes,
+             materials: result.materials.map(({ material, compiled }) => new CompiledMaterial(compiled, new Material(material))) };
+  }
   // The texts `matc` writes with the same options, byte for byte.
   textOutputs(options = {}) {
     return new TextOutputs(unwrapped(this.#module.textOutputs(...optionStrings(options))));

@@ -343,6 +343,33 @@ async function loadCoat(material, snippetUrl, file) {
            snippet };
 }
 
+// The name of the glTF vendor extension `matc gltf` writes (docs/gltf.md).
+export const kGltfFresnelExtension = "MATC_materials_fresnel";
+
+// A glTF material's MATC_materials_fresnel (`extension`) as build.loadMaterial gives a material:
+// { name, basis, coefficients, coat: null }. Throws a MatcWebError saying why it cannot be used:
+// coefficients of another basis or matc version than the build's tables, malformed rows, or a
+// coated metal (its two-lobe shader snippet comes from the compiler).
+export function gltfExtensionMaterial(build, extension) {
+  const version = build.manifest?.matc_version;
+  if (extension?.basis !== build.basis || extension?.matcVersion !== version) {
+    throw new MatcWebError(`its ${kGltfFresnelExtension} holds coefficients of basis ${extension?.basis} from ` +
+                           `matc ${extension?.matcVersion}; the build's tables are basis ${build.basis} from matc ${version}`);
+  }
+  if (!/^[A-Za-z_][A-Za-z0-9_]*$/.test(extension.name ?? "")) {
+    throw new MatcWebError(`its ${kGltfFresnelExtension}.name is not the identifier matc writes`);
+  }
+  const rows = checkedRows(extension.coefficients, kGltfFresnelExtension, "coefficients");
+  if (rows.some((row) => row.some((value) => typeof value !== "number" || !Number.isFinite(value)))) {
+    throw new MatcWebError(`its ${kGltfFresnelExtension}.coefficients must be finite numbers`);
+  }
+  if (extension.coat) {
+    throw new MatcWebError("a coated metal: its shader snippet comes from the compiler (matcGltfPlugin's " +
+                           "matc: createMatc())");
+  }
+  return { name: extension.name, basis: build.basis, coefficients: rows, coat: null };
+}
+
 // A compiled material's coefficient rows (R, G, B: c_0..c_3), or an error naming `field` of `file`.
 function checkedRows(rows, file, field) {
   if (!Array.isArray(rows) || rows.length !== 3 || rows.some((row) => row.length !== 4)) {

@@ -221,6 +221,30 @@ val text_outputs(const std::string& basis, const std::string& color_space,
   });
 }
 
+// {bytes: Uint8Array, materials: [{material, compiled}]}: the asset written back
+// with each metal's MATC_materials_fresnel (matc/api/gltf.h).
+val compile_gltf(const std::string& bytes, const std::string& path, const std::string& basis,
+                 const std::string& color_space, const std::string& gamut_mapping) {
+  return guarded([&] {
+    matc::api::GltfAsset asset =
+        matc::api::compile_gltf(bytes, path, options_of(basis, color_space, gamut_mapping));
+    val out = val::object();
+    out.set("bytes", val::global("Uint8Array")
+                         .new_(emscripten::typed_memory_view(
+                             asset.bytes.size(),
+                             reinterpret_cast<const unsigned char*>(asset.bytes.data()))));
+    val materials = val::array();
+    for (matc::api::CompiledMaterial& compiled : asset.materials) {
+      val entry = val::object();
+      entry.set("material", val(JsMaterial(compiled.material())));
+      entry.set("compiled", val(JsCompiled(std::move(compiled))));
+      materials.call<void>("push", entry);
+    }
+    out.set("materials", materials);
+    return out;
+  });
+}
+
 val spectral_presets() {
   val out = val::array();
   for (const std::string& name : matc::api::spectral_presets())
@@ -247,6 +271,7 @@ EMSCRIPTEN_BINDINGS(matc) {
   emscripten::function("parseMaterials", &parse_materials);
   emscripten::function("compile", &compile);
   emscripten::function("textOutputs", &text_outputs);
+  emscripten::function("compileGltf", &compile_gltf);
   emscripten::function("spectralPresets", &spectral_presets);
   emscripten::function("readsMaterialX", &matc::api::reads_materialx);
 }

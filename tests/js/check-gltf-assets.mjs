@@ -11,7 +11,8 @@
 // tyre); `matc eval`'s exact curve is the glTF definition of each metal (Schlick's from F0; the
 // F82-tint curve with the edge colour) and its F that curve within the compile's accuracy;
 // `matc -o` compiles both assets; the npm package's compiler imports the same material files from
-// the same bytes.
+// the same bytes, and its compileGltf writes the .glb back as `matc gltf` does (the same bytes but
+// for the last digits of the coefficients, where WebAssembly's math differs).
 //   node check-gltf-assets.mjs MATC NPM_DIR
 import { spawnSync } from "node:child_process";
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
@@ -110,13 +111,33 @@ try {
     check(material.json === readFileSync(join(out, `${material.name}.json`), "utf8"),
           `${material.name}: the package's material file differs from matc import's`);
   }
+  // compileGltf against `matc gltf`: every byte outside the extension's numbers, and the numbers
+  // within 1e-9.
+  const written = wasm.compileGltf(new Uint8Array(readFileSync(car)), "car.glb");
+  check(written.materials.map((m) => `${m.name}:${m.coat ? "coated" : "bare"}`).join() === "Car_Paint:coated,Chrome:bare",
+        `compileGltf's metals: ${written.materials.map((m) => m.name)}`);
+  run(matc, ["gltf", "-q", car, "-o", join(dir, "car_matc.glb")]);
+  const native = readFileSync(join(dir, "car_matc.glb"));
+  const numbers = /-?\d+\.?\d*(?:[eE][-+]?\d+)?/g;
+  const [ours, theirs] = [Buffer.from(written.bytes).toString("latin1"), native.toString("latin1")];
+  const jsonEnd = (bytes) => 20 + bytes.readUInt32LE(12);
+  check(Buffer.compare(Buffer.from(written.bytes).subarray(jsonEnd(Buffer.from(written.bytes))),
+                       native.subarray(jsonEnd(native))) === 0, "compileGltf: the BIN chunk differs from matc gltf's");
+  const [ourJson, theirJson] = [ours.slice(20, jsonEnd(Buffer.from(written.bytes))), theirs.slice(20, jsonEnd(native))];
+  check(ourJson.replace(numbers, "#").trimEnd() === theirJson.replace(numbers, "#").trimEnd(),
+        "compileGltf's JSON differs from matc gltf's beyond its numbers");
+  const [ourNumbers, theirNumbers] = [ourJson.match(numbers).map(Number), theirJson.match(numbers).map(Number)];
+  const gltfDifference = Math.max(...ourNumbers.map((value, i) => Math.abs(value - theirNumbers[i])));
+  check(ourNumbers.length === theirNumbers.length && gltfDifference <= 1e-9,
+        `compileGltf's numbers differ from matc gltf's by ${gltfDifference}`);
   console.log(`glTF assets built with glTF-Transform: 4 metals imported (2 coated, 1 edge-coloured), ` +
               `notes for the texture and the non-metal; exact curves equal the glTF definitions ` +
               `(${Math.max(chromeCurves.exact, edgeCurves.exact).toExponential(1)}), F within ` +
               `${chromeCurves.fitted.toFixed(4)} (Schlick's chrome) and ${edgeCurves.fitted.toFixed(4)} (the edge-coloured ` +
               `one) with the default basis, ${Math.max(chromeCurves.f82, edgeCurves.f82).toExponential(1)} with ` +
               `--basis f82; the npm package ` +
-              `imports the .glb's material files byte for byte`);
+              `imports the .glb's material files byte for byte, and its compileGltf writes what matc gltf ` +
+              `writes (numbers within ${gltfDifference.toExponential(1)})`);
 } finally {
   rmSync(dir, { recursive: true, force: true });
 }

@@ -5,7 +5,10 @@
 // coated one), the tyre and the foil keep three.js's material (the foil with a console warning
 // that says why); the loaded paint's and chrome's materials, on the probe plane under the engine
 // checks' lights, equal the CPU runtime's prediction for the material files `matc import` writes
-// from the same asset, to 1e-4.
+// from the same asset, to 1e-4. Then the same asset written by `matc gltf` (MATC_materials_fresnel
+// in each metal), loaded with the plugin and no compiler in the page: the chrome takes its
+// coefficients from the extension (and renders as the compiled one does), the coated paint keeps
+// three.js's material with a warning that it needs the compiler.
 //   node check-three-gltf.mjs MATC NPM_DIR
 import { mkdirSync, mkdtempSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
@@ -42,18 +45,33 @@ import { probeScene, probeSetup, renderProbePixels } from "/checks/three-scene-p
   RectAreaLightUniformsLib.init();
   const matc = await createMatc();
   const build = await loadMatcBuild(await compiledMatcBuildFiles(matc));
-  const gltf = await new GLTFLoader().register(matcGltfPlugin({ matc, build })).loadAsync("/assets/car.glb");
-  const byName = {};
-  gltf.scene.traverse((object) => { if (object.isMesh) byName[object.material.name] = object.material; });
-  out.matc = Object.fromEntries(Object.entries(byName).map(([name, material]) =>
-    [name, material.userData.matc ? (material.userData.matc.source.material.coat ? "coated" : "bare") : "three"]));
+  const load = async (url, plugin) => {
+    const gltf = await new GLTFLoader().register(plugin).loadAsync(url);
+    const byName = {};
+    gltf.scene.traverse((object) => { if (object.isMesh) byName[object.material.name] = object.material; });
+    const kinds = Object.fromEntries(Object.entries(byName).map(([name, material]) =>
+      [name, material.userData.matc ? (material.userData.matc.source.material.coat ? "coated" : "bare") +
+                                      " " + material.userData.matc.from : "three"]));
+    return { byName, kinds };
+  };
+  const { byName, kinds } = await load("/assets/car.glb", matcGltfPlugin({ matc, build }));
+  out.matc = kinds;
+  // The asset written by matc gltf, with no compiler given to the plugin.
+  out.console.push("-- without the compiler");
+  const written = await load("/assets/car_matc.glb", matcGltfPlugin({ build }));
+  out.matcWithoutCompiler = written.kinds;
   const { target, camera, environment } = probeSetup(THREE, renderer, ${kProbeSize});
   out.renders = {};
+  out.extensionRenders = {};
   for (const [name, key] of Object.entries(config.probed)) {
     for (const light of config.lights) {
       out.renders[key + " " + light + " r=0.3"] = renderProbePixels(
           renderer, probeScene(THREE, byName[name], light, config, environment), camera, target, config.pixels);
     }
+  }
+  for (const light of config.lights) {
+    out.extensionRenders[config.fromExtension + " " + light + " r=0.3"] = renderProbePixels(renderer,
+        probeScene(THREE, written.byName[config.fromExtension], light, config, environment), camera, target, config.pixels);
   }
 `,
 });
@@ -64,18 +82,31 @@ try {
   mkdirSync(assets);
   const car = join(assets, "car.glb");
   await carAsset(car, { paintRoughness: 0.3, chromeRoughness: 0.3, foil: true });
+  run(matc, ["gltf", "-q", car, "-o", join(assets, "car_matc.glb")]);
   const result = await runPage({
-    html: page({ probed: kProbed, lights: kLights, pixels: kProbePixels, point: kPointLight, rect: kProbeRectLight }),
+    html: page({ probed: kProbed, lights: kLights, pixels: kProbePixels, point: kPointLight, rect: kProbeRectLight,
+                 fromExtension: "Chrome" }),
     roots: { ...kWebRoots, web: npmDir, assets }, dir });
   check(result.errors.length === 0, `page: ${result.errors.join("\n")}`);
-  const expectedKinds = { "Car Paint": "coated", Chrome: "bare", Tyre: "three", Foil: "three" };
+  const expectedKinds = { "Car Paint": "coated compiled", Chrome: "bare compiled", Tyre: "three", Foil: "three" };
   for (const [name, kind] of Object.entries(expectedKinds)) {
     check(result.matc?.[name] === kind, `${name}: ${result.matc?.[name]}, not ${kind}`);
   }
-  const warnings = result.console ?? [];
+  const withoutCompiler = { "Car Paint": "three", Chrome: "bare extension", Tyre: "three", Foil: "three" };
+  for (const [name, kind] of Object.entries(withoutCompiler)) {
+    check(result.matcWithoutCompiler?.[name] === kind,
+          `${name} without the compiler: ${result.matcWithoutCompiler?.[name]}, not ${kind}`);
+  }
+  const lines = result.console ?? [];
+  const split = lines.indexOf("-- without the compiler");
+  const [warnings, laterWarnings] = [lines.slice(0, split), lines.slice(split + 1).filter((line) => line.startsWith("warn:"))];
   check(warnings.some((line) => /glTF materials\[3\] "Foil" keeps three.js's Fresnel: matc: iridescence/.test(line)),
         `no warning for the iridescent foil: ${warnings.join("\n")}`);
   check(warnings.every((line) => /Foil|iridescence/.test(line)), `unexpected console output: ${warnings.join("\n")}`);
+  check(laterWarnings.length === 2 &&
+        laterWarnings.some((line) => /materials\[0\] "Car Paint" keeps three.js's Fresnel: matc: a coated metal: its shader snippet comes from the compiler/.test(line)) &&
+        laterWarnings.some((line) => /materials\[3\] "Foil" keeps three.js's Fresnel: matc: iridescence/.test(line)),
+        `warnings without the compiler: ${laterWarnings.join("\n")}`);
 
   // The CPU runtime's prediction for the material files matc import writes from the same asset.
   const materials = join(dir, "materials");
@@ -88,10 +119,14 @@ try {
     bare: ["Chrome"], coated: ["Car_Paint"] });
   check(Object.keys(expected).length === renders.length, `${Object.keys(expected).length} renders expected`);
   const worst = compareProbes(result.renders ?? {}, expected);
+  const fromExtension = Object.fromEntries(kLights.map((light) => [`Chrome ${light} r=0.3`, expected[`Chrome ${light} r=0.3`]]));
+  const worstFromExtension = compareProbes(result.extensionRenders ?? {}, fromExtension);
   console.log(`three.js GLTFLoader with matc's plugin: a glTF-Transform car asset's paint (coated) and chrome ` +
               `became matc metals, the tyre and the iridescent foil kept three.js's material (the foil with ` +
               `a warning); ${renders.length} renders x ${kProbePixels.length} probes, largest difference from ` +
-              `the CPU runtime ${worst.toExponential(2)}`);
+              `the CPU runtime ${worst.toExponential(2)}; from matc gltf's asset without the compiler, the chrome ` +
+              `took MATC_materials_fresnel's coefficients (${kLights.length} renders, largest difference ` +
+              `${worstFromExtension.toExponential(2)}) and the coated paint kept three.js's material with a warning`);
 } finally {
   rmSync(dir, { recursive: true, force: true });
 }

@@ -234,6 +234,12 @@ cyclic.self = cyclic;
 throwsWith(() => matc_.parseMaterial(cyclic), /not representable as JSON/, "a cyclic object");
 throwsWith(() => matc_.parseMaterial("{\"name\": \"a\0b\"}"), /error/, "a NUL");
 throwsWith(() => matc_.parseMaterial("\uD800"), /error/, "a lone surrogate");
+throwsWith(() => matc_.compileGltf(42), /bytes: a string/, "a number as a glTF asset");
+throwsWith(() => matc_.compileGltf("{}", "a.json"), /path: 'a.json' names no glTF asset/, "compileGltf of a .json");
+throwsWith(() => matc_.compileGltf("{\"asset\": {\"version\": \"2.0\"}, \"materials\": [{\"name\": \"a\", \"name\": \"b\"}]}", "a.gltf"),
+           /materials\[0\]\.name: given twice/, "compileGltf of a key given twice");
+throwsWith(() => matc_.compileGltf("glTF", "a.glb", { basis: "f82", gamutMapping: 1 }), /options.gamutMapping: a string/,
+           "compileGltf's options");
 check(gold.fresnel(1).length === 3, "usable after the refusals");
 const coated = matc_.compile(matc_.parseMaterial({ name: "c", spectral: { preset: "Cu" }, coat: { ior: 1.5 } }));
 const lobes = coated.coatedFresnel([0.25, 1]);
