@@ -58,14 +58,10 @@ GltfAsset compile_gltf(std::string_view bytes, std::string_view path,
 GltfAsset compile_gltf_file(std::string_view path, const CompileOptions& options) {
   require_gltf_path(path);
   const std::string file(path);
-  const LoadedFile loaded = load_file(file, kMaxGltfFileBytes);
-  if (!loaded.bytes) {
-    Diagnostics diagnostics;
-    diagnostics.error({file, 0, 0}, "", fmt::format("cannot read: {}", loaded.error),
-                      "a glTF asset of at most 256 MiB");
-    throw_if_errors(diagnostics);
-  }
-  return compile_imported(*loaded.bytes, file, options);
+  Diagnostics diagnostics;
+  const std::optional<std::string> bytes = read_document_bytes(file, diagnostics);
+  throw_if_errors(diagnostics);
+  return compile_imported(*bytes, file, options);
 }
 
 }  // namespace matc::api

@@ -32,17 +32,23 @@ DocumentImport import_document(std::string_view bytes, const std::string& path,
   return import_materialx(bytes, path);
 }
 
-DocumentImport read_document_file(const std::string& path, const FileLoader& loader) {
+std::optional<std::string> read_document_bytes(const std::string& path, Diagnostics& diagnostics,
+                                               const FileLoader& loader) {
   const bool gltf = is_gltf_path(path);
-  const LoadedFile loaded = loader(path, gltf ? kMaxGltfFileBytes : kMaxMaterialXFileBytes);
+  LoadedFile loaded = loader(path, gltf ? kMaxGltfFileBytes : kMaxMaterialXFileBytes);
   if (!loaded.bytes) {
-    DocumentImport result;
-    result.diagnostics.error(
+    diagnostics.error(
         {path, 0, 0}, "", fmt::format("cannot read: {}", loaded.error),
         gltf ? "a glTF asset of at most 256 MiB" : "a MaterialX document of at most 16 MiB");
-    return result;
   }
-  return import_document(*loaded.bytes, path, loader);
+  return std::move(loaded.bytes);
+}
+
+DocumentImport read_document_file(const std::string& path, const FileLoader& loader) {
+  DocumentImport result;
+  const std::optional<std::string> bytes = read_document_bytes(path, result.diagnostics, loader);
+  if (!bytes) return result;
+  return import_document(*bytes, path, loader);
 }
 
 void add_imported_material(DocumentImport& result, const nlohmann::ordered_json& material_json,

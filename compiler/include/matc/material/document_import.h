@@ -5,6 +5,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -40,6 +41,11 @@ bool is_document_path(std::string_view path);
 // a glTF's external buffers resolve against its folder through `loader`).
 DocumentImport import_document(std::string_view bytes, const std::string& path,
                                const FileLoader& loader = load_file);
+
+// The bytes of the document at `path` (through `loader`, at most its format's size), or nullopt
+// with a "cannot read" error in `diagnostics`.
+std::optional<std::string> read_document_bytes(const std::string& path, Diagnostics& diagnostics,
+                                               const FileLoader& loader = load_file);
 
 // Reads the document at `path` (through `loader`, at most its format's size) and imports it.
 DocumentImport read_document_file(const std::string& path, const FileLoader& loader = load_file);
