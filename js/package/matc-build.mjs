@@ -370,6 +370,68 @@ export function gltfExtensionMaterial(build, extension) {
   return { name: extension.name, basis: build.basis, coefficients: rows, coat: null };
 }
 
+// The glTF material `index` of the asset `json` alone, as a glTF asset the importer reads (a
+// material needs no other part of the asset to be compiled). Loader bookkeeping (keys starting
+// with "_", a loader's `index`) is left out.
+function gltfMaterialAsset(json, index) {
+  const { index: _, ...material } = json.materials[index];
+  return JSON.stringify({ asset: { version: "2.0" }, materials: [material], extensionsUsed: json.extensionsUsed ?? [] },
+                        (key, value) => (key.startsWith("_") ? undefined : value));
+}
+
+const isGltfMetal = (material) => (material.pbrMetallicRoughness?.metallicFactor ?? 1) > 0;
+
+// What the engines' glTF loaders (three/matc-gltf.mjs, babylon/matc-gltf.mjs) make of an asset's
+// materials: `metalOf(index)` resolves to { metal (as build.loadMaterial gives it), from:
+// "extension" | "compiled" }, or null for a material that stays the engine's. A metal's
+// MATC_materials_fresnel is used when it fits the build; otherwise `matc` (createMatc(), when
+// given) compiles the glTF material with `compile`'s options. A metal matc cannot take gets
+// `warn(index, why)`; a non-metal nothing. Each index is resolved once.
+export function gltfMetals({ matc = null, build, compile = {}, json, warn }) {
+  const found = new Map();
+  const compileInPage = async (index) => {
+    try {
+      const [material] = matc.parseMaterials(gltfMaterialAsset(json, index), "asset.gltf");
+      return material ? { metal: await build.loadMaterial(matc.compile(material, compile)), from: "compiled" } : null;
+    } catch (error) {
+      // Not a metal: the engine's material stays, silently. Anything else (a value matc refuses,
+      // options that do not fit the build) is said.
+      if (!/holds no metal/.test(error.message)) warn(index, error.message);
+      return null;
+    }
+  };
+  const resolve = async (index) => {
+    const material = json.materials[index];
+    const extension = material.extensions?.[kGltfFresnelExtension];
+    let refusal = null;
+    if (extension && isGltfMetal(material)) {
+      try {
+        return { metal: gltfExtensionMaterial(build, extension), from: "extension" };
+      } catch (error) {
+        refusal = error.message;
+      }
+    }
+    if (matc) return compileInPage(index);
+    if (isGltfMetal(material)) {
+      warn(index, refusal ?? `no ${kGltfFresnelExtension} (matc gltf writes it) and no compiler in the page (matc)`);
+    }
+    return null;
+  };
+  return {
+    metalOf(index) {
+      if (!found.has(index)) found.set(index, resolve(index));
+      return found.get(index);
+    },
+  };
+}
+
+// Checks a glTF loader's options (matc optional, build required).
+export function checkGltfLoaderOptions(matc, build, what) {
+  if ((matc !== null && typeof matc?.parseMaterials !== "function") || typeof build?.loadMaterial !== "function") {
+    throw new MatcWebError(`${what} takes { build: await loadMatcBuild(...), matc?: await createMatc() }`);
+  }
+}
+
 // A compiled material's coefficient rows (R, G, B: c_0..c_3), or an error naming `field` of `file`.
 function checkedRows(rows, file, field) {
   if (!Array.isArray(rows) || rows.length !== 3 || rows.some((row) => row.length !== 4)) {

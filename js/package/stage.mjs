@@ -39,7 +39,7 @@ for (const file of ["matc.mjs", "matc.wasm"]) fs.copyFileSync(path.join(wasmDir,
 // The engine integrations (one source: the tests run these files).
 for (const file of ["matc-build.mjs", "tables.mjs"]) fs.copyFileSync(path.join(here, file), path.join(outDir, file));
 for (const [folder, files] of [["three", ["matc-three.mjs", "matc-three-webgpu.mjs", "matc-gltf.mjs", "textures.mjs", "README.md"]],
-                               ["babylon", ["matc-babylon.mjs", "README.md"]],
+                               ["babylon", ["matc-babylon.mjs", "matc-gltf.mjs", "README.md"]],
                                ["lookdev", ["index.html", "lookdev.css", "lookdev.mjs", "lookdev-plot.mjs",
                                             "lookdev-state.mjs", "lookdev-view.mjs", "README.md"]]]) {
   fs.mkdirSync(path.join(outDir, folder));

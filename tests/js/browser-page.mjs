@@ -11,18 +11,19 @@ import { fileURLToPath } from "node:url";
 
 const here = dirname(fileURLToPath(import.meta.url));
 // The engines from npm (package-lock.json pins them): three.js's build and addons, Babylon.js's
-// ES modules, and ktx-parse for the integrations' shared loader.
+// ES modules and glTF loader, and ktx-parse for the integrations' shared loader.
 export const kWebRoots = {
   three: join(here, "node_modules", "three", "build"),
   "three-addons": join(here, "node_modules", "three", "examples", "jsm"),
   babylon: join(here, "node_modules", "@babylonjs", "core"),
+  "babylon-loaders": join(here, "node_modules", "@babylonjs", "loaders"),
   "ktx-parse": join(here, "node_modules", "ktx-parse", "dist"),
   checks: here,  // the in-page helpers of these checks (page-bad-inputs.mjs)
 };
 export const kWebImportMap = JSON.stringify({
   imports: { three: "/three/three.module.js", "three/webgpu": "/three/three.webgpu.js",
              "three/tsl": "/three/three.tsl.js", "three/addons/": "/three-addons/",
-             "@babylonjs/core/": "/babylon/", "ktx-parse": "/ktx-parse/index.mjs" } });
+             "@babylonjs/core/": "/babylon/", "@babylonjs/loaders/": "/babylon-loaders/", "ktx-parse": "/ktx-parse/index.mjs" } });
 export const threeVersion = () =>
   JSON.parse(readFileSync(join(here, "node_modules", "three", "package.json"), "utf8")).version;
 

@@ -28,7 +28,8 @@ const resolved = spawnSync(process.execPath, ["--input-type=module", "-e",
   "console.log(typeof m.createMatc, typeof b.compiledMatcBuildFiles, m.version);"], { cwd: work, encoding: "utf8" });
 check(resolved.stdout.trim() === `function function ${JSON.parse(fs.readFileSync(path.join(work, "node_modules", "matc", "package.json"))).version}`,
       `import "matc" and "matc/build" from the project: ${resolved.stdout}${resolved.stderr}`);
-for (const file of ["three/matc-three.mjs", "three/matc-three-webgpu.mjs", "babylon/matc-babylon.mjs", "tables/matc_lut.bin"]) {
+for (const file of ["three/matc-three.mjs", "three/matc-three-webgpu.mjs", "three/matc-gltf.mjs", "babylon/matc-babylon.mjs",
+                    "babylon/matc-gltf.mjs", "tables/matc_lut.bin"]) {
   check(fs.existsSync(path.join(work, "node_modules", "matc", file)), `the package lacks ${file}`);
 }
 check(fs.existsSync(path.join(work, "node_modules", "matc", "tables", "matc_lut.ktx2")), "the package has its LUT");

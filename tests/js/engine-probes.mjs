@@ -28,6 +28,19 @@ export const kThreeJsProbeTerms = {
   alphaOf: (r) => Math.max(r, 0.045) ** 2,
   rect: { light: kProbeRectLight, corners: rectLightGeometry(kProbeRectLight).corners },
 };
+// Babylon.js's: its GGX alpha (roughness squared plus its minimum variance), its coat lobe's
+// visibility (Kelemen's, computeClearCoatLighting), and its RectAreaLight (a centre, its width
+// along world x and height along world y, lighting the side towards -z, Babylon's winding), whose
+// specular its energy conservation scales too.
+const babylonRectCorners = ({ position: [x, y, z], width, height }) => {
+  const w = width / 2, h = height / 2;
+  return [[x + w, y - h, z], [x - w, y - h, z], [x - w, y + h, z], [x + w, y + h, z]];
+};
+export const kBabylonProbeTerms = {
+  alphaOf: (r) => r * r + 0.0005,
+  coatVisibility: "kelemen",
+  rect: { light: kProbeRectLight, corners: babylonRectCorners(kProbeRectLight), compensated: true },
+};
 export const kTextured = { reflectivity: [0.9, 0.6, 0.3], edgeTint: [0.8, 0.5, 0.2] };
 export const kBaked = { reflectivity: [0.95, 0.64, 0.54], edgeTint: [1.0, 0.75, 0.4] };
 
