@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
       write_panels(settings.output / (name + ".png"),
                    {reference.rgb, schlick.rgb, ours.rgb, exact.rgb, quality.rgb}, settings.size,
                    display);
-      write_difference_panels(settings.output, name, schlick, ours, reference, exact,
+      write_difference_panels(settings.output, name, {&schlick, &ours}, reference, exact,
                               settings.size);
       const std::array<ErrorRow, 5> rows = {
           ErrorRow{"Schlick's Fresnel", &schlick}, ErrorRow{"ours", &ours},

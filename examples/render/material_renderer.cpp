@@ -6,6 +6,7 @@
 #include <fmt/core.h>
 
 #include "matc/emit/fullscreen_shaders.h"
+#include "matc/material/material_input.h"
 #include "matc/material/parse.h"
 #include "matc/optics/coat.h"
 #include "matc/runtime/ltc.h"
@@ -74,6 +75,18 @@ std::optional<CompiledMaterial> MaterialRenderer::compile(const std::string& fil
     fmt::print(stderr, "{}\n", format_diagnostic(diagnostic));
   if (!parsed.material) return std::nullopt;
   return compile_material(*parsed.material, build_.basis());
+}
+
+std::optional<std::vector<CompiledMaterial>> MaterialRenderer::compile_all(
+    const std::string& file) const {
+  const MaterialInput input = read_material_input(file);
+  for (const Diagnostic& diagnostic : input.diagnostics.items())
+    fmt::print(stderr, "{}\n", format_diagnostic(diagnostic));
+  if (input.diagnostics.has_errors()) return std::nullopt;
+  std::vector<CompiledMaterial> compiled;
+  for (const Material& material : input.materials)
+    compiled.push_back(compile_material(material, build_.basis()));
+  return compiled;
 }
 
 bool MaterialRenderer::draws(const std::string& file, const CompiledMaterial& compiled,

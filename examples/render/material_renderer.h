@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "matc/compile/compile.h"
 #include "matc/emit/build.h"
@@ -41,6 +42,9 @@ class MaterialRenderer {
   // The material file compiled against this renderer's basis; its diagnostics on standard error,
   // nothing for an invalid file.
   std::optional<CompiledMaterial> compile(const std::string& file) const;
+  // Every material of an input (a material file, a MaterialX document, a glTF asset) compiled the
+  // same way; its diagnostics on standard error, nothing for an invalid input.
+  std::optional<std::vector<CompiledMaterial>> compile_all(const std::string& file) const;
 
   // Whether a render of bare metals (matc_render, matc_area_light_render; `coated` false) or of
   // coated ones (matc_coated_render) draws `compiled`; if not, false with an error on standard

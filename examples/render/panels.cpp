@@ -164,13 +164,16 @@ void write_panels(const std::filesystem::path& path,
 }
 
 void write_difference_panels(const std::filesystem::path& directory, const std::string& stem,
-                             const Panel& schlick, const Panel& ours, const Panel& reference,
+                             std::initializer_list<const Panel*> compared, const Panel& reference,
                              const Panel& exact, std::uint32_t size) {
-  write_panels(directory / (stem + "_difference.png"),
-               {difference(schlick, reference), difference(ours, reference)}, size,
+  std::vector<std::vector<std::array<double, 3>>> against_reference, against_exact;
+  for (const Panel* panel : compared) {
+    against_reference.push_back(difference(*panel, reference));
+    against_exact.push_back(difference(*panel, exact));
+  }
+  write_panels(directory / (stem + "_difference.png"), against_reference, size, display_difference);
+  write_panels(directory / (stem + "_fresnel_difference.png"), against_exact, size,
                display_difference);
-  write_panels(directory / (stem + "_fresnel_difference.png"),
-               {difference(schlick, exact), difference(ours, exact)}, size, display_difference);
 }
 
 bool validation_clean(const vulkan::Context& context) {

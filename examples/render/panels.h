@@ -112,11 +112,11 @@ void write_panels(const std::filesystem::path& path,
                   const std::vector<std::vector<std::array<double, 3>>>& panels, std::uint32_t size,
                   std::uint8_t (*to_display)(double));
 
-// The two error images every render writes, differences times 4: <stem>_difference.png (Schlick's
-// and ours against the reference) and <stem>_fresnel_difference.png (both against the same
-// estimate with the exact Fresnel: the Fresnel's share alone).
+// The two error images every render writes, differences times 4: <stem>_difference.png (each of
+// `compared`, Schlick's then ours, against the reference) and <stem>_fresnel_difference.png (each
+// against the same estimate with the exact Fresnel: the Fresnel's share alone).
 void write_difference_panels(const std::filesystem::path& directory, const std::string& stem,
-                             const Panel& schlick, const Panel& ours, const Panel& reference,
+                             std::initializer_list<const Panel*> compared, const Panel& reference,
                              const Panel& exact, std::uint32_t size);
 
 }  // namespace matc::render

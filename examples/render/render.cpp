@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
       const std::string& name = compiled.material.name;
       write_panels(settings.output / (name + ".png"),
                    {reference.rgb, schlick.rgb, ours.rgb, closed_form.rgb}, settings.size, display);
-      write_difference_panels(settings.output, name, schlick, ours, reference, exact,
+      write_difference_panels(settings.output, name, {&schlick, &ours}, reference, exact,
                               settings.size);
       const std::array<ErrorRow, 4> rows = {ErrorRow{"Schlick's Fresnel", &schlick},
                                             ErrorRow{"ours", &ours},

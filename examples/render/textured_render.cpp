@@ -148,7 +148,7 @@ int main(int argc, char** argv) {
 
     fs::create_directories(output);
     write_panels(output / "textured.png", {reference.rgb, schlick.rgb, ours.rgb}, size, display);
-    write_difference_panels(output, "textured", schlick, ours, reference, exact, size);
+    write_difference_panels(output, "textured", {&schlick, &ours}, reference, exact, size);
 
     fmt::print(
         "Rendered on {}, {}x{} pixels per panel, {} samples per pixel, roughness {}. Mean and "

@@ -20,10 +20,11 @@ trap 'rm -f "$table"; rm -rf "$paper"' EXIT
   >"$table"
 "$root/tests/scripts/check_docs_block.sh" --update "$root/docs/rendering.md" comparison-renders-paper \
   cat "$table"
-# A coated metal: copper under a warm lacquer, both lobes, beside the engines' F0-in-coat Schlick.
+# Coated metals: copper under a warm lacquer and the glTF car paint, both lobes, beside the
+# engines' F0-in-coat Schlick and three.js's clear coat.
 cmake --build "$build" --target matc_coated_render >/dev/null
 "$build/examples/render/matc_coated_render" --size 256 --samples 4096 -o "$root/docs/images" \
-  "$root/examples/materials/copper_lacquered.json" >"$table"
+  "$root/examples/materials/copper_lacquered.json" "$root/examples/gltf/car_paint.gltf" >"$table"
 "$root/tests/scripts/check_docs_block.sh" --update "$root/docs/rendering.md" coated-render cat "$table"
 # The textured render: per-pixel reflectivity and edge tint, the coefficient-table path.
 cmake --build "$build" --target matc_textured_render >/dev/null

@@ -14,6 +14,12 @@
 //   8: the engines' shortcut, the base's F0 converted into the coat with Schlick's curve, under
 //      the same layering and coat lobe
 //   9: the coat's tint at NdotV, matc_coat_tint_{{name}} (for the host's layering)
+//   10, 11: three.js's clear coat (MeshPhysicalMaterial, as its glTF loader builds a
+//      KHR_materials_clearcoat metal): the base lobe the metal's Schlick curve in air (F0, not
+//      seen from the coat), attenuated once by the coat's Schlick Fresnel at NdotV (F0 0.04, its
+//      clearcoatF0), no tint; the coat lobe that Fresnel preintegrated at the coat's roughness;
+//      both times the weight as three.js applies it (with the exact split-sum table of Schlick's
+//      curve, not three.js's analytic fit of it)
 // Each pass writes (sum, weight) for its share of the samples; the host adds passes up, divides
 // and multiplies each lobe's radiance by its Fresnel factor. Background pixels write a negative
 // weight.
@@ -151,6 +157,19 @@ void main() {
       sum = vec3(matc_coat_fresnel_preintegrated_{{name}}(coat_bbar));
     } else if (panel.method == 9) {
       sum = matc_coat_tint_{{name}}(n.z);
+    } else if (panel.method == 10 || panel.method == 11) {
+      float weight = matc_coat_weight_{{name}};
+      vec4 coat_lobes = textureLod(sampler2D(lobe_lut, matc_lut_sampler),
+                                   matc_lut_texcoord(n.z, coat_roughness), 0.0);
+      if (panel.method == 10) {
+        vec4 lobes = textureLod(sampler2D(lobe_lut, matc_lut_sampler),
+                                matc_lut_texcoord(n.z, panel.roughness), 0.0);
+        float m = 1.0 - n.z;
+        float coat_at_ndotv = 0.04 + 0.96 * (m * m) * (m * m) * m;
+        sum = (F0 * lobes.x + (vec3(1.0) - F0) * lobes.y) * (1.0 - weight * coat_at_ndotv);
+      } else {
+        sum = vec3(weight * (0.04 * coat_lobes.x + 0.96 * coat_lobes.y));
+      }
     } else {
       vec4 lobes = textureLod(sampler2D(lobe_lut, matc_lut_sampler),
                               matc_lut_texcoord(n.z, panel.roughness), 0.0);
