@@ -1,6 +1,7 @@
-// In-page helpers (served under /checks/) for the Babylon.js probe pages (check-babylon-engine.mjs,
-// check-babylon-gltf.mjs): the probe checks' scene (a 90 degree view of the plane z = 0 from
-// z = 1, right-handed, linear output) and one probe render of a material on that plane under a
+// In-page helpers (served under /checks/) for the Babylon.js pages (check-babylon-engine.mjs,
+// check-babylon-gltf.mjs, check-babylon-reference.mjs): a scene as the checks draw it
+// (right-handed, linear output, a camera looking at the origin; by default the probe checks' 90
+// degree view of the plane z = 0 from z = 1) and one probe render of a material on that plane under a
 // white environment, a point light or a rect light (engine-probes.mjs has the CPU side).
 import { Engine } from "@babylonjs/core/Engines/engine.js";
 import { Constants } from "@babylonjs/core/Engines/constants.js";
@@ -15,8 +16,9 @@ import { RectAreaLight } from "@babylonjs/core/Lights/rectAreaLight.js";
 import { RawCubeTexture } from "@babylonjs/core/Materials/Textures/rawCubeTexture.js";
 import { RenderTargetTexture } from "@babylonjs/core/Materials/Textures/renderTargetTexture.js";
 
-// The engine, scene and camera of a probe page whose targets are `size` texels square.
-export function babylonProbeScene(size) {
+// The engine, scene and camera of a page whose targets are `size` texels square; `camera`: its
+// position, vertical field of view in degrees and clip distances.
+export function babylonProbeScene(size, camera = { position: [0, 0, 1], fov: 90, near: 0.1, far: 10 }) {
   const canvas = document.createElement("canvas");
   canvas.width = canvas.height = size;
   const engine = new Engine(canvas, false, { preserveDrawingBuffer: true });
@@ -24,12 +26,12 @@ export function babylonProbeScene(size) {
   scene.useRightHandedSystem = true;
   scene.clearColor = new Color4(0, 0, 0, 0);
   scene.imageProcessingConfiguration.applyByPostProcess = true;  // linear output
-  const camera = new FreeCamera("camera", new Vector3(0, 0, 1), scene);
-  camera.setTarget(Vector3.Zero());
-  camera.fov = Math.PI / 2;
-  camera.minZ = 0.1;
-  camera.maxZ = 10;
-  return { engine, scene, camera };
+  const view = new FreeCamera("camera", new Vector3(...camera.position), scene);
+  view.setTarget(Vector3.Zero());
+  view.fov = (camera.fov * Math.PI) / 180;
+  view.minZ = camera.near;
+  view.maxZ = camera.far;
+  return { engine, scene, camera: view };
 }
 
 // `material` on the probe plane under `light` ("environment", "point": config.point, "rect":

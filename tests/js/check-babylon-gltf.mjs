@@ -9,13 +9,13 @@
 // materials, on the probe plane under the engine checks' lights, equal the CPU runtime's
 // prediction for the material files `matc import` writes from the same asset, to 1e-4.
 //   node check-babylon-gltf.mjs MATC NPM_DIR
-import { mkdirSync, mkdtempSync, rmSync } from "node:fs";
+import { mkdtempSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { kWebRoots, modulePage, runPage } from "./browser-page.mjs";
 import { compareProbes, expectedProbes, kBabylonProbeTerms, kPointLight, kProbePixels, kProbeRectLight,
          kProbeSize } from "./engine-probes.mjs";
-import { carAsset } from "./gltf-assets.mjs";
+import { carAssetsForLoaders } from "./gltf-assets.mjs";
 import { check, finish } from "./report.mjs";
 import { run } from "./shader-cases.mjs";
 
@@ -75,11 +75,7 @@ import { babylonProbeScene, renderBabylonProbe } from "/checks/babylon-scene-pag
 
 const dir = mkdtempSync(join(tmpdir(), "matc-babylon-gltf-"));
 try {
-  const assets = join(dir, "assets");
-  mkdirSync(assets);
-  const car = join(assets, "car.glb");
-  await carAsset(car, { paintRoughness: 0.3, chromeRoughness: 0.3, foil: true });
-  run(matc, ["gltf", "-q", car, "-o", join(assets, "car_matc.glb")]);
+  const { assets, car } = await carAssetsForLoaders(dir, matc);
   const result = await runPage({
     html: page({ probed: kProbed, lights: kLights, pixels: kProbePixels, point: kPointLight, rect: kProbeRectLight }),
     roots: { ...kWebRoots, web: npmDir, assets }, dir });

@@ -37,10 +37,7 @@ void main() {
 }`;
 
 const kPage = (config) => modulePage(config, {
-  head: `import { Engine } from "@babylonjs/core/Engines/engine.js";
-import { Constants } from "@babylonjs/core/Engines/constants.js";
-import { Scene } from "@babylonjs/core/scene.js";
-import { FreeCamera } from "@babylonjs/core/Cameras/freeCamera.js";
+  head: `import { Constants } from "@babylonjs/core/Engines/constants.js";
 import { Matrix, Quaternion, Vector3 } from "@babylonjs/core/Maths/math.vector.js";
 import { Color3, Color4 } from "@babylonjs/core/Maths/math.color.js";
 import { CreateSphere } from "@babylonjs/core/Meshes/Builders/sphereBuilder.js";
@@ -58,6 +55,7 @@ import { CubeMapToSphericalPolynomialTools } from "@babylonjs/core/Misc/HighDyna
 import { Tools } from "@babylonjs/core/Misc/tools.js";
 import { read as readKtx2 } from "ktx-parse";
 import { loadMatcBuild, useMatcFresnel } from "/web/babylon/matc-babylon.mjs";
+import { babylonProbeScene } from "/checks/babylon-scene-page.mjs";
 ${environmentRadiance.toString()}
 ${environmentCubeFaces.toString()}
 `,
@@ -66,18 +64,7 @@ ${environmentCubeFaces.toString()}
   const size = sceneConfig.size;
   out.images = {};
   Tools.AssetBaseUrl = location.origin + "/babylon-assets";
-  const canvas = document.createElement("canvas");
-  canvas.width = canvas.height = size;
-  const engine = new Engine(canvas, false, { preserveDrawingBuffer: true });
-  const scene = new Scene(engine);
-  scene.useRightHandedSystem = true;
-  scene.clearColor = new Color4(0, 0, 0, 0);
-  scene.imageProcessingConfiguration.applyByPostProcess = true;  // linear output
-  const camera = new FreeCamera("camera", new Vector3(...sceneConfig.camera.position), scene);
-  camera.setTarget(Vector3.Zero());
-  camera.fov = sceneConfig.camera.fov * Math.PI / 180;
-  camera.minZ = sceneConfig.camera.near;
-  camera.maxZ = sceneConfig.camera.far;
+  const { engine, scene, camera } = babylonProbeScene(size, sceneConfig.camera);
   const build = await loadMatcBuild("/out/", scene);
   // The environment: a float cube map with mips, prefiltered by Babylon, and its irradiance.
   const faceSize = 128;

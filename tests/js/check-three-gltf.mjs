@@ -10,13 +10,13 @@
 // coefficients from the extension (and renders as the compiled one does), the coated paint keeps
 // three.js's material with a warning that it needs the compiler.
 //   node check-three-gltf.mjs MATC NPM_DIR
-import { mkdirSync, mkdtempSync, rmSync } from "node:fs";
+import { mkdtempSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { kWebRoots, modulePage, runPage } from "./browser-page.mjs";
 import { compareProbes, expectedProbes, kPointLight, kProbePixels, kProbeRectLight, kProbeSize,
          kThreeJsProbeTerms } from "./engine-probes.mjs";
-import { carAsset } from "./gltf-assets.mjs";
+import { carAssetsForLoaders } from "./gltf-assets.mjs";
 import { check, finish } from "./report.mjs";
 import { run } from "./shader-cases.mjs";
 
@@ -78,11 +78,7 @@ import { probeScene, probeSetup, renderProbePixels } from "/checks/three-scene-p
 
 const dir = mkdtempSync(join(tmpdir(), "matc-three-gltf-"));
 try {
-  const assets = join(dir, "assets");
-  mkdirSync(assets);
-  const car = join(assets, "car.glb");
-  await carAsset(car, { paintRoughness: 0.3, chromeRoughness: 0.3, foil: true });
-  run(matc, ["gltf", "-q", car, "-o", join(assets, "car_matc.glb")]);
+  const { assets, car } = await carAssetsForLoaders(dir, matc);
   const result = await runPage({
     html: page({ probed: kProbed, lights: kLights, pixels: kProbePixels, point: kPointLight, rect: kProbeRectLight,
                  fromExtension: "Chrome" }),
