@@ -243,6 +243,7 @@ export async function loadMatcBuildFiles(url, { language = "glsl" } = {}) {
   }
   return {
     url: base.href, manifest, language, library, basis: manifest.basis,
+    materialsByName: true,  // loadMaterial(name): the build's <name>.json and snippet
     lut: await loadTable(at(manifest.lut.file), manifest.lut, 4),
     ltc: emitted.has("ltc") ? await loadTable(at(manifest.ltc_table.file), manifest.ltc_table, 4) : null,
     coefficientTable: emitted.has("coefficient-table")
@@ -347,10 +348,13 @@ async function loadCoat(material, snippetUrl, file) {
 export const kGltfFresnelExtension = "MATC_materials_fresnel";
 
 // A glTF material's MATC_materials_fresnel (`extension`) as build.loadMaterial gives a material:
-// { name, basis, coefficients, coat: null }. Throws a MatcWebError saying why it cannot be used:
+// { name, basis, coefficients, coat }. A bare metal's coefficients are the extension's own. A
+// coated metal's two-lobe shader snippet is the compiler's, so it comes from a build directory
+// that compiled the same asset (`matc -o DIR asset.glb`: its <name>.json and snippet), checked to
+// hold the extension's coefficients. Throws a MatcWebError saying why it cannot be used:
 // coefficients of another basis or matc version than the build's tables, malformed rows, or a
-// coated metal (its two-lobe shader snippet comes from the compiler).
-export function gltfExtensionMaterial(build, extension) {
+// coated metal no build directory holds.
+export async function gltfExtensionMaterial(build, extension) {
   const version = build.manifest?.matc_version;
   if (extension?.basis !== build.basis || extension?.matcVersion !== version) {
     throw new MatcWebError(`its ${kGltfFresnelExtension} holds coefficients of basis ${extension?.basis} from ` +
@@ -363,11 +367,23 @@ export function gltfExtensionMaterial(build, extension) {
   if (rows.some((row) => row.some((value) => typeof value !== "number" || !Number.isFinite(value)))) {
     throw new MatcWebError(`its ${kGltfFresnelExtension}.coefficients must be finite numbers`);
   }
-  if (extension.coat) {
-    throw new MatcWebError("a coated metal: its shader snippet comes from the compiler (matcGltfPlugin's " +
-                           "matc: createMatc())");
+  if (!extension.coat) return { name: extension.name, basis: build.basis, coefficients: rows, coat: null };
+  const advice = "give the loader the compiler (matc: createMatc()) or a build directory that compiled this " +
+                 "asset (matc -o DIR asset.glb)";
+  if (!build.materialsByName) throw new MatcWebError(`a coated metal: its shader snippet is the compiler's; ${advice}`);
+  let material;
+  try {
+    material = await build.loadMaterial(extension.name);
+  } catch (error) {
+    throw new MatcWebError(`a coated metal whose snippet the build directory does not hold (${error.message}); ${advice}`);
   }
-  return { name: extension.name, basis: build.basis, coefficients: rows, coat: null };
+  const same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
+  if (!material.coat || !same(material.coefficients, rows) ||
+      !same(material.coat.underCoatCoefficients, extension.coat.underCoatCoefficients)) {
+    throw new MatcWebError(`the build directory's ${extension.name} is not this asset's metal (its coefficients ` +
+                           "differ): compile the same asset with the same options into it");
+  }
+  return material;
 }
 
 // The glTF material `index` of the asset `json` alone, as a glTF asset the importer reads (a
@@ -406,7 +422,7 @@ export function gltfMetals({ matc = null, build, compile = {}, json, warn }) {
     let refusal = null;
     if (extension && isGltfMetal(material)) {
       try {
-        return { metal: gltfExtensionMaterial(build, extension), from: "extension" };
+        return { metal: await gltfExtensionMaterial(build, extension), from: "extension" };
       } catch (error) {
         refusal = error.message;
       }

@@ -1,11 +1,10 @@
 // glTF assets as artists make them, built with glTF-Transform (npm @gltf-transform/core and
 // extensions) for the glTF checks (check-gltf-assets.mjs, check-three-gltf.mjs).
-import { mkdirSync, writeFileSync } from "node:fs";
+import { writeFileSync } from "node:fs";
 import { join } from "node:path";
 import { Document, NodeIO } from "@gltf-transform/core";
 import { KHRMaterialsClearcoat, KHRMaterialsIridescence, KHRMaterialsSpecular } from "@gltf-transform/extensions";
 import { pngBytes } from "./png.mjs";
-import { run } from "./shader-cases.mjs";
 
 // A UV sphere's positions, normals, texture coordinates and indices.
 function sphere(document, buffer, segments = 16, rings = 8) {
@@ -89,13 +88,3 @@ export async function trimAsset(dir) {
 }
 
 
-// The engines' glTF checks' assets in `dir`/assets: car.glb (roughness 0.3, the foil) and
-// car_matc.glb, what `matc gltf` writes from it. Returns { assets (the folder), car }.
-export async function carAssetsForLoaders(dir, matc) {
-  const assets = join(dir, "assets");
-  mkdirSync(assets);
-  const car = join(assets, "car.glb");
-  await carAsset(car, { paintRoughness: 0.3, chromeRoughness: 0.3, foil: true });
-  run(matc, ["gltf", "-q", car, "-o", join(assets, "car_matc.glb")]);
-  return { assets, car };
-}

@@ -3,7 +3,8 @@
 // through useMatcFresnel (./matc-babylon.mjs) once its properties are loaded, with the
 // coefficients from the material's MATC_materials_fresnel (written by `matc gltf`) when that fits
 // the build's tables, or compiled in the page by the package's WebAssembly compiler (`matc`, when
-// given), as for a coated metal (gltfMetals in ../matc-build.mjs, shared with three.js's plugin).
+// given); a coated metal's snippet comes from the compiler or from a build directory that compiled
+// the same asset (gltfMetals in ../matc-build.mjs, shared with three.js's plugin).
 // Non-metals keep Babylon's material; a metal matc cannot follow (an iridescent one), or one with
 // neither the extension nor a compiler, keeps it too, with a console warning that says why.
 //
@@ -11,7 +12,7 @@
 //   import { LoadAssetContainerAsync } from "@babylonjs/core/Loading/sceneLoader.js";
 //   import { loadMatcBuild } from "matc/babylon";
 //   import { registerMatcGltfExtension } from "matc/babylon/gltf";
-//   const build = await loadMatcBuild("build/", scene);        // matc -o build --shared-only
+//   const build = await loadMatcBuild("build/", scene);        // matc -o build car.glb
 //   const matcGltf = registerMatcGltfExtension({ build });     // + matc: await createMatc()
 //   const container = await LoadAssetContainerAsync("car_matc.glb", scene);
 //   matcGltf.materials;                                        // the PBRMaterials made matc metals

@@ -1,0 +1,73 @@
+// What the engines' glTF loader checks share (check-three-gltf.mjs, check-babylon-gltf.mjs): the
+// car asset three ways (compiled in the page; as `matc gltf` wrote it, with no compiler; the same
+// with a build directory that compiled the asset) and the checks of what each load made: which
+// materials became matc metals and from where, the console warnings, and the probes against the
+// CPU runtime's prediction for the material files `matc import` writes from the same asset.
+import { mkdirSync } from "node:fs";
+import { join } from "node:path";
+import { compareProbes, expectedProbes } from "./engine-probes.mjs";
+import { carAsset } from "./gltf-assets.mjs";
+import { check } from "./report.mjs";
+import { run } from "./shader-cases.mjs";
+
+// In `dir`: assets/car.glb (roughness 0.3, the foil), assets/car_matc.glb (`matc gltf`'s) and
+// build/ (`matc -o build car.glb`: the metals' JSON and snippets, the tables). Returns
+// { assets, car, build }: the folders to serve and the asset.
+export async function carAssetsForLoaders(dir, matc) {
+  const assets = join(dir, "assets");
+  mkdirSync(assets);
+  const car = join(assets, "car.glb");
+  await carAsset(car, { paintRoughness: 0.3, chromeRoughness: 0.3, foil: true });
+  run(matc, ["gltf", "-q", car, "-o", join(assets, "car_matc.glb")]);
+  const build = join(dir, "build");
+  run(matc, ["-q", "-o", build, "--emit", "glsl,json,lut,ltc", car]);
+  return { assets, car, build };
+}
+
+// What each load must make: the materials' kinds ("coated compiled", "bare extension", "engine":
+// the engine's own), how many became matc metals, and the warnings (besides the foil's).
+const kLoads = {
+  compiled: { kinds: { "Car Paint": "coated compiled", Chrome: "bare compiled", Tyre: "engine", Foil: "engine" },
+              made: 2, warnings: [] },
+  extension: { kinds: { "Car Paint": "engine", Chrome: "bare extension", Tyre: "engine", Foil: "engine" },
+               made: 1, warnings: [/materials\[0\] "Car Paint" keeps .*: matc: a coated metal: its shader snippet is the compiler's/] },
+  directory: { kinds: { "Car Paint": "coated extension", Chrome: "bare extension", Tyre: "engine", Foil: "engine" },
+               made: 2, warnings: [] },
+};
+
+// Checks a loader page's `result` ({ kinds, made, console: lines with "-- <load>" before each
+// load's, renders: "<load> <matc name> <light> r=0.3" }); `engine` names the engine in its
+// warnings, `terms` its probe terms (engine-probes.mjs). Returns the largest probe difference per
+// load.
+export function loaderChecks({ result, engine, matc, car, dir, probed, lights, terms }) {
+  const foil = new RegExp(`glTF materials\\[3\\] "Foil" keeps ${engine.replace(".", "\\.")}'s Fresnel: matc: iridescence`);
+  const lines = result.console ?? [];
+  for (const [load, expected] of Object.entries(kLoads)) {
+    for (const [name, kind] of Object.entries(expected.kinds)) {
+      check(result.kinds?.[load]?.[name] === kind, `${load}: ${name}: ${result.kinds?.[load]?.[name]}, not ${kind}`);
+    }
+    check(result.made?.[load] === expected.made, `${load}: ${result.made?.[load]} materials made matc metals`);
+    const start = lines.indexOf(`-- ${load}`);
+    const end = lines.findIndex((line, i) => i > start && line.startsWith("-- "));
+    const warnings = lines.slice(start + 1, end < 0 ? lines.length : end).filter((line) => line.startsWith("warn:"));
+    check(start >= 0 && warnings.length === 1 + expected.warnings.length && warnings.some((line) => foil.test(line)) &&
+          expected.warnings.every((pattern) => warnings.some((line) => pattern.test(line))),
+          `${load}: warnings: ${warnings.join("\n")}`);
+  }
+  // The CPU runtime's prediction for the material files matc import writes from the same asset.
+  const materials = join(dir, "materials");
+  run(matc, ["import", "-q", "-o", materials, car]);
+  const out = join(dir, "out");
+  run(matc, ["-q", "-o", out, "--emit", "json", ...["Car_Paint", "Chrome"].map((name) => join(materials, `${name}.json`))]);
+  const renders = ["Car_Paint", "Chrome"].flatMap((name) => lights.map((light) => ({ key: `${name} ${light} r=0.3`, light })));
+  const expected = expectedProbes({ matc, materialsDir: materials, out, ...terms, renders,
+                                    bare: ["Chrome"], coated: ["Car_Paint"] });
+  check(Object.keys(expected).length === renders.length, `${Object.keys(expected).length} renders expected`);
+  const worst = {};
+  for (const [load, names] of Object.entries(probed)) {
+    const keys = Object.values(names).flatMap((name) => lights.map((light) => `${name} ${light} r=0.3`));
+    worst[load] = compareProbes(Object.fromEntries(keys.map((key) => [key, result.renders?.[`${load} ${key}`]])),
+                                Object.fromEntries(keys.map((key) => [key, expected[key]])));
+  }
+  return worst;
+}
