@@ -16,6 +16,7 @@ runtime and the generated shaders compute it, and written as ``matc`` writes the
 docs/python.md describes every function.
 """
 
+import collections as _collections
 import json as _json
 import math as _math
 import os as _os
@@ -64,12 +65,14 @@ __all__ = [
     "CoefficientTable",
     "CompiledMaterial",
     "Diagnostic",
+    "GltfAsset",
     "Material",
     "MaterialError",
     "PreintegratedTable",
     "coefficient_table",
     "compile",
     "compile_batch",
+    "compile_gltf",
     "fresnel_from_coefficients",
     "load",
     "parse",
@@ -269,6 +272,28 @@ def compile_batch(sources, output=None, *, jobs=0, keep_going=False, no_shared=F
         sources, output, jobs=jobs, keep_going=keep_going, no_shared=no_shared,
         shared_only=shared_only, depfile=depfile, extra_dependencies=extra_dependencies,
         progress=progress)
+
+
+GltfAsset = _collections.namedtuple("GltfAsset", ["bytes", "materials"])
+GltfAsset.__doc__ = """What :func:`compile_gltf` returns: ``bytes``, the asset written back (in its own
+container), and ``materials``, its metals as :class:`CompiledMaterial` values in the asset's
+order."""
+
+
+def compile_gltf(asset, **options):
+    """What ``matc gltf`` writes (docs/gltf.md): the glTF asset at ``asset`` (a ``.glb``, or a
+    ``.gltf`` with its buffers beside it) with each metal's compiled coefficients (and coat) in
+    the vendor extension ``MATC_materials_fresnel``, every other byte as it was, as a
+    :class:`GltfAsset`. The bytes are returned, not written: a ``.gltf`` that names files beside
+    it needs them beside it wherever it goes. Options are :class:`Build`'s (``basis``,
+    ``color_space``, ``gamut_mapping``). Raises :class:`MaterialError` for an asset ``matc gltf``
+    refuses.
+    """
+    build = _default_build(**options)
+    path = _native_path(asset, "asset")
+    names = build.options
+    data = _matc._compile_gltf(path, names["basis"], names["color_space"], names["gamut_mapping"])
+    return GltfAsset(data, [build.compile(material) for material in load(path)])
 
 
 def shader_sources(material, languages=("glsl", "hlsl", "wgsl"), **options):

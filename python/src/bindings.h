@@ -11,5 +11,6 @@ void register_compiled_material(pybind11::module_& module);  // compiled_materia
 void register_tables(pybind11::module_& module);             // tables.cpp
 void register_build(pybind11::module_& module);              // build.cpp
 void register_batch(pybind11::module_& module);              // batch.cpp
+void register_gltf(pybind11::module_& module);               // gltf.cpp
 
 }  // namespace matc::python

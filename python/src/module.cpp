@@ -13,4 +13,5 @@ PYBIND11_MODULE(_matc, module) {
   matc::python::register_tables(module);
   matc::python::register_build(module);
   matc::python::register_batch(module);
+  matc::python::register_gltf(module);
 }

@@ -42,6 +42,7 @@ def gold():
     lambda p: matc.parse(GOLD, path="x\0.json"),
     lambda p: matc.parse_materialx("<materialx/>", path="x\0y"),
     lambda p: matc.load(os.fsencode(str(p / "gold.json")) + b"\0"),
+    lambda p: matc.compile_gltf(str(p / "car\0.glb")),
 ])
 def test_a_nul_in_a_path_is_refused_and_nothing_is_made(call, tmp_path):
     (tmp_path / "gold.json").write_text('{"name": "gold", "ior": {"n": 0.2, "k": 3}}')
@@ -247,3 +248,15 @@ def test_any_path_loads_or_raises(path, tmp_path_factory):
     except ValueError as error:
         assert ("NUL character" in str(error) and "\0" in path) or (
             "is empty" in str(error) and not path)
+
+
+@settings(max_examples=100, deadline=None, derandomize=True, database=None)
+@given(path=st.one_of(st.text(max_size=40), st.text(max_size=40).map(lambda text: text + ".gltf")))
+def test_any_path_compiles_a_gltf_or_raises(path):
+    try:
+        matc.compile_gltf(path)
+    except matc.MaterialError as error:
+        assert error.errors
+    except ValueError as error:
+        assert ("NUL character" in str(error) and "\0" in path) or (
+            "is empty" in str(error) and not path) or "names no glTF asset" in str(error)

@@ -1,0 +1,52 @@
+"""matc.compile_gltf is `matc gltf` (docs/gltf.md): the same bytes as the CLI writes, the metals
+compiled as matc.compile compiles them, and the CLI's refusals as Python's exceptions."""
+
+import json
+
+import pytest
+
+import matc
+from conftest import BAD_INPUTS, SOURCE_DIR, run_matc
+
+TRIM = SOURCE_DIR / "examples" / "gltf" / "trim.gltf"
+
+
+def test_the_bytes_are_matc_gltfs(tmp_path):
+    for options, arguments in (({}, []), ({"basis": "f82"}, ["--basis", "f82"])):
+        written = tmp_path / "trim_matc.gltf"
+        run_matc("gltf", "-q", TRIM, "-o", written, *arguments)
+        asset = matc.compile_gltf(TRIM, **options)
+        assert isinstance(asset, matc.GltfAsset)
+        assert asset.bytes == written.read_bytes()
+
+
+def test_the_metals_are_compiled_as_compile_compiles_them():
+    asset = matc.compile_gltf(TRIM, basis="f82")
+    assert [m.name for m in asset.materials] == ["Edge_Chrome", "LacqueredCopper"]
+    document = json.loads(asset.bytes)
+    extensions = [m["extensions"]["MATC_materials_fresnel"] for m in document["materials"][:2]]
+    assert "MATC_materials_fresnel" not in document["materials"][2].get("extensions", {})
+    for compiled, extension in zip(asset.materials, extensions):
+        assert extension["name"] == compiled.name and extension["basis"] == "f82"
+        assert extension["coefficients"] == compiled.coefficients.tolist()
+    assert asset.materials[1].coat is not None
+
+
+def test_refusals_are_the_clis(tmp_path):
+    with pytest.raises(matc.MaterialError) as refused:
+        matc.compile_gltf(BAD_INPUTS / "gltf_out_duplicate_key.gltf")
+    [diagnostic] = refused.value.errors
+    assert (diagnostic.line, diagnostic.column, diagnostic.field) == (1, 63, "materials[0].name")
+    assert "given twice" in diagnostic.message
+    with pytest.raises(matc.MaterialError, match="holds no metal"):
+        matc.compile_gltf(BAD_INPUTS / "gltf_no_metal.gltf")
+    with pytest.raises(matc.MaterialError, match="cannot read"):
+        matc.compile_gltf(tmp_path / "missing.glb")
+    with pytest.raises(ValueError, match="names no glTF asset"):
+        matc.compile_gltf(SOURCE_DIR / "examples" / "materials" / "gold.json")
+    with pytest.raises(ValueError, match="basis"):
+        matc.compile_gltf(TRIM, basis="nope")
+    with pytest.raises(ValueError, match="NUL"):
+        matc.compile_gltf("a\0.gltf")
+    with pytest.raises(TypeError, match="asset"):
+        matc.compile_gltf(42)
