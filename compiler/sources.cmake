@@ -27,6 +27,7 @@ set(MATC_CORE_SOURCES
   src/material/located_json.cpp
   src/material/located_json_reader.cpp
   src/material/load_file.cpp
+  src/material/memory_files.cpp
   src/material/material.cpp
   src/material/materialx_file.cpp
   src/material/document_import.cpp

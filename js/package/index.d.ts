@@ -103,7 +103,9 @@ export declare class Matc {
   spectralPresets(): string[];
   /** A material file's JSON, a MaterialX document (path ending in .mtlx) or a glTF asset (.gltf
    *  or .glb, its metals; a .glb as bytes; external buffers cannot be read here), as text or bytes. */
-  parseMaterials(text: string | Uint8Array | ArrayBuffer, path?: string): Material[];
+  /** `files`: the files the input names (a spectral CSV, a .gltf's buffers), by their paths relative to its folder. */
+  parseMaterials(text: string | Uint8Array | ArrayBuffer, path?: string,
+                 options?: { files?: Record<string, string | Uint8Array | ArrayBuffer> }): Material[];
   parseMaterial(input: string | Uint8Array | ArrayBuffer | object, options?: { path?: string }): Material;
   compile(material: Material, options?: CompileOptions): CompiledMaterial;
   /**
@@ -111,7 +113,8 @@ export declare class Matc {
    * written back with each metal's compiled coefficients in MATC_materials_fresnel, every other
    * byte as it was (`matc gltf`, docs/gltf.md).
    */
-  compileGltf(bytes: Uint8Array | ArrayBuffer | string, path?: string, options?: CompileOptions):
+  compileGltf(bytes: Uint8Array | ArrayBuffer | string, path?: string, options?: CompileOptions,
+              input?: { files?: Record<string, string | Uint8Array | ArrayBuffer> }):
     { bytes: Uint8Array; materials: CompiledMaterial[] };
   textOutputs(options?: CompileOptions): TextOutputs;
 }

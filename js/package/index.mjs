@@ -35,6 +35,17 @@ function checkedText(value, argument) {
   return checkedString(value, argument);
 }
 
+// The files an input names: undefined, or a plain object of name -> text or bytes.
+function checkedFiles(files) {
+  if (files === undefined || files === null) return undefined;
+  if (typeof files !== "object" || Array.isArray(files) || files instanceof Uint8Array) {
+    throw new TypeError("files: an object of name -> text or bytes");
+  }
+  const checked = {};
+  for (const [name, value] of Object.entries(files)) checked[name] = checkedText(value, `files["${String(name).slice(0, 64)}"]`);
+  return checked;
+}
+
 function checkedString(value, argument) {
   if (typeof value !== "string") throw new TypeError(`${argument}: a string, not ${typeof value}`);
   return value;
@@ -145,10 +156,13 @@ export class Matc {
   // The spectral presets: the measured metals matc ships ("Au", "Ag", ...).
   spectralPresets() { return this.#module.spectralPresets(); }
 
-  // The materials of a material file's JSON or a MaterialX document (path ending in .mtlx): text
-  // or its bytes.
-  parseMaterials(text, path = "material.json") {
-    const handles = unwrapped(this.#module.parseMaterials(checkedText(text, "text"), checkedString(path, "path")));
+  // The materials of a material file's JSON, a MaterialX document (path ending in .mtlx) or a glTF
+  // asset (.gltf, .glb): text or its bytes. `files`: the files it names (a spectral CSV, a .gltf's
+  // buffers), { "name relative to its folder": text or bytes }; without it, such a file cannot be
+  // read (the instance has no file system).
+  parseMaterials(text, path = "material.json", { files } = {}) {
+    const handles = unwrapped(this.#module.parseMaterials(checkedText(text, "text"), checkedString(path, "path"),
+                                                          checkedFiles(files)));
     return handles.map((handle) => new Material(handle));
   }
   // One material from JSON (text or bytes) or a plain object written as a material file.
@@ -175,13 +189,13 @@ export class Matc {
     const handle = unwrapped(this.#module.compile(material.handle, ...optionStrings(options)));
     return new CompiledMaterial(handle, material);
   }
-  // A glTF asset (a .glb's bytes, or a .gltf whose buffers are data URIs; `path` ends in .glb or
-  // .gltf) written back with each metal's compiled coefficients in the vendor extension
+  // A glTF asset (a .glb's bytes, or a .gltf whose buffers are data URIs or given in `files` as
+  // parseMaterials takes them; `path` ends in .glb or .gltf) written back with each metal's compiled coefficients in the vendor extension
   // MATC_materials_fresnel, every other byte as it was (`matc gltf`, docs/gltf.md):
   // { bytes: Uint8Array, materials: CompiledMaterial[] (its metals, in the asset's order) }.
-  compileGltf(bytes, path = "asset.glb", options = {}) {
+  compileGltf(bytes, path = "asset.glb", options = {}, { files } = {}) {
     const result = unwrapped(this.#module.compileGltf(checkedText(bytes, "bytes"), checkedString(path, "path"),
-                                                      ...optionStrings(options)));
+                                                      ...optionStrings(options), checkedFiles(files)));
     return { bytes: result.bytes,
              materials: result.materials.map(({ material, compiled }) => new CompiledMaterial(compiled, new Material(material))) };
   }

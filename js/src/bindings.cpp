@@ -196,10 +196,26 @@ matc::api::CompileOptions options_of(const std::string& basis, const std::string
   return {basis, color_space, gamut_mapping};
 }
 
-val parse_materials(const std::string& text, const std::string& path) {
+// The files an input names, given as a JS object of name -> text or bytes (index.mjs checks
+// the values' types); undefined or null: none given, the input reads no file.
+std::optional<matc::api::InputFiles> files_of(const val& files) {
+  if (files.isUndefined() || files.isNull()) return std::nullopt;
+  matc::api::InputFiles out;
+  const val names = val::global("Object").call<val>("keys", files);
+  const auto count = names["length"].as<unsigned>();
+  for (unsigned i = 0; i < count; ++i) {
+    const std::string name = names[i].as<std::string>();
+    out.emplace(name, files[name].as<std::string>());
+  }
+  return out;
+}
+
+val parse_materials(const std::string& text, const std::string& path, const val& files) {
   return guarded([&] {
     val out = val::array();
-    for (matc::api::Material& material : matc::api::parse_materials(text, path))
+    const std::optional<matc::api::InputFiles> given = files_of(files);
+    for (matc::api::Material& material : given ? matc::api::parse_materials(text, path, *given)
+                                               : matc::api::parse_materials(text, path))
       out.call<void>("push", val(JsMaterial(std::move(material))));
     return out;
   });
@@ -224,10 +240,13 @@ val text_outputs(const std::string& basis, const std::string& color_space,
 // {bytes: Uint8Array, materials: [{material, compiled}]}: the asset written back
 // with each metal's MATC_materials_fresnel (matc/api/gltf.h).
 val compile_gltf(const std::string& bytes, const std::string& path, const std::string& basis,
-                 const std::string& color_space, const std::string& gamut_mapping) {
+                 const std::string& color_space, const std::string& gamut_mapping,
+                 const val& files) {
   return guarded([&] {
-    matc::api::GltfAsset asset =
-        matc::api::compile_gltf(bytes, path, options_of(basis, color_space, gamut_mapping));
+    const matc::api::CompileOptions options = options_of(basis, color_space, gamut_mapping);
+    const std::optional<matc::api::InputFiles> given = files_of(files);
+    matc::api::GltfAsset asset = given ? matc::api::compile_gltf(bytes, path, options, *given)
+                                       : matc::api::compile_gltf(bytes, path, options);
     val out = val::object();
     out.set("bytes", val::global("Uint8Array")
                          .new_(emscripten::typed_memory_view(

@@ -1,10 +1,11 @@
 // libFuzzer target: the public API (matc/matc.h) as the WebAssembly and other faces call it, on
 // any bytes. The first byte picks the options (the names the faces pass through, a wrong one
-// among them) and the document kind; the rest is the document. What parses is compiled, its
-// curves evaluated on cosines read from the input (NaN and values outside [0, 1] among them) and
-// its texts written. Allowed outcomes: MaterialError (an error, every line printable),
-// std::invalid_argument for a bad option or cosine, std::logic_error for a bare metal's lobes;
-// anything else (another exception, a crash, a sanitizer report) is a finding.
+// among them), the document kind and whether files it names come from memory (InputFiles: the
+// two halves of the rest as "a.csv" and "b.bin"); the rest is the document. What parses is
+// compiled, its curves evaluated on cosines read from the input (NaN and values outside [0, 1]
+// among them) and its texts written. Allowed outcomes: MaterialError (an error, every line
+// printable), std::invalid_argument for a bad option or cosine, std::logic_error for a bare metal's
+// lobes; anything else (another exception, a crash, a sanitizer report) is a finding.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -67,8 +68,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view text(reinterpret_cast<const char*>(data) + 1, size - 1);
   const char* path = (pick & 0x20) != 0 ? "fuzz.mtlx" : "fuzz.json";
   std::vector<matc::api::Material> materials;
+  const matc::api::InputFiles files{{"a.csv", std::string(text.substr(text.size() / 2))},
+                                    {"b.bin", std::string(text.substr(0, text.size() / 2))}};
   try {
-    materials = matc::api::parse_materials(text, path);
+    materials = (pick & 0x40) != 0 ? matc::api::parse_materials(text, path, files)
+                                   : matc::api::parse_materials(text, path);
   } catch (const matc::api::MaterialError& error) {
     if (error.diagnostics().empty()) __builtin_trap();
     require_printable(error.diagnostics());

@@ -11,7 +11,7 @@
 // tyre); `matc eval`'s exact curve is the glTF definition of each metal (Schlick's from F0; the
 // F82-tint curve with the edge colour) and its F that curve within the compile's accuracy;
 // `matc -o` compiles both assets; the npm package's compiler imports the same material files from
-// the same bytes, and its compileGltf writes the .glb back as `matc gltf` does (the same bytes but
+// the same bytes (the .gltf's buffer given in memory), and its compileGltf writes the .glb back as `matc gltf` does (the same bytes but
 // for the last digits of the coefficients, where WebAssembly's math differs).
 //   node check-gltf-assets.mjs MATC NPM_DIR
 import { spawnSync } from "node:child_process";
@@ -101,16 +101,27 @@ try {
   const edgeCurves = checkCurves(trim, "EdgeChrome", (mu, c) => f82Tint(mu, f0Chrome[c], tint[c]),
                                  accuracy("EdgeChrome"));
 
-  // The npm package's compiler: the same material files from the same bytes (a .gltf's external
-  // buffers cannot be read there: the .glb only).
+  // The npm package's compiler: the same material files from the same bytes (a .gltf's buffer
+  // given to it in memory, as it has no file system).
   const { createMatc } = await import(resolve(npmDir, "index.mjs"));
   const wasm = await createMatc();
-  const materials = wasm.parseMaterials(new Uint8Array(readFileSync(car)), "car.glb");
-  check(materials.map((m) => m.name).join() === "Car_Paint,Chrome", `the package imports ${materials.map((m) => m.name)}`);
+  const materials = [
+    ...wasm.parseMaterials(new Uint8Array(readFileSync(car)), "car.glb"),
+    ...wasm.parseMaterials(readFileSync(trim), "trim.gltf", { files: { "trim.bin": readFileSync(join(dir, "trim.bin")) } }),
+  ];
+  check(materials.map((m) => m.name).join() === "Car_Paint,Chrome,EdgeChrome,LacqueredCopper",
+        `the package imports ${materials.map((m) => m.name)}`);
   for (const material of materials) {
     check(material.json === readFileSync(join(out, `${material.name}.json`), "utf8"),
           `${material.name}: the package's material file differs from matc import's`);
   }
+  let refused = "";
+  try {
+    wasm.parseMaterials(readFileSync(trim), "trim.gltf");
+  } catch (error) {
+    refused = error.message;
+  }
+  check(/cannot read buffer 'trim.bin'/.test(refused), `a .gltf without its buffer given: ${refused}`);
   // compileGltf against `matc gltf`: every byte outside the extension's numbers, and the numbers
   // within 1e-9.
   const written = wasm.compileGltf(new Uint8Array(readFileSync(car)), "car.glb");
@@ -136,7 +147,8 @@ try {
               `${chromeCurves.fitted.toFixed(4)} (Schlick's chrome) and ${edgeCurves.fitted.toFixed(4)} (the edge-coloured ` +
               `one) with the default basis, ${Math.max(chromeCurves.f82, edgeCurves.f82).toExponential(1)} with ` +
               `--basis f82; the npm package ` +
-              `imports the .glb's material files byte for byte, and its compileGltf writes what matc gltf ` +
+              `imports both assets' material files byte for byte (the .gltf's buffer given in memory), and its ` +
+              `compileGltf writes what matc gltf ` +
               `writes (numbers within ${gltfDifference.toExponential(1)})`);
 } finally {
   rmSync(dir, { recursive: true, force: true });

@@ -241,6 +241,28 @@ throwsWith(() => matc_.compileGltf("{\"asset\": {\"version\": \"2.0\"}, \"materi
            /materials\[0\]\.name: given twice/, "compileGltf of a key given twice");
 throwsWith(() => matc_.compileGltf("glTF", "a.glb", { basis: "f82", gamutMapping: 1 }), /options.gamutMapping: a string/,
            "compileGltf's options");
+throwsWith(() => matc_.parseMaterials("{}", "m.json", { files: { "../x.csv": "1" } }),
+           /files: '\.\.\/x\.csv': a path that leaves the input's folder/, "a file name climbing out");
+throwsWith(() => matc_.parseMaterials("{}", "m.json", { files: [] }), /files: an object/, "files as an array");
+throwsWith(() => matc_.parseMaterials("{}", "m.json", { files: { "a.csv": 5 } }), /files\["a.csv"\]: a string/,
+           "a file that is a number");
+{
+  // A spectral material's CSV given in memory: the same coefficients as the native library's from
+  // the disk; not given, it cannot be read.
+  const text = fs.readFileSync(path.join(root, "examples", "materials", "gold_measured_file.json"));
+  const csv = fs.readFileSync(path.join(root, "examples", "materials", "spectra", "gold_pbrt_v4.csv"));
+  const [measured] = matc_.parseMaterials(text, "gold_measured_file.json", { files: { "spectra/gold_pbrt_v4.csv": csv } });
+  const [fromDisk] = execFileSync(apiDump, {  // the native library, reading the CSV from the disk
+    cwd: examples, encoding: "utf8",
+    input: JSON.stringify({ text: text.toString("utf8"), path: "gold_measured_file.json", options: {} }) + "\n",
+  }).trim().split("\n").map((line) => JSON.parse(line));
+  const ours = matc_.compile(measured).coefficients.flatMap((row) => Array.from(row));
+  const theirs = fromDisk.materials[0].coefficients.flat();
+  check(maxDifference(ours, theirs) <= 1e-9,
+        `the spectral file given in memory: coefficients ${maxDifference(ours, theirs)} from the disk's`);
+  throwsWith(() => matc_.parseMaterials(text, "gold_measured_file.json", { files: {} }), /not among the files given/,
+             "a spectral file not given");
+}
 check(gold.fresnel(1).length === 3, "usable after the refusals");
 const coated = matc_.compile(matc_.parseMaterial({ name: "c", spectral: { preset: "Cu" }, coat: { ior: 1.5 } }));
 const lobes = coated.coatedFresnel([0.25, 1]);

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "checked_options.h"
+#include "input_files.h"
 #include "matc/base/echoed_text.h"
 #include "matc/emit/gltf_fresnel_extension.h"
 #include "matc/material/document_import.h"
@@ -23,10 +24,10 @@ void require_gltf_path(std::string_view path) {
 }
 
 GltfAsset compile_imported(std::string_view bytes, const std::string& path,
-                           const CompileOptions& options) {
+                           const CompileOptions& options, const FileLoader& loader) {
   const runtime::BasisKind basis = basis_of(options);
   color_options_of(options);  // an option outside its names throws before any work
-  DocumentImport imported = import_document(bytes, path);
+  DocumentImport imported = import_document(bytes, path, loader);
   throw_if_errors(imported.diagnostics);
   const std::vector<Diagnostic> notes = public_diagnostics(imported.diagnostics);
   GltfAsset asset;
@@ -52,7 +53,15 @@ GltfAsset compile_imported(std::string_view bytes, const std::string& path,
 GltfAsset compile_gltf(std::string_view bytes, std::string_view path,
                        const CompileOptions& options) {
   require_gltf_path(path);
-  return compile_imported(bytes, std::string(path), options);
+  return compile_imported(bytes, std::string(path), options, load_file);
+}
+
+GltfAsset compile_gltf(std::string_view bytes, std::string_view path, const CompileOptions& options,
+                       const InputFiles& files) {
+  require_gltf_path(path);
+  check_input_files(files);
+  const std::string input(path);
+  return compile_imported(bytes, input, options, memory_file_loader(files, input));
 }
 
 GltfAsset compile_gltf_file(std::string_view path, const CompileOptions& options) {
@@ -61,7 +70,7 @@ GltfAsset compile_gltf_file(std::string_view path, const CompileOptions& options
   Diagnostics diagnostics;
   const std::optional<std::string> bytes = read_document_bytes(file, diagnostics);
   throw_if_errors(diagnostics);
-  return compile_imported(*bytes, file, options);
+  return compile_imported(*bytes, file, options, load_file);
 }
 
 }  // namespace matc::api

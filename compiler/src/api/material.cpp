@@ -3,8 +3,10 @@
 #include <string>
 #include <utility>
 
+#include "input_files.h"
 #include "matc/material/material_input.h"
 #include "matc/material/materialx_import.h"
+#include "matc/material/memory_files.h"
 #include "matc/optics/presets.h"
 #include "public_diagnostics.h"
 
@@ -45,6 +47,13 @@ bool Material::coated() const {
 
 std::vector<Material> parse_materials(std::string_view text, std::string_view path) {
   return materials_of(parse_material_input(text, std::string(path)));
+}
+
+std::vector<Material> parse_materials(std::string_view text, std::string_view path,
+                                      const InputFiles& files) {
+  check_input_files(files);
+  const std::string input(path);
+  return materials_of(parse_material_input(text, input, memory_file_loader(files, input)));
 }
 
 std::vector<Material> load_materials(std::string_view path) {

@@ -32,9 +32,10 @@ MaterialInput read_material_input(const std::string& path) {
   return from_material(read_material_file(path));
 }
 
-MaterialInput parse_material_input(std::string_view text, const std::string& path) {
-  if (is_document_path(path)) return from_document(import_document(text, path));
-  return from_material(parse_material(text, path));
+MaterialInput parse_material_input(std::string_view text, const std::string& path,
+                                   const FileLoader& loader) {
+  if (is_document_path(path)) return from_document(import_document(text, path, loader));
+  return from_material(parse_material(text, path, loader));
 }
 
 }  // namespace matc

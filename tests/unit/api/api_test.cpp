@@ -5,6 +5,8 @@
 #include "matc/api/batch.h"
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -113,6 +115,49 @@ TEST(PublicApi, ArgumentsOutOfRangeAreNamed) {
 }  // namespace
 
 namespace {
+
+// Files an input names, given in memory: read instead of the disk (the same material as from
+// the disk), the only files read, their names checked.
+TEST(PublicApi, FilesAnInputNamesComeFromMemoryWhenGiven) {
+  const std::string dir = MATC_EXAMPLES_DIR;
+  const auto read = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string text = read(dir + "/gold_measured_file.json");
+  const matc::api::InputFiles files{
+      {"spectra/gold_pbrt_v4.csv", read(dir + "/spectra/gold_pbrt_v4.csv")}};
+  // A folder that does not exist: nothing can come from the disk.
+  const auto from_memory =
+      matc::api::parse_materials(text, "/nowhere/gold_measured_file.json", files);
+  const auto from_disk = matc::api::load_materials(dir + "/gold_measured_file.json");
+  ASSERT_EQ(from_memory.size(), 1u);
+  EXPECT_EQ(matc::api::compile(from_memory[0]).coefficients(),
+            matc::api::compile(from_disk[0]).coefficients());
+  // Given files are the only ones read: one missing cannot be read even where the disk has it.
+  try {
+    matc::api::parse_materials(text, dir + "/gold_measured_file.json", matc::api::InputFiles{});
+    FAIL() << "a file not given was read";
+  } catch (const matc::api::MaterialError& error) {
+    EXPECT_NE(std::string(error.what()).find("not among the files given"), std::string::npos)
+        << error.what();
+  }
+  for (const char* name : {"../gold.csv", "/etc/passwd", "", "a\\b.csv", "c:x.csv", "spectra/.."}) {
+    EXPECT_THROW(matc::api::parse_materials(text, "gold.json", matc::api::InputFiles{{name, "x"}}),
+                 std::invalid_argument)
+        << name;
+  }
+  // A .gltf's buffer: the asset written back as from the disk.
+  const std::string gltf =
+      R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 4, "uri": "b.bin"}],
+          "materials": [{"name": "steel", "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1]}}]})";
+  EXPECT_THROW(matc::api::compile_gltf(gltf, "a/car.gltf", {}, matc::api::InputFiles{}),
+               matc::api::MaterialError);
+  const matc::api::GltfAsset asset =
+      matc::api::compile_gltf(gltf, "a/car.gltf", {}, matc::api::InputFiles{{"b.bin", "abcd"}});
+  EXPECT_EQ(asset.materials.size(), 1u);
+  EXPECT_EQ(asset.external_uris, std::vector<std::string>{"b.bin"});
+}
 
 TEST(PublicApi, BatchRefusesBadOptionsBeforeWriting) {
   const std::vector<matc::api::BatchSource> sources = {

@@ -26,6 +26,10 @@ struct GltfAsset {
 // a path that names no glTF asset or an option outside its names.
 GltfAsset compile_gltf(std::string_view bytes, std::string_view path,
                        const CompileOptions& options = {});
+// The same with the files a .gltf names (buffers, images) given in memory (parse_materials'
+// InputFiles): they are the only files read.
+GltfAsset compile_gltf(std::string_view bytes, std::string_view path, const CompileOptions& options,
+                       const InputFiles& files);
 // The same for the asset at `path`.
 GltfAsset compile_gltf_file(std::string_view path, const CompileOptions& options = {});
 

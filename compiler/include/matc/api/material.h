@@ -3,6 +3,7 @@
 // and throws MaterialError with all its errors located; warnings and notes stay with the material.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -44,6 +45,14 @@ class Material {
 // materials), else a material file's JSON (one). Relative spectral files and a glTF's external
 // buffers resolve against `path`'s folder.
 std::vector<Material> parse_materials(std::string_view text, std::string_view path);
+// Files an input names (a spectral CSV, a .gltf's buffers), held in memory: each by its path
+// relative to the input's folder as the input names it ("spectra/gold.csv", "car.bin").
+using InputFiles = std::map<std::string, std::string>;
+// The same with the files the input names given in memory: they are the only files read (a name
+// not among them cannot be read). A name that could not be a file beside the input (absolute,
+// climbing out, empty) throws std::invalid_argument naming it.
+std::vector<Material> parse_materials(std::string_view text, std::string_view path,
+                                      const InputFiles& files);
 // The same for a file.
 std::vector<Material> load_materials(std::string_view path);
 

@@ -11,6 +11,7 @@
 
 #include "matc/base/diagnostics.h"
 #include "matc/material/material.h"
+#include "matc/material/parse.h"
 
 namespace matc {
 
@@ -23,7 +24,9 @@ struct MaterialInput {
 MaterialInput read_material_input(const std::string& path);
 
 // Parses `text`, the contents of an input named `path` (its extension says which kind, `.mtlx` a
-// MaterialX document; diagnostics name it; relative spectral files resolve against its folder).
-MaterialInput parse_material_input(std::string_view text, const std::string& path);
+// MaterialX document; diagnostics name it; relative spectral files and a glTF's buffers resolve
+// against its folder and are read through `loader`).
+MaterialInput parse_material_input(std::string_view text, const std::string& path,
+                                   const FileLoader& loader = load_file);
 
 }  // namespace matc
