@@ -2,7 +2,7 @@
 // package as a project's node_modules and driven through its controls in headless Chromium
 // (lookdev-check-page.mjs). For materials chosen as a person would (a preset, a colour-picker
 // metal in ACEScg, typed n and k, a coated metal, a pasted material file, a pasted glTF asset of
-// several metals, one chosen):
+// several metals, one chosen, a .gltf dropped with its buffer):
 //   - no console error or warning, no uncaught exception;
 //   - the probe pixels of the page's matc material (its three.js material, under the engine checks'
 //     environment, point and rect lights) equal the CPU runtime's (`matc eval`), to 1e-4;
@@ -74,6 +74,14 @@ const kCases = [
       { name: "Trim", pbrMetallicRoughness: { baseColorFactor: [0.55, 0.556, 0.554, 1], roughnessFactor: 0.3 } }] }) },
             select("#choice", "1")],
     lights: ["environment", "point"] },
+  // A .gltf dropped with the buffer it names beside it: read together (the page has no folder).
+  { key: "dropped glTF and its buffer", name: "Dropped_Chrome", bare: true,
+    steps: [{ drop: [{ name: "trim.bin", text: "abcd" },
+                     { name: "trim.gltf", text: JSON.stringify({ asset: { version: "2.0" },
+                       buffers: [{ byteLength: 4, uri: "trim.bin" }],
+                       materials: [{ name: "Dropped Chrome", pbrMetallicRoughness: {
+                         baseColorFactor: [0.55, 0.556, 0.554, 1], roughnessFactor: 0.3 } }] }) }] }],
+    lights: ["environment"] },
 ];
 
 const kConfig = { probeSize: kProbeSize, pixels: kProbePixels, point: kPointLight, rect: kProbeRectLight,

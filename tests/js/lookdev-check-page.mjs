@@ -17,8 +17,15 @@ const $ = (selector) => {
 };
 
 // One step through the controls: { selector, value } (input event; event: "change" for selects),
-// { selector, checked } (a checkbox, change event) or { paste } (the text into the paste box, Load).
+// { selector, checked } (a checkbox, change event), { paste } (the text into the paste box, Load)
+// or { drop: [{ name, text }] } (files dropped on the page together).
 function apply(step) {
+  if (step.drop !== undefined) {
+    const transfer = new DataTransfer();
+    for (const file of step.drop) transfer.items.add(new File([file.text], file.name));
+    document.dispatchEvent(new DragEvent("drop", { dataTransfer: transfer, bubbles: true, cancelable: true }));
+    return;
+  }
   if (step.paste !== undefined) {
     $("#paste").value = step.paste;
     $("#load-pasted").click();

@@ -260,8 +260,10 @@ function scheduleUpdate() {
   return running;
 }
 
-// Resolves when no update is running and the frame they asked for is drawn.
+// Resolves when no dropped file is being read, no update is running and the frame they asked for
+// is drawn.
 async function idle() {
+  while (reading) await reading;
   while (running) await running;
   app.view.flush();
 }
@@ -269,12 +271,14 @@ async function idle() {
 // ---- Opening a document: pasted text or a dropped file. ----
 
 let documentMaterials = [];
+let reading = null;  // dropped files being read
 
-function openDocument(text, path) {
+// `files`: the files the document names (a .gltf's buffers, a spectral CSV), by name.
+function openDocument(text, path, files = undefined) {
   clearMessages();
   let materials;
   try {
-    materials = app.matc.parseMaterials(text, path);
+    materials = app.matc.parseMaterials(text, path, { files });
   } catch (error) {
     showRefusal(error);
     return;
@@ -292,6 +296,19 @@ function chooseDocumentMaterial(index) {
   app.state.material = material;
   toControls(material, app.state.colorSpace);
   scheduleUpdate();
+}
+
+// Dropped files: the document (a .gltf, .glb or .mtlx first, else a .json), the others the files
+// it names beside it by their names (a .gltf's .bin, a spectral CSV in the same folder).
+async function openDroppedFiles(dropped) {
+  const rank = (file) => (/\.(gltf|glb|mtlx)$/i.test(file.name) ? 0 : /\.json$/i.test(file.name) ? 1 : 2);
+  const main = [...dropped].sort((a, b) => rank(a) - rank(b))[0];
+  if (!main) return;
+  const files = {};
+  for (const file of dropped) {
+    if (file !== main) files[file.name] = new Uint8Array(await file.arrayBuffer());
+  }
+  openDocument(new Uint8Array(await main.arrayBuffer()), main.name, files);
 }
 
 // A pasted text is MaterialX when it starts with "<" (an XML declaration or element), a glTF
@@ -352,10 +369,9 @@ async function start() {
   $("#load-pasted").addEventListener("click", () => openDocument($("#paste").value, pastedPath($("#paste").value)));
   $("#choice").addEventListener("change", () => chooseDocumentMaterial(Number($("#choice").value)));
   document.addEventListener("dragover", (event) => event.preventDefault());
-  document.addEventListener("drop", async (event) => {
+  document.addEventListener("drop", (event) => {
     event.preventDefault();
-    const file = event.dataTransfer?.files?.[0];
-    if (file) openDocument(new Uint8Array(await file.arrayBuffer()), file.name);
+    reading = openDroppedFiles([...(event.dataTransfer?.files ?? [])]).finally(() => { reading = null; });
   });
   for (const button of $$("[data-export]")) {
     button.addEventListener("click", () => {
