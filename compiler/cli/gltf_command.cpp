@@ -42,16 +42,18 @@ bool ends_with_any_case(const std::string& path, std::string_view extension) {
 std::string output_problem(const GltfOptions& options, const api::GltfAsset& asset) {
   const fs::path input(options.input);
   const fs::path output(options.output);
-  if (path_identity(output) == path_identity(input))
+  const std::string written = path_identity(output);
+  if (written == path_identity(input))
     return fmt::format("output '{}' would overwrite its input", printable(options.output));
   for (const std::string& uri : asset.external_uris) {
-    if (path_identity(output) == path_identity(input.parent_path() / uri))
+    if (written == path_identity(input.parent_path() / uri))
       return fmt::format("output '{}' would overwrite '{}', a file the asset names",
                          printable(options.output), echoed(uri, 128));
   }
-  if (!asset.external_uris.empty() &&
-      path_identity(output.parent_path().empty() ? fs::path(".") : output.parent_path()) !=
-          path_identity(input.parent_path().empty() ? fs::path(".") : input.parent_path())) {
+  const auto folder = [](const fs::path& path) {
+    return path_identity(path.parent_path().empty() ? fs::path(".") : path.parent_path());
+  };
+  if (!asset.external_uris.empty() && folder(output) != folder(input)) {
     return fmt::format(
         "output '{}' is not in the folder of '{}', whose asset names {} file(s) beside it "
         "('{}'...): they would not resolve from there",

@@ -92,11 +92,12 @@ class JsonSplicer {
     errors_.error(document_.value_offset(pointer), field_path(pointer), message, allowed);
   }
 
-  // Inserts a member (`"key":value`) first in the object at `pointer`.
-  void insert_member(const std::string& pointer, const nlohmann::json& object,
-                     const std::string& member) {
+  // Inserts `text` (a member `"key":value` or an element) first in the object or array
+  // `container` at `pointer`.
+  void insert_first(const std::string& pointer, const nlohmann::json& container,
+                    const std::string& text) {
     edits_.push_back(
-        {document_.value_offset(pointer) + 1, 0, member + (object.empty() ? "" : ",")});
+        {document_.value_offset(pointer) + 1, 0, text + (container.empty() ? "" : ",")});
   }
 
   void material(std::size_t index, const nlohmann::json& value, const ordered_json* extension) {
@@ -105,25 +106,24 @@ class JsonSplicer {
       error(pointer, "is not an object", "a material object");
       return;
     }
-    const std::string member =
-        extension
-            ? fmt::format("\"{}\":{}", kGltfFresnelExtension,
-                          extension->dump(-1, ' ', false, ordered_json::error_handler_t::replace))
-            : std::string();
+    const std::string dumped =
+        extension ? extension->dump(-1, ' ', false, ordered_json::error_handler_t::replace)
+                  : std::string();
+    const std::string member = fmt::format("\"{}\":{}", kGltfFresnelExtension, dumped);
     const auto extensions = value.find("extensions");
     if (extensions == value.end()) {
-      if (extension) insert_member(pointer, value, fmt::format("\"extensions\":{{{}}}", member));
+      if (extension) insert_first(pointer, value, fmt::format("\"extensions\":{{{}}}", member));
       return;
     }
     const std::string extensions_pointer = pointer + "/extensions";
     if (!extensions->is_object()) {
-      error(pointer + "/extensions", "is not an object", "an object of extensions");
+      error(extensions_pointer, "is not an object", "an object of extensions");
       return;
     }
     const std::string ours = fmt::format("{}/{}", extensions_pointer, kGltfFresnelExtension);
     const auto previous = extensions->find(std::string(kGltfFresnelExtension));
     if (previous == extensions->end()) {
-      if (extension) insert_member(extensions_pointer, *extensions, member);
+      if (extension) insert_first(extensions_pointer, *extensions, member);
       return;
     }
     if (!previous->is_object()) {
@@ -133,8 +133,7 @@ class JsonSplicer {
     const std::size_t start = document_.value_offset(ours);
     const std::size_t end = document_.container_ends.at(ours);
     if (extension) {  // written by an earlier run: replaced
-      edits_.push_back({start, end - start,
-                        extension->dump(-1, ' ', false, ordered_json::error_handler_t::replace)});
+      edits_.push_back({start, end - start, dumped});
       return;
     }
     // The material is no longer a metal matc compiles: the member goes, with one comma.
@@ -158,7 +157,7 @@ class JsonSplicer {
     const std::string name = fmt::format("\"{}\"", kGltfFresnelExtension);
     const auto used = document_.value.find("extensionsUsed");
     if (used == document_.value.end()) {
-      insert_member("", document_.value, fmt::format("\"extensionsUsed\":[{}]", name));
+      insert_first("", document_.value, fmt::format("\"extensionsUsed\":[{}]", name));
       return;
     }
     if (!used->is_array()) {
@@ -167,8 +166,7 @@ class JsonSplicer {
     }
     if (std::find(used->begin(), used->end(), std::string(kGltfFresnelExtension)) != used->end())
       return;
-    edits_.push_back(
-        {document_.value_offset("/extensionsUsed") + 1, 0, name + (used->empty() ? "" : ",")});
+    insert_first("/extensionsUsed", *used, name);
   }
 
   std::string_view text_;

@@ -10,6 +10,7 @@
 #include "matc/formats/glb_container.h"
 #include "matc/material/document_import.h"
 #include "matc/material/gltf_import.h"
+#include "matc/material/memory_files.h"
 
 namespace matc {
 
@@ -42,21 +43,7 @@ std::string percent_decoded(std::string_view uri) {
 // Why a file URI (decoded) may not be read: absolute, with a scheme, or leaving the asset's
 // folder. Empty when it may.
 std::string uri_problem(const std::string& file) {
-  if (file.empty()) return "an empty URI";
-  if (file.find('\0') != std::string::npos) return "a URI with a NUL byte";
-  if (file.find('\\') != std::string::npos) return "a URI with a backslash";
-  if (file.front() == '/') return "an absolute path";
-  if (file.find(':') != std::string::npos)
-    return "a URI with a scheme or drive (not a relative file)";
-  int depth = 0;
-  for (const fs::path& part : fs::path(file)) {
-    if (part == "..")
-      --depth;
-    else if (part != "." && !part.empty())
-      ++depth;
-    if (depth < 0) return "a path that leaves the asset's folder";
-  }
-  return {};
+  return relative_file_problem(file, "URI", "the asset's folder");
 }
 
 // The file system tinygltf sees: only files inside the asset's folder, through matc's loader
