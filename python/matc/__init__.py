@@ -289,11 +289,10 @@ def compile_gltf(asset, **options):
     ``color_space``, ``gamut_mapping``). Raises :class:`MaterialError` for an asset ``matc gltf``
     refuses.
     """
-    build = _default_build(**options)
-    path = _native_path(asset, "asset")
-    names = build.options
-    data = _matc._compile_gltf(path, names["basis"], names["color_space"], names["gamut_mapping"])
-    return GltfAsset(data, [build.compile(material) for material in load(path)])
+    names = _default_build(**options).options
+    data, materials = _matc._compile_gltf(_native_path(asset, "asset"), names["basis"],
+                                          names["color_space"], names["gamut_mapping"])
+    return GltfAsset(data, materials)
 
 
 def shader_sources(material, languages=("glsl", "hlsl", "wgsl"), **options):

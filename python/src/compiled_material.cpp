@@ -30,10 +30,20 @@ namespace matc::python {
 
 CompiledPointer compile_loaded(const LoadedMaterialPointer& material, runtime::BasisKind basis,
                                const ColorOptions& color) {
-  auto result = std::make_shared<CompiledResult>();
+  CompiledMaterial compiled;
   {
     py::gil_scoped_release release;
-    result->compiled = compile_material(material->material, runtime::shipped_basis(basis), color);
+    compiled = compile_material(material->material, runtime::shipped_basis(basis), color);
+  }
+  return compiled_result(material, std::move(compiled), basis, color);
+}
+
+CompiledPointer compiled_result(const LoadedMaterialPointer& material, CompiledMaterial compiled,
+                                runtime::BasisKind basis, const ColorOptions& color) {
+  auto result = std::make_shared<CompiledResult>();
+  result->compiled = std::move(compiled);
+  {
+    py::gil_scoped_release release;
     result->exact = make_reflectance_curve(material->material, color);
     if (const auto& coat = result->compiled.coat) {
       result->in_air = result->exact;

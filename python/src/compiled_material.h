@@ -28,4 +28,9 @@ using CompiledPointer = std::shared_ptr<CompiledResult>;
 CompiledPointer compile_loaded(const LoadedMaterialPointer& material, runtime::BasisKind basis,
                                const ColorOptions& color);
 
+// The same for `compiled`, already compiled from `material` with `basis` and `color` (the exact
+// curves it was fitted to are made here, with the GIL released).
+CompiledPointer compiled_result(const LoadedMaterialPointer& material, CompiledMaterial compiled,
+                                runtime::BasisKind basis, const ColorOptions& color);
+
 }  // namespace matc::python

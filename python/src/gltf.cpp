@@ -1,11 +1,14 @@
 // matc.compile_gltf's native half: the public API's compile_gltf_file (matc/api/gltf.h), the
-// asset written back with each metal's MATC_materials_fresnel; its errors as matc.MaterialError.
+// asset written back with each metal's MATC_materials_fresnel and the metals it compiled (as the
+// module's CompiledMaterial, read and compiled once); its errors as matc.MaterialError.
 #include <string>
 #include <vector>
 
 #include "bindings.h"
+#include "compiled_material.h"
 #include "errors.h"
 #include "matc/matc.h"
+#include "matc/options/option_names.h"
 
 namespace py = pybind11;
 
@@ -30,24 +33,34 @@ Diagnostics library_diagnostics(const std::vector<api::Diagnostic>& diagnostics)
   return out;
 }
 
-py::bytes compile_gltf_bytes(const std::string& path, const std::string& basis,
-                             const std::string& color_space, const std::string& gamut_mapping) {
-  std::string bytes;
+// (bytes, [CompiledMaterial]).
+py::tuple compile_gltf(const std::string& path, const std::string& basis,
+                       const std::string& color_space, const std::string& gamut_mapping) {
+  api::GltfAsset asset;
   {
     const py::gil_scoped_release release;
     try {
-      bytes = api::compile_gltf_file(path, {basis, color_space, gamut_mapping}).bytes;
+      asset = api::compile_gltf_file(path, {basis, color_space, gamut_mapping});
     } catch (const api::MaterialError& error) {
       throw MaterialErrorThrown(library_diagnostics(error.diagnostics()));
     }
   }
-  return py::bytes(bytes);
+  py::list materials;
+  for (const api::CompiledMaterial& compiled : asset.materials) {
+    const api::Material& material = compiled.material();
+    auto loaded = std::make_shared<LoadedMaterial>(
+        LoadedMaterial{material.value(), library_diagnostics(material.diagnostics())});
+    materials.append(compiled_result(loaded, compiled.value(),
+                                     *option_value<runtime::BasisKind>(compiled.basis()),
+                                     compiled.value().color));
+  }
+  return py::make_tuple(py::bytes(asset.bytes), materials);
 }
 
 }  // namespace
 
 void register_gltf(py::module_& module) {
-  module.def("_compile_gltf", &compile_gltf_bytes, py::arg("path"), py::arg("basis"),
+  module.def("_compile_gltf", &compile_gltf, py::arg("path"), py::arg("basis"),
              py::arg("color_space"), py::arg("gamut_mapping"));
 }
 

@@ -3,12 +3,14 @@ compiled as matc.compile compiles them, and the CLI's refusals as Python's excep
 
 import json
 
+import numpy as np
 import pytest
 
 import matc
 from conftest import BAD_INPUTS, SOURCE_DIR, run_matc
 
 TRIM = SOURCE_DIR / "examples" / "gltf" / "trim.gltf"
+COSINES = [0.0, 0.1, 1.0 / 7.0, 0.5, 1.0]
 
 
 def test_the_bytes_are_matc_gltfs(tmp_path):
@@ -26,9 +28,15 @@ def test_the_metals_are_compiled_as_compile_compiles_them():
     document = json.loads(asset.bytes)
     extensions = [m["extensions"]["MATC_materials_fresnel"] for m in document["materials"][:2]]
     assert "MATC_materials_fresnel" not in document["materials"][2].get("extensions", {})
-    for compiled, extension in zip(asset.materials, extensions):
+    loaded = matc.load(TRIM)
+    for compiled, extension, material in zip(asset.materials, extensions, loaded):
         assert extension["name"] == compiled.name and extension["basis"] == "f82"
         assert extension["coefficients"] == compiled.coefficients.tolist()
+        assert compiled.coefficients.tolist() == matc.compile(material, basis="f82").coefficients.tolist()
+        np.testing.assert_array_equal(compiled.fresnel(COSINES),
+                                      matc.compile(material, basis="f82").fresnel(COSINES))
+        assert [str(d) for d in compiled.diagnostics] == [
+            str(d) for d in matc.compile(material, basis="f82").diagnostics]
     assert asset.materials[1].coat is not None
 
 

@@ -238,25 +238,18 @@ def test_any_text_parses_or_raises_a_located_material_error(text):
         assert "finite" in str(error)
 
 
-@settings(max_examples=100, deadline=None, derandomize=True, database=None)
-@given(path=st.text(max_size=40))
-def test_any_path_loads_or_raises(path, tmp_path_factory):
-    try:
-        matc.load(path)
-    except matc.MaterialError as error:
-        assert error.errors
-    except ValueError as error:
-        assert ("NUL character" in str(error) and "\0" in path) or (
-            "is empty" in str(error) and not path)
-
-
+# Any path (also one naming a glTF asset) to the calls that take one: a located MaterialError, or
+# a ValueError for a NUL, an empty path, or (compile_gltf) a path that names no glTF asset.
+@pytest.mark.parametrize("call, also_refused", [(matc.load, None),
+                                                (matc.compile_gltf, "names no glTF asset")])
 @settings(max_examples=100, deadline=None, derandomize=True, database=None)
 @given(path=st.one_of(st.text(max_size=40), st.text(max_size=40).map(lambda text: text + ".gltf")))
-def test_any_path_compiles_a_gltf_or_raises(path):
+def test_any_path_reads_or_raises(call, also_refused, path):
     try:
-        matc.compile_gltf(path)
+        call(path)
     except matc.MaterialError as error:
         assert error.errors
     except ValueError as error:
         assert ("NUL character" in str(error) and "\0" in path) or (
-            "is empty" in str(error) and not path) or "names no glTF asset" in str(error)
+            "is empty" in str(error) and not path) or (
+            also_refused is not None and also_refused in str(error))
