@@ -6,19 +6,9 @@
 // asset), with the same checks: which materials became matc metals and from where, the warnings,
 // and the probes against the CPU runtime, to 1e-4.
 //   node check-babylon-gltf.mjs MATC NPM_DIR
-import { mkdtempSync, rmSync } from "node:fs";
-import { tmpdir } from "node:os";
-import { join } from "node:path";
-import { kWebRoots, modulePage, runPage } from "./browser-page.mjs";
-import { kBabylonProbeTerms, kPointLight, kProbePixels, kProbeRectLight, kProbeSize } from "./engine-probes.mjs";
-import { carAssetsForLoaders, loaderChecks } from "./gltf-loader-checks.mjs";
-import { check, finish } from "./report.mjs";
-
-const [matc, npmDir] = process.argv.slice(2);
-const kLights = ["environment", "point", "rect"];
-// Babylon's material name -> the matc material `matc import` writes for it, per load.
-const kProbed = { compiled: { "Car Paint": "Car_Paint", Chrome: "Chrome" }, extension: { Chrome: "Chrome" },
-                  directory: { "Car Paint": "Car_Paint" } };
+import { modulePage } from "./browser-page.mjs";
+import { kBabylonProbeTerms, kProbeSize } from "./engine-probes.mjs";
+import { runLoaderCheck } from "./gltf-loader-checks.mjs";
 
 const page = (config) => modulePage(config, {
   head: `import "@babylonjs/loaders/glTF/2.0/index.js";
@@ -73,25 +63,13 @@ import { babylonProbeScene, renderBabylonProbe } from "/checks/babylon-scene-pag
 `,
 });
 
-const dir = mkdtempSync(join(tmpdir(), "matc-babylon-gltf-"));
-try {
-  const { assets, car, build } = await carAssetsForLoaders(dir, matc);
-  const result = await runPage({
-    html: page({ probed: kProbed, lights: kLights, pixels: kProbePixels, point: kPointLight, rect: kProbeRectLight }),
-    // Real time: under virtual time Chromium may call the page done while it waits on a texture's
-    // decode (no network fetch pending), before the third load has run.
-    roots: { ...kWebRoots, web: npmDir, assets, build }, dir, realTime: true, budgetMs: 120000 });
-  check(result.errors.length === 0, `page: ${result.errors.join("\n")}`);
-  const worst = loaderChecks({ result, engine: "Babylon.js", matc, car, dir, probed: kProbed, lights: kLights,
-                               terms: kBabylonProbeTerms });
-  console.log(`Babylon.js's glTF loader with matc's extension: a glTF-Transform car asset's paint (coated) and ` +
+await runLoaderCheck({
+  engine: "Babylon.js", page, terms: kBabylonProbeTerms,
+  summary: (worst) => `Babylon.js's glTF loader with matc's extension: a glTF-Transform car asset's paint (coated) and ` +
               `chrome became matc metals compiled in the page, the tyre and the iridescent foil kept Babylon's ` +
               `material (the foil with a warning), largest difference from the CPU runtime ` +
               `${worst.compiled.toExponential(2)}; from matc gltf's asset without the compiler, the chrome took ` +
               `MATC_materials_fresnel's coefficients (${worst.extension.toExponential(2)}) and the coated paint kept ` +
               `Babylon's material with a warning; with a build directory of the asset, the paint took its snippet ` +
-              `from it (${worst.directory.toExponential(2)})`);
-} finally {
-  rmSync(dir, { recursive: true, force: true });
-}
-finish();
+              `from it (${worst.directory.toExponential(2)})`,
+}, process.argv.slice(2));

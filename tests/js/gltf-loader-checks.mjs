@@ -3,17 +3,24 @@
 // with a build directory that compiled the asset) and the checks of what each load made: which
 // materials became matc metals and from where, the console warnings, and the probes against the
 // CPU runtime's prediction for the material files `matc import` writes from the same asset.
-import { mkdirSync } from "node:fs";
+import { mkdirSync, mkdtempSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
 import { join } from "node:path";
-import { compareProbes, expectedProbes } from "./engine-probes.mjs";
+import { kWebRoots, runPage } from "./browser-page.mjs";
+import { compareProbes, expectedProbes, kPointLight, kProbePixels, kProbeRectLight } from "./engine-probes.mjs";
 import { carAsset } from "./gltf-assets.mjs";
-import { check } from "./report.mjs";
+import { check, finish } from "./report.mjs";
 import { run } from "./shader-cases.mjs";
+
+const kLights = ["environment", "point", "rect"];
+// The engine's material name -> the matc material `matc import` writes for it, per load.
+const kProbed = { compiled: { "Car Paint": "Car_Paint", Chrome: "Chrome" }, extension: { Chrome: "Chrome" },
+                  directory: { "Car Paint": "Car_Paint" } };
 
 // In `dir`: assets/car.glb (roughness 0.3, the foil), assets/car_matc.glb (`matc gltf`'s) and
 // build/ (`matc -o build car.glb`: the metals' JSON and snippets, the tables). Returns
 // { assets, car, build }: the folders to serve and the asset.
-export async function carAssetsForLoaders(dir, matc) {
+async function carAssetsForLoaders(dir, matc) {
   const assets = join(dir, "assets");
   mkdirSync(assets);
   const car = join(assets, "car.glb");
@@ -39,7 +46,7 @@ const kLoads = {
 // load's, renders: "<load> <matc name> <light> r=0.3" }); `engine` names the engine in its
 // warnings, `terms` its probe terms (engine-probes.mjs). Returns the largest probe difference per
 // load.
-export function loaderChecks({ result, engine, matc, car, dir, probed, lights, terms }) {
+function loaderChecks({ result, engine, matc, car, dir, probed, lights, terms }) {
   const foil = new RegExp(`glTF materials\\[3\\] "Foil" keeps ${engine.replace(".", "\\.")}'s Fresnel: matc: iridescence`);
   const lines = result.console ?? [];
   for (const [load, expected] of Object.entries(kLoads)) {
@@ -70,4 +77,25 @@ export function loaderChecks({ result, engine, matc, car, dir, probed, lights, t
                                 Object.fromEntries(keys.map((key) => [key, expected[key]])));
   }
   return worst;
+}
+
+// An engine's loader check: its page (config -> HTML: { probed, lights, pixels, point, rect }; it
+// loads /assets/car.glb and /assets/car_matc.glb, the latter also with /build/) run over the car
+// assets in real time, then the checks above. `engine` names it in its warnings, `terms` are its
+// probe terms; `summary(worst)` says what was measured. argv: MATC NPM_DIR.
+export async function runLoaderCheck({ engine, page, terms, summary }, [matc, npmDir]) {
+  const dir = mkdtempSync(join(tmpdir(), "matc-gltf-loader-"));
+  try {
+    const { assets, car, build } = await carAssetsForLoaders(dir, matc);
+    const result = await runPage({
+      html: page({ probed: kProbed, lights: kLights, pixels: kProbePixels, point: kPointLight, rect: kProbeRectLight }),
+      // Real time: under virtual time Chromium may call the page done while it waits on a
+      // texture's decode (no network fetch pending), before the third load has run.
+      roots: { ...kWebRoots, web: npmDir, assets, build }, dir, realTime: true, budgetMs: 120000 });
+    check(result.errors.length === 0, `page: ${result.errors.join("\n")}`);
+    console.log(summary(loaderChecks({ result, engine, matc, car, dir, probed: kProbed, lights: kLights, terms })));
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+  finish();
 }
