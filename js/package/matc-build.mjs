@@ -325,6 +325,9 @@ export async function matcBuildFiles(source, language) {
   return source;
 }
 
+// Whether `name` is an identifier, as matc's snippets name their functions after a material.
+const isSnippetName = (name) => /^[A-Za-z_][A-Za-z0-9_]*$/.test(name ?? "");
+
 // A coated material's coat (its <name>.json's coat section) and its shader snippet, whose
 // functions the integrations call for both lobes: { weight, ior, roughness, color,
 // underCoatCoefficients (3 rows of c_0..c_3: the metal seen through the coat), snippet }.
@@ -333,7 +336,7 @@ async function loadCoat(material, snippetUrl, file) {
   for (const field of ["weight", "ior", "roughness"]) {
     if (typeof input[field] !== "number") throw new MatcWebError(`${file}: coat.input.${field} must be a number`);
   }
-  if (!/^[A-Za-z_][A-Za-z0-9_]*$/.test(material.name ?? "")) {
+  if (!isSnippetName(material.name)) {
     throw new MatcWebError(`${file}: name "${material.name}" is not the identifier matc's snippets use`);
   }
   const snippet = await (await fetchChecked(snippetUrl, "a coated material needs its own shader snippet; " +
@@ -360,7 +363,7 @@ export async function gltfExtensionMaterial(build, extension) {
     throw new MatcWebError(`its ${kGltfFresnelExtension} holds coefficients of basis ${extension?.basis} from ` +
                            `matc ${extension?.matcVersion}; the build's tables are basis ${build.basis} from matc ${version}`);
   }
-  if (!/^[A-Za-z_][A-Za-z0-9_]*$/.test(extension.name ?? "")) {
+  if (!isSnippetName(extension.name)) {
     throw new MatcWebError(`its ${kGltfFresnelExtension}.name is not the identifier matc writes`);
   }
   const rows = checkedRows(extension.coefficients, kGltfFresnelExtension, "coefficients");
