@@ -190,9 +190,10 @@ export class Matc {
     return new CompiledMaterial(handle, material);
   }
   // A glTF asset (a .glb's bytes, or a .gltf whose buffers are data URIs or given in `files` as
-  // parseMaterials takes them; `path` ends in .glb or .gltf) written back with each metal's compiled coefficients in the vendor extension
-  // MATC_materials_fresnel, every other byte as it was (`matc gltf`, docs/gltf.md):
-  // { bytes: Uint8Array, materials: CompiledMaterial[] (its metals, in the asset's order) }.
+  // parseMaterials takes them; `path` ends in .glb or .gltf) written back with each metal's
+  // compiled coefficients in the vendor extension MATC_materials_fresnel, every other byte as it
+  // was (`matc gltf`, docs/gltf.md): { bytes: Uint8Array, materials: CompiledMaterial[] (its
+  // metals, in the asset's order) }.
   compileGltf(bytes, path = "asset.glb", options = {}, { files } = {}) {
     const result = unwrapped(this.#module.compileGltf(checkedText(bytes, "bytes"), checkedString(path, "path"),
                                                       ...optionStrings(options), checkedFiles(files)));
