@@ -1,14 +1,16 @@
 # libmatc's sources in two lists: MATC_CORE_SOURCES, the compile path every build of the library
 # has (reading, fitting, compiling, evaluating, the texts; nothing outside the C++ library and
-# header-only dependencies), and MATC_NATIVE_SOURCES, the rest (glslang, SPIRV-Tools, OpenEXR,
-# pugixml, threads, files). The native library takes both; the WebAssembly one (js/) the first,
-# with material/materialx_unavailable.cpp. Paths are relative to compiler/.
+# header-only dependencies; MaterialX read by rapidxml), and MATC_NATIVE_SOURCES, the rest
+# (glslang, SPIRV-Tools, OpenEXR, pugixml, threads, files). The native library takes both (and
+# reads MaterialX with pugixml); the WebAssembly one (js/) the first. Paths are relative to
+# compiler/.
 set(MATC_CORE_SOURCES
   src/spirv/shader_language.cpp
   src/base/diagnostics.cpp
   src/base/echoed_text.cpp
   src/base/utf8.cpp
   src/base/csv_table.cpp
+  src/base/number_text.cpp
   src/base/embedded_file.cpp
   src/base/content_hash.cpp
   src/optics/coat.cpp
@@ -30,6 +32,12 @@ set(MATC_CORE_SOURCES
   src/material/memory_files.cpp
   src/material/material.cpp
   src/material/materialx_file.cpp
+  src/material/materialx_import.cpp
+  src/material/materialx_document.cpp
+  src/material/materialx_models.cpp
+  src/material/xml_well_formed.cpp
+  src/material/xml_tree.cpp
+  src/material/xml_tree_rapidxml.cpp
   src/material/document_import.cpp
   src/material/gltf_asset.cpp
   src/material/gltf_import.cpp
@@ -60,17 +68,14 @@ set(MATC_CORE_SOURCES
   src/api/gltf.cpp
 )
 set(MATC_NATIVE_SOURCES
+  src/material/xml_tree_pugixml.cpp
   src/api/batch.cpp
-  src/material/xml_well_formed.cpp
   src/basis/training_set.cpp
   src/basis/basis_polynomial_fit.cpp
   src/basis/basis_fit.cpp
   src/fit/coefficient_table.cpp
   src/fit/conductor_solver.cpp
   src/base/exclusive_file.cpp
-  src/material/materialx_import.cpp
-  src/material/materialx_document.cpp
-  src/material/materialx_models.cpp
   src/lut/analytic_lut_fit.cpp
   src/lut/split_sum_reference.cpp
   src/lut/comparison_lobes.cpp

@@ -12,7 +12,7 @@ packages=(
   glslang-dev glslang-tools spirv-tools spirv-headers spirv-cross libspirv-cross-c-shared-dev
   nlohmann-json3-dev libeigen3-dev libcli11-dev libfmt-dev libxxhash-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers libstb-dev libopenexr-dev
-  libpugixml-dev libfast-float-dev libtinygltf-dev emscripten
+  libpugixml-dev librapidxml-dev libfast-float-dev libtinygltf-dev emscripten
   clang libclang-rt-14-dev
   chromium fonts-dejavu-core
   bazel-bootstrap nginx

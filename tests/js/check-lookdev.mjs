@@ -1,8 +1,8 @@
 // The look-development page (js/package/lookdev/, docs/lookdev.md), served from the staged npm
 // package as a project's node_modules and driven through its controls in headless Chromium
 // (lookdev-check-page.mjs). For materials chosen as a person would (a preset, a colour-picker
-// metal in ACEScg, typed n and k, a coated metal, a pasted material file, a pasted glTF asset of
-// several metals, one chosen, a .gltf dropped with its buffer):
+// metal in ACEScg, typed n and k, a coated metal, a pasted material file, a pasted MaterialX
+// document and a pasted glTF asset of several metals, one chosen, a .gltf dropped with its buffer):
 //   - no console error or warning, no uncaught exception;
 //   - the probe pixels of the page's matc material (its three.js material, under the engine checks'
 //     environment, point and rect lights) equal the CPU runtime's (`matc eval`), to 1e-4;
@@ -34,6 +34,28 @@ const select = (selector, value) => ({ selector, value, event: "change" });
 const input = (selector, value) => ({ selector, value });
 const ior = (field, channel, value) => input(`[data-field='ior.${field}'][data-channel='${channel}']`, value);
 
+const kMaterialX = `<?xml version="1.0"?>
+<materialx version="1.39" colorspace="lin_rec709">
+  <standard_surface name="SR_gold" type="surfaceshader">
+    <input name="base_color" type="color3" value="0.944, 0.776, 0.373" />
+    <input name="metalness" type="float" value="1" />
+    <input name="specular_roughness" type="float" value="0.3" />
+  </standard_surface>
+  <surfacematerial name="gold_standard_surface" type="material">
+    <input name="surfaceshader" type="surfaceshader" nodename="SR_gold" />
+  </surfacematerial>
+  <open_pbr_surface name="SR_copper" type="surfaceshader">
+    <input name="base_color" type="color3" value="0.926, 0.721, 0.504" />
+    <input name="base_metalness" type="float" value="1" />
+    <input name="specular_color" type="color3" value="0.996, 0.957, 0.823" />
+    <input name="specular_roughness" type="float" value="0.3" />
+  </open_pbr_surface>
+  <surfacematerial name="copper_openpbr" type="material">
+    <input name="surfaceshader" type="surfaceshader" nodename="SR_copper" />
+  </surfacematerial>
+</materialx>
+`;
+
 // The cases, each through the page's controls. Probes need roughness 0.3 (engine-probes.mjs).
 const kCases = [
   { key: "preset", name: "Cr", bare: true, steps: [input("#preset", "Cr")], lights,
@@ -60,11 +82,16 @@ const kCases = [
     steps: [{ paste: JSON.stringify({ name: "pasted_steel", description: "pasted", roughness: 0.3,
                                       f82_tint: { f0: [0.56, 0.57, 0.58], tint: [0.9, 0.93, 1.0] } }) }],
     lights: ["environment", "point"],
-    refusals: [{ key: "pasted MaterialX", steps: [{ paste: "<?xml version=\"1.0\"?>\n<materialx version=\"1.38\"/>\n" }],
-                 messageSelector: ".message[data-for='document']",
-                 phrase: "pasted.mtlx: error: this build of matc does not read MaterialX documents" },
-               { key: "pasted broken JSON", steps: [{ paste: "{\"name\": \"x\",\n \"ior\": {\"n\": [1, 2" }],
+    refusals: [{ key: "pasted broken JSON", steps: [{ paste: "{\"name\": \"x\",\n \"ior\": {\"n\": [1, 2" }],
                  messageSelector: ".message[data-for='document']", phrase: "pasted.json:2:" }] },
+  // A MaterialX document of two metals (Standard Surface, OpenPBR), the second chosen; a document
+  // whose end tag does not match is refused at the tag, as natively.
+  { key: "pasted MaterialX document", name: "copper_openpbr", bare: true, choices: ["gold_standard_surface", "copper_openpbr"],
+    steps: [{ paste: kMaterialX }, select("#choice", "1")], lights: ["environment", "point"],
+    refusals: [{ key: "pasted MaterialX with a wrong end tag",
+                 steps: [{ paste: kMaterialX.replace("</open_pbr_surface>", "</open_pbr>") }],
+                 messageSelector: ".message[data-for='document']",
+                 phrase: "pasted.mtlx:16:5: error: malformed XML: Start-end tags mismatch" }] },
   // A glTF asset of two metals and a non-metal: the page offers its metals, the second chosen.
   { key: "pasted glTF asset", name: "Trim", bare: true, choices: ["Paint", "Trim"],
     steps: [{ paste: JSON.stringify({ asset: { version: "2.0" }, materials: [

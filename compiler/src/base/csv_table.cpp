@@ -7,10 +7,8 @@
 #include <string>
 
 #include <fmt/format.h>
-#if !defined(__cpp_lib_to_chars)
-// The WebAssembly build's libc++ (LLVM 14) has no floating-point std::from_chars.
-#include <fast_float/fast_float.h>
-#endif
+
+#include "matc/base/number_text.h"
 
 namespace matc {
 namespace {
@@ -41,21 +39,6 @@ std::vector<Field> split_fields(std::string_view line, std::size_t line_offset) 
     start = comma + 1;
   }
   return fields;
-}
-
-std::optional<double> parse_number(std::string_view text) {
-  if (text.empty()) return std::nullopt;
-  if (text.front() == '+') text.remove_prefix(1);
-  double value = 0.0;
-#if defined(__cpp_lib_to_chars)
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-#else
-  // Correctly rounded as std::from_chars; it gives infinity for a number past the largest double
-  // where std::from_chars fails, and the check below refuses both alike.
-  const auto [end, error] = fast_float::from_chars(text.data(), text.data() + text.size(), value);
-#endif
-  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
-  return value;
 }
 
 std::string normalized_header(std::string_view text) {
@@ -112,7 +95,7 @@ std::optional<std::vector<CsvRow>> read_numeric_csv(std::string_view text, std::
     }
     for (std::size_t i = 0; row_ok && i < fields.size(); ++i) {
       const auto value = parse_number(fields[i].text);
-      if (!value || !std::isfinite(*value)) {
+      if (!value) {
         row_ok = false;
         if (errors < kMaxReportedRowErrors) {
           diagnostics.error(locator.at(fields[i].offset), "value",

@@ -3,21 +3,21 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "matc/base/echoed_text.h"
+#include "matc/base/number_text.h"
 #include "matc/material/materialx_import.h"
 #include "xml_well_formed.h"
 
 namespace matc {
 namespace {
 
-bool is_connected(const pugi::xml_node& input) {
+bool is_connected(const XmlElement& input) {
   for (const char* attribute : {"nodename", "nodegraph", "output", "interfacename"})
-    if (!input.attribute(attribute).empty()) return true;
+    if (input.has_attribute(attribute)) return true;
   return false;
 }
 
@@ -49,13 +49,9 @@ std::optional<Rgb> parse_materialx_value(std::string_view text, MaterialXType ty
       item.remove_suffix(1);
     if (item.empty()) continue;
     if (count == 3) return std::nullopt;
-    if (item.front() == '+') item.remove_prefix(1);
-    double value = 0.0;
-    const auto [rest, error] = std::from_chars(item.data(), item.data() + item.size(), value);
-    if (error != std::errc() || rest != item.data() + item.size() || !std::isfinite(value)) {
-      return std::nullopt;
-    }
-    values[count++] = value;
+    const std::optional<double> value = parse_number(item);
+    if (!value) return std::nullopt;
+    values[count++] = *value;
   }
   const std::size_t expected = type == MaterialXType::float1 ? 1 : 3;
   if (count != expected) return std::nullopt;
@@ -72,65 +68,65 @@ MaterialXDocument::MaterialXDocument(std::string_view text, const std::string& p
                        fmt::format("malformed XML: {}", problem->message), std::string(allowed));
     return;
   }
-  const pugi::xml_parse_result parsed =
-      document_.load_buffer(text_.data(), text_.size(),
-                            pugi::parse_default | pugi::parse_trim_pcdata, pugi::encoding_utf8);
-  if (!parsed) {
-    diagnostics_.error(
-        locator_.at(static_cast<std::size_t>(std::max<std::ptrdiff_t>(parsed.offset, 0))), "",
-        fmt::format("malformed XML: {}", parsed.description()), std::string(allowed));
+  auto parsed = read_xml_tree(text_);
+  if (const auto* problem = std::get_if<XmlProblem>(&parsed)) {
+    diagnostics_.error(locator_.at(problem->offset), "",
+                       fmt::format("malformed XML: {}", problem->message), std::string(allowed));
     return;
   }
-  if (const auto duplicate = find_duplicate_attribute(document_)) {
-    diagnostics_.error(at(duplicate->element), "",
+  tree_ = std::move(std::get<XmlTree>(parsed));
+  if (tree_.top_level.empty()) {
+    diagnostics_.error(locator_.whole_file(), "", "malformed XML: No document element found",
+                       std::string(allowed));
+    return;
+  }
+  if (const auto duplicate = find_duplicate_attribute(tree_)) {
+    diagnostics_.error(at(*duplicate->element), "",
                        fmt::format("malformed XML: <{}> gives the attribute '{}' twice",
-                                   echoed(duplicate->element.name()), echoed(duplicate->name)),
+                                   echoed(duplicate->element->name), echoed(duplicate->name)),
                        "each attribute of an element at most once (XML 1.0 section 3.1)");
     return;
   }
-  root_ = document_.document_element();
-  if (std::string_view(root_.name()) != "materialx") {
-    diagnostics_.error(at(root_), "", fmt::format("the root element is <{}>", echoed(root_.name())),
+  root_ = tree_.top_level.front();
+  if (root_->name != "materialx") {
+    diagnostics_.error(at(*root_), "", fmt::format("the root element is <{}>", echoed(root_->name)),
                        "a MaterialX document, whose root element is <materialx>");
     return;
   }
   check_version();
   if (!read_document_space()) return;
   std::size_t elements = 0;
-  for (const pugi::xml_node& node : root_.children()) {
-    if (node.type() != pugi::node_element) continue;
+  for (const XmlElement* element : root_->children) {
     if (++elements > kMaxMaterialXElements) {
       diagnostics_.error(
-          at(node), "",
+          at(*element), "",
           fmt::format("the document has over {} top-level elements", kMaxMaterialXElements),
           "a document of at most that many elements");
       return;
     }
-    if (const char* name = node.attribute("name").value(); *name) nodes_.emplace(name, node);
+    if (const std::string_view name = element->attribute("name"); !name.empty())
+      nodes_.emplace(name, element);
   }
   readable_ = true;
 }
 
-SourceLocation MaterialXDocument::at(const pugi::xml_node& node) const {
-  // pugixml gives the offset of the element's name; diagnostics point at its '<'.
-  const std::ptrdiff_t offset = node.offset_debug();
-  return offset < 1 ? locator_.whole_file() : locator_.at(static_cast<std::size_t>(offset - 1));
+SourceLocation MaterialXDocument::at(const XmlElement& element) const {
+  return locator_.at(element.offset);
 }
 
 void MaterialXDocument::check_version() {
-  const std::string_view version = root_.attribute("version").value();
+  const std::string_view version = root_->attribute("version");
   if (version.empty()) return;
   for (const std::string_view known : {"1.36", "1.37", "1.38", "1.39"})
     if (version == known) return;
-  diagnostics_.warning(at(root_), "version",
+  diagnostics_.warning(at(*root_), "version",
                        fmt::format("MaterialX {} is not a version matc knows", echoed(version)),
                        "1.36 to 1.39; read as 1.39");
 }
 
 bool MaterialXDocument::read_document_space() {
-  const pugi::xml_attribute attribute = root_.attribute("colorspace");
-  if (attribute.empty()) return true;
-  const auto space = linear_space_of(attribute.value(), root_);
+  if (!root_->has_attribute("colorspace")) return true;
+  const auto space = linear_space_of(root_->attribute("colorspace"), *root_);
   if (!space) return false;
   space_ = *space;
   return true;
@@ -138,14 +134,14 @@ bool MaterialXDocument::read_document_space() {
 
 // The linear space a colorspace name stands for (an encoded one: the space it decodes into).
 std::optional<ColorSpace> MaterialXDocument::linear_space_of(std::string_view name,
-                                                             const pugi::xml_node& where) {
+                                                             const XmlElement& where) {
   if (const auto space = find_color_space(name)) return space;
   if (const auto decoded = decode_color_value(name, 0.0)) return decoded->space;
   unknown_space(where, "colorspace", name);
   return std::nullopt;
 }
 
-void MaterialXDocument::unknown_space(const pugi::xml_node& where, const std::string& field,
+void MaterialXDocument::unknown_space(const XmlElement& where, const std::string& field,
                                       std::string_view name) {
   diagnostics_.error(at(where), field, fmt::format("unknown colour space '{}'", echoed(name)),
                      "one of " + color_space_names() +
@@ -156,21 +152,20 @@ void MaterialXDocument::unknown_space(const pugi::xml_node& where, const std::st
 std::size_t MaterialXDocument::visit_materials(
     const std::function<void(const MaterialXShader&)>& visit) {
   std::size_t found = 0;
-  for (const pugi::xml_node& element : root_.children()) {
-    const std::string_view tag = element.name();
-    const std::string name = element.attribute("name").value();
+  for (const XmlElement* element : root_->children) {
+    const std::string_view tag = element->name;
+    const std::string name(element->attribute("name"));
     if (tag == "surfacematerial") {
       ++found;
-      const pugi::xml_node input =
-          element.find_child_by_attribute("input", "name", "surfaceshader");
+      const XmlElement* input = element->child_with("input", "name", "surfaceshader");
       if (!input) {
-        diagnostics_.note(at(element), name, "has no surfaceshader input; skipped");
+        diagnostics_.note(at(*element), name, "has no surfaceshader input; skipped");
         continue;
       }
-      const std::string shader_name = input.attribute("nodename").value();
+      const std::string_view shader_name = input->attribute("nodename");
       const auto shader = nodes_.find(shader_name);
       if (shader_name.empty() || shader == nodes_.end()) {
-        diagnostics_.error(at(input), name + ".surfaceshader",
+        diagnostics_.error(at(*input), name + ".surfaceshader",
                            shader_name.empty()
                                ? "names no node (nodename is missing)"
                                : fmt::format("names node '{}', which the document does not hold",
@@ -178,16 +173,16 @@ std::size_t MaterialXDocument::visit_materials(
                            "the name of a shader node at the top level of the document");
         continue;
       }
-      visit({element, shader->second, shader->second.name(), "input"});
+      visit({element, shader->second, shader->second->name, "input"});
     } else if (tag == "material") {
       ++found;
-      const pugi::xml_node shaderref = element.child("shaderref");
+      const XmlElement* shaderref = element->child("shaderref");
       if (!shaderref) {
-        diagnostics_.note(at(element), name, "has no <shaderref>; skipped");
+        diagnostics_.note(at(*element), name, "has no <shaderref>; skipped");
         continue;
       }
-      std::string model = shaderref.attribute("node").value();
-      const std::string_view nodedef = shaderref.attribute("nodedef").value();
+      std::string model(shaderref->attribute("node"));
+      const std::string_view nodedef = shaderref->attribute("nodedef");
       // 1.37 may name the node definition instead: ND_<node>_surfaceshader.
       if (model.empty() && nodedef.starts_with("ND_") && nodedef.ends_with("_surfaceshader"))
         model = nodedef.substr(3, nodedef.size() - 3 - std::string_view("_surfaceshader").size());
@@ -195,10 +190,10 @@ std::size_t MaterialXDocument::visit_materials(
     } else if (tag == "xi:include") {
       // Safe (nothing outside the document is read), but its materials would vanish silently.
       diagnostics_.note(
-          at(element), "xi:include",
+          at(*element), "xi:include",
           fmt::format("includes '{}', which matc does not read: materials defined there are not "
                       "imported",
-                      echoed(element.attribute("href").value(), 128)),
+                      echoed(element->attribute("href"), 128)),
           "give that document to matc as an input of its own");
     }
   }
@@ -207,11 +202,11 @@ std::size_t MaterialXDocument::visit_materials(
 
 MaterialXInput MaterialXDocument::read_input(const MaterialXShader& shader, std::string_view name,
                                              MaterialXType type, const std::string& field) {
-  const pugi::xml_node input =
-      shader.node.find_child_by_attribute(shader.input_tag, "name", std::string(name).c_str());
+  const XmlElement* found = shader.node->child_with(shader.input_tag, "name", name);
   MaterialXInput result;
-  result.location = at(shader.material);
-  if (!input) return result;
+  result.location = at(*shader.material);
+  if (!found) return result;
+  const XmlElement& input = *found;
   result.location = at(input);
   if (is_connected(input)) {
     result.state = MaterialXInput::State::connected;
@@ -220,21 +215,21 @@ MaterialXInput MaterialXDocument::read_input(const MaterialXShader& shader, std:
     return result;
   }
   result.state = MaterialXInput::State::invalid;
-  const std::string_view declared = input.attribute("type").value();
+  const std::string_view declared = input.attribute("type");
   if (!declared.empty() && declared != materialx_type_name(type)) {
     diagnostics_.error(
         result.location, field, fmt::format("has type '{}'", echoed(declared)),
         fmt::format("{} declares {} a {}", shader.model, name, materialx_type_name(type)));
     return result;
   }
-  const auto parsed = parse_materialx_value(input.attribute("value").value(), type);
+  const auto parsed = parse_materialx_value(input.attribute("value"), type);
   if (!parsed) {
-    diagnostics_.error(
-        result.location, field,
-        fmt::format("value '{}' is not a {}", echoed(input.attribute("value").value()),
-                    materialx_type_name(type)),
-        type == MaterialXType::float1 ? "one finite number"
-                                      : "three finite numbers separated by commas or spaces");
+    diagnostics_.error(result.location, field,
+                       fmt::format("value '{}' is not a {}", echoed(input.attribute("value")),
+                                   materialx_type_name(type)),
+                       type == MaterialXType::float1
+                           ? "one finite number"
+                           : "three finite numbers separated by commas or spaces");
     return result;
   }
   result.value = *parsed;
@@ -245,27 +240,27 @@ MaterialXInput MaterialXDocument::read_input(const MaterialXShader& shader, std:
 
 bool MaterialXDocument::is_neutral(const MaterialXShader& shader, std::string_view name,
                                    double neutral) const {
-  const pugi::xml_node input =
-      shader.node.find_child_by_attribute(shader.input_tag, "name", std::string(name).c_str());
+  const XmlElement* input = shader.node->child_with(shader.input_tag, "name", name);
   if (!input) return true;
-  if (is_connected(input)) return false;
-  const std::string_view text = input.attribute("value").value();
+  if (is_connected(*input)) return false;
+  const std::string_view text = input->attribute("value");
   if (text == "false" || text == "true") return (text == "true" ? 1.0 : 0.0) == neutral;
   for (const MaterialXType type : {MaterialXType::float1, MaterialXType::color3}) {
     if (const auto value = parse_materialx_value(text, type))
-      return std::ranges::all_of(*value, [neutral](double v) { return v == neutral; });
+      return std::all_of(value->begin(), value->end(),
+                         [neutral](double v) { return v == neutral; });
   }
   return false;
 }
 
 // Decodes an encoded colour and converts it into the document's working space.
-bool MaterialXDocument::convert_color(Rgb& value, const pugi::xml_node& input,
+bool MaterialXDocument::convert_color(Rgb& value, const XmlElement& input,
                                       const std::string& field) {
   // The colorspace in force at the input: its own attribute, else its nearest ancestor's.
   std::string space_name(color_space_name(kDefaultColorSpace));
-  for (pugi::xml_node node = input; node; node = node.parent()) {
-    if (const pugi::xml_attribute attribute = node.attribute("colorspace"); !attribute.empty()) {
-      space_name = attribute.value();
+  for (const XmlElement* element = &input; element; element = element->parent) {
+    if (element->has_attribute("colorspace")) {
+      space_name = element->attribute("colorspace");
       break;
     }
   }
@@ -286,37 +281,37 @@ bool MaterialXDocument::convert_color(Rgb& value, const pugi::xml_node& input,
   return true;
 }
 
-std::string MaterialXDocument::describe_connection(const pugi::xml_node& input) const {
+std::string MaterialXDocument::describe_connection(const XmlElement& input) const {
   std::string source;
-  if (const char* graph = input.attribute("nodegraph").value(); *graph) {
+  if (const std::string_view graph = input.attribute("nodegraph"); !graph.empty()) {
     source = fmt::format("node graph '{}'", echoed(graph));
-  } else if (const char* node = input.attribute("nodename").value(); *node) {
+  } else if (const std::string_view node = input.attribute("nodename"); !node.empty()) {
     source = fmt::format("node '{}'", echoed(node));
   } else {
-    source = fmt::format("interface input '{}'", echoed(input.attribute("interfacename").value()));
+    source = fmt::format("interface input '{}'", echoed(input.attribute("interfacename")));
   }
   return fmt::format("is driven by {}, not a constant", source);
 }
 
 // The image file an input reads when it is a plain image read (directly, or the output of a node
 // graph that is one), else empty.
-std::string MaterialXDocument::image_file(const pugi::xml_node& input) const {
-  pugi::xml_node node;
-  if (const char* graph_name = input.attribute("nodegraph").value(); *graph_name) {
+std::string MaterialXDocument::image_file(const XmlElement& input) const {
+  const XmlElement* node = nullptr;
+  if (const std::string_view graph_name = input.attribute("nodegraph"); !graph_name.empty()) {
     const auto graph = nodes_.find(graph_name);
     if (graph == nodes_.end()) return {};
-    const char* output_name = input.attribute("output").value();
-    pugi::xml_node output =
-        *output_name ? graph->second.find_child_by_attribute("output", "name", output_name)
-                     : graph->second.child("output");
-    node = graph->second.find_child_by_attribute("name", output.attribute("nodename").value());
-  } else if (const char* node_name = input.attribute("nodename").value(); *node_name) {
+    const std::string_view output_name = input.attribute("output");
+    const XmlElement* output = output_name.empty()
+                                   ? graph->second->child("output")
+                                   : graph->second->child_with("output", "name", output_name);
+    node = graph->second->child_with("", "name", output ? output->attribute("nodename") : "");
+  } else if (const std::string_view node_name = input.attribute("nodename"); !node_name.empty()) {
     const auto found = nodes_.find(node_name);
     if (found != nodes_.end()) node = found->second;
   }
-  const std::string_view kind = node.name();
-  if (kind != "image" && kind != "tiledimage") return {};
-  return node.find_child_by_attribute("input", "name", "file").attribute("value").value();
+  if (!node || (node->name != "image" && node->name != "tiledimage")) return {};
+  const XmlElement* file = node->child_with("input", "name", "file");
+  return file ? std::string(file->attribute("value")) : std::string();
 }
 
 }  // namespace matc

@@ -13,10 +13,9 @@
 #include <string_view>
 #include <vector>
 
-#include <pugixml.hpp>
-
 #include "matc/base/diagnostics.h"
 #include "matc/optics/color_space.h"
+#include "xml_tree.h"
 
 namespace matc {
 
@@ -24,11 +23,11 @@ enum class MaterialXType { float1, color3 };
 
 // A material element and the shader it uses.
 struct MaterialXShader {
-  pugi::xml_node material;  // <surfacematerial> or <material>
-  pugi::xml_node node;      // the shader node, or the <shaderref>
-  std::string model;        // the shading model's node name (empty when none is named)
-  const char* input_tag;    // "input" or "bindinput"
-  std::string name() const { return material.attribute("name").value(); }
+  const XmlElement* material;  // <surfacematerial> or <material>
+  const XmlElement* node;      // the shader node, or the <shaderref>
+  std::string model;           // the shading model's node name (empty when none is named)
+  const char* input_tag;       // "input" or "bindinput"
+  std::string name() const { return std::string(material->attribute("name")); }
 };
 
 // One input of a shader as read.
@@ -63,25 +62,25 @@ class MaterialXDocument {
   // read as 0 and 1).
   bool is_neutral(const MaterialXShader& shader, std::string_view name, double neutral) const;
 
-  SourceLocation at(const pugi::xml_node& node) const;
+  SourceLocation at(const XmlElement& element) const;
   SourceLocation whole_file() const { return locator_.whole_file(); }
 
  private:
   void check_version();
   bool read_document_space();
-  std::optional<ColorSpace> linear_space_of(std::string_view name, const pugi::xml_node& where);
-  void unknown_space(const pugi::xml_node& where, const std::string& field, std::string_view name);
-  bool convert_color(Rgb& value, const pugi::xml_node& input, const std::string& field);
-  std::string describe_connection(const pugi::xml_node& input) const;
-  std::string image_file(const pugi::xml_node& input) const;
+  std::optional<ColorSpace> linear_space_of(std::string_view name, const XmlElement& where);
+  void unknown_space(const XmlElement& where, const std::string& field, std::string_view name);
+  bool convert_color(Rgb& value, const XmlElement& input, const std::string& field);
+  std::string describe_connection(const XmlElement& input) const;
+  std::string image_file(const XmlElement& input) const;
 
   std::string_view text_;
   TextLocator locator_;
   Diagnostics& diagnostics_;
-  pugi::xml_document document_;
-  pugi::xml_node root_;
+  XmlTree tree_;
+  const XmlElement* root_ = nullptr;
   ColorSpace space_ = kDefaultColorSpace;
-  std::map<std::string, pugi::xml_node> nodes_;  // top-level elements by name
+  std::map<std::string, const XmlElement*, std::less<>> nodes_;  // top-level elements by name
   bool readable_ = false;
 };
 

@@ -21,9 +21,9 @@ namespace {
 
 using nlohmann::ordered_json;
 
-class Importer {
+class MaterialXImporter {
  public:
-  Importer(std::string_view text, const std::string& path)
+  MaterialXImporter(std::string_view text, const std::string& path)
       : document_(text, path, result_.diagnostics) {}
 
   MaterialXImport run() {
@@ -112,7 +112,7 @@ class Importer {
     const MaterialXShadingModel* model = find_materialx_shading_model(shader.model);
     if (!model) {
       result_.diagnostics.note(
-          document_.at(shader.material), element_name,
+          document_.at(*shader.material), element_name,
           shader.model.empty()
               ? "names no shading model; skipped"
               : fmt::format("uses the shading model '{}', which matc does not import; skipped",
@@ -146,7 +146,7 @@ class Importer {
     }
     if (metal == 0.0) {
       result_.diagnostics.note(
-          document_.at(shader.material), element_name,
+          document_.at(*shader.material), element_name,
           fmt::format("is not metallic ({} {}); skipped", model->metalness.name,
                       metalness->given ? "0" : "absent, so 0"));
       return;
@@ -186,7 +186,7 @@ class Importer {
     }
 
     ordered_json material_json;
-    material_json["name"] = material_name(element_name, shader.material);
+    material_json["name"] = material_name(element_name, *shader.material);
     material_json["description"] =
         fmt::format("Imported from {} (material '{}', {}{})",
                     std::filesystem::path(document_.path()).filename().string(), element_name,
@@ -206,7 +206,7 @@ class Importer {
       material_json["coat"] = std::move(*coat);
     }
     if (material_json["name"].get<std::string>().empty()) return;  // a name clash, reported
-    add_imported_material(result_, material_json, document_.path(), document_.at(shader.material),
+    add_imported_material(result_, material_json, document_.path(), document_.at(*shader.material),
                           material_json["name"].get<std::string>());
   }
 
@@ -275,9 +275,10 @@ class Importer {
   bool check_inputs(const MaterialXShader& shader, const MaterialXShadingModel& model) {
     std::map<std::string, SourceLocation> seen;
     bool unique = true;
-    for (const pugi::xml_node& input : shader.node.children(shader.input_tag)) {
-      const std::string name = input.attribute("name").value();
-      const SourceLocation location = document_.at(input);
+    for (const XmlElement* input : shader.node->children) {
+      if (input->name != shader.input_tag) continue;
+      const std::string name(input->attribute("name"));
+      const SourceLocation location = document_.at(*input);
       const std::string field = fmt::format("{}.{}", shader.name(), echoed(name));
       const auto [first, inserted] = seen.emplace(name, location);
       if (!inserted) {
@@ -288,10 +289,11 @@ class Importer {
         unique = false;
         continue;
       }
-      if (std::ranges::find(model.inputs, name) != model.inputs.end()) continue;
+      if (std::find(model.inputs.begin(), model.inputs.end(), name) != model.inputs.end()) continue;
       std::string message = fmt::format("is not an input of {}; ignored", model.node);
       for (const MaterialXShadingModel& other : materialx_shading_models()) {
-        if (other.node != model.node && std::ranges::find(other.inputs, name) != other.inputs.end())
+        if (other.node != model.node &&
+            std::find(other.inputs.begin(), other.inputs.end(), name) != other.inputs.end())
           message = fmt::format("is an input of {}, not of {}; ignored", other.node, model.node);
       }
       if (const auto suggestion = closest_match(name, model.inputs))
@@ -311,7 +313,7 @@ class Importer {
       list += fmt::format("{}{}", list.empty() ? "" : ", ", entry.name);
     }
     if (list.empty()) return;
-    result_.diagnostics.note(document_.at(shader.material), material,
+    result_.diagnostics.note(document_.at(*shader.material), material,
                              fmt::format("not carried: {} (matc compiles the metal's Fresnel; "
                                          "docs/interchange.md lists what is left out and why)",
                                          list));
@@ -319,7 +321,7 @@ class Importer {
 
   // The matc name for a material element: sanitised, and unique in the document ignoring case.
   // Empty after reporting a clash.
-  std::string material_name(const std::string& element_name, const pugi::xml_node& material) {
+  std::string material_name(const std::string& element_name, const XmlElement& material) {
     const SourceLocation location = document_.at(material);
     return names_.claim(
         element_name, location, element_name,
@@ -339,7 +341,7 @@ bool materialx_supported() {
 }
 
 MaterialXImport import_materialx(std::string_view text, const std::string& path) {
-  return Importer(text, path).run();
+  return MaterialXImporter(text, path).run();
 }
 
 }  // namespace matc

@@ -85,13 +85,16 @@ std::optional<XmlProblem> find_xml_character_problem(std::string_view text) {
     }
     at += length;
   }
-  // References are expanded everywhere but in comments, CDATA and processing instructions.
+  // References are expanded everywhere but in comments, CDATA and processing instructions, whose
+  // openings inside a start tag (in an attribute's value) are text.
+  std::size_t tag_end = 0;  // the end of the start tag `at` is in, when it is in one
   for (std::size_t at = 0; at < text.size();) {
-    if (text[at] == '<') {
+    if (text[at] == '<' && at >= tag_end) {
       if (const std::size_t end = end_of_literal_markup(text, at); end != std::string_view::npos) {
         at = end;
         continue;
       }
+      if (at + 1 < text.size() && text[at + 1] != '/') tag_end = end_of_start_tag(text, at).first;
     }
     if (text.substr(at).starts_with("&#")) {
       if (auto problem = check_character_reference(text, at)) return problem;
@@ -101,20 +104,17 @@ std::optional<XmlProblem> find_xml_character_problem(std::string_view text) {
   return std::nullopt;
 }
 
-std::optional<DuplicateAttribute> find_duplicate_attribute(const pugi::xml_node& root) {
-  std::vector<pugi::xml_node> pending{root};
+std::optional<DuplicateAttribute> find_duplicate_attribute(const XmlTree& tree) {
+  std::vector<const XmlElement*> pending(tree.top_level.rbegin(), tree.top_level.rend());
   while (!pending.empty()) {
-    const pugi::xml_node node = pending.back();
+    const XmlElement* element = pending.back();
     pending.pop_back();
     std::set<std::string_view> names;
-    for (const pugi::xml_attribute& attribute : node.attributes()) {
-      if (!names.insert(attribute.name()).second) return DuplicateAttribute{node, attribute.name()};
+    for (const XmlAttribute& attribute : element->attributes) {
+      if (!names.insert(attribute.name).second) return DuplicateAttribute{element, attribute.name};
     }
     // Children pushed last-first, so elements are visited in document order.
-    std::vector<pugi::xml_node> children;
-    for (const pugi::xml_node& child : node.children())
-      if (child.type() == pugi::node_element) children.push_back(child);
-    pending.insert(pending.end(), children.rbegin(), children.rend());
+    pending.insert(pending.end(), element->children.rbegin(), element->children.rend());
   }
   return std::nullopt;
 }
