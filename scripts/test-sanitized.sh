@@ -35,6 +35,10 @@ mtlx_corpus=$(mktemp -d)
 trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus"' EXIT
 build-fuzz/tests/fuzz/matc_materialx_fuzzer -max_total_time=15 -max_len=4096 \
   -dict=tests/fuzz/materialx.dict -print_final_stats=1 "$mtlx_corpus" tests/fuzz/corpus_materialx 2>&1 | tail -n 8
+# MaterialX's two XML readers, pugixml (native) and rapidxml (WebAssembly), against each other on
+# the same seeds (its inputs go to the importer's scratch corpus): 10 s.
+build-fuzz/tests/fuzz/matc_xml_tree_fuzzer -max_total_time=10 -max_len=4096 \
+  -dict=tests/fuzz/materialx.dict -print_final_stats=1 "$mtlx_corpus" tests/fuzz/corpus_materialx 2>&1 | tail -n 8
 # The glTF importer (assets re-read and compiled; first byte: .glb when odd): 10 s.
 gltf_corpus=$(mktemp -d)
 trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus" "$gltf_corpus"' EXIT
