@@ -42,10 +42,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (matc::find_xml_character_problem(text)) return 0;  // refused before either reads it
   const auto pugixml = matc::read_xml_tree(text, matc::XmlLibrary::pugixml);
   // matc's own structure check refuses only what XML 1.0 forbids and pugixml lets through (text
-  // beside the root), what is nested too deep, and what pugixml refuses itself.
+  // beside the root), what is nested too deep, the document types the two libraries would end in
+  // different places ("which matc does not read"), and what pugixml refuses itself.
   if (const auto* problem = std::get_if<matc::XmlProblem>(&pugixml);
       problem && problem->message != matc::kXmlTextOutsideRoot &&
       problem->message.find("nested over") == std::string::npos &&
+      problem->message.find("which matc does not read") == std::string::npos &&
       std::holds_alternative<matc::XmlTree>(matc::parse_xml_with_pugixml(text))) {
     std::cerr << problem->offset << ": " << problem->message << "\n";
     differ("matc's structure check refuses what pugixml reads");

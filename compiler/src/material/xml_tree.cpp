@@ -12,8 +12,8 @@ bool is_xml_space(char c) {
   return c == ' ' || c == '\t' || c == '\n' || c == '\r';
 }
 
-// Where the markup opening at `text[at]` ends, for the markup that holds no elements (comments,
-// CDATA sections, processing instructions, declarations); npos when a tag opens there.
+}  // namespace
+
 std::size_t end_of_other_markup(std::string_view text, std::size_t at) {
   const std::string_view rest = text.substr(at);
   for (const auto& [open, close] : {std::pair<std::string_view, std::string_view>{"<!--", "-->"},
@@ -26,8 +26,6 @@ std::size_t end_of_other_markup(std::string_view text, std::size_t at) {
   }
   return std::string_view::npos;
 }
-
-}  // namespace
 
 // A quote opens a value only after '=' (with white space between), as in both libraries, so an
 // attribute name holding a quote (which rapidxml accepts) cannot hide the tags after it.
@@ -65,6 +63,26 @@ std::optional<XmlProblem> markup_problem(std::string_view text, std::size_t at, 
     return std::nullopt;
   if (!rest.starts_with("<!DOCTYPE")) return XmlProblem{at + 2, "Could not determine tag type"};
   if (depth > 0) return XmlProblem{at, "Error parsing document type declaration"};
+  // rapidxml ends a document type at its first '>' (past brackets); pugixml reads its quoted
+  // literals and internal subset. Only the form both end alike is read: no '[', and no '>' inside
+  // a quoted literal. MaterialX documents have no document type at all.
+  char quote = 0;
+  for (std::size_t i = at + 9; i < text.size() && text[i] != '>'; ++i) {
+    // rapidxml counts brackets in quoted literals too.
+    if (text[i] == '[' || (!quote && text[i] == '<')) {
+      return XmlProblem{i,
+                        "a document type holding '[' or '<' (an internal subset), which matc "
+                        "does not read"};
+    }
+    if (quote) {
+      quote = text[i] == quote ? 0 : quote;
+    } else if (text[i] == '"' || text[i] == '\'') {
+      quote = text[i];
+    }
+  }
+  if (quote)
+    return XmlProblem{at,
+                      "a document type with a '>' in a quoted literal, which matc does not read"};
   return std::nullopt;
 }
 

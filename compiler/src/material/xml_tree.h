@@ -6,6 +6,7 @@
 // comments and processing instructions are dropped). `matc_xml_tree_fuzzer` holds the two to it.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <deque>
 #include <optional>
@@ -64,6 +65,11 @@ inline constexpr std::string_view kXmlTextOutsideRoot = "text outside the root e
 // native library has both, so tests and the fuzzer compare them).
 XmlLibrary default_xml_library();
 
+// Where the markup opening at `text[at]` == '<' ends (past its closing delimiter), for the markup
+// that holds no elements: comments, CDATA sections, processing instructions, declarations ("<!",
+// up to the first '>'). npos when a tag opens there.
+std::size_t end_of_other_markup(std::string_view text, std::size_t at);
+
 // The end of the start tag opening at `text[at]` == '<' (past its '>'; the text's end when it has
 // none), and whether the tag closes itself ("/>"), read as both libraries read a well-formed tag.
 std::pair<std::size_t, bool> end_of_start_tag(std::string_view text, std::size_t at);
@@ -74,6 +80,35 @@ std::pair<std::size_t, bool> end_of_start_tag(std::string_view text, std::size_t
 // it, pugixml would keep it), and so is a document with no element.
 std::variant<XmlTree, XmlProblem> read_xml_tree(std::string_view text,
                                                 XmlLibrary library = default_xml_library());
+
+// Builds the tree of a library's parse depth first with a stack (no recursion, whatever the
+// nesting): `roots` its top-level element nodes, `children(node, visit)` calls `visit` on a node's
+// child element nodes in order, `fill(node, element)` sets an element's name, place and
+// attributes. For the two libraries' adapters.
+template <class Node, class Children, class Fill>
+XmlTree build_xml_tree(const std::vector<Node>& roots, Children children, Fill fill) {
+  XmlTree tree;
+  std::vector<std::pair<Node, XmlElement*>> pending;
+  const auto add = [&](const Node& node, XmlElement* parent) {
+    XmlElement& element = tree.elements.emplace_back();
+    fill(node, element);
+    element.parent = parent;
+    (parent ? parent->children : tree.top_level).push_back(&element);
+    pending.emplace_back(node, &element);
+  };
+  for (const Node& root : roots)
+    add(root, nullptr);
+  std::reverse(pending.begin(), pending.end());
+  while (!pending.empty()) {
+    const Node node = pending.back().first;
+    XmlElement* element = pending.back().second;
+    pending.pop_back();
+    const std::size_t first = pending.size();
+    children(node, [&](const Node& child) { add(child, element); });
+    std::reverse(pending.begin() + static_cast<std::ptrdiff_t>(first), pending.end());
+  }
+  return tree;
+}
 
 // The libraries' own parses (xml_tree_pugixml.cpp, xml_tree_rapidxml.cpp), for read_xml_tree.
 std::variant<XmlTree, XmlProblem> parse_xml_with_pugixml(std::string_view text);

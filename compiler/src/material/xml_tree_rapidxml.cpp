@@ -192,44 +192,32 @@ std::variant<XmlTree, XmlProblem> parse_xml_with_rapidxml(std::string_view text)
                         std::string(kXmlTextOutsideRoot)};
     }
   }
-  XmlTree tree;
+  using Node = const rapidxml::xml_node<>*;
+  std::vector<Node> roots;
+  for (Node node = document.first_node(); node; node = node->next_sibling())
+    if (node->type() == rapidxml::node_element) roots.push_back(node);
   std::optional<XmlProblem> refused;
-  std::vector<std::pair<const rapidxml::xml_node<>*, XmlElement*>> pending;
-  const auto add = [&](const rapidxml::xml_node<>* node, XmlElement* parent) {
-    if (const auto problem = start_tag_problem(node); problem && !refused) {
-      refused =
-          XmlProblem{static_cast<std::size_t>(problem->first - buffer.data()), problem->second};
-    }
-    XmlElement& element = tree.elements.emplace_back();
-    element.name.assign(node->name(), node->name_size());
-    // The name follows the element's '<'.
-    element.offset = static_cast<std::size_t>(node->name() - buffer.data()) - 1;
-    for (const rapidxml::xml_attribute<>* attribute = node->first_attribute(); attribute;
-         attribute = attribute->next_attribute()) {
-      element.attributes.push_back(
-          {std::string(attribute->name(), attribute->name_size()),
-           attribute_value({attribute->value(), attribute->value_size()})});
-    }
-    element.parent = parent;
-    if (parent) {
-      parent->children.push_back(&element);
-    } else {
-      tree.top_level.push_back(&element);
-    }
-    pending.emplace_back(node, &element);
-  };
-  for (const rapidxml::xml_node<>* node = document.first_node(); node; node = node->next_sibling())
-    if (node->type() == rapidxml::node_element) add(node, nullptr);
-  std::reverse(pending.begin(), pending.end());
-  while (!pending.empty()) {
-    const auto [node, element] = pending.back();
-    pending.pop_back();
-    const std::size_t first = pending.size();
-    for (const rapidxml::xml_node<>* child = node->first_node(); child;
-         child = child->next_sibling())
-      if (child->type() == rapidxml::node_element) add(child, element);
-    std::reverse(pending.begin() + static_cast<std::ptrdiff_t>(first), pending.end());
-  }
+  XmlTree tree = build_xml_tree(
+      roots,
+      [](Node node, const auto& visit) {
+        for (Node child = node->first_node(); child; child = child->next_sibling())
+          if (child->type() == rapidxml::node_element) visit(child);
+      },
+      [&](Node node, XmlElement& element) {
+        if (const auto problem = start_tag_problem(node); problem && !refused) {
+          refused =
+              XmlProblem{static_cast<std::size_t>(problem->first - buffer.data()), problem->second};
+        }
+        element.name.assign(node->name(), node->name_size());
+        // The name follows the element's '<'.
+        element.offset = static_cast<std::size_t>(node->name() - buffer.data()) - 1;
+        for (const rapidxml::xml_attribute<>* attribute = node->first_attribute(); attribute;
+             attribute = attribute->next_attribute()) {
+          element.attributes.push_back(
+              {std::string(attribute->name(), attribute->name_size()),
+               attribute_value({attribute->value(), attribute->value_size()})});
+        }
+      });
   if (refused) return *refused;
   return tree;
 }

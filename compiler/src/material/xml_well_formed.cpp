@@ -19,21 +19,6 @@ bool is_xml_char(char32_t c) {
          (c >= 0xE000 && c <= 0xFFFD) || (c >= 0x10000 && c <= 0x10FFFF);
 }
 
-// Where the markup that `text[at]` opens ends (past its closing delimiter), for the constructs
-// whose text holds no references: comments, CDATA sections, processing instructions. npos when
-// none opens there.
-std::size_t end_of_literal_markup(std::string_view text, std::size_t at) {
-  const std::string_view rest = text.substr(at);
-  for (const auto& [open, close] : {std::pair<std::string_view, std::string_view>{"<!--", "-->"},
-                                    {"<![CDATA[", "]]>"},
-                                    {"<?", "?>"}}) {
-    if (!rest.starts_with(open)) continue;
-    const std::size_t end = text.find(close, at + open.size());
-    return end == std::string_view::npos ? text.size() : end + close.size();
-  }
-  return std::string_view::npos;
-}
-
 // The problem with the character reference at `text[at]` ("&#..."), if any. Its digits are read
 // whole, however many (pugixml expands "&#0000000000001;" to U+0001, and wraps values past 32
 // bits), and scanned once, so a document of unterminated references stays linear.
@@ -85,12 +70,12 @@ std::optional<XmlProblem> find_xml_character_problem(std::string_view text) {
     }
     at += length;
   }
-  // References are expanded everywhere but in comments, CDATA and processing instructions, whose
-  // openings inside a start tag (in an attribute's value) are text.
+  // References are expanded everywhere but in comments, CDATA, processing instructions and
+  // declarations, whose openings inside a start tag (in an attribute's value) are text.
   std::size_t tag_end = 0;  // the end of the start tag `at` is in, when it is in one
   for (std::size_t at = 0; at < text.size();) {
     if (text[at] == '<' && at >= tag_end) {
-      if (const std::size_t end = end_of_literal_markup(text, at); end != std::string_view::npos) {
+      if (const std::size_t end = end_of_other_markup(text, at); end != std::string_view::npos) {
         at = end;
         continue;
       }

@@ -137,6 +137,14 @@ TEST(XmlTree, BothRefuseWithTheSameWordsAtTheSamePlace) {
                        "Error parsing document declaration/processing instruction");
   expect_refused_alike("<a><!x></a>", 5, "Could not determine tag type");
   expect_refused_alike("<a><!DOCTYPE a></a>", 3, "Error parsing document type declaration");
+  // Document types both libraries end at the same '>' read alike; the others are refused.
+  read_both_alike("<!DOCTYPE materialx SYSTEM \"materialx.dtd\">\n<materialx/>");
+  const std::string subset =
+      "a document type holding '[' or '<' (an internal subset), which matc does not read";
+  expect_refused_alike("<!DOCTYPE a [<!ELEMENT a ANY>]><a/>", 12, subset);
+  expect_refused_alike("<!DOCTYPE a SYSTEM \"a[.dtd\"><a/>", 21, subset);
+  expect_refused_alike("<!DOCTYPE a SYSTEM \"x>y\"><a/>", 0,
+                       "a document type with a '>' in a quoted literal, which matc does not read");
   std::string deep;
   for (std::size_t i = 0; i <= kMaxXmlDepth; ++i)
     deep += "<e>";
