@@ -1,6 +1,7 @@
 #include "matc/api/gltf.h"
 
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -17,6 +18,11 @@
 namespace matc::api {
 namespace {
 
+// Schlick's curve at F0 = 0: F82-tint with a white tint, as the importer writes a glTF metal.
+constexpr std::string_view kZeroF0Schlick =
+    R"({"name": "zero_f0", "color_space": "lin_rec709",
+        "f82_tint": {"f0": [0, 0, 0], "tint": [1, 1, 1]}})";
+
 void require_gltf_path(std::string_view path) {
   if (!is_gltf_path(path))
     throw std::invalid_argument(fmt::format(
@@ -32,12 +38,19 @@ GltfAsset compile_imported(std::string_view bytes, const std::string& path,
   const std::vector<Diagnostic> notes = public_diagnostics(imported.diagnostics);
   GltfAsset asset;
   std::map<std::size_t, nlohmann::ordered_json> extensions;
+  // The coefficients at F0 = 0 of Schlick's curve, for the textured metals (the same for each).
+  std::optional<CompiledMaterial> zero_f0;
   for (ImportedMaterial& material : imported.materials) {
     const std::size_t index = material.document_index;
+    const bool per_pixel_f0 = material.per_pixel_f0;
     Material value(std::make_shared<const matc::Material>(std::move(material.material)), notes);
     asset.materials.push_back(compile(value, options));
-    extensions.emplace(index, gltf_fresnel_extension(asset.materials.back().value(),
-                                                     runtime::shipped_basis(basis)));
+    if (per_pixel_f0 && !zero_f0) {
+      zero_f0 = compile(parse_materials(kZeroF0Schlick, "zero_f0.json").front(), options);
+    }
+    extensions.emplace(
+        index, gltf_fresnel_extension(asset.materials.back().value(), runtime::shipped_basis(basis),
+                                      per_pixel_f0 ? &zero_f0->value() : nullptr));
   }
   Diagnostics diagnostics;
   std::optional<GltfWithExtensions> written = gltf_with_fresnel_extensions(

@@ -193,13 +193,15 @@ std::vector<std::string> external_uris(const nlohmann::json& root) {
 }  // namespace
 
 ordered_json gltf_fresnel_extension(const CompiledMaterial& compiled,
-                                    const runtime::BasisView& basis) {
+                                    const runtime::BasisView& basis,
+                                    const CompiledMaterial* zero_f0) {
   ordered_json out;
   out["name"] = compiled.material.name;
   out["basis"] = runtime::basis_name(basis.kind);
   out["matcVersion"] = kVersion;
   out["colorSpace"] = color_space_name(compiled.color.working_space);
   out["coefficients"] = coefficient_rows_json(compiled.coefficients);
+  if (zero_f0) out["zeroF0Coefficients"] = coefficient_rows_json(zero_f0->coefficients);
   out["maxError"] = rgb_json(compiled.accuracy.decomposition.max_abs);
   if (compiled.coat) {
     const CompiledCoat& coat = *compiled.coat;

@@ -144,10 +144,6 @@ class Importer {
           fmt::format("partial metalness (metallicFactor {}: compiled as a full "
                       "metal; the engine mixes in its dielectric)",
                       pbr.metallicFactor));
-    if (pbr.baseColorTexture.index >= 0)
-      not_carried.push_back(
-          "baseColorTexture (F0 is baseColorFactor; `matc bake` bakes a "
-          "textured metal)");
     if (pbr.metallicRoughnessTexture.index >= 0)
       not_carried.push_back("metallicRoughnessTexture's metalness (compiled as a full metal)");
 
@@ -163,6 +159,19 @@ class Importer {
     material_json["roughness"] = pbr.roughnessFactor;
     std::optional<ordered_json> coat;
     if (!read_coat(field, source, coat, not_carried)) return;
+    // A textured Schlick metal is carried per pixel (its coefficients are linear in F0); an edge
+    // colour or a coat makes the curve's shape depend on F0 otherwise.
+    const bool textured = pbr.baseColorTexture.index >= 0;
+    const bool per_pixel_f0 = textured && tint == Rgb{1, 1, 1} && !coat;
+    if (per_pixel_f0) {
+      not_carried.push_back(
+          "baseColorTexture (compiled at baseColorFactor; `matc gltf` writes the coefficients at "
+          "F0 = 0 with which the npm package's loaders follow the texture per pixel)");
+    } else if (textured) {
+      not_carried.push_back(fmt::format(
+          "baseColorTexture (F0 is baseColorFactor: under {}, the curve is not linear in F0)",
+          coat ? "a clear coat" : "an edge colour"));
+    }
     if (coat) material_json["coat"] = std::move(*coat);
     for (const std::string_view name : kNotCarriedExtensions)
       if (extension(source.extensions, name)) not_carried.push_back(std::string(name));
@@ -182,7 +191,10 @@ class Importer {
     material_json["name"] = name;
     const std::size_t added = result_.materials.size();
     add_imported_material(result_, material_json, path_, where(), field);
-    if (result_.materials.size() > added) result_.materials.back().document_index = index;
+    if (result_.materials.size() > added) {
+      result_.materials.back().document_index = index;
+      result_.materials.back().per_pixel_f0 = per_pixel_f0;
+    }
   }
 
   // EXT_materials_specular_edge_color inside KHR_materials_specular: the specular colour times

@@ -170,5 +170,52 @@ TEST(GltfFresnelExtension, ThePublicCallCompilesEachMetalIntoItsMaterial) {
   EXPECT_THROW(api::compile_gltf(R"({"materials": []})", "car.gltf"), api::MaterialError);
 }
 
+// A textured metal of Schlick's curve carries its coefficients at F0 = 0, with which a loader
+// follows the texture: the coefficients are linear in F0, so F0 (1, 0, 0, 0) + (1 - F0) times
+// them is the compile at the factor. Under an edge colour or a coat the curve is not linear in F0,
+// and an untextured metal needs nothing more: neither gets them.
+TEST(GltfFresnelExtension, ATexturedSchlickMetalCarriesItsCoefficientsAtZeroF0) {
+  const std::string texture = R"("baseColorTexture": {"index": 0})";
+  const std::string edge =
+      R"("extensions": {"KHR_materials_specular": {"specularColorFactor": [0.7, 0.8, 0.9],
+         "extensions": {"EXT_materials_specular_edge_color": {"specularEdgeColorEnabled": true}}}})";
+  const std::string text = R"({"asset": {"version": "2.0"}, "materials": [
+      {"name": "Trim", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.8, 0.6, 1], )" +
+                           texture + R"(}},
+      {"name": "Plain", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.8, 0.6, 1]}},
+      {"name": "Edge", "pbrMetallicRoughness": {)" +
+                           texture + "}, " + edge + R"(},
+      {"name": "Paint", "pbrMetallicRoughness": {)" +
+                           texture + R"(},
+       "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1}}}],
+      "textures": [{"source": 0}], "images": [{"uri": "t.png"}]})";
+  for (const char* basis : {"powers", "paper", "f82"}) {
+    const api::GltfAsset asset = api::compile_gltf(text, "car.gltf", {basis, "acescg", ""});
+    const json written_json = json::parse(asset.bytes);
+    const auto extension = [&](std::size_t i) -> const json& {
+      return written_json["materials"][i]["extensions"]["MATC_materials_fresnel"];
+    };
+    for (std::size_t i = 1; i < 4; ++i)
+      EXPECT_FALSE(extension(i).contains("zeroF0Coefficients")) << basis << " " << i;
+    const json& trim = extension(0);
+    ASSERT_TRUE(trim.contains("zeroF0Coefficients")) << basis;
+    const api::CompiledMaterial zero = api::compile(
+        api::parse_materials(R"({"name": "z", "f82_tint": {"f0": [0, 0, 0], "tint": [1, 1, 1]}})",
+                             "z.json")
+            .front(),
+        {basis, "acescg", ""});
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double f0 = trim["coefficients"][c][0].get<double>();
+      for (std::size_t i = 0; i < 4; ++i) {
+        const double at_zero = trim["zeroF0Coefficients"][c][i].get<double>();
+        EXPECT_NEAR(at_zero, zero.coefficients()[c][i], 1e-12) << basis;
+        EXPECT_NEAR(f0 * (i == 0 ? 1.0 : 0.0) + (1 - f0) * at_zero,
+                    trim["coefficients"][c][i].get<double>(), 1e-12)
+            << basis << " channel " << c << " c_" << i;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace matc

@@ -24,9 +24,11 @@ inline constexpr std::string_view kGltfFresnelExtension = "MATC_materials_fresne
 // The extension's object for a compiled metal (docs/gltf/MATC_materials_fresnel.schema.json):
 // matc's name for it, the basis and matc version the coefficients belong to, the working colour
 // space, the coefficients (rows R, G, B: c_0..c_3), their largest error against the exact curve,
-// and a coated metal's coat.
+// and a coated metal's coat. `zero_f0`: for a metal whose F0 varies per pixel (a textured Schlick
+// metal), the same curve compiled at F0 = 0 (zeroF0Coefficients).
 nlohmann::ordered_json gltf_fresnel_extension(const CompiledMaterial& compiled,
-                                              const runtime::BasisView& basis);
+                                              const runtime::BasisView& basis,
+                                              const CompiledMaterial* zero_f0 = nullptr);
 
 struct GltfWithExtensions {
   std::string bytes;  // the asset, in its own container

@@ -24,6 +24,10 @@ struct ImportedMaterial {
   Material material;
   std::string json;  // the matc material file it stands for (what `matc import` writes)
   std::size_t document_index = 0;  // its entry in the document (glTF: materials[document_index])
+  // glTF: Schlick's curve (no edge colour, no coat) with a baseColorTexture, so its F0 varies per
+  // pixel (baseColorFactor times the texture). Schlick's curve is linear in F0, and so are the
+  // coefficients: F0 (1, 0, 0, 0) + (1 - F0) times the coefficients at F0 = 0.
+  bool per_pixel_f0 = false;
 };
 
 struct DocumentImport {
