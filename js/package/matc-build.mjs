@@ -118,8 +118,8 @@ float matc_coat_lobe_preintegrated() { return matc_coat_fresnel_preintegrated_${
 }
 
 // What the engine's main() computes before its lights: the pixel's coefficients (MATC_SOURCE_*
-// says from where; maps at texture coordinate `uv`, F0 of baked metals without an F0 map from
-// `baseColour`) and matc_lut's texel at (`ndotv`, `roughness`), and for a coated material
+// says from where; maps at texture coordinate `uv`, F0 of baked metals without an F0 map and of
+// Schlick metals from `baseColour`) and matc_lut's texel at (`ndotv`, `roughness`), and for a coated material
 // (MATC_COATED) at (`ndotv`, `coatRoughness`), all GLSL expressions of the engine.
 export function pixelSetupGlsl({ uv, baseColour, ndotv, roughness, coatRoughness }) {
   return `
@@ -136,6 +136,15 @@ export function pixelSetupGlsl({ uv, baseColour, ndotv, roughness, coatRoughness
 		vec3 matc_f0 = ${baseColour};
 	#endif
 	matc_c = matc_coefficients_from_baked(matc_f0, texture(matc_c2_map, ${uv}).rgb, texture(matc_c3_map, ${uv}).rgb);
+#elif defined(MATC_SOURCE_SCHLICK)
+	{
+		// Schlick's curve of the engine's base colour (a glTF metal's factor times its texture): its
+		// coefficients are linear in F0, F0 (1, 0, 0, 0) + (1 - F0) times the curve's at F0 = 0.
+		vec3 matc_f0 = clamp(${baseColour}, 0.0, 1.0);
+		matc_c = MatcFresnelCoefficients(vec4(matc_f0.r, 0.0, 0.0, 0.0) + (1.0 - matc_f0.r) * matc_red,
+		                                 vec4(matc_f0.g, 0.0, 0.0, 0.0) + (1.0 - matc_f0.g) * matc_green,
+		                                 vec4(matc_f0.b, 0.0, 0.0, 0.0) + (1.0 - matc_f0.b) * matc_blue);
+	}
 #else
 	matc_c = MatcFresnelCoefficients(matc_red, matc_green, matc_blue);
 #endif
@@ -370,7 +379,13 @@ export async function gltfExtensionMaterial(build, extension) {
   if (rows.some((row) => row.some((value) => typeof value !== "number" || !Number.isFinite(value)))) {
     throw new MatcWebError(`its ${kGltfFresnelExtension}.coefficients must be finite numbers`);
   }
-  if (!extension.coat) return { name: extension.name, basis: build.basis, coefficients: rows, coat: null };
+  if (!extension.coat) {
+    const metal = { name: extension.name, basis: build.basis, coefficients: rows, coat: null };
+    if (extension.zeroF0Coefficients !== undefined) {
+      metal.zeroF0Coefficients = checkedZeroF0Rows(extension.zeroF0Coefficients, kGltfFresnelExtension);
+    }
+    return metal;
+  }
   const advice = "give the loader the compiler (matc: createMatc()) or a build directory that compiled this " +
                  "asset (matc -o DIR asset.glb)";
   if (!build.materialsByName) throw new MatcWebError(`a coated metal: its shader snippet is the compiler's; ${advice}`);
@@ -400,18 +415,35 @@ function gltfMaterialAsset(json, index) {
 
 const isGltfMetal = (material) => (material.pbrMetallicRoughness?.metallicFactor ?? 1) > 0;
 
+// Schlick's curve at F0 = 0, as the importer writes a glTF metal: compiled in the page for the
+// textured metals of an asset that carries no zeroF0Coefficients.
+const kZeroF0Schlick = { name: "zero_f0", color_space: "lin_rec709", f82_tint: { f0: [0, 0, 0], tint: [1, 1, 1] } };
+
 // What the engines' glTF loaders (three/matc-gltf.mjs, babylon/matc-gltf.mjs) make of an asset's
 // materials: `metalOf(index)` resolves to { metal (as build.loadMaterial gives it), from:
-// "extension" | "compiled" }, or null for a material that stays the engine's. A metal's
+// "extension" | "compiled", source: useMatcFresnel's }, or null for a material that stays the
+// engine's. A textured metal of Schlick's curve (no edge colour, no coat) gets the source
+// { schlick }, its F0 per pixel the engine's base colour (factor times texture). A metal's
 // MATC_materials_fresnel is used when it fits the build; otherwise `matc` (createMatc(), when
 // given) compiles the glTF material with `compile`'s options. A metal matc cannot take gets
 // `warn(index, why)`; a non-metal nothing. Each index is resolved once.
 export function gltfMetals({ matc = null, build, compile = {}, json, warn }) {
   const found = new Map();
+  let zeroF0 = null;  // the compile of kZeroF0Schlick, once
+  const textured = (index) => json.materials[index].pbrMetallicRoughness?.baseColorTexture !== undefined;
+  const withSource = (metal, from, zeroF0Coefficients) => ({
+    metal, from,
+    source: zeroF0Coefficients ? { schlick: { basis: metal.basis, zeroF0Coefficients } } : { material: metal },
+  });
   const compileInPage = async (index) => {
     try {
       const [material] = matc.parseMaterials(gltfMaterialAsset(json, index), "asset.gltf");
-      return material ? { metal: await build.loadMaterial(matc.compile(material, compile)), from: "compiled" } : null;
+      if (!material) return null;
+      const metal = await build.loadMaterial(matc.compile(material, compile));
+      const { f82_tint: curve } = JSON.parse(material.json);
+      if (!textured(index) || metal.coat || curve?.tint?.some((value) => value !== 1)) return withSource(metal, "compiled");
+      zeroF0 ??= matc.compile(matc.parseMaterial(kZeroF0Schlick), compile).coefficients;
+      return withSource(metal, "compiled", zeroF0);
     } catch (error) {
       // Not a metal: the engine's material stays, silently. Anything else (a value matc refuses,
       // options that do not fit the build) is said.
@@ -425,7 +457,8 @@ export function gltfMetals({ matc = null, build, compile = {}, json, warn }) {
     let refusal = null;
     if (extension && isGltfMetal(material)) {
       try {
-        return { metal: await gltfExtensionMaterial(build, extension), from: "extension" };
+        const metal = await gltfExtensionMaterial(build, extension);
+        return withSource(metal, "extension", textured(index) ? metal.zeroF0Coefficients : undefined);
       } catch (error) {
         refusal = error.message;
       }
@@ -459,6 +492,16 @@ function checkedRows(rows, file, field) {
   return rows;
 }
 
+// Coefficient rows of a Schlick curve at F0 = 0 (c_0 = 0, c_1 = 1 per channel, finite c_2, c_3),
+// or an error naming `what`.
+function checkedZeroF0Rows(rows, what) {
+  checkedRows(rows, what, "zeroF0Coefficients");
+  if (rows.some((row) => row[0] !== 0 || row[1] !== 1 || !row.every((value) => typeof value === "number" && Number.isFinite(value)))) {
+    throw new MatcWebError(`${what}: zeroF0Coefficients must be rows [0, 1, c_2, c_3] of finite numbers`);
+  }
+  return rows;
+}
+
 // Checks the areaLights option against what a coated material takes in an integration
 // (`allowed`): the quality level's area lights take bare metals.
 export function checkCoatedAreaLights(material, areaLights, allowed = ["matc", "engine"]) {
@@ -482,8 +525,16 @@ export function checkAreaLights(areaLights, allowed = ["matc", "quality", "engin
 }
 
 // Checks that a source of coefficients (see the integrations' useMatcFresnel) fits the build;
-// returns its kind: "material", "table" or "baked".
+// returns its kind: "schlick", "material", "table" or "baked".
 export function sourceKind(build, source) {
+  if (source?.schlick) {
+    const { basis, zeroF0Coefficients } = source.schlick;
+    if (basis !== build.basis) {
+      throw new MatcWebError(`schlick: coefficients of basis ${basis}, the build's tables are ${build.basis}`);
+    }
+    checkedZeroF0Rows(zeroF0Coefficients, "schlick");
+    return "schlick";
+  }
   if (source?.material) {
     if (source.material.basis !== build.basis) {
       throw new MatcWebError(`${source.material.name}: coefficients of basis ${source.material.basis}, ` +
@@ -510,5 +561,5 @@ export function sourceKind(build, source) {
     }
     return "baked";
   }
-  throw new MatcWebError("useMatcFresnel needs { material }, { reflectivityMap, edgeTintMap } or { baked }");
+  throw new MatcWebError("useMatcFresnel needs { material }, { schlick }, { reflectivityMap, edgeTintMap } or { baked }");
 }

@@ -3,7 +3,8 @@
 // target and compared, at probe pixels, with what the CPU runtime (`matc eval`) predicts, to 1e-4
 // (relative above 1): under a white environment, a point light and a rect area light (also at the
 // quality level, areaLights "quality"), for the Figure 2 material and beryllium, a textured metal
-// through the coefficient table and a `matc bake` result (tests/js/engine-probes.mjs has the scene
+// through the coefficient table, a `matc bake` result, a Schlick metal of the albedo colour
+// (tests/js/engine-probes.mjs has the scene
 // and the CPU side). Then the inputs that must fail, as for three.js, with a Babylon whose patched
 // shader changed.
 //   node check-babylon-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
@@ -49,11 +50,13 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
                          edgeTintMap: constant(scene, config.textured.edgeTint) }),
       baked: async () => ({ baked: { c2Map: await baked(scene, "probe_c2.ktx2"), c3Map: await baked(scene, "probe_c3.ktx2"),
                                      f0Map: await baked(scene, "probe_f0.ktx2") } }),
+      schlick: () => ({ schlick: { basis: build.basis, zeroF0Coefficients: config.schlick.zeroF0Coefficients } }),
     };
     const source = sources[render.source] ? await sources[render.source]() : { material: materials[render.source] };
     const material = useMatcFresnel(new PBRMaterial("matc", scene), build, source, { areaLights: render.areaLights });
     material.roughness = render.roughness;
-    material.albedoColor.set(1, 1, 1);
+    // The Schlick metal's F0 is the albedo colour (linear); the others' colour is in their coefficients.
+    material.albedoColor.set(...(render.source === "schlick" ? config.schlick.color : [1, 1, 1]));
     made.push(material);
     out.renders[render.key] = await renderBabylonProbe({ scene, camera, material, light: render.light, config,
                                                          size: ${kProbeSize}, out, key: render.key });

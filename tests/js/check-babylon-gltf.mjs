@@ -34,7 +34,8 @@ import { babylonProbeScene, renderBabylonProbe } from "/checks/babylon-scene-pag
       const container = await LoadAssetContainerAsync(url, scene);
       const byName = Object.fromEntries(container.materials.map((material) => [material.name, material]));
       const kinds = Object.fromEntries(container.materials.map((material) => [material.name,
-        material.metadata?.matc ? (material.matcFresnel.coat ? "coated" : "bare") + " " + material.metadata.matc.from
+        material.metadata?.matc ? (material.matcFresnel.kind === "schlick" ? "per-pixel" : material.matcFresnel.coat ? "coated" : "bare") +
+                                  " " + material.metadata.matc.from
                                 : "engine"]));
       return { byName, kinds, made: registration.materials.length };
     } finally {

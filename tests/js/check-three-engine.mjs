@@ -8,7 +8,8 @@
 //   - a rect area light: the light's radiance x `L_ltc` of `matc eval --quad-light`, and at the
 //     quality level (areaLights "quality") x `L_ltc_following`;
 // for the Figure 2 material and beryllium (compiled coefficients), a textured metal through the
-// coefficient table and a `matc bake` result. Then the inputs that must fail: a build without
+// coefficient table, a `matc bake` result and a Schlick metal of the material's colour. Then the
+// inputs that must fail: a build without
 // the files the integration needs, a table of another basis than the build or the coefficients,
 // and a three.js whose patched chunk changed; each must throw and write to the console.
 //   node check-three-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
@@ -47,8 +48,11 @@ import { probeBuild } from "/checks/page-probe-build.mjs";
                        edgeTintMap: constant(config.textured.edgeTint) };
   sources.baked = { baked: { c2Map: await baked("probe_c2.ktx2"), c3Map: await baked("probe_c3.ktx2"),
                              f0Map: await baked("probe_f0.ktx2") } };
+  sources.schlick = { schlick: { basis: build.basis, zeroF0Coefficients: config.schlick.zeroF0Coefficients } };
   for (const render of config.renders) {
-    const material = useMatcFresnel(new THREE.MeshPhysicalMaterial({ roughness: render.roughness }),
+    // The Schlick metal's F0 is the material's colour (linear).
+    const colour = render.source === "schlick" ? { color: new THREE.Color(...config.schlick.color) } : {};
+    const material = useMatcFresnel(new THREE.MeshPhysicalMaterial({ roughness: render.roughness, ...colour }),
                                     build, sources[render.source], { areaLights: render.areaLights });
     out.renders[render.key] = renderProbePixels(renderer, probeScene(THREE, material, render.light, config, environment),
                                                 camera, target, config.pixels);

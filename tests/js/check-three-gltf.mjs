@@ -42,7 +42,8 @@ import { probeScene, probeSetup, renderProbePixels } from "/checks/three-scene-p
     const byName = {};
     gltf.scene.traverse((object) => { if (object.isMesh) byName[object.material.name] = object.material; });
     const kinds = Object.fromEntries(Object.entries(byName).map(([name, material]) =>
-      [name, material.userData.matc ? (material.userData.matc.source.material.coat ? "coated" : "bare") +
+      [name, material.userData.matc ? (material.userData.matc.source.schlick ? "per-pixel" :
+                                       material.userData.matc.source.material.coat ? "coated" : "bare") +
                                       " " + material.userData.matc.from : "engine"]));
     return { byName, kinds, made: gltf.userData.matcMaterials.length };
   };

@@ -3,8 +3,9 @@
 // (Dawn on SwiftShader), at the probe pixels of tests/js/engine-probes.mjs under the white
 // environment, the point light and the rect area light (matc's LTC, and at the quality level), for
 // the Figure 2 material and beryllium at two roughnesses, a textured metal through the coefficient
-// table and a `matc bake` result, against the CPU runtime to 1e-4. WebGPU's adapter and device do not settle under
-// Chromium's virtual time: the page runs in real time and posts its result.
+// table, a `matc bake` result and a Schlick metal of the material's colour, against the CPU
+// runtime to 1e-4. WebGPU's adapter and device do not settle under Chromium's virtual time: the
+// page runs in real time and posts its result.
 //   node check-three-webgpu-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
 import { modulePage, threeVersion } from "./browser-page.mjs";
 import { kProbeSize, kThreeJsProbeTerms, runProbeCheck } from "./engine-probes.mjs";
@@ -47,9 +48,12 @@ import { probeBuild } from "/checks/page-probe-build.mjs";`,
   const sources = {
     textured: { reflectivityMap: constant(config.textured.reflectivity), edgeTintMap: constant(config.textured.edgeTint) },
     baked: { baked: { c2Map: await baked("probe_c2.ktx2"), c3Map: await baked("probe_c3.ktx2"), f0Map: await baked("probe_f0.ktx2") } },
+    schlick: { schlick: { basis: build.basis, zeroF0Coefficients: config.schlick.zeroF0Coefficients } },
   };
   for (const render of config.renders) {
-    const material = useMatcFresnel(new THREE.MeshPhysicalNodeMaterial({ roughness: render.roughness }), build,
+    // The Schlick metal's F0 is the material's colour (linear).
+    const colour = render.source === "schlick" ? { color: new THREE.Color(...config.schlick.color) } : {};
+    const material = useMatcFresnel(new THREE.MeshPhysicalNodeMaterial({ roughness: render.roughness, ...colour }), build,
                                     sources[render.source] ?? { material: materials[render.source] },
                                     { areaLights: render.areaLights });
     const scene = probeScene(THREE, material, render.light, config, white);

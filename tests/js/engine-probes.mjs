@@ -2,7 +2,7 @@
 // probe scene (a plane z = 0 seen from z = 1 with a 90 degree field of view into a 64 x 64 float
 // target), the builds they load (good ones and the ones that must fail), the CPU runtime's value
 // at each probe pixel for each light (`matc eval`), and the comparison.
-import { cpSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
+import { cpSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { kWebRoots, runPage } from "./browser-page.mjs";
@@ -43,6 +43,11 @@ export const kBabylonProbeTerms = {
 };
 export const kTextured = { reflectivity: [0.9, 0.6, 0.3], edgeTint: [0.8, 0.5, 0.2] };
 export const kBaked = { reflectivity: [0.95, 0.64, 0.54], edgeTint: [1.0, 0.75, 0.4] };
+// A Schlick metal whose F0 is the engine material's base colour (the source { schlick }: a textured
+// glTF metal's, here a plain colour).
+export const kSchlick = { f0: [0.9, 0.55, 0.3] };
+const kSchlickMaterial = (f0) => ({ name: "schlick_probe", color_space: "lin_rec709",
+                                    f82_tint: { f0, tint: [1, 1, 1] } });
 
 // Vector helpers (double precision; the GPU's float32 stays well within the tolerance).
 export const sub = (a, b) => a.map((x, i) => x - b[i]);
@@ -145,7 +150,7 @@ export function probeRenders() {
                      areaLights: "quality" });
     }
   }
-  for (const source of ["textured", "baked"]) {
+  for (const source of ["textured", "baked", "schlick"]) {
     for (const light of ["environment", "point"]) {
       renders.push({ key: `${source} ${light} r=0.3`, source, light, roughness: 0.3 });
     }
@@ -184,8 +189,9 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibilit
                   "--coefficient-table-precision", "f32"], kTextured.reflectivity, "Fbar_table", "F_table"],
     ["baked", ["--reflectivity", list(kBaked.reflectivity), "--edge-tint", list(kBaked.edgeTint)],
      kBaked.reflectivity, "Fbar_compiled", "F_compiled"],
+    ["schlick", [schlickFile(out)], kSchlick.f0, "Fbar", "F"],
   ]) {
-    for (const roughness of source === "textured" || source === "baked" ? [0.3] : kProbeRoughness) {
+    for (const roughness of ["textured", "baked", "schlick"].includes(source) ? [0.3] : kProbeRoughness) {
       const key = (light) => `${source} ${light} r=${roughness}`;
       if (!["environment", "point", "rect", "rect quality"].some((light) => wanted.has(key(light)))) continue;
       const terms = pointTerms[kProbeRoughness.indexOf(roughness)];
@@ -292,6 +298,7 @@ export const kFailures = {
   unknown_material: "is unobtainium one of this build's materials",
   engine_changed: "changed (0 matches for the text the patch",
   textured_without_edge_tint: "needs both reflectivityMap and edgeTintMap",
+  schlick_not_zero_f0: "zeroF0Coefficients must be rows [0, 1, c_2, c_3] of finite numbers",
   unknown_area_light_option: 'areaLights: "fast"; allowed: "matc", "quality", "engine"',
   coated_quality_area_lights: "is coated: the quality-level area lights take bare metals",
   coated_without_snippet: "a coated material needs its own shader snippet",
@@ -306,6 +313,22 @@ export function checkFailures(failures) {
     check(failure.logged === true, `${key}: nothing written to the console`);
   }
   return Object.keys(kFailures).length;
+}
+
+// The Schlick probe metal's material file (in `dir`), for the CPU runtime's side.
+function schlickFile(dir) {
+  const file = join(dir, "schlick_probe.json");
+  writeFileSync(file, JSON.stringify(kSchlickMaterial(kSchlick.f0)));
+  return file;
+}
+
+// The coefficients at F0 = 0 of Schlick's curve, compiled by matc (the build's default basis),
+// for the { schlick } source.
+function zeroF0Coefficients(matc, dir) {
+  const file = join(dir, "zero_f0.json");
+  writeFileSync(file, JSON.stringify({ ...kSchlickMaterial([0, 0, 0]), name: "zero_f0" }));
+  run(matc, ["-q", "-o", join(dir, "zero_f0"), "--emit", "json", file]);
+  return JSON.parse(readFileSync(join(dir, "zero_f0", "zero_f0.json"), "utf8")).coefficients;
 }
 
 // The whole check for one engine: builds, the page (engine.page(config) -> HTML, which renders
@@ -326,7 +349,8 @@ export async function runProbeCheck(engine, [matc, materialsDir, webDir, mode]) 
     const materialTexts = Object.fromEntries(
       materials.map((name) => [name, readFileSync(join(materialsDir, `${name}.json`), "utf8")]));
     const config = { materials, coated: kProbeCoated, pixels: kProbePixels, renders, point: kPointLight,
-                     rect: engine.rect?.light, textured: kTextured, compileInPage, materialTexts };
+                     rect: engine.rect?.light, textured: kTextured, compileInPage, materialTexts,
+                     schlick: { color: kSchlick.f0, zeroF0Coefficients: zeroF0Coefficients(matc, dir) } };
     const result = await runPage({ html: engine.page(config), roots: { ...kWebRoots, web: webDir, ...roots }, dir,
                                    ...(engine.runPage ?? {}) });
     check(result.errors.length === 0, `${engine.name}: ${result.errors.join("\n")}`);

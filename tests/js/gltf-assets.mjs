@@ -42,7 +42,7 @@ function scene(document, materials) {
 }
 
 // car.glb: the car-paint asset (options: the metals' roughness; an iridescent foil metal too).
-export async function carAsset(path, { paintRoughness = 0.4, chromeRoughness = 0.08, foil = false } = {}) {
+export async function carAsset(path, { paintRoughness = 0.4, chromeRoughness = 0.08, foil = false, trim = false } = {}) {
   const document = new Document();
   const clearcoat = document.createExtension(KHRMaterialsClearcoat);
   const flakes = new Uint8Array(8 * 8 * 3).map((_, i) => (i % 3 === 0 ? 200 : 40) + (i % 7));
@@ -59,6 +59,14 @@ export async function carAsset(path, { paintRoughness = 0.4, chromeRoughness = 0
     const iridescence = document.createExtension(KHRMaterialsIridescence);
     materials.push(document.createMaterial("Foil").setBaseColorFactor([0.9, 0.9, 0.9, 1]).setMetallicFactor(1)
       .setRoughnessFactor(0.3).setExtension("KHR_materials_iridescence", iridescence.createIridescence().setIridescenceFactor(1)));
+  }
+  if (trim) {
+    // A textured bare metal: every texel (255, 0, 255), exact in any sRGB decoding, so the
+    // engine's base colour is the factor with green 0: F0 (0.9, 0, 0.6) per pixel.
+    const texels = new Uint8Array(4 * 4 * 3).map((_, i) => (i % 3 === 1 ? 0 : 255));
+    const trimTexture = document.createTexture("trim").setImage(pngBytes(4, 4, texels)).setMimeType("image/png");
+    materials.push(document.createMaterial("Trim").setBaseColorFactor([0.9, 0.8, 0.6, 1]).setMetallicFactor(1)
+      .setRoughnessFactor(0.3).setBaseColorTexture(trimTexture));
   }
   scene(document, materials);
   writeFileSync(path, await new NodeIO().registerExtensions([KHRMaterialsClearcoat, KHRMaterialsIridescence])

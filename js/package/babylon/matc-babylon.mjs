@@ -220,8 +220,9 @@ function preparePlugin(build, source, areaLights) {
   // Babylon's rect lights have no coat lobe of their own: matc's LTC draws it.
   if (coat) checkCoatedAreaLights(source.material, areaLights, ["matc"]);
   const colour = (value) => new Vector3(...rgbOf(value));
+  const rows = kind === "material" ? source.material.coefficients : kind === "schlick" ? source.schlick.zeroF0Coefficients : null;
   return { build, source, kind, areaLights, coat, coatId: coat ? coatIdOf(source.material.coat.snippet) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
-           coefficients: kind === "material" ? source.material.coefficients.map((row) => new Vector4(...row)) : null };
+           coefficients: rows && rows.map((row) => new Vector4(...row)) };
 }
 
 // Babylon keys its compiled effects on the defines: each coated material's snippet (its constants)
@@ -238,13 +239,15 @@ function coatIdOf(snippet) {
 let pendingPlugin = null;
 
 export class MatcFresnelPlugin extends MaterialPluginBase {
-  // source: { material } (build.loadMaterial), { reflectivityMap, edgeTintMap, reflectivity?,
-  // edgeTint? } (through the coefficient table) or { baked: { c2Map, c3Map, f0Map? } }.
+  // source: { material } (build.loadMaterial), { schlick: { basis, zeroF0Coefficients } }
+  // (Schlick's curve of the albedo, its colour times its texture: a textured glTF metal),
+  // { reflectivityMap, edgeTintMap, reflectivity?, edgeTint? } (through the coefficient table) or
+  // { baked: { c2Map, c3Map, f0Map? } }.
   constructor(material, build, source, areaLights = "matc") {
     pendingPlugin = preparePlugin(build, source, areaLights);
     try {
       super(material, "MatcFresnel", 200,
-            { MATC_FRESNEL: false, MATC_SOURCE_UNIFORM: false, MATC_SOURCE_TABLE: false,
+            { MATC_FRESNEL: false, MATC_SOURCE_UNIFORM: false, MATC_SOURCE_SCHLICK: false, MATC_SOURCE_TABLE: false,
               MATC_SOURCE_BAKED: false, MATC_BAKED_F0: false, MATC_ENGINE_LTC: false,
               MATC_QUALITY_LTC: false, MATC_COATED: false, MATC_COAT_ID: 0 });
       Object.assign(this, pendingPlugin);
@@ -265,6 +268,7 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
   prepareDefinesBeforeAttributes(defines) {
     defines.MATC_FRESNEL = true;
     defines.MATC_SOURCE_UNIFORM = this.kind === "material";
+    defines.MATC_SOURCE_SCHLICK = this.kind === "schlick";
     defines.MATC_SOURCE_TABLE = this.kind === "table";
     defines.MATC_SOURCE_BAKED = this.kind === "baked";
     defines.MATC_BAKED_F0 = this.kind === "baked" && Boolean(this.source.baked.f0Map);
@@ -272,7 +276,7 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
     defines.MATC_QUALITY_LTC = this.areaLights === "quality";
     defines.MATC_COATED = Boolean(this.coat);
     defines.MATC_COAT_ID = this.coatId;
-    if (this.kind !== "material") {
+    if (this.kind === "table" || this.kind === "baked") {
       defines._needUVs = true;
       defines.MAINUV1 = true;
     }

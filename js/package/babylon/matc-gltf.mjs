@@ -52,7 +52,7 @@ class MatcGltfLoaderExtension {
       const found = await this.metals.metalOf(material.index);
       if (!found) return;
       try {
-        useMatcFresnel(babylonMaterial, this.build, { material: found.metal }, { areaLights: this.areaLights });
+        useMatcFresnel(babylonMaterial, this.build, found.source, { areaLights: this.areaLights });
         babylonMaterial.metadata = { ...babylonMaterial.metadata, matc: { gltfMaterial: material.index, from: found.from } };
         this.made.push(babylonMaterial);
       } catch (error) {

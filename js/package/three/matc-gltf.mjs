@@ -50,7 +50,7 @@ export function matcGltfPlugin({ matc = null, build, compile = {}, areaLights = 
         const found = await metals.metalOf(index);
         if (!found) continue;
         try {
-          useMatcFresnel(material, build, { material: found.metal }, { areaLights });
+          useMatcFresnel(material, build, found.source, { areaLights });
           Object.assign(material.userData.matc, { gltfMaterial: index, from: found.from });
           made.push(material);
         } catch (error) {

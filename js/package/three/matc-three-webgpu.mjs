@@ -260,12 +260,21 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
 }
 
 // The coefficients as three rows (red, green, blue: c_0..c_3) of nodes: uniforms for a compiled
-// material, per-pixel expressions for maps through the coefficient table and for baked textures.
+// material, per-pixel expressions for a Schlick metal's base colour, for maps through the
+// coefficient table and for baked textures.
 function coefficientRows(build, source) {
   const kind = sourceKind(build, source);
   if (kind === "material") {
     const [red, green, blue] = source.material.coefficients.map((row) => uniform(new THREE.Vector4(...row)));
     return { red, green, blue };
+  }
+  if (kind === "schlick") {
+    // Schlick's curve of the base colour (colour times map): F0 (1, 0, 0, 0) + (1 - F0) times the
+    // curve's coefficients at F0 = 0, per channel.
+    const [red, green, blue] = source.schlick.zeroF0Coefficients.map((row) => uniform(new THREE.Vector4(...row)));
+    const f0 = diffuseColor.rgb.clamp(0, 1).toConst("matc_f0");
+    const row = (c, zero) => vec4(f0[c], 0, 0, 0).add(f0[c].oneMinus().mul(zero));
+    return { red: row("x", red), green: row("y", green), blue: row("z", blue) };
   }
   if (kind === "table") {
     const colour = (value) => uniform(new THREE.Color(...rgbOf(value)));
@@ -301,7 +310,7 @@ function coatOf(compiled, material, areaLights) {
 }
 
 // Makes `material` (MeshStandardNodeMaterial or MeshPhysicalNodeMaterial) a matc metal with
-// `source` = { material } (build.loadMaterial), { reflectivityMap, edgeTintMap } or { baked }, as
+// `source` = { material } (build.loadMaterial), { schlick }, { reflectivityMap, edgeTintMap } or { baked }, as
 // matc-three.mjs takes them. Returns the material; material.userData.matc.rows holds the
 // coefficient nodes (a compiled material's are uniforms: their .value can change without
 // recompiling).

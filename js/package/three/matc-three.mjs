@@ -202,15 +202,17 @@ function checkBuild(build) {
   }
 }
 
-// The coefficients' source: { material } (from build.loadMaterial), { reflectivityMap,
-// edgeTintMap } (textured: through the coefficient table, each map times the optional
-// reflectivity/edgeTint colours) or { baked: { c2Map, c3Map, f0Map? } } (`matc bake` textures;
-// F0 from f0Map or the material's base colour).
+// The coefficients' source: { material } (from build.loadMaterial), { schlick: { basis,
+// zeroF0Coefficients } } (Schlick's curve of the material's base colour, its colour times its
+// map: a textured glTF metal), { reflectivityMap, edgeTintMap } (textured: through the
+// coefficient table, each map times the optional reflectivity/edgeTint colours) or { baked: {
+// c2Map, c3Map, f0Map? } } (`matc bake` textures; F0 from f0Map or the material's base colour).
 function sourceUniforms(build, source) {
   const kind = sourceKind(build, source);
-  if (kind === "material") {
-    const [red, green, blue] = source.material.coefficients.map((row) => new THREE.Vector4(...row));
-    return { define: "MATC_SOURCE_UNIFORM",
+  if (kind === "material" || kind === "schlick") {
+    const rows = kind === "schlick" ? source.schlick.zeroF0Coefficients : source.material.coefficients;
+    const [red, green, blue] = rows.map((row) => new THREE.Vector4(...row));
+    return { define: kind === "schlick" ? "MATC_SOURCE_SCHLICK" : "MATC_SOURCE_UNIFORM",
              uniforms: { matc_red: { value: red }, matc_green: { value: green }, matc_blue: { value: blue } } };
   }
   if (kind === "table") {
