@@ -99,6 +99,7 @@ export declare class TextOutputs extends Disposable {
 
 export declare class Matc {
   readonly version: string;
+  /** True in every build: the package reads MaterialX documents (with rapidxml). */
   readonly readsMaterialX: boolean;
   spectralPresets(): string[];
   /** A material file's JSON, a MaterialX document (path ending in .mtlx) or a glTF asset (.gltf

@@ -336,10 +336,6 @@ class MaterialXImporter {
 
 }  // namespace
 
-bool materialx_supported() {
-  return true;
-}
-
 MaterialXImport import_materialx(std::string_view text, const std::string& path) {
   return MaterialXImporter(text, path).run();
 }

@@ -56,7 +56,8 @@ std::vector<Material> parse_materials(std::string_view text, std::string_view pa
 // The same for a file.
 std::vector<Material> load_materials(std::string_view path);
 
-// Whether this library reads MaterialX documents (the WebAssembly build may not).
+// Whether this library reads MaterialX documents: every build does (the native library with
+// pugixml, the WebAssembly one with rapidxml, docs/interchange.md); kept for callers that ask.
 bool reads_materialx();
 
 // The names a spectral material's "preset" takes: the measured metals matc ships.

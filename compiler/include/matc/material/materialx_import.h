@@ -23,10 +23,6 @@ using MaterialXImport = DocumentImport;
 // Imports every metallic surface material of the document `text`; `path` names it in diagnostics.
 MaterialXImport import_materialx(std::string_view text, const std::string& path);
 
-// Whether this build imports MaterialX documents (the WebAssembly library, built without pugixml,
-// refuses each with an error).
-bool materialx_supported();
-
 // Whether `path` names a MaterialX document (".mtlx", any case).
 bool is_materialx_path(std::string_view path);
 
