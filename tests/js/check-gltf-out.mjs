@@ -77,6 +77,7 @@ async function transformView(path) {
 }
 
 // Each extension against the schema and the compile's <name>.json.
+let perPixelMetals = 0;
 function checkExtensions(json, build, asset) {
   let count = 0;
   for (const material of json.materials) {
@@ -91,6 +92,18 @@ function checkExtensions(json, build, asset) {
     check(extension.basis === compiled.basis.name && extension.matcVersion === compiled.matc_version,
           `${asset}: ${extension.name}: basis ${extension.basis} ${extension.matcVersion}`);
     check(!compiled.coat === !extension.coat, `${asset}: ${extension.name}: coat ${!!extension.coat} vs ${!!compiled.coat}`);
+    // A textured metal of Schlick's curve carries its coefficients at F0 = 0, and the compile at
+    // the factor is F0 (1, 0, 0, 0) + (1 - F0) times them; no other metal carries them.
+    const perPixel = material.pbrMetallicRoughness?.baseColorTexture !== undefined && !compiled.coat &&
+                     compiled.input?.f82_tint?.tint?.every((value) => value === 1);
+    check(perPixel === (extension.zeroF0Coefficients !== undefined),
+          `${asset}: ${extension.name}: zeroF0Coefficients ${extension.zeroF0Coefficients ? "given" : "absent"}`);
+    if (extension.zeroF0Coefficients) {
+      const worst = Math.max(...extension.coefficients.flatMap((row, c) => row.map((value, i) =>
+        Math.abs(row[0] * (i === 0 ? 1 : 0) + (1 - row[0]) * extension.zeroF0Coefficients[c][i] - value))));
+      check(worst < 1e-12, `${asset}: ${extension.name}: not linear in F0 (${worst})`);
+      ++perPixelMetals;
+    }
     if (compiled.coat) {
       check(sameJson(extension.coat.underCoatCoefficients, compiled.coat.under_coat_coefficients) &&
             sameJson(extension.coat.coatCoefficients, compiled.coat.coat_coefficients) &&
@@ -107,7 +120,7 @@ function checkExtensions(json, build, asset) {
 const dir = mkdtempSync(join(tmpdir(), "matc-gltf-out-"));
 try {
   const car = join(dir, "car.glb");
-  await carAsset(car, { foil: true });
+  await carAsset(car, { foil: true, trim: true });
   await trimAsset(dir);
   const trim = join(dir, "trim.gltf");
   const build = join(dir, "build");
@@ -143,7 +156,8 @@ try {
     run(matc, ["gltf", "-q", output, "-o", again]);
     check(Buffer.compare(readFileSync(again), outBytes) === 0, `${output}: a second run changed the bytes`);
   }
-  check(metals === 5, `${metals} metals carry the extension (car: paint, chrome, foil; trim: 2)`);
+  check(metals === 6, `${metals} metals carry the extension (car: paint, chrome, foil, textured trim; trim: 2)`);
+  check(perPixelMetals === 1, `${perPixelMetals} metals carry zeroF0Coefficients (the textured trim)`);
 
   // Refusals: nothing written.
   const refused = (args, status, phrase) => {
