@@ -137,14 +137,9 @@ export function pixelSetupGlsl({ uv, baseColour, ndotv, roughness, coatRoughness
 	#endif
 	matc_c = matc_coefficients_from_baked(matc_f0, texture(matc_c2_map, ${uv}).rgb, texture(matc_c3_map, ${uv}).rgb);
 #elif defined(MATC_SOURCE_SCHLICK)
-	{
-		// Schlick's curve of the engine's base colour (a glTF metal's factor times its texture): its
-		// coefficients are linear in F0, F0 (1, 0, 0, 0) + (1 - F0) times the curve's at F0 = 0.
-		vec3 matc_f0 = clamp(${baseColour}, 0.0, 1.0);
-		matc_c = MatcFresnelCoefficients(vec4(matc_f0.r, 0.0, 0.0, 0.0) + (1.0 - matc_f0.r) * matc_red,
-		                                 vec4(matc_f0.g, 0.0, 0.0, 0.0) + (1.0 - matc_f0.g) * matc_green,
-		                                 vec4(matc_f0.b, 0.0, 0.0, 0.0) + (1.0 - matc_f0.b) * matc_blue);
-	}
+	// Schlick's curve of the engine's base colour (a glTF metal's factor times its texture), from
+	// the curve's coefficients at F0 = 0.
+	matc_c = matc_coefficients_from_f0(MatcFresnelCoefficients(matc_red, matc_green, matc_blue), ${baseColour});
 #else
 	matc_c = MatcFresnelCoefficients(matc_red, matc_green, matc_blue);
 #endif

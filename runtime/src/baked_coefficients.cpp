@@ -15,4 +15,14 @@ Coefficients coefficients_from_baked(const Rgb& f0, const Rgb& c2, const Rgb& c3
   return coefficients;
 }
 
+Coefficients coefficients_from_f0(const Coefficients& zero_f0, const Rgb& f0) {
+  Coefficients coefficients{};
+  for (std::size_t c = 0; c < 3; ++c) {
+    const double c0 = std::isnan(f0[c]) ? 0.0 : std::clamp(f0[c], 0.0, 1.0);
+    for (std::size_t i = 0; i < 4; ++i)
+      coefficients[c][i] = (i == 0 ? c0 : 0.0) + (1.0 - c0) * zero_f0[c][i];
+  }
+  return coefficients;
+}
+
 }  // namespace matc::runtime

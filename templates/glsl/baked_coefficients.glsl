@@ -9,3 +9,14 @@ MatcFresnelCoefficients matc_coefficients_from_baked(vec3 f0, vec3 c2, vec3 c3) 
                                  vec4(c0.y, 1.0 - c0.y, c2.y, c3.y),
                                  vec4(c0.z, 1.0 - c0.z, c2.z, c3.z));
 }
+
+// ---- Textured metals of Schlick's curve (a glTF metal's base colour), per pixel. ----
+// Schlick's curve is linear in F0, and so are its coefficients: per channel F0 (1, 0, 0, 0) +
+// (1 - F0) times the curve's coefficients at F0 = 0 (MATC_materials_fresnel's zeroF0Coefficients,
+// docs/gltf.md). F0 is the material's base colour (factor times texture, linear), clamped to [0, 1].
+MatcFresnelCoefficients matc_coefficients_from_f0(MatcFresnelCoefficients zero_f0, vec3 f0) {
+  vec3 c0 = clamp(f0, 0.0, 1.0);
+  return MatcFresnelCoefficients(vec4(c0.x, 0.0, 0.0, 0.0) + (1.0 - c0.x) * zero_f0.red,
+                                 vec4(c0.y, 0.0, 0.0, 0.0) + (1.0 - c0.y) * zero_f0.green,
+                                 vec4(c0.z, 0.0, 0.0, 0.0) + (1.0 - c0.z) * zero_f0.blue);
+}

@@ -2,7 +2,9 @@
 // matc {{version}}: the compute kernel that checks the coefficient-table path (textured metals) on
 // a Vulkan device against the CPU runtime. Each query is four vec4: (r.rgb, mu), (g.rgb, NdotV),
 // (n.rgb, roughness), (k.rgb, -); it writes F(mu) and the preintegrated F from the (r, g)
-// coefficients, and F(mu) from the (n, k) ones through matc_artistic_from_ior.
+// coefficients, F(mu) from the (n, k) ones through matc_artistic_from_ior, F(mu) from
+// matc_coefficients_from_baked with F0 = r, c_2 = g - 0.5, c_3 = k / 8 - 0.5, and F(mu) from
+// matc_coefficients_from_f0 with F0 = r on the same rows at F0 = 0.
 {{library}}
 layout(local_size_x = 64) in;
 layout(std430, set = 0, binding = 0) readonly buffer MatcQueries { vec4 matc_queries[]; };
@@ -30,8 +32,12 @@ void main() {
       sampler2D(matc_coefficient_table, matc_linear_sampler), ior_r, ior_g);
   MatcFresnelCoefficients baked =
       matc_coefficients_from_baked(r, g - 0.5, k.xyz * 0.125 - 0.5);
-  matc_results[4u * i] = vec4(matc_fresnel(c, reflectivity_mu.w), 1.0);
-  matc_results[4u * i + 1u] = vec4(matc_fresnel_preintegrated(c, bbar), 1.0);
-  matc_results[4u * i + 2u] = vec4(matc_fresnel(from_ior, reflectivity_mu.w), 1.0);
-  matc_results[4u * i + 3u] = vec4(matc_fresnel(baked, reflectivity_mu.w), 1.0);
+  matc_results[5u * i] = vec4(matc_fresnel(c, reflectivity_mu.w), 1.0);
+  matc_results[5u * i + 1u] = vec4(matc_fresnel_preintegrated(c, bbar), 1.0);
+  matc_results[5u * i + 2u] = vec4(matc_fresnel(from_ior, reflectivity_mu.w), 1.0);
+  matc_results[5u * i + 3u] = vec4(matc_fresnel(baked, reflectivity_mu.w), 1.0);
+  // Per pixel from F0 = r, on rows at F0 = 0 of (0, 1, g - 0.5, k / 8 - 0.5).
+  MatcFresnelCoefficients from_f0 = matc_coefficients_from_f0(
+      matc_coefficients_from_baked(vec3(0.0), g - 0.5, k.xyz * 0.125 - 0.5), r);
+  matc_results[5u * i + 4u] = vec4(matc_fresnel(from_f0, reflectivity_mu.w), 1.0);
 }

@@ -1,8 +1,9 @@
 // matc {{version}}: the compute kernel that checks the coefficient-table path (textured metals) on
 // a Vulkan device against the CPU runtime. Each query is four float4: (r.rgb, mu),
 // (g.rgb, NdotV), (n.rgb, roughness), (k.rgb, -); it writes F(mu) and the preintegrated F from
-// the (r, g) coefficients, F(mu) from the (n, k) ones through matc_artistic_from_ior, and F(mu)
-// from matc_coefficients_from_baked with F0 = r, c_2 = g - 0.5, c_3 = k / 8 - 0.5.
+// the (r, g) coefficients, F(mu) from the (n, k) ones through matc_artistic_from_ior, F(mu) from
+// matc_coefficients_from_baked with F0 = r, c_2 = g - 0.5, c_3 = k / 8 - 0.5, and F(mu) from
+// matc_coefficients_from_f0 with F0 = r on the same rows at F0 = 0.
 {{library}}
 [[vk::binding(0, 0)]] StructuredBuffer<float4> matc_queries : register(t0);
 [[vk::binding(1, 0)]] RWStructuredBuffer<float4> matc_results : register(u1);
@@ -30,8 +31,12 @@ void main(uint3 id : SV_DispatchThreadID) {
       MATC_COEFFICIENTS_FROM_TABLE(matc_coefficient_table, matc_linear_sampler, ior_r, ior_g);
   MatcFresnelCoefficients baked =
       matc_coefficients_from_baked(r, g - 0.5, k.xyz * 0.125 - 0.5);
-  matc_results[4 * i] = float4(matc_fresnel(c, reflectivity_mu.w), 1.0);
-  matc_results[4 * i + 1] = float4(matc_fresnel_preintegrated(c, bbar), 1.0);
-  matc_results[4 * i + 2] = float4(matc_fresnel(from_ior, reflectivity_mu.w), 1.0);
-  matc_results[4 * i + 3] = float4(matc_fresnel(baked, reflectivity_mu.w), 1.0);
+  matc_results[5 * i] = float4(matc_fresnel(c, reflectivity_mu.w), 1.0);
+  matc_results[5 * i + 1] = float4(matc_fresnel_preintegrated(c, bbar), 1.0);
+  matc_results[5 * i + 2] = float4(matc_fresnel(from_ior, reflectivity_mu.w), 1.0);
+  matc_results[5 * i + 3] = float4(matc_fresnel(baked, reflectivity_mu.w), 1.0);
+  // Per pixel from F0 = r, on rows at F0 = 0 of (0, 1, g - 0.5, k / 8 - 0.5).
+  MatcFresnelCoefficients from_f0 = matc_coefficients_from_f0(
+      matc_coefficients_from_baked(float3(0.0, 0.0, 0.0), g - 0.5, k.xyz * 0.125 - 0.5), r);
+  matc_results[5 * i + 4] = float4(matc_fresnel(from_f0, reflectivity_mu.w), 1.0);
 }

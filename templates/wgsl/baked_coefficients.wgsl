@@ -9,3 +9,14 @@ fn matc_coefficients_from_baked(f0: vec3f, c2: vec3f, c3: vec3f) -> MatcFresnelC
                                  vec4f(c0.y, 1.0 - c0.y, c2.y, c3.y),
                                  vec4f(c0.z, 1.0 - c0.z, c2.z, c3.z));
 }
+
+// ---- Textured metals of Schlick's curve (a glTF metal's base colour), per pixel. ----
+// Schlick's curve is linear in F0, and so are its coefficients: per channel F0 (1, 0, 0, 0) +
+// (1 - F0) times the curve's coefficients at F0 = 0 (MATC_materials_fresnel's zeroF0Coefficients,
+// docs/gltf.md). F0 is the material's base colour (factor times texture, linear), clamped to [0, 1].
+fn matc_coefficients_from_f0(zero_f0: MatcFresnelCoefficients, f0: vec3f) -> MatcFresnelCoefficients {
+  let c0 = clamp(f0, vec3f(0.0), vec3f(1.0));
+  return MatcFresnelCoefficients(vec4f(c0.x, 0.0, 0.0, 0.0) + (1.0 - c0.x) * zero_f0.red,
+                                 vec4f(c0.y, 0.0, 0.0, 0.0) + (1.0 - c0.y) * zero_f0.green,
+                                 vec4f(c0.z, 0.0, 0.0, 0.0) + (1.0 - c0.z) * zero_f0.blue);
+}

@@ -277,6 +277,12 @@ fn main(@builtin(global_invocation_id) id: vec3u) {
                               "let bbar = matc_preintegrated_basis_embedded(query.y, query.z);"),
                    queries.flat.subarray(0, 256), 2);
     check(true, "embedded table compiles");
+    // matc_coefficients_from_f0 compiles in WGSL too (its values: the engines' probe checks).
+    await dispatch(library + fresnelKernel("matc_coefficients_from_f0(matc_coefficients_from_baked(vec3f(0.0), vec3f(0.3), vec3f(0.9)), vec3f(0.9))")
+                     .replace("let bbar = textureSampleLevel(matc_lut, matc_linear, matc_lut_texcoord(query.y, query.z), 0.0);",
+                              "let bbar = matc_preintegrated_basis_embedded(query.y, query.z);"),
+                   queries.flat.subarray(0, 256), 2);
+    check(true, "matc_coefficients_from_f0 compiles");
   });
   check(errors.length === 0, `WebGPU errors: ${errors.join("; ")}`);
 } finally {

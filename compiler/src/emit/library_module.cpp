@@ -41,6 +41,7 @@ std::vector<std::string> shared_library_exports(bool embedded_lut) {
                                     "matc_coefficients_from_table",
                                     "matc_artistic_from_ior",
                                     "matc_coefficients_from_baked",
+                                    "matc_coefficients_from_f0",
                                     "matc_ltc_texcoord",
                                     "matc_ltc_transform",
                                     "matc_ltc_quad_integral",

@@ -59,6 +59,7 @@ class CoefficientTableCheck final : public DeviceCheck {
     CheckedQuantity preintegrated{"Fbar(r, g)", tolerance_};
     CheckedQuantity from_ior{"F(n, k)", tolerance_};
     CheckedQuantity baked{"F(baked)", tolerance_};
+    CheckedQuantity from_f0{"F(from F0)", tolerance_};
     for (std::size_t i = 0; i < queries_.size(); ++i) {
       const TableQuery& q = queries_[i];
       const float* result = &results[i * kTableValidationResultsPerQuery * 4];
@@ -83,8 +84,13 @@ class CoefficientTableCheck final : public DeviceCheck {
           runtime::coefficients_from_baked(as_rgb(q.reflectivity), c2, c3);
       record_largest(baked, runtime::evaluate_fresnel(baked_coefficients, shader_basis, q.mu),
                      result + 12, i);
+      // Per pixel from F0 = r, on those rows taken at F0 = 0.
+      const runtime::Coefficients per_pixel = runtime::coefficients_from_f0(
+          runtime::coefficients_from_baked({0.0, 0.0, 0.0}, c2, c3), as_rgb(q.reflectivity));
+      record_largest(from_f0, runtime::evaluate_fresnel(per_pixel, shader_basis, q.mu), result + 16,
+                     i);
     }
-    return {fresnel, preintegrated, from_ior, baked};
+    return {fresnel, preintegrated, from_ior, baked, from_f0};
   }
 
   std::string describe_query(std::size_t index, std::string_view label) const override {

@@ -12,6 +12,7 @@
 #include "matc/emit/gltf_fresnel_extension.h"
 #include "matc/formats/glb_container.h"
 #include "matc/matc.h"
+#include "matc/runtime/baked_coefficients.h"
 
 namespace matc {
 namespace {
@@ -204,6 +205,20 @@ TEST(GltfFresnelExtension, ATexturedSchlickMetalCarriesItsCoefficientsAtZeroF0) 
                              "z.json")
             .front(),
         {basis, "acescg", ""});
+    // The runtime's per-pixel coefficients (the shaders' matc_coefficients_from_f0) at the
+    // factor are the compile at the factor.
+    runtime::Coefficients zero_rows{}, factor_rows{};
+    for (std::size_t c = 0; c < 3; ++c) {
+      for (std::size_t i = 0; i < 4; ++i) {
+        zero_rows[c][i] = trim["zeroF0Coefficients"][c][i].get<double>();
+        factor_rows[c][i] = trim["coefficients"][c][i].get<double>();
+      }
+    }
+    const runtime::Coefficients per_pixel = runtime::coefficients_from_f0(
+        zero_rows, {factor_rows[0][0], factor_rows[1][0], factor_rows[2][0]});
+    for (std::size_t c = 0; c < 3; ++c)
+      for (std::size_t i = 0; i < 4; ++i)
+        EXPECT_NEAR(per_pixel[c][i], factor_rows[c][i], 1e-12) << basis;
     for (std::size_t c = 0; c < 3; ++c) {
       const double f0 = trim["coefficients"][c][0].get<double>();
       for (std::size_t i = 0; i < 4; ++i) {

@@ -44,7 +44,7 @@ std::string validation_kernel_source(ShaderLanguage language, std::string_view l
 // Fbar from (r, g), F from (n, k), F from baked coefficients), 2 the preintegrated table, 3 the
 // sampler of both tables, 4 the coefficient table (its .xy).
 inline constexpr std::size_t kTableValidationQueryVectors = 4;
-inline constexpr std::size_t kTableValidationResultsPerQuery = 4;
+inline constexpr std::size_t kTableValidationResultsPerQuery = 5;
 std::string table_validation_kernel_source(ShaderLanguage language, std::string_view library);
 
 // The area-light kernel (templates/*/validate_area_lights.*): bindings 0 queries (eight vec4 each:
