@@ -86,6 +86,12 @@ export async function loadMatcBuild(source) {
     channel: wgslFn("fn matc_three_channel(r: f32, texel: vec2f) -> vec4f { " +
                     "return matc_channel_coefficients(r, texel); }", [library]),
   };
+  // A textured metal of Schlick's curve: each channel's row of matc_coefficients_from_f0 on the
+  // curve's rows at F0 = 0.
+  for (const channel of ["red", "green", "blue"]) {
+    functions[`fromF0${channel}`] = entry(`matc_three_from_f0_${channel}`, "f0: vec3f", "vec4f",
+                                          `matc_coefficients_from_f0(${coefficients}, f0).${channel}`);
+  }
   if (ltc) {
     // Rect area lights (the library has matc's LTC functions when the build wrote its table).
     functions.ltcTexcoord = wgslFn("fn matc_three_ltc_texcoord(ndotv: f32, roughness: f32) -> vec2f { " +
@@ -269,12 +275,13 @@ function coefficientRows(build, source) {
     return { red, green, blue };
   }
   if (kind === "schlick") {
-    // Schlick's curve of the base colour (colour times map): F0 (1, 0, 0, 0) + (1 - F0) times the
-    // curve's coefficients at F0 = 0, per channel.
+    // Schlick's curve of the base colour (colour times map), through the library's
+    // matc_coefficients_from_f0 on the curve's rows at F0 = 0.
     const [red, green, blue] = source.schlick.zeroF0Coefficients.map((row) => uniform(new THREE.Vector4(...row)));
-    const f0 = diffuseColor.rgb.clamp(0, 1).toConst("matc_f0");
-    const row = (c, zero) => vec4(f0[c], 0, 0, 0).add(f0[c].oneMinus().mul(zero));
-    return { red: row("x", red), green: row("y", green), blue: row("z", blue) };
+    const f0 = diffuseColor.rgb.toConst("matc_f0");
+    const { fromF0red, fromF0green, fromF0blue } = build.functions;
+    return { red: fromF0red({ red, green, blue, f0 }), green: fromF0green({ red, green, blue, f0 }),
+             blue: fromF0blue({ red, green, blue, f0 }) };
   }
   if (kind === "table") {
     const colour = (value) => uniform(new THREE.Color(...rgbOf(value)));
