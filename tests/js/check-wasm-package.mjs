@@ -210,6 +210,38 @@ for (const file of fs.readdirSync(catalogue).filter((f) => /\.(json|mtlx|gltf)$/
 }
 console.log(`${cases} catalogue cases through the JS API`);
 
+// MATC_materials_fresnel as the glTF loaders read it (matc/build's gltfExtensionMaterial): a
+// hostile member is refused naming it, never handed to a shader.
+{
+  const { gltfExtensionMaterial } = await import(path.join(work, "node_modules", "matc", "matc-build.mjs"));
+  const build = { basis: "powers", manifest: { matc_version: "1.2.3" } };
+  const rows = (row) => [row, row, row];
+  const good = { name: "Trim", basis: "powers", matcVersion: "1.2.3", coefficients: rows([0.9, 0.1, 0.03, 0.1]),
+                 zeroF0Coefficients: rows([0, 1, 0.32, 0.99]) };
+  const read = await gltfExtensionMaterial(build, good);
+  check(JSON.stringify(read.zeroF0Coefficients) === JSON.stringify(good.zeroF0Coefficients),
+        `a good extension's zeroF0Coefficients: ${JSON.stringify(read.zeroF0Coefficients)}`);
+  const refusals = [
+    [{ zeroF0Coefficients: rows([0, 1, NaN, 0.99]) }, /zeroF0Coefficients must be rows \[0, 1, c_2, c_3\] of finite numbers/],
+    [{ zeroF0Coefficients: rows([0, 1, "0.3", 0.99]) }, /zeroF0Coefficients must be rows/],
+    [{ zeroF0Coefficients: rows([0.1, 0.9, 0.3, 0.99]) }, /zeroF0Coefficients must be rows/],
+    [{ zeroF0Coefficients: [[0, 1, 0.3, 0.9]] }, /zeroF0Coefficients must be 3 rows of 4 numbers/],
+    [{ zeroF0Coefficients: "rows" }, /zeroF0Coefficients must be 3 rows of 4 numbers/],
+    [{ coefficients: rows([0.9, 0.1, Infinity, 0.1]) }, /coefficients must be finite numbers/],
+    [{ name: "a;b" }, /name is not the identifier matc writes/],
+    [{ basis: "paper" }, /holds coefficients of basis paper/],
+  ];
+  for (const [change, pattern] of refusals) {
+    let message = "no error";
+    try {
+      await gltfExtensionMaterial(build, { ...good, ...change });
+    } catch (error) {
+      message = error.message;
+    }
+    check(pattern.test(message), `MATC_materials_fresnel ${JSON.stringify(change)}: ${message}`);
+  }
+}
+
 // Arguments: refused with the argument named, the instance usable after.
 const gold = matc_.compile(matc_.parseMaterial({ name: "gold", spectral: { preset: "Au" } }));
 const throwsWith = (call, pattern, what) => {
