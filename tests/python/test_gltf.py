@@ -22,6 +22,23 @@ def test_the_bytes_are_matc_gltfs(tmp_path):
         assert asset.bytes == written.read_bytes()
 
 
+def test_a_textured_schlick_metal_carries_its_coefficients_at_zero_f0(tmp_path):
+    """Schlick's curve is linear in F0: the rows at F0 = 0 give the compile at the factor."""
+    path = tmp_path / "textured.gltf"
+    path.write_text(json.dumps({
+        "asset": {"version": "2.0"}, "textures": [{"source": 0}], "images": [{"uri": "t.png"}],
+        "materials": [{"name": "Trim", "pbrMetallicRoughness": {
+            "baseColorFactor": [0.9, 0.8, 0.6, 1], "baseColorTexture": {"index": 0}}}]}))
+    asset = matc.compile_gltf(path)
+    extension = json.loads(asset.bytes)["materials"][0]["extensions"]["MATC_materials_fresnel"]
+    zero = np.array(extension["zeroF0Coefficients"])
+    assert zero[:, 0].tolist() == [0.0] * 3 and zero[:, 1].tolist() == [1.0] * 3
+    compiled = asset.materials[0].coefficients
+    f0 = compiled[:, :1]
+    np.testing.assert_allclose(f0 * np.array([1.0, 0.0, 0.0, 0.0]) + (1.0 - f0) * zero, compiled,
+                               rtol=0, atol=1e-12)
+
+
 def test_the_metals_are_compiled_as_compile_compiles_them():
     asset = matc.compile_gltf(TRIM, basis="f82")
     assert [m.name for m in asset.materials] == ["Edge_Chrome", "LacqueredCopper"]
