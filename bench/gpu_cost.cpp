@@ -47,7 +47,7 @@ struct Comparison {
   bool tinted_coat = false;  // ours_coated under a tinted coat instead of a clear one
 };
 
-const std::array<Comparison, 16> kComparisons = {{
+const std::array<Comparison, 18> kComparisons = {{
     {"F alone, compiled coefficients", FresnelQuantity::direct, FresnelModel::ours,
      FresnelModel::schlick, std::nullopt},
     {"one GGX light, compiled coefficients", FresnelQuantity::ggx_light, FresnelModel::ours,
@@ -59,12 +59,19 @@ const std::array<Comparison, 16> kComparisons = {{
      FresnelQuantity::ggx_light, FresnelModel::table, FresnelModel::schlick_textured, 1.5},
     {"one GGX light, textured: baked F0, C2, C3 maps vs F0 map", FresnelQuantity::ggx_light,
      FresnelModel::baked, FresnelModel::schlick_textured, 1.25},
+    {"one GGX light, textured glTF metal: per pixel from the F0 map (matc_coefficients_from_f0) "
+     "vs F0 map",
+     FresnelQuantity::ggx_light, FresnelModel::from_f0, FresnelModel::schlick_textured,
+     std::nullopt},
     {"split-sum image light (environment and table fetches)", FresnelQuantity::preintegrated,
      FresnelModel::ours, FresnelModel::schlick, 1.10},
     {"split-sum image light, textured: coefficient table vs F0 map", FresnelQuantity::preintegrated,
      FresnelModel::table, FresnelModel::schlick_textured, std::nullopt},
     {"split-sum image light, textured: baked maps vs F0 map", FresnelQuantity::preintegrated,
      FresnelModel::baked, FresnelModel::schlick_textured, std::nullopt},
+    {"split-sum image light, textured glTF metal: per pixel from the F0 map vs F0 map",
+     FresnelQuantity::preintegrated, FresnelModel::from_f0, FresnelModel::schlick_textured,
+     std::nullopt},
     {"one quad light (LTC)", FresnelQuantity::quad_light, FresnelModel::ours, FresnelModel::schlick,
      1.05},
     {"one quad light (LTC), quality level: shape and Fresnel following the light (vs "

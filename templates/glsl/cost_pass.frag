@@ -74,6 +74,9 @@ void main() {
       MATC_COEFFICIENTS_FROM_TABLE(sampler2D(matc_coefficient_table, matc_lut_sampler), a, b);
 #elif MATC_COST_BAKED
   MatcFresnelCoefficients c = matc_coefficients_from_baked(a, b, c3);
+#elif MATC_COST_FROM_F0
+  // The material's rows stand in for a glTF metal's at F0 = 0 (the same instructions).
+  MatcFresnelCoefficients c = matc_coefficients_from_f0(matc_coefficients_{{name}}, a);
 #else
   MatcFresnelCoefficients c = matc_coefficients_{{name}};
 #endif
@@ -81,7 +84,7 @@ void main() {
 #if MATC_COST_SCHLICK
 #define COST_FRESNEL(MU) matc_cost_schlick(F0, (MU))
 #define COST_FRESNEL_PREINTEGRATED(TEXEL) (F0 * (TEXEL).x + (vec3(1.0) - F0) * (TEXEL).y)
-#elif MATC_COST_TABLE || MATC_COST_BAKED
+#elif MATC_COST_TABLE || MATC_COST_BAKED || MATC_COST_FROM_F0
 #define COST_FRESNEL(MU) matc_fresnel(c, (MU))
 #define COST_FRESNEL_PREINTEGRATED(TEXEL) matc_fresnel_preintegrated(c, (TEXEL))
 #else

@@ -29,6 +29,7 @@ namespace {
 int material_map_count(FresnelModel model) {
   switch (model) {
     case FresnelModel::schlick_textured:
+    case FresnelModel::from_f0:
       return 1;
     case FresnelModel::table:
       return 2;
@@ -79,6 +80,7 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
   if (model == FresnelModel::schlick_textured) model_name = "Schlick's, F0 from a map";
   if (model == FresnelModel::table) model_name = "ours from the coefficient table";
   if (model == FresnelModel::baked) model_name = "ours from baked coefficient textures";
+  if (model == FresnelModel::from_f0) model_name = "ours per pixel from an F0 map";
   if (model == FresnelModel::ours_coated) model_name = "ours, coated (two lobes)";
   if (model == FresnelModel::ours_with_schlick_coat) model_name = "ours under a Schlick coat lobe";
   if (model == FresnelModel::schlick_clear_coat) model_name = "Filament's clear coat (Schlick)";
@@ -96,13 +98,14 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
        {"variant", fmt::format("{} {}", model_name, quantity_name)},
        {"defines",
         fmt::format("#define MATC_COST_SCHLICK {}\n#define MATC_COST_TABLE {}\n#define "
-                    "MATC_COST_BAKED {}\n#define MATC_COST_MAPS {}\n#define MATC_COST_DIRECT "
+                    "MATC_COST_BAKED {}\n#define MATC_COST_FROM_F0 {}\n#define MATC_COST_MAPS "
+                    "{}\n#define MATC_COST_DIRECT "
                     "{}\n#define MATC_COST_GGX_LIGHT {}\n#define MATC_COST_QUAD_LIGHT {}\n#define "
                     "MATC_COST_QUAD_LIGHT_FOLLOWING {}\n#define MATC_COST_CLOSED_FORM {}\n#define "
                     "MATC_COST_IMAGE_LIGHT {}\n#define MATC_COST_COAT {}",
                     flag(schlick), flag(model == FresnelModel::table),
-                    flag(model == FresnelModel::baked), material_map_count(model),
-                    flag(quantity == FresnelQuantity::direct),
+                    flag(model == FresnelModel::baked), flag(model == FresnelModel::from_f0),
+                    material_map_count(model), flag(quantity == FresnelQuantity::direct),
                     flag(quantity == FresnelQuantity::ggx_light),
                     flag(quantity == FresnelQuantity::quad_light),
                     flag(quantity == FresnelQuantity::quad_light_following),

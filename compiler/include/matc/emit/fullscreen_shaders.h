@@ -16,7 +16,9 @@ namespace matc {
 
 // Schlick's with a constant F0, or with F0 from a map; ours with a material's compiled
 // coefficients; ours per pixel from reflectivity and edge-tint maps through the coefficient table
-// (a textured metal); ours from baked coefficient textures (F0, C2, C3 maps, `matc bake`). Coated
+// (a textured metal); ours from baked coefficient textures (F0, C2, C3 maps, `matc bake`); ours per
+// pixel from an F0 map on the curve's rows at F0 = 0 (a glTF metal's textured Schlick curve,
+// matc_coefficients_from_f0). Coated
 // metals (docs/coating.md), two lobes each: ours for a coated material (its base and coat lobes);
 // ours bare with a Schlick coat lobe (F0 0.04) attenuating it; Filament's clear coat (Schlick with
 // F0 converted into the coat, f0ClearCoatToSurface, under the same Schlick coat lobe).
@@ -26,6 +28,7 @@ enum class FresnelModel {
   ours,
   table,
   baked,
+  from_f0,
   ours_coated,
   ours_with_schlick_coat,
   schlick_clear_coat
@@ -46,8 +49,9 @@ enum class FresnelQuantity {
 };
 
 // What the cost pass reads at one binding of set 0. The table is the preintegrated one (for
-// Schlick's variants the ComparisonLobes bake); the material maps are F0 (Schlick's textured),
-// reflectivity and edge tint (the coefficient table) or F0, C2, C3 (baked textures).
+// Schlick's variants the ComparisonLobes bake); the material maps are F0 (Schlick's textured, and
+// ours per pixel from F0), reflectivity and edge tint (the coefficient table) or F0, C2, C3
+// (baked textures).
 enum class CostPassResource {
   table,
   sampler,
