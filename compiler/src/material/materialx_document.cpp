@@ -74,12 +74,7 @@ MaterialXDocument::MaterialXDocument(std::string_view text, const std::string& p
                        fmt::format("malformed XML: {}", problem->message), std::string(allowed));
     return;
   }
-  tree_ = std::move(std::get<XmlTree>(parsed));
-  if (tree_.top_level.empty()) {
-    diagnostics_.error(locator_.whole_file(), "", "malformed XML: No document element found",
-                       std::string(allowed));
-    return;
-  }
+  tree_ = std::move(std::get<XmlTree>(parsed));  // read_xml_tree: at least one element
   if (const auto duplicate = find_duplicate_attribute(tree_)) {
     diagnostics_.error(at(*duplicate->element), "",
                        fmt::format("malformed XML: <{}> gives the attribute '{}' twice",

@@ -6,13 +6,19 @@
 #include <fmt/format.h>
 
 namespace matc {
-namespace {
 
 bool is_xml_space(char c) {
   return c == ' ' || c == '\t' || c == '\n' || c == '\r';
 }
 
-}  // namespace
+bool starts_xml_name(char c) {
+  const auto byte = static_cast<unsigned char>(c);
+  return byte >= 0x80 || std::isalpha(byte) || c == '_' || c == ':';
+}
+
+bool continues_xml_name(char c) {
+  return starts_xml_name(c) || std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '.';
+}
 
 std::size_t end_of_other_markup(std::string_view text, std::size_t at) {
   const std::string_view rest = text.substr(at);
@@ -54,9 +60,7 @@ namespace {
 // section or document type, and a document type inside an element.
 std::optional<XmlProblem> markup_problem(std::string_view text, std::size_t at, std::size_t depth) {
   const std::string_view rest = text.substr(at);
-  const bool named = rest.size() > 2 && (std::isalpha(static_cast<unsigned char>(rest[2])) ||
-                                         static_cast<unsigned char>(rest[2]) >= 0x80 ||
-                                         rest[2] == '_' || rest[2] == ':');
+  const bool named = rest.size() > 2 && starts_xml_name(rest[2]);
   if (rest.starts_with("<?") && !named)
     return XmlProblem{at + 2, "Error parsing document declaration/processing instruction"};
   if (!rest.starts_with("<!") || rest.starts_with("<!--") || rest.starts_with("<![CDATA["))

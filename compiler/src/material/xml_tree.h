@@ -56,6 +56,12 @@ struct XmlProblem {
 // (and rapidxml parses) by recursion.
 inline constexpr std::size_t kMaxXmlDepth = 256;
 
+// XML's white space, and pugixml's name characters (its ct_start_symbol, ct_symbol): what both
+// readers' checks take a name and the space between attributes to be.
+bool is_xml_space(char c);
+bool starts_xml_name(char c);
+bool continues_xml_name(char c);
+
 enum class XmlLibrary { pugixml, rapidxml };
 
 // The problem both readers report for text outside the root element.

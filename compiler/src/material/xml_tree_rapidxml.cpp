@@ -2,7 +2,6 @@
 // only, rapidxml as a header). rapidxml leaves attribute values as written here (non-destructive
 // parse), and they are expanded as pugixml expands them, so both readings give the same tree.
 #include <algorithm>
-#include <cctype>
 #include <cstdint>
 #include <exception>
 #include <optional>
@@ -62,25 +61,21 @@ std::size_t expand_reference(std::string_view raw, std::size_t at, std::string& 
       digits = true;
     }
   } else {
+    // A name matched whole is expanded; otherwise pugixml's matcher stops at the first character
+    // that differs from every name.
+    std::size_t matched = 0;
     for (const auto& [name, character] : {std::pair<std::string_view, char>{"amp;", '&'},
                                           {"apos;", '\''},
                                           {"gt;", '>'},
                                           {"lt;", '<'},
                                           {"quot;", '"'}}) {
-      const std::string_view rest = raw.substr(end);
-      if (rest.starts_with(name)) {
-        out += character;
-        return end + name.size();
-      }
-    }
-    // pugixml's matcher stops at the first character that differs from every name.
-    std::size_t matched = 0;
-    for (const auto name : {"amp;", "apos;", "gt;", "lt;", "quot;"}) {
-      const std::string_view candidate(name);
       std::size_t same = 0;
-      while (same < candidate.size() && end + same < raw.size() &&
-             raw[end + same] == candidate[same])
+      while (same < name.size() && end + same < raw.size() && raw[end + same] == name[same])
         ++same;
+      if (same == name.size()) {
+        out += character;
+        return end + same;
+      }
       matched = std::max(matched, same);
     }
     end += matched;
@@ -96,10 +91,12 @@ std::string attribute_value(std::string_view raw) {
   for (std::size_t at = 0; at < raw.size();) {
     const char c = raw[at];
     if (c == '&') {
+      const std::size_t before = out.size();
       at = expand_reference(raw, at, out);
       // pugixml's values are C strings: a NUL from "&#0;" ends one. (find_xml_character_problem
-      // refuses that reference; this keeps the two readings equal regardless.)
-      if (const std::size_t nul = out.find('\0'); nul != std::string::npos) {
+      // refuses that reference; this keeps the two readings equal regardless.) Only what this
+      // reference appended is searched, so a value of many references stays linear.
+      if (const std::size_t nul = out.find('\0', before); nul != std::string::npos) {
         out.resize(nul);
         return out;
       }
@@ -114,24 +111,12 @@ std::string attribute_value(std::string_view raw) {
   return out;
 }
 
-// pugixml's name characters (its ct_start_symbol and ct_symbol): rapidxml takes any character
-// but white space and a few delimiters in a name, pugixml refuses the tag.
-bool starts_name(char c) {
-  const auto byte = static_cast<unsigned char>(c);
-  return byte >= 0x80 || std::isalpha(byte) || c == '_' || c == ':';
-}
-bool continues_name(char c) {
-  return starts_name(c) || std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '.';
-}
-bool is_space(char c) {
-  return c == ' ' || c == '\t' || c == '\n' || c == '\r';
-}
-
-// The first character of `name` past pugixml's name characters, or null.
+// The first character of `name` past pugixml's name characters (rapidxml takes any character but
+// white space and a few delimiters in a name, pugixml refuses the tag), or null.
 const char* past_name(const char* name, std::size_t size) {
-  if (size == 0 || !starts_name(name[0])) return name;
+  if (size == 0 || !starts_xml_name(name[0])) return name;
   for (std::size_t i = 1; i < size; ++i)
-    if (!continues_name(name[i])) return name + i;
+    if (!continues_xml_name(name[i])) return name + i;
   return nullptr;
 }
 
@@ -146,13 +131,13 @@ std::optional<std::pair<const char*, const char*>> start_tag_problem(
   for (const rapidxml::xml_attribute<>* attribute = node->first_attribute(); attribute;
        attribute = attribute->next_attribute()) {
     const char* name = attribute->name();
-    if (!is_space(name[-1]) || !starts_name(name[0]))
+    if (!is_xml_space(name[-1]) || !starts_xml_name(name[0]))
       return std::pair{name, "Error parsing start element tag"};
     if (const char* bad = past_name(name, attribute->name_size()))
       return std::pair{bad + 1, "Error parsing element attribute"};
     // The value's closing quote is followed by white space or the tag's end.
     const char* after = attribute->value() + attribute->value_size() + 1;
-    if (!is_space(*after) && *after != '/' && *after != '>')
+    if (!is_xml_space(*after) && *after != '/' && *after != '>')
       return std::pair{after, "Error parsing element attribute"};
   }
   return std::nullopt;
