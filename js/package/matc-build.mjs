@@ -371,7 +371,7 @@ export async function gltfExtensionMaterial(build, extension) {
     throw new MatcWebError(`its ${kGltfFresnelExtension}.name is not the identifier matc writes`);
   }
   const rows = checkedRows(extension.coefficients, kGltfFresnelExtension, "coefficients");
-  if (rows.some((row) => row.some((value) => typeof value !== "number" || !Number.isFinite(value)))) {
+  if (!finiteRows(rows)) {
     throw new MatcWebError(`its ${kGltfFresnelExtension}.coefficients must be finite numbers`);
   }
   if (!extension.coat) {
@@ -410,10 +410,6 @@ function gltfMaterialAsset(json, index) {
 
 const isGltfMetal = (material) => (material.pbrMetallicRoughness?.metallicFactor ?? 1) > 0;
 
-// Schlick's curve at F0 = 0, as the importer writes a glTF metal: compiled in the page for the
-// textured metals of an asset that carries no zeroF0Coefficients.
-const kZeroF0Schlick = { name: "zero_f0", color_space: "lin_rec709", f82_tint: { f0: [0, 0, 0], tint: [1, 1, 1] } };
-
 // What the engines' glTF loaders (three/matc-gltf.mjs, babylon/matc-gltf.mjs) make of an asset's
 // materials: `metalOf(index)` resolves to { metal (as build.loadMaterial gives it), from:
 // "extension" | "compiled", source: useMatcFresnel's }, or null for a material that stays the
@@ -424,21 +420,21 @@ const kZeroF0Schlick = { name: "zero_f0", color_space: "lin_rec709", f82_tint: {
 // `warn(index, why)`; a non-metal nothing. Each index is resolved once.
 export function gltfMetals({ matc = null, build, compile = {}, json, warn }) {
   const found = new Map();
-  let zeroF0 = null;  // the compile of kZeroF0Schlick, once
   const textured = (index) => json.materials[index].pbrMetallicRoughness?.baseColorTexture !== undefined;
   const withSource = (metal, from, zeroF0Coefficients) => ({
     metal, from,
     source: zeroF0Coefficients ? { schlick: { basis: metal.basis, zeroF0Coefficients } } : { material: metal },
   });
+  // `matc gltf` in the page: the importer decides which metals follow their texture per pixel, and
+  // writes their zeroF0Coefficients, as for an asset written offline.
   const compileInPage = async (index) => {
     try {
-      const [material] = matc.parseMaterials(gltfMaterialAsset(json, index), "asset.gltf");
-      if (!material) return null;
-      const metal = await build.loadMaterial(matc.compile(material, compile));
-      const { f82_tint: curve } = JSON.parse(material.json);
-      if (!textured(index) || metal.coat || curve?.tint?.some((value) => value !== 1)) return withSource(metal, "compiled");
-      zeroF0 ??= matc.compile(matc.parseMaterial(kZeroF0Schlick), compile).coefficients;
-      return withSource(metal, "compiled", zeroF0);
+      const asset = matc.compileGltf(gltfMaterialAsset(json, index), "asset.gltf", compile);
+      const [compiled] = asset.materials;
+      if (!compiled) return null;
+      const written = JSON.parse(new TextDecoder().decode(asset.bytes));
+      const extension = written.materials[0].extensions[kGltfFresnelExtension];
+      return withSource(await build.loadMaterial(compiled), "compiled", extension.zeroF0Coefficients);
     } catch (error) {
       // Not a metal: the engine's material stays, silently. Anything else (a value matc refuses,
       // options that do not fit the build) is said.
@@ -487,11 +483,14 @@ function checkedRows(rows, file, field) {
   return rows;
 }
 
+// Whether every value of coefficient rows is a finite number.
+const finiteRows = (rows) => rows.every((row) => row.every((value) => typeof value === "number" && Number.isFinite(value)));
+
 // Coefficient rows of a Schlick curve at F0 = 0 (c_0 = 0, c_1 = 1 per channel, finite c_2, c_3),
 // or an error naming `what`.
 function checkedZeroF0Rows(rows, what) {
   checkedRows(rows, what, "zeroF0Coefficients");
-  if (rows.some((row) => row[0] !== 0 || row[1] !== 1 || !row.every((value) => typeof value === "number" && Number.isFinite(value)))) {
+  if (!finiteRows(rows) || rows.some((row) => row[0] !== 0 || row[1] !== 1)) {
     throw new MatcWebError(`${what}: zeroF0Coefficients must be rows [0, 1, c_2, c_3] of finite numbers`);
   }
   return rows;
