@@ -62,6 +62,7 @@ set(MATC_CORE_SOURCES
   src/emit/output_layout.cpp
   src/options/option_names.cpp
   src/api/diagnostics.cpp
+  src/api/checked_values.cpp
   src/api/material.cpp
   src/api/compiled_material.cpp
   src/api/text_outputs.cpp
@@ -70,6 +71,9 @@ set(MATC_CORE_SOURCES
 set(MATC_NATIVE_SOURCES
   src/material/xml_tree_pugixml.cpp
   src/api/batch.cpp
+  src/api/build.cpp
+  src/api/tables.cpp
+  src/api/fbar_reference.cpp
   src/basis/training_set.cpp
   src/basis/basis_polynomial_fit.cpp
   src/basis/basis_fit.cpp

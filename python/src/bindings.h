@@ -1,4 +1,5 @@
-// The parts of the `matc` Python module: module.cpp calls one registration function per file.
+// The parts of the `matc` Python module: module.cpp calls one registration function per file;
+// and what every part uses.
 #pragma once
 
 #include <pybind11/pybind11.h>
@@ -12,5 +13,13 @@ void register_tables(pybind11::module_& module);             // tables.cpp
 void register_build(pybind11::module_& module);              // build.cpp
 void register_batch(pybind11::module_& module);              // batch.cpp
 void register_gltf(pybind11::module_& module);               // gltf.cpp
+
+// make() with the GIL released: the library's work (reading, compiling, baking, writing) lets
+// other Python threads run.
+template <typename Make>
+auto without_gil(const Make& make) {
+  const pybind11::gil_scoped_release release;
+  return make();
+}
 
 }  // namespace matc::python

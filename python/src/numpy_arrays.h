@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <exception>
 #include <string_view>
 #include <thread>
 #include <utility>
@@ -52,8 +53,13 @@ std::vector<pybind11::ssize_t> shape_with_axis(const DoubleArray& values, std::s
 // costs about as much as evaluating F this many times).
 inline constexpr std::size_t kElementsPerThread = std::size_t{1} << 15;
 
+// Elements one library call evaluates at once: its results are copied out, so a block bounds
+// the memory a call holds beside the result array.
+inline constexpr std::size_t kElementsPerCall = 4096;
+
 // body(begin, end) over [0, count) in contiguous chunks of at least `per_thread` elements, one
-// chunk per hardware thread at most.
+// chunk per hardware thread at most. An exception a chunk throws (the library's, or
+// std::bad_alloc) is thrown again here once every thread has stopped, never std::terminate.
 template <typename Body>
 void for_each_chunk(std::size_t count, std::size_t per_thread, const Body& body) {
   const std::size_t hardware = std::max(1u, std::thread::hardware_concurrency());
@@ -63,10 +69,33 @@ void for_each_chunk(std::size_t count, std::size_t per_thread, const Body& body)
     return;
   }
   const std::size_t chunk = (count + threads - 1) / threads;
-  std::vector<std::jthread> pool;
-  for (std::size_t t = 1; t < threads; ++t)
-    pool.emplace_back([&, t] { body(t * chunk, std::min(count, (t + 1) * chunk)); });
-  body(std::size_t{0}, std::min(count, chunk));
+  std::vector<std::exception_ptr> thrown(threads);
+  {
+    std::vector<std::jthread> pool;
+    for (std::size_t t = 1; t < threads; ++t) {
+      pool.emplace_back([&, t] {
+        try {
+          body(t * chunk, std::min(count, (t + 1) * chunk));
+        } catch (...) {
+          thrown[t] = std::current_exception();
+        }
+      });
+    }
+    try {
+      body(std::size_t{0}, std::min(count, chunk));
+    } catch (...) {
+      thrown[0] = std::current_exception();
+    }
+  }
+  for (const std::exception_ptr& error : thrown)
+    if (error) std::rethrow_exception(error);
+}
+
+// call(begin, count) over [begin, end) in blocks of at most kElementsPerCall.
+template <typename Call>
+void in_blocks(std::size_t begin, std::size_t end, const Call& call) {
+  for (std::size_t block = begin; block < end; block += kElementsPerCall)
+    call(block, std::min(kElementsPerCall, end - block));
 }
 
 // A new array of shape `like`'s + (Width,), filled by fill_rows(begin, end, out) over element
@@ -85,45 +114,32 @@ pybind11::array_t<double> filled_array(const DoubleArray& like, std::size_t per_
   return out;
 }
 
-template <std::size_t Width>
-void store_row(const std::array<double, Width>& value, double* row) {
-  std::copy(value.begin(), value.end(), row);
-}
-
-// out[..., :] = function(values[...]).
-template <std::size_t Width, typename Function>
-pybind11::array_t<double> map_values(const DoubleArray& values, const Function& function,
-                                     std::size_t per_thread = kElementsPerThread) {
-  const double* in = values.data();
-  return filled_array<Width>(values, per_thread,
-                             [&](std::size_t begin, std::size_t end, double* result) {
-                               for (std::size_t i = begin; i < end; ++i)
-                                 store_row(function(in[i]), result + i * Width);
-                             });
-}
-
-// out[..., :] from whole chunks: chunk(values, count, out) fills `count` rows of Width values.
+// out[..., :] from blocks: chunk(values, count, out) fills `count` rows of Width values.
 template <std::size_t Width, typename Chunk>
 pybind11::array_t<double> map_value_chunks(const DoubleArray& values, const Chunk& chunk) {
   const double* in = values.data();
   return filled_array<Width>(values, kElementsPerThread,
                              [&](std::size_t begin, std::size_t end, double* result) {
-                               chunk(in + begin, end - begin, result + begin * Width);
+                               in_blocks(begin, end, [&](std::size_t block, std::size_t count) {
+                                 chunk(in + block, count, result + block * Width);
+                               });
                              });
 }
 
-// out[..., :] = function(a[...], b[...]) over a pair broadcast().
-template <std::size_t Width, typename Function>
-pybind11::array_t<double> map_pairs(const std::pair<DoubleArray, DoubleArray>& pair,
-                                    const Function& function,
-                                    std::size_t per_thread = kElementsPerThread) {
+// out[..., :] from blocks of a pair broadcast(): chunk(a, b, count, out) fills `count` rows of
+// Width values.
+template <std::size_t Width, typename Chunk>
+pybind11::array_t<double> map_pair_chunks(const std::pair<DoubleArray, DoubleArray>& pair,
+                                          const Chunk& chunk,
+                                          std::size_t per_thread = kElementsPerThread) {
   const auto& [first, second] = pair;
   const double* x = first.data();
   const double* y = second.data();
   return filled_array<Width>(first, per_thread,
                              [&](std::size_t begin, std::size_t end, double* result) {
-                               for (std::size_t i = begin; i < end; ++i)
-                                 store_row(function(x[i], y[i]), result + i * Width);
+                               in_blocks(begin, end, [&](std::size_t block, std::size_t count) {
+                                 chunk(x + block, y + block, count, result + block * Width);
+                               });
                              });
 }
 

@@ -2,19 +2,22 @@
 // any bytes. The first byte picks the options (the names the faces pass through, a wrong one
 // among them), the document kind and whether files it names come from memory (InputFiles: the
 // two halves of the rest as "a.csv" and "b.bin"); the rest is the document. What parses is
-// compiled, its curves evaluated on cosines read from the input (NaN and values outside [0, 1]
-// among them) and its texts written. Allowed outcomes: MaterialError (an error, every line
+// compiled, its values read, its curves evaluated on cosines read from the input (NaN and values
+// outside [0, 1] among them; Fbar and its reference on the same values as pairs, an output span of
+// the wrong size once) and its texts written. Allowed outcomes: MaterialError (an error, every line
 // printable), std::invalid_argument for a bad option or cosine, std::logic_error for a bare metal's
 // lobes; anything else (another exception, a crash, a sanitizer report) is a finding.
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "matc/api/tables.h"
 #include "matc/matc.h"
 
 namespace {
@@ -82,6 +85,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::vector<double> mu = cosines_of(text);
   for (const matc::api::Material& material : materials) {
     require_printable(material.diagnostics());
+    (void)material.inputs();
+    (void)material.roughness();
+    (void)material.color_space();
     allow_invalid_argument([&] {
       const matc::api::CompiledMaterial compiled = matc::api::compile(material, options);
       require_printable(compiled.diagnostics());
@@ -90,6 +96,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       allow_invalid_argument([&] { (void)compiled.schlick(mu); });
       allow_invalid_argument([&] { (void)compiled.f82_tint(mu); });
       if (compiled.coat()) allow_invalid_argument([&] { (void)compiled.coated_fresnel(mu); });
+      std::vector<double> rgb(3 * mu.size() - 1);
+      allow_invalid_argument([&] { compiled.fresnel(mu, rgb); });
+      const std::span<const double> ndotv(mu.data(), mu.size() / 2);
+      const std::span<const double> roughness(mu.data() + mu.size() / 2, mu.size() / 2);
+      // A small table of its basis: the default one takes seconds to bake under the sanitizers.
+      const matc::api::PreintegratedTable table =
+          matc::api::preintegrated_table({compiled.basis(), 8, 16, "f32"});
+      allow_invalid_argument([&] { (void)compiled.fbar(ndotv, roughness, table); });
+      allow_invalid_argument([&] { (void)compiled.fbar_reference(ndotv, roughness, 16); });
+      (void)compiled.ior();
+      (void)compiled.artistic();
+      if (compiled.json().empty()) __builtin_trap();
       const matc::api::TextOutputs texts(options);
       for (const char* language : {"glsl", "hlsl", "wgsl"})
         if (texts.material_source(language, compiled).empty()) __builtin_trap();

@@ -95,6 +95,7 @@ def test_bad_types_raise_type_error(call):
     (lambda: matc.Build(embed_lut=65), "embed_lut: 65 is out of range"),
     (lambda: matc.Build(basis="nope"), "basis: 'nope' is not one of powers"),
     (lambda: matc.Build(emit=["glsl", "msl"]), "emit: 'msl' is not one of"),
+    (lambda: matc.Build(emit=[]), "emit: an empty list"),
     (lambda: matc.Build(lut_format="png"), "lut_format: 'png' is not one of ktx2"),
     (lambda: matc.Build(color_space="cmyk"), "color_space: 'cmyk' is not one of"),
     (lambda: matc.Build(gamut_mapping="clip"), "gamut_mapping: 'clip' is not one of none"),
@@ -107,7 +108,8 @@ def test_bad_types_raise_type_error(call):
     (lambda: matc.Build().shader(matc.compile(GOLD), "msl"), "language: 'msl' is not one of"),
     (lambda: matc.preintegrated_table(size=1), "out of range"),
     (lambda: matc.preintegrated_table(precision="f64"), "precision: 'f64' is not one of"),
-    (lambda: matc.coefficient_table().coefficients([2, 0, 0], [0, 0, 0]), "reflectivity: 2"),
+    (lambda: matc.coefficient_table().coefficients([2, 0, 0], [0, 0, 0]),
+     r"reflectivity: element 0 is 2; a number in \[0, 1\]"),
     (lambda: matc.compile_batch([GOLD], shared_only=True), "shared"),
     (lambda: matc.compile_batch([GOLD], None, depfile="x.d"), "depfile"),
 ])

@@ -141,7 +141,7 @@ def test_build_options_and_description():
     assert build.lut.size == 32 and build.lut.basis == "extended"
     gold = build.compile(GOLD)
     assert gold.basis == "extended" and gold.color_space == "acescg"
-    with pytest.raises(ValueError, match="this build's compile"):
+    with pytest.raises(ValueError, match="compile it with the outputs' options"):
         matc.Build().shader(gold, "glsl")
 
 

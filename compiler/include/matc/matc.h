@@ -1,6 +1,8 @@
 // libmatc's public API: read materials, compile them, evaluate their curves and write their
 // texts. The CLI, the Python module and the WebAssembly binding are faces over it (docs/api.md).
-// Native builds add "matc/api/batch.h": a batch into an output directory, as `matc -o` runs it.
+// Native builds add "matc/api/tables.h" (the tables a renderer samples), "matc/api/build.h" (every
+// file `matc` writes, in memory) and "matc/api/batch.h" (a batch into an output directory, as
+// `matc -o` runs it).
 #pragma once
 
 #include "matc/api/compiled_material.h"

@@ -1,9 +1,10 @@
 #include "matc/api/batch.h"
 
-#include <set>
+#include <optional>
 #include <stdexcept>
 
 #include "checked_options.h"
+#include "matc/base/echoed_text.h"
 #include "matc/emit/build.h"
 #include "matc/pipeline/compile_batch.h"
 #include "matc/pipeline/output_sink.h"
@@ -12,25 +13,54 @@
 namespace matc::api {
 namespace {
 
-std::set<OutputKind> output_kinds(const std::vector<std::string>& names) {
-  if (names.empty()) return all_output_kinds();
-  std::set<OutputKind> kinds;
-  for (const std::string& name : names)
-    kinds.insert(checked_option_value<OutputKind>("emit", name));
-  return kinds;
+matc::BatchEvents library_events(const BatchEvents& events) {
+  matc::BatchEvents out;
+  if (events.diagnostics) {
+    out.diagnostics = [&events](const Diagnostics& diagnostics) {
+      events.diagnostics(public_diagnostics(diagnostics));
+    };
+  }
+  if (events.progress) {
+    out.progress = [&events](const matc::BatchProgress& progress) {
+      events.progress({progress.done, progress.total, std::string(progress.name)});
+    };
+  }
+  if (events.error) {
+    out.error = [&events](const std::string& where, const std::string& message) {
+      events.error(printable(where), printable(message));
+    };
+  }
+  return out;
 }
 
 }  // namespace
 
 BatchResult compile_batch(std::span<const BatchSource> sources, const BatchOptions& options,
                           const BatchEvents& events, std::stop_token cancel) {
-  if (options.output_directory.empty())
+  BuildOptions build;
+  build.compile = options.compile;
+  build.emit = options.emit;
+  BatchOptions rest = options;
+  rest.compile = {};
+  rest.emit.clear();
+  return compile_batch(Build(build), sources, rest, events, std::move(cancel));
+}
+
+BatchResult compile_batch(const Build& build, std::span<const BatchSource> sources,
+                          const BatchOptions& options, const BatchEvents& events,
+                          std::stop_token cancel) {
+  const CompileOptions& compile = options.compile;
+  if (!compile.basis.empty() || !compile.color_space.empty() || !compile.gamut_mapping.empty() ||
+      !options.emit.empty()) {
+    throw std::invalid_argument(
+        "compile, emit: set with a Build, whose options a batch with it uses; leave them empty");
+  }
+  if (options.in_memory && !options.output_directory.empty()) {
+    throw std::invalid_argument(
+        "output_directory: set with in_memory; a batch writes to one or the other");
+  }
+  if (!options.in_memory && options.output_directory.empty())
     throw std::invalid_argument("output_directory: empty; the folder the files go to");
-  BuildOptions build_options;
-  build_options.emit = output_kinds(options.emit);
-  build_options.basis = basis_of(options.compile);
-  build_options.color = color_options_of(options.compile);
-  const Build build(build_options);
 
   std::vector<MaterialSource> inputs;
   inputs.reserve(sources.size());
@@ -39,25 +69,28 @@ BatchResult compile_batch(std::span<const BatchSource> sources, const BatchOptio
   CompileBatchOptions batch;
   batch.jobs = options.jobs;
   batch.keep_going = options.keep_going;
+  batch.no_shared = options.no_shared;
+  batch.shared_only = options.shared_only;
   batch.depfile = options.depfile;
+  for (const std::string& dependency : options.extra_dependencies)
+    batch.extra_dependencies.emplace_back(dependency);
   batch.cancel = std::move(cancel);
-  matc::BatchEvents library_events;
-  if (events.diagnostics) {
-    library_events.diagnostics = [&](const Diagnostics& diagnostics) {
-      events.diagnostics(public_diagnostics(diagnostics));
-    };
-  }
-  if (events.progress) {
-    library_events.progress = [&](const matc::BatchProgress& progress) {
-      events.progress({progress.done, progress.total, std::string(progress.name)});
-    };
-  }
-  library_events.error = events.error;
-  DirectoryOutput output(options.output_directory);
+  std::optional<MemoryOutput> memory;
+  std::optional<DirectoryOutput> directory;
+  OutputSink& output = options.in_memory
+                           ? static_cast<OutputSink&>(memory.emplace())
+                           : static_cast<OutputSink&>(directory.emplace(options.output_directory));
   const CompileBatchResult result =
-      matc::compile_batch(build, inputs, output, batch, library_events);
-  return {result.counts.done,   result.counts.written,       result.counts.unchanged,
-          result.counts.failed, result.counts.not_attempted, result.cancelled};
+      matc::compile_batch(build.value(), inputs, output, batch, library_events(events));
+  BatchResult out{result.counts.done,
+                  result.counts.written,
+                  result.counts.unchanged,
+                  result.counts.failed,
+                  result.counts.not_attempted,
+                  result.cancelled,
+                  {}};
+  if (memory) out.files = memory->files();
+  return out;
 }
 
 }  // namespace matc::api

@@ -1,5 +1,6 @@
 // The public face's option names as the library's values, or std::invalid_argument naming the
-// option and every name it takes.
+// option and every name it takes; and a compiled material checked against the options of the
+// outputs asked of it.
 #pragma once
 
 #include <stdexcept>
@@ -14,6 +15,7 @@
 #include "matc/compile/compile.h"
 #include "matc/options/option_names.h"
 #include "matc/runtime/basis.h"
+#include "matc/spirv/shader_language.h"
 
 namespace matc::api {
 
@@ -37,6 +39,29 @@ inline runtime::BasisKind basis_of(const CompileOptions& options) {
 inline ColorOptions color_options_of(const CompileOptions& options) {
   return {option_from_name("color_space", options.color_space, kDefaultColorSpace),
           option_from_name("gamut_mapping", options.gamut_mapping, GamutMapping::none)};
+}
+
+inline ShaderLanguage language_of(std::string_view name) {
+  if (const auto language = shader_language_from_name(name)) return *language;
+  throw std::invalid_argument(
+      fmt::format("language: '{}' is not one of glsl, hlsl, wgsl", echoed(name)));
+}
+
+inline std::string color_key_of(const ColorOptions& color) {
+  return fmt::format("{} {}", color_space_name(color.working_space),
+                     gamut_mapping_name(color.gamut_mapping));
+}
+
+// A material's texts name its basis and colour options: the outputs must share them.
+inline void check_same_options(const CompiledMaterial& compiled, const std::string& basis,
+                               const std::string& color_key) {
+  const std::string compiled_color = color_key_of(compiled.value().color);
+  if (compiled.basis() != basis || compiled_color != color_key) {
+    throw std::invalid_argument(fmt::format(
+        "compiled: {} is compiled with basis {} and colour {}; these outputs are for basis {} "
+        "and colour {}: compile it with the outputs' options (a Build's compile())",
+        echoed(compiled.name()), compiled.basis(), compiled_color, basis, color_key));
+  }
 }
 
 }  // namespace matc::api

@@ -10,7 +10,12 @@
 #include <fmt/format.h>
 
 #include "checked_options.h"
+#include "checked_values.h"
+#include "compiled_evaluation.h"
+#include "matc/api/tables.h"
+#include "matc/base/json_format.h"
 #include "matc/compile/compile.h"
+#include "matc/emit/material_json.h"
 #include "matc/lut/preintegrate.h"
 #include "matc/optics/coat.h"
 #include "matc/optics/fresnel.h"
@@ -22,27 +27,7 @@
 
 namespace matc::api {
 
-// What the evaluations need beside the compiled value: the basis, and the exact curves the
-// coefficients were fitted to (the material in air and, for a coated one, the metal under its
-// coat and both layered, which refers to the other two).
-struct CompiledMaterial::Evaluation {
-  runtime::BasisKind basis = runtime::kDefaultBasis;
-  std::unique_ptr<ReflectanceCurve> in_air;
-  std::unique_ptr<ReflectanceCurve> under_coat;
-  std::unique_ptr<ReflectanceCurve> layered;
-  const ReflectanceCurve& exact() const { return layered ? *layered : *in_air; }
-};
-
 namespace {
-
-void check_unit_interval(std::string_view argument, std::span<const double> values) {
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    if (!(values[i] >= 0.0 && values[i] <= 1.0)) {
-      throw std::invalid_argument(
-          fmt::format("{}: element {} is {}; a number in [0, 1]", argument, i, values[i]));
-    }
-  }
-}
 
 template <typename RgbAt>
 std::vector<double> rgb_per_cosine(std::span<const double> mu, const RgbAt& rgb_at) {
@@ -65,6 +50,32 @@ const Lut& default_table(runtime::BasisKind basis) {
   if (found == tables.end())
     found = tables.emplace(basis, preintegrate_lut(runtime::shipped_basis(basis))).first;
   return found->second;
+}
+
+void check_rgb_size(std::span<double> rgb, std::size_t count) {
+  if (rgb.size() != 3 * count) {
+    throw std::invalid_argument(
+        fmt::format("rgb: {} values for {} inputs; 3 per input (R, G, B)", rgb.size(), count));
+  }
+}
+
+// Fbar at each pair from `table` into rgb, as the shaders fetch it (a coated material's lobes
+// summed).
+void fbar_from_table(const matc::CompiledMaterial& compiled, std::span<const double> ndotv,
+                     std::span<const double> roughness, const runtime::LutView& table,
+                     std::span<double> rgb) {
+  check_ndotv_roughness(ndotv, roughness);
+  check_rgb_size(rgb, ndotv.size());
+  for (std::size_t i = 0; i < ndotv.size(); ++i) {
+    const Rgb value =
+        compiled.coat
+            ? runtime::evaluate_coated_fbar(compiled.coefficients, compiled.coat->coefficients,
+                                            table, ndotv[i], roughness[i])
+                  .total()
+            : runtime::evaluate_fbar(compiled.coefficients, table, ndotv[i], roughness[i]);
+    for (std::size_t c = 0; c < 3; ++c)
+      rgb[3 * i + c] = value[c];
+  }
 }
 
 }  // namespace
@@ -94,6 +105,48 @@ Rgb CompiledMaterial::f82() const {
   return value_->f82;
 }
 
+Rgb CompiledMaterial::average_fresnel() const {
+  return value_->average_fresnel;
+}
+
+std::string CompiledMaterial::color_space() const {
+  return std::string(color_space_name(value_->color.working_space));
+}
+std::string CompiledMaterial::gamut_mapping() const {
+  return std::string(gamut_mapping_name(value_->color.gamut_mapping));
+}
+
+std::optional<ComplexIor> CompiledMaterial::ior() const {
+  if (!value_->ior) return std::nullopt;
+  ComplexIor ior;
+  for (std::size_t c = 0; c < 3; ++c) {
+    ior.n[c] = (*value_->ior)[c].n;
+    ior.k[c] = (*value_->ior)[c].k;
+  }
+  return ior;
+}
+
+std::optional<ArtisticParameters> CompiledMaterial::artistic() const {
+  if (!value_->artistic) return std::nullopt;
+  ArtisticParameters artistic;
+  for (std::size_t c = 0; c < 3; ++c) {
+    artistic.reflectivity[c] = (*value_->artistic)[c].reflectivity;
+    artistic.edge_tint[c] = (*value_->artistic)[c].edge_tint;
+  }
+  return artistic;
+}
+
+double CompiledMaterial::saturation() const {
+  return value_->saturation;
+}
+bool CompiledMaterial::fresnel_nonnegative() const {
+  return value_->fresnel_nonnegative;
+}
+
+std::string CompiledMaterial::json() const {
+  return format_json(compiled_material_json(*value_, runtime::shipped_basis(evaluation_->basis)));
+}
+
 Accuracy CompiledMaterial::accuracy() const {
   const FitAccuracy& fit = value_->accuracy;
   return {fit.samples,     fit.decomposition.max_abs, fit.decomposition.rms, fit.schlick.max_abs,
@@ -113,18 +166,26 @@ std::optional<Coat> CompiledMaterial::coat() const {
 }
 
 std::vector<double> CompiledMaterial::fresnel(std::span<const double> mu) const {
+  std::vector<double> rgb(3 * mu.size());
+  fresnel(mu, rgb);
+  return rgb;
+}
+
+void CompiledMaterial::fresnel(std::span<const double> mu, std::span<double> rgb) const {
+  check_unit_interval("mu", mu);
+  check_rgb_size(rgb, mu.size());
   const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(evaluation_->basis);
   if (const auto& coat = value_->coat) {
-    return rgb_per_cosine(mu, [&](double cosine) {
-      return runtime::evaluate_coated_fresnel(value_->coefficients, coat->coefficients,
-                                              shader_basis, cosine)
-          .total();
-    });
+    for (std::size_t i = 0; i < mu.size(); ++i) {
+      const Rgb value = runtime::evaluate_coated_fresnel(value_->coefficients, coat->coefficients,
+                                                         shader_basis, mu[i])
+                            .total();
+      for (std::size_t c = 0; c < 3; ++c)
+        rgb[3 * i + c] = value[c];
+    }
+    return;
   }
-  check_unit_interval("mu", mu);
-  std::vector<double> rgb(3 * mu.size());
   runtime::evaluate_fresnel(value_->coefficients, shader_basis, mu, rgb);
-  return rgb;
 }
 
 std::vector<double> CompiledMaterial::exact(std::span<const double> mu) const {
@@ -168,25 +229,54 @@ CompiledMaterial::Lobes CompiledMaterial::coated_fresnel(std::span<const double>
 
 std::vector<double> CompiledMaterial::fbar(std::span<const double> ndotv,
                                            std::span<const double> roughness) const {
-  if (ndotv.size() != roughness.size()) {
-    throw std::invalid_argument(
-        fmt::format("ndotv and roughness: {} and {} values; one roughness per NdotV", ndotv.size(),
-                    roughness.size()));
-  }
-  check_unit_interval("ndotv", ndotv);
-  check_unit_interval("roughness", roughness);
-  const runtime::LutView table = default_table(evaluation_->basis).view();
   std::vector<double> rgb(3 * ndotv.size());
-  for (std::size_t i = 0; i < ndotv.size(); ++i) {
-    const Rgb value =
-        value_->coat
-            ? runtime::evaluate_coated_fbar(value_->coefficients, value_->coat->coefficients, table,
-                                            ndotv[i], roughness[i])
-                  .total()
-            : runtime::evaluate_fbar(value_->coefficients, table, ndotv[i], roughness[i]);
-    for (std::size_t c = 0; c < 3; ++c)
-      rgb[3 * i + c] = value[c];
+  fbar(ndotv, roughness, rgb);
+  return rgb;
+}
+
+std::vector<double> CompiledMaterial::fbar(std::span<const double> ndotv,
+                                           std::span<const double> roughness,
+                                           const PreintegratedTable& table) const {
+  std::vector<double> rgb(3 * ndotv.size());
+  fbar(ndotv, roughness, table, rgb);
+  return rgb;
+}
+
+void CompiledMaterial::fbar(std::span<const double> ndotv, std::span<const double> roughness,
+                            std::span<double> rgb) const {
+  fbar_from_table(*value_, ndotv, roughness, default_table(evaluation_->basis).view(), rgb);
+}
+
+void CompiledMaterial::fbar(std::span<const double> ndotv, std::span<const double> roughness,
+                            const PreintegratedTable& table, std::span<double> rgb) const {
+  if (table.basis() != basis()) {
+    throw std::invalid_argument(
+        fmt::format("table: integrates the {} basis; this material is compiled against {}",
+                    table.basis(), basis()));
   }
+  fbar_from_table(*value_, ndotv, roughness, table.value().view(), rgb);
+}
+
+CompileOptions default_compile_options() {
+  return {std::string(runtime::basis_name(runtime::kDefaultBasis)),
+          std::string(color_space_name(kDefaultColorSpace)),
+          std::string(gamut_mapping_name(GamutMapping::none))};
+}
+
+std::vector<double> fresnel_from_coefficients(const CoefficientRows& coefficients,
+                                              std::span<const double> mu, std::string_view basis) {
+  const runtime::BasisKind kind = basis_of({std::string(basis), {}, {}});
+  for (std::size_t c = 0; c < 3; ++c) {
+    for (std::size_t i = 0; i < runtime::kBasisSize; ++i) {
+      if (!std::isfinite(coefficients[c][i])) {
+        throw std::invalid_argument(
+            fmt::format("coefficients: [{}, {}] is {}; a finite number", c, i, coefficients[c][i]));
+      }
+    }
+  }
+  check_unit_interval("mu", mu);
+  std::vector<double> rgb(3 * mu.size());
+  runtime::evaluate_fresnel(coefficients, runtime::shipped_shader_basis(kind), mu, rgb);
   return rgb;
 }
 

@@ -1,17 +1,19 @@
 // A batch, as `matc -o DIR FILES...` runs it: material files and texts held in memory compiled on
 // several threads into one output directory, with the shared files, the manifest and a depfile;
 // unchanged files keep their timestamps, and a material's files land all or none (docs/api.md).
-// Native builds only (the WebAssembly library writes no files).
+// Or the same files kept in memory. Native builds only (the WebAssembly library writes no files).
 #pragma once
 
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <optional>
 #include <span>
 #include <stop_token>
 #include <string>
 #include <vector>
 
+#include "matc/api/build.h"
 #include "matc/api/compiled_material.h"
 #include "matc/api/diagnostics.h"
 
@@ -29,14 +31,21 @@ struct BatchSource {
 };
 
 struct BatchOptions {
-  std::string output_directory;
+  std::string output_directory;  // where the files go; required unless in_memory
+  bool in_memory = false;        // keep the files in BatchResult::files instead
+  // The build's options, for the call without a Build (a Build's own options otherwise: these
+  // must then be left empty). The outputs by --emit's names ("glsl", "hlsl", "wgsl", "spirv",
+  // "header", "json", "lut", "coefficient-table", "ltc"); empty: all. A name outside them throws
+  // std::invalid_argument.
   CompileOptions compile;
-  // The outputs by --emit's names ("glsl", "hlsl", "wgsl", "spirv", "header", "json", "lut",
-  // "coefficient-table", "ltc"); empty: all. A name outside them throws std::invalid_argument.
   std::vector<std::string> emit;
-  std::string depfile;      // Make-syntax dependencies of every output; empty: none
-  unsigned jobs = 0;        // materials compiled at once; 0: one per hardware thread
-  bool keep_going = false;  // compile the others after one fails
+  std::string depfile;  // Make-syntax dependencies of every output (a directory's); empty: none
+  // Listed in the depfile after the inputs and spectral files (the CLI lists the matc program).
+  std::vector<std::string> extra_dependencies;
+  unsigned jobs = 0;         // materials compiled at once; 0: one per hardware thread
+  bool keep_going = false;   // compile the others after one fails
+  bool no_shared = false;    // each material's own files only: no shared files, no manifest
+  bool shared_only = false;  // the shared files only (give no source)
 };
 
 struct BatchProgress {
@@ -50,7 +59,7 @@ struct BatchEvents {
   std::function<void(const std::vector<Diagnostic>&)> diagnostics;  // each input's, in order
   std::function<void(const BatchProgress&)> progress;
   // A problem of the batch's own (its output directory, manifest or depfile), as the CLI prints
-  // "WHERE: error: MESSAGE".
+  // "WHERE: error: MESSAGE"; both escaped as diagnostics are (no control bytes).
   std::function<void(const std::string& where, const std::string& message)> error;
 };
 
@@ -61,9 +70,16 @@ struct BatchResult {
   std::size_t failed = 0;
   std::size_t not_attempted = 0;  // after a failure without keep_going, or a cancellation
   bool cancelled = false;
+  std::map<std::string, std::string> files;  // name to bytes, for a batch in memory
 };
 
+// Throws std::invalid_argument for options out of range or that contradict each other
+// (shared_only with sources, a depfile or no output directory without in_memory).
 BatchResult compile_batch(std::span<const BatchSource> sources, const BatchOptions& options,
                           const BatchEvents& events = {}, std::stop_token cancel = {});
+// The same with `build`'s outputs (its tables baked once for many batches).
+BatchResult compile_batch(const Build& build, std::span<const BatchSource> sources,
+                          const BatchOptions& options, const BatchEvents& events = {},
+                          std::stop_token cancel = {});
 
 }  // namespace matc::api

@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "matc/api/diagnostics.h"
@@ -19,7 +20,8 @@ struct CompiledMaterial;
 
 namespace matc::api {
 
-using Rgb = std::array<double, 3>;
+class PreintegratedTable;
+
 // Rows R, G, B; columns c_0..c_3.
 using CoefficientRows = std::array<std::array<double, 4>, 3>;
 
@@ -30,6 +32,8 @@ struct CompileOptions {
   std::string color_space;
   std::string gamut_mapping;
 };
+// The options' defaults by name.
+CompileOptions default_compile_options();
 
 // Max and RMS |F - exact| per channel over the accuracy samples: the decomposition's, Schlick's
 // (exact F0) and F82-tint's (exact F0 and F(1/7)).
@@ -38,6 +42,14 @@ struct Accuracy {
   Rgb max_error{}, rms_error{};
   Rgb schlick_max_error{}, schlick_rms_error{};
   Rgb f82_tint_max_error{}, f82_tint_rms_error{};
+};
+
+// A metal's complex index per channel, and Gulbrandsen's reflectivity and edge tint for it.
+struct ComplexIor {
+  Rgb n{}, k{};
+};
+struct ArtisticParameters {
+  Rgb reflectivity{}, edge_tint{};
 };
 
 // A `coat` block compiled (docs/coating.md).
@@ -57,10 +69,23 @@ class CompiledMaterial {
   const std::string& name() const;
   std::string basis() const;  // its name, e.g. "powers"
   const CoefficientRows& coefficients() const;
-  Rgb f0() const;   // the exact F at normal incidence
-  Rgb f82() const;  // the exact F at mu = 1/7 (about 82 degrees)
+  Rgb f0() const;               // the exact F at normal incidence
+  Rgb f82() const;              // the exact F at mu = 1/7 (about 82 degrees)
+  Rgb average_fresnel() const;  // the decomposed F's cosine-weighted average
   Accuracy accuracy() const;
   std::optional<Coat> coat() const;
+  // The working colour space and gamut mapping it was compiled in, by the options' names.
+  std::string color_space() const;
+  std::string gamut_mapping() const;
+  // The metal's index and artistic parameters (none for a spectral material).
+  std::optional<ComplexIor> ior() const;
+  std::optional<ArtisticParameters> artistic() const;
+  // How far the exact curve leaves the working gamut before any mapping (1: inside), and
+  // whether the decomposed F is nonnegative at every cosine.
+  double saturation() const;
+  bool fresnel_nonnegative() const;
+  // What <name>.json holds, less the inputs hash (which depends on the build's options).
+  std::string json() const;
   // The material's diagnostics and the compile's: a poor fit, a curve outside [0, 1].
   const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
 
@@ -68,6 +93,9 @@ class CompiledMaterial {
   // not a number throws std::invalid_argument naming `mu` and its index.
   // F as the shaders compute it (a coated material's both lobes summed).
   std::vector<double> fresnel(std::span<const double> mu) const;
+  // The same into `rgb`, 3 values per cosine (std::invalid_argument for another size): no
+  // allocation, for callers that evaluate in bulk.
+  void fresnel(std::span<const double> mu, std::span<double> rgb) const;
   // The exact curve the coefficients were fitted to (a coated material's layered curve).
   std::vector<double> exact(std::span<const double> mu) const;
   // Schlick's with the exact F0, and Hoffman's F82-tint with the exact F0 and F(1/7).
@@ -83,6 +111,22 @@ class CompiledMaterial {
   // The preintegrated F (split sum, the default table of this basis, baked on first use) at
   // pairs (NdotV, roughness), both in [0, 1] and of one length: 3 values per pair.
   std::vector<double> fbar(std::span<const double> ndotv, std::span<const double> roughness) const;
+  // The same from `table` (matc/api/tables.h; native builds), which must integrate this
+  // material's basis (std::invalid_argument otherwise).
+  std::vector<double> fbar(std::span<const double> ndotv, std::span<const double> roughness,
+                           const PreintegratedTable& table) const;
+  // Both into `rgb`, 3 values per pair (std::invalid_argument for another size).
+  void fbar(std::span<const double> ndotv, std::span<const double> roughness,
+            std::span<double> rgb) const;
+  void fbar(std::span<const double> ndotv, std::span<const double> roughness,
+            const PreintegratedTable& table, std::span<double> rgb) const;
+  static constexpr std::size_t kReferenceSamples = 1u << 16;
+  // The exact split-sum integral of the exact curve at the same pairs: Monte Carlo with
+  // `samples` GGX samples per pair (in [16, 2^26]), no basis, no table; a coated material's
+  // lobes layered as matc eval's Fbar_reference. Native builds.
+  std::vector<double> fbar_reference(std::span<const double> ndotv,
+                                     std::span<const double> roughness,
+                                     std::size_t samples = kReferenceSamples) const;
 
   // The library's own value, for the library's implementation.
   const matc::CompiledMaterial& value() const { return *value_; }
@@ -99,5 +143,11 @@ class CompiledMaterial {
 };
 
 CompiledMaterial compile(const Material& material, const CompileOptions& options = {});
+
+// F at cosines mu for any coefficients (a coefficient table's, a texture's) as the shaders compute
+// it with `basis` (empty: the default): 3 values per cosine. Each coefficient must be finite.
+std::vector<double> fresnel_from_coefficients(const CoefficientRows& coefficients,
+                                              std::span<const double> mu,
+                                              std::string_view basis = {});
 
 }  // namespace matc::api

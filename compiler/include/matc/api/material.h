@@ -3,8 +3,10 @@
 // and throws MaterialError with all its errors located; warnings and notes stay with the material.
 #pragma once
 
+#include <array>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,6 +19,15 @@ struct Material;
 
 namespace matc::api {
 
+using Rgb = std::array<double, 3>;
+
+// A material model's values by the material file's field names: RGB triples ("reflectivity" and
+// "edge_tint"; "n" and "k"; "f0" and "tint") and, for a spectral material, "preset" or "file".
+struct ModelInputs {
+  std::vector<std::pair<std::string, Rgb>> colors;
+  std::vector<std::pair<std::string, std::string>> texts;
+};
+
 // One validated material. Cheap to copy (shared, immutable).
 class Material {
  public:
@@ -28,6 +39,10 @@ class Material {
   // Its material file's JSON (for a MaterialX material, what `matc import` writes).
   const std::string& json() const;
   bool coated() const;
+  ModelInputs inputs() const;
+  // Its perceptual roughness and the colour space its RGB values are written in, where it says.
+  std::optional<double> roughness() const;
+  std::optional<std::string> color_space() const;
   // The input's warnings and notes.
   const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
 
@@ -53,6 +68,8 @@ using InputFiles = std::map<std::string, std::string>;
 // climbing out, empty) throws std::invalid_argument naming it.
 std::vector<Material> parse_materials(std::string_view text, std::string_view path,
                                       const InputFiles& files);
+// One material from a material file's JSON, whatever `path` ends in.
+Material parse_material_json(std::string_view json, std::string_view path);
 // The same for a file.
 std::vector<Material> load_materials(std::string_view path);
 

@@ -1,0 +1,39 @@
+// CompiledMaterial::fbar_reference: native builds only (the Monte-Carlo references are).
+#include <optional>
+
+#include "checked_values.h"
+#include "compiled_evaluation.h"
+#include "matc/api/compiled_material.h"
+#include "matc/compile/compile.h"
+#include "matc/lut/layered_reference.h"
+#include "matc/lut/split_sum_reference.h"
+
+namespace matc::api {
+
+static_assert(CompiledMaterial::kReferenceSamples == matc::kReferenceSamples);
+
+std::vector<double> CompiledMaterial::fbar_reference(std::span<const double> ndotv,
+                                                     std::span<const double> roughness,
+                                                     std::size_t samples) const {
+  check_ndotv_roughness(ndotv, roughness);
+  checked_count("samples", samples, 16, std::size_t{1} << 26);
+  if (ndotv.empty()) return {};
+  // Tabulated once per call: a spectral curve is costly to evaluate at every sample.
+  const TabulatedCurve in_air(*evaluation_->in_air);
+  std::optional<TabulatedCurve> under_coat;
+  if (evaluation_->under_coat) under_coat.emplace(*evaluation_->under_coat);
+  std::vector<double> rgb(3 * ndotv.size());
+  for (std::size_t i = 0; i < ndotv.size(); ++i) {
+    // A coated material: the split-sum layering with exact curves, as matc eval's
+    // Fbar_reference.
+    const Rgb value =
+        value_->coat
+            ? layered_split_sum(in_air, *under_coat, value_->coat->input, ndotv[i], roughness[i])
+            : SplitSumEstimator(ndotv[i], roughness[i], samples).integrate(in_air);
+    for (std::size_t c = 0; c < 3; ++c)
+      rgb[3 * i + c] = value[c];
+  }
+  return rgb;
+}
+
+}  // namespace matc::api

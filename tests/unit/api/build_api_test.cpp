@@ -1,0 +1,255 @@
+// The public face's native half (matc/api/build.h, tables.h, batch.h) and the values the Python
+// module reads through it: each is the modules' own, byte for byte and bit for bit.
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "matc/api/batch.h"
+#include "matc/api/build.h"
+#include "matc/api/tables.h"
+#include "matc/base/json_format.h"
+#include "matc/emit/build.h"
+#include "matc/emit/material_json.h"
+#include "matc/lut/coefficient_table_files.h"
+#include "matc/lut/split_sum_reference.h"
+#include "matc/matc.h"
+#include "matc/optics/reflectance_curve.h"
+#include "matc/runtime/coefficient_table.h"
+#include "matc/runtime/lut.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+matc::api::Material example(const std::string& name) {
+  return matc::api::load_materials(std::string(MATC_EXAMPLES_DIR) + "/" + name).at(0);
+}
+
+std::map<std::string, std::string> by_name(const std::vector<matc::api::OutputFile>& files) {
+  std::map<std::string, std::string> out;
+  for (const auto& file : files)
+    out[file.name] = file.bytes;
+  return out;
+}
+
+std::map<std::string, std::string> by_name(const std::vector<matc::OutputFile>& files) {
+  std::map<std::string, std::string> out;
+  for (const auto& file : files)
+    out[file.name] = file.bytes;
+  return out;
+}
+
+TEST(PublicBuild, FilesAreTheLibraryBuildsWithTheSameOptions) {
+  matc::api::BuildOptions options;
+  options.lut_size = 16;
+  options.lut_samples = 64;
+  options.lut_format = "dds";
+  options.compile.basis = "extended";
+  const matc::api::Build build(options);
+  matc::BuildOptions library;
+  library.lut.size = 16;
+  library.lut.samples = 64;
+  library.lut_format = matc::LutFormat::dds;
+  library.basis = matc::runtime::BasisKind::extended;
+  const matc::Build direct(library);
+
+  // Every name filled in, emit in matc's order.
+  EXPECT_EQ(build.options().lut_format, "dds");
+  EXPECT_EQ(build.options().lut_precision, "f32");
+  EXPECT_EQ(build.options().coefficient_table_precision, "f16");
+  EXPECT_EQ(build.options().compile.basis, "extended");
+  EXPECT_EQ(build.options().compile.gamut_mapping, "none");
+  EXPECT_EQ(build.options().emit.size(), matc::all_output_kinds().size());
+
+  EXPECT_EQ(by_name(build.shared_files()), by_name(direct.shared_outputs()));
+  EXPECT_EQ(build.description(), matc::format_json(direct.description()));
+  for (const char* name : {"gold.json", "copper_lacquered.json", "chromium.json"}) {
+    const matc::api::CompiledMaterial compiled = build.compile(example(name));
+    EXPECT_EQ(by_name(build.material_files(compiled)),
+              by_name(direct.material_outputs(compiled.value()).files))
+        << name;
+    EXPECT_EQ(build.material_source("wgsl", compiled),
+              direct.material_source(matc::ShaderLanguage::wgsl, compiled.value()));
+  }
+  EXPECT_EQ(build.library_source("hlsl"), direct.library_source(matc::ShaderLanguage::hlsl));
+
+  const matc::api::PreintegratedTable lut = build.lut();
+  EXPECT_EQ(lut.size(), 16u);
+  EXPECT_EQ(lut.basis(), "extended");
+  EXPECT_TRUE(std::equal(lut.texels().begin(), lut.texels().end(),
+                         direct.stored_lut().texels.begin(), direct.stored_lut().texels.end()));
+  const matc::api::CoefficientTable table = build.coefficient_table();
+  EXPECT_EQ(table.precision(), "f16");
+  EXPECT_TRUE(std::equal(table.texels().begin(), table.texels().end(),
+                         direct.stored_coefficient_table().texels.begin(),
+                         direct.stored_coefficient_table().texels.end()));
+
+  // A material compiled with other options is refused, naming both.
+  const matc::api::CompiledMaterial powers = matc::api::compile(example("gold.json"));
+  EXPECT_THROW(build.material_files(powers), std::invalid_argument);
+  EXPECT_THROW(build.material_source("glsl", powers), std::invalid_argument);
+}
+
+TEST(PublicBuild, OptionsOutOfRangeAreNamed) {
+  const auto refused = [](const matc::api::BuildOptions& options, const std::string& expected) {
+    try {
+      matc::api::Build build(options);
+      ADD_FAILURE() << "accepted; expected " << expected;
+    } catch (const std::invalid_argument& error) {
+      EXPECT_NE(std::string(error.what()).find(expected), std::string::npos) << error.what();
+    }
+  };
+  matc::api::BuildOptions options;
+  options.lut_size = 1;
+  refused(options, "lut_size: 1 is out of range; an integer in [2, 4096]");
+  options = {};
+  options.embed_lut = 65;
+  refused(options, "embed_lut: 65 is out of range");
+  options = {};
+  options.emit = {"glsl", "msl"};
+  refused(options, "emit: 'msl' is not one of");
+  options = {};
+  options.lut_precision = "f64";
+  refused(options, "lut_precision: 'f64' is not one of");
+  options = {};
+  options.compile.color_space = "cmyk";
+  refused(options, "color_space: 'cmyk' is not one of");
+}
+
+TEST(PublicTables, SampledAsTheRuntimeSamplesThem) {
+  const matc::api::PreintegratedTable lut = matc::api::preintegrated_table({"", 16, 64, "f16"});
+  EXPECT_EQ(lut.basis(), "powers");
+  EXPECT_EQ(lut.precision(), "f16");
+  EXPECT_EQ(lut.texels().size(), 16u * 16u * 4u);
+  // Baked once per options: the same texels, shared.
+  EXPECT_EQ(matc::api::preintegrated_table({"", 16, 64, "f16"}).texels().data(),
+            lut.texels().data());
+  const std::vector<double> ndotv = {0.1, 0.5, 1.0}, roughness = {0.0, 0.3, 1.0};
+  const std::vector<double> bbar = lut.sample(ndotv, roughness);
+  ASSERT_EQ(bbar.size(), 12u);
+  for (std::size_t i = 0; i < ndotv.size(); ++i) {
+    const auto expected = matc::runtime::sample_lut(lut.value().view(), ndotv[i], roughness[i]);
+    for (std::size_t b = 0; b < 4; ++b)
+      EXPECT_EQ(bbar[4 * i + b], expected[b]);
+  }
+  EXPECT_THROW(lut.sample(std::vector<double>{0.5}, std::vector<double>{2.0}),
+               std::invalid_argument);
+  EXPECT_THROW(matc::api::preintegrated_table({"", 1, 64, "f32"}), std::invalid_argument);
+  EXPECT_THROW(matc::api::preintegrated_table({"nope", 16, 64, "f32"}), std::invalid_argument);
+
+  const matc::api::CoefficientTable table = matc::api::coefficient_table();
+  const matc::CoefficientTable stored =
+      matc::stored_coefficient_table(matc::runtime::kDefaultBasis, matc::LutPrecision::f16);
+  const matc::api::Rgb r{0.9, 0.6, 0.3}, g{0.8, 0.5, 0.2};
+  EXPECT_EQ(table.coefficients(r, g), matc::runtime::coefficients_from_table(stored.view(), r, g));
+  EXPECT_THROW(table.coefficients({2.0, 0.0, 0.0}, g), std::invalid_argument);
+  EXPECT_THROW(matc::api::coefficient_table("", "f8"), std::invalid_argument);
+}
+
+TEST(PublicCompiledMaterial, WhatPythonReadsIsTheLibrarys) {
+  const matc::api::CompiledMaterial gold = matc::api::compile(example("gold.json"));
+  const matc::CompiledMaterial& value = gold.value();
+  EXPECT_EQ(gold.average_fresnel(), value.average_fresnel);
+  EXPECT_EQ(gold.saturation(), value.saturation);
+  EXPECT_EQ(gold.fresnel_nonnegative(), value.fresnel_nonnegative);
+  EXPECT_EQ(gold.color_space(), "lin_rec709");
+  EXPECT_EQ(gold.gamut_mapping(), "none");
+  EXPECT_EQ(gold.json(), matc::format_json(matc::compiled_material_json(
+                             value, matc::runtime::shipped_basis(matc::runtime::kDefaultBasis))));
+  // A spectral material has no index or artistic parameters; its inputs name its preset.
+  EXPECT_FALSE(gold.ior().has_value() || gold.artistic().has_value());
+  EXPECT_EQ(gold.material().inputs().texts,
+            (std::vector<std::pair<std::string, std::string>>{{"preset", "Au"}}));
+  EXPECT_EQ(gold.material().roughness(), 0.3);
+  const matc::api::CompiledMaterial steel = matc::api::compile(example("tinted_steel.json"));
+  ASSERT_TRUE(steel.ior().has_value() && steel.artistic().has_value());
+  EXPECT_EQ(steel.ior()->k[1], (*steel.value().ior)[1].k);
+  EXPECT_EQ(steel.artistic()->edge_tint[2], (*steel.value().artistic)[2].edge_tint);
+  const matc::api::ModelInputs inputs = steel.material().inputs();
+  ASSERT_EQ(inputs.colors.size(), 2u);
+  EXPECT_EQ(inputs.colors[0].first, "reflectivity");
+  EXPECT_EQ(inputs.colors[1].second, (matc::api::Rgb{0.9, 0.75, 0.6}));
+
+  // Fbar from a given table is the default's when the table is the default; another basis'
+  // table is refused.
+  const std::vector<double> ndotv = {0.2, 0.9}, roughness = {0.1, 0.7};
+  EXPECT_EQ(gold.fbar(ndotv, roughness, matc::api::preintegrated_table()),
+            gold.fbar(ndotv, roughness));
+  EXPECT_THROW(gold.fbar(ndotv, roughness, matc::api::preintegrated_table({"paper"})),
+               std::invalid_argument);
+  // The reference is the library's estimator on the exact curve.
+  const std::vector<double> reference = gold.fbar_reference(ndotv, roughness, 1024);
+  const auto curve = matc::make_reflectance_curve(gold.material().value(), value.color);
+  const matc::TabulatedCurve tabulated(*curve);
+  const matc::Rgb expected = matc::SplitSumEstimator(0.9, 0.7, 1024).integrate(tabulated);
+  for (std::size_t c = 0; c < 3; ++c)
+    EXPECT_EQ(reference[3 + c], expected[c]);
+  EXPECT_THROW(gold.fbar_reference(ndotv, roughness, 1), std::invalid_argument);
+
+  // Any coefficients, checked.
+  const std::vector<double> mu = {0.0, 0.5};
+  EXPECT_EQ(matc::api::fresnel_from_coefficients(gold.coefficients(), mu), gold.fresnel(mu));
+  matc::api::CoefficientRows bad = gold.coefficients();
+  bad[1][2] = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(matc::api::fresnel_from_coefficients(bad, mu), std::invalid_argument);
+}
+
+TEST(PublicBatch, InMemoryFilesAreTheDirectorysBytes) {
+  const std::vector<matc::api::BatchSource> sources = {
+      matc::api::BatchSource::file(std::string(MATC_EXAMPLES_DIR) + "/gold.json"),
+      matc::api::BatchSource::in_memory("brass.json",
+                                        R"({"name": "brass", "ior": {"n": 0.44, "k": 3.7}})")};
+  matc::api::BuildOptions build_options;
+  build_options.emit = {"glsl", "json", "lut"};
+  build_options.lut_size = 16;
+  build_options.lut_samples = 64;
+  const matc::api::Build build(build_options);
+
+  matc::api::BatchOptions options;
+  options.in_memory = true;
+  const matc::api::BatchResult memory = matc::api::compile_batch(build, sources, options);
+  EXPECT_EQ(memory.compiled, 2u);
+  const fs::path folder = fs::temp_directory_path() / "matc_public_batch_test";
+  fs::remove_all(folder);
+  options.in_memory = false;
+  options.output_directory = folder.string();
+  const matc::api::BatchResult written = matc::api::compile_batch(build, sources, options);
+  EXPECT_EQ(written.written, memory.files.size());
+  EXPECT_TRUE(written.files.empty());
+  for (const auto& [name, bytes] : memory.files) {
+    std::ifstream in(folder / name, std::ios::binary);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), bytes) << name;
+  }
+  EXPECT_TRUE(memory.files.contains("brass.glsl") && memory.files.contains("matc_manifest.json"));
+  fs::remove_all(folder);
+
+  // Each material's own files only.
+  options = {};
+  options.in_memory = true;
+  options.no_shared = true;
+  const matc::api::BatchResult own = matc::api::compile_batch(build, sources, options);
+  EXPECT_FALSE(own.files.contains("matc_manifest.json"));
+  EXPECT_TRUE(own.files.contains("gold.json"));
+
+  // Contradictions are refused before anything runs.
+  options.output_directory = folder.string();
+  EXPECT_THROW(matc::api::compile_batch(build, sources, options), std::invalid_argument);
+  options = {};
+  options.in_memory = true;
+  options.emit = {"glsl"};  // a Build's options are its own
+  EXPECT_THROW(matc::api::compile_batch(build, sources, options), std::invalid_argument);
+  options = {};
+  options.in_memory = true;
+  options.shared_only = true;
+  EXPECT_THROW(matc::api::compile_batch(build, sources, options), std::invalid_argument);
+  EXPECT_FALSE(fs::exists(folder));
+}
+
+}  // namespace
