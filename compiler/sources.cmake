@@ -63,6 +63,7 @@ set(MATC_CORE_SOURCES
   src/options/option_names.cpp
   src/api/diagnostics.cpp
   src/api/checked_values.cpp
+  src/api/options.cpp
   src/api/material.cpp
   src/api/compiled_material.cpp
   src/api/text_outputs.cpp
@@ -74,6 +75,9 @@ set(MATC_NATIVE_SOURCES
   src/api/build.cpp
   src/api/tables.cpp
   src/api/fbar_reference.cpp
+  src/api/files.cpp
+  src/api/evaluation.cpp
+  src/api/coated_evaluation.cpp
   src/basis/training_set.cpp
   src/basis/basis_polynomial_fit.cpp
   src/basis/basis_fit.cpp

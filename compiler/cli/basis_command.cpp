@@ -13,7 +13,8 @@
 #include "commands.h"
 #include "generated_source.h"
 #include "lut_options.h"
-#include "matc/base/echoed_text.h"
+#include "matc/api/diagnostics.h"
+#include "matc/api/files.h"
 #include "matc/basis/basis_fit.h"
 #include "matc/basis/basis_polynomial_fit.h"
 #include "matc/emit/material_module_template.h"
@@ -21,7 +22,6 @@
 #include "matc/ltc/ltc_fit.h"
 #include "matc/lut/analytic_lut_fit.h"
 #include "matc/lut/default_lut_hashes.h"
-#include "matc/pipeline/atomic_file.h"
 #include "matc/runtime/basis.h"
 #include "matc/runtime/shipped_bases.h"
 #include "named_option.h"
@@ -164,9 +164,10 @@ int run_basis_ltc_table(const LtcTableOptions& options) {
       }
     }
     try {
-      write_file_atomically(options.quality, csv);
+      api::write_file(options.quality, csv);
     } catch (const std::exception& error) {
-      fmt::print(stderr, "{}: error: {}\n", printable(options.quality), printable(error.what()));
+      fmt::print(stderr, "{}: error: {}\n", api::printable(options.quality),
+                 api::printable(error.what()));
       return kExitInputError;
     }
   }

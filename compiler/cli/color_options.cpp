@@ -3,6 +3,7 @@
 #include <string>
 
 #include "named_option.h"
+#include "option_help.h"
 
 namespace matc::cli {
 
@@ -13,8 +14,7 @@ void add_color_options(CLI::App& app, ColorOptions& options) {
          [&options](const std::string& name) {
            options.working_space = *option_value<ColorSpace>(name);
          },
-         "Working space of the outputs, and of RGB values in materials that name none: " + names +
-             " (docs/color-spaces.md)")
+         kColorSpaceHelp + names + " (docs/color-spaces.md)")
       ->default_str(std::string(option_name(options.working_space)))
       ->check(CLI::Validator(
           [names](std::string& name) -> std::string {
@@ -22,10 +22,7 @@ void add_color_options(CLI::App& app, ColorOptions& options) {
             return "'" + name + "' is not one of " + names;
           },
           "SPACE", "colour space"));
-  add_named_option(app, "--gamut-mapping", options.gamut_mapping,
-                   "What to do with Fresnel curves that leave [0, 1] in the working space: none "
-                   "(keep them; a note names each) or desaturate (toward each angle's luminance, "
-                   "by the least constant factor that fits)");
+  add_named_option(app, "--gamut-mapping", options.gamut_mapping, kGamutMappingHelp);
 }
 
 }  // namespace matc::cli

@@ -14,7 +14,7 @@
 #include "emit_option.h"
 #include "file_list.h"
 #include "lut_options.h"
-#include "matc/base/echoed_text.h"
+#include "matc/api/diagnostics.h"
 #include "matc/emit/build.h"
 #include "matc/pipeline/compile_batch.h"
 #include "named_option.h"
@@ -103,7 +103,7 @@ int run_compile_command(CompileOptions options) {
   if (!options.files_from.empty()) {
     const FileList listed = read_file_list(options.files_from);
     if (!listed.error.empty()) {
-      fmt::print(stderr, "{}: error: --files-from: {}\n", printable(options.files_from),
+      fmt::print(stderr, "{}: error: --files-from: {}\n", api::printable(options.files_from),
                  listed.error);
       return kExitUsageError;
     }

@@ -6,8 +6,8 @@
 #include <fmt/core.h>
 
 #include "commands.h"
-#include "matc/base/echoed_text.h"
-#include "matc/pipeline/atomic_file.h"
+#include "matc/api/diagnostics.h"
+#include "matc/api/files.h"
 
 namespace matc::cli {
 
@@ -17,11 +17,12 @@ int write_generated_source(const std::string& output, const std::string& source)
     return kExitSuccess;
   }
   try {
-    const WriteOutcome outcome = write_file_atomically(output, source);
-    fmt::print(stderr, "matc: {} {}\n", outcome == WriteOutcome::written ? "wrote" : "unchanged",
-               printable(output));
+    const api::WriteOutcome outcome = api::write_file(output, source);
+    fmt::print(stderr, "matc: {} {}\n",
+               outcome == api::WriteOutcome::written ? "wrote" : "unchanged",
+               api::printable(output));
   } catch (const std::exception& error) {
-    fmt::print(stderr, "{}: error: {}\n", printable(output), printable(error.what()));
+    fmt::print(stderr, "{}: error: {}\n", api::printable(output), api::printable(error.what()));
     return kExitInputError;
   }
   return kExitSuccess;

@@ -9,10 +9,10 @@
 #include "color_options.h"
 #include "commands.h"
 #include "lut_options.h"
-#include "matc/base/echoed_text.h"
+#include "matc/api/diagnostics.h"
+#include "matc/api/files.h"
 #include "matc/matc.h"
 #include "matc/options/option_names.h"
-#include "matc/pipeline/atomic_file.h"
 #include "print_diagnostics.h"
 
 namespace matc::cli {
@@ -44,11 +44,11 @@ std::string output_problem(const GltfOptions& options, const api::GltfAsset& ass
   const fs::path output(options.output);
   const std::string written = path_identity(output);
   if (written == path_identity(input))
-    return fmt::format("output '{}' would overwrite its input", printable(options.output));
+    return fmt::format("output '{}' would overwrite its input", api::printable(options.output));
   for (const std::string& uri : asset.external_uris) {
     if (written == path_identity(input.parent_path() / uri))
       return fmt::format("output '{}' would overwrite '{}', a file the asset names",
-                         printable(options.output), echoed(uri, 128));
+                         api::printable(options.output), api::echoed(uri, 128));
   }
   const auto folder = [](const fs::path& path) {
     return path_identity(path.parent_path().empty() ? fs::path(".") : path.parent_path());
@@ -57,8 +57,8 @@ std::string output_problem(const GltfOptions& options, const api::GltfAsset& ass
     return fmt::format(
         "output '{}' is not in the folder of '{}', whose asset names {} file(s) beside it "
         "('{}'...): they would not resolve from there",
-        printable(options.output), printable(options.input), asset.external_uris.size(),
-        echoed(asset.external_uris.front(), 128));
+        api::printable(options.output), api::printable(options.input), asset.external_uris.size(),
+        api::echoed(asset.external_uris.front(), 128));
   }
   return {};
 }
@@ -68,14 +68,15 @@ int run_gltf(const GltfOptions& options) {
   if (!binary && !ends_with_any_case(options.input, ".gltf")) {
     fmt::print(stderr,
                "matc gltf: error: '{}' names no glTF asset; an asset ending in .gltf or .glb\n",
-               printable(options.input));
+               api::printable(options.input));
     return kExitUsageError;
   }
   if (!ends_with_any_case(options.output, binary ? ".glb" : ".gltf")) {
     fmt::print(stderr,
                "matc gltf: error: --output '{}': the asset is a {} and is written as one; an "
                "output ending in {}\n",
-               printable(options.output), binary ? ".glb" : ".gltf", binary ? ".glb" : ".gltf");
+               api::printable(options.output), binary ? ".glb" : ".gltf",
+               binary ? ".glb" : ".gltf");
     return kExitUsageError;
   }
   const api::CompileOptions compile{std::string(option_name(options.basis)),
@@ -100,10 +101,10 @@ int run_gltf(const GltfOptions& options) {
   try {
     const fs::path output(options.output);
     if (!output.parent_path().empty()) fs::create_directories(output.parent_path());
-    write_file_atomically(output, asset.bytes);
+    api::write_file(output.string(), asset.bytes);
   } catch (const std::exception& error) {
-    fmt::print(stderr, "matc gltf: error: cannot write '{}': {}\n", printable(options.output),
-               printable(error.what()));
+    fmt::print(stderr, "matc gltf: error: cannot write '{}': {}\n", api::printable(options.output),
+               api::printable(error.what()));
     return kExitInputError;
   }
   if (!options.quiet) {
@@ -111,7 +112,7 @@ int run_gltf(const GltfOptions& options) {
     for (const api::CompiledMaterial& material : asset.materials)
       names += (names.empty() ? "" : ", ") + material.name();
     fmt::print("matc gltf: {}: {} metal(s) with MATC_materials_fresnel ({}; basis {})\n",
-               printable(options.output), asset.materials.size(), names,
+               api::printable(options.output), asset.materials.size(), names,
                option_name(options.basis));
   }
   return kExitSuccess;

@@ -6,7 +6,7 @@
 
 #include <thread>
 
-#include "matc/base/exclusive_file.h"
+#include "matc/api/files.h"
 
 namespace matc::cli {
 
@@ -21,7 +21,7 @@ void remove_temporaries_when_interrupted() {
   std::thread([signals] {
     int received = 0;
     if (sigwait(&signals, &received) != 0) return;
-    remove_temporaries_in_flight();
+    api::remove_temporaries_in_flight();
     ::signal(received, SIG_DFL);
     sigset_t just_this;
     sigemptyset(&just_this);

@@ -10,7 +10,7 @@
 #include "commands.h"
 #include "emit_option.h"
 #include "generated_source.h"
-#include "matc/base/echoed_text.h"
+#include "matc/api/diagnostics.h"
 #include "matc/emit/output_layout.h"
 #include "matc/material/parse.h"
 #include "named_option.h"
@@ -36,7 +36,7 @@ int run_layout(const LayoutOptions& options) {
   }
   for (const std::string& name : options.names) {
     if (const auto problem = material_name_problem(name)) {
-      fmt::print(stderr, "matc layout: error: '{}': {}; {}\n", echoed(name), *problem,
+      fmt::print(stderr, "matc layout: error: '{}': {}; {}\n", api::echoed(name), *problem,
                  kMaterialNameRule);
       return kExitUsageError;
     }

@@ -2,7 +2,7 @@
 
 #include "commands.h"
 #include "lut_options.h"
-#include "matc/base/echoed_text.h"
+#include "matc/api/diagnostics.h"
 #include "matc/options/option_names.h"
 #include "matc/pipeline/batch.h"
 #include "matc/pipeline/output_sink.h"
@@ -26,7 +26,7 @@ int run_lut(const LutCommandOptions& options) {
       fmt::print(stderr,
                  "matc lut: error: --format: cannot infer the format from '{}'; give --format "
                  "ktx2|dds|raw|header or an extension .ktx2, .dds, .bin or .h\n",
-                 echoed(output.string(), 128));
+                 api::echoed(output.string(), 128));
       return kExitUsageError;
     }
   }

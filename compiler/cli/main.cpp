@@ -12,7 +12,7 @@
 #include "commands.h"
 #include "empty_values.h"
 #include "interrupt_cleanup.h"
-#include "matc/base/echoed_text.h"
+#include "matc/api/diagnostics.h"
 #include "matc/version.h"
 #include "print_diagnostics.h"
 
@@ -62,7 +62,8 @@ int main(int argc, char** argv) {
     return kExitSuccess;
   } catch (const CLI::ParseError& e) {
     // CLI11's message may quote an argument: escaped, as every echoed input is.
-    fmt::print(stderr, "{}\nRun with --help for more information.\n", matc::printable(e.what()));
+    fmt::print(stderr, "{}\nRun with --help for more information.\n",
+               matc::api::printable(e.what()));
     return kExitUsageError;
   }
 

@@ -10,9 +10,9 @@
 #include "color_options.h"
 #include "commands.h"
 #include "lut_options.h"
+#include "matc/api/files.h"
 #include "matc/compile/compile.h"
 #include "matc/material/material_input.h"
-#include "matc/pipeline/atomic_file.h"
 #include "matc/pipeline/unique_names.h"
 #include "matc/report/fresnel_plot.h"
 #include "matc/report/material_curves.h"
@@ -91,7 +91,8 @@ int run_report(const ReportOptions& options) {
   fs::create_directories(directory);
   std::size_t written = 0;
   for (const Output& output : outputs) {
-    if (write_file_atomically(directory / output.name, output.bytes) == WriteOutcome::written)
+    if (api::write_file((directory / output.name).string(), output.bytes) ==
+        api::WriteOutcome::written)
       ++written;
   }
   fmt::print(stderr, "matc report: {} materials, {} files written, {} unchanged: {}\n",

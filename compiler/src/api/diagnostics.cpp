@@ -35,6 +35,14 @@ std::vector<Diagnostic> public_diagnostics(const Diagnostics& diagnostics) {
   return out;
 }
 
+std::string printable(std::string_view text) {
+  return matc::printable(text);
+}
+
+std::string echoed(std::string_view text, std::size_t max_bytes) {
+  return matc::echoed(text, max_bytes);
+}
+
 void throw_if_errors(const Diagnostics& diagnostics) {
   if (diagnostics.has_errors()) throw MaterialError(public_diagnostics(diagnostics));
 }

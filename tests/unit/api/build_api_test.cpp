@@ -13,6 +13,9 @@
 
 #include "matc/api/batch.h"
 #include "matc/api/build.h"
+#include "matc/api/evaluation.h"
+#include "matc/api/files.h"
+#include "matc/api/options.h"
 #include "matc/api/tables.h"
 #include "matc/base/json_format.h"
 #include "matc/emit/build.h"
@@ -250,6 +253,87 @@ TEST(PublicBatch, InMemoryFilesAreTheDirectorysBytes) {
   options.shared_only = true;
   EXPECT_THROW(matc::api::compile_batch(build, sources, options), std::invalid_argument);
   EXPECT_FALSE(fs::exists(folder));
+}
+
+}  // namespace
+
+namespace {
+
+TEST(PublicFiles, WrittenAsMatcWritesItsOutputs) {
+  const fs::path folder = fs::temp_directory_path() / "matc_public_files_test";
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  const std::string path = (folder / "a.txt").string();
+  EXPECT_EQ(matc::api::write_file(path, "one"), matc::api::WriteOutcome::written);
+  const auto written_at = fs::last_write_time(path);
+  EXPECT_EQ(matc::api::write_file(path, "one"), matc::api::WriteOutcome::unchanged);
+  EXPECT_EQ(fs::last_write_time(path), written_at);
+  EXPECT_EQ(matc::api::write_file(path, "two"), matc::api::WriteOutcome::written);
+  // A folder that is not there: an error naming the path, no temporary left.
+  EXPECT_THROW(matc::api::write_file((folder / "no" / "b.txt").string(), "x"), std::runtime_error);
+  std::size_t entries = 0;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    (void)entry;
+    ++entries;
+  }
+  EXPECT_EQ(entries, 1u);
+  fs::remove_all(folder);
+}
+
+TEST(PublicDiagnostics, InputTextEscapedAsDiagnosticsQuoteIt) {
+  EXPECT_EQ(matc::api::printable("a\nb\x1b[31m\\"), "a\\nb\\x1B[31m\\");
+  EXPECT_EQ(matc::api::printable("\xff"), "\\xFF");
+  const std::string echoed = matc::api::echoed(std::string(100, 'x'), 8);
+  EXPECT_EQ(echoed.substr(0, 8), "xxxxxxxx");
+  EXPECT_NE(echoed.find("..."), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+// matc eval is this call: the CLI's own tests compare its JSON with the runtime and Python; here
+// the options' refusals, which a caller meets before the CLI's checks.
+TEST(PublicEvaluation, OptionsCheckedAndTheJsonIsTheEvaluation) {
+  const matc::api::Material gold = example("gold.json");
+  matc::api::EvaluationOptions options;
+  EXPECT_THROW(matc::api::evaluate(gold, options), std::invalid_argument);  // nothing to evaluate
+  options.mu = {1.0, 0.5};
+  const std::string json = matc::api::evaluate(gold, options);
+  EXPECT_NE(json.find("\"F_exact\""), std::string::npos) << json;
+  EXPECT_EQ(json.find("\"Fbar\""), std::string::npos);
+  options.ndotv = {0.5};
+  EXPECT_THROW(matc::api::evaluate(gold, options), std::invalid_argument);  // no roughness
+  options.roughness = {0.3};
+  options.reference = false;
+  options.lut_size = 8;
+  options.lut_samples = 16;
+  EXPECT_NE(matc::api::evaluate(gold, options).find("\"Fbar_analytic\""), std::string::npos);
+  options.quad_light = matc::api::parse_quad_light("-1,-1,1; 1,-1,1; 1,1,1; -1,1,1");
+  EXPECT_THROW(matc::api::evaluate(gold, options), std::invalid_argument);  // needs the reference
+  options.reference = true;
+  options.quad_light[2] = {1.0, 1.0, std::numeric_limits<double>::quiet_NaN()};
+  EXPECT_THROW(matc::api::evaluate(gold, options), std::invalid_argument);
+  EXPECT_THROW(matc::api::parse_quad_light("1,2,3"), std::invalid_argument);
+  options.quad_light.clear();
+  options.lut_precision = "f64";
+  EXPECT_THROW(matc::api::evaluate(gold, options), std::invalid_argument);
+  options.lut_precision = "f16";
+  EXPECT_THROW(matc::api::evaluate_artistic({2.0, 0.5, 0.5}, {0.5, 0.5, 0.5}, options),
+               std::invalid_argument);
+  const std::string table_path =
+      matc::api::evaluate_artistic({0.9, 0.6, 0.3}, {0.8, 0.5, 0.2}, options);
+  EXPECT_NE(table_path.find("\"F_table\""), std::string::npos) << table_path;
+}
+
+TEST(PublicOptions, NamesAreTheRegistrys) {
+  EXPECT_EQ(matc::api::option_names("basis"),
+            (std::vector<std::string>{"powers", "extended", "paper", "f82"}));
+  EXPECT_EQ(matc::api::option_default("color_space"), "lin_rec709");
+  EXPECT_EQ(matc::api::option_default("lut_precision"), "f32");
+  EXPECT_TRUE(matc::api::takes_option_name("color_space", "lin_srgb"));  // an alias
+  EXPECT_FALSE(matc::api::takes_option_name("gamut_mapping", "clip"));
+  EXPECT_THROW(matc::api::option_names("nope"), std::invalid_argument);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace matc::api {
@@ -29,5 +30,12 @@ class MaterialError : public std::runtime_error {
  private:
   std::vector<Diagnostic> diagnostics_;
 };
+
+// Text from an input made safe to print, as every diagnostic quotes it: control bytes, bytes that
+// are not UTF-8 and the Unicode controls that reorder text escaped (\n, \xNN, \u{NNNN}); a
+// backslash is left as it is. A face that echoes a path or a name from its input prints this.
+std::string printable(std::string_view text);
+// printable(text), cut after `max_bytes` bytes of the input with "..." and the text's length.
+std::string echoed(std::string_view text, std::size_t max_bytes = 64);
 
 }  // namespace matc::api

@@ -1,37 +1,28 @@
+// matc::api::evaluate for a coated material (matc eval of a material with a coat).
 #include <optional>
 #include <vector>
 
-#include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
-#include "eval_options.h"
-#include "matc/base/json_format.h"
+#include "evaluation_parts.h"
 #include "matc/compile/compile.h"
-#include "matc/fit/coefficient_table.h"
-#include "matc/fit/coefficients.h"
 #include "matc/ltc/area_light_reference.h"
-#include "matc/ltc/polygon_light.h"
-#include "matc/lut/coefficient_table_files.h"
-#include "matc/lut/comparison_lobes.h"
 #include "matc/lut/layered_reference.h"
 #include "matc/lut/lut_files.h"
 #include "matc/lut/split_sum_reference.h"
-#include "matc/material/material_input.h"
 #include "matc/optics/coat.h"
 #include "matc/runtime/analytic_lut.h"
 #include "matc/runtime/coat.h"
-#include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/ltc.h"
-#include "matc/runtime/ltc_following.h"
 #include "matc/runtime/lut.h"
 
-namespace matc::cli {
+namespace matc::evaluation {
 namespace {
 
 // A quad light on a coated material's two lobes: LTC per lobe times its Fbar as the shaders
 // compute it (matc_ltc_quad_light_<name>), and the exact integral of each lobe (the base's with
 // the exact layered base curve at its half vectors, the coat's with the coat's exact Fresnel).
-void add_coated_quad_light(const EvalOptions& options, const std::vector<Vec3>& quad,
+void add_coated_quad_light(const EvaluationInputs& options, const std::vector<Vec3>& quad,
                            const CompiledMaterial& compiled, const Lut& lut,
                            const ReflectanceCurve& in_air, const ReflectanceCurve& under,
                            ordered_json& out) {
@@ -83,9 +74,8 @@ void add_coated_quad_light(const EvalOptions& options, const std::vector<Vec3>& 
 // beside the exact layered curve (smooth interfaces); preintegrated, the same beside the split
 // sum of each exact lobe at its own roughness and the Monte-Carlo layered reference (rough
 // interfaces, any number of bounces, no split sum).
-void add_coated(const EvalOptions& options, const CompiledMaterial& compiled,
-                const runtime::BasisView& basis, const std::optional<std::vector<Vec3>>& quad,
-                ordered_json& out) {
+void add_coated(const EvaluationInputs& options, const CompiledMaterial& compiled,
+                const runtime::BasisView& basis, ordered_json& out) {
   const Material& material = compiled.material;
   const CompiledCoat& coat = *compiled.coat;
   const runtime::CoatCoefficients& coefficients = coat.coefficients;
@@ -116,7 +106,7 @@ void add_coated(const EvalOptions& options, const CompiledMaterial& compiled,
     out["F_exact"] = std::move(exact);
   }
   if (options.ndotv.empty()) return;
-  const Lut lut = stored_as(preintegrate_lut(basis, options.lut.bake), options.lut.precision);
+  const Lut lut = stored_as(preintegrate_lut(basis, options.bake), options.precision);
   const runtime::AnalyticLutCoefficients& analytic = runtime::shipped_analytic_lut(basis.kind);
   add_preintegrated_points(options, lut, out);
   ordered_json total = ordered_json::array(), base = ordered_json::array(),
@@ -139,7 +129,7 @@ void add_coated(const EvalOptions& options, const CompiledMaterial& compiled,
   out["Fbar_base"] = std::move(base);
   out["Fbar_coat"] = std::move(coat_lobe);
   out["Fbar_analytic"] = std::move(closed_form);
-  if (options.no_reference) return;
+  if (!options.reference) return;
   const TabulatedCurve in_air_exact(*in_air);
   const TabulatedCurve under_exact(*under);
   ordered_json split_sum = ordered_json::array(), monte_carlo = ordered_json::array(),
@@ -156,27 +146,8 @@ void add_coated(const EvalOptions& options, const CompiledMaterial& compiled,
   out["Fbar_reference"] = std::move(split_sum);
   out["Fbar_layered_reference"] = std::move(monte_carlo);
   out["Fbar_layered_reference_standard_error"] = std::move(standard_error);
-  if (quad) add_coated_quad_light(options, *quad, compiled, lut, *in_air, *under, out);
+  if (options.quad)
+    add_coated_quad_light(options, *options.quad, compiled, lut, *in_air, *under, out);
 }
 
-// The (NdotV, roughness) points and the table a Fbar output was read from.
-void add_preintegrated_points(const EvalOptions& options, const Lut& lut, ordered_json& out) {
-  out["ndotv"] = options.ndotv;
-  out["roughness"] = options.roughness;
-  out["lut"] = {{"size", lut.size},
-                {"samples", lut.samples},
-                {"precision", lut_precision_name(options.lut.precision)}};
-}
-
-// The quad light and the tables its radiance outputs were computed with.
-void add_quad_light_description(const EvalOptions& options, const std::vector<Vec3>& quad,
-                                const runtime::LtcTableView& ltc, ordered_json& out) {
-  ordered_json vertices = ordered_json::array();
-  for (const Vec3& vertex : quad)
-    vertices.push_back(vertex);
-  out["quad_light"] = {{"vertices", std::move(vertices)},
-                       {"ltc_table", {{"size", ltc.size}}},
-                       {"reference_samples", options.light_samples}};
-}
-
-}  // namespace matc::cli
+}  // namespace matc::evaluation

@@ -1,0 +1,26 @@
+// The help texts of options several commands take, written once (lut_options.cpp and
+// color_options.cpp register them with typed values, eval_command.cpp with names).
+#pragma once
+
+namespace matc::cli {
+
+inline constexpr const char* kBasisHelp =
+    "Fresnel basis: powers (default; the closed form m^6, mu m^3, mu m^9 with m = 1 - mu, "
+    "near-minimax coefficients), extended (the authors' dielectrics extended with "
+    "conductors, curves weighted by 1 - F0), paper (the authors' construction, "
+    "coefficients matched at two angles) or f82 (exact for F82-tint and Schlick "
+    "curves, for OpenPBR looks); docs/accuracy.md compares them";
+inline constexpr const char* kLutSizeHelp = "LUT width and height in texels";
+inline constexpr const char* kLutSamplesHelp = "Hammersley samples per texel";
+inline constexpr const char* kLutPrecisionHelp = "Texel precision";
+inline constexpr const char* kCoefficientTablePrecisionHelp =
+    "Texel precision of the coefficient table DIR/matc_coefficient_table.<ext>";
+// Followed by the spaces' names and " (docs/color-spaces.md)".
+inline constexpr const char* kColorSpaceHelp =
+    "Working space of the outputs, and of RGB values in materials that name none: ";
+inline constexpr const char* kGamutMappingHelp =
+    "What to do with Fresnel curves that leave [0, 1] in the working space: none (keep them; a "
+    "note names each) or desaturate (toward each angle's luminance, by the least constant factor "
+    "that fits)";
+
+}  // namespace matc::cli

@@ -1,0 +1,56 @@
+// matc::api::evaluate's options resolved to the library's values, and the pieces of its JSON that
+// bare and coated materials share (evaluation.cpp evaluates bare metals and the coefficient-table
+// path, coated_evaluation.cpp coated metals).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "matc/compile/compile.h"
+#include "matc/formats/table_format.h"
+#include "matc/lut/preintegrate.h"
+#include "matc/runtime/basis.h"
+#include "matc/runtime/fresnel.h"
+#include "matc/runtime/ltc.h"
+#include "matc/runtime/vec3.h"
+
+namespace matc::evaluation {
+
+struct EvaluationInputs {
+  std::vector<double> mu;
+  std::vector<double> ndotv;
+  std::vector<double> roughness;
+  bool reference = true;
+  std::optional<std::vector<Vec3>> quad;
+  std::size_t light_samples = 0;
+  LutOptions bake;
+  LutPrecision precision = LutPrecision::f32;
+  runtime::BasisKind basis = runtime::kDefaultBasis;
+  LutPrecision coefficient_table_precision = LutPrecision::f16;
+  ColorOptions color;
+};
+
+using nlohmann::ordered_json;
+
+// Coefficients by the JSON suffix of what they give: "" for a compiled material, "_table" and
+// "_compiled" for the coefficient-table path and the per-material compile beside it.
+using LabelledCoefficients = std::vector<std::pair<std::string, runtime::Coefficients>>;
+
+// The (NdotV, roughness) points and the table a Fbar output was read from.
+void add_preintegrated_points(const EvaluationInputs& inputs, const Lut& lut, ordered_json& out);
+
+// The quad light and the tables its radiance outputs were computed with.
+void add_quad_light_description(const EvaluationInputs& inputs, const std::vector<Vec3>& quad,
+                                const runtime::LtcTableView& ltc, ordered_json& out);
+
+// A coated material (docs/coating.md): both lobes and their sum beside the exact layered curve,
+// preintegrated beside the split sums and the Monte-Carlo layered reference, and the quad light.
+void add_coated(const EvaluationInputs& inputs, const CompiledMaterial& compiled,
+                const runtime::BasisView& basis, ordered_json& out);
+
+}  // namespace matc::evaluation

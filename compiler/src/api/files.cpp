@@ -1,0 +1,20 @@
+#include "matc/api/files.h"
+
+#include <filesystem>
+
+#include "matc/base/exclusive_file.h"
+#include "matc/pipeline/atomic_file.h"
+
+namespace matc::api {
+
+WriteOutcome write_file(std::string_view path, std::string_view bytes) {
+  return write_file_atomically(std::filesystem::path(path), bytes) == matc::WriteOutcome::written
+             ? WriteOutcome::written
+             : WriteOutcome::unchanged;
+}
+
+void remove_temporaries_in_flight() {
+  matc::remove_temporaries_in_flight();
+}
+
+}  // namespace matc::api
