@@ -76,6 +76,7 @@ set(MATC_NATIVE_SOURCES
   src/api/tables.cpp
   src/api/fbar_reference.cpp
   src/api/files.cpp
+  src/api/report.cpp
   src/api/evaluation.cpp
   src/api/coated_evaluation.cpp
   src/basis/training_set.cpp

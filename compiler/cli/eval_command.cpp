@@ -13,6 +13,7 @@
 #include "matc/api/evaluation.h"
 #include "matc/api/options.h"
 #include "matc/matc.h"
+#include "name_options.h"
 #include "option_help.h"
 #include "print_diagnostics.h"
 
@@ -29,16 +30,6 @@ struct EvalOptions {
   api::EvaluationOptions evaluation;
 };
 
-// An option whose value is one of the public API's names for `option` (matc/api/options.h),
-// shown with its default.
-CLI::Option* add_name_option(CLI::App& app, const std::string& flags, std::string& value,
-                             std::string_view option, const std::string& help) {
-  value = api::option_default(option);
-  return app.add_option(flags, value, help)
-      ->default_str(value)
-      ->check(CLI::IsMember(api::option_names(option)));
-}
-
 // The evaluation's table, basis and colour options, as the other commands name them.
 void add_evaluation_options(CLI::App& app, api::EvaluationOptions& options) {
   app.add_option("--lut-size", options.lut_size, kLutSizeHelp)
@@ -50,26 +41,9 @@ void add_evaluation_options(CLI::App& app, api::EvaluationOptions& options) {
   add_name_option(app, "--lut-precision", options.lut_precision, "lut_precision",
                   kLutPrecisionHelp);
   add_name_option(app, "--basis", options.compile.basis, "basis", kBasisHelp);
-  options.coefficient_table_precision = "f16";
-  app.add_option("--coefficient-table-precision", options.coefficient_table_precision,
-                 kCoefficientTablePrecisionHelp)
-      ->default_str(options.coefficient_table_precision)
-      ->check(CLI::IsMember(api::option_names("lut_precision")));
-  std::string names;
-  for (const std::string& name : api::option_names("color_space"))
-    names += (names.empty() ? "" : ", ") + name;
-  options.compile.color_space = api::option_default("color_space");
-  app.add_option("--color-space", options.compile.color_space,
-                 kColorSpaceHelp + names + " (docs/color-spaces.md)")
-      ->default_str(options.compile.color_space)
-      ->check(CLI::Validator(
-          [names](std::string& name) -> std::string {
-            if (api::takes_option_name("color_space", name)) return {};
-            return "'" + name + "' is not one of " + names;
-          },
-          "SPACE", "colour space"));
-  add_name_option(app, "--gamut-mapping", options.compile.gamut_mapping, "gamut_mapping",
-                  kGamutMappingHelp);
+  add_name_option(app, "--coefficient-table-precision", options.coefficient_table_precision,
+                  "lut_precision", kCoefficientTablePrecisionHelp, "f16");
+  add_color_name_options(app, options.compile);
 }
 
 // The quad of --quad-light into the options, or false with the problem printed.

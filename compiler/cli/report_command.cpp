@@ -7,16 +7,12 @@
 
 #include <fmt/core.h>
 
-#include "color_options.h"
 #include "commands.h"
-#include "lut_options.h"
 #include "matc/api/files.h"
-#include "matc/compile/compile.h"
-#include "matc/material/material_input.h"
-#include "matc/pipeline/unique_names.h"
-#include "matc/report/fresnel_plot.h"
-#include "matc/report/material_curves.h"
-#include "matc/report/report_page.h"
+#include "matc/api/report.h"
+#include "matc/matc.h"
+#include "name_options.h"
+#include "option_help.h"
 #include "print_diagnostics.h"
 
 namespace matc::cli {
@@ -25,78 +21,56 @@ namespace {
 struct ReportOptions {
   std::vector<std::string> files;
   std::string output_directory = "matc-report";
-  runtime::BasisKind basis = runtime::kDefaultBasis;
-  ColorOptions color;
+  api::CompileOptions compile;
 };
 
 namespace fs = std::filesystem;
 
-// Every material, or none when any file is invalid or two names would share an output file.
-std::optional<std::vector<Material>> read_all(const std::vector<std::string>& files) {
-  std::vector<Material> materials;
-  UniqueNames names;
+// Every material, or none when any file is invalid (each input's diagnostics printed).
+std::optional<std::vector<api::Material>> read_all(const std::vector<std::string>& files) {
+  std::vector<api::Material> materials;
   bool ok = true;
   for (const std::string& file : files) {
-    MaterialInput input = read_material_input(file);
-    for (Material& material : input.materials) {
-      names.claim(material, "a report", input.diagnostics);
-      materials.push_back(std::move(material));
+    try {
+      const std::vector<api::Material> read = api::load_materials(file);
+      if (!read.empty()) print_diagnostics(read.front().diagnostics());  // the input's, shared
+      materials.insert(materials.end(), read.begin(), read.end());
+      if (read.empty()) ok = false;
+    } catch (const api::MaterialError& error) {
+      print_diagnostics(error.diagnostics());
+      ok = false;
     }
-    print_diagnostics(input.diagnostics);
-    if (input.diagnostics.has_errors() || input.materials.empty()) ok = false;
   }
   if (!ok) return std::nullopt;
   return materials;
 }
 
 int run_report(const ReportOptions& options) {
-  const std::optional<std::vector<Material>> materials = read_all(options.files);
-  if (!materials) {
+  const std::optional<std::vector<api::Material>> materials = read_all(options.files);
+  std::optional<api::Report> report;
+  if (materials) {
+    try {
+      report = api::report(*materials, options.compile);
+    } catch (const api::MaterialError& error) {  // two names differing by case alone
+      print_diagnostics(error.diagnostics());
+    }
+  }
+  if (!report) {
     fmt::print(stderr, "matc report: nothing written: fix the inputs above\n");
     return kExitInputError;
   }
-  const runtime::BasisKind kind = options.basis;
-  const runtime::BasisView basis = runtime::shipped_basis(kind);
-  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(kind);
-
-  struct Output {
-    std::string name;
-    std::string bytes;
-  };
-  std::vector<Output> outputs;
-  std::vector<ReportEntry> entries;
-  for (const Material& material : *materials) {
-    const CompiledMaterial compiled = compile_material(material, basis, options.color);
-    Diagnostics fit;
-    warn_if_poor_fit(compiled, fit);
-    print_diagnostics(fit);
-    const MaterialCurves curves = sample_material_curves(compiled, shader_basis);
-    const std::string source = fs::path(material.source_path).filename().string();
-    // A coated material's whole surface, as its curves are (docs/coating.md).
-    const FitAccuracy& accuracy =
-        compiled.coat ? compiled.coat->layered_accuracy : compiled.accuracy;
-    const std::string subtitle = fmt::format(
-        "{}, basis {}{}: worst-channel max error ours {:.4f}, Schlick {:.4f}, F82-tint {:.4f}",
-        source, runtime::basis_name(kind), compiled.coat ? ", coated" : "",
-        worst_channel(accuracy.decomposition.max_abs), worst_channel(accuracy.schlick.max_abs),
-        worst_channel(accuracy.f82_tint.max_abs));
-    outputs.push_back({material.name + ".svg", fresnel_plot_svg(curves, material.name, subtitle)});
-    outputs.push_back({material.name + ".csv", material_curves_csv(curves)});
-    entries.push_back(
-        {material.name, source, compiled.coat ? compiled.coat->layered_f0 : compiled.f0, accuracy});
-  }
-  outputs.push_back({"index.html", report_index_html(entries, runtime::basis_name(kind))});
+  print_diagnostics(report->diagnostics);
 
   const fs::path directory(options.output_directory);
   fs::create_directories(directory);
   std::size_t written = 0;
-  for (const Output& output : outputs) {
+  for (const api::OutputFile& output : report->files) {
     if (api::write_file((directory / output.name).string(), output.bytes) ==
         api::WriteOutcome::written)
       ++written;
   }
   fmt::print(stderr, "matc report: {} materials, {} files written, {} unchanged: {}\n",
-             materials->size(), written, outputs.size() - written,
+             materials->size(), written, report->files.size() - written,
              (directory / "index.html").string());
   return kExitSuccess;
 }
@@ -113,8 +87,8 @@ Command register_report(CLI::App& app) {
       ->required();
   command->add_option("-o,--output", options->output_directory, "Output directory")
       ->capture_default_str();
-  add_basis_option(*command, options->basis);
-  add_color_options(*command, options->color);
+  add_name_option(*command, "--basis", options->compile.basis, "basis", kBasisHelp);
+  add_color_name_options(*command, options->compile);
 
   return {command, [options] { return run_report(*options); }, true};
 }

@@ -16,6 +16,7 @@
 #include "matc/api/evaluation.h"
 #include "matc/api/files.h"
 #include "matc/api/options.h"
+#include "matc/api/report.h"
 #include "matc/api/tables.h"
 #include "matc/base/json_format.h"
 #include "matc/emit/build.h"
@@ -334,6 +335,26 @@ TEST(PublicOptions, NamesAreTheRegistrys) {
   EXPECT_TRUE(matc::api::takes_option_name("color_space", "lin_srgb"));  // an alias
   EXPECT_FALSE(matc::api::takes_option_name("gamut_mapping", "clip"));
   EXPECT_THROW(matc::api::option_names("nope"), std::invalid_argument);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(PublicReport, PlotsSamplesAndAnIndexOrAClashRefused) {
+  const std::vector<matc::api::Material> materials = {example("gold.json"),
+                                                      example("tinted_steel.json")};
+  const matc::api::Report report = matc::api::report(materials);
+  std::vector<std::string> names;
+  for (const matc::api::OutputFile& file : report.files)
+    names.push_back(file.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"gold.svg", "gold.csv", "tinted_steel.svg",
+                                             "tinted_steel.csv", "index.html"}));
+  EXPECT_EQ(matc::api::report(materials).files.back().bytes, report.files.back().bytes);
+  const auto twin =
+      matc::api::parse_materials(R"({"name": "GOLD", "ior": {"n": 0.2, "k": 3}})", "twin.json");
+  const std::vector<matc::api::Material> clash = {materials[0], twin[0]};
+  EXPECT_THROW(matc::api::report(clash), matc::api::MaterialError);
 }
 
 }  // namespace

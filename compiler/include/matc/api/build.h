@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "matc/api/compiled_material.h"
+#include "matc/api/files.h"
 #include "matc/api/tables.h"
 
 namespace matc {
@@ -33,11 +34,6 @@ struct BuildOptions {
   CompileOptions compile;     // --basis, --color-space, --gamut-mapping
 };
 inline constexpr std::size_t kMaxEmbeddedLutSize = 64;
-
-struct OutputFile {
-  std::string name;  // a plain file name, as matc names it in its output directory
-  std::string bytes;
-};
 
 // Immutable and thread-safe; cheap to copy (shared). Tables are baked on first use.
 class Build {

@@ -3,9 +3,16 @@
 // untouched (build systems see no change). Native builds only.
 #pragma once
 
+#include <string>
 #include <string_view>
 
 namespace matc::api {
+
+// A file an output of the library is made of, in memory.
+struct OutputFile {
+  std::string name;  // a plain file name, as matc names it in its output directory
+  std::string bytes;
+};
 
 enum class WriteOutcome { written, unchanged };
 
