@@ -5,19 +5,18 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
-#include "matc/pipeline/depfile.h"
 #include "print_diagnostics.h"
 
 namespace matc::cli {
 
 namespace fs = std::filesystem;
 
-void print_batch_summary(const BatchSummaryWords& words, const BatchCounts& counts, bool quiet,
+void print_batch_summary(const BatchSummaryWords& words, const api::BatchResult& counts, bool quiet,
                          std::optional<double> seconds) {
   if (quiet) return;
   if (diagnostics_format() == DiagnosticsFormat::json) {
     // Standard error stays JSON Lines for tools: the summary is one more object.
-    nlohmann::ordered_json summary = {{words.done, counts.done},
+    nlohmann::ordered_json summary = {{words.done, counts.compiled},
                                       {"written", counts.written},
                                       {"unchanged", counts.unchanged},
                                       {"failed", counts.failed},
@@ -27,7 +26,7 @@ void print_batch_summary(const BatchSummaryWords& words, const BatchCounts& coun
     return;
   }
   fmt::print(stderr, "{}: {} {} ({} files written, {} unchanged), {} failed{}{}\n", words.command,
-             counts.done, words.done, counts.written, counts.unchanged, counts.failed,
+             counts.compiled, words.done, counts.written, counts.unchanged, counts.failed,
              counts.not_attempted > 0
                  ? fmt::format(", {} not attempted (use --keep-going)", counts.not_attempted)
                  : "",
@@ -50,8 +49,9 @@ void add_depfile_options(CLI::App& command, std::string& depfile, bool& write_de
 }
 
 std::vector<fs::path> matc_binary_dependency() {
-  const fs::path self = matc_executable();
-  if (self.empty()) return {};
+  std::error_code error;
+  const fs::path self = fs::read_symlink("/proc/self/exe", error);
+  if (error) return {};
   return {self};
 }
 

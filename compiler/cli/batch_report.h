@@ -10,7 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "matc/pipeline/batch.h"
+#include "matc/api/batch.h"
 
 namespace matc::cli {
 
@@ -22,7 +22,7 @@ struct BatchSummaryWords {
 
 // One line on standard error (or one JSON object when diagnostics are JSON), unless `quiet`.
 // `seconds`, when given, is how long the batch took.
-void print_batch_summary(const BatchSummaryWords& words, const BatchCounts& counts, bool quiet,
+void print_batch_summary(const BatchSummaryWords& words, const api::BatchResult& counts, bool quiet,
                          std::optional<double> seconds = std::nullopt);
 
 // -k,--keep-going and -q,--quiet, with what keeping going does and what quiet silences.

@@ -8,16 +8,15 @@
 #include <fmt/format.h>
 
 #include "batch_report.h"
-#include "color_options.h"
 #include "commands.h"
 #include "device_validation_report.h"
 #include "emit_option.h"
 #include "file_list.h"
 #include "lut_options.h"
+#include "matc/api/batch.h"
 #include "matc/api/diagnostics.h"
-#include "matc/emit/build.h"
-#include "matc/pipeline/compile_batch.h"
-#include "named_option.h"
+#include "matc/api/options.h"
+#include "name_options.h"
 #include "progress_line.h"
 
 namespace matc::cli {
@@ -29,50 +28,52 @@ struct CompileOptions {
   std::string output_directory = "matc-out";
   bool keep_going = false;
   bool quiet = false;
-  unsigned jobs = 0;           // -j: materials compiled at once; 0: one per hardware thread
-  std::string depfile;         // --depfile FILE: Make-syntax dependencies of every output
-  bool write_depfile = false;  // -MD: the same, as <output directory>/matc.d
-  std::set<OutputKind> emit = all_output_kinds();
-  bool no_shared = false;    // --no-shared: only each material's own files
-  bool shared_only = false;  // --shared-only: only the shared files (no material given)
-  LutFormat lut_format = LutFormat::ktx2;
+  unsigned jobs = 0;              // -j: materials compiled at once; 0: one per hardware thread
+  std::string depfile;            // --depfile FILE: Make-syntax dependencies of every output
+  bool write_depfile = false;     // -MD: the same, as <output directory>/matc.d
+  std::vector<std::string> emit;  // empty: every kind
+  bool no_shared = false;         // --no-shared: only each material's own files
+  bool shared_only = false;       // --shared-only: only the shared files (no material given)
+  std::string lut_format;
   LutCliOptions lut;
   bool embed_lut = false;
   std::size_t embed_lut_size = 32;
   bool validate = false;  // run each material's shaders on a device before writing its files
-  DeviceCliOptions device;
-  ColorOptions color;
+  api::DeviceOptions device;
+  api::CompileOptions color;  // its colour space and gamut mapping (the basis is lut's)
 };
 
 inline constexpr const char* kDepfileName = "matc.d";
 
 namespace fs = std::filesystem;
 
-BuildOptions build_options(const CompileOptions& options) {
-  BuildOptions build = table_build_options(options.lut, options.embed_lut, options.embed_lut_size);
+api::BuildOptions build_options(const CompileOptions& options) {
+  api::BuildOptions build =
+      table_build_options(options.lut, options.embed_lut, options.embed_lut_size);
   build.emit = options.emit;
   build.lut_format = options.lut_format;
-  build.color = options.color;
+  build.compile.color_space = options.color.color_space;
+  build.compile.gamut_mapping = options.color.gamut_mapping;
   return build;
 }
 
 int run_compile(const CompileOptions& options) {
-  const Build build(build_options(options));
-  std::unique_ptr<DeviceValidator> validator;
-  CompileBatchOptions batch;
+  const api::Build build(build_options(options));
+  std::unique_ptr<api::DeviceValidation> validation;
+  api::BatchOptions batch;
   if (options.validate) {
-    validator = open_device_validator(build, options.device);
-    if (!validator) return kExitNoDevice;
+    validation = open_device_validation(build, options.device);
+    if (!validation) return kExitNoDevice;
     std::vector<std::string> failed_checks;
-    if (!validate_shared_files_and_report(*validator, &failed_checks)) {
+    if (!validate_shared_files_and_report(*validation, &failed_checks)) {
       fmt::print(stderr,
                  "matc: error: {} differ from the CPU runtime on the Vulkan device (lines "
                  "above); nothing written\n",
                  fmt::join(failed_checks, " and "));
       return kExitValidationFailed;
     }
-    batch.check_material = [&validator](const CompiledMaterial& compiled) {
-      return validate_and_report(*validator, compiled);
+    batch.check_material = [&validation](const api::CompiledMaterial& compiled) {
+      return validate_and_report(*validation, compiled);
     };
   }
   batch.jobs = options.jobs;
@@ -80,22 +81,23 @@ int run_compile(const CompileOptions& options) {
   batch.no_shared = options.no_shared;
   batch.shared_only = options.shared_only;
   const fs::path output_directory(options.output_directory);
+  batch.output_directory = options.output_directory;
   batch.depfile =
-      depfile_path(options.depfile, options.write_depfile, output_directory, kDepfileName);
-  batch.extra_dependencies = matc_binary_dependency();
+      depfile_path(options.depfile, options.write_depfile, output_directory, kDepfileName).string();
+  for (const fs::path& dependency : matc_binary_dependency())
+    batch.extra_dependencies.push_back(dependency.string());
 
-  std::vector<MaterialSource> sources;
+  std::vector<api::BatchSource> sources;
   sources.reserve(options.files.size());
   for (const std::string& file : options.files)
-    sources.push_back(MaterialSource::file(file));
-  DirectoryOutput output(output_directory);
+    sources.push_back(api::BatchSource::file(file));
   ProgressLine progress(!options.quiet && stderr_is_terminal());
-  const CompileBatchResult result =
-      compile_batch(build, sources, output, batch, printed_events(progress));
+  const api::BatchResult result =
+      api::compile_batch(build, sources, batch, printed_events(progress));
   progress.clear();
-  print_batch_summary({"matc", "compiled"}, result.counts, options.quiet);
+  print_batch_summary({"matc", "compiled"}, result, options.quiet);
   if (result.failed_checks > 0) return kExitValidationFailed;
-  return result.counts.failed > 0 ? kExitInputError : kExitSuccess;
+  return result.failed > 0 ? kExitInputError : kExitSuccess;
 }
 
 // The command line's checks that need every file: then the batch.
@@ -155,16 +157,16 @@ Command register_compile(CLI::App& app) {
                "Write only the shared files (matc_fresnel.*, the tables), from no material file: "
                "the one shared action beside per-material --no-shared actions")
       ->excludes(no_shared_option);
-  add_named_option(app, "--lut", options->lut_format,
-                   "File format of the tables DIR/matc_lut.<ext>, DIR/matc_coefficient_table.<ext> "
-                   "and DIR/matc_ltc.<ext>");
+  add_name_option(app, "--lut", options->lut_format, "lut_format",
+                  "File format of the tables DIR/matc_lut.<ext>, DIR/matc_coefficient_table.<ext> "
+                  "and DIR/matc_ltc.<ext>");
   app.add_flag("--embed-lut", options->embed_lut,
                "Also embed a small table in matc_fresnel.glsl/.hlsl as a constant array");
   app.add_option("--embed-lut-size", options->embed_lut_size, "Width and height of that table")
       ->capture_default_str()
-      ->check(CLI::Range(matc::kMinLutSize, matc::kMaxEmbeddedLutSize));
+      ->check(CLI::Range(api::kMinLutSize, api::kMaxEmbeddedLutSize));
   add_lut_options(app, options->lut, "lut-");
-  add_color_options(app, options->color);
+  add_color_name_options(app, options->color);
   add_coefficient_table_option(app, options->lut);
   app.add_flag("--validate", options->validate,
                "Run each material's GLSL and HLSL shaders on a Vulkan device (lavapipe) against "

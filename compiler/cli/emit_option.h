@@ -1,18 +1,17 @@
-// --emit, as the compile and `matc layout` take it: a comma-separated list of output kinds.
+// --emit, as the compile and `matc layout` take it: a comma-separated list of output kinds, by
+// the public API's names.
 #pragma once
 
-#include <set>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
-#include "matc/emit/output_layout.h"
-
 namespace matc::cli {
 
-// Adds --emit to `command`, refusing a kind the registry does not name; `kinds` holds every kind
-// until the option is given.
-CLI::Option* add_emit_option(CLI::App& command, std::set<OutputKind>& kinds,
+// Adds --emit to `command`, refusing a kind the public API does not name; `kinds` stays empty
+// (every kind) until the option names some.
+CLI::Option* add_emit_option(CLI::App& command, std::vector<std::string>& kinds,
                              const std::string& help);
 
 }  // namespace matc::cli

@@ -6,13 +6,12 @@
 
 #include <fmt/format.h>
 
-#include "color_options.h"
 #include "commands.h"
-#include "lut_options.h"
 #include "matc/api/diagnostics.h"
 #include "matc/api/files.h"
 #include "matc/matc.h"
-#include "matc/options/option_names.h"
+#include "name_options.h"
+#include "option_help.h"
 #include "print_diagnostics.h"
 
 namespace matc::cli {
@@ -23,8 +22,7 @@ namespace fs = std::filesystem;
 struct GltfOptions {
   std::string input;
   std::string output;
-  runtime::BasisKind basis = runtime::kDefaultBasis;
-  ColorOptions color;
+  api::CompileOptions compile;
   bool quiet = false;
 };
 
@@ -42,16 +40,17 @@ bool ends_with_any_case(const std::string& path, std::string_view extension) {
 std::string output_problem(const GltfOptions& options, const api::GltfAsset& asset) {
   const fs::path input(options.input);
   const fs::path output(options.output);
-  const std::string written = path_identity(output);
-  if (written == path_identity(input))
+  const std::string written = api::path_identity(output.string());
+  if (written == api::path_identity(input.string()))
     return fmt::format("output '{}' would overwrite its input", api::printable(options.output));
   for (const std::string& uri : asset.external_uris) {
-    if (written == path_identity(input.parent_path() / uri))
+    if (written == api::path_identity((input.parent_path() / uri).string()))
       return fmt::format("output '{}' would overwrite '{}', a file the asset names",
                          api::printable(options.output), api::echoed(uri, 128));
   }
   const auto folder = [](const fs::path& path) {
-    return path_identity(path.parent_path().empty() ? fs::path(".") : path.parent_path());
+    return api::path_identity(
+        (path.parent_path().empty() ? fs::path(".") : path.parent_path()).string());
   };
   if (!asset.external_uris.empty() && folder(output) != folder(input)) {
     return fmt::format(
@@ -79,12 +78,9 @@ int run_gltf(const GltfOptions& options) {
                binary ? ".glb" : ".gltf");
     return kExitUsageError;
   }
-  const api::CompileOptions compile{std::string(option_name(options.basis)),
-                                    std::string(option_name(options.color.working_space)),
-                                    std::string(option_name(options.color.gamut_mapping))};
   api::GltfAsset asset;
   try {
-    asset = api::compile_gltf_file(options.input, compile);
+    asset = api::compile_gltf_file(options.input, options.compile);
   } catch (const api::MaterialError& error) {
     print_diagnostics(error.diagnostics());
     return kExitInputError;
@@ -113,7 +109,7 @@ int run_gltf(const GltfOptions& options) {
       names += (names.empty() ? "" : ", ") + material.name();
     fmt::print("matc gltf: {}: {} metal(s) with MATC_materials_fresnel ({}; basis {})\n",
                api::printable(options.output), asset.materials.size(), names,
-               option_name(options.basis));
+               options.compile.basis);
   }
   return kExitSuccess;
 }
@@ -132,8 +128,8 @@ Command register_gltf(CLI::App& app) {
                    "The asset written (.glb for a .glb, .gltf for a .gltf; a .gltf that names "
                    "files beside it goes into its own folder)")
       ->required();
-  add_basis_option(*command, options->basis);
-  add_color_options(*command, options->color);
+  add_name_option(*command, "--basis", options->compile.basis, "basis", kBasisHelp);
+  add_color_name_options(*command, options->compile);
   command->add_flag("-q,--quiet", options->quiet, "No summary line");
   return {command, [options] { return run_gltf(*options); }, true};
 }

@@ -4,7 +4,7 @@
 
 #include "batch_report.h"
 #include "commands.h"
-#include "matc/pipeline/import_batch.h"
+#include "matc/api/batch.h"
 #include "progress_line.h"
 
 namespace matc::cli {
@@ -19,13 +19,12 @@ struct ImportOptions {
 };
 
 int run_import(const ImportOptions& options) {
-  std::vector<MaterialSource> documents;
+  std::vector<api::BatchSource> documents;
   for (const std::string& file : options.files)
-    documents.push_back(MaterialSource::file(file));
-  DirectoryOutput output(options.output_directory);
+    documents.push_back(api::BatchSource::file(file));
   ProgressLine no_progress(false);
-  const BatchCounts counts =
-      import_batch(documents, output, {options.keep_going}, printed_events(no_progress));
+  const api::BatchResult counts = api::import_batch(
+      documents, {options.output_directory, options.keep_going}, printed_events(no_progress));
   print_batch_summary({"matc import", "imported"}, counts, options.quiet);
   return counts.failed > 0 ? kExitInputError : kExitSuccess;
 }

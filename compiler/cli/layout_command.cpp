@@ -20,7 +20,7 @@ namespace {
 
 struct LayoutOptions {
   std::vector<std::string> names;  // material names (their JSON "name")
-  std::set<OutputKind> emit = all_output_kinds();
+  std::vector<std::string> emit;   // empty: every kind
   LutFormat lut_format = LutFormat::ktx2;
   bool no_shared = false;
   bool shared_only = false;
@@ -41,7 +41,10 @@ int run_layout(const LayoutOptions& options) {
       return kExitUsageError;
     }
   }
-  const std::set<OutputKind>& emit = options.emit;
+  std::set<OutputKind> emit;
+  for (const std::string& name : options.emit)
+    emit.insert(*option_value<OutputKind>(name));
+  if (emit.empty()) emit = all_output_kinds();
   std::vector<std::string> files;
   if (!options.no_shared) files = shared_file_names(emit, options.lut_format);
   for (const std::string& name : options.names)

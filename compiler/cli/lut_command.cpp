@@ -1,47 +1,55 @@
+#include <filesystem>
+#include <optional>
+#include <string>
+
 #include <fmt/core.h>
 
 #include "commands.h"
 #include "lut_options.h"
 #include "matc/api/diagnostics.h"
-#include "matc/options/option_names.h"
-#include "matc/pipeline/batch.h"
-#include "matc/pipeline/output_sink.h"
-#include "matc/runtime/basis.h"
+#include "matc/api/files.h"
+#include "matc/api/options.h"
+#include "matc/api/tables.h"
 
 namespace matc::cli {
 namespace {
 
 struct LutCommandOptions {
   std::string output;
-  std::optional<LutFormat> format;  // none: from the output's extension
+  std::string format;  // empty: from the output's extension
   LutCliOptions lut;
 };
 
 int run_lut(const LutCommandOptions& options) {
   const std::filesystem::path output(options.output);
-  std::optional<LutFormat> format = options.format;
-  if (!format) {
-    format = lut_format_from_extension(output.extension().string());
-    if (!format) {
+  std::string format = options.format;
+  if (format.empty()) {
+    const std::optional<std::string> inferred =
+        api::lut_format_of_extension(output.extension().string());
+    if (!inferred) {
       fmt::print(stderr,
                  "matc lut: error: --format: cannot infer the format from '{}'; give --format "
                  "ktx2|dds|raw|header or an extension .ktx2, .dds, .bin or .h\n",
                  api::echoed(output.string(), 128));
       return kExitUsageError;
     }
+    format = *inferred;
   }
-  const BakedLut baked = bake_lut(runtime::shipped_basis(options.lut.basis), options.lut.bake);
+  const api::PreintegratedTableOptions table{options.lut.basis, options.lut.size,
+                                             options.lut.samples, options.lut.precision};
   try {
-    DirectoryOutput directory(output.has_parent_path() ? output.parent_path() : ".");
-    BatchCounts counts;
-    for (const OutputFile& file :
-         lut_output_files(baked, *format, options.lut.precision, output.filename().string()))
-      counts.count(directory.write(file.name, file.bytes));
+    const std::filesystem::path directory = output.has_parent_path() ? output.parent_path() : ".";
+    std::filesystem::create_directories(directory);
+    std::size_t written = 0, unchanged = 0;
+    for (const api::OutputFile& file : api::lut_files(table, format, output.filename().string())) {
+      ++(api::write_file((directory / file.name).string(), file.bytes) == api::WriteOutcome::written
+             ? written
+             : unchanged);
+    }
     fmt::print(stderr,
                "matc lut: {} ({}x{}, {} samples per texel, {}, {}): {} written, {} unchanged\n",
-               output.string(), baked.lut.size, baked.lut.size, baked.lut.samples,
-               lut_format_name(*format), lut_precision_name(options.lut.precision), counts.written,
-               counts.unchanged);
+               output.string(), table.size, table.size, table.samples, format, table.precision,
+               written, unchanged);
   } catch (const std::exception& error) {
     fmt::print(stderr, "{}: error: {}\n", output.string(), error.what());
     return kExitInputError;
@@ -58,12 +66,8 @@ Command register_lut(CLI::App& app) {
   command
       ->add_option("-o,--output", options->output, "Output file; a .json manifest goes beside it")
       ->required();
-  command
-      ->add_option_function<std::string>(
-          "--format",
-          [options](const std::string& name) { options->format = option_value<LutFormat>(name); },
-          "File format (default: from the extension)")
-      ->check(CLI::IsMember(option_name_list<LutFormat>()));
+  command->add_option("--format", options->format, "File format (default: from the extension)")
+      ->check(CLI::IsMember(api::option_names("lut_format")));
   add_lut_options(*command, options->lut, "");
 
   return {command, [options] { return run_lut(*options); }};

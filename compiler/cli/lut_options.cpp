@@ -1,40 +1,36 @@
 #include "lut_options.h"
 
-#include <vector>
-
-#include "named_option.h"
+#include "name_options.h"
 #include "option_help.h"
 
 namespace matc::cli {
 
-void add_basis_option(CLI::App& app, runtime::BasisKind& basis) {
-  add_named_option(app, "--basis", basis, kBasisHelp);
-}
-
 void add_lut_options(CLI::App& app, LutCliOptions& options, const std::string& prefix) {
-  app.add_option("--" + prefix + "size", options.bake.size, kLutSizeHelp)
+  app.add_option("--" + prefix + "size", options.size, kLutSizeHelp)
       ->capture_default_str()
-      ->check(CLI::Range(kMinLutSize, kMaxLutSize));
-  app.add_option("--" + prefix + "samples", options.bake.samples, kLutSamplesHelp)
+      ->check(CLI::Range(api::kMinLutSize, api::kMaxLutSize));
+  app.add_option("--" + prefix + "samples", options.samples, kLutSamplesHelp)
       ->capture_default_str()
-      ->check(CLI::Range(std::size_t{1}, kMaxLutSamples));
-  add_named_option(app, "--" + prefix + "precision", options.precision, kLutPrecisionHelp);
-  add_basis_option(app, options.basis);
+      ->check(CLI::Range(std::size_t{1}, api::kMaxLutSamples));
+  add_name_option(app, "--" + prefix + "precision", options.precision, "lut_precision",
+                  kLutPrecisionHelp);
+  add_name_option(app, "--basis", options.basis, "basis", kBasisHelp);
 }
 
 void add_coefficient_table_option(CLI::App& app, LutCliOptions& options) {
-  add_named_option(app, "--coefficient-table-precision", options.coefficient_table_precision,
-                   kCoefficientTablePrecisionHelp);
+  add_name_option(app, "--coefficient-table-precision", options.coefficient_table_precision,
+                  "lut_precision", kCoefficientTablePrecisionHelp, "f16");
 }
 
-BuildOptions table_build_options(const LutCliOptions& lut, bool embed_lut,
-                                 std::size_t embed_lut_size) {
-  BuildOptions build;
-  build.lut = lut.bake;
+api::BuildOptions table_build_options(const LutCliOptions& lut, bool embed_lut,
+                                      std::size_t embed_lut_size) {
+  api::BuildOptions build;
+  build.lut_size = lut.size;
+  build.lut_samples = lut.samples;
   build.lut_precision = lut.precision;
   build.coefficient_table_precision = lut.coefficient_table_precision;
-  build.embedded_lut_size = embed_lut ? embed_lut_size : 0;
-  build.basis = lut.basis;
+  build.embed_lut = embed_lut ? embed_lut_size : 0;
+  build.compile.basis = lut.basis;
   return build;
 }
 

@@ -11,6 +11,8 @@
 #include <CLI/CLI.hpp>
 
 #include "matc/options/option_names.h"
+#include "matc/runtime/basis.h"
+#include "option_help.h"
 
 namespace matc::cli {
 
@@ -29,6 +31,11 @@ CLI::Option* add_named_option(CLI::App& app, const std::string& flags, Value& va
           flags, [&value](const std::string& name) { value = *option_value<Value>(name); }, help)
       ->default_str(std::string(option_name(value)))
       ->check(CLI::IsMember(names));
+}
+
+// Adds --basis to `app`, typed (the commands not yet on the public API's names: bake, basis).
+inline CLI::Option* add_basis_option(CLI::App& app, runtime::BasisKind& basis) {
+  return add_named_option(app, "--basis", basis, kBasisHelp);
 }
 
 }  // namespace matc::cli

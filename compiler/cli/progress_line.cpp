@@ -10,12 +10,12 @@
 
 namespace matc::cli {
 
-void ProgressLine::update(const BatchProgress& progress) {
+void ProgressLine::update(std::size_t done, std::size_t total, std::string_view last) {
   if (!enabled_) return;
   const std::lock_guard lock(mutex_);
-  done_ = progress.done;
-  total_ = progress.total;
-  last_ = progress.name;
+  done_ = done;
+  total_ = total;
+  last_ = last;
   fmt::print(stderr, "\r\x1b[K");
   draw();
 }
@@ -39,12 +39,14 @@ void ProgressLine::clear() {
   enabled_ = false;  // for good: what is printed after the batch is not followed by the line
 }
 
-BatchEvents printed_events(ProgressLine& progress) {
-  BatchEvents events;
-  events.diagnostics = [&progress](const Diagnostics& diagnostics) {
+api::BatchEvents printed_events(ProgressLine& progress) {
+  api::BatchEvents events;
+  events.diagnostics = [&progress](const std::vector<api::Diagnostic>& diagnostics) {
     progress.print_above([&] { print_diagnostics(diagnostics); });
   };
-  events.progress = [&progress](const BatchProgress& done) { progress.update(done); };
+  events.progress = [&progress](const api::BatchProgress& done) {
+    progress.update(done.done, done.total, done.name);
+  };
   events.error = [&progress](const std::string& where, const std::string& message) {
     progress.print_above([&] { fmt::print(stderr, "{}: error: {}\n", where, message); });
   };

@@ -6,8 +6,9 @@
 #include <functional>
 #include <mutex>
 #include <string>
+#include <string_view>
 
-#include "matc/pipeline/batch.h"
+#include "matc/api/batch.h"
 
 namespace matc::cli {
 
@@ -16,7 +17,7 @@ namespace matc::cli {
 class ProgressLine {
  public:
   explicit ProgressLine(bool enabled) : enabled_(enabled) {}
-  void update(const BatchProgress& progress);
+  void update(std::size_t done, std::size_t total, std::string_view last);
   // Runs `print` (which writes whole lines to standard error) with the line cleared first, so
   // that messages printed while workers run are not drawn over.
   void print_above(const std::function<void()>& print);
@@ -34,7 +35,7 @@ class ProgressLine {
 
 // The events of a batch as the commands print them: diagnostics and the batch's own errors on
 // standard error above `progress`, which follows the batch.
-BatchEvents printed_events(ProgressLine& progress);
+api::BatchEvents printed_events(ProgressLine& progress);
 
 // Whether standard error is a terminal (progress lines are drawn only there).
 bool stderr_is_terminal();

@@ -2,12 +2,11 @@
 // memory (nothing is written) and prove its shaders on a Vulkan device.
 #include <fmt/core.h>
 
-#include "color_options.h"
 #include "commands.h"
 #include "device_validation_report.h"
 #include "lut_options.h"
-#include "matc/compile/compile.h"
-#include "matc/material/material_input.h"
+#include "matc/matc.h"
+#include "name_options.h"
 #include "print_diagnostics.h"
 
 namespace matc::cli {
@@ -18,38 +17,42 @@ struct ValidateOptions {
   LutCliOptions lut;
   bool embed_lut = false;
   std::size_t embed_lut_size = 32;
-  DeviceCliOptions device;
-  ColorOptions color;
+  api::DeviceOptions device;
+  api::CompileOptions color;  // its colour space and gamut mapping (the basis is lut's)
 };
 
 int run_validate(const ValidateOptions& options) {
-  BuildOptions build_options =
+  api::BuildOptions build_options =
       table_build_options(options.lut, options.embed_lut, options.embed_lut_size);
-  build_options.color = options.color;
-  const Build build(build_options);
-  const std::unique_ptr<DeviceValidator> validator = open_device_validator(build, options.device);
-  if (!validator) return kExitNoDevice;
+  build_options.compile.color_space = options.color.color_space;
+  build_options.compile.gamut_mapping = options.color.gamut_mapping;
+  const api::Build build(build_options);
+  const std::unique_ptr<api::DeviceValidation> validation =
+      open_device_validation(build, options.device);
+  if (!validation) return kExitNoDevice;
 
-  const runtime::BasisView basis = build.basis();
   std::size_t invalid_files = 0;
   std::size_t validated = 0;
   std::size_t failed = 0;
   std::vector<std::string> failed_checks;
-  validate_shared_files_and_report(*validator, &failed_checks);
+  validate_shared_files_and_report(*validation, &failed_checks);
   for (const std::string& file : options.files) {
-    const MaterialInput input = read_material_input(file);
-    print_diagnostics(input.diagnostics);
-    if (input.materials.empty()) {
+    std::vector<api::Material> materials;
+    try {
+      materials = api::load_materials(file);
+    } catch (const api::MaterialError& error) {
+      print_diagnostics(error.diagnostics());
+    }
+    if (materials.empty()) {
       ++invalid_files;
       continue;
     }
-    for (const Material& material : input.materials) {
-      const CompiledMaterial compiled = compile_material(material, basis, build.options().color);
-      Diagnostics fit;
-      warn_if_poor_fit(compiled, fit);
-      print_diagnostics(fit);
+    print_diagnostics(materials.front().diagnostics());  // the input's, which every one holds
+    for (const api::Material& material : materials) {
+      const api::CompiledMaterial compiled = build.compile(material);
+      print_diagnostics(compiled.diagnostics(), material.diagnostics().size());  // the fit's
       ++validated;
-      if (!validate_and_report(*validator, compiled)) ++failed;
+      if (!validate_and_report(*validation, compiled)) ++failed;
     }
   }
   fmt::print("matc validate: {} of {} materials passed on both front ends{}\n", validated - failed,
@@ -77,11 +80,11 @@ Command register_validate(CLI::App& app) {
                     "above 8x8 slowly: docs/validation.md)");
   command->add_option("--embed-lut-size", options->embed_lut_size, "Width and height of that table")
       ->capture_default_str()
-      ->check(CLI::Range(matc::kMinLutSize, matc::kMaxEmbeddedLutSize));
+      ->check(CLI::Range(api::kMinLutSize, api::kMaxEmbeddedLutSize));
   add_lut_options(*command, options->lut, "lut-");
   add_coefficient_table_option(*command, options->lut);
   add_device_options(*command, options->device);
-  add_color_options(*command, options->color);
+  add_color_name_options(*command, options->color);
 
   return {command, [options] { return run_validate(*options); }, true};
 }

@@ -4,9 +4,11 @@
 #include <stdexcept>
 
 #include "checked_options.h"
+#include "compiled_evaluation.h"
 #include "matc/base/echoed_text.h"
 #include "matc/emit/build.h"
 #include "matc/pipeline/compile_batch.h"
+#include "matc/pipeline/import_batch.h"
 #include "matc/pipeline/output_sink.h"
 #include "public_diagnostics.h"
 
@@ -75,6 +77,13 @@ BatchResult compile_batch(const Build& build, std::span<const BatchSource> sourc
   for (const std::string& dependency : options.extra_dependencies)
     batch.extra_dependencies.emplace_back(dependency);
   batch.cancel = std::move(cancel);
+  const runtime::BasisKind basis = build.value().options().basis;
+  if (options.check_material) {
+    batch.check_material = [&options, basis](const matc::CompiledMaterial& compiled) {
+      return options.check_material(
+          public_compiled(std::make_shared<const matc::CompiledMaterial>(compiled), basis, {}));
+    };
+  }
   std::optional<MemoryOutput> memory;
   std::optional<DirectoryOutput> directory;
   OutputSink& output = options.in_memory
@@ -82,14 +91,35 @@ BatchResult compile_batch(const Build& build, std::span<const BatchSource> sourc
                            : static_cast<OutputSink&>(directory.emplace(options.output_directory));
   const CompileBatchResult result =
       matc::compile_batch(build.value(), inputs, output, batch, library_events(events));
-  BatchResult out{result.counts.done,
-                  result.counts.written,
-                  result.counts.unchanged,
-                  result.counts.failed,
-                  result.counts.not_attempted,
-                  result.cancelled,
-                  {}};
+  BatchResult out;
+  out.compiled = result.counts.done;
+  out.written = result.counts.written;
+  out.unchanged = result.counts.unchanged;
+  out.failed = result.counts.failed;
+  out.not_attempted = result.counts.not_attempted;
+  out.cancelled = result.cancelled;
+  out.failed_checks = result.failed_checks;
   if (memory) out.files = memory->files();
+  return out;
+}
+
+BatchResult import_batch(std::span<const BatchSource> documents, const ImportOptions& options,
+                         const BatchEvents& events) {
+  if (options.output_directory.empty())
+    throw std::invalid_argument("output_directory: empty; the folder the files go to");
+  std::vector<MaterialSource> inputs;
+  inputs.reserve(documents.size());
+  for (const BatchSource& source : documents)
+    inputs.push_back({source.path, source.text});
+  DirectoryOutput output(options.output_directory);
+  const BatchCounts counts =
+      matc::import_batch(inputs, output, {options.keep_going}, library_events(events));
+  BatchResult out;
+  out.compiled = counts.done;
+  out.written = counts.written;
+  out.unchanged = counts.unchanged;
+  out.failed = counts.failed;
+  out.not_attempted = counts.not_attempted;
   return out;
 }
 

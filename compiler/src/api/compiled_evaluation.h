@@ -1,24 +1,46 @@
 // What a public CompiledMaterial's evaluations need beside the compiled value, shared by the files
-// that implement them (compiled_material.cpp; fbar_reference.cpp, native builds).
+// that implement them (compiled_material.cpp; fbar_reference.cpp, native builds), and the public
+// value of a material the library compiled itself (a batch's, for its check).
 #pragma once
 
 #include <memory>
+#include <mutex>
+#include <vector>
 
 #include "matc/api/compiled_material.h"
+#include "matc/compile/compile.h"
 #include "matc/optics/reflectance_curve.h"
 #include "matc/runtime/basis.h"
 
 namespace matc::api {
 
-// What the evaluations need beside the compiled value: the basis, and the exact curves the
-// coefficients were fitted to (the material in air and, for a coated one, the metal under its
-// coat and both layered, which refers to the other two).
+// The basis, and the exact curves the coefficients were fitted to (the material in air and, for
+// a coated one, the metal under its coat and both layered, which refers to the other two), made
+// on first use: a compile whose curves nobody evaluates does not pay for them.
 struct CompiledMaterial::Evaluation {
   runtime::BasisKind basis = runtime::kDefaultBasis;
-  std::unique_ptr<ReflectanceCurve> in_air;
-  std::unique_ptr<ReflectanceCurve> under_coat;
-  std::unique_ptr<ReflectanceCurve> layered;
-  const ReflectanceCurve& exact() const { return layered ? *layered : *in_air; }
+  ColorOptions color;
+  std::shared_ptr<const matc::Material> material;
+
+  struct Curves {
+    std::unique_ptr<ReflectanceCurve> in_air;
+    std::unique_ptr<ReflectanceCurve> under_coat;  // coated materials only
+    std::unique_ptr<ReflectanceCurve> layered;     // coated materials only
+  };
+  const Curves& curves() const;
+  const ReflectanceCurve& exact() const {
+    const Curves& made = curves();
+    return made.layered ? *made.layered : *made.in_air;
+  }
+
+ private:
+  mutable std::once_flag made_;
+  mutable Curves curves_;
 };
+
+// The public value of `compiled`, compiled by the library with `basis` and its colour options;
+// its diagnostics are `diagnostics`.
+CompiledMaterial public_compiled(std::shared_ptr<const matc::CompiledMaterial> compiled,
+                                 runtime::BasisKind basis, std::vector<Diagnostic> diagnostics);
 
 }  // namespace matc::api

@@ -280,6 +280,30 @@ std::vector<double> fresnel_from_coefficients(const CoefficientRows& coefficient
   return rgb;
 }
 
+const CompiledMaterial::Evaluation::Curves& CompiledMaterial::Evaluation::curves() const {
+  std::call_once(made_, [this] {
+    curves_.in_air = make_reflectance_curve(*material, color);
+    if (const auto& coat = material->coat) {
+      curves_.under_coat = make_under_coat_curve(*material, color.working_space);
+      curves_.layered = std::make_unique<LayeredCurve>(*curves_.in_air, *curves_.under_coat,
+                                                       coat->weight, coat->ior, coat->color);
+    }
+  });
+  return curves_;
+}
+
+CompiledMaterial public_compiled(std::shared_ptr<const matc::CompiledMaterial> compiled,
+                                 runtime::BasisKind basis, std::vector<Diagnostic> diagnostics) {
+  // The material the compiled value holds, shared with it.
+  std::shared_ptr<const matc::Material> material(compiled, &compiled->material);
+  auto evaluation = std::make_shared<CompiledMaterial::Evaluation>();
+  evaluation->basis = basis;
+  evaluation->color = compiled->color;
+  evaluation->material = material;
+  return CompiledMaterial(Material(std::move(material), {}), std::move(compiled),
+                          std::move(evaluation), std::move(diagnostics));
+}
+
 CompiledMaterial compile(const Material& material, const CompileOptions& options) {
   const runtime::BasisKind basis = basis_of(options);
   const ColorOptions color = color_options_of(options);
@@ -288,13 +312,8 @@ CompiledMaterial compile(const Material& material, const CompileOptions& options
       compile_material(value, runtime::shipped_basis(basis), color));
   auto evaluation = std::make_shared<CompiledMaterial::Evaluation>();
   evaluation->basis = basis;
-  evaluation->in_air = make_reflectance_curve(value, color);
-  if (const auto& coat = compiled->coat) {
-    evaluation->under_coat = make_under_coat_curve(value, color.working_space);
-    evaluation->layered =
-        std::make_unique<LayeredCurve>(*evaluation->in_air, *evaluation->under_coat,
-                                       coat->input.weight, coat->input.ior, coat->input.color);
-  }
+  evaluation->color = color;
+  evaluation->material = std::shared_ptr<const matc::Material>(compiled, &compiled->material);
   Diagnostics diagnostics;
   warn_if_poor_fit(*compiled, diagnostics);
   note_if_out_of_unit_range(*compiled, diagnostics);

@@ -19,9 +19,10 @@ std::vector<double> CompiledMaterial::fbar_reference(std::span<const double> ndo
   checked_count("samples", samples, 16, std::size_t{1} << 26);
   if (ndotv.empty()) return {};
   // Tabulated once per call: a spectral curve is costly to evaluate at every sample.
-  const TabulatedCurve in_air(*evaluation_->in_air);
+  const Evaluation::Curves& curves = evaluation_->curves();
+  const TabulatedCurve in_air(*curves.in_air);
   std::optional<TabulatedCurve> under_coat;
-  if (evaluation_->under_coat) under_coat.emplace(*evaluation_->under_coat);
+  if (curves.under_coat) under_coat.emplace(*curves.under_coat);
   std::vector<double> rgb(3 * ndotv.size());
   for (std::size_t i = 0; i < ndotv.size(); ++i) {
     // A coated material: the split-sum layering with exact curves, as matc eval's

@@ -13,6 +13,10 @@ WriteOutcome write_file(std::string_view path, std::string_view bytes) {
              : WriteOutcome::unchanged;
 }
 
+std::string path_identity(std::string_view path) {
+  return matc::path_identity(std::filesystem::path(path));
+}
+
 void remove_temporaries_in_flight() {
   matc::remove_temporaries_in_flight();
 }

@@ -67,6 +67,27 @@ PreintegratedTable preintegrated_table(const PreintegratedTableOptions& options)
           std::string(lut_precision_name(precision))};
 }
 
+std::vector<OutputFile> lut_files(const PreintegratedTableOptions& options, std::string_view format,
+                                  std::string_view file_name) {
+  const runtime::BasisKind basis = basis_of({options.basis, {}, {}});
+  LutOptions lut;
+  lut.size = checked_count("size", options.size, kMinLutSize, kMaxLutSize);
+  lut.samples = checked_count("samples", options.samples, 1, kMaxLutSamples);
+  const LutPrecision precision = checked_option_value<LutPrecision>("precision", options.precision);
+  const LutFormat chosen = checked_option_value<LutFormat>("format", format);
+  const BakedLut baked = bake_lut(runtime::shipped_basis(basis), lut);
+  std::vector<OutputFile> files;
+  for (matc::OutputFile& file : lut_output_files(baked, chosen, precision, file_name))
+    files.push_back({std::move(file.name), std::move(file.bytes)});
+  return files;
+}
+
+std::optional<std::string> lut_format_of_extension(std::string_view extension) {
+  const std::optional<LutFormat> format = lut_format_from_extension(extension);
+  if (!format) return std::nullopt;
+  return std::string(lut_format_name(*format));
+}
+
 CoefficientTable::CoefficientTable(std::shared_ptr<const matc::CoefficientTable> table,
                                    std::string precision)
     : table_(std::move(table)),

@@ -42,10 +42,4 @@ void write_depfile(const std::filesystem::path& path,
   write_file_atomically(path, depfile_text(targets, dependencies));
 }
 
-std::filesystem::path matc_executable() {
-  std::error_code error;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
-  return error ? std::filesystem::path() : self;
-}
-
 }  // namespace matc

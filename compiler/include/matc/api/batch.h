@@ -46,6 +46,10 @@ struct BatchOptions {
   bool keep_going = false;   // compile the others after one fails
   bool no_shared = false;    // each material's own files only: no shared files, no manifest
   bool shared_only = false;  // the shared files only (give no source)
+  // Run on each compiled material before its files are written (`matc --validate` runs its
+  // shaders on a device there, matc/api/validation.h); false: none of its files are written and
+  // it fails. Called one at a time.
+  std::function<bool(const CompiledMaterial&)> check_material;
 };
 
 struct BatchProgress {
@@ -70,6 +74,7 @@ struct BatchResult {
   std::size_t failed = 0;
   std::size_t not_attempted = 0;  // after a failure without keep_going, or a cancellation
   bool cancelled = false;
+  std::size_t failed_checks = 0;             // materials check_material refused
   std::map<std::string, std::string> files;  // name to bytes, for a batch in memory
 };
 
@@ -81,5 +86,17 @@ BatchResult compile_batch(std::span<const BatchSource> sources, const BatchOptio
 BatchResult compile_batch(const Build& build, std::span<const BatchSource> sources,
                           const BatchOptions& options, const BatchEvents& events = {},
                           std::stop_token cancel = {});
+
+// `matc import -o DIR DOCUMENTS...`: each metallic material of MaterialX documents and glTF assets
+// (sources, on disk or in memory) written as its material file <name>.json into
+// `output_directory`. Every document is imported and every name checked before anything is
+// written: without keep_going a failing batch writes nothing. `compiled` counts the materials
+// written, `failed` the documents that failed.
+struct ImportOptions {
+  std::string output_directory;
+  bool keep_going = false;  // write the other documents' materials when one fails
+};
+BatchResult import_batch(std::span<const BatchSource> documents, const ImportOptions& options,
+                         const BatchEvents& events = {});
 
 }  // namespace matc::api

@@ -21,6 +21,10 @@ enum class WriteOutcome { written, unchanged };
 // temporary behind and nothing else removed.
 WriteOutcome write_file(std::string_view path, std::string_view bytes);
 
+// The canonical form of a path (as far as it exists), for "would this output overwrite an input?"
+// checks: two paths with the same identity name the same file.
+std::string path_identity(std::string_view path);
+
 // Removes the temporaries of every write in progress in this process (this call's and a batch's)
 // and refuses new ones, for a face's interrupt handling: call it from an ordinary thread that
 // waited for the signal (not from a signal handler), then end the process. Files matc did not

@@ -6,11 +6,14 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "matc/api/compiled_material.h"
+#include "matc/api/files.h"
 
 namespace matc {
 struct Lut;
@@ -63,6 +66,13 @@ class PreintegratedTable {
 // the process (a batch of plots pays once). Throws std::invalid_argument naming an option out of
 // range or outside its names.
 PreintegratedTable preintegrated_table(const PreintegratedTableOptions& options = {});
+
+// The table baked with `options` as `matc lut -o FILE` writes it: `file_name` in `format` ("ktx2",
+// "dds", "raw" or "header") and its description `file_name`.json. Not kept: each call bakes.
+std::vector<OutputFile> lut_files(const PreintegratedTableOptions& options, std::string_view format,
+                                  std::string_view file_name);
+// The format a file name's extension stands for (.ktx2, .dds, .bin, .h), if any.
+std::optional<std::string> lut_format_of_extension(std::string_view extension);
 
 // Immutable and cheap to copy (shared).
 class CoefficientTable {

@@ -18,8 +18,4 @@ void write_depfile(const std::filesystem::path& path,
                    const std::vector<std::filesystem::path>& targets,
                    const std::vector<std::filesystem::path>& dependencies);
 
-// The running executable (the matc binary, for the CLI: its templates, presets and version are
-// part of every output); empty when it cannot be found.
-std::filesystem::path matc_executable();
-
 }  // namespace matc
