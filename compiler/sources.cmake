@@ -64,6 +64,7 @@ set(MATC_CORE_SOURCES
   src/api/diagnostics.cpp
   src/api/checked_values.cpp
   src/api/options.cpp
+  src/api/layout.cpp
   src/api/material.cpp
   src/api/compiled_material.cpp
   src/api/text_outputs.cpp
@@ -77,6 +78,7 @@ set(MATC_NATIVE_SOURCES
   src/api/fbar_reference.cpp
   src/api/files.cpp
   src/api/report.cpp
+  src/api/basis.cpp
   src/api/evaluation.cpp
   src/api/coated_evaluation.cpp
   src/basis/training_set.cpp

@@ -13,10 +13,10 @@
 #include "commands.h"
 #include "generated_source.h"
 #include "lut_options.h"
+#include "matc/api/basis.h"
 #include "matc/api/diagnostics.h"
 #include "matc/api/files.h"
 #include "matc/basis/basis_fit.h"
-#include "matc/basis/basis_polynomial_fit.h"
 #include "matc/emit/material_module_template.h"
 #include "matc/fit/coefficient_table.h"
 #include "matc/ltc/ltc_fit.h"
@@ -24,14 +24,16 @@
 #include "matc/lut/default_lut_hashes.h"
 #include "matc/runtime/basis.h"
 #include "matc/runtime/shipped_bases.h"
+#include "name_options.h"
 #include "named_option.h"
+#include "option_help.h"
 
 namespace matc::cli {
 namespace {
 
 struct BasisOptions {
   bool json = false;
-  runtime::BasisKind basis = runtime::kDefaultBasis;
+  std::string basis;  // by name
 };
 
 struct BasisFitOptions {
@@ -50,48 +52,41 @@ struct LtcTableOptions {
 };
 
 int run_basis(const BasisOptions& options) {
-  const runtime::BasisKind kind = options.basis;
-  const runtime::BasisView basis = runtime::shipped_basis(kind);
+  const api::BasisDescription basis = api::describe_basis(options.basis);
   if (!options.json) {
-    const bool closed_form = kind == runtime::BasisKind::powers;
-    fmt::print("basis: {} ({}), b_0 = 1 and b_1..b_3 {}\n", runtime::basis_name(kind),
-               runtime::shipped_basis_record(kind).description,
-               closed_form ? "in closed form" : "tabulated");
-    fmt::print("samples: {} cosines mu_j = j / {}\n", basis.samples(), basis.samples() - 1);
+    const std::size_t samples = basis.mu.size();
+    fmt::print("basis: {} ({}), b_0 = 1 and b_1..b_3 {}\n", basis.name, basis.description,
+               basis.closed_form ? "in closed form" : "tabulated");
+    fmt::print("samples: {} cosines mu_j = j / {}\n", samples, samples - 1);
     fmt::print("probes: mu_1 = {:.4f} (theta {:.3f} rad), mu_2 = {:.4f} (theta {:.3f} rad)\n",
-               basis.probe_mu(0), std::acos(basis.probe_mu(0)), basis.probe_mu(1),
-               std::acos(basis.probe_mu(1)));
-    if (closed_form) {
+               basis.probes[0], std::acos(basis.probes[0]), basis.probes[1],
+               std::acos(basis.probes[1]));
+    if (basis.closed_form) {
       fmt::print(
           "shader form: m = 1 - mu, b_1 = m^6, b_2 = mu m^3, b_3 = b_2 b_1 (the table is the "
           "closed form sampled)\n");
       return kExitSuccess;
     }
-    const PolynomialFitError error =
-        polynomial_fit_error(runtime::shipped_shader_basis(kind).polynomial, basis);
+    const auto& at = basis.polynomial_error_at_samples;
+    const auto& between = basis.polynomial_error_between_samples;
     fmt::print(
         "shader form: {} polynomials of degree {} in sqrt(mu); max |polynomial - table| for "
         "b_1, b_2, b_3: {:.1e}, {:.1e}, {:.1e} at the samples, {:.1e}, {:.1e}, {:.1e} between "
         "them\n",
-        runtime::kPolynomialSegments, runtime::kPolynomialDegree, error.at_grid_points[0],
-        error.at_grid_points[1], error.at_grid_points[2], error.between_grid_points[0],
-        error.between_grid_points[1], error.between_grid_points[2]);
+        runtime::kPolynomialSegments, runtime::kPolynomialDegree, at[0], at[1], at[2], between[0],
+        between[1], between[2]);
     return kExitSuccess;
   }
   // Built apart and moved in: ordered_json keeps members in a vector, so references into `out`
   // would dangle as members are added.
-  nlohmann::ordered_json mu = nlohmann::ordered_json::array();
   std::vector<nlohmann::ordered_json> b(runtime::kBasisSize, nlohmann::ordered_json::array());
-  for (std::size_t j = 0; j < basis.samples(); ++j) {
-    mu.push_back(basis.mu_at(j));
-    const auto values = basis.at_index(j);
+  for (const auto& values : basis.b)
     for (std::size_t i = 0; i < runtime::kBasisSize; ++i)
       b[i].push_back(values[i]);
-  }
   nlohmann::ordered_json out;
-  out["mu"] = std::move(mu);
+  out["mu"] = basis.mu;
   out["b"] = std::move(b);
-  out["probes"] = {basis.probe_mu(0), basis.probe_mu(1)};
+  out["probes"] = basis.probes;
   fmt::print("{}\n", out.dump());
   return kExitSuccess;
 }
@@ -180,7 +175,7 @@ std::vector<Command> register_basis(CLI::App& app) {
   auto basis = std::make_shared<BasisOptions>();
   CLI::App* basis_command = app.add_subcommand("basis", "Show the Fresnel basis b_0..b_3");
   basis_command->add_flag("--json", basis->json, "Print {mu, b, probes} as JSON");
-  add_basis_option(*basis_command, basis->basis);
+  add_name_option(*basis_command, "--basis", basis->basis, "basis", kBasisHelp);
   std::vector<Command> commands;
   // The subcommands that regenerate checked-in C++ source: -o names where it lives.
   const auto add_source_command = [&](const char* name, const char* description,

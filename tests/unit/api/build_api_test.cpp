@@ -11,10 +11,12 @@
 
 #include <gtest/gtest.h>
 
+#include "matc/api/basis.h"
 #include "matc/api/batch.h"
 #include "matc/api/build.h"
 #include "matc/api/evaluation.h"
 #include "matc/api/files.h"
+#include "matc/api/layout.h"
 #include "matc/api/options.h"
 #include "matc/api/report.h"
 #include "matc/api/tables.h"
@@ -355,6 +357,64 @@ TEST(PublicReport, PlotsSamplesAndAnIndexOrAClashRefused) {
       matc::api::parse_materials(R"({"name": "GOLD", "ior": {"n": 0.2, "k": 3}})", "twin.json");
   const std::vector<matc::api::Material> clash = {materials[0], twin[0]};
   EXPECT_THROW(matc::api::report(clash), matc::api::MaterialError);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(PublicLayout, TheFilesACompileWritesNamedBeforeItRuns) {
+  const std::vector<std::string> names = {"gold"};
+  matc::api::LayoutOptions options;
+  options.emit = {"glsl", "json"};
+  EXPECT_EQ(matc::api::output_file_names(names, options),
+            (std::vector<std::string>{"matc_fresnel.glsl", "gold.glsl", "gold.json",
+                                      "matc_manifest.json"}));
+  options.no_shared = true;
+  EXPECT_EQ(matc::api::output_file_names(names, options),
+            (std::vector<std::string>{"gold.glsl", "gold.json"}));
+  const std::vector<std::string> bad = {"no/slash"};
+  EXPECT_THROW(matc::api::output_file_names(bad), std::invalid_argument);
+  EXPECT_NE(matc::api::output_layout_source("cmake").find("Generated"), std::string::npos);
+  EXPECT_THROW(matc::api::output_layout_source("make"), std::invalid_argument);
+}
+
+TEST(PublicBasis, DescribedAsTheRuntimeHoldsIt) {
+  const matc::api::BasisDescription powers = matc::api::describe_basis();
+  EXPECT_EQ(powers.name, "powers");
+  EXPECT_TRUE(powers.closed_form);
+  ASSERT_EQ(powers.mu.size(), powers.b.size());
+  EXPECT_EQ(powers.b.front()[0], 1.0);  // b_0 = 1
+  const matc::api::BasisDescription extended = matc::api::describe_basis("extended");
+  EXPECT_FALSE(extended.closed_form);
+  EXPECT_GT(extended.polynomial_error_between_samples[0], 0.0);
+  EXPECT_THROW(matc::api::describe_basis("schlick"), std::invalid_argument);
+}
+
+TEST(PublicLutFiles, TheFileAndItsDescription) {
+  const std::vector<matc::api::OutputFile> files =
+      matc::api::lut_files({"", 8, 16, "f16"}, "dds", "table.dds");
+  ASSERT_EQ(files.size(), 2u);
+  EXPECT_EQ(files[0].name, "table.dds");
+  EXPECT_EQ(files[1].name, "table.dds.json");
+  EXPECT_EQ(matc::api::lut_format_of_extension(".h"), "header");
+  EXPECT_FALSE(matc::api::lut_format_of_extension(".png").has_value());
+  EXPECT_THROW(matc::api::lut_files({"", 8, 16, "f16"}, "png", "t.png"), std::invalid_argument);
+}
+
+TEST(PublicImport, MaterialXMetalsBecomeMaterialFiles) {
+  const fs::path folder = fs::temp_directory_path() / "matc_public_import_test";
+  fs::remove_all(folder);
+  const std::vector<matc::api::BatchSource> documents = {matc::api::BatchSource::file(
+      std::string(MATC_EXAMPLES_DIR) + "/../materialx/standard_surface_copper.mtlx")};
+  const matc::api::BatchResult result =
+      matc::api::import_batch(documents, {folder.string(), false});
+  EXPECT_EQ(result.failed, 0u);
+  EXPECT_EQ(result.compiled, 1u);
+  const fs::path written = folder / "standard_surface_copper.json";
+  EXPECT_EQ(matc::api::load_materials(written.string()).at(0).name(), "standard_surface_copper");
+  EXPECT_THROW(matc::api::import_batch(documents, {"", false}), std::invalid_argument);
+  fs::remove_all(folder);
 }
 
 }  // namespace

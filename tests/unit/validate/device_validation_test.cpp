@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "matc/api/validation.h"
 #include "matc/compile/compile.h"
+#include "matc/matc.h"
 #include "matc/material/parse.h"
 #include "matc/validate/device_validator.h"
 
@@ -193,3 +195,34 @@ TEST(DeviceValidation, SharedFileChecksFollowTheOutputs) {
   options.emit = {matc::OutputKind::glsl};
   EXPECT_TRUE(subjects(matc::Build(options)).empty());
 }
+
+namespace {
+
+// The public face (matc/api/validation.h) gives the same checks, their results as plain values.
+TEST(PublicDeviceValidation, TheLibrarysChecksAsPublicResults) {
+  matc::api::BuildOptions options;
+  options.lut_size = 32;
+  options.lut_samples = 256;
+  const matc::api::Build build(options);
+  const matc::api::DeviceValidation validation(build, {true, ""});
+  const matc::api::Material material =
+      matc::api::load_materials(MATC_EXAMPLES_DIR "/figure2_edge_tint.json").at(0);
+  const matc::api::CheckResult result = validation.check(build.compile(material));
+  EXPECT_EQ(result.subject, "figure2_edge_tint");
+  ASSERT_EQ(result.front_ends.size(), 2u);
+  EXPECT_EQ(result.front_ends[0].language, "GLSL");
+  EXPECT_EQ(result.front_ends[1].language, "HLSL");
+  for (const matc::api::FrontEndResult& front_end : result.front_ends) {
+    ASSERT_FALSE(front_end.quantities.empty());
+    EXPECT_EQ(front_end.quantities[0].label, "F");
+    EXPECT_LE(front_end.quantities[0].max_abs, validation.fresnel_tolerance());
+  }
+  EXPECT_TRUE(result.passed());
+  EXPECT_TRUE(result.layer_messages.empty());
+  EXPECT_FALSE(validation.check_shared_files().empty());
+  // A material compiled with other options than the build's is refused.
+  EXPECT_THROW(validation.check(matc::api::compile(material, {"paper", "", ""})),
+               std::invalid_argument);
+}
+
+}  // namespace
