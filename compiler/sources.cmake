@@ -73,12 +73,14 @@ set(MATC_CORE_SOURCES
 set(MATC_NATIVE_SOURCES
   src/material/xml_tree_pugixml.cpp
   src/api/batch.cpp
+  src/api/batch_events.cpp
   src/api/build.cpp
   src/api/tables.cpp
   src/api/fbar_reference.cpp
   src/api/files.cpp
   src/api/report.cpp
   src/api/basis.cpp
+  src/api/bake.cpp
   src/api/evaluation.cpp
   src/api/coated_evaluation.cpp
   src/basis/training_set.cpp

@@ -1,7 +1,7 @@
 #include "emit_option.h"
 
-#include "channel_list.h"
 #include "matc/api/options.h"
+#include "split_list.h"
 
 namespace matc::cli {
 

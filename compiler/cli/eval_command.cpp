@@ -8,7 +8,6 @@
 
 #include <fmt/core.h>
 
-#include "channel_list.h"
 #include "commands.h"
 #include "matc/api/evaluation.h"
 #include "matc/api/options.h"
@@ -70,16 +69,16 @@ int run_eval_artistic(EvalOptions& options) {
     fmt::print(stderr, "matc eval: error: --reflectivity and --edge-tint go together: give both\n");
     return kExitUsageError;
   }
-  const ChannelList reflectivity_list = parse_channel_list("--reflectivity", options.reflectivity);
-  const ChannelList edge_tint_list = parse_channel_list("--edge-tint", options.edge_tint);
-  for (const ChannelList* list : {&reflectivity_list, &edge_tint_list}) {
-    if (list->values) continue;
-    fmt::print(stderr, "matc eval: error: {}\n", list->error);
+  api::Rgb reflectivity{}, edge_tint{};
+  try {
+    reflectivity = api::parse_channel_values("--reflectivity", options.reflectivity);
+    edge_tint = api::parse_channel_values("--edge-tint", options.edge_tint);
+  } catch (const std::invalid_argument& error) {
+    fmt::print(stderr, "matc eval: error: {}\n", error.what());
     return kExitInputError;
   }
   if (!read_quad_light(options)) return kExitInputError;
-  fmt::print("{}", api::evaluate_artistic(*reflectivity_list.values, *edge_tint_list.values,
-                                          options.evaluation));
+  fmt::print("{}", api::evaluate_artistic(reflectivity, edge_tint, options.evaluation));
   return kExitSuccess;
 }
 

@@ -11,24 +11,13 @@ namespace {
 // Chosen once from the command line, before any work starts.
 std::atomic<DiagnosticsFormat> chosen_format{DiagnosticsFormat::text};
 
-std::string as_json_line(const Diagnostic& diagnostic) {
-  const nlohmann::ordered_json object = {{"file", diagnostic.location.path},
-                                         {"line", diagnostic.location.line},
-                                         {"column", diagnostic.location.column},
-                                         {"severity", severity_name(diagnostic.severity)},
-                                         {"field", diagnostic.field},
-                                         {"message", diagnostic.message},
-                                         {"allowed", diagnostic.allowed}};
-  // Bytes that are not UTF-8 (from a bad input's name, say) become U+FFFD instead of throwing.
-  return object.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
-}
-
 std::string as_json_line(const api::Diagnostic& diagnostic) {
   const nlohmann::ordered_json object = {
       {"file", diagnostic.path},      {"line", diagnostic.line},
       {"column", diagnostic.column},  {"severity", diagnostic.severity},
       {"field", diagnostic.field},    {"message", diagnostic.message},
       {"allowed", diagnostic.allowed}};
+  // Bytes that are not UTF-8 (from a bad input's name, say) become U+FFFD instead of throwing.
   return object.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
@@ -41,16 +30,6 @@ void set_diagnostics_format(DiagnosticsFormat format) {
 DiagnosticsFormat diagnostics_format() {
   return chosen_format;
 }
-
-void print_diagnostics(const Diagnostics& diagnostics) {
-  const bool json = chosen_format == DiagnosticsFormat::json;
-  for (const Diagnostic& diagnostic : diagnostics.items())
-    fmt::print(stderr, "{}\n", json ? as_json_line(diagnostic) : format_diagnostic(diagnostic));
-}
-
-}  // namespace matc::cli
-
-namespace matc::cli {
 
 void print_diagnostics(const std::vector<api::Diagnostic>& diagnostics, std::size_t from) {
   const bool json = chosen_format == DiagnosticsFormat::json;

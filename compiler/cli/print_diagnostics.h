@@ -4,7 +4,6 @@
 #include <vector>
 
 #include "matc/api/diagnostics.h"
-#include "matc/base/diagnostics.h"
 
 namespace matc::cli {
 
@@ -14,9 +13,8 @@ enum class DiagnosticsFormat { text, json };
 void set_diagnostics_format(DiagnosticsFormat format);
 DiagnosticsFormat diagnostics_format();
 
-// Writes each diagnostic on its own line to standard error, in the format set above.
-void print_diagnostics(const Diagnostics& diagnostics);
-// The same for the public API's diagnostics, from the one at `from` on.
+// Writes each diagnostic, from the one at `from` on, on its own line to standard error, in the
+// format set above.
 void print_diagnostics(const std::vector<api::Diagnostic>& diagnostics, std::size_t from = 0);
 
 }  // namespace matc::cli

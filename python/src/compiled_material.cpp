@@ -1,7 +1,6 @@
 // matc.CompiledMaterial: a material's coefficients with what they were fitted to, evaluated over
 // numpy arrays exactly as the CPU runtime (and so the shaders) computes them.
 #include <algorithm>
-#include <cmath>
 #include <string>
 
 #include <fmt/core.h>

@@ -3,7 +3,7 @@
 # (matc/matc.h, matc/api/*; the runtime's headers and matc/version.h are public too) and nothing
 # else of the library (docs/architecture.md). The
 # WebAssembly face and the Python module are held to that; the CLI still reaches into modules for
-# `matc bake` and the maintainers' `matc basis` regeneration subcommands, and
+# the maintainers' `matc basis` regeneration subcommands, and
 # tests/data/face_reach/cli.txt lists what it may still include: a new reach fails, and so does an
 # entry no longer used (the list only shrinks as the CLI moves to the public API).
 #   check_faces.sh REPO_ROOT

@@ -3,6 +3,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "batch_events.h"
 #include "checked_options.h"
 #include "compiled_evaluation.h"
 #include "matc/base/echoed_text.h"
@@ -13,29 +14,6 @@
 #include "public_diagnostics.h"
 
 namespace matc::api {
-namespace {
-
-matc::BatchEvents library_events(const BatchEvents& events) {
-  matc::BatchEvents out;
-  if (events.diagnostics) {
-    out.diagnostics = [&events](const Diagnostics& diagnostics) {
-      events.diagnostics(public_diagnostics(diagnostics));
-    };
-  }
-  if (events.progress) {
-    out.progress = [&events](const matc::BatchProgress& progress) {
-      events.progress({progress.done, progress.total, std::string(progress.name)});
-    };
-  }
-  if (events.error) {
-    out.error = [&events](const std::string& where, const std::string& message) {
-      events.error(printable(where), printable(message));
-    };
-  }
-  return out;
-}
-
-}  // namespace
 
 BatchResult compile_batch(std::span<const BatchSource> sources, const BatchOptions& options,
                           const BatchEvents& events, std::stop_token cancel) {

@@ -21,6 +21,8 @@
 
 namespace matc::evaluation {
 
+using runtime::Vec3;
+
 struct EvaluationInputs {
   std::vector<double> mu;
   std::vector<double> ndotv;

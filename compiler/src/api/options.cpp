@@ -1,6 +1,13 @@
 #include "matc/api/options.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "matc/base/echoed_text.h"
+#include "matc/base/number_text.h"
 
 #include "matc/options/option_names.h"
 
@@ -34,6 +41,32 @@ std::string option_default(std::string_view option) {
 bool takes_option_name(std::string_view option, std::string_view name) {
   return with_option_kind(
       option, [name](auto kind) { return option_value<decltype(kind)>(name).has_value(); });
+}
+
+Rgb parse_channel_values(std::string_view label, std::string_view text, double max) {
+  const auto fail = [&](const std::string& problem) {
+    return std::invalid_argument(fmt::format(
+        "{}: {}; give one value (grey) or three (R,G,B), each in [0, {}], comma-separated", label,
+        problem, max));
+  };
+  std::vector<std::string_view> items;
+  for (std::size_t start = 0; start <= text.size();) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    items.push_back(text.substr(start, comma - start));
+    start = comma + 1;
+  }
+  if (items.size() != 1 && items.size() != 3)
+    throw fail(fmt::format("{} values given", items.size()));
+  Rgb values{};
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::optional<double> value = parse_number(items[i]);
+    if (!value) throw fail(fmt::format("'{}' is not a number", echoed(items[i])));
+    if (!std::isfinite(*value) || *value < 0.0 || *value > max)
+      throw fail(fmt::format("{} is outside [0, {}]", echoed(items[i]), max));
+    values[i] = *value;
+  }
+  if (items.size() == 1) values = {values[0], values[0], values[0]};
+  return values;
 }
 
 }  // namespace matc::api

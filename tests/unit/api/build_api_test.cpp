@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "matc/api/bake.h"
 #include "matc/api/basis.h"
 #include "matc/api/batch.h"
 #include "matc/api/build.h"
@@ -415,6 +416,62 @@ TEST(PublicImport, MaterialXMetalsBecomeMaterialFiles) {
   EXPECT_EQ(matc::api::load_materials(written.string()).at(0).name(), "standard_surface_copper");
   EXPECT_THROW(matc::api::import_batch(documents, {"", false}), std::invalid_argument);
   fs::remove_all(folder);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(PublicBake, ConstantMapsBakedAndADescriptionsProblemsLocated) {
+  const fs::path folder = fs::temp_directory_path() / "matc_public_bake_test";
+  fs::remove_all(folder);
+  matc::api::BakeDescription described;
+  described.origin = "a tool";
+  described.reflectivity.value = "0.9,0.6,0.3";
+  described.edge_tint.value = "0.5";
+  described.name = "brass";
+  matc::api::BakeOptions options;
+  options.output_directory = folder.string();
+  const std::vector<matc::api::BakeSource> sources = {
+      matc::api::BakeSource::in_memory(described, "the tool's asset")};
+  const matc::api::BatchResult baked = matc::api::bake_batch(sources, options);
+  EXPECT_EQ(baked.compiled, 1u);
+  EXPECT_EQ(baked.failed, 0u);
+  EXPECT_GT(baked.written, 0u);
+  bool any_ktx2 = false;
+  for (const auto& entry : fs::directory_iterator(folder))
+    any_ktx2 = any_ktx2 || entry.path().extension() == ".ktx2";
+  EXPECT_TRUE(any_ktx2);
+
+  // A missing map: an error at the description's origin, naming the map by its label.
+  described.edge_tint = {"--edge-tint", ""};
+  std::vector<matc::api::Diagnostic> diagnostics;
+  matc::api::BatchEvents events;
+  events.diagnostics = [&](const std::vector<matc::api::Diagnostic>& items) {
+    diagnostics.insert(diagnostics.end(), items.begin(), items.end());
+  };
+  const std::vector<matc::api::BakeSource> broken = {
+      matc::api::BakeSource::in_memory(described, "the tool's asset")};
+  EXPECT_EQ(matc::api::bake_batch(broken, options, events).failed, 1u);
+  ASSERT_FALSE(diagnostics.empty());
+  EXPECT_EQ(diagnostics[0].path, "a tool");
+  EXPECT_NE(diagnostics[0].message.find("--edge-tint is missing"), std::string::npos)
+      << diagnostics[0].text;
+  options.format = "png";
+  EXPECT_THROW(matc::api::bake_batch(sources, options), std::invalid_argument);
+  fs::remove_all(folder);
+}
+
+TEST(PublicOptions, ChannelValuesAsTheCliTakesThem) {
+  EXPECT_EQ(matc::api::parse_channel_values("--r", "0.5"), (matc::api::Rgb{0.5, 0.5, 0.5}));
+  EXPECT_EQ(matc::api::parse_channel_values("--r", "0.9,0.6,0.3"), (matc::api::Rgb{0.9, 0.6, 0.3}));
+  for (const char* bad : {"", "0.5,0.5", "red", "1.5", "nan", "0.1,0.2,0.3,0.4"})
+    EXPECT_THROW(matc::api::parse_channel_values("--r", bad), std::invalid_argument) << bad;
+  try {
+    matc::api::parse_channel_values("--edge-tint", "\x1b[31m");
+  } catch (const std::invalid_argument& error) {
+    EXPECT_EQ(std::string(error.what()).find('\x1b'), std::string::npos);  // escaped, not raw
+  }
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 #include <string_view>
 #include <vector>
 
+#include "matc/api/material.h"
+
 namespace matc::api {
 
 // The names of "basis", "color_space", "gamut_mapping", "emit", "lut_format", "lut_precision"
@@ -17,5 +19,10 @@ std::vector<std::string> option_names(std::string_view option);
 std::string option_default(std::string_view option);
 // Whether the option takes `name` (a colour space also takes its aliases, such as lin_srgb).
 bool takes_option_name(std::string_view option, std::string_view name);
+
+// Per-channel values as the CLI's options take them ("0.9,0.6,0.3" or one grey "0.5"), each in
+// [0, max]. Throws std::invalid_argument: "LABEL: problem; give one value (grey) or three
+// (R,G,B), each in [0, MAX], comma-separated".
+Rgb parse_channel_values(std::string_view label, std::string_view text, double max = 1.0);
 
 }  // namespace matc::api
