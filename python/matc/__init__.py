@@ -22,7 +22,7 @@ import math as _math
 import os as _os
 
 try:
-    import numpy as _numpy  # noqa: F401  every array matc takes or returns is numpy's
+    import numpy as _numpy  # every array matc takes or returns is numpy's
 except ImportError as _missing:
     raise ImportError(
         f"matc needs numpy, which this Python cannot import ({_missing}). On Debian: "
@@ -53,7 +53,9 @@ from ._matc import (
     PreintegratedTable,
     __version__,
     coefficient_table,
+    describe_basis,
     fresnel_from_coefficients,
+    output_file_names,
     preintegrated_table,
 )
 from .errors import BatchError, MaterialError
@@ -73,8 +75,11 @@ __all__ = [
     "compile",
     "compile_batch",
     "compile_gltf",
+    "describe_basis",
+    "evaluate",
     "fresnel_from_coefficients",
     "load",
+    "output_file_names",
     "parse",
     "parse_materialx",
     "preintegrated_table",
@@ -293,6 +298,27 @@ def compile_gltf(asset, **options):
     data, materials = _matc._compile_gltf(_native_path(asset, "asset"), names["basis"],
                                           names["color_space"], names["gamut_mapping"])
     return GltfAsset(data, materials)
+
+
+def evaluate(material, mu=(), ndotv=(), roughness=(), *, reference=True, quad_light=None,
+             **options):
+    """What ``matc eval`` prints for ``material`` (anything :func:`compile` takes), as a dict:
+    ``F`` and ``F_exact`` at the cosines ``mu``; ``Fbar`` (from the table), ``Fbar_analytic`` and
+    ``Fbar_reference`` at the (``ndotv``, ``roughness``) pairs; a coated material's lobes; with
+    ``quad_light`` ("x,y,z;x,y,z;x,y,z;x,y,z" in the shading frame) its radiance by LTC beside the
+    exact integral. Options are ``matc eval``'s: ``light_samples``, ``lut_size``,
+    ``lut_samples``, ``lut_precision``, ``coefficient_table_precision``, ``basis``,
+    ``color_space``, ``gamut_mapping``. Raises ``ValueError`` for options out of range."""
+    return _matc._evaluate(_one_material(material), _float_list(mu, "mu"),
+                           _float_list(ndotv, "ndotv"), _float_list(roughness, "roughness"),
+                           reference, quad_light, **options)
+
+
+def _float_list(values, argument):
+    try:
+        return [float(v) for v in _numpy.atleast_1d(_numpy.asarray(values, dtype=float)).ravel()]
+    except (TypeError, ValueError) as error:
+        raise TypeError(f"{argument}: real numbers, not {values!r:.60}") from None
 
 
 def shader_sources(material, languages=("glsl", "hlsl", "wgsl"), **options):

@@ -13,6 +13,7 @@ void register_tables(pybind11::module_& module);             // tables.cpp
 void register_build(pybind11::module_& module);              // build.cpp
 void register_batch(pybind11::module_& module);              // batch.cpp
 void register_gltf(pybind11::module_& module);               // gltf.cpp
+void register_commands(pybind11::module_& module);           // commands.cpp
 
 // make() with the GIL released: the library's work (reading, compiling, baking, writing) lets
 // other Python threads run.

@@ -14,4 +14,5 @@ PYBIND11_MODULE(_matc, module) {
   matc::python::register_build(module);
   matc::python::register_batch(module);
   matc::python::register_gltf(module);
+  matc::python::register_commands(module);
 }
