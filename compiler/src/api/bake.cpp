@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "batch_events.h"
 #include "checked_options.h"
 #include "matc/api/options.h"
 #include "matc/material/parse.h"
@@ -135,14 +136,7 @@ BatchResult bake_batch(std::span<const BakeSource> sources, const BakeOptions& o
   }
   DirectoryOutput output(options.output_directory);
   const BakeBatchResult result = matc::bake_batch(inputs, output, batch, library_events(events));
-  BatchResult out;
-  out.compiled = result.counts.done;
-  out.written = result.counts.written;
-  out.unchanged = result.counts.unchanged;
-  out.failed = result.counts.failed;
-  out.not_attempted = result.counts.not_attempted;
-  out.cancelled = result.cancelled;
-  return out;
+  return public_result(result.counts, result.cancelled);
 }
 
 }  // namespace matc::api

@@ -14,6 +14,17 @@
 #include "public_diagnostics.h"
 
 namespace matc::api {
+namespace {
+
+std::vector<MaterialSource> material_sources(std::span<const BatchSource> sources) {
+  std::vector<MaterialSource> inputs;
+  inputs.reserve(sources.size());
+  for (const BatchSource& source : sources)
+    inputs.push_back({source.path, source.text});
+  return inputs;
+}
+
+}  // namespace
 
 BatchResult compile_batch(std::span<const BatchSource> sources, const BatchOptions& options,
                           const BatchEvents& events, std::stop_token cancel) {
@@ -42,10 +53,7 @@ BatchResult compile_batch(const Build& build, std::span<const BatchSource> sourc
   if (!options.in_memory && options.output_directory.empty())
     throw std::invalid_argument("output_directory: empty; the folder the files go to");
 
-  std::vector<MaterialSource> inputs;
-  inputs.reserve(sources.size());
-  for (const BatchSource& source : sources)
-    inputs.push_back({source.path, source.text});
+  const std::vector<MaterialSource> inputs = material_sources(sources);
   CompileBatchOptions batch;
   batch.jobs = options.jobs;
   batch.keep_going = options.keep_going;
@@ -69,13 +77,7 @@ BatchResult compile_batch(const Build& build, std::span<const BatchSource> sourc
                            : static_cast<OutputSink&>(directory.emplace(options.output_directory));
   const CompileBatchResult result =
       matc::compile_batch(build.value(), inputs, output, batch, library_events(events));
-  BatchResult out;
-  out.compiled = result.counts.done;
-  out.written = result.counts.written;
-  out.unchanged = result.counts.unchanged;
-  out.failed = result.counts.failed;
-  out.not_attempted = result.counts.not_attempted;
-  out.cancelled = result.cancelled;
+  BatchResult out = public_result(result.counts, result.cancelled);
   out.failed_checks = result.failed_checks;
   if (memory) out.files = memory->files();
   return out;
@@ -85,20 +87,10 @@ BatchResult import_batch(std::span<const BatchSource> documents, const ImportOpt
                          const BatchEvents& events) {
   if (options.output_directory.empty())
     throw std::invalid_argument("output_directory: empty; the folder the files go to");
-  std::vector<MaterialSource> inputs;
-  inputs.reserve(documents.size());
-  for (const BatchSource& source : documents)
-    inputs.push_back({source.path, source.text});
+  const std::vector<MaterialSource> inputs = material_sources(documents);
   DirectoryOutput output(options.output_directory);
-  const BatchCounts counts =
-      matc::import_batch(inputs, output, {options.keep_going}, library_events(events));
-  BatchResult out;
-  out.compiled = counts.done;
-  out.written = counts.written;
-  out.unchanged = counts.unchanged;
-  out.failed = counts.failed;
-  out.not_attempted = counts.not_attempted;
-  return out;
+  return public_result(
+      matc::import_batch(inputs, output, {options.keep_going}, library_events(events)));
 }
 
 }  // namespace matc::api

@@ -25,4 +25,15 @@ matc::BatchEvents library_events(const BatchEvents& events) {
   return out;
 }
 
+BatchResult public_result(const BatchCounts& counts, bool cancelled) {
+  BatchResult out;
+  out.compiled = counts.done;
+  out.written = counts.written;
+  out.unchanged = counts.unchanged;
+  out.failed = counts.failed;
+  out.not_attempted = counts.not_attempted;
+  out.cancelled = cancelled;
+  return out;
+}
+
 }  // namespace matc::api

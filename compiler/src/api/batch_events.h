@@ -1,5 +1,5 @@
-// A public batch's events as the library's batches report them: diagnostics made public, the
-// batch's own errors escaped (batch.cpp, bake.cpp).
+// Between a public batch and the library's (batch.cpp, bake.cpp): the events as the library's
+// batches report them (diagnostics made public, the batch's own errors escaped), and their counts.
 #pragma once
 
 #include "matc/api/batch.h"
@@ -9,5 +9,8 @@ namespace matc::api {
 
 // Refers to `events`, which must outlive the batch.
 matc::BatchEvents library_events(const BatchEvents& events);
+
+// A library batch's counts as the public result.
+BatchResult public_result(const BatchCounts& counts, bool cancelled = false);
 
 }  // namespace matc::api
