@@ -1,7 +1,6 @@
 // `matc bake`: reflectivity and edge-tint maps (or n and k maps) into coefficient textures with
 // mip chains computed in coefficient space (docs/baking.md).
 #include <chrono>
-#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,8 +41,6 @@ struct BakeCommandOptions {
   bool write_depfile = false;
 };
 
-namespace fs = std::filesystem;
-
 // The asset the map options describe, if any are given: the library checks it (at "matc bake",
 // each map by its option) where the batch reaches it.
 std::optional<api::BakeSource> command_line_asset(const BakeCommandOptions& options) {
@@ -64,7 +61,6 @@ std::optional<api::BakeSource> command_line_asset(const BakeCommandOptions& opti
 
 int run_bake(const BakeCommandOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const fs::path output_directory(options.output_directory);
   std::vector<api::BakeSource> sources;
   for (const std::string& file : options.files)
     sources.push_back(api::BakeSource::file(file));
@@ -86,11 +82,9 @@ int run_bake(const BakeCommandOptions& options) {
   batch.error_map = options.error_map;
   batch.jobs = options.jobs;
   batch.keep_going = options.keep_going;
-  batch.depfile =
-      depfile_path(options.depfile, options.write_depfile, output_directory, kBakeDepfileName)
-          .string();
-  for (const fs::path& dependency : matc_binary_dependency())
-    batch.extra_dependencies.push_back(dependency.string());
+  batch.depfile = depfile_path(options.depfile, options.write_depfile, options.output_directory,
+                               kBakeDepfileName);
+  batch.extra_dependencies = matc_binary_dependency();
 
   ProgressLine progress(!options.quiet && stderr_is_terminal());
   const api::BatchResult result = api::bake_batch(sources, batch, printed_events(progress));

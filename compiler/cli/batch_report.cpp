@@ -48,17 +48,17 @@ void add_depfile_options(CLI::App& command, std::string& depfile, bool& write_de
                    "The same, as DIR/" + default_name + " (also spelled -MD)");
 }
 
-std::vector<fs::path> matc_binary_dependency() {
+std::vector<std::string> matc_binary_dependency() {
   std::error_code error;
   const fs::path self = fs::read_symlink("/proc/self/exe", error);
   if (error) return {};
-  return {self};
+  return {self.string()};
 }
 
-fs::path depfile_path(const std::string& depfile_option, bool write_depfile,
-                      const fs::path& output_directory, const std::string& default_name) {
+std::string depfile_path(const std::string& depfile_option, bool write_depfile,
+                         const std::string& output_directory, const std::string& default_name) {
   if (!depfile_option.empty()) return depfile_option;
-  return write_depfile ? output_directory / default_name : fs::path();
+  return write_depfile ? (fs::path(output_directory) / default_name).string() : std::string();
 }
 
 }  // namespace matc::cli

@@ -35,11 +35,10 @@ void add_depfile_options(CLI::App& command, std::string& depfile, bool& write_de
 
 // What a depfile lists after a batch's own inputs: the matc binary (its templates, presets and
 // version are part of every output), when it can be found.
-std::vector<std::filesystem::path> matc_binary_dependency();
+std::vector<std::string> matc_binary_dependency();
 
 // --depfile FILE, or -MD's DIR/`default_name`, or none (empty).
-std::filesystem::path depfile_path(const std::string& depfile_option, bool write_depfile,
-                                   const std::filesystem::path& output_directory,
-                                   const std::string& default_name);
+std::string depfile_path(const std::string& depfile_option, bool write_depfile,
+                         const std::string& output_directory, const std::string& default_name);
 
 }  // namespace matc::cli

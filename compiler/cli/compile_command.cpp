@@ -1,4 +1,3 @@
-#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -45,8 +44,6 @@ struct CompileOptions {
 
 inline constexpr const char* kDepfileName = "matc.d";
 
-namespace fs = std::filesystem;
-
 api::BuildOptions build_options(const CompileOptions& options) {
   api::BuildOptions build =
       table_build_options(options.lut, options.embed_lut, options.embed_lut_size);
@@ -80,12 +77,10 @@ int run_compile(const CompileOptions& options) {
   batch.keep_going = options.keep_going;
   batch.no_shared = options.no_shared;
   batch.shared_only = options.shared_only;
-  const fs::path output_directory(options.output_directory);
   batch.output_directory = options.output_directory;
   batch.depfile =
-      depfile_path(options.depfile, options.write_depfile, output_directory, kDepfileName).string();
-  for (const fs::path& dependency : matc_binary_dependency())
-    batch.extra_dependencies.push_back(dependency.string());
+      depfile_path(options.depfile, options.write_depfile, options.output_directory, kDepfileName);
+  batch.extra_dependencies = matc_binary_dependency();
 
   std::vector<api::BatchSource> sources;
   sources.reserve(options.files.size());

@@ -12,7 +12,6 @@
 #include "matc/material/parse.h"
 #include "matc/optics/spectrum.h"
 #include "matc/pipeline/bake_batch.h"
-#include "public_diagnostics.h"
 
 namespace matc::api {
 namespace {

@@ -78,12 +78,12 @@ const std::string& Build::library_source(std::string_view language) const {
 std::string Build::material_source(std::string_view language,
                                    const CompiledMaterial& compiled) const {
   const ShaderLanguage chosen = language_of(language);
-  check_same_options(compiled, options_.compile.basis, color_key_of(build_->options().color));
+  check_same_options(compiled, build_->options());
   return build_->material_source(chosen, compiled.value());
 }
 
 std::vector<OutputFile> Build::material_files(const CompiledMaterial& compiled) const {
-  check_same_options(compiled, options_.compile.basis, color_key_of(build_->options().color));
+  check_same_options(compiled, build_->options());
   return public_files(build_->material_outputs(compiled.value()).files);
 }
 

@@ -13,6 +13,7 @@
 #include "matc/api/compiled_material.h"
 #include "matc/base/echoed_text.h"
 #include "matc/compile/compile.h"
+#include "matc/emit/build_options.h"
 #include "matc/options/option_names.h"
 #include "matc/runtime/basis.h"
 #include "matc/spirv/shader_language.h"
@@ -62,6 +63,12 @@ inline void check_same_options(const CompiledMaterial& compiled, const std::stri
         "and colour {}: compile it with the outputs' options (a Build's compile())",
         echoed(compiled.name()), compiled.basis(), compiled_color, basis, color_key));
   }
+}
+
+// The same against a build's options.
+inline void check_same_options(const CompiledMaterial& compiled, const matc::BuildOptions& build) {
+  check_same_options(compiled, std::string(runtime::basis_name(build.basis)),
+                     color_key_of(build.color));
 }
 
 }  // namespace matc::api

@@ -292,28 +292,36 @@ const CompiledMaterial::Evaluation::Curves& CompiledMaterial::Evaluation::curves
   return curves_;
 }
 
-CompiledMaterial public_compiled(std::shared_ptr<const matc::CompiledMaterial> compiled,
-                                 runtime::BasisKind basis, std::vector<Diagnostic> diagnostics) {
-  // The material the compiled value holds, shared with it.
-  std::shared_ptr<const matc::Material> material(compiled, &compiled->material);
+namespace {
+
+// The evaluations of `compiled` (compiled with `basis`): its exact curves made from the material
+// the compiled value holds, shared with it.
+std::shared_ptr<const CompiledMaterial::Evaluation> evaluation_of(
+    const std::shared_ptr<const matc::CompiledMaterial>& compiled, runtime::BasisKind basis) {
   auto evaluation = std::make_shared<CompiledMaterial::Evaluation>();
   evaluation->basis = basis;
   evaluation->color = compiled->color;
-  evaluation->material = material;
-  return CompiledMaterial(Material(std::move(material), {}), std::move(compiled),
-                          std::move(evaluation), std::move(diagnostics));
+  evaluation->material = std::shared_ptr<const matc::Material>(compiled, &compiled->material);
+  return evaluation;
+}
+
+}  // namespace
+
+CompiledMaterial public_compiled(std::shared_ptr<const matc::CompiledMaterial> compiled,
+                                 runtime::BasisKind basis, std::vector<Diagnostic> diagnostics) {
+  auto evaluation = evaluation_of(compiled, basis);
+  Material material(evaluation->material, {});
+  return CompiledMaterial(std::move(material), std::move(compiled), std::move(evaluation),
+                          std::move(diagnostics));
 }
 
 CompiledMaterial compile(const Material& material, const CompileOptions& options) {
   const runtime::BasisKind basis = basis_of(options);
   const ColorOptions color = color_options_of(options);
   const matc::Material& value = material.value();
-  auto compiled = std::make_shared<matc::CompiledMaterial>(
+  auto compiled = std::make_shared<const matc::CompiledMaterial>(
       compile_material(value, runtime::shipped_basis(basis), color));
-  auto evaluation = std::make_shared<CompiledMaterial::Evaluation>();
-  evaluation->basis = basis;
-  evaluation->color = color;
-  evaluation->material = std::shared_ptr<const matc::Material>(compiled, &compiled->material);
+  auto evaluation = evaluation_of(compiled, basis);
   Diagnostics diagnostics;
   warn_if_poor_fit(*compiled, diagnostics);
   note_if_out_of_unit_range(*compiled, diagnostics);

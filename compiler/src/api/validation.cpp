@@ -76,8 +76,7 @@ double DeviceValidation::embedded_tolerance() const {
 }
 
 CheckResult DeviceValidation::check(const CompiledMaterial& compiled) const {
-  check_same_options(compiled, build_.options().compile.basis,
-                     color_key_of(build_.value().options().color));
+  check_same_options(compiled, build_.value().options());
   return run_check(*validator_,
                    *material_check(build_.value(), compiled.value(), validator_->tolerance()));
 }
