@@ -67,6 +67,7 @@ set(MATC_CORE_SOURCES
   src/api/layout.cpp
   src/api/material.cpp
   src/api/compiled_material.cpp
+  src/api/gulbrandsen.cpp
   src/api/text_outputs.cpp
   src/api/gltf.cpp
 )
@@ -80,6 +81,8 @@ set(MATC_NATIVE_SOURCES
   src/api/files.cpp
   src/api/report.cpp
   src/api/basis.cpp
+  src/api/regeneration.cpp
+  src/api/spirv.cpp
   src/api/bake.cpp
   src/api/evaluation.cpp
   src/api/coated_evaluation.cpp

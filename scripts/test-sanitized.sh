@@ -49,7 +49,7 @@ build-fuzz/tests/fuzz/matc_gltf_fuzzer -max_total_time=10 -max_len=4096 \
 api_corpus=$(mktemp -d)
 trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus" "$gltf_corpus" "$api_corpus"' EXIT
 for seed in tests/fuzz/corpus/*; do
-  for options in 000 005; do
+  for options in 000 005 200; do  # \200: the numbers and SPIR-V calls too
     { printf "\\$options"; cat "$seed"; } >"$api_corpus/$(basename "$seed").$options"
   done
 done

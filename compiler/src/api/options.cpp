@@ -23,8 +23,10 @@ auto with_option_kind(std::string_view option, const Visit& visit) {
   if (option == "emit") return visit(OutputKind::glsl);
   if (option == "lut_format") return visit(LutFormat::ktx2);
   if (option == "lut_precision") return visit(LutPrecision::f32);
+  if (option == "ltc_objective") return visit(LtcObjective::polygons);
   throw std::invalid_argument(
-      "option: not one of basis, color_space, gamut_mapping, emit, lut_format, lut_precision");
+      "option: not one of basis, color_space, gamut_mapping, emit, lut_format, lut_precision, "
+      "ltc_objective");
 }
 
 }  // namespace

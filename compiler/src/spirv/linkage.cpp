@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <spirv-tools/linker.hpp>
 
+#include "matc/base/echoed_text.h"
 #include "spirv_instructions.h"
 
 namespace matc {
@@ -57,7 +58,7 @@ std::vector<std::uint32_t> ids_of(const EditableModule& module,
   for (const std::string& function : functions) {
     const auto found = ids.find(function);
     if (found == ids.end())
-      throw std::logic_error(fmt::format("SPIR-V module has no function '{}'", function));
+      throw std::logic_error(fmt::format("SPIR-V module has no function '{}'", echoed(function)));
     out.push_back(found->second);
   }
   return out;

@@ -32,14 +32,17 @@ class MessageCollector {
 
 }  // namespace
 
-void validate_spirv(const SpirvWords& words, SpirvTarget target, std::string_view name) {
+std::optional<std::string> spirv_validation_errors(const SpirvWords& words, SpirvTarget target) {
   spvtools::SpirvTools tools(environment(target));
   MessageCollector messages;
   tools.SetMessageConsumer(messages.consumer());
-  if (!tools.Validate(words)) {
-    throw std::runtime_error(
-        fmt::format("{}: invalid SPIR-V (a bug in matc):\n{}", name, messages.text()));
-  }
+  if (tools.Validate(words)) return std::nullopt;
+  return messages.text();
+}
+
+void validate_spirv(const SpirvWords& words, SpirvTarget target, std::string_view name) {
+  if (const auto errors = spirv_validation_errors(words, target))
+    throw std::runtime_error(fmt::format("{}: invalid SPIR-V (a bug in matc):\n{}", name, *errors));
 }
 
 SpirvWords optimize_spirv(const SpirvWords& words, SpirvTarget target, std::string_view name) {

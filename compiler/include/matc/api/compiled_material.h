@@ -51,6 +51,11 @@ struct ComplexIor {
 struct ArtisticParameters {
   Rgb reflectivity{}, edge_tint{};
 };
+// Gulbrandsen's mapping per channel, both ways. ior_from_artistic takes a reflectivity in [0, 1)
+// and an edge tint in [0, 1]; artistic_from_ior an n > 0 and a k >= 0, finite. Other values throw
+// std::invalid_argument naming the field and the channel.
+ComplexIor ior_from_artistic(const ArtisticParameters& artistic);
+ArtisticParameters artistic_from_ior(const ComplexIor& ior);
 
 // A `coat` block compiled (docs/coating.md).
 struct Coat {

@@ -11,11 +11,12 @@
 namespace matc::api {
 
 // The names of "basis", "color_space", "gamut_mapping", "emit", "lut_format", "lut_precision"
-// (also coefficient_table_precision's), in the order help and errors list them. Another option
+// (also coefficient_table_precision's), "ltc_objective" (api/regeneration.h), in the order help
+// and errors list them. Another option
 // throws std::invalid_argument naming the options there are.
 std::vector<std::string> option_names(std::string_view option);
-// The name of the option's default ("powers", "lin_rec709", "none", "ktx2", "f32"; "emit": empty,
-// every output).
+// The name of the option's default ("powers", "lin_rec709", "none", "ktx2", "f32", "polygons";
+// "emit": empty, every output).
 std::string option_default(std::string_view option);
 // Whether the option takes `name` (a colour space also takes its aliases, such as lin_srgb).
 bool takes_option_name(std::string_view option, std::string_view name);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 #include "matc/spirv/shader_compiler.h"
@@ -13,6 +14,8 @@ enum class SpirvTarget {
   universal_1_3,  // a library module: the Linkage capability is not allowed under Vulkan rules
 };
 
+// The validator's messages when `words` is not valid for `target`, or nothing.
+std::optional<std::string> spirv_validation_errors(const SpirvWords& words, SpirvTarget target);
 // Throws std::runtime_error with the validator's messages when `words` is not valid for `target`.
 void validate_spirv(const SpirvWords& words, SpirvTarget target, std::string_view name);
 
