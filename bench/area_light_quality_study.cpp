@@ -22,15 +22,15 @@
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
 
-#include "matc/compile/compile.h"
-#include "matc/emit/build.h"
-#include "matc/ltc/area_light_reference.h"
-#include "matc/ltc/lobe_polygons.h"
-#include "matc/lut/comparison_lobes.h"
-#include "matc/lut/split_sum_reference.h"
-#include "matc/material/parse.h"
+#include "compile/compile.h"
+#include "emit/build.h"
+#include "ltc/area_light_reference.h"
+#include "ltc/lobe_polygons.h"
+#include "lut/comparison_lobes.h"
+#include "lut/split_sum_reference.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/ltc_following.h"
+#include "material/parse.h"
 
 namespace {
 

@@ -23,16 +23,16 @@
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
 
-#include "matc/compile/compile.h"
-#include "matc/emit/build.h"
-#include "matc/ltc/area_light_reference.h"
-#include "matc/ltc/lobe_polygons.h"
-#include "matc/ltc/ltc_fit.h"
-#include "matc/ltc/polygon_light.h"
-#include "matc/lut/comparison_lobes.h"
-#include "matc/lut/split_sum_reference.h"
-#include "matc/material/parse.h"
+#include "compile/compile.h"
+#include "emit/build.h"
+#include "ltc/area_light_reference.h"
+#include "ltc/lobe_polygons.h"
+#include "ltc/ltc_fit.h"
+#include "ltc/polygon_light.h"
+#include "lut/comparison_lobes.h"
+#include "lut/split_sum_reference.h"
 #include "matc/runtime/ltc.h"
+#include "material/parse.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "matc/compile/compile.h"
+#include "compile/compile.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/shader_basis.h"
 

@@ -14,14 +14,14 @@
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
 
-#include "matc/compile/compile.h"
-#include "matc/emit/build.h"
-#include "matc/emit/fullscreen_shaders.h"
-#include "matc/lut/comparison_lobes.h"
-#include "matc/material/parse.h"
+#include "compile/compile.h"
+#include "emit/build.h"
+#include "emit/fullscreen_shaders.h"
+#include "lut/comparison_lobes.h"
 #include "matc/runtime/ltc.h"
 #include "matc/vulkan/fullscreen_pass.h"
 #include "matc/vulkan/sampler.h"
+#include "material/parse.h"
 
 namespace {
 

@@ -23,11 +23,11 @@
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
 
-#include "matc/compile/compile.h"
-#include "matc/emit/build.h"
-#include "matc/emit/fullscreen_shaders.h"
-#include "matc/material/parse.h"
+#include "compile/compile.h"
+#include "emit/build.h"
+#include "emit/fullscreen_shaders.h"
 #include "matc/vulkan/pipeline_statistics.h"
+#include "material/parse.h"
 
 namespace {
 

@@ -3,7 +3,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "matc/lut/preintegrate.h"
+#include "lut/preintegrate.h"
 
 namespace {
 

@@ -10,13 +10,13 @@
 
 #include <fmt/core.h>
 
-#include "matc/compile/compile.h"
-#include "matc/emit/build.h"
-#include "matc/lut/analytic_lut_fit.h"
-#include "matc/lut/comparison_lobes.h"
-#include "matc/material/parse.h"
+#include "compile/compile.h"
+#include "emit/build.h"
+#include "lut/analytic_lut_fit.h"
+#include "lut/comparison_lobes.h"
 #include "matc/runtime/lut.h"
-#include "matc/spirv/spirv_tools.h"
+#include "material/parse.h"
+#include "spirv/spirv_tools.h"
 
 namespace {
 

@@ -13,15 +13,15 @@
 #include <fmt/core.h>
 
 #include "error_totals.h"
-#include "matc/fit/accuracy.h"
-#include "matc/fit/coefficients.h"
-#include "matc/lut/comparison_lobes.h"
-#include "matc/lut/preintegrate.h"
-#include "matc/lut/split_sum_reference.h"
-#include "matc/optics/gamut.h"
-#include "matc/optics/gulbrandsen.h"
-#include "matc/optics/presets.h"
-#include "matc/optics/spectral.h"
+#include "fit/accuracy.h"
+#include "fit/coefficients.h"
+#include "lut/comparison_lobes.h"
+#include "lut/preintegrate.h"
+#include "lut/split_sum_reference.h"
+#include "optics/gamut.h"
+#include "optics/gulbrandsen.h"
+#include "optics/presets.h"
+#include "optics/spectral.h"
 #include "random_artistic.h"
 
 namespace {

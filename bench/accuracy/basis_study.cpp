@@ -19,14 +19,14 @@
 
 #include <fmt/core.h>
 
-#include "matc/basis/basis_fit.h"
-#include "matc/basis/training_set.h"
-#include "matc/fit/accuracy.h"
-#include "matc/fit/coefficients.h"
-#include "matc/optics/gulbrandsen.h"
-#include "matc/optics/presets.h"
-#include "matc/optics/spectral.h"
-#include "matc/optics/spectrum.h"
+#include "basis/basis_fit.h"
+#include "basis/training_set.h"
+#include "fit/accuracy.h"
+#include "fit/coefficients.h"
+#include "optics/gulbrandsen.h"
+#include "optics/presets.h"
+#include "optics/spectral.h"
+#include "optics/spectrum.h"
 #include "study_score.h"
 #include "test_sets.h"
 

@@ -13,10 +13,10 @@
 
 #include <fmt/core.h>
 
-#include "matc/basis/basis_fit.h"
-#include "matc/basis/basis_polynomial_fit.h"
-#include "matc/fit/accuracy.h"
-#include "matc/fit/coefficients.h"
+#include "basis/basis_fit.h"
+#include "basis/basis_polynomial_fit.h"
+#include "fit/accuracy.h"
+#include "fit/coefficients.h"
 #include "study_score.h"
 #include "test_sets.h"
 

@@ -15,18 +15,18 @@
 
 #include <fmt/core.h>
 
+#include "compile/compile.h"
 #include "error_totals.h"
-#include "matc/compile/compile.h"
-#include "matc/fit/coefficients.h"
-#include "matc/lut/layered_reference.h"
-#include "matc/lut/preintegrate.h"
-#include "matc/lut/split_sum_reference.h"
-#include "matc/material/material_input.h"
-#include "matc/optics/coat.h"
-#include "matc/optics/gulbrandsen.h"
-#include "matc/optics/presets.h"
+#include "fit/coefficients.h"
+#include "lut/layered_reference.h"
+#include "lut/preintegrate.h"
+#include "lut/split_sum_reference.h"
 #include "matc/runtime/coat.h"
 #include "matc/runtime/shipped_bases.h"
+#include "material/material_input.h"
+#include "optics/coat.h"
+#include "optics/gulbrandsen.h"
+#include "optics/presets.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "matc/fit/accuracy.h"
+#include "fit/accuracy.h"
 
 namespace matc::bench {
 

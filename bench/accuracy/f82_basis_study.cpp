@@ -12,13 +12,13 @@
 
 #include <fmt/core.h>
 
+#include "basis/basis_fit.h"
 #include "error_totals.h"
-#include "matc/basis/basis_fit.h"
-#include "matc/fit/accuracy.h"
-#include "matc/fit/coefficients.h"
-#include "matc/optics/presets.h"
-#include "matc/optics/reflectance_curve.h"
-#include "matc/optics/spectral.h"
+#include "fit/accuracy.h"
+#include "fit/coefficients.h"
+#include "optics/presets.h"
+#include "optics/reflectance_curve.h"
+#include "optics/spectral.h"
 
 namespace {
 

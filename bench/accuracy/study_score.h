@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "matc/basis/basis_fit.h"
-#include "matc/fit/accuracy.h"
+#include "basis/basis_fit.h"
+#include "fit/accuracy.h"
 #include "test_sets.h"
 
 namespace matc::bench {

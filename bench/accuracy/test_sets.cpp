@@ -8,9 +8,9 @@
 
 #include <fmt/core.h>
 
-#include "matc/optics/presets.h"
-#include "matc/optics/spectral.h"
-#include "matc/optics/spectrum.h"
+#include "optics/presets.h"
+#include "optics/spectral.h"
+#include "optics/spectrum.h"
 #include "random_artistic.h"
 
 namespace matc::bench {

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "matc/fit/accuracy.h"
-#include "matc/optics/gulbrandsen.h"
-#include "matc/optics/reflectance_curve.h"
+#include "fit/accuracy.h"
+#include "optics/gulbrandsen.h"
+#include "optics/reflectance_curve.h"
 
 namespace matc::bench {
 

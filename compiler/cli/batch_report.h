@@ -1,6 +1,6 @@
 // What the batch commands (the compile, `matc bake`, `matc import`) share on the command line:
 // -k/-q, the depfile options, and the summary line. The batches themselves are libmatc's
-// (matc/pipeline/).
+// (pipeline/).
 #pragma once
 
 #include <filesystem>

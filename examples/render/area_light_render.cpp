@@ -16,10 +16,10 @@
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
 
-#include "matc/compile/compile.h"
-#include "matc/emit/build.h"
-#include "matc/emit/fullscreen_shaders.h"
-#include "matc/material/parse.h"
+#include "compile/compile.h"
+#include "emit/build.h"
+#include "emit/fullscreen_shaders.h"
+#include "material/parse.h"
 #include "material_renderer.h"
 #include "panels.h"
 

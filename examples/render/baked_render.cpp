@@ -25,13 +25,13 @@
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
 
-#include "matc/bake/bake_inputs.h"
-#include "matc/bake/coefficient_textures.h"
-#include "matc/emit/build.h"
-#include "matc/emit/fullscreen_shaders.h"
-#include "matc/optics/gulbrandsen.h"
+#include "bake/bake_inputs.h"
+#include "bake/coefficient_textures.h"
+#include "emit/build.h"
+#include "emit/fullscreen_shaders.h"
 #include "matc/vulkan/fullscreen_pass.h"
 #include "matc/vulkan/sampler.h"
+#include "optics/gulbrandsen.h"
 #include "panels.h"
 
 namespace {

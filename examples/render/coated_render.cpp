@@ -21,9 +21,9 @@
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
 
-#include "matc/compile/compile.h"
-#include "matc/emit/build.h"
-#include "matc/emit/fullscreen_shaders.h"
+#include "compile/compile.h"
+#include "emit/build.h"
+#include "emit/fullscreen_shaders.h"
 #include "matc/runtime/coat.h"
 #include "material_renderer.h"
 #include "panels.h"

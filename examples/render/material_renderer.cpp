@@ -5,12 +5,12 @@
 
 #include <fmt/core.h>
 
-#include "matc/emit/fullscreen_shaders.h"
-#include "matc/material/material_input.h"
-#include "matc/material/parse.h"
-#include "matc/optics/coat.h"
+#include "emit/fullscreen_shaders.h"
 #include "matc/runtime/ltc.h"
 #include "matc/vulkan/fullscreen_pass.h"
+#include "material/material_input.h"
+#include "material/parse.h"
+#include "optics/coat.h"
 
 namespace matc::render {
 namespace {

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "matc/compile/compile.h"
-#include "matc/emit/build.h"
-#include "matc/lut/comparison_lobes.h"
+#include "compile/compile.h"
+#include "emit/build.h"
+#include "lut/comparison_lobes.h"
 #include "matc/vulkan/buffer.h"
 #include "matc/vulkan/image.h"
 #include "matc/vulkan/sampler.h"

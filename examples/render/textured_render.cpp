@@ -17,13 +17,13 @@
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
 
-#include "matc/emit/build.h"
-#include "matc/emit/fullscreen_shaders.h"
-#include "matc/lut/comparison_lobes.h"
-#include "matc/optics/gulbrandsen.h"
+#include "emit/build.h"
+#include "emit/fullscreen_shaders.h"
+#include "lut/comparison_lobes.h"
 #include "matc/vulkan/buffer.h"
 #include "matc/vulkan/fullscreen_pass.h"
 #include "matc/vulkan/sampler.h"
+#include "optics/gulbrandsen.h"
 #include "panels.h"
 
 namespace {

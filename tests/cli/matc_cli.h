@@ -16,10 +16,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "emit/output_layout.h"
 #include "example_files.h"
-#include "matc/emit/output_layout.h"
-#include "matc/lut/lut_files.h"
-#include "matc/options/option_names.h"
+#include "lut/lut_files.h"
+#include "options/option_names.h"
 #include "test_images.h"
 
 namespace matc::cli_test {

@@ -5,9 +5,9 @@
 #include <string>
 #include <string_view>
 
-#include "matc/base/diagnostics.h"
-#include "matc/compile/compile.h"
-#include "matc/material/document_import.h"
+#include "base/diagnostics.h"
+#include "compile/compile.h"
+#include "material/document_import.h"
 
 namespace matc::fuzz {
 

@@ -12,9 +12,9 @@
 #include <string_view>
 
 #include "diagnostic_properties.h"
-#include "matc/emit/gltf_fresnel_extension.h"
-#include "matc/formats/glb_container.h"
-#include "matc/material/gltf_import.h"
+#include "emit/gltf_fresnel_extension.h"
+#include "formats/glb_container.h"
+#include "material/gltf_import.h"
 
 namespace {
 

@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <string_view>
 
-#include "matc/bake/bake_asset.h"
-#include "matc/bake/coefficient_textures.h"
-#include "matc/bake/image_map.h"
+#include "bake/bake_asset.h"
+#include "bake/coefficient_textures.h"
+#include "bake/image_map.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;

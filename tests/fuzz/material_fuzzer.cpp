@@ -7,10 +7,10 @@
 #include <string>
 #include <string_view>
 
+#include "compile/compile.h"
 #include "diagnostic_properties.h"
-#include "matc/compile/compile.h"
-#include "matc/emit/build.h"
-#include "matc/material/parse.h"
+#include "emit/build.h"
+#include "material/parse.h"
 
 namespace {
 

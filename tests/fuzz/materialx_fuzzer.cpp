@@ -7,7 +7,7 @@
 #include <string_view>
 
 #include "diagnostic_properties.h"
-#include "matc/material/materialx_import.h"
+#include "material/materialx_import.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "matc/ltc/area_light_reference.h"
-#include "matc/ltc/polygon_light.h"
+#include "ltc/area_light_reference.h"
+#include "ltc/polygon_light.h"
 #include "matc/runtime/ltc.h"
 
 namespace {

@@ -3,10 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "beryllium.h"
+#include "compile/compile.h"
 #include "gold.h"
-#include "matc/compile/compile.h"
-#include "matc/material/parse.h"
-#include "matc/spirv/spirv_tools.h"
+#include "material/parse.h"
+#include "spirv/spirv_tools.h"
 
 extern "C" {
 const MatcFresnelCoefficients* gold_coefficients_from_c(void);

@@ -1,8 +1,8 @@
 // The C++ header `matc lut --format header` writes compiles and holds the table bit for bit.
 #include <gtest/gtest.h>
 
-#include "matc/lut/energy.h"
-#include "matc/lut/preintegrate.h"
+#include "lut/energy.h"
+#include "lut/preintegrate.h"
 #include "matc_lut_generated.h"  // generated at build time by tests/CMakeLists.txt
 
 namespace {

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The installed CMake package works for a consumer: install this build, build examples/engine
-# against it (matc_add_materials, generated headers, SPIR-V linking, libmatc from memory), run it;
+# The installed CMake package works for a consumer: install this build (its headers the public API
+# alone), build examples/engine against it (matc_add_materials, generated headers, SPIR-V linking, libmatc from memory), run it;
 # then a second build is a no-op and touching a material reruns matc.
 #   check_cmake_package.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
@@ -9,6 +9,12 @@ source=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
+# The package carries the public API alone: matc/matc.h, matc/api/, matc/version.h and the
+# runtime's headers (matc/runtime/, matc/vulkan/); the modules' headers stay in the source tree.
+beyond=$(cd "$work/prefix/include/matc" && find . -type f | LC_ALL=C sort |
+  grep -v -e '^\./matc\.h$' -e '^\./version\.h$' -e '^\./api/' -e '^\./runtime/' -e '^\./vulkan/' || true)
+[ -z "$beyond" ] || { echo "the package installs headers beyond the public API:"; echo "$beyond"; exit 1; }
+[ -f "$work/prefix/include/matc/api/compiled_material.h" ] || { echo "the public API is not installed"; exit 1; }
 # The installed Python module imports from the prefix alone (no build tree on its path).
 python_dir=$(sed -n 's/^MATC_PYTHON_INSTALL_DIR:STRING=//p' "$build/CMakeCache.txt")
 if [ -n "$python_dir" ]; then

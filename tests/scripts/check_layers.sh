@@ -17,9 +17,9 @@ module_of_file() {
   case $1 in
     compiler/cli/*) echo cli ;;
     compiler/src/generated/*)
-      grep -m1 -o '#include "matc/[a-z_]*/' "$1" | cut -d/ -f2 ;;
+      grep -m1 -o '#include "[a-z_]*/' "$1" | sed 's/#include "//; s|/$||' ;;
     compiler/src/*/*) echo "$1" | cut -d/ -f3 ;;
-    compiler/include/matc/*/*) echo "$1" | cut -d/ -f4 ;;
+    compiler/include/matc/api/*) echo api ;;
     compiler/include/matc/matc.h) echo api ;;
     compiler/include/matc/*) echo base ;;  # version.h.in
     runtime/include/matc/*/*) echo "$1" | cut -d/ -f4 ;;
@@ -29,8 +29,8 @@ module_of_file() {
   esac
 }
 
-# The module an include names: "matc/<module>/...", "matc/version.h" (base), a private header by
-# its path under compiler/src ("<module>/x.h"), or one beside the including file.
+# The module an include names: "matc/api/..." or "matc/runtime/...", "matc/version.h" (base), a
+# module's header by its path under compiler/src ("<module>/x.h"), or one beside the including file.
 module_of_include() {
   local include=$1 including_module=$2
   case $include in

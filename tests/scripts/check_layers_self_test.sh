@@ -7,20 +7,20 @@ set -euo pipefail
 check=${1:?usage: check_layers_self_test.sh CHECK_LAYERS_SH}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-mkdir -p "$work/compiler/src/optics" "$work/compiler/include/matc/fit"
-printf '#include "matc/optics/fresnel.h"\n#include "matc/emit/build.h"\n' \
+mkdir -p "$work/compiler/src/optics" "$work/compiler/src/fit"
+printf '#include "optics/fresnel.h"\n#include "emit/build.h"\n' \
   >"$work/compiler/src/optics/fresnel.cpp"
-printf '#include "matc/material/material.h"\n#include "matc/runtime/basis.h"\n' \
-  >"$work/compiler/include/matc/fit/accuracy.h"
+printf '#include "material/material.h"\n#include "matc/runtime/basis.h"\n' \
+  >"$work/compiler/src/fit/accuracy.h"
 if bash "$check" "$work/compiler/src" >/dev/null; then
   echo "check_layers passed a tree it read no file of"; exit 1
 fi
 if out=$(bash "$check" "$work"); then
   echo "check_layers passed a tree with upward includes"; exit 1
 fi
-grep -q 'compiler/src/optics/fresnel.cpp:2: optics (layer 2) includes "matc/emit/build.h"' <<<"$out"
-grep -q 'compiler/include/matc/fit/accuracy.h:1: fit (layer 3) includes "matc/material/material.h"' <<<"$out"
+grep -q 'compiler/src/optics/fresnel.cpp:2: optics (layer 2) includes "emit/build.h"' <<<"$out"
+grep -q 'compiler/src/fit/accuracy.h:1: fit (layer 3) includes "material/material.h"' <<<"$out"
 sed -i '2d' "$work/compiler/src/optics/fresnel.cpp"
-sed -i '1d' "$work/compiler/include/matc/fit/accuracy.h"
+sed -i '1d' "$work/compiler/src/fit/accuracy.h"
 bash "$check" "$work" >/dev/null || { echo "check_layers failed a tree that follows the layers"; exit 1; }
 echo "check_layers: names upward and sideways includes, passes a tree without them"

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "matc/base/diagnostics.h"
+#include "base/diagnostics.h"
 
 namespace matc::test {
 

@@ -9,9 +9,9 @@
 #include "batch_events.h"
 #include "checked_options.h"
 #include "matc/api/options.h"
-#include "matc/material/parse.h"
-#include "matc/optics/spectrum.h"
-#include "matc/pipeline/bake_batch.h"
+#include "material/parse.h"
+#include "optics/spectrum.h"
+#include "pipeline/bake_batch.h"
 
 namespace matc::api {
 namespace {

@@ -1,7 +1,7 @@
 #include "matc/api/basis.h"
 
+#include "basis/basis_polynomial_fit.h"
 #include "checked_options.h"
-#include "matc/basis/basis_polynomial_fit.h"
 #include "matc/runtime/shader_basis.h"
 #include "matc/runtime/shipped_bases.h"
 

@@ -6,10 +6,10 @@
 #include "batch_events.h"
 #include "checked_options.h"
 #include "compiled_evaluation.h"
-#include "matc/emit/build.h"
-#include "matc/pipeline/compile_batch.h"
-#include "matc/pipeline/import_batch.h"
-#include "matc/pipeline/output_sink.h"
+#include "emit/build.h"
+#include "pipeline/compile_batch.h"
+#include "pipeline/import_batch.h"
+#include "pipeline/output_sink.h"
 
 namespace matc::api {
 namespace {

@@ -1,6 +1,6 @@
 #include "batch_events.h"
 
-#include "matc/base/echoed_text.h"
+#include "base/echoed_text.h"
 #include "public_diagnostics.h"
 
 namespace matc::api {

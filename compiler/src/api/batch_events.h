@@ -3,7 +3,7 @@
 #pragma once
 
 #include "matc/api/batch.h"
-#include "matc/pipeline/batch.h"
+#include "pipeline/batch.h"
 
 namespace matc::api {
 

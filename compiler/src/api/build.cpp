@@ -2,10 +2,10 @@
 
 #include <stdexcept>
 
+#include "base/json_format.h"
 #include "checked_options.h"
 #include "checked_values.h"
-#include "matc/base/json_format.h"
-#include "matc/emit/build.h"
+#include "emit/build.h"
 
 namespace matc::api {
 namespace {

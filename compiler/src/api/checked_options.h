@@ -10,13 +10,13 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "base/echoed_text.h"
+#include "compile/compile.h"
+#include "emit/build_options.h"
 #include "matc/api/compiled_material.h"
-#include "matc/base/echoed_text.h"
-#include "matc/compile/compile.h"
-#include "matc/emit/build_options.h"
-#include "matc/options/option_names.h"
 #include "matc/runtime/basis.h"
-#include "matc/spirv/shader_language.h"
+#include "options/option_names.h"
+#include "spirv/shader_language.h"
 
 namespace matc::api {
 

@@ -4,17 +4,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compile/compile.h"
 #include "evaluation_parts.h"
-#include "matc/compile/compile.h"
-#include "matc/ltc/area_light_reference.h"
-#include "matc/lut/layered_reference.h"
-#include "matc/lut/lut_files.h"
-#include "matc/lut/split_sum_reference.h"
-#include "matc/optics/coat.h"
+#include "ltc/area_light_reference.h"
+#include "lut/layered_reference.h"
+#include "lut/lut_files.h"
+#include "lut/split_sum_reference.h"
 #include "matc/runtime/analytic_lut.h"
 #include "matc/runtime/coat.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/lut.h"
+#include "optics/coat.h"
 
 namespace matc::evaluation {
 namespace {

@@ -7,10 +7,10 @@
 #include <mutex>
 #include <vector>
 
+#include "compile/compile.h"
 #include "matc/api/compiled_material.h"
-#include "matc/compile/compile.h"
-#include "matc/optics/reflectance_curve.h"
 #include "matc/runtime/basis.h"
+#include "optics/reflectance_curve.h"
 
 namespace matc::api {
 

@@ -9,20 +9,20 @@
 
 #include <fmt/format.h>
 
+#include "base/json_format.h"
 #include "checked_options.h"
 #include "checked_values.h"
+#include "compile/compile.h"
 #include "compiled_evaluation.h"
+#include "emit/material_json.h"
+#include "lut/preintegrate.h"
 #include "matc/api/tables.h"
-#include "matc/base/json_format.h"
-#include "matc/compile/compile.h"
-#include "matc/emit/material_json.h"
-#include "matc/lut/preintegrate.h"
-#include "matc/optics/coat.h"
-#include "matc/optics/fresnel.h"
 #include "matc/runtime/coat.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/lut.h"
 #include "matc/runtime/shader_basis.h"
+#include "optics/coat.h"
+#include "optics/fresnel.h"
 #include "public_diagnostics.h"
 
 namespace matc::api {

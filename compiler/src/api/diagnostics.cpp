@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "matc/base/echoed_text.h"
+#include "base/echoed_text.h"
 #include "public_diagnostics.h"
 
 namespace matc::api {

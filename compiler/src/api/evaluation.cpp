@@ -9,25 +9,25 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "base/json_format.h"
 #include "checked_options.h"
 #include "checked_values.h"
+#include "compile/compile.h"
 #include "evaluation_parts.h"
-#include "matc/base/json_format.h"
-#include "matc/compile/compile.h"
-#include "matc/fit/coefficient_table.h"
-#include "matc/fit/coefficients.h"
-#include "matc/ltc/area_light_reference.h"
-#include "matc/ltc/polygon_light.h"
-#include "matc/lut/coefficient_table_files.h"
-#include "matc/lut/comparison_lobes.h"
-#include "matc/lut/lut_files.h"
-#include "matc/lut/split_sum_reference.h"
-#include "matc/optics/gulbrandsen.h"
+#include "fit/coefficient_table.h"
+#include "fit/coefficients.h"
+#include "ltc/area_light_reference.h"
+#include "ltc/polygon_light.h"
+#include "lut/coefficient_table_files.h"
+#include "lut/comparison_lobes.h"
+#include "lut/lut_files.h"
+#include "lut/split_sum_reference.h"
 #include "matc/runtime/analytic_lut.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/ltc_following.h"
 #include "matc/runtime/lut.h"
+#include "optics/gulbrandsen.h"
 
 namespace matc::evaluation {
 namespace {

@@ -11,9 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "matc/compile/compile.h"
-#include "matc/formats/table_format.h"
-#include "matc/lut/preintegrate.h"
+#include "compile/compile.h"
+#include "formats/table_format.h"
+#include "lut/preintegrate.h"
 #include "matc/runtime/basis.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/ltc.h"

@@ -2,11 +2,11 @@
 #include <optional>
 
 #include "checked_values.h"
+#include "compile/compile.h"
 #include "compiled_evaluation.h"
+#include "lut/layered_reference.h"
+#include "lut/split_sum_reference.h"
 #include "matc/api/compiled_material.h"
-#include "matc/compile/compile.h"
-#include "matc/lut/layered_reference.h"
-#include "matc/lut/split_sum_reference.h"
 
 namespace matc::api {
 

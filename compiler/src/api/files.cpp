@@ -2,8 +2,8 @@
 
 #include <filesystem>
 
-#include "matc/base/exclusive_file.h"
-#include "matc/pipeline/atomic_file.h"
+#include "base/exclusive_file.h"
+#include "pipeline/atomic_file.h"
 
 namespace matc::api {
 

@@ -6,13 +6,13 @@
 
 #include <fmt/format.h>
 
+#include "base/echoed_text.h"
 #include "checked_options.h"
+#include "emit/gltf_fresnel_extension.h"
 #include "input_files.h"
-#include "matc/base/echoed_text.h"
-#include "matc/emit/gltf_fresnel_extension.h"
-#include "matc/material/document_import.h"
-#include "matc/material/gltf_import.h"
 #include "matc/runtime/basis.h"
+#include "material/document_import.h"
+#include "material/gltf_import.h"
 #include "public_diagnostics.h"
 
 namespace matc::api {

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "matc/api/compiled_material.h"
-#include "matc/optics/gulbrandsen.h"
+#include "optics/gulbrandsen.h"
 
 namespace matc::api {
 namespace {

@@ -6,9 +6,9 @@
 
 #include <fmt/format.h>
 
+#include "base/echoed_text.h"
 #include "matc/api/material.h"
-#include "matc/base/echoed_text.h"
-#include "matc/material/memory_files.h"
+#include "material/memory_files.h"
 
 namespace matc::api {
 

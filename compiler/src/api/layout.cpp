@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 
 #include "checked_options.h"
-#include "matc/emit/output_layout.h"
-#include "matc/material/parse.h"
+#include "emit/output_layout.h"
+#include "material/parse.h"
 
 namespace matc::api {
 

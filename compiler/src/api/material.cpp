@@ -6,12 +6,12 @@
 #include <variant>
 
 #include "input_files.h"
-#include "matc/material/material_input.h"
-#include "matc/material/materialx_import.h"
-#include "matc/material/memory_files.h"
-#include "matc/material/parse.h"
-#include "matc/optics/color_space.h"
-#include "matc/optics/presets.h"
+#include "material/material_input.h"
+#include "material/materialx_import.h"
+#include "material/memory_files.h"
+#include "material/parse.h"
+#include "optics/color_space.h"
+#include "optics/presets.h"
 #include "public_diagnostics.h"
 
 namespace matc::api {

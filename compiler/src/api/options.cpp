@@ -6,10 +6,10 @@
 
 #include <fmt/format.h>
 
-#include "matc/base/echoed_text.h"
-#include "matc/base/number_text.h"
+#include "base/echoed_text.h"
+#include "base/number_text.h"
 
-#include "matc/options/option_names.h"
+#include "options/option_names.h"
 
 namespace matc::api {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <vector>
 
+#include "base/diagnostics.h"
 #include "matc/api/diagnostics.h"
-#include "matc/base/diagnostics.h"
 
 namespace matc::api {
 

@@ -6,14 +6,14 @@
 
 #include <fmt/format.h>
 
+#include "basis/basis_fit.h"
 #include "checked_options.h"
-#include "matc/basis/basis_fit.h"
-#include "matc/emit/material_module_template.h"
-#include "matc/fit/coefficient_table.h"
-#include "matc/ltc/ltc_fit.h"
-#include "matc/lut/analytic_lut_fit.h"
-#include "matc/lut/default_lut_hashes.h"
-#include "matc/lut/preintegrate.h"
+#include "emit/material_module_template.h"
+#include "fit/coefficient_table.h"
+#include "ltc/ltc_fit.h"
+#include "lut/analytic_lut_fit.h"
+#include "lut/default_lut_hashes.h"
+#include "lut/preintegrate.h"
 #include "matc/runtime/shipped_bases.h"
 
 namespace matc::api {

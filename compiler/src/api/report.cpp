@@ -6,12 +6,12 @@
 #include <fmt/format.h>
 
 #include "checked_options.h"
-#include "matc/compile/compile.h"
-#include "matc/pipeline/unique_names.h"
-#include "matc/report/fresnel_plot.h"
-#include "matc/report/material_curves.h"
-#include "matc/report/report_page.h"
+#include "compile/compile.h"
+#include "pipeline/unique_names.h"
 #include "public_diagnostics.h"
+#include "report/fresnel_plot.h"
+#include "report/material_curves.h"
+#include "report/report_page.h"
 
 namespace matc::api {
 

@@ -5,10 +5,10 @@
 
 #include <fmt/format.h>
 
-#include "matc/base/echoed_text.h"
-#include "matc/spirv/linkage.h"
-#include "matc/spirv/shader_compiler.h"
-#include "matc/spirv/spirv_tools.h"
+#include "base/echoed_text.h"
+#include "spirv/linkage.h"
+#include "spirv/shader_compiler.h"
+#include "spirv/spirv_tools.h"
 
 namespace matc::api {
 namespace {

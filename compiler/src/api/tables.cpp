@@ -6,10 +6,10 @@
 
 #include "checked_options.h"
 #include "checked_values.h"
-#include "matc/fit/coefficient_table.h"
-#include "matc/lut/coefficient_table_files.h"
-#include "matc/lut/lut_files.h"
-#include "matc/lut/preintegrate.h"
+#include "fit/coefficient_table.h"
+#include "lut/coefficient_table_files.h"
+#include "lut/lut_files.h"
+#include "lut/preintegrate.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/lut.h"
 

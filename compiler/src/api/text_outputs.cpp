@@ -1,8 +1,8 @@
 #include "matc/api/text_outputs.h"
 
 #include "checked_options.h"
-#include "matc/emit/text_outputs.h"
-#include "matc/fit/coefficient_table.h"
+#include "emit/text_outputs.h"
+#include "fit/coefficient_table.h"
 
 namespace matc::api {
 

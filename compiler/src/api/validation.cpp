@@ -4,9 +4,9 @@
 #include <algorithm>
 
 #include "checked_options.h"
-#include "matc/validate/device_check.h"
-#include "matc/validate/device_validator.h"
 #include "matc/vulkan/context.h"
+#include "validate/device_check.h"
+#include "validate/device_validator.h"
 
 namespace matc::api {
 namespace {

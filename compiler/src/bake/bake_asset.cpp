@@ -1,15 +1,15 @@
-#include "matc/bake/bake_asset.h"
+#include "bake/bake_asset.h"
 
 #include <array>
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include "matc/base/echoed_text.h"
-#include "matc/material/material.h"
-#include "matc/material/parse.h"
-#include "matc/optics/spectrum.h"
+#include "base/echoed_text.h"
 #include "material/located_json_reader.h"
+#include "material/material.h"
+#include "material/parse.h"
+#include "optics/spectrum.h"
 
 namespace matc {
 namespace {

@@ -1,4 +1,4 @@
-#include "matc/bake/bake_inputs.h"
+#include "bake/bake_inputs.h"
 
 #include <cmath>
 #include <thread>

@@ -1,4 +1,4 @@
-#include "matc/bake/baked_texture_files.h"
+#include "bake/baked_texture_files.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,10 +6,10 @@
 #include <fmt/format.h>
 #include <stb/stb_image_write.h>
 
-#include "matc/base/content_hash.h"
-#include "matc/base/json_format.h"
-#include "matc/formats/dds_writer.h"
-#include "matc/formats/ktx2_writer.h"
+#include "base/content_hash.h"
+#include "base/json_format.h"
+#include "formats/dds_writer.h"
+#include "formats/ktx2_writer.h"
 #include "matc/runtime/basis.h"
 #include "matc/version.h"
 

@@ -1,4 +1,4 @@
-#include "matc/bake/coefficient_textures.h"
+#include "bake/coefficient_textures.h"
 
 #include <algorithm>
 #include <array>
@@ -7,11 +7,11 @@
 #include <utility>
 
 #include "base/parallel_rows.h"
-#include "matc/compile/compile.h"  // kPoorFitMaxError
-#include "matc/fit/conductor_solver.h"
-#include "matc/optics/gulbrandsen.h"
+#include "compile/compile.h"  // kPoorFitMaxError
+#include "fit/conductor_solver.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/shader_basis.h"
+#include "optics/gulbrandsen.h"
 
 namespace matc {
 namespace {

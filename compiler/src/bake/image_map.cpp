@@ -1,4 +1,4 @@
-#include "matc/bake/image_map.h"
+#include "bake/image_map.h"
 
 #include <algorithm>
 #include <array>
@@ -12,8 +12,8 @@
 #include <fmt/format.h>
 #include <stb/stb_image.h>
 
-#include "matc/base/content_hash.h"
-#include "matc/material/parse.h"  // load_file
+#include "base/content_hash.h"
+#include "material/parse.h"  // load_file
 #include "openexr_decode.h"
 
 namespace matc {

@@ -3,7 +3,7 @@
 
 #include <span>
 
-#include "matc/bake/image_map.h"
+#include "bake/image_map.h"
 
 namespace matc {
 

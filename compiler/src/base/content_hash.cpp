@@ -1,4 +1,4 @@
-#include "matc/base/content_hash.h"
+#include "base/content_hash.h"
 
 #include <cstdint>
 

@@ -1,4 +1,4 @@
-#include "matc/base/csv_table.h"
+#include "base/csv_table.h"
 
 #include <algorithm>
 #include <cctype>
@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "matc/base/number_text.h"
+#include "base/number_text.h"
 
 namespace matc {
 namespace {

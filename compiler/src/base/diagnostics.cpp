@@ -1,10 +1,10 @@
-#include "matc/base/diagnostics.h"
+#include "base/diagnostics.h"
 
 #include <algorithm>
 
 #include <fmt/format.h>
 
-#include "matc/base/echoed_text.h"
+#include "base/echoed_text.h"
 
 namespace matc {
 

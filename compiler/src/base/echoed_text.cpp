@@ -1,8 +1,8 @@
-#include "matc/base/echoed_text.h"
+#include "base/echoed_text.h"
 
 #include <fmt/format.h>
 
-#include "matc/base/utf8.h"
+#include "base/utf8.h"
 
 namespace matc {
 namespace {

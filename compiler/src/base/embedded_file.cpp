@@ -1,4 +1,4 @@
-#include "matc/base/embedded_file.h"
+#include "base/embedded_file.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -4,7 +4,7 @@
 #include <span>
 #include <string_view>
 
-#include "matc/base/embedded_file.h"
+#include "base/embedded_file.h"
 
 namespace matc::embedded_templates {
 

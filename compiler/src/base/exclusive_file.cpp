@@ -1,4 +1,4 @@
-#include "matc/base/exclusive_file.h"
+#include "base/exclusive_file.h"
 
 #include <fcntl.h>
 #include <unistd.h>

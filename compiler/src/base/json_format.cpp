@@ -1,4 +1,4 @@
-#include "matc/base/json_format.h"
+#include "base/json_format.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "matc/base/utf8.h"
+#include "base/utf8.h"
 
 namespace matc {
 

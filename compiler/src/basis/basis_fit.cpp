@@ -1,4 +1,4 @@
-#include "matc/basis/basis_fit.h"
+#include "basis/basis_fit.h"
 
 #include "matc/runtime/powers_basis.h"
 
@@ -11,11 +11,11 @@
 #include <Eigen/Dense>
 #include <Eigen/SVD>
 
-#include "matc/basis/basis_polynomial_fit.h"
-#include "matc/basis/training_set.h"
-#include "matc/optics/fresnel.h"
-#include "matc/optics/gulbrandsen.h"
+#include "basis/basis_polynomial_fit.h"
+#include "basis/training_set.h"
 #include "matc/version.h"
+#include "optics/fresnel.h"
+#include "optics/gulbrandsen.h"
 
 namespace matc {
 namespace {

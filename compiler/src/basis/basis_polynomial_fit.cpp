@@ -1,4 +1,4 @@
-#include "matc/basis/basis_polynomial_fit.h"
+#include "basis/basis_polynomial_fit.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
-#include "matc/basis/training_set.h"
+#include "basis/training_set.h"
 
 #include <cmath>
 
-#include "matc/optics/gulbrandsen.h"
+#include "optics/gulbrandsen.h"
 
 namespace matc {
 namespace {

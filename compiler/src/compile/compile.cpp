@@ -1,4 +1,4 @@
-#include "matc/compile/compile.h"
+#include "compile/compile.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,12 +7,12 @@
 
 #include <fmt/core.h>
 
-#include "matc/fit/coefficients.h"
-#include "matc/fit/nonnegative_curve.h"
-#include "matc/lut/energy.h"
-#include "matc/optics/coat.h"
-#include "matc/optics/spectral.h"
+#include "fit/coefficients.h"
+#include "fit/nonnegative_curve.h"
+#include "lut/energy.h"
 #include "matc/version.h"
+#include "optics/coat.h"
+#include "optics/spectral.h"
 
 namespace matc {
 namespace {

@@ -1,4 +1,4 @@
-#include "matc/emit/build.h"
+#include "emit/build.h"
 
 #include <algorithm>
 #include <iterator>
@@ -6,14 +6,14 @@
 
 #include <fmt/format.h>
 
-#include "matc/base/content_hash.h"
-#include "matc/base/json_format.h"
-#include "matc/emit/library_module.h"
-#include "matc/emit/material_module_template.h"
-#include "matc/emit/material_snippet.h"
-#include "matc/material/parse.h"
+#include "base/content_hash.h"
+#include "base/json_format.h"
+#include "emit/library_module.h"
+#include "emit/material_module_template.h"
+#include "emit/material_snippet.h"
 #include "matc/runtime/shader_basis.h"
 #include "matc/version.h"
+#include "material/parse.h"
 
 namespace matc {
 namespace {

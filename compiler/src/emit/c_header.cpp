@@ -1,8 +1,8 @@
-#include "matc/emit/c_header.h"
+#include "emit/c_header.h"
 
 #include <fmt/format.h>
 
-#include "matc/emit/material_snippet.h"
+#include "emit/material_snippet.h"
 
 namespace matc {
 namespace {

@@ -1,14 +1,14 @@
-#include "matc/emit/fullscreen_shaders.h"
+#include "emit/fullscreen_shaders.h"
 
 #include <array>
 #include <stdexcept>
 
 #include <fmt/core.h>
 
-#include "matc/emit/template.h"
-#include "matc/optics/coat.h"
-#include "matc/spirv/spirv_tools.h"
+#include "emit/template.h"
 #include "matc/version.h"
+#include "optics/coat.h"
+#include "spirv/spirv_tools.h"
 
 namespace matc {
 namespace {

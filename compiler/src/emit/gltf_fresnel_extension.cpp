@@ -1,14 +1,14 @@
-#include "matc/emit/gltf_fresnel_extension.h"
+#include "emit/gltf_fresnel_extension.h"
 
 #include <algorithm>
 #include <variant>
 
 #include <fmt/format.h>
 
-#include "matc/emit/material_json.h"
-#include "matc/formats/glb_container.h"
-#include "matc/material/located_json.h"
+#include "emit/material_json.h"
+#include "formats/glb_container.h"
 #include "matc/version.h"
+#include "material/located_json.h"
 
 namespace matc {
 namespace {

@@ -1,11 +1,11 @@
-#include "matc/emit/library_module.h"
+#include "emit/library_module.h"
 
 #include <cstdint>
 
 #include <fmt/format.h>
 
-#include "matc/spirv/linkage.h"
-#include "matc/spirv/spirv_tools.h"
+#include "spirv/linkage.h"
+#include "spirv/spirv_tools.h"
 
 namespace matc {
 

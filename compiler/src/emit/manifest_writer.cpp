@@ -1,4 +1,4 @@
-#include "matc/emit/manifest_writer.h"
+#include "emit/manifest_writer.h"
 
 #include <unistd.h>
 
@@ -9,9 +9,9 @@
 
 #include <fmt/format.h>
 
-#include "matc/base/content_hash.h"
-#include "matc/base/exclusive_file.h"
-#include "matc/base/json_format.h"
+#include "base/content_hash.h"
+#include "base/exclusive_file.h"
+#include "base/json_format.h"
 
 namespace matc {
 namespace {

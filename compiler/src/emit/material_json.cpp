@@ -1,11 +1,11 @@
-#include "matc/emit/material_json.h"
+#include "emit/material_json.h"
 
 #include <string>
 #include <variant>
 
 #include <fmt/core.h>
 
-#include "matc/fit/coefficients.h"
+#include "fit/coefficients.h"
 #include "matc/version.h"
 
 namespace matc {

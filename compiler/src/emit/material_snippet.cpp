@@ -1,4 +1,4 @@
-#include "matc/emit/material_snippet.h"
+#include "emit/material_snippet.h"
 
 #include <algorithm>
 #include <array>
@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "matc/material/parse.h"
 #include "matc/version.h"
+#include "material/parse.h"
 
 namespace matc {
 

@@ -1,4 +1,4 @@
-#include "matc/emit/shader_library.h"
+#include "emit/shader_library.h"
 
 #include <array>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "matc/emit/template.h"
+#include "emit/template.h"
 #include "matc/runtime/analytic_lut.h"
 #include "matc/version.h"
 

@@ -1,4 +1,4 @@
-#include "matc/emit/shader_literals.h"
+#include "emit/shader_literals.h"
 
 #include <cmath>
 #include <filesystem>

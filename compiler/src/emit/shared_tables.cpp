@@ -1,11 +1,11 @@
-#include "matc/emit/shared_tables.h"
+#include "emit/shared_tables.h"
 
-#include "matc/base/content_hash.h"
-#include "matc/base/json_format.h"
-#include "matc/ltc/ltc_table_files.h"
-#include "matc/lut/coefficient_table_files.h"
-#include "matc/lut/default_lut_hashes.h"
-#include "matc/lut/preintegrate.h"
+#include "base/content_hash.h"
+#include "base/json_format.h"
+#include "ltc/ltc_table_files.h"
+#include "lut/coefficient_table_files.h"
+#include "lut/default_lut_hashes.h"
+#include "lut/preintegrate.h"
 #include "matc/runtime/ltc.h"
 
 namespace matc {

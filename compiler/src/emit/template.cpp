@@ -1,4 +1,4 @@
-#include "matc/emit/template.h"
+#include "emit/template.h"
 
 #include <set>
 #include <stdexcept>

@@ -1,14 +1,14 @@
-#include "matc/emit/text_outputs.h"
+#include "emit/text_outputs.h"
 
 #include <variant>
 
 #include <fmt/format.h>
 
-#include "matc/base/content_hash.h"
-#include "matc/base/json_format.h"
-#include "matc/emit/material_json.h"
-#include "matc/emit/material_snippet.h"
-#include "matc/emit/shader_library.h"
+#include "base/content_hash.h"
+#include "base/json_format.h"
+#include "emit/material_json.h"
+#include "emit/material_snippet.h"
+#include "emit/shader_library.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/shader_basis.h"
 

@@ -1,10 +1,10 @@
-#include "matc/emit/validation_kernel.h"
+#include "emit/validation_kernel.h"
 
 #include <fmt/format.h>
 
-#include "matc/emit/template.h"
-#include "matc/spirv/spirv_tools.h"
+#include "emit/template.h"
 #include "matc/version.h"
+#include "spirv/spirv_tools.h"
 
 namespace matc {
 namespace {

@@ -1,9 +1,9 @@
-#include "matc/fit/accuracy.h"
+#include "fit/accuracy.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "matc/optics/fresnel.h"
+#include "optics/fresnel.h"
 
 namespace matc {
 namespace {

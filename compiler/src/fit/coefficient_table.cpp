@@ -1,4 +1,4 @@
-#include "matc/fit/coefficient_table.h"
+#include "fit/coefficient_table.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,12 +7,12 @@
 #include <fmt/format.h>
 
 #include "base/parallel_rows.h"
-#include "matc/fit/coefficients.h"
-#include "matc/formats/header_arrays.h"
-#include "matc/optics/gulbrandsen.h"
-#include "matc/optics/reflectance_curve.h"
+#include "fit/coefficients.h"
+#include "formats/header_arrays.h"
 #include "matc/runtime/shader_basis.h"
 #include "matc/version.h"
+#include "optics/gulbrandsen.h"
+#include "optics/reflectance_curve.h"
 
 namespace matc {
 namespace {

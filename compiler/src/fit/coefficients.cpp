@@ -1,4 +1,4 @@
-#include "matc/fit/coefficients.h"
+#include "fit/coefficients.h"
 
 #include <stdexcept>
 

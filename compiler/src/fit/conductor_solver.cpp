@@ -1,4 +1,4 @@
-#include "matc/fit/conductor_solver.h"
+#include "fit/conductor_solver.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,10 +7,10 @@
 
 #include <Eigen/Dense>
 
-#include "matc/fit/coefficients.h"
-#include "matc/optics/gulbrandsen.h"
-#include "matc/optics/reflectance_curve.h"
+#include "fit/coefficients.h"
 #include "matc/runtime/shader_basis.h"
+#include "optics/gulbrandsen.h"
+#include "optics/reflectance_curve.h"
 
 namespace matc {
 namespace {

@@ -1,4 +1,4 @@
-#include "matc/fit/nonnegative_curve.h"
+#include "fit/nonnegative_curve.h"
 
 #include <array>
 #include <cmath>

@@ -1,8 +1,8 @@
 // DirectDraw Surface with the DX10 extension header (Microsoft, "DDS file layout"): one 2D
 // texture, DXGI_FORMAT_R16G16[B16A16]_FLOAT or DXGI_FORMAT_R32G32[B32A32]_FLOAT, with its mip
 // levels (largest first) when it has more than one.
-#include "matc/formats/dds_writer.h"
-#include "matc/formats/texel_bytes.h"
+#include "formats/dds_writer.h"
+#include "formats/texel_bytes.h"
 
 namespace matc::formats {
 namespace {

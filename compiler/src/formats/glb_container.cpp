@@ -1,4 +1,4 @@
-#include "matc/formats/glb_container.h"
+#include "formats/glb_container.h"
 
 #include <cstdint>
 

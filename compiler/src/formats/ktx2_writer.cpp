@@ -5,8 +5,8 @@
 #include <utility>
 #include <vector>
 
-#include "matc/formats/ktx2_writer.h"
-#include "matc/formats/texel_bytes.h"
+#include "formats/ktx2_writer.h"
+#include "formats/texel_bytes.h"
 #include "matc/version.h"
 
 namespace matc::formats {

@@ -1,4 +1,4 @@
-#include "matc/formats/table_format.h"
+#include "formats/table_format.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "matc/formats/texel_bytes.h"
+#include "formats/texel_bytes.h"
 
 #include <algorithm>
 #include <bit>

@@ -1,6 +1,6 @@
-#include "matc/ltc/area_light_reference.h"
+#include "ltc/area_light_reference.h"
 
-#include "matc/base/rgb_mean.h"
+#include "base/rgb_mean.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "matc/ltc/ggx_lobe.h"
+#include "ltc/ggx_lobe.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "matc/ltc/lobe_polygons.h"
+#include "ltc/lobe_polygons.h"
 
 #include <algorithm>
 #include <bit>
@@ -6,8 +6,8 @@
 #include <numbers>
 #include <random>
 
-#include "matc/ltc/area_light_reference.h"
-#include "matc/ltc/ltc_fit.h"
+#include "ltc/area_light_reference.h"
+#include "ltc/ltc_fit.h"
 #include "texel_lobes.h"
 
 namespace matc {

@@ -1,4 +1,4 @@
-#include "matc/ltc/ltc_fit.h"
+#include "ltc/ltc_fit.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,11 +8,11 @@
 #include <fmt/format.h>
 
 #include "base/parallel_rows.h"
-#include "matc/formats/header_arrays.h"
-#include "matc/ltc/area_light_reference.h"
-#include "matc/ltc/ggx_lobe.h"
-#include "matc/ltc/lobe_polygons.h"
-#include "matc/ltc/polygon_light.h"
+#include "formats/header_arrays.h"
+#include "ltc/area_light_reference.h"
+#include "ltc/ggx_lobe.h"
+#include "ltc/lobe_polygons.h"
+#include "ltc/polygon_light.h"
 #include "matc/version.h"
 #include "nelder_mead.h"
 #include "texel_lobes.h"

@@ -1,4 +1,4 @@
-#include "matc/ltc/polygon_light.h"
+#include "ltc/polygon_light.h"
 
 #include <algorithm>
 #include <charconv>

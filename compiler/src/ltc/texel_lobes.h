@@ -6,8 +6,8 @@
 #include <cstddef>
 
 #include "base/parallel_rows.h"
-#include "matc/ltc/ggx_lobe.h"
-#include "matc/ltc/ltc_fit.h"
+#include "ltc/ggx_lobe.h"
+#include "ltc/ltc_fit.h"
 
 namespace matc {
 

@@ -1,4 +1,4 @@
-#include "matc/lut/analytic_lut_fit.h"
+#include "lut/analytic_lut_fit.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,12 +9,12 @@
 #include <fmt/format.h>
 #include <Eigen/Dense>
 
-#include "matc/fit/coefficients.h"
-#include "matc/optics/presets.h"
-#include "matc/optics/spectral.h"
+#include "fit/coefficients.h"
 #include "matc/runtime/lut.h"
 #include "matc/runtime/shader_basis.h"
 #include "matc/version.h"
+#include "optics/presets.h"
+#include "optics/spectral.h"
 
 namespace matc {
 namespace {

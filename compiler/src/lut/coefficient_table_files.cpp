@@ -1,13 +1,13 @@
-#include "matc/lut/coefficient_table_files.h"
+#include "lut/coefficient_table_files.h"
 
 #include <stdexcept>
 
 #include <fmt/format.h>
 
-#include "matc/formats/dds_writer.h"
-#include "matc/formats/header_arrays.h"
-#include "matc/formats/ktx2_writer.h"
-#include "matc/formats/texel_bytes.h"
+#include "formats/dds_writer.h"
+#include "formats/header_arrays.h"
+#include "formats/ktx2_writer.h"
+#include "formats/texel_bytes.h"
 #include "matc/version.h"
 
 namespace matc {

@@ -1,4 +1,4 @@
-#include "matc/lut/comparison_lobes.h"
+#include "lut/comparison_lobes.h"
 
 #include <cmath>
 

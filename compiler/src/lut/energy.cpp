@@ -1,4 +1,4 @@
-#include "matc/lut/energy.h"
+#include "lut/energy.h"
 
 namespace matc {
 

@@ -1,8 +1,8 @@
 // The LUT as a self-contained C++17 header: constexpr arrays, no dependencies.
 #include <fmt/format.h>
 
+#include "formats/header_arrays.h"
 #include "header_writer.h"
-#include "matc/formats/header_arrays.h"
 #include "matc/version.h"
 
 namespace matc {

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "matc/lut/lut_files.h"
+#include "lut/lut_files.h"
 
 namespace matc {
 

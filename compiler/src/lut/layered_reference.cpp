@@ -1,15 +1,15 @@
-#include "matc/lut/layered_reference.h"
+#include "lut/layered_reference.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
 
-#include "matc/base/rgb_mean.h"
-#include "matc/lut/split_sum_reference.h"
-#include "matc/optics/coat.h"
+#include "base/rgb_mean.h"
+#include "lut/split_sum_reference.h"
 #include "matc/runtime/coat.h"
 #include "matc/runtime/vec3.h"
+#include "optics/coat.h"
 
 namespace matc {
 namespace {

@@ -1,15 +1,15 @@
-#include "matc/lut/lut_files.h"
+#include "lut/lut_files.h"
 
 #include <algorithm>
 
 #include <fmt/format.h>
 
+#include "base/json_format.h"
+#include "formats/dds_writer.h"
+#include "formats/ktx2_writer.h"
+#include "formats/texel_bytes.h"
 #include "header_writer.h"
-#include "matc/base/json_format.h"
-#include "matc/formats/dds_writer.h"
-#include "matc/formats/ktx2_writer.h"
-#include "matc/formats/texel_bytes.h"
-#include "matc/lut/energy.h"
+#include "lut/energy.h"
 #include "matc/version.h"
 
 namespace matc {

@@ -1,4 +1,4 @@
-#include "matc/lut/microfacet_samples.h"
+#include "lut/microfacet_samples.h"
 
 #include <algorithm>
 #include <cmath>

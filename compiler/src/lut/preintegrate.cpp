@@ -1,11 +1,11 @@
-#include "matc/lut/preintegrate.h"
+#include "lut/preintegrate.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "base/parallel_rows.h"
-#include "matc/lut/microfacet_samples.h"
+#include "lut/microfacet_samples.h"
 
 namespace matc {
 namespace {

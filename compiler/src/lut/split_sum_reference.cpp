@@ -1,8 +1,8 @@
-#include "matc/lut/split_sum_reference.h"
+#include "lut/split_sum_reference.h"
 
 #include <algorithm>
 
-#include "matc/lut/microfacet_samples.h"
+#include "lut/microfacet_samples.h"
 
 namespace matc {
 

@@ -1,4 +1,4 @@
-#include "matc/material/document_import.h"
+#include "material/document_import.h"
 
 #include <algorithm>
 #include <cctype>
@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "matc/material/gltf_import.h"
-#include "matc/material/materialx_import.h"
+#include "material/gltf_import.h"
+#include "material/materialx_import.h"
 
 namespace matc {
 

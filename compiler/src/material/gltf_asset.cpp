@@ -6,11 +6,11 @@
 
 #include <fmt/format.h>
 
-#include "matc/base/echoed_text.h"
-#include "matc/formats/glb_container.h"
-#include "matc/material/document_import.h"
-#include "matc/material/gltf_import.h"
-#include "matc/material/memory_files.h"
+#include "base/echoed_text.h"
+#include "formats/glb_container.h"
+#include "material/document_import.h"
+#include "material/gltf_import.h"
+#include "material/memory_files.h"
 
 namespace matc {
 

@@ -10,8 +10,8 @@
 
 #include "tinygltf_config.h"
 
-#include "matc/base/diagnostics.h"
-#include "matc/material/parse.h"
+#include "base/diagnostics.h"
+#include "material/parse.h"
 
 namespace matc {
 

@@ -1,4 +1,4 @@
-#include "matc/material/gltf_import.h"
+#include "material/gltf_import.h"
 
 #include <algorithm>
 #include <array>
@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "base/echoed_text.h"
 #include "gltf_asset.h"
-#include "matc/base/echoed_text.h"
 
 namespace matc {
 

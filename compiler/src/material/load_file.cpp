@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "matc/material/parse.h"
+#include "material/parse.h"
 
 namespace matc {
 

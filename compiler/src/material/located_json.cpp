@@ -1,10 +1,10 @@
-#include "matc/material/located_json.h"
+#include "material/located_json.h"
 
 #include <algorithm>
 #include <iterator>
 #include <optional>
 
-#include "matc/base/echoed_text.h"
+#include "base/echoed_text.h"
 
 namespace matc {
 namespace {

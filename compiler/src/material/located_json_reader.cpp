@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "matc/material/parse.h"  // material_name_problem
+#include "material/parse.h"  // material_name_problem
 #include "suggestion.h"
 
 namespace matc {

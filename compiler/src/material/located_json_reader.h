@@ -10,9 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "matc/base/diagnostics.h"
-#include "matc/material/located_json.h"
+#include "base/diagnostics.h"
 #include "matc/runtime/fresnel.h"
+#include "material/located_json.h"
 
 namespace matc {
 

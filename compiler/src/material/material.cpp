@@ -1,4 +1,4 @@
-#include "matc/material/material.h"
+#include "material/material.h"
 
 namespace matc {
 

@@ -1,9 +1,9 @@
-#include "matc/material/material_input.h"
+#include "material/material_input.h"
 
 #include <utility>
 
-#include "matc/material/document_import.h"
-#include "matc/material/parse.h"
+#include "material/document_import.h"
+#include "material/parse.h"
 
 namespace matc {
 namespace {

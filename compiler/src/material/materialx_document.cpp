@@ -7,9 +7,9 @@
 
 #include <fmt/format.h>
 
-#include "matc/base/echoed_text.h"
-#include "matc/base/number_text.h"
-#include "matc/material/materialx_import.h"
+#include "base/echoed_text.h"
+#include "base/number_text.h"
+#include "material/materialx_import.h"
 #include "xml_well_formed.h"
 
 namespace matc {

@@ -13,8 +13,8 @@
 #include <string_view>
 #include <vector>
 
-#include "matc/base/diagnostics.h"
-#include "matc/optics/color_space.h"
+#include "base/diagnostics.h"
+#include "optics/color_space.h"
 #include "xml_tree.h"
 
 namespace matc {

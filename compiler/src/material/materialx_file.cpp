@@ -1,7 +1,7 @@
 // The parts of MaterialX reading that need no XML parser: names and extensions.
 #include <cctype>
 
-#include "matc/material/materialx_import.h"
+#include "material/materialx_import.h"
 
 namespace matc {
 

@@ -1,6 +1,6 @@
 // The importer: a MaterialX document's materials (materialx_document.h) through their shading
 // model's record (materialx_models.h) into matc materials.
-#include "matc/material/materialx_import.h"
+#include "material/materialx_import.h"
 
 #include <algorithm>
 #include <cctype>
@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "matc/base/echoed_text.h"
+#include "base/echoed_text.h"
 #include "materialx_document.h"
 #include "materialx_models.h"
 #include "suggestion.h"

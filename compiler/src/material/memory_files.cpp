@@ -1,4 +1,4 @@
-#include "matc/material/memory_files.h"
+#include "material/memory_files.h"
 
 #include <filesystem>
 #include <map>

@@ -1,4 +1,4 @@
-#include "matc/material/parse.h"
+#include "material/parse.h"
 
 #include <algorithm>
 #include <array>
@@ -9,10 +9,10 @@
 
 #include <fmt/format.h>
 
+#include "base/echoed_text.h"
 #include "located_json_reader.h"
-#include "matc/base/echoed_text.h"
-#include "matc/material/located_json.h"
-#include "matc/optics/presets.h"
+#include "material/located_json.h"
+#include "optics/presets.h"
 #include "suggestion.h"
 
 namespace matc {

@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "matc/base/echoed_text.h"
-#include "matc/base/utf8.h"
+#include "base/echoed_text.h"
+#include "base/utf8.h"
 
 namespace matc {
 namespace {

@@ -1,4 +1,4 @@
-#include "matc/optics/coat.h"
+#include "optics/coat.h"
 
 #include <algorithm>
 #include <cmath>

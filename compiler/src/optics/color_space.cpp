@@ -1,4 +1,4 @@
-#include "matc/optics/color_space.h"
+#include "optics/color_space.h"
 
 #include <algorithm>
 #include <cmath>

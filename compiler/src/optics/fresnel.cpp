@@ -1,4 +1,4 @@
-#include "matc/optics/fresnel.h"
+#include "optics/fresnel.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "matc/optics/gamut.h"
+#include "optics/gamut.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "matc/optics/gulbrandsen.h"
+#include "optics/gulbrandsen.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "matc/optics/presets.h"
+#include "optics/presets.h"
 
 #include <algorithm>
 #include <array>

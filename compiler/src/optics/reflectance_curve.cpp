@@ -1,4 +1,4 @@
-#include "matc/optics/reflectance_curve.h"
+#include "optics/reflectance_curve.h"
 
 namespace matc {
 

@@ -1,10 +1,10 @@
-#include "matc/optics/spectral.h"
+#include "optics/spectral.h"
 
 #include <array>
 #include <stdexcept>
 
+#include "base/csv_table.h"
 #include "base/embedded_data.h"
-#include "matc/base/csv_table.h"
 
 namespace matc {
 namespace {

@@ -1,10 +1,10 @@
-#include "matc/optics/spectrum.h"
+#include "optics/spectrum.h"
 
 #include <algorithm>
 
 #include <fmt/format.h>
 
-#include "matc/base/csv_table.h"
+#include "base/csv_table.h"
 
 namespace matc {
 

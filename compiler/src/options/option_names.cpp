@@ -1,4 +1,4 @@
-#include "matc/options/option_names.h"
+#include "options/option_names.h"
 
 #include <vector>
 

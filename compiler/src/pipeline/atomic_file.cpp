@@ -1,4 +1,4 @@
-#include "matc/pipeline/atomic_file.h"
+#include "pipeline/atomic_file.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -16,7 +16,7 @@
 
 #include <fmt/format.h>
 
-#include "matc/base/exclusive_file.h"
+#include "base/exclusive_file.h"
 
 namespace matc {
 namespace {

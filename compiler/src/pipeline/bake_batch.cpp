@@ -1,14 +1,14 @@
-#include "matc/pipeline/bake_batch.h"
+#include "pipeline/bake_batch.h"
 
 #include <algorithm>
 #include <stdexcept>
 
 #include <fmt/core.h>
 
+#include "bake/bake_inputs.h"
 #include "batch_reporter.h"
-#include "matc/bake/bake_inputs.h"
-#include "matc/pipeline/inputs_in_output_directory.h"
-#include "matc/pipeline/unique_names.h"
+#include "pipeline/inputs_in_output_directory.h"
+#include "pipeline/unique_names.h"
 
 namespace matc {
 namespace {

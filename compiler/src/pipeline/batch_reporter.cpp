@@ -2,7 +2,7 @@
 
 #include <exception>
 
-#include "matc/pipeline/depfile.h"
+#include "pipeline/depfile.h"
 
 namespace matc {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "matc/pipeline/batch.h"
-#include "matc/pipeline/output_sink.h"
+#include "pipeline/batch.h"
+#include "pipeline/output_sink.h"
 
 namespace matc {
 

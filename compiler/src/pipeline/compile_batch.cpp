@@ -1,4 +1,4 @@
-#include "matc/pipeline/compile_batch.h"
+#include "pipeline/compile_batch.h"
 
 #include <algorithm>
 #include <atomic>
@@ -12,13 +12,13 @@
 #include <fmt/format.h>
 
 #include "batch_reporter.h"
+#include "emit/manifest_writer.h"
 #include "in_order.h"
-#include "matc/emit/manifest_writer.h"
-#include "matc/material/document_import.h"
-#include "matc/material/material_input.h"
-#include "matc/material/parse.h"
-#include "matc/pipeline/inputs_in_output_directory.h"
-#include "matc/pipeline/unique_names.h"
+#include "material/document_import.h"
+#include "material/material_input.h"
+#include "material/parse.h"
+#include "pipeline/inputs_in_output_directory.h"
+#include "pipeline/unique_names.h"
 
 namespace matc {
 namespace {

@@ -1,8 +1,8 @@
-#include "matc/pipeline/depfile.h"
+#include "pipeline/depfile.h"
 
 #include <set>
 
-#include "matc/pipeline/atomic_file.h"
+#include "pipeline/atomic_file.h"
 
 namespace matc {
 namespace {

@@ -1,13 +1,13 @@
-#include "matc/pipeline/import_batch.h"
+#include "pipeline/import_batch.h"
 
 #include <filesystem>
 #include <optional>
 #include <vector>
 
 #include "batch_reporter.h"
-#include "matc/material/document_import.h"
-#include "matc/pipeline/inputs_in_output_directory.h"
-#include "matc/pipeline/unique_names.h"
+#include "material/document_import.h"
+#include "pipeline/inputs_in_output_directory.h"
+#include "pipeline/unique_names.h"
 
 namespace matc {
 

@@ -1,8 +1,8 @@
-#include "matc/pipeline/inputs_in_output_directory.h"
+#include "pipeline/inputs_in_output_directory.h"
 
 #include <fmt/core.h>
 
-#include "matc/pipeline/atomic_file.h"
+#include "pipeline/atomic_file.h"
 
 namespace matc {
 

@@ -1,4 +1,4 @@
-#include "matc/pipeline/output_sink.h"
+#include "pipeline/output_sink.h"
 
 #include <sstream>
 

@@ -1,8 +1,8 @@
-#include "matc/pipeline/unique_names.h"
+#include "pipeline/unique_names.h"
 
 #include <fmt/core.h>
 
-#include "matc/material/parse.h"
+#include "material/parse.h"
 
 namespace matc {
 

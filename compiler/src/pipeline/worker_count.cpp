@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <thread>
 
-#include "matc/pipeline/batch.h"
+#include "pipeline/batch.h"
 
 namespace matc {
 

@@ -1,4 +1,4 @@
-#include "matc/report/fresnel_plot.h"
+#include "report/fresnel_plot.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "matc/report/material_curves.h"
+#include "report/material_curves.h"
 
 #include <cmath>
 #include <memory>
@@ -7,9 +7,9 @@
 
 #include <fmt/format.h>
 
-#include "matc/optics/coat.h"
-#include "matc/optics/fresnel.h"
 #include "matc/runtime/coat.h"
+#include "optics/coat.h"
+#include "optics/fresnel.h"
 
 namespace matc {
 

@@ -1,9 +1,9 @@
-#include "matc/report/report_page.h"
+#include "report/report_page.h"
 
 #include <fmt/format.h>
 
-#include "matc/report/fresnel_plot.h"
 #include "matc/version.h"
+#include "report/fresnel_plot.h"
 
 namespace matc {
 namespace {

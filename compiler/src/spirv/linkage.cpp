@@ -1,4 +1,4 @@
-#include "matc/spirv/linkage.h"
+#include "spirv/linkage.h"
 
 #include <algorithm>
 #include <map>
@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 #include <spirv-tools/linker.hpp>
 
-#include "matc/base/echoed_text.h"
+#include "base/echoed_text.h"
 #include "spirv_instructions.h"
 
 namespace matc {

@@ -1,4 +1,4 @@
-#include "matc/spirv/module_patch.h"
+#include "spirv/module_patch.h"
 
 #include <bit>
 #include <cstdint>

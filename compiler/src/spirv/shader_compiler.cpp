@@ -1,4 +1,4 @@
-#include "matc/spirv/shader_compiler.h"
+#include "spirv/shader_compiler.h"
 
 #include <algorithm>
 #include <charconv>

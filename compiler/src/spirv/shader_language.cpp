@@ -1,4 +1,4 @@
-#include "matc/spirv/shader_language.h"
+#include "spirv/shader_language.h"
 
 namespace matc {
 

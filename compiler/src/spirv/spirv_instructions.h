@@ -8,7 +8,7 @@
 
 #include <spirv/unified1/spirv.hpp>
 
-#include "matc/spirv/shader_compiler.h"
+#include "spirv/shader_compiler.h"
 
 namespace matc {
 

@@ -1,4 +1,4 @@
-#include "matc/spirv/spirv_tools.h"
+#include "spirv/spirv_tools.h"
 
 #include <stdexcept>
 

@@ -7,14 +7,14 @@
 
 #include <fmt/format.h>
 
+#include "emit/validation_kernel.h"
 #include "largest_difference.h"
-#include "matc/emit/validation_kernel.h"
-#include "matc/ltc/polygon_light.h"
+#include "ltc/polygon_light.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/ltc_following.h"
 #include "matc/runtime/lut.h"
-#include "matc/validate/device_validator.h"
+#include "validate/device_validator.h"
 
 namespace matc {
 namespace {

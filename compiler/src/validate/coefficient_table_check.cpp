@@ -6,13 +6,13 @@
 
 #include <fmt/format.h>
 
+#include "emit/validation_kernel.h"
 #include "largest_difference.h"
-#include "matc/emit/validation_kernel.h"
 #include "matc/runtime/baked_coefficients.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/lut.h"
 #include "matc/runtime/shader_basis.h"
-#include "matc/validate/device_validator.h"
+#include "validate/device_validator.h"
 
 namespace matc {
 namespace {

@@ -1,4 +1,4 @@
-#include "matc/validate/device_check.h"
+#include "validate/device_check.h"
 
 #include <algorithm>
 #include <stdexcept>

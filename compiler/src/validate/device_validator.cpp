@@ -1,15 +1,15 @@
 #include <cstdint>
 #include <span>
 
-#include "matc/fit/coefficient_table.h"
-#include "matc/lut/preintegrate.h"
+#include "fit/coefficient_table.h"
+#include "lut/preintegrate.h"
 #include "matc/runtime/ltc.h"
-#include "matc/validate/device_validator.h"
 #include "matc/vulkan/buffer.h"
 #include "matc/vulkan/compute_kernel.h"
 #include "matc/vulkan/context.h"
 #include "matc/vulkan/image.h"
 #include "matc/vulkan/sampler.h"
+#include "validate/device_validator.h"
 
 namespace matc {
 namespace {

@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "matc/runtime/fresnel.h"
-#include "matc/validate/device_check.h"
+#include "validate/device_check.h"
 
 namespace matc {
 

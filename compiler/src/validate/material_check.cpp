@@ -2,15 +2,15 @@
 // embedded table, from the closed form) against the CPU runtime.
 #include <fmt/format.h>
 
+#include "emit/validation_kernel.h"
 #include "largest_difference.h"
-#include "matc/emit/validation_kernel.h"
 #include "matc/runtime/analytic_lut.h"
 #include "matc/runtime/coat.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/lut.h"
 #include "matc/runtime/shader_basis.h"
-#include "matc/validate/device_validator.h"
+#include "validate/device_validator.h"
 
 namespace matc {
 namespace {

@@ -14,9 +14,9 @@
 
 #include <gtest/gtest.h>
 
-#include "matc/emit/build.h"
-#include "matc/material/material_input.h"
+#include "emit/build.h"
 #include "matc/runtime/shader_basis.h"
+#include "material/material_input.h"
 
 namespace {
 

@@ -11,6 +11,11 @@
 
 #include <gtest/gtest.h>
 
+#include "base/json_format.h"
+#include "emit/build.h"
+#include "emit/material_json.h"
+#include "lut/coefficient_table_files.h"
+#include "lut/split_sum_reference.h"
 #include "matc/api/bake.h"
 #include "matc/api/basis.h"
 #include "matc/api/batch.h"
@@ -21,15 +26,10 @@
 #include "matc/api/options.h"
 #include "matc/api/report.h"
 #include "matc/api/tables.h"
-#include "matc/base/json_format.h"
-#include "matc/emit/build.h"
-#include "matc/emit/material_json.h"
-#include "matc/lut/coefficient_table_files.h"
-#include "matc/lut/split_sum_reference.h"
 #include "matc/matc.h"
-#include "matc/optics/reflectance_curve.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/lut.h"
+#include "optics/reflectance_curve.h"
 
 namespace {
 

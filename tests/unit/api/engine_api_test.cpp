@@ -17,7 +17,7 @@
 #include "matc/api/regeneration.h"
 #include "matc/api/spirv.h"
 #include "matc/matc.h"
-#include "matc/optics/gulbrandsen.h"
+#include "optics/gulbrandsen.h"
 
 namespace {
 

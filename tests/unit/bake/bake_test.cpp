@@ -7,16 +7,16 @@
 #include <filesystem>
 #include <random>
 
-#include "matc/bake/bake_asset.h"
-#include "matc/bake/bake_inputs.h"
-#include "matc/bake/baked_texture_files.h"
-#include "matc/bake/coefficient_textures.h"
-#include "matc/bake/image_map.h"
-#include "matc/fit/coefficients.h"
-#include "matc/fit/conductor_solver.h"
-#include "matc/optics/gulbrandsen.h"
-#include "matc/optics/reflectance_curve.h"
+#include "bake/bake_asset.h"
+#include "bake/bake_inputs.h"
+#include "bake/baked_texture_files.h"
+#include "bake/coefficient_textures.h"
+#include "bake/image_map.h"
+#include "fit/coefficients.h"
+#include "fit/conductor_solver.h"
 #include "matc/runtime/shader_basis.h"
+#include "optics/gulbrandsen.h"
+#include "optics/reflectance_curve.h"
 #include "sanitized_build.h"
 #include "test_images.h"
 

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "matc/basis/basis_fit.h"
-#include "matc/basis/basis_polynomial_fit.h"
+#include "basis/basis_fit.h"
+#include "basis/basis_polynomial_fit.h"
 #include "matc/runtime/basis.h"
 #include "matc/runtime/powers_basis.h"
 #include "matc/runtime/shader_basis.h"

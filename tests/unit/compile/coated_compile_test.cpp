@@ -4,10 +4,10 @@
 
 #include <algorithm>
 
-#include "matc/compile/compile.h"
-#include "matc/optics/presets.h"
+#include "compile/compile.h"
 #include "matc/runtime/coat.h"
 #include "matc/runtime/shipped_bases.h"
+#include "optics/presets.h"
 
 namespace matc {
 namespace {

@@ -10,22 +10,22 @@
 
 #include <filesystem>
 
+#include "base/content_hash.h"
+#include "base/json_format.h"
+#include "compile/compile.h"
+#include "emit/build.h"
+#include "emit/library_module.h"
+#include "emit/manifest_writer.h"
+#include "emit/material_module_template.h"
+#include "emit/shader_literals.h"
+#include "emit/template.h"
+#include "emit/validation_kernel.h"
 #include "example_files.h"
-#include "matc/base/content_hash.h"
-#include "matc/base/json_format.h"
-#include "matc/compile/compile.h"
-#include "matc/emit/build.h"
-#include "matc/emit/library_module.h"
-#include "matc/emit/manifest_writer.h"
-#include "matc/emit/material_module_template.h"
-#include "matc/emit/shader_literals.h"
-#include "matc/emit/template.h"
-#include "matc/emit/validation_kernel.h"
-#include "matc/material/parse.h"
-#include "matc/spirv/linkage.h"
-#include "matc/spirv/shader_compiler.h"
-#include "matc/spirv/spirv_tools.h"
 #include "matc/version.h"
+#include "material/parse.h"
+#include "spirv/linkage.h"
+#include "spirv/shader_compiler.h"
+#include "spirv/spirv_tools.h"
 
 namespace matc {
 namespace {

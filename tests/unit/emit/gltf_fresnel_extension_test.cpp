@@ -8,9 +8,9 @@
 #include <nlohmann/json.hpp>
 
 #include "diagnostic_text.h"
+#include "emit/gltf_fresnel_extension.h"
+#include "formats/glb_container.h"
 #include "glb_bytes.h"
-#include "matc/emit/gltf_fresnel_extension.h"
-#include "matc/formats/glb_container.h"
 #include "matc/matc.h"
 #include "matc/runtime/baked_coefficients.h"
 

@@ -7,15 +7,15 @@
 #include <cmath>
 #include <random>
 
-#include "matc/compile/compile.h"
-#include "matc/fit/coefficient_table.h"
-#include "matc/fit/coefficients.h"
-#include "matc/lut/coefficient_table_files.h"
-#include "matc/lut/preintegrate.h"
-#include "matc/optics/gulbrandsen.h"
+#include "compile/compile.h"
+#include "fit/coefficient_table.h"
+#include "fit/coefficients.h"
+#include "lut/coefficient_table_files.h"
+#include "lut/preintegrate.h"
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/lut.h"
 #include "matc/runtime/shader_basis.h"
+#include "optics/gulbrandsen.h"
 #include "sanitized_build.h"
 
 namespace {

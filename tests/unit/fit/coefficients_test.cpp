@@ -4,13 +4,13 @@
 
 #include <gtest/gtest.h>
 
-#include "matc/compile/compile.h"
-#include "matc/fit/accuracy.h"
-#include "matc/fit/coefficients.h"
-#include "matc/optics/gulbrandsen.h"
-#include "matc/optics/presets.h"
-#include "matc/optics/reflectance_curve.h"
-#include "matc/optics/spectral.h"
+#include "compile/compile.h"
+#include "fit/accuracy.h"
+#include "fit/coefficients.h"
+#include "optics/gulbrandsen.h"
+#include "optics/presets.h"
+#include "optics/reflectance_curve.h"
+#include "optics/spectral.h"
 
 namespace matc {
 namespace {

@@ -8,15 +8,15 @@
 #include <string>
 #include <vector>
 
+#include "compile/compile.h"
+#include "emit/build.h"
 #include "example_files.h"
-#include "matc/compile/compile.h"
-#include "matc/emit/build.h"
-#include "matc/fit/nonnegative_curve.h"
-#include "matc/lut/lut_files.h"
-#include "matc/lut/preintegrate.h"
-#include "matc/material/parse.h"
+#include "fit/nonnegative_curve.h"
+#include "lut/lut_files.h"
+#include "lut/preintegrate.h"
 #include "matc/runtime/analytic_lut.h"
 #include "matc/runtime/shader_basis.h"
+#include "material/parse.h"
 
 namespace {
 

@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "matc/ltc/ggx_lobe.h"
-#include "matc/ltc/lobe_polygons.h"
-#include "matc/ltc/ltc_fit.h"
-#include "matc/ltc/polygon_light.h"
+#include "ltc/ggx_lobe.h"
+#include "ltc/lobe_polygons.h"
+#include "ltc/ltc_fit.h"
+#include "ltc/polygon_light.h"
 
 namespace {
 

@@ -6,16 +6,16 @@
 #include <cmath>
 #include <vector>
 
-#include "matc/compile/compile.h"
-#include "matc/emit/build.h"
-#include "matc/ltc/area_light_reference.h"
-#include "matc/ltc/ggx_lobe.h"
-#include "matc/ltc/lobe_polygons.h"
-#include "matc/ltc/polygon_light.h"
-#include "matc/lut/split_sum_reference.h"
-#include "matc/material/parse.h"
+#include "compile/compile.h"
+#include "emit/build.h"
+#include "ltc/area_light_reference.h"
+#include "ltc/ggx_lobe.h"
+#include "ltc/lobe_polygons.h"
+#include "ltc/polygon_light.h"
+#include "lut/split_sum_reference.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/ltc_following.h"
+#include "material/parse.h"
 
 namespace {
 

@@ -7,12 +7,12 @@
 #include <numbers>
 #include <vector>
 
-#include "matc/ltc/area_light_reference.h"
-#include "matc/ltc/ggx_lobe.h"
-#include "matc/ltc/lobe_polygons.h"
-#include "matc/ltc/ltc_fit.h"
-#include "matc/ltc/polygon_light.h"
-#include "matc/lut/preintegrate.h"
+#include "ltc/area_light_reference.h"
+#include "ltc/ggx_lobe.h"
+#include "ltc/lobe_polygons.h"
+#include "ltc/ltc_fit.h"
+#include "ltc/polygon_light.h"
+#include "lut/preintegrate.h"
 #include "matc/runtime/ltc.h"
 
 namespace {

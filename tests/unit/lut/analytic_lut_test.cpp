@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "matc/lut/analytic_lut_fit.h"
+#include "lut/analytic_lut_fit.h"
 #include "matc/runtime/analytic_lut.h"
 #include "matc/runtime/lut.h"
 #include "sanitized_build.h"

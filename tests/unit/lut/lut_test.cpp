@@ -8,14 +8,14 @@
 
 #include <gtest/gtest.h>
 
-#include "matc/fit/accuracy.h"
-#include "matc/fit/coefficients.h"
-#include "matc/lut/default_lut_hashes.h"
-#include "matc/lut/energy.h"
-#include "matc/lut/preintegrate.h"
-#include "matc/lut/split_sum_reference.h"
-#include "matc/optics/presets.h"
-#include "matc/optics/spectral.h"
+#include "fit/accuracy.h"
+#include "fit/coefficients.h"
+#include "lut/default_lut_hashes.h"
+#include "lut/energy.h"
+#include "lut/preintegrate.h"
+#include "lut/split_sum_reference.h"
+#include "optics/presets.h"
+#include "optics/spectral.h"
 
 namespace matc {
 namespace {

@@ -2,7 +2,7 @@
 // that, so both builds must agree to the bit.
 #include <gtest/gtest.h>
 
-#include "matc/lut/microfacet_samples.h"
+#include "lut/microfacet_samples.h"
 #include "sampler_baseline.h"
 
 namespace {

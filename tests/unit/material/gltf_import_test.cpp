@@ -6,12 +6,12 @@
 #include <cstring>
 #include <map>
 
+#include "compile/compile.h"
 #include "diagnostic_text.h"
 #include "glb_bytes.h"
-#include "matc/compile/compile.h"
-#include "matc/material/gltf_import.h"
-#include "matc/optics/fresnel.h"
 #include "matc/runtime/fresnel.h"
+#include "material/gltf_import.h"
+#include "optics/fresnel.h"
 
 namespace matc {
 namespace {

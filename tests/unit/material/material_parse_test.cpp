@@ -6,8 +6,8 @@
 #include <ostream>
 
 #include "diagnostic_text.h"
-#include "matc/material/located_json.h"
-#include "matc/material/parse.h"
+#include "material/located_json.h"
+#include "material/parse.h"
 
 namespace matc {
 namespace {

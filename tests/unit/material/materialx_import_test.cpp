@@ -2,10 +2,10 @@
 // spaces, and the located problems of bad documents.
 #include <gtest/gtest.h>
 
+#include "compile/compile.h"
 #include "diagnostic_text.h"
-#include "matc/compile/compile.h"
-#include "matc/material/materialx_import.h"
-#include "matc/optics/color_space.h"
+#include "material/materialx_import.h"
+#include "optics/color_space.h"
 
 namespace matc {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "matc/lut/layered_reference.h"
-#include "matc/optics/coat.h"
+#include "lut/layered_reference.h"
+#include "optics/coat.h"
 
 namespace matc {
 namespace {

@@ -2,11 +2,11 @@
 // Bradford adaptation, spectral integration into each space, gamut measurement and mapping.
 #include <gtest/gtest.h>
 
-#include "matc/compile/compile.h"
-#include "matc/optics/color_space.h"
-#include "matc/optics/gamut.h"
-#include "matc/optics/presets.h"
-#include "matc/optics/spectral.h"
+#include "compile/compile.h"
+#include "optics/color_space.h"
+#include "optics/gamut.h"
+#include "optics/presets.h"
+#include "optics/spectral.h"
 
 namespace matc {
 namespace {

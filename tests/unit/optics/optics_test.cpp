@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "matc/optics/fresnel.h"
-#include "matc/optics/gulbrandsen.h"
+#include "optics/fresnel.h"
+#include "optics/gulbrandsen.h"
 
 namespace matc {
 namespace {

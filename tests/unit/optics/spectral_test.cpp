@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 #include <ostream>
 
-#include "matc/optics/presets.h"
-#include "matc/optics/spectral.h"
+#include "optics/presets.h"
+#include "optics/spectral.h"
 
 namespace matc {
 namespace {

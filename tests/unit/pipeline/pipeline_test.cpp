@@ -1,4 +1,4 @@
-// The library's batches (matc/pipeline/) driven without the CLI: from memory into memory or a
+// The library's batches (pipeline/) driven without the CLI: from memory into memory or a
 // directory, with their events, checks and cancellation; and the CLI writing the same bytes.
 #include <sys/wait.h>
 
@@ -15,10 +15,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "matc/emit/build.h"
-#include "matc/pipeline/bake_batch.h"
-#include "matc/pipeline/compile_batch.h"
-#include "matc/pipeline/import_batch.h"
+#include "emit/build.h"
+#include "pipeline/bake_batch.h"
+#include "pipeline/compile_batch.h"
+#include "pipeline/import_batch.h"
 
 namespace {
 

@@ -4,11 +4,11 @@
 
 #include <gtest/gtest.h>
 
-#include "matc/compile/compile.h"
-#include "matc/material/parse.h"
-#include "matc/report/fresnel_plot.h"
-#include "matc/report/material_curves.h"
-#include "matc/report/report_page.h"
+#include "compile/compile.h"
+#include "material/parse.h"
+#include "report/fresnel_plot.h"
+#include "report/material_curves.h"
+#include "report/report_page.h"
 
 namespace matc {
 namespace {

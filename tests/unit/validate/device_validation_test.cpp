@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "compile/compile.h"
 #include "matc/api/validation.h"
-#include "matc/compile/compile.h"
 #include "matc/matc.h"
-#include "matc/material/parse.h"
-#include "matc/validate/device_validator.h"
+#include "material/parse.h"
+#include "validate/device_validator.h"
 
 namespace {
 

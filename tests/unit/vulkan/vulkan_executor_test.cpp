@@ -7,15 +7,15 @@
 #include <random>
 #include <vector>
 
-#include "matc/lut/preintegrate.h"
+#include "lut/preintegrate.h"
 #include "matc/runtime/lut.h"
-#include "matc/spirv/shader_compiler.h"
 #include "matc/vulkan/buffer.h"
 #include "matc/vulkan/compute_kernel.h"
 #include "matc/vulkan/context.h"
 #include "matc/vulkan/fullscreen_pass.h"
 #include "matc/vulkan/image.h"
 #include "matc/vulkan/sampler.h"
+#include "spirv/shader_compiler.h"
 
 namespace {
 

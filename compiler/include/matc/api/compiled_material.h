@@ -53,7 +53,9 @@ struct ArtisticParameters {
 };
 // Gulbrandsen's mapping per channel, both ways. ior_from_artistic takes a reflectivity in [0, 1)
 // and an edge tint in [0, 1]; artistic_from_ior an n > 0 and a k >= 0, finite. Other values throw
-// std::invalid_argument naming the field and the channel.
+// std::invalid_argument naming the field and the channel. artistic_from_ior is the exact inverse:
+// an index outside the artistic range gets an edge tint outside [0, 1] (the shaders' version,
+// runtime::artistic_from_ior, clamps it).
 ComplexIor ior_from_artistic(const ArtisticParameters& artistic);
 ArtisticParameters artistic_from_ior(const ComplexIor& ior);
 
