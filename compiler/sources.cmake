@@ -52,6 +52,7 @@ set(MATC_CORE_SOURCES
   src/formats/table_format.cpp
   src/formats/glb_container.cpp
   src/compile/compile.cpp
+  src/compile/f0_table.cpp
   src/emit/template.cpp
   src/emit/shader_literals.cpp
   src/emit/material_json.cpp

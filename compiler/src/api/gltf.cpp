@@ -8,6 +8,7 @@
 
 #include "base/echoed_text.h"
 #include "checked_options.h"
+#include "compile/f0_table.h"
 #include "emit/gltf_fresnel_extension.h"
 #include "input_files.h"
 #include "matc/runtime/basis.h"
@@ -48,9 +49,15 @@ GltfAsset compile_imported(std::string_view bytes, const std::string& path,
     if (per_pixel_f0 && !zero_f0) {
       zero_f0 = compile(parse_materials(kZeroF0Schlick, "zero_f0.json").front(), options);
     }
-    extensions.emplace(
-        index, gltf_fresnel_extension(asset.materials.back().value(), runtime::shipped_basis(basis),
-                                      per_pixel_f0 ? &zero_f0->value() : nullptr));
+    // A working space or a gamut mapping that mixes the channels leaves the table out: each
+    // entry compiles the three channels at one F0.
+    std::optional<runtime::F0Table> f0_table;
+    const matc::CompiledMaterial& compiled = asset.materials.back().value();
+    if (material.f0_table && has_f0_table(compiled.material, compiled.color))
+      f0_table = compile_f0_table(compiled.material, runtime::shipped_basis(basis), compiled.color);
+    extensions.emplace(index, gltf_fresnel_extension(compiled, runtime::shipped_basis(basis),
+                                                     per_pixel_f0 ? &zero_f0->value() : nullptr,
+                                                     f0_table ? &*f0_table : nullptr));
   }
   Diagnostics diagnostics;
   std::optional<GltfWithExtensions> written = gltf_with_fresnel_extensions(

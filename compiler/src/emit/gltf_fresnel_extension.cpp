@@ -194,7 +194,8 @@ std::vector<std::string> external_uris(const nlohmann::json& root) {
 
 ordered_json gltf_fresnel_extension(const CompiledMaterial& compiled,
                                     const runtime::BasisView& basis,
-                                    const CompiledMaterial* zero_f0) {
+                                    const CompiledMaterial* zero_f0,
+                                    const runtime::F0Table* f0_table) {
   ordered_json out;
   out["name"] = compiled.material.name;
   out["basis"] = runtime::basis_name(basis.kind);
@@ -202,6 +203,18 @@ ordered_json gltf_fresnel_extension(const CompiledMaterial& compiled,
   out["colorSpace"] = color_space_name(compiled.color.working_space);
   out["coefficients"] = coefficient_rows_json(compiled.coefficients);
   if (zero_f0) out["zeroF0Coefficients"] = coefficient_rows_json(zero_f0->coefficients);
+  if (f0_table) {
+    const auto entries = [](const std::array<runtime::Coefficients, runtime::kF0TableEntries>& at) {
+      ordered_json rows = ordered_json::array();
+      for (const runtime::Coefficients& coefficients : at)
+        rows.push_back(coefficient_rows_json(coefficients));
+      return rows;
+    };
+    ordered_json table;
+    table["coefficients"] = entries(f0_table->in_air);
+    if (f0_table->under_coat) table["underCoatCoefficients"] = entries(*f0_table->under_coat);
+    out["f0Table"] = std::move(table);
+  }
   out["maxError"] = rgb_json(compiled.accuracy.decomposition.max_abs);
   if (compiled.coat) {
     const CompiledCoat& coat = *compiled.coat;

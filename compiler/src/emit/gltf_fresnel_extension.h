@@ -16,6 +16,7 @@
 #include "base/diagnostics.h"
 #include "compile/compile.h"
 #include "matc/runtime/basis.h"
+#include "matc/runtime/f0_table.h"
 
 namespace matc {
 
@@ -25,10 +26,13 @@ inline constexpr std::string_view kGltfFresnelExtension = "MATC_materials_fresne
 // matc's name for it, the basis and matc version the coefficients belong to, the working colour
 // space, the coefficients (rows R, G, B: c_0..c_3), their largest error against the exact curve,
 // and a coated metal's coat. `zero_f0`: for a metal whose F0 varies per pixel (a textured Schlick
-// metal), the same curve compiled at F0 = 0 (zeroF0Coefficients).
+// metal), the same curve compiled at F0 = 0 (zeroF0Coefficients). `f0_table`: for a textured
+// metal under an edge colour or a coat, its F0 table (f0Table: the coefficients in air and under
+// the coat at each entry's F0).
 nlohmann::ordered_json gltf_fresnel_extension(const CompiledMaterial& compiled,
                                               const runtime::BasisView& basis,
-                                              const CompiledMaterial* zero_f0 = nullptr);
+                                              const CompiledMaterial* zero_f0 = nullptr,
+                                              const runtime::F0Table* f0_table = nullptr);
 
 struct GltfWithExtensions {
   std::string bytes;  // the asset, in its own container

@@ -28,6 +28,10 @@ struct ImportedMaterial {
   // pixel (baseColorFactor times the texture). Schlick's curve is linear in F0, and so are the
   // coefficients: F0 (1, 0, 0, 0) + (1 - F0) times the coefficients at F0 = 0.
   bool per_pixel_f0 = false;
+  // glTF: the same texture under an edge colour or a clear coat, which make the curve's shape
+  // depend on F0 otherwise: `matc gltf` writes the coefficients at the F0 table's entries
+  // (compile/f0_table.h), between which a pixel's are interpolated.
+  bool f0_table = false;
 };
 
 struct DocumentImport {

@@ -169,7 +169,9 @@ class Importer {
           "F0 = 0 with which the npm package's loaders follow the texture per pixel)");
     } else if (textured) {
       not_carried.push_back(fmt::format(
-          "baseColorTexture (F0 is baseColorFactor: under {}, the curve is not linear in F0)",
+          "baseColorTexture (compiled at baseColorFactor; under {} the curve is not linear in F0: "
+          "`matc gltf` writes the coefficients at 33 values of F0, between which an engine "
+          "interpolates a pixel's)",
           coat ? "a clear coat" : "an edge colour"));
     }
     if (coat) material_json["coat"] = std::move(*coat);
@@ -194,6 +196,7 @@ class Importer {
     if (result_.materials.size() > added) {
       result_.materials.back().document_index = index;
       result_.materials.back().per_pixel_f0 = per_pixel_f0;
+      result_.materials.back().f0_table = textured && !per_pixel_f0;
     }
   }
 

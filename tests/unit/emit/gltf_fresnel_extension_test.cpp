@@ -13,6 +13,9 @@
 #include "glb_bytes.h"
 #include "matc/matc.h"
 #include "matc/runtime/baked_coefficients.h"
+#include "matc/runtime/coat.h"
+#include "matc/runtime/f0_table.h"
+#include "matc/runtime/shipped_bases.h"
 
 namespace matc {
 namespace {
@@ -230,6 +233,85 @@ TEST(GltfFresnelExtension, ATexturedSchlickMetalCarriesItsCoefficientsAtZeroF0) 
       }
     }
   }
+}
+
+// A textured metal under an edge colour or a coat carries its F0 table (in its own colour space):
+// 33 entries, the coated one's under the coat too, and at the factor the table gives the
+// compile's F within the table's error (docs/gltf.md). A Schlick metal and an untextured one do
+// not; nor does a compile in another working space, which mixes the channels.
+TEST(GltfFresnelExtension, ATexturedMetalUnderAnEdgeColourOrACoatCarriesItsF0Table) {
+  const std::string texture = R"("baseColorTexture": {"index": 0})";
+  const std::string text = R"({"asset": {"version": "2.0"}, "materials": [
+      {"name": "Trim", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.8, 0.6, 1], )" +
+                           texture + R"(}},
+      {"name": "Edge", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.8, 0.6, 1], )" +
+                           texture + R"(},
+       "extensions": {"KHR_materials_specular": {"specularColorFactor": [0.7, 0.8, 0.9],
+         "extensions": {"EXT_materials_specular_edge_color": {"specularEdgeColorEnabled": true}}}}},
+      {"name": "Paint", "pbrMetallicRoughness": {"baseColorFactor": [0.55, 0.06, 0.05, 1], )" +
+                           texture + R"(},
+       "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1}}},
+      {"name": "Plain", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.8, 0.6, 1]},
+       "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1}}}],
+      "textures": [{"source": 0}], "images": [{"uri": "t.png"}]})";
+  const api::GltfAsset asset = api::compile_gltf(text, "car.gltf");
+  const json written = json::parse(asset.bytes);
+  const auto extension = [&](std::size_t i) -> const json& {
+    return written["materials"][i]["extensions"]["MATC_materials_fresnel"];
+  };
+  EXPECT_FALSE(extension(0).contains("f0Table"));
+  EXPECT_FALSE(extension(3).contains("f0Table"));
+  const auto rows = [](const json& value) {
+    runtime::Coefficients out{};
+    for (std::size_t c = 0; c < 3; ++c)
+      for (std::size_t i = 0; i < 4; ++i)
+        out[c][i] = value[c][i].get<double>();
+    return out;
+  };
+  const runtime::ShaderBasis& shader = runtime::shipped_shader_basis(runtime::kDefaultBasis);
+  for (const std::size_t i : {std::size_t{1}, std::size_t{2}}) {
+    ASSERT_TRUE(extension(i).contains("f0Table")) << i;
+    const json& entries = extension(i)["f0Table"];
+    ASSERT_EQ(entries["coefficients"].size(), runtime::kF0TableEntries);
+    const bool coated = i == 2;
+    EXPECT_EQ(entries.contains("underCoatCoefficients"), coated);
+    runtime::F0Table table;
+    for (std::size_t e = 0; e < runtime::kF0TableEntries; ++e)
+      table.in_air[e] = rows(entries["coefficients"][e]);
+    if (coated) {
+      table.under_coat.emplace();
+      for (std::size_t e = 0; e < runtime::kF0TableEntries; ++e)
+        (*table.under_coat)[e] = rows(entries["underCoatCoefficients"][e]);
+    }
+    const runtime::Coefficients compiled = rows(extension(i)["coefficients"]);
+    const Rgb factor{compiled[0][0], compiled[1][0], compiled[2][0]};
+    const runtime::Coefficients in_air = runtime::coefficients_from_f0_table(table, factor);
+    runtime::CoatCoefficients coat, compiled_coat;
+    if (coated) {
+      const json& c = extension(i)["coat"];
+      compiled_coat.under_coat = rows(c["underCoatCoefficients"]);
+      for (std::size_t k = 0; k < 4; ++k)
+        compiled_coat.coat[k] = c["coatCoefficients"][k].get<double>();
+      compiled_coat.weight = c["weight"].get<double>();
+      compiled_coat.ior = c["ior"].get<double>();
+      coat = compiled_coat;
+      coat.under_coat = runtime::under_coat_coefficients_from_f0_table(table, factor);
+    }
+    for (int j = 0; j <= 64; ++j) {
+      const double mu = j / 64.0;
+      const Rgb ours = coated ? runtime::evaluate_coated_fresnel(in_air, coat, shader, mu).total()
+                              : runtime::evaluate_fresnel(in_air, shader, mu);
+      const Rgb expected =
+          coated ? runtime::evaluate_coated_fresnel(compiled, compiled_coat, shader, mu).total()
+                 : runtime::evaluate_fresnel(compiled, shader, mu);
+      for (std::size_t c = 0; c < 3; ++c)
+        EXPECT_NEAR(ours[c], expected[c], 0.006) << i << " mu " << mu << " channel " << c;
+    }
+  }
+  const api::GltfAsset elsewhere = api::compile_gltf(text, "car.gltf", {"", "acescg", ""});
+  const json mixed = json::parse(elsewhere.bytes);
+  for (std::size_t i = 0; i < 4; ++i)
+    EXPECT_FALSE(mixed["materials"][i]["extensions"]["MATC_materials_fresnel"].contains("f0Table"));
 }
 
 }  // namespace

@@ -1,0 +1,106 @@
+// The F0 table of a textured metal under an edge colour or a coat (compile/f0_table.h,
+// matc/runtime/f0_table.h): its entries are the compile at their F0, and a pixel's coefficients
+// interpolated from them stay within the fit's own error of the compile at the pixel's F0, at
+// every level an 8-bit sRGB base colour texture holds.
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "compile/f0_table.h"
+#include "matc/runtime/shipped_bases.h"
+
+namespace matc {
+namespace {
+
+Material metal(const Rgb& f0, const Rgb& tint, std::optional<CoatInput> coat) {
+  Material material;
+  material.name = "textured";
+  material.model = F82TintInput{f0, tint};
+  material.coat = coat;
+  return material;
+}
+
+// An 8-bit sRGB level decoded to linear, as the GPU samples a base colour texture.
+double srgb_level(int level) {
+  const double v = level / 255.0;
+  return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
+TEST(F0Table, EntriesAreTheCompileAtTheirF0) {
+  const runtime::BasisView& basis = runtime::shipped_basis(runtime::kDefaultBasis);
+  const Material coated =
+      metal({0.9, 0.8, 0.6}, {0.7, 0.9, 1.0}, CoatInput{0.8, 1.5, 0.1, {1, 1, 1}});
+  const runtime::F0Table table = compile_f0_table(coated, basis, {});
+  ASSERT_TRUE(table.under_coat);
+  for (const std::size_t entry : {std::size_t{0}, std::size_t{7}, runtime::kF0TableEntries - 1}) {
+    const double f0 = runtime::f0_table_entry_f0(entry);
+    const CompiledMaterial compiled =
+        compile_material(metal({f0, f0, f0}, {0.7, 0.9, 1.0}, coated.coat), basis);
+    EXPECT_EQ(table.in_air[entry], compiled.coefficients) << entry;
+    EXPECT_EQ((*table.under_coat)[entry], compiled.coat->coefficients.under_coat) << entry;
+    // At an entry the runtime's interpolation returns it (c_0, c_1 in air: F0, 1 - F0).
+    const runtime::Coefficients air = runtime::coefficients_from_f0_table(table, {f0, f0, f0});
+    const runtime::Coefficients under =
+        runtime::under_coat_coefficients_from_f0_table(table, {f0, f0, f0});
+    for (std::size_t c = 0; c < 3; ++c) {
+      for (std::size_t i = 0; i < 4; ++i) {
+        EXPECT_NEAR(air[c][i], compiled.coefficients[c][i], 1e-12) << entry << " " << c << i;
+        EXPECT_NEAR(under[c][i], compiled.coat->coefficients.under_coat[c][i], 1e-12);
+      }
+    }
+  }
+  EXPECT_EQ(runtime::f0_table_entry_f0(0), 0.0);
+  EXPECT_EQ(runtime::f0_table_entry_f0(runtime::kF0TableEntries - 1), 1.0);
+  EXPECT_FALSE(compile_f0_table(metal({0.9, 0.8, 0.6}, {0.7, 0.9, 1.0}, {}), basis, {}).under_coat);
+}
+
+// The levels of an 8-bit texture where the table is weakest (the darkest 32, where a coat moves
+// the coefficients fastest) and every 8th above: bench/f0_table_accuracy reads all 256.
+std::vector<double> texture_levels() {
+  std::vector<double> f0s;
+  for (int level = 0; level < 256; level += level < 32 ? 1 : 8)
+    f0s.push_back(srgb_level(level));
+  return f0s;
+}
+
+F0TableError table_error(const Rgb& tint, std::optional<CoatInput> coat) {
+  return measure_f0_table(metal({0.5, 0.5, 0.5}, tint, coat),
+                          runtime::shipped_basis(runtime::kDefaultBasis), {}, texture_levels());
+}
+
+// Nearly linear in F0 (Schlick's curve is; the edge colour's dip scales with F0 too): a fraction
+// of the fit's own error.
+TEST(F0Table, BareEdgeColouredMetalFollowsTheCompileClosely) {
+  const F0TableError error = table_error({0.6, 0.8, 1.0}, std::nullopt);
+  EXPECT_LT(error.table, 1e-3);
+  EXPECT_LT(error.table, error.fit / 10) << "fit's own: " << error.fit;
+}
+
+TEST(F0Table, CoatedMetalsFollowTheCompileWithinTheFitsOwnError) {
+  for (const double ior : {1.3, 1.5, 1.6}) {
+    for (const Rgb tint : {Rgb{1, 1, 1}, Rgb{0.7, 0.9, 1.0}}) {
+      const F0TableError error = table_error(tint, CoatInput{1.0, ior, 0.0, {1, 1, 1}});
+      EXPECT_LT(error.table, error.fit) << "coat " << ior << " tint " << tint[0];
+      EXPECT_LT(error.table, 0.01) << "coat " << ior << " tint " << tint[0];
+    }
+  }
+}
+
+TEST(F0Table, OnlyWhereEachChannelIsItsOwn) {
+  Material edge = metal({0.9, 0.8, 0.6}, {0.7, 0.9, 1.0}, std::nullopt);
+  edge.color_space = ColorSpace::lin_rec709;  // as glTF import writes it
+  EXPECT_TRUE(has_f0_table(edge, {}));
+  EXPECT_FALSE(has_f0_table(edge, {ColorSpace::acescg, GamutMapping::none}));
+  EXPECT_FALSE(has_f0_table(edge, {kDefaultColorSpace, GamutMapping::desaturate}));
+  Material artistic = edge;
+  artistic.model = ArtisticInput{{0.9, 0.8, 0.6}, {0.5, 0.5, 0.5}};
+  EXPECT_FALSE(has_f0_table(artistic, {}));
+  EXPECT_THROW(compile_f0_table(artistic, runtime::shipped_basis(runtime::kDefaultBasis), {}),
+               std::logic_error);
+}
+
+}  // namespace
+}  // namespace matc
