@@ -20,3 +20,41 @@ MatcFresnelCoefficients matc_coefficients_from_f0(MatcFresnelCoefficients zero_f
                                  vec4(c0.y, 0.0, 0.0, 0.0) + (1.0 - c0.y) * zero_f0.green,
                                  vec4(c0.z, 0.0, 0.0, 0.0) + (1.0 - c0.z) * zero_f0.blue);
 }
+
+// ---- Textured metals under an edge colour or a coat, per pixel: the F0 table. ----
+// MATC_materials_fresnel's f0Table (docs/gltf.md): the metal compiled at 33 values of F0, entry i
+// at F0 = (i / 32)^4; a pixel's coefficients interpolate, per channel, the two entries around
+// F0^(1/4). As a texture: RGBA32F, 33 x 6, texel (i, c) entry i's row of channel c in air and
+// (i, 3 + c) under the coat, read with texelFetch (the interpolation is here, not the sampler's).
+// Where along the entries F0 falls (0 to 32), and the entry on its left (0 to 31).
+float matc_f0_table_position(float f0) {
+  return sqrt(sqrt(clamp(f0, 0.0, 1.0))) * 32.0;
+}
+int matc_f0_table_left(float position) {
+  return min(int(position), 31);
+}
+vec4 matc_f0_table_mix(vec4 left, vec4 right, float f0) {
+  float position = matc_f0_table_position(f0);
+  return mix(left, right, position - float(matc_f0_table_left(position)));
+}
+// From each channel's entries left and right of its F0. In air c_0 = F0 and c_1 = 1 - F0 exactly
+// (the curve's values head on and at grazing); under the coat all four are interpolated.
+MatcFresnelCoefficients matc_coefficients_from_f0_entries(vec3 f0, MatcFresnelCoefficients left,
+                                                          MatcFresnelCoefficients right) {
+  vec3 c0 = clamp(f0, 0.0, 1.0);
+  return MatcFresnelCoefficients(
+      vec4(c0.x, 1.0 - c0.x, matc_f0_table_mix(left.red, right.red, f0.x).zw),
+      vec4(c0.y, 1.0 - c0.y, matc_f0_table_mix(left.green, right.green, f0.y).zw),
+      vec4(c0.z, 1.0 - c0.z, matc_f0_table_mix(left.blue, right.blue, f0.z).zw));
+}
+MatcFresnelCoefficients matc_under_coat_from_f0_entries(vec3 f0, MatcFresnelCoefficients left,
+                                                        MatcFresnelCoefficients right) {
+  return MatcFresnelCoefficients(matc_f0_table_mix(left.red, right.red, f0.x),
+                                 matc_f0_table_mix(left.green, right.green, f0.y),
+                                 matc_f0_table_mix(left.blue, right.blue, f0.z));
+}
+// The entries left (NEXT 0) or right (NEXT 1) of each channel's F0, from rows ROW to ROW + 2 of
+// the table texture TABLE (a sampler2D or a texture2D: texelFetch reads it unfiltered).
+#define MATC_F0_TABLE_ENTRIES(TABLE, F0, ROW, NEXT) MatcFresnelCoefficients(texelFetch(TABLE, ivec2(matc_f0_table_left(matc_f0_table_position((F0).x)) + (NEXT), (ROW)), 0), texelFetch(TABLE, ivec2(matc_f0_table_left(matc_f0_table_position((F0).y)) + (NEXT), (ROW) + 1), 0), texelFetch(TABLE, ivec2(matc_f0_table_left(matc_f0_table_position((F0).z)) + (NEXT), (ROW) + 2), 0))
+#define MATC_COEFFICIENTS_FROM_F0_TABLE(TABLE, F0) matc_coefficients_from_f0_entries((F0), MATC_F0_TABLE_ENTRIES(TABLE, F0, 0, 0), MATC_F0_TABLE_ENTRIES(TABLE, F0, 0, 1))
+#define MATC_UNDER_COAT_FROM_F0_TABLE(TABLE, F0) matc_under_coat_from_f0_entries((F0), MATC_F0_TABLE_ENTRIES(TABLE, F0, 3, 0), MATC_F0_TABLE_ENTRIES(TABLE, F0, 3, 1))

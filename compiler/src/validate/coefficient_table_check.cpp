@@ -10,6 +10,7 @@
 #include "largest_difference.h"
 #include "matc/runtime/baked_coefficients.h"
 #include "matc/runtime/coefficient_table.h"
+#include "matc/runtime/f0_table.h"
 #include "matc/runtime/lut.h"
 #include "matc/runtime/shader_basis.h"
 #include "validate/device_validator.h"
@@ -21,6 +22,22 @@ constexpr std::size_t kTableQueries = 4096;
 
 runtime::Rgb as_rgb(const std::array<float, 3>& values) {
   return {values[0], values[1], values[2]};
+}
+
+// The kernels' F0 table for a query (matc_check_f0_entry in templates/*/validate_table.*): entry
+// i of channel c from the query's g, n, k, not linear in i, the same in air and under the coat.
+runtime::F0Table query_f0_table(const TableQuery& q) {
+  runtime::F0Table table;
+  for (std::size_t i = 0; i < runtime::kF0TableEntries; ++i) {
+    const float s = static_cast<float>(i * i) / 1024.0f;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const float g = q.edge_tint[c], n = q.n[c], k = q.k[c] * 0.125f;
+      table.in_air[i][c] = {g + s * n * 0.25f, k + s * (0.5f - g), (g - 0.5f) + s * (1.0f - g),
+                            (k - 0.5f) + s * (k - 0.25f)};
+    }
+  }
+  table.under_coat = table.in_air;
+  return table;
 }
 
 class CoefficientTableCheck final : public DeviceCheck {
@@ -60,6 +77,8 @@ class CoefficientTableCheck final : public DeviceCheck {
     CheckedQuantity from_ior{"F(n, k)", tolerance_};
     CheckedQuantity baked{"F(baked)", tolerance_};
     CheckedQuantity from_f0{"F(from F0)", tolerance_};
+    CheckedQuantity f0_table{"F(F0 table)", tolerance_};
+    CheckedQuantity f0_table_under_coat{"F(F0 table, under a coat)", tolerance_};
     for (std::size_t i = 0; i < queries_.size(); ++i) {
       const TableQuery& q = queries_[i];
       const float* result = &results[i * kTableValidationResultsPerQuery * 4];
@@ -89,8 +108,20 @@ class CoefficientTableCheck final : public DeviceCheck {
           runtime::coefficients_from_baked({0.0, 0.0, 0.0}, c2, c3), as_rgb(q.reflectivity));
       record_largest(from_f0, runtime::evaluate_fresnel(per_pixel, shader_basis, q.mu), result + 16,
                      i);
+      // Per pixel from F0 = r through an F0 table of the query's values.
+      const runtime::F0Table table_of_query = query_f0_table(q);
+      record_largest(f0_table,
+                     runtime::evaluate_fresnel(runtime::coefficients_from_f0_table(
+                                                   table_of_query, as_rgb(q.reflectivity)),
+                                               shader_basis, q.mu),
+                     result + 20, i);
+      record_largest(f0_table_under_coat,
+                     runtime::evaluate_fresnel(runtime::under_coat_coefficients_from_f0_table(
+                                                   table_of_query, as_rgb(q.reflectivity)),
+                                               shader_basis, q.mu),
+                     result + 24, i);
     }
-    return {fresnel, preintegrated, from_ior, baked, from_f0};
+    return {fresnel, preintegrated, from_ior, baked, from_f0, f0_table, f0_table_under_coat};
   }
 
   std::string describe_query(std::size_t index, std::string_view label) const override {
