@@ -125,6 +125,38 @@ TEST(SpirvApi, RefusesUnknownNamesAndShowsCompileErrorsAtTheirLine) {
   }
 }
 
+// The F0 table's texture readers (MATC_COEFFICIENTS_FROM_F0_TABLE in GLSL, the functions in HLSL)
+// compile in an engine's shader: the coefficient-table device check runs their arithmetic on
+// lavapipe from buffers; these are the fetches an engine calls.
+TEST(SpirvApi, TheF0TableTextureReadersCompile) {
+  const matc::api::Build build;
+  const std::string glsl = "#version 450\n" + build.library_source("glsl") + R"(
+layout(local_size_x = 64) in;
+layout(set = 0, binding = 0) uniform sampler2D matc_f0_table;
+layout(std430, set = 0, binding = 1) buffer Data { vec4 values[]; };
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  vec3 f0 = values[i].rgb;
+  MatcFresnelCoefficients in_air = MATC_COEFFICIENTS_FROM_F0_TABLE(matc_f0_table, f0);
+  MatcFresnelCoefficients under = MATC_UNDER_COAT_FROM_F0_TABLE(matc_f0_table, f0);
+  values[i] = vec4(matc_fresnel(in_air, values[i].w) + matc_fresnel(under, values[i].w), 1.0);
+}
+)";
+  EXPECT_FALSE(matc::api::compile_shader("glsl", glsl, "f0_table.comp").empty());
+  const std::string hlsl = build.library_source("hlsl") + R"(
+[[vk::binding(0, 0)]] Texture2D<float4> matc_f0_table : register(t0);
+[[vk::binding(1, 0)]] RWStructuredBuffer<float4> values : register(u1);
+[numthreads(64, 1, 1)]
+void main(uint3 id : SV_DispatchThreadID) {
+  float3 f0 = values[id.x].rgb;
+  MatcFresnelCoefficients in_air = matc_coefficients_from_f0_table(matc_f0_table, f0);
+  MatcFresnelCoefficients under = matc_under_coat_from_f0_table(matc_f0_table, f0);
+  values[id.x] = float4(matc_fresnel(in_air, values[id.x].w) + matc_fresnel(under, values[id.x].w), 1.0);
+}
+)";
+  EXPECT_FALSE(matc::api::compile_shader("hlsl", hlsl, "f0_table.hlsl").empty());
+}
+
 // The two quick regenerations against what is checked in: the library still makes its own
 // generated sources byte for byte (the fits take minutes: docs/maintainers.md reruns them).
 TEST(RegenerationApi, MakesTheCheckedInSourcesAgain) {
