@@ -89,6 +89,26 @@ TEST(F0Table, CoatedMetalsFollowTheCompileWithinTheFitsOwnError) {
   }
 }
 
+// A texture's F0 can be anything: outside [0, 1] it is clamped, NaN reads as 0 (as the runtime's
+// other per-pixel inputs), and a bare metal's table has no under-coat entries to read.
+TEST(F0Table, ClampsHostileF0AndRefusesUnderCoatOfABareMetal) {
+  const runtime::BasisView& basis = runtime::shipped_basis(runtime::kDefaultBasis);
+  const runtime::F0Table bare =
+      compile_f0_table(metal({0.5, 0.5, 0.5}, {0.7, 0.9, 1.0}, std::nullopt), basis, {});
+  const runtime::Coefficients hostile =
+      runtime::coefficients_from_f0_table(bare, {std::nan(""), -3.0, 7.0});
+  const runtime::Coefficients clamped = runtime::coefficients_from_f0_table(bare, {0.0, 0.0, 1.0});
+  EXPECT_EQ(hostile, clamped);
+  EXPECT_EQ(clamped[0][0], 0.0);
+  EXPECT_EQ(clamped[2][0], 1.0);
+  for (std::size_t i = 2; i < 4; ++i) {
+    EXPECT_EQ(clamped[0][i], bare.in_air.front()[0][i]);
+    EXPECT_EQ(clamped[2][i], bare.in_air.back()[2][i]);
+  }
+  EXPECT_THROW(runtime::under_coat_coefficients_from_f0_table(bare, {0.5, 0.5, 0.5}),
+               std::logic_error);
+}
+
 TEST(F0Table, OnlyWhereEachChannelIsItsOwn) {
   Material edge = metal({0.9, 0.8, 0.6}, {0.7, 0.9, 1.0}, std::nullopt);
   edge.color_space = ColorSpace::lin_rec709;  // as glTF import writes it
