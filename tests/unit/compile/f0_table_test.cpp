@@ -11,6 +11,7 @@
 
 #include "compile/f0_table.h"
 #include "matc/runtime/shipped_bases.h"
+#include "sanitized_build.h"
 
 namespace matc {
 namespace {
@@ -80,8 +81,11 @@ TEST(F0Table, BareEdgeColouredMetalFollowsTheCompileClosely) {
 }
 
 TEST(F0Table, CoatedMetalsFollowTheCompileWithinTheFitsOwnError) {
-  for (const double ior : {1.3, 1.5, 1.6}) {
-    for (const Rgb tint : {Rgb{1, 1, 1}, Rgb{0.7, 0.9, 1.0}}) {
+  // Under the sanitizers (21 s for all six) glTF's default coat with an edge colour stands for the
+  // others: the code is the same.
+  for (const double ior : {1.5, 1.3, 1.6}) {
+    for (const Rgb tint : {Rgb{0.7, 0.9, 1.0}, Rgb{1, 1, 1}}) {
+      if (test::kSanitizedBuild && (ior != 1.5 || tint[0] == 1.0)) continue;
       const F0TableError error = table_error(tint, CoatInput{1.0, ior, 0.0, {1, 1, 1}});
       EXPECT_LT(error.table, error.fit) << "coat " << ior << " tint " << tint[0];
       EXPECT_LT(error.table, 0.01) << "coat " << ior << " tint " << tint[0];
