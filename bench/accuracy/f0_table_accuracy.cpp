@@ -3,13 +3,13 @@
 // texture, the largest |F from the table - F compiled at the pixel's own F0|, beside the largest
 // error of those compiles against the exact curve. Prints the table docs/gltf.md holds
 // (ctest f0_table_docs_current).
-#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <fmt/core.h>
 
+#include "bake/image_map.h"  // srgb_to_linear: how the bake decodes an 8-bit sRGB map
 #include "compile/f0_table.h"
 #include "matc/runtime/shipped_bases.h"
 
@@ -21,17 +21,12 @@ struct Case {
   std::optional<matc::CoatInput> coat;
 };
 
-double srgb_level(int level) {
-  const double v = level / 255.0;
-  return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-}
-
 }  // namespace
 
 int main() {
   std::vector<double> levels;
   for (int level = 0; level < 256; ++level)
-    levels.push_back(srgb_level(level));
+    levels.push_back(matc::srgb_to_linear(level / 255.0));
   const std::vector<Case> cases = {
       {"edge colour (0.6, 0.8, 1.0), bare", {0.6, 0.8, 1.0}, std::nullopt},
       {"edge colour (0.9, 0.95, 1.0), bare", {0.9, 0.95, 1.0}, std::nullopt},

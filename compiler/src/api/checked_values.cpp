@@ -6,13 +6,18 @@
 
 namespace matc::api {
 
-void check_unit_interval(std::string_view argument, std::span<const double> values) {
+void check_each(std::string_view argument, std::span<const double> values, bool (*allowed)(double),
+                std::string_view takes) {
   for (std::size_t i = 0; i < values.size(); ++i) {
-    if (!(values[i] >= 0.0 && values[i] <= 1.0)) {
+    if (!allowed(values[i]))
       throw std::invalid_argument(
-          fmt::format("{}: element {} is {}; a number in [0, 1]", argument, i, values[i]));
-    }
+          fmt::format("{}: element {} is {}; {}", argument, i, values[i], takes));
   }
+}
+
+void check_unit_interval(std::string_view argument, std::span<const double> values) {
+  check_each(
+      argument, values, [](double x) { return x >= 0.0 && x <= 1.0; }, "a number in [0, 1]");
 }
 
 void check_ndotv_roughness(std::span<const double> ndotv, std::span<const double> roughness) {

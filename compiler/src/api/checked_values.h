@@ -8,6 +8,9 @@
 
 namespace matc::api {
 
+// Every value one `allowed` takes, else std::invalid_argument "ARGUMENT: element I is V; TAKES".
+void check_each(std::string_view argument, std::span<const double> values, bool (*allowed)(double),
+                std::string_view takes);
 // Every value in [0, 1] (NaN refused).
 void check_unit_interval(std::string_view argument, std::span<const double> values);
 // NdotV and roughness as the preintegrated evaluations take them: each in [0, 1], one of each.

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "bake/image_map.h"  // srgb_to_linear: how the bake decodes an 8-bit sRGB map
 #include "compile/f0_table.h"
 #include "matc/runtime/shipped_bases.h"
 #include "sanitized_build.h"
@@ -22,12 +23,6 @@ Material metal(const Rgb& f0, const Rgb& tint, std::optional<CoatInput> coat) {
   material.model = F82TintInput{f0, tint};
   material.coat = coat;
   return material;
-}
-
-// An 8-bit sRGB level decoded to linear, as the GPU samples a base colour texture.
-double srgb_level(int level) {
-  const double v = level / 255.0;
-  return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
 }
 
 TEST(F0Table, EntriesAreTheCompileAtTheirF0) {
@@ -63,7 +58,7 @@ TEST(F0Table, EntriesAreTheCompileAtTheirF0) {
 std::vector<double> texture_levels() {
   std::vector<double> f0s;
   for (int level = 0; level < 256; level += level < 32 ? 1 : 8)
-    f0s.push_back(srgb_level(level));
+    f0s.push_back(srgb_to_linear(level / 255.0));
   return f0s;
 }
 

@@ -178,6 +178,15 @@ TEST(GltfFresnelExtension, ThePublicCallCompilesEachMetalIntoItsMaterial) {
 // follows the texture: the coefficients are linear in F0, so F0 (1, 0, 0, 0) + (1 - F0) times
 // them is the compile at the factor. Under an edge colour or a coat the curve is not linear in F0,
 // and an untextured metal needs nothing more: neither gets them.
+// Rows R, G, B of c_0..c_3 as the extension writes them.
+runtime::Coefficients coefficient_rows(const json& value) {
+  runtime::Coefficients out{};
+  for (std::size_t c = 0; c < 3; ++c)
+    for (std::size_t i = 0; i < 4; ++i)
+      out[c][i] = value[c][i].get<double>();
+  return out;
+}
+
 TEST(GltfFresnelExtension, ATexturedSchlickMetalCarriesItsCoefficientsAtZeroF0) {
   const std::string texture = R"("baseColorTexture": {"index": 0})";
   const std::string edge =
@@ -210,13 +219,8 @@ TEST(GltfFresnelExtension, ATexturedSchlickMetalCarriesItsCoefficientsAtZeroF0) 
         {basis, "acescg", ""});
     // The runtime's per-pixel coefficients (the shaders' matc_coefficients_from_f0) at the
     // factor are the compile at the factor.
-    runtime::Coefficients zero_rows{}, factor_rows{};
-    for (std::size_t c = 0; c < 3; ++c) {
-      for (std::size_t i = 0; i < 4; ++i) {
-        zero_rows[c][i] = trim["zeroF0Coefficients"][c][i].get<double>();
-        factor_rows[c][i] = trim["coefficients"][c][i].get<double>();
-      }
-    }
+    const runtime::Coefficients zero_rows = coefficient_rows(trim["zeroF0Coefficients"]);
+    const runtime::Coefficients factor_rows = coefficient_rows(trim["coefficients"]);
     const runtime::Coefficients per_pixel = runtime::coefficients_from_f0(
         zero_rows, {factor_rows[0][0], factor_rows[1][0], factor_rows[2][0]});
     for (std::size_t c = 0; c < 3; ++c)
@@ -261,13 +265,6 @@ TEST(GltfFresnelExtension, ATexturedMetalUnderAnEdgeColourOrACoatCarriesItsF0Tab
   };
   EXPECT_FALSE(extension(0).contains("f0Table"));
   EXPECT_FALSE(extension(3).contains("f0Table"));
-  const auto rows = [](const json& value) {
-    runtime::Coefficients out{};
-    for (std::size_t c = 0; c < 3; ++c)
-      for (std::size_t i = 0; i < 4; ++i)
-        out[c][i] = value[c][i].get<double>();
-    return out;
-  };
   const runtime::ShaderBasis& shader = runtime::shipped_shader_basis(runtime::kDefaultBasis);
   for (const std::size_t i : {std::size_t{1}, std::size_t{2}}) {
     ASSERT_TRUE(extension(i).contains("f0Table")) << i;
@@ -277,19 +274,19 @@ TEST(GltfFresnelExtension, ATexturedMetalUnderAnEdgeColourOrACoatCarriesItsF0Tab
     EXPECT_EQ(entries.contains("underCoatCoefficients"), coated);
     runtime::F0Table table;
     for (std::size_t e = 0; e < runtime::kF0TableEntries; ++e)
-      table.in_air[e] = rows(entries["coefficients"][e]);
+      table.in_air[e] = coefficient_rows(entries["coefficients"][e]);
     if (coated) {
       table.under_coat.emplace();
       for (std::size_t e = 0; e < runtime::kF0TableEntries; ++e)
-        (*table.under_coat)[e] = rows(entries["underCoatCoefficients"][e]);
+        (*table.under_coat)[e] = coefficient_rows(entries["underCoatCoefficients"][e]);
     }
-    const runtime::Coefficients compiled = rows(extension(i)["coefficients"]);
+    const runtime::Coefficients compiled = coefficient_rows(extension(i)["coefficients"]);
     const Rgb factor{compiled[0][0], compiled[1][0], compiled[2][0]};
     const runtime::Coefficients in_air = runtime::coefficients_from_f0_table(table, factor);
     runtime::CoatCoefficients coat, compiled_coat;
     if (coated) {
       const json& c = extension(i)["coat"];
-      compiled_coat.under_coat = rows(c["underCoatCoefficients"]);
+      compiled_coat.under_coat = coefficient_rows(c["underCoatCoefficients"]);
       for (std::size_t k = 0; k < 4; ++k)
         compiled_coat.coat[k] = c["coatCoefficients"][k].get<double>();
       compiled_coat.weight = c["weight"].get<double>();
