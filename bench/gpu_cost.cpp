@@ -47,7 +47,7 @@ struct Comparison {
   bool tinted_coat = false;  // ours_coated under a tinted coat instead of a clear one
 };
 
-const std::array<Comparison, 18> kComparisons = {{
+const std::array<Comparison, 20> kComparisons = {{
     {"F alone, compiled coefficients", FresnelQuantity::direct, FresnelModel::ours,
      FresnelModel::schlick, std::nullopt},
     {"one GGX light, compiled coefficients", FresnelQuantity::ggx_light, FresnelModel::ours,
@@ -63,6 +63,10 @@ const std::array<Comparison, 18> kComparisons = {{
      "vs F0 map",
      FresnelQuantity::ggx_light, FresnelModel::from_f0, FresnelModel::schlick_textured,
      std::nullopt},
+    {"one GGX light, textured glTF metal under an edge colour: per pixel through its F0 table "
+     "(MATC_COEFFICIENTS_FROM_F0_TABLE) vs F0 map",
+     FresnelQuantity::ggx_light, FresnelModel::f0_table, FresnelModel::schlick_textured,
+     std::nullopt},
     {"split-sum image light (environment and table fetches)", FresnelQuantity::preintegrated,
      FresnelModel::ours, FresnelModel::schlick, 1.10},
     {"split-sum image light, textured: coefficient table vs F0 map", FresnelQuantity::preintegrated,
@@ -71,6 +75,10 @@ const std::array<Comparison, 18> kComparisons = {{
      FresnelModel::baked, FresnelModel::schlick_textured, std::nullopt},
     {"split-sum image light, textured glTF metal: per pixel from the F0 map vs F0 map",
      FresnelQuantity::preintegrated, FresnelModel::from_f0, FresnelModel::schlick_textured,
+     std::nullopt},
+    {"split-sum image light, textured glTF metal under an edge colour: through its F0 table vs F0 "
+     "map",
+     FresnelQuantity::preintegrated, FresnelModel::f0_table, FresnelModel::schlick_textured,
      std::nullopt},
     {"one quad light (LTC)", FresnelQuantity::quad_light, FresnelModel::ours, FresnelModel::schlick,
      1.05},

@@ -14,7 +14,7 @@
 {{material}}
 layout(set = 0, binding = 0) uniform texture2D matc_lut;
 layout(set = 0, binding = 1) uniform sampler matc_lut_sampler;
-#if MATC_COST_TABLE
+#if MATC_COST_TABLE || MATC_COST_F0_TABLE
 layout(set = 0, binding = 2) uniform texture2D matc_coefficient_table;
 #endif
 #if MATC_COST_QUAD_LIGHT || MATC_COST_QUAD_LIGHT_FOLLOWING
@@ -77,6 +77,10 @@ void main() {
 #elif MATC_COST_FROM_F0
   // The material's rows stand in for a glTF metal's at F0 = 0 (the same instructions).
   MatcFresnelCoefficients c = matc_coefficients_from_f0(matc_coefficients_{{name}}, a);
+#elif MATC_COST_F0_TABLE
+  // The coefficient table's binding stands in for the F0 table (the same fetch instructions).
+  MatcFresnelCoefficients c =
+      MATC_COEFFICIENTS_FROM_F0_TABLE(sampler2D(matc_coefficient_table, matc_lut_sampler), a);
 #else
   MatcFresnelCoefficients c = matc_coefficients_{{name}};
 #endif
@@ -84,7 +88,7 @@ void main() {
 #if MATC_COST_SCHLICK
 #define COST_FRESNEL(MU) matc_cost_schlick(F0, (MU))
 #define COST_FRESNEL_PREINTEGRATED(TEXEL) (F0 * (TEXEL).x + (vec3(1.0) - F0) * (TEXEL).y)
-#elif MATC_COST_TABLE || MATC_COST_BAKED || MATC_COST_FROM_F0
+#elif MATC_COST_TABLE || MATC_COST_BAKED || MATC_COST_FROM_F0 || MATC_COST_F0_TABLE
 #define COST_FRESNEL(MU) matc_fresnel(c, (MU))
 #define COST_FRESNEL_PREINTEGRATED(TEXEL) matc_fresnel_preintegrated(c, (TEXEL))
 #else

@@ -30,6 +30,7 @@ int material_map_count(FresnelModel model) {
   switch (model) {
     case FresnelModel::schlick_textured:
     case FresnelModel::from_f0:
+    case FresnelModel::f0_table:
       return 1;
     case FresnelModel::table:
       return 2;
@@ -50,7 +51,8 @@ int material_map_count(FresnelModel model) {
 std::vector<CostPassBinding> cost_pass_bindings(FresnelModel model, FresnelQuantity quantity) {
   std::vector<CostPassBinding> bindings = {{0, CostPassResource::table},
                                            {1, CostPassResource::sampler}};
-  if (model == FresnelModel::table) bindings.push_back({2, CostPassResource::coefficient_table});
+  if (model == FresnelModel::table || model == FresnelModel::f0_table)
+    bindings.push_back({2, CostPassResource::coefficient_table});
   if (quantity == FresnelQuantity::quad_light || quantity == FresnelQuantity::quad_light_following)
     bindings.push_back({3, CostPassResource::ltc_table});
   for (int map = 0; map < material_map_count(model); ++map)
@@ -81,6 +83,7 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
   if (model == FresnelModel::table) model_name = "ours from the coefficient table";
   if (model == FresnelModel::baked) model_name = "ours from baked coefficient textures";
   if (model == FresnelModel::from_f0) model_name = "ours per pixel from an F0 map";
+  if (model == FresnelModel::f0_table) model_name = "ours per pixel from an F0 map and F0 table";
   if (model == FresnelModel::ours_coated) model_name = "ours, coated (two lobes)";
   if (model == FresnelModel::ours_with_schlick_coat) model_name = "ours under a Schlick coat lobe";
   if (model == FresnelModel::schlick_clear_coat) model_name = "Filament's clear coat (Schlick)";
@@ -98,14 +101,16 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
        {"variant", fmt::format("{} {}", model_name, quantity_name)},
        {"defines",
         fmt::format("#define MATC_COST_SCHLICK {}\n#define MATC_COST_TABLE {}\n#define "
-                    "MATC_COST_BAKED {}\n#define MATC_COST_FROM_F0 {}\n#define MATC_COST_MAPS "
+                    "MATC_COST_BAKED {}\n#define MATC_COST_FROM_F0 {}\n#define MATC_COST_F0_TABLE "
+                    "{}\n#define MATC_COST_MAPS "
                     "{}\n#define MATC_COST_DIRECT "
                     "{}\n#define MATC_COST_GGX_LIGHT {}\n#define MATC_COST_QUAD_LIGHT {}\n#define "
                     "MATC_COST_QUAD_LIGHT_FOLLOWING {}\n#define MATC_COST_CLOSED_FORM {}\n#define "
                     "MATC_COST_IMAGE_LIGHT {}\n#define MATC_COST_COAT {}",
                     flag(schlick), flag(model == FresnelModel::table),
                     flag(model == FresnelModel::baked), flag(model == FresnelModel::from_f0),
-                    material_map_count(model), flag(quantity == FresnelQuantity::direct),
+                    flag(model == FresnelModel::f0_table), material_map_count(model),
+                    flag(quantity == FresnelQuantity::direct),
                     flag(quantity == FresnelQuantity::ggx_light),
                     flag(quantity == FresnelQuantity::quad_light),
                     flag(quantity == FresnelQuantity::quad_light_following),

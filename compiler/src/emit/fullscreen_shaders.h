@@ -18,7 +18,9 @@ namespace matc {
 // coefficients; ours per pixel from reflectivity and edge-tint maps through the coefficient table
 // (a textured metal); ours from baked coefficient textures (F0, C2, C3 maps, `matc bake`); ours per
 // pixel from an F0 map on the curve's rows at F0 = 0 (a glTF metal's textured Schlick curve,
-// matc_coefficients_from_f0). Coated
+// matc_coefficients_from_f0); ours per pixel from an F0 map through an F0 table (a textured glTF
+// metal under an edge colour or a coat, MATC_COEFFICIENTS_FROM_F0_TABLE; the coefficient table's
+// binding stands in for it: texelFetch's code does not depend on the texture). Coated
 // metals (docs/coating.md), two lobes each: ours for a coated material (its base and coat lobes);
 // ours bare with a Schlick coat lobe (F0 0.04) attenuating it; Filament's clear coat (Schlick with
 // F0 converted into the coat, f0ClearCoatToSurface, under the same Schlick coat lobe).
@@ -29,6 +31,7 @@ enum class FresnelModel {
   table,
   baked,
   from_f0,
+  f0_table,
   ours_coated,
   ours_with_schlick_coat,
   schlick_clear_coat

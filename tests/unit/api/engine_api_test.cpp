@@ -133,12 +133,16 @@ TEST(SpirvApi, TheF0TableTextureReadersCompile) {
   const std::string glsl = "#version 450\n" + build.library_source("glsl") + R"(
 layout(local_size_x = 64) in;
 layout(set = 0, binding = 0) uniform sampler2D matc_f0_table;
-layout(std430, set = 0, binding = 1) buffer Data { vec4 values[]; };
+layout(set = 0, binding = 1) uniform texture2D matc_f0_texture;
+layout(set = 0, binding = 2) uniform sampler matc_nearest;
+layout(std430, set = 0, binding = 3) buffer Data { vec4 values[]; };
 void main() {
   uint i = gl_GlobalInvocationID.x;
   vec3 f0 = values[i].rgb;
   MatcFresnelCoefficients in_air = MATC_COEFFICIENTS_FROM_F0_TABLE(matc_f0_table, f0);
-  MatcFresnelCoefficients under = MATC_UNDER_COAT_FROM_F0_TABLE(matc_f0_table, f0);
+  // A texture and a sampler bound apart, combined in the call (a comma inside the argument).
+  MatcFresnelCoefficients under =
+      MATC_UNDER_COAT_FROM_F0_TABLE(sampler2D(matc_f0_texture, matc_nearest), f0);
   values[i] = vec4(matc_fresnel(in_air, values[i].w) + matc_fresnel(under, values[i].w), 1.0);
 }
 )";
