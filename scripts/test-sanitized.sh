@@ -15,34 +15,38 @@ CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DMATC_BUILD_FUZZERS=ON \
   -DMATC_SANITIZE=address,undefined,fuzzer-no-link -DMATC_BUILD_PYTHON=OFF -DMATC_BUILD_WASM=OFF >/dev/null
 cmake --build build-fuzz
 
+# libFuzzer writes crash, leak and slow-unit inputs to the working directory unless told where:
+# into the (ignored) build folder, never the source tree.
+artifacts=build-fuzz/fuzz-artifacts/
+mkdir -p "$artifacts"
 corpus=$(mktemp -d)
 trap 'rm -rf "$corpus"' EXIT
-build-fuzz/tests/fuzz/matc_material_fuzzer -max_total_time="$fuzz_seconds" -max_len=4096 \
+build-fuzz/tests/fuzz/matc_material_fuzzer -artifact_prefix="$artifacts" -max_total_time="$fuzz_seconds" -max_len=4096 \
   -dict=tests/fuzz/material.dict -print_final_stats=1 "$corpus" tests/fuzz/corpus 2>&1 | tail -n 20
 # The textured-metal inputs (option parser, coefficient-table path): a quarter of that time.
 table_corpus=$(mktemp -d)
 trap 'rm -rf "$corpus" "$table_corpus"' EXIT
-build-fuzz/tests/fuzz/matc_coefficient_table_fuzzer -max_total_time="$((fuzz_seconds / 4 + 1))" \
+build-fuzz/tests/fuzz/matc_coefficient_table_fuzzer -artifact_prefix="$artifacts" -max_total_time="$((fuzz_seconds / 4 + 1))" \
   -max_len=256 -print_final_stats=1 "$table_corpus" tests/fuzz/corpus_coefficient_table 2>&1 |
   tail -n 8
 # matc eval's --quad-light parser and the area-light integrals on what it accepts: 10 s.
 light_corpus=$(mktemp -d)
 trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus"' EXIT
-build-fuzz/tests/fuzz/matc_polygon_light_fuzzer -max_total_time=10 -max_len=256 \
+build-fuzz/tests/fuzz/matc_polygon_light_fuzzer -artifact_prefix="$artifacts" -max_total_time=10 -max_len=256 \
   -print_final_stats=1 "$light_corpus" tests/fuzz/corpus_polygon_light 2>&1 | tail -n 8
 # The MaterialX importer (documents re-read and compiled): 15 s.
 mtlx_corpus=$(mktemp -d)
 trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus"' EXIT
-build-fuzz/tests/fuzz/matc_materialx_fuzzer -max_total_time=15 -max_len=4096 \
+build-fuzz/tests/fuzz/matc_materialx_fuzzer -artifact_prefix="$artifacts" -max_total_time=15 -max_len=4096 \
   -dict=tests/fuzz/materialx.dict -print_final_stats=1 "$mtlx_corpus" tests/fuzz/corpus_materialx 2>&1 | tail -n 8
 # MaterialX's two XML readers, pugixml (native) and rapidxml (WebAssembly), against each other on
 # the same seeds (its inputs go to the importer's scratch corpus): 10 s.
-build-fuzz/tests/fuzz/matc_xml_tree_fuzzer -max_total_time=10 -max_len=4096 \
+build-fuzz/tests/fuzz/matc_xml_tree_fuzzer -artifact_prefix="$artifacts" -max_total_time=10 -max_len=4096 \
   -dict=tests/fuzz/materialx.dict -print_final_stats=1 "$mtlx_corpus" tests/fuzz/corpus_materialx 2>&1 | tail -n 8
 # The glTF importer (assets re-read and compiled; first byte: .glb when odd): 10 s.
 gltf_corpus=$(mktemp -d)
 trap 'rm -rf "$corpus" "$table_corpus" "$light_corpus" "$mtlx_corpus" "$gltf_corpus"' EXIT
-build-fuzz/tests/fuzz/matc_gltf_fuzzer -max_total_time=10 -max_len=4096 \
+build-fuzz/tests/fuzz/matc_gltf_fuzzer -artifact_prefix="$artifacts" -max_total_time=10 -max_len=4096 \
   -dict=tests/fuzz/gltf.dict -print_final_stats=1 "$gltf_corpus" tests/fuzz/corpus_gltf 2>&1 | tail -n 8
 # The public API as the faces call it (options by name, any document, curves, texts): 10 s.
 # Seeds: the material corpus behind an options byte (defaults; the paper basis in ACEScg).
@@ -53,7 +57,7 @@ for seed in tests/fuzz/corpus/*; do
     { printf "\\$options"; cat "$seed"; } >"$api_corpus/$(basename "$seed").$options"
   done
 done
-build-fuzz/tests/fuzz/matc_public_api_fuzzer -max_total_time=10 -max_len=4096 \
+build-fuzz/tests/fuzz/matc_public_api_fuzzer -artifact_prefix="$artifacts" -max_total_time=10 -max_len=4096 \
   -dict=tests/fuzz/material.dict -print_final_stats=1 "$api_corpus" 2>&1 | tail -n 8
 # matc bake's image readers and asset parser: seeds written by matc_catalogue_images (no image is
 # stored in the repository), each once per mode (first byte: sRGB, linear, asset text); 15 s.
@@ -67,7 +71,7 @@ for seed in "$image_seeds"/*; do
   done
 done
 printf '\002{"name": "brass", "artistic": {"reflectivity": {"file": "r.exr", "encoding": "linear"}, "edge_tint": [0.5, 0.6, 0.7]}}' >"$image_corpus/asset.2"
-build-fuzz/tests/fuzz/matc_image_map_fuzzer -max_total_time=15 -max_len=4096 -rss_limit_mb=4096 \
+build-fuzz/tests/fuzz/matc_image_map_fuzzer -artifact_prefix="$artifacts" -max_total_time=15 -max_len=4096 -rss_limit_mb=4096 \
   -print_final_stats=1 "$image_corpus" 2>&1 | tail -n 8
 
 # Mesa's drivers (lavapipe, and RADV for gpu_cost), LLVM and the Vulkan loader keep allocations
