@@ -76,7 +76,9 @@ uniform sampler2D matc_ltc;
 	uniform sampler2D matc_coefficient_table;
 	uniform sampler2D matc_reflectivity_map;
 	uniform sampler2D matc_edge_tint_map;
-${colours}#elif defined(MATC_SOURCE_BAKED)
+${colours}#elif defined(MATC_SOURCE_F0_TABLE)
+	uniform highp sampler2D matc_f0_table;
+#elif defined(MATC_SOURCE_BAKED)
 	uniform sampler2D matc_c2_map;
 	uniform sampler2D matc_c3_map;
 	#ifdef MATC_BAKED_F0
@@ -108,18 +110,28 @@ vec3 matc_base_compensation() { return matc_energy_compensation(matc_c, matc_bba
 ${material.coat.snippet}
 vec4 matc_coat_bbar;
 float matc_ndotv;
+#ifdef MATC_SOURCE_F0_TABLE
+// A textured metal: the metal's coefficients under the coat per pixel, from its F0 table.
+MatcFresnelCoefficients matc_under_coat;
+vec3 matc_base_fresnel(float mu) { return matc_fresnel_textured_${name}(matc_under_coat, mu); }
+vec3 matc_base_preintegrated() {
+	return matc_fresnel_preintegrated_textured_${name}(matc_under_coat, matc_bbar, matc_coat_bbar, matc_ndotv);
+}
+#else
+#define matc_under_coat matc_under_coat_coefficients_${name}
 vec3 matc_base_fresnel(float mu) { return matc_fresnel_${name}(mu); }
 vec3 matc_base_preintegrated() { return matc_fresnel_preintegrated_${name}(matc_bbar, matc_coat_bbar, matc_ndotv); }
+#endif
 // The base's multiple scattering as a bare metal's, with the metal's F0 under the coat.
-vec3 matc_base_compensation() { return matc_energy_compensation(matc_under_coat_coefficients_${name}, matc_bbar); }
+vec3 matc_base_compensation() { return matc_energy_compensation(matc_under_coat, matc_bbar); }
 float matc_coat_lobe_fresnel(float mu) { return matc_coat_fresnel_${name}(mu); }
 float matc_coat_lobe_preintegrated() { return matc_coat_fresnel_preintegrated_${name}(matc_coat_bbar); }
 `;
 }
 
 // What the engine's main() computes before its lights: the pixel's coefficients (MATC_SOURCE_*
-// says from where; maps at texture coordinate `uv`, F0 of baked metals without an F0 map and of
-// Schlick metals from `baseColour`) and matc_lut's texel at (`ndotv`, `roughness`), and for a coated material
+// says from where; maps at texture coordinate `uv`, F0 of baked metals without an F0 map, of
+// Schlick metals and of F0-table metals from `baseColour`) and matc_lut's texel at (`ndotv`, `roughness`), and for a coated material
 // (MATC_COATED) at (`ndotv`, `coatRoughness`), all GLSL expressions of the engine.
 export function pixelSetupGlsl({ uv, baseColour, ndotv, roughness, coatRoughness }) {
   return `
@@ -136,6 +148,13 @@ export function pixelSetupGlsl({ uv, baseColour, ndotv, roughness, coatRoughness
 		vec3 matc_f0 = ${baseColour};
 	#endif
 	matc_c = matc_coefficients_from_baked(matc_f0, texture(matc_c2_map, ${uv}).rgb, texture(matc_c3_map, ${uv}).rgb);
+#elif defined(MATC_SOURCE_F0_TABLE)
+	// A textured metal under an edge colour or a coat: its coefficients at the engine's base colour
+	// (factor times texture), interpolated between its F0 table's entries (docs/gltf.md).
+	matc_c = MATC_COEFFICIENTS_FROM_F0_TABLE(matc_f0_table, ${baseColour});
+	#ifdef MATC_COATED
+		matc_under_coat = MATC_UNDER_COAT_FROM_F0_TABLE(matc_f0_table, ${baseColour});
+	#endif
 #elif defined(MATC_SOURCE_SCHLICK)
 	// Schlick's curve of the engine's base colour (a glTF metal's factor times its texture), from
 	// the curve's coefficients at F0 = 0.
@@ -374,12 +393,16 @@ export async function gltfExtensionMaterial(build, extension) {
   if (!finiteRows(rows)) {
     throw new MatcWebError(`its ${kGltfFresnelExtension}.coefficients must be finite numbers`);
   }
+  // A textured metal's per-pixel data (Schlick's curve at F0 = 0, or its F0 table), checked here.
+  const perPixel = {};
+  if (extension.zeroF0Coefficients !== undefined) {
+    perPixel.zeroF0Coefficients = checkedZeroF0Rows(extension.zeroF0Coefficients, kGltfFresnelExtension);
+  }
+  if (extension.f0Table !== undefined) {
+    perPixel.f0Table = checkedF0Table(extension.f0Table, Boolean(extension.coat), `${kGltfFresnelExtension}.f0Table`);
+  }
   if (!extension.coat) {
-    const metal = { name: extension.name, basis: build.basis, coefficients: rows, coat: null };
-    if (extension.zeroF0Coefficients !== undefined) {
-      metal.zeroF0Coefficients = checkedZeroF0Rows(extension.zeroF0Coefficients, kGltfFresnelExtension);
-    }
-    return metal;
+    return { name: extension.name, basis: build.basis, coefficients: rows, coat: null, ...perPixel };
   }
   const advice = "give the loader the compiler (matc: createMatc()) or a build directory that compiled this " +
                  "asset (matc -o DIR asset.glb)";
@@ -396,7 +419,7 @@ export async function gltfExtensionMaterial(build, extension) {
     throw new MatcWebError(`the build directory's ${extension.name} is not this asset's metal (its coefficients ` +
                            "differ): compile the same asset with the same options into it");
   }
-  return material;
+  return { ...material, ...perPixel };
 }
 
 // The glTF material `index` of the asset `json` alone, as a glTF asset the importer reads (a
@@ -413,18 +436,27 @@ const isGltfMetal = (material) => (material.pbrMetallicRoughness?.metallicFactor
 // What the engines' glTF loaders (three/matc-gltf.mjs, babylon/matc-gltf.mjs) make of an asset's
 // materials: `metalOf(index)` resolves to { metal (as build.loadMaterial gives it), from:
 // "extension" | "compiled", source: useMatcFresnel's }, or null for a material that stays the
-// engine's. A textured metal of Schlick's curve (no edge colour, no coat) gets the source
-// { schlick }, its F0 per pixel the engine's base colour (factor times texture). A metal's
+// engine's. A textured metal follows the engine's base colour (factor times texture) per pixel:
+// of Schlick's curve (no edge colour, no coat) with the source { schlick }, under an edge colour
+// or a coat with { material, f0Table }; one whose extension carries neither (compiled in another
+// working space) is shaded at its factor, with `note(index, why)`. A metal's
 // MATC_materials_fresnel is used when it fits the build; otherwise `matc` (createMatc(), when
 // given) compiles the glTF material with `compile`'s options. A metal matc cannot take gets
 // `warn(index, why)`; a non-metal nothing. Each index is resolved once.
-export function gltfMetals({ matc = null, build, compile = {}, json, warn }) {
+export function gltfMetals({ matc = null, build, compile = {}, json, warn, note = warn }) {
   const found = new Map();
   const textured = (index) => json.materials[index].pbrMetallicRoughness?.baseColorTexture !== undefined;
-  const withSource = (metal, from, zeroF0Coefficients) => ({
-    metal, from,
-    source: zeroF0Coefficients ? { schlick: { basis: metal.basis, zeroF0Coefficients } } : { material: metal },
-  });
+  // `perPixel`: the extension's (or the metal's, from gltfExtensionMaterial) zeroF0Coefficients or f0Table.
+  const withSource = (index, metal, from, perPixel) => {
+    if (!textured(index)) return { metal, from, source: { material: metal } };
+    if (perPixel?.zeroF0Coefficients) {
+      return { metal, from, source: { schlick: { basis: metal.basis, zeroF0Coefficients: perPixel.zeroF0Coefficients } } };
+    }
+    if (perPixel?.f0Table) return { metal, from, source: { material: metal, f0Table: perPixel.f0Table } };
+    note(index, `its baseColorTexture is not followed (its ${kGltfFresnelExtension} has no f0Table: ` +
+                "compiled in a working space other than lin_rec709); shaded at its baseColorFactor");
+    return { metal, from, source: { material: metal } };
+  };
   // `matc gltf` in the page: the importer decides which metals follow their texture per pixel, and
   // writes their zeroF0Coefficients, as for an asset written offline.
   const compileInPage = async (index) => {
@@ -434,7 +466,7 @@ export function gltfMetals({ matc = null, build, compile = {}, json, warn }) {
       if (!compiled) return null;
       const written = JSON.parse(new TextDecoder().decode(asset.bytes));
       const extension = written.materials[0].extensions[kGltfFresnelExtension];
-      return withSource(await build.loadMaterial(compiled), "compiled", extension.zeroF0Coefficients);
+      return withSource(index, await build.loadMaterial(compiled), "compiled", extension);
     } catch (error) {
       // Not a metal: the engine's material stays, silently. Anything else (a value matc refuses,
       // options that do not fit the build) is said.
@@ -449,7 +481,7 @@ export function gltfMetals({ matc = null, build, compile = {}, json, warn }) {
     if (extension && isGltfMetal(material)) {
       try {
         const metal = await gltfExtensionMaterial(build, extension);
-        return withSource(metal, "extension", textured(index) ? metal.zeroF0Coefficients : undefined);
+        return withSource(index, metal, "extension", metal);
       } catch (error) {
         refusal = error.message;
       }
@@ -496,6 +528,44 @@ function checkedZeroF0Rows(rows, what) {
   return rows;
 }
 
+// The entries of an F0 table (MATC_materials_fresnel's f0Table, docs/gltf.md): entry i is the metal
+// compiled at F0 = (i / (kF0TableEntries - 1))^4.
+export const kF0TableEntries = 33;
+
+// An F0 table ({ coefficients, underCoatCoefficients: kF0TableEntries entries of 3 rows of c_0..c_3;
+// the latter only under a coat, `coated`}), or an error naming `what`.
+function checkedF0Table(table, coated, what) {
+  const entries = (value, field) => {
+    if (!Array.isArray(value) || value.length !== kF0TableEntries) {
+      throw new MatcWebError(`${what}.${field} must be ${kF0TableEntries} entries of 3 rows of 4 numbers`);
+    }
+    for (const entry of value) {
+      checkedRows(entry, what, field);
+      if (!finiteRows(entry)) throw new MatcWebError(`${what}.${field} must be finite numbers`);
+    }
+  };
+  entries(table?.coefficients, "coefficients");
+  if (coated !== (table.underCoatCoefficients !== undefined)) {
+    throw new MatcWebError(`${what}: ${coated ? "a coated metal's table needs" : "a bare metal's table has no"} ` +
+                           "underCoatCoefficients");
+  }
+  if (coated) entries(table.underCoatCoefficients, "underCoatCoefficients");
+  return table;
+}
+
+// An F0 table as the texels of an RGBA float texture of kF0TableEntries x 6, row-major (texel
+// (i, c) entry i's row of channel c in air, (i, 3 + c) under the coat; zero for a bare metal), as
+// matc's MATC_COEFFICIENTS_FROM_F0_TABLE and MATC_UNDER_COAT_FROM_F0_TABLE read it.
+export function f0TableTexels(table) {
+  const texels = new Float32Array(kF0TableEntries * 6 * 4);
+  const put = (entries, firstRow) => entries?.forEach((rows, i) => rows.forEach((row, channel) => {
+    texels.set(row, ((firstRow + channel) * kF0TableEntries + i) * 4);
+  }));
+  put(table.coefficients, 0);
+  put(table.underCoatCoefficients, 3);
+  return texels;
+}
+
 // Checks the areaLights option against what a coated material takes in an integration
 // (`allowed`): the quality level's area lights take bare metals.
 export function checkCoatedAreaLights(material, areaLights, allowed = ["matc", "engine"]) {
@@ -529,12 +599,16 @@ export function sourceKind(build, source) {
     checkedZeroF0Rows(zeroF0Coefficients, "schlick");
     return "schlick";
   }
+  if (source?.f0Table) {
+    if (!source.material) throw new MatcWebError("an F0 table (f0Table) comes with its { material }");
+    checkedF0Table(source.f0Table, Boolean(source.material.coat), "f0Table");
+  }
   if (source?.material) {
     if (source.material.basis !== build.basis) {
       throw new MatcWebError(`${source.material.name}: coefficients of basis ${source.material.basis}, ` +
                              `the build's tables are ${build.basis}`);
     }
-    return "material";
+    return source.f0Table ? "f0Table" : "material";
   }
   if (source?.reflectivityMap || source?.edgeTintMap) {
     if (!source.reflectivityMap || !source.edgeTintMap) {
@@ -555,5 +629,6 @@ export function sourceKind(build, source) {
     }
     return "baked";
   }
-  throw new MatcWebError("useMatcFresnel needs { material }, { schlick }, { reflectivityMap, edgeTintMap } or { baked }");
+  throw new MatcWebError("useMatcFresnel needs { material }, { material, f0Table }, { schlick }, " +
+                         "{ reflectivityMap, edgeTintMap } or { baked }");
 }

@@ -38,9 +38,10 @@ float3 matc_coat_tint_{{name}}(float mu) {
 // The base under the coat: in through the coat, reflected by the metal and the coat's underside
 // any number of times, out again: lerp(in air, (1 - f)^2 v / (1 - f min(v, 1)), weight), or
 // the second term alone under a full coat.
-float3 matc_coated_base_{{name}}(float4 values, float4 coat_values, float3 tint) {
+float3 matc_coated_base_{{name}}(MatcFresnelCoefficients under_coat, float4 values, float4 coat_values,
+                                    float3 tint) {
   float f = clamp(dot(matc_coat_coefficients_{{name}}, coat_values), 0.0, 1.0);
-  float3 v = matc_combine(matc_under_coat_coefficients_{{name}}, values) * tint;
+  float3 v = matc_combine(under_coat, values) * tint;
   // One reciprocal for the three channels' sums of bounces: 1 / d_c = (the other two) / (d_r d_g d_b).
   float3 d = max(1.0 - f * min(v, float3(1.0)), float3(1e-6));
   float scale = (1.0 - f) * (1.0 - f) / (d.x * d.y * d.z);
@@ -48,10 +49,21 @@ float3 matc_coated_base_{{name}}(float4 values, float4 coat_values, float3 tint)
   return {{base}};
 }
 
+// A textured metal under this coat (docs/gltf.md): the base lobe with this pixel's coefficients
+// under the coat, under_coat (MATC_UNDER_COAT_FROM_F0_TABLE of the metal's F0 table), in place of
+// matc_under_coat_coefficients_{{name}}; the coat and its layering are this material's.
+float3 matc_fresnel_textured_{{name}}(MatcFresnelCoefficients under_coat, float mu) {
+  float4 b = matc_basis(mu);
+  return matc_coated_base_{{name}}(under_coat, b, b, matc_coat_tint_{{name}}(mu));
+}
+float3 matc_fresnel_preintegrated_textured_{{name}}(MatcFresnelCoefficients under_coat, float4 bbar, float4 coat_bbar,
+                                                       float NdotV) {
+  return matc_coated_base_{{name}}(under_coat, bbar, coat_bbar, matc_coat_tint_{{name}}(NdotV));
+}
+
 // The base lobe's F for a direct light: mu = dot(V, H).
 float3 matc_fresnel_{{name}}(float mu) {
-  float4 b = matc_basis(mu);
-  return matc_coated_base_{{name}}(b, b, matc_coat_tint_{{name}}(mu));
+  return matc_fresnel_textured_{{name}}(matc_under_coat_coefficients_{{name}}, mu);
 }
 
 // The coat lobe's F for a direct light, its weight included: mu = dot(V, H).
@@ -63,7 +75,8 @@ float matc_coat_fresnel_{{name}}(float mu) {
 // The base lobe's preintegrated F: bbar from the table at matc_lut_texcoord(NdotV, roughness),
 // coat_bbar at matc_lut_texcoord(NdotV, matc_coat_roughness_{{name}}).
 float3 matc_fresnel_preintegrated_{{name}}(float4 bbar, float4 coat_bbar, float NdotV) {
-  return matc_coated_base_{{name}}(bbar, coat_bbar, matc_coat_tint_{{name}}(NdotV));
+  return matc_fresnel_preintegrated_textured_{{name}}(matc_under_coat_coefficients_{{name}}, bbar,
+                                                     coat_bbar, NdotV);
 }
 
 // The coat lobe's preintegrated F, its weight included.

@@ -1,6 +1,6 @@
 // The Babylon.js glTF loader extension (js/package/babylon/matc-gltf.mjs): the car asset built with
-// glTF-Transform (gltf-assets.mjs: a car paint under a clear coat, a chrome, a rubber tyre, an
-// iridescent foil) loaded by Babylon's own glTF loader (@babylonjs/loaders) in headless Chromium
+// glTF-Transform (gltf-assets.mjs: a textured car paint under a clear coat, a chrome, a rubber
+// tyre, an iridescent foil, a textured trim of Schlick's curve and an edge-coloured one) loaded by Babylon's own glTF loader (@babylonjs/loaders) in headless Chromium
 // three ways, as check-three-gltf.mjs loads it in three.js (gltf-loader-checks.mjs: compiled in
 // the page; as `matc gltf` wrote it with no compiler; the same with a build directory of the
 // asset), with the same checks: which materials became matc metals and from where, the warnings,
@@ -34,7 +34,9 @@ import { babylonProbeScene, renderBabylonProbe } from "/checks/babylon-scene-pag
       const container = await LoadAssetContainerAsync(url, scene);
       const byName = Object.fromEntries(container.materials.map((material) => [material.name, material]));
       const kinds = Object.fromEntries(container.materials.map((material) => [material.name,
-        material.metadata?.matc ? (material.matcFresnel.kind === "schlick" ? "per-pixel" : material.matcFresnel.coat ? "coated" : "bare") +
+        material.metadata?.matc ? (material.matcFresnel.kind === "schlick" ? "per-pixel" :
+                                   (material.matcFresnel.kind === "f0Table" ? "f0-table " : "") +
+                                   (material.matcFresnel.coat ? "coated" : "bare")) +
                                   " " + material.metadata.matc.from
                                 : "engine"]));
       return { byName, kinds, made: registration.materials.length };
@@ -66,8 +68,8 @@ import { babylonProbeScene, renderBabylonProbe } from "/checks/babylon-scene-pag
 
 await runLoaderCheck({
   engine: "Babylon.js", page, terms: kBabylonProbeTerms,
-  summary: (worst) => `Babylon.js's glTF loader with matc's extension: a glTF-Transform car asset's paint (coated) and ` +
-              `chrome became matc metals compiled in the page, the tyre and the iridescent foil kept Babylon's ` +
+  summary: (worst) => `Babylon.js's glTF loader with matc's extension: a glTF-Transform car asset's paint (coated), ` +
+              `chrome and trims (textured, per pixel) became matc metals compiled in the page, the tyre and the iridescent foil kept Babylon's ` +
               `material (the foil with a warning), largest difference from the CPU runtime ` +
               `${worst.compiled.toExponential(2)}; from matc gltf's asset without the compiler, the chrome took ` +
               `MATC_materials_fresnel's coefficients (${worst.extension.toExponential(2)}) and the coated paint kept ` +

@@ -1,6 +1,6 @@
 // The three.js GLTFLoader plugin (js/package/three/matc-gltf.mjs): a car asset built with
-// glTF-Transform (gltf-assets.mjs: a car paint under a clear coat, a chrome, a rubber tyre, an
-// iridescent foil) loaded by three.js's own GLTFLoader in headless Chromium three ways:
+// glTF-Transform (gltf-assets.mjs: a textured car paint under a clear coat, a chrome, a rubber
+// tyre, an iridescent foil, a textured trim of Schlick's curve and an edge-coloured one) loaded by three.js's own GLTFLoader in headless Chromium three ways:
 //   - compiled: car.glb, with the package's in-page compiler: the paint and the chrome become matc
 //     metals (the paint a coated one), the tyre and the foil keep three.js's material (the foil
 //     with a console warning that says why);
@@ -9,9 +9,9 @@
 //     three.js's material with a warning that its snippet is the compiler's;
 //   - directory: the same with a build directory that compiled the asset (`matc -o build car.glb`)
 //     and no compiler: the paint becomes a coated metal too, its snippet from the build.
-// The loaded paint's and chrome's materials, on the probe plane under the engine checks' lights,
-// equal the CPU runtime's prediction for the material files `matc import` writes from the same
-// asset, to 1e-4.
+// The loaded metals, on the probe plane under the engine checks' lights, equal the CPU runtime's
+// prediction for the material files `matc import` writes from the same asset (the textured ones
+// at their F0 per pixel), to 1e-4.
 //   node check-three-gltf.mjs MATC NPM_DIR
 import { modulePage } from "./browser-page.mjs";
 import { kProbeSize, kThreeJsProbeTerms } from "./engine-probes.mjs";
@@ -43,7 +43,8 @@ import { probeScene, probeSetup, renderProbePixels } from "/checks/three-scene-p
     gltf.scene.traverse((object) => { if (object.isMesh) byName[object.material.name] = object.material; });
     const kinds = Object.fromEntries(Object.entries(byName).map(([name, material]) =>
       [name, material.userData.matc ? (material.userData.matc.source.schlick ? "per-pixel" :
-                                       material.userData.matc.source.material.coat ? "coated" : "bare") +
+                                       (material.userData.matc.source.f0Table ? "f0-table " : "") +
+                                       (material.userData.matc.source.material.coat ? "coated" : "bare")) +
                                       " " + material.userData.matc.from : "engine"]));
     return { byName, kinds, made: gltf.userData.matcMaterials.length };
   };
@@ -71,8 +72,8 @@ import { probeScene, probeSetup, renderProbePixels } from "/checks/three-scene-p
 
 await runLoaderCheck({
   engine: "three.js", page, terms: kThreeJsProbeTerms,
-  summary: (worst) => `three.js GLTFLoader with matc's plugin: a glTF-Transform car asset's paint (coated) and chrome ` +
-              `became matc metals compiled in the page, the tyre and the iridescent foil kept three.js's material ` +
+  summary: (worst) => `three.js GLTFLoader with matc's plugin: a glTF-Transform car asset's paint (coated), chrome ` +
+              `and trims (textured, per pixel) became matc metals compiled in the page, the tyre and the iridescent foil kept three.js's material ` +
               `(the foil with a warning), largest difference from the CPU runtime ${worst.compiled.toExponential(2)}; ` +
               `from matc gltf's asset without the compiler, the chrome took MATC_materials_fresnel's coefficients ` +
               `(${worst.extension.toExponential(2)}) and the coated paint kept three.js's material with a warning; ` +

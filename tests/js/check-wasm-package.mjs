@@ -221,6 +221,11 @@ console.log(`${cases} catalogue cases through the JS API`);
   const read = await gltfExtensionMaterial(build, good);
   check(JSON.stringify(read.zeroF0Coefficients) === JSON.stringify(good.zeroF0Coefficients),
         `a good extension's zeroF0Coefficients: ${JSON.stringify(read.zeroF0Coefficients)}`);
+  // An edge-coloured textured metal's F0 table: 33 entries of 3 rows.
+  const entries = (row) => Array.from({ length: 33 }, () => rows(row));
+  const table = { coefficients: entries([0.5, 0.5, 0.1, 0.2]) };
+  const readTable = await gltfExtensionMaterial(build, { ...good, zeroF0Coefficients: undefined, f0Table: table });
+  check(JSON.stringify(readTable.f0Table) === JSON.stringify(table), "a good extension's f0Table");
   const refusals = [
     [{ zeroF0Coefficients: rows([0, 1, NaN, 0.99]) }, /zeroF0Coefficients must be rows \[0, 1, c_2, c_3\] of finite numbers/],
     [{ zeroF0Coefficients: rows([0, 1, "0.3", 0.99]) }, /zeroF0Coefficients must be rows/],
@@ -228,6 +233,13 @@ console.log(`${cases} catalogue cases through the JS API`);
     [{ zeroF0Coefficients: [[0, 1, 0.3, 0.9]] }, /zeroF0Coefficients must be 3 rows of 4 numbers/],
     [{ zeroF0Coefficients: "rows" }, /zeroF0Coefficients must be 3 rows of 4 numbers/],
     [{ coefficients: rows([0.9, 0.1, Infinity, 0.1]) }, /coefficients must be finite numbers/],
+    [{ f0Table: { coefficients: entries([0.5, 0.5, 0.1, 0.2]).slice(1) } }, /f0Table\.coefficients must be 33 entries of 3 rows of 4 numbers/],
+    [{ f0Table: "table" }, /f0Table\.coefficients must be 33 entries/],
+    [{ f0Table: { coefficients: entries([0.5, 0.5, NaN, 0.2]) } }, /f0Table\.coefficients must be finite numbers/],
+    [{ f0Table: { coefficients: entries([0.5, 0.5, "0.1", 0.2]) } }, /f0Table\.coefficients must be finite numbers/],
+    [{ f0Table: { coefficients: entries([0.5, 0.5, 0.1]) } }, /f0Table: coefficients must be 3 rows of 4 numbers/],
+    [{ f0Table: { ...table, underCoatCoefficients: table.coefficients } }, /a bare metal's table has no underCoatCoefficients/],
+    [{ f0Table: table, coat: { weight: 1 } }, /a coated metal's table needs underCoatCoefficients/],
     [{ name: "a;b" }, /name is not the identifier matc writes/],
     [{ basis: "paper" }, /holds coefficients of basis paper/],
   ];

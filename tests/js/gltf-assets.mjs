@@ -41,13 +41,28 @@ function scene(document, materials) {
   });
 }
 
-// car.glb: the car-paint asset (options: the metals' roughness; an iridescent foil metal too).
-export async function carAsset(path, { paintRoughness = 0.4, chromeRoughness = 0.08, foil = false, trim = false } = {}) {
+// F0 = (i / 32)^4 for i = 30, 28, 16: entries of a textured metal's F0 table (docs/gltf.md),
+// exact in binary, where the table holds the metal compiled at that F0.
+const kF0TableEntry = { 30: 0.7724761962890625, 28: 0.586181640625, 16: 0.0625 };
+
+// Texels that every sRGB decoding maps to 1, 0, 1: a base colour texture that makes the engine's
+// base colour the factor with green 0.
+const magentaTexture = (document, name) => document.createTexture(name)
+  .setImage(pngBytes(4, 4, new Uint8Array(4 * 4 * 3).map((_, i) => (i % 3 === 1 ? 0 : 255)))).setMimeType("image/png");
+
+// car.glb: the car-paint asset (options: the metals' roughness; an iridescent foil metal too; a
+// textured bare trim; perPixel: the paint's texture (255, 0, 255) with red and blue of its factor on
+// F0-table entries, and an edge-coloured textured trim likewise, so that a loader following
+// them per pixel shades them as the metals compiled at F0 = factor with green 0).
+export async function carAsset(path, { paintRoughness = 0.4, chromeRoughness = 0.08, foil = false, trim = false,
+                                       perPixel = false } = {}) {
   const document = new Document();
   const clearcoat = document.createExtension(KHRMaterialsClearcoat);
   const flakes = new Uint8Array(8 * 8 * 3).map((_, i) => (i % 3 === 0 ? 200 : 40) + (i % 7));
-  const texture = document.createTexture("paint").setImage(pngBytes(8, 8, flakes)).setMimeType("image/png");
-  const paint = document.createMaterial("Car Paint").setBaseColorFactor([0.55, 0.06, 0.05, 1])
+  const texture = perPixel ? magentaTexture(document, "paint")
+                           : document.createTexture("paint").setImage(pngBytes(8, 8, flakes)).setMimeType("image/png");
+  const paint = document.createMaterial("Car Paint")
+    .setBaseColorFactor(perPixel ? [kF0TableEntry[28], 0.06, kF0TableEntry[16], 1] : [0.55, 0.06, 0.05, 1])
     .setMetallicFactor(1).setRoughnessFactor(paintRoughness).setBaseColorTexture(texture)
     .setExtension("KHR_materials_clearcoat", clearcoat.createClearcoat().setClearcoatFactor(1).setClearcoatRoughnessFactor(0.03));
   const chrome = document.createMaterial("Chrome").setBaseColorFactor([0.55, 0.556, 0.554, 1])
@@ -63,14 +78,50 @@ export async function carAsset(path, { paintRoughness = 0.4, chromeRoughness = 0
   if (trim) {
     // A textured bare metal: every texel (255, 0, 255), exact in any sRGB decoding, so the
     // engine's base colour is the factor with green 0: F0 (0.9, 0, 0.6) per pixel.
-    const texels = new Uint8Array(4 * 4 * 3).map((_, i) => (i % 3 === 1 ? 0 : 255));
-    const trimTexture = document.createTexture("trim").setImage(pngBytes(4, 4, texels)).setMimeType("image/png");
     materials.push(document.createMaterial("Trim").setBaseColorFactor([0.9, 0.8, 0.6, 1]).setMetallicFactor(1)
-      .setRoughnessFactor(0.3).setBaseColorTexture(trimTexture));
+      .setRoughnessFactor(0.3).setBaseColorTexture(magentaTexture(document, "trim")));
+  }
+  if (perPixel) {
+    const specular = document.createExtension(KHRMaterialsSpecular);
+    // The edge colour is the draft EXT_materials_specular_edge_color inside KHR_materials_specular,
+    // which glTF-Transform does not know: added to the GLB's JSON below.
+    materials.push(document.createMaterial("Edge Trim").setBaseColorFactor([kF0TableEntry[30], 0.7, kF0TableEntry[28], 1])
+      .setMetallicFactor(1).setRoughnessFactor(0.3).setBaseColorTexture(magentaTexture(document, "edge trim"))
+      .setExtension("KHR_materials_specular", specular.createSpecular().setSpecularColorFactor([0.9, 0.75, 0.6])));
   }
   scene(document, materials);
-  writeFileSync(path, await new NodeIO().registerExtensions([KHRMaterialsClearcoat, KHRMaterialsIridescence])
-    .writeBinary(document));
+  let bytes = await new NodeIO().registerExtensions([KHRMaterialsClearcoat, KHRMaterialsIridescence, KHRMaterialsSpecular])
+    .writeBinary(document);
+  if (perPixel) {
+    bytes = withGlbJson(bytes, (json) => {
+      const edgeTrim = json.materials.find((material) => material.name === "Edge Trim");
+      edgeTrim.extensions.KHR_materials_specular.extensions =
+        { EXT_materials_specular_edge_color: { specularEdgeColorEnabled: true } };
+      json.extensionsUsed.push("EXT_materials_specular_edge_color");
+    });
+  }
+  writeFileSync(path, bytes);
+}
+
+// A GLB (`bytes`) with its JSON chunk edited by `edit(json)`; the BIN chunk carried as it is.
+function withGlbJson(bytes, edit) {
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const jsonLength = view.getUint32(12, true);
+  const json = JSON.parse(new TextDecoder().decode(bytes.subarray(20, 20 + jsonLength)));
+  edit(json);
+  const unpadded = new TextEncoder().encode(JSON.stringify(json));
+  const jsonBytes = new Uint8Array(Math.ceil(unpadded.length / 4) * 4).fill(0x20);  // 4-byte aligned, space-padded
+  jsonBytes.set(unpadded);
+  const rest = bytes.subarray(20 + jsonLength);
+  const glb = new Uint8Array(20 + jsonBytes.length + rest.length);
+  const out = new DataView(glb.buffer);
+  glb.set(bytes.subarray(0, 12));
+  out.setUint32(8, glb.length, true);
+  out.setUint32(12, jsonBytes.length, true);
+  out.setUint32(16, 0x4e4f534a, true);  // "JSON"
+  glb.set(jsonBytes, 20);
+  glb.set(rest, 20 + jsonBytes.length);
+  return glb;
 }
 
 // trim.gltf: JSON with its resources beside it, the draft extensions added to the JSON.

@@ -1,9 +1,10 @@
 // What the engines' glTF loader checks share (check-three-gltf.mjs, check-babylon-gltf.mjs): the
-// car asset (with a textured bare trim, followed per pixel) three ways (compiled in the page; as `matc gltf` wrote it, with no compiler; the same
+// car asset (with textured metals followed per pixel: a bare trim of Schlick's curve, an
+// edge-coloured trim and the coated paint from their F0 tables) three ways (compiled in the page; as `matc gltf` wrote it, with no compiler; the same
 // with a build directory that compiled the asset) and the checks of what each load made: which
 // materials became matc metals and from where, the console warnings, and the probes against the
 // CPU runtime's prediction for the material files `matc import` writes from the same asset.
-import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
+import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { kWebRoots, runPage } from "./browser-page.mjs";
@@ -14,11 +15,15 @@ import { run } from "./shader-cases.mjs";
 
 const kLights = ["environment", "point", "rect"];
 // The engine's material name -> the matc material `matc import` writes for it, per load.
-const kProbed = { compiled: { "Car Paint": "Car_Paint", Chrome: "Chrome", Trim: "Trim" },
-                  extension: { Chrome: "Chrome", Trim: "Trim" }, directory: { "Car Paint": "Car_Paint", Trim: "Trim" } };
-// The textured trim's F0 per pixel: its factor times its texels (255, 0, 255).
-const kTrimPerPixel = { name: "Trim", color_space: "lin_rec709", roughness: 0.3,
-                        f82_tint: { f0: [0.9, 0, 0.6], tint: [1, 1, 1] } };
+const kProbed = { compiled: { "Car Paint": "Car_Paint", Chrome: "Chrome", Trim: "Trim", "Edge Trim": "Edge_Trim" },
+                  extension: { Chrome: "Chrome", Trim: "Trim", "Edge Trim": "Edge_Trim" },
+                  directory: { "Car Paint": "Car_Paint", Trim: "Trim", "Edge Trim": "Edge_Trim" } };
+// The textured metals (gltf-assets.mjs, perPixel): their base colour per pixel is their factor times
+// their texels (255, 0, 255), so the metal is the one `matc import` writes with green F0 0. The
+// paint's and the edge trim's other channels sit on entries of their F0 tables, which hold the
+// metal compiled there: what the CPU runtime predicts for these files, the loaders must draw
+// (the interpolation between entries is checked against the CPU runtime on lavapipe, docs/gltf.md).
+const kPerPixel = ["Car_Paint", "Trim", "Edge_Trim"];
 
 // In `dir`: assets/car.glb (roughness 0.3, the foil), assets/car_matc.glb (`matc gltf`'s) and
 // build/ (`matc -o build car.glb`: the metals' JSON and snippets, the tables). Returns
@@ -27,7 +32,7 @@ async function carAssetsForLoaders(dir, matc) {
   const assets = join(dir, "assets");
   mkdirSync(assets);
   const car = join(assets, "car.glb");
-  await carAsset(car, { paintRoughness: 0.3, chromeRoughness: 0.3, foil: true, trim: true });
+  await carAsset(car, { paintRoughness: 0.3, chromeRoughness: 0.3, foil: true, trim: true, perPixel: true });
   run(matc, ["gltf", "-q", car, "-o", join(assets, "car_matc.glb")]);
   const build = join(dir, "build");
   run(matc, ["-q", "-o", build, "--emit", "glsl,json,lut,ltc", car]);
@@ -37,13 +42,13 @@ async function carAssetsForLoaders(dir, matc) {
 // What each load must make: the materials' kinds ("coated compiled", "bare extension", "engine":
 // the engine's own), how many became matc metals, and the warnings (besides the foil's).
 const kLoads = {
-  compiled: { kinds: { "Car Paint": "coated compiled", Chrome: "bare compiled", Tyre: "engine", Foil: "engine",
-                        Trim: "per-pixel compiled" }, made: 3, warnings: [] },
+  compiled: { kinds: { "Car Paint": "f0-table coated compiled", Chrome: "bare compiled", Tyre: "engine", Foil: "engine",
+                        Trim: "per-pixel compiled", "Edge Trim": "f0-table bare compiled" }, made: 4, warnings: [] },
   extension: { kinds: { "Car Paint": "engine", Chrome: "bare extension", Tyre: "engine", Foil: "engine",
-                         Trim: "per-pixel extension" },
-               made: 2, warnings: [/materials\[0\] "Car Paint" keeps .*: matc: a coated metal: its shader snippet is the compiler's/] },
-  directory: { kinds: { "Car Paint": "coated extension", Chrome: "bare extension", Tyre: "engine", Foil: "engine",
-                         Trim: "per-pixel extension" }, made: 3, warnings: [] },
+                         Trim: "per-pixel extension", "Edge Trim": "f0-table bare extension" },
+               made: 3, warnings: [/materials\[0\] "Car Paint" keeps .*: matc: a coated metal: its shader snippet is the compiler's/] },
+  directory: { kinds: { "Car Paint": "f0-table coated extension", Chrome: "bare extension", Tyre: "engine", Foil: "engine",
+                         Trim: "per-pixel extension", "Edge Trim": "f0-table bare extension" }, made: 4, warnings: [] },
 };
 
 // Checks a loader page's `result` ({ kinds, made, console: lines with "-- <load>" before each
@@ -66,16 +71,21 @@ function loaderChecks({ result, engine, matc, car, dir, probed, lights, terms })
           `${load}: warnings: ${warnings.join("\n")}`);
   }
   // The CPU runtime's prediction for the material files matc import writes from the same asset.
-  // The textured trim's: its F0 per pixel, not the factor matc import writes.
+  // The textured metals': their F0 per pixel, not the factor matc import writes.
   const materials = join(dir, "materials");
   run(matc, ["import", "-q", "-o", materials, car]);
-  writeFileSync(join(materials, "Trim.json"), JSON.stringify(kTrimPerPixel));
+  for (const name of kPerPixel) {
+    const file = join(materials, `${name}.json`);
+    const material = JSON.parse(readFileSync(file, "utf8"));
+    material.f82_tint.f0[1] = 0;
+    writeFileSync(file, JSON.stringify(material));
+  }
   const out = join(dir, "out");
-  const names = ["Car_Paint", "Chrome", "Trim"];
+  const names = ["Car_Paint", "Chrome", "Trim", "Edge_Trim"];
   run(matc, ["-q", "-o", out, "--emit", "json", ...names.map((name) => join(materials, `${name}.json`))]);
   const renders = names.flatMap((name) => lights.map((light) => ({ key: `${name} ${light} r=0.3`, light })));
   const expected = expectedProbes({ matc, materialsDir: materials, out, ...terms, renders,
-                                    bare: ["Chrome", "Trim"], coated: ["Car_Paint"] });
+                                    bare: ["Chrome", "Trim", "Edge_Trim"], coated: ["Car_Paint"] });
   check(Object.keys(expected).length === renders.length, `${Object.keys(expected).length} renders expected`);
   const worst = {};
   for (const [load, names] of Object.entries(probed)) {

@@ -36,6 +36,8 @@ export async function checkBadInputs(out, { loadMatcBuild, build, material, coat
   await failure("textured_without_edge_tint", () => useMatc({ reflectivityMap: texture }));
   // Rows that are not a Schlick curve's at F0 = 0 (a compiled material's coefficients).
   await failure("schlick_not_zero_f0", () => useMatc({ schlick: { basis: material.basis, zeroF0Coefficients: material.coefficients } }));
+  // An F0 table without the material it belongs to.
+  await failure("f0_table_without_material", () => useMatc({ f0Table: { coefficients: [] } }));
   await failure("coated_quality_area_lights", () => useMatc({ material: coated }, { areaLights: "quality" }));
   await failure("coated_without_snippet", () => build.loadMaterial(`${coated.name}_without_snippet`));
 }

@@ -18,7 +18,8 @@ import { Vector3, Vector4 } from "@babylonjs/core/Maths/math.vector.js";
 import { AbstractEngine } from "@babylonjs/core/Engines/abstractEngine.js";
 import "@babylonjs/core/Shaders/pbr.fragment.js";  // registers the shader text the anchors are checked against
 import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, checkCoatedAreaLights, declarationsGlsl,
-         matcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
+         f0TableTexels, kF0TableEntries, matcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind }
+  from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -101,6 +102,14 @@ const kPatches = [
   },
   {
     source: "lightFragment",
+    anchor: "{vec3 metalFresnel=reflectivityOut.specularWeight*getF82Specular(preInfo.VdotH,clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90,reflectivityOut.roughness);",
+    replacement: "{vec3 metalFresnel=matc_base_fresnel(preInfo.VdotH);",
+    what: "punctual lights under Babylon's OpenPBR conductor model (a glTF metal with an edge colour): the " +
+          "F82 metal Fresnel, times the specular weight, becomes matc_fresnel(c, VdotH) (the edge colour and its " +
+          "weight are in the coefficients)",
+  },
+  {
+    source: "lightFragment",
     anchor: "info.clearCoat=computeClearCoatLighting(preInfo,clearcoatOut.clearCoatNormalW,clearcoatOut.clearCoatAARoughnessFactors.x,clearcoatOut.clearCoatIntensity,diffuse{X}.rgb);",
     replacement: "\n#ifdef MATC_COATED\n" +
                  "info.clearCoat=matc_coat_light(preInfo,clearcoatOut.clearCoatNormalW,clearcoatOut.clearCoatAARoughnessFactors.x,diffuse$1.rgb);\n" +
@@ -132,6 +141,13 @@ const kPatches = [
     anchor: "vec3 colorSpecularEnvironmentReflectance=getReflectanceFromBRDFLookup(clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90,environmentBrdf);",
     replacement: "vec3 colorSpecularEnvironmentReflectance=matc_base_preintegrated();",
     what: "image lighting: the BRDF lookup's R0/R90 mix becomes sum_i c_i bbar_i",
+  },
+  {
+    source: "pbrBlockReflectance",
+    anchor: "vec3 metalEnvironmentReflectance=reflectivityOut.specularWeight*getF82Specular(NdotV,clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90,reflectivityOut.roughness);",
+    replacement: "vec3 metalEnvironmentReflectance=matc_base_preintegrated();",
+    what: "image lighting under Babylon's OpenPBR conductor model (a glTF metal with an edge colour): the F82 " +
+          "metal term becomes sum_i c_i bbar_i",
   },
   {
     source: "pbrBlockFinalLitComponents",
@@ -203,8 +219,18 @@ export async function loadMatcBuild(source, scene) {
 
 // ---- The plugin. ----
 
+// A textured metal's F0 table (f0TableTexels of matc-build.mjs) as the unfiltered RGBA32F texture
+// MATC_COEFFICIENTS_FROM_F0_TABLE reads with texelFetch (the interpolation is the shader's).
+function f0TableTexture(table, scene) {
+  const texture = new RawTexture(f0TableTexels(table), kF0TableEntries, 6, Constants.TEXTUREFORMAT_RGBA, scene,
+                                 false, false, Texture.NEAREST_SAMPLINGMODE, Constants.TEXTURETYPE_FLOAT);
+  texture.wrapU = texture.wrapV = Texture.CLAMP_ADDRESSMODE;
+  texture.gammaSpace = false;
+  return texture;
+}
+
 // Checks a build and a source of coefficients against Babylon's shaders; what the plugin keeps.
-function preparePlugin(build, source, areaLights) {
+function preparePlugin(material, build, source, areaLights) {
   checkAreaLights(areaLights);
   if (!build || typeof build.library !== "string" || !build.lut) {
     throw new MatcWebError("useMatcFresnel needs the result of loadMatcBuild");
@@ -221,7 +247,8 @@ function preparePlugin(build, source, areaLights) {
   if (coat) checkCoatedAreaLights(source.material, areaLights, ["matc"]);
   const colour = (value) => new Vector3(...rgbOf(value));
   const rows = kind === "material" ? source.material.coefficients : kind === "schlick" ? source.schlick.zeroF0Coefficients : null;
-  return { build, source, kind, areaLights, coat, coatId: coat ? coatIdOf(source.material.coat.snippet) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
+  const f0Table = kind === "f0Table" ? f0TableTexture(source.f0Table, material.getScene()) : null;
+  return { build, source, kind, areaLights, f0Table, coat, coatId: coat ? coatIdOf(source.material.coat.snippet) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
            coefficients: rows && rows.map((row) => new Vector4(...row)) };
 }
 
@@ -241,13 +268,15 @@ let pendingPlugin = null;
 export class MatcFresnelPlugin extends MaterialPluginBase {
   // source: { material } (build.loadMaterial), { schlick: { basis, zeroF0Coefficients } }
   // (Schlick's curve of the albedo, its colour times its texture: a textured glTF metal),
+  // { material, f0Table } (the same under an edge colour or a coat, from its F0 table),
   // { reflectivityMap, edgeTintMap, reflectivity?, edgeTint? } (through the coefficient table) or
   // { baked: { c2Map, c3Map, f0Map? } }.
   constructor(material, build, source, areaLights = "matc") {
-    pendingPlugin = preparePlugin(build, source, areaLights);
+    pendingPlugin = preparePlugin(material, build, source, areaLights);
     try {
       super(material, "MatcFresnel", 200,
-            { MATC_FRESNEL: false, MATC_SOURCE_UNIFORM: false, MATC_SOURCE_SCHLICK: false, MATC_SOURCE_TABLE: false,
+            { MATC_FRESNEL: false, MATC_SOURCE_UNIFORM: false, MATC_SOURCE_SCHLICK: false,
+              MATC_SOURCE_F0_TABLE: false, MATC_SOURCE_TABLE: false,
               MATC_SOURCE_BAKED: false, MATC_BAKED_F0: false, MATC_ENGINE_LTC: false,
               MATC_QUALITY_LTC: false, MATC_COATED: false, MATC_COAT_ID: 0 });
       Object.assign(this, pendingPlugin);
@@ -269,6 +298,7 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
     defines.MATC_FRESNEL = true;
     defines.MATC_SOURCE_UNIFORM = this.kind === "material";
     defines.MATC_SOURCE_SCHLICK = this.kind === "schlick";
+    defines.MATC_SOURCE_F0_TABLE = this.kind === "f0Table";
     defines.MATC_SOURCE_TABLE = this.kind === "table";
     defines.MATC_SOURCE_BAKED = this.kind === "baked";
     defines.MATC_BAKED_F0 = this.kind === "baked" && Boolean(this.source.baked.f0Map);
@@ -294,7 +324,7 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
 
   getSamplers(samplers) {
     samplers.push("matc_lut", "matc_ltc", "matc_coefficient_table", "matc_reflectivity_map", "matc_edge_tint_map",
-                  "matc_c2_map", "matc_c3_map", "matc_f0_map");
+                  "matc_c2_map", "matc_c3_map", "matc_f0_map", "matc_f0_table");
   }
 
   isReadyForSubMesh() {
@@ -305,7 +335,7 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
   _sourceTextures() {
     if (this.kind === "table") return [this.build.coefficientTable, this.source.reflectivityMap, this.source.edgeTintMap];
     if (this.kind === "baked") return [this.source.baked.c2Map, this.source.baked.c3Map, this.source.baked.f0Map];
-    return [];
+    return [this.f0Table];
   }
 
   bindForSubMesh(uniformBuffer) {
@@ -326,6 +356,8 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
       uniformBuffer.setTexture("matc_c2_map", this.source.baked.c2Map);
       uniformBuffer.setTexture("matc_c3_map", this.source.baked.c3Map);
       if (this.source.baked.f0Map) uniformBuffer.setTexture("matc_f0_map", this.source.baked.f0Map);
+    } else if (this.kind === "f0Table") {
+      uniformBuffer.setTexture("matc_f0_table", this.f0Table);
     }
   }
 

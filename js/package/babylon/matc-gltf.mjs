@@ -36,9 +36,11 @@ class MatcGltfLoaderExtension {
     this.made = made;
     this.areaLights = areaLights;
     this.build = build;
-    const where = (index) => `glTF materials[${index}] "${loader.gltf.materials[index].name ?? ""}"`;
+    // The asset's name escaped (JSON), so that it cannot forge console lines.
+    const where = (index) => `glTF materials[${index}] ${JSON.stringify(String(loader.gltf.materials[index].name ?? ""))}`;
     this.warn = (index, message) => console.warn(`matc: ${where(index)} keeps Babylon.js's Fresnel: ${message}`);
-    this.metals = gltfMetals({ matc, build, compile, json: loader.gltf, warn: this.warn });
+    const note = (index, message) => console.warn(`matc: ${where(index)}: ${message}`);
+    this.metals = gltfMetals({ matc, build, compile, json: loader.gltf, warn: this.warn, note });
   }
 
   dispose() {

@@ -33,9 +33,11 @@ export function matcGltfPlugin({ matc = null, build, compile = {}, areaLights = 
   return (parser) => ({
     name: "matc",
     async afterRoot(gltf) {
-      const warn = (index, message) => console.warn(`matc: glTF materials[${index}] ` +
-                                                    `"${parser.json.materials[index].name ?? ""}" keeps three.js's Fresnel: ${message}`);
-      const metals = gltfMetals({ matc, build, compile, json: parser.json, warn });
+      // The asset's name escaped (JSON), so that it cannot forge console lines.
+      const where = (index) => `glTF materials[${index}] ${JSON.stringify(String(parser.json.materials[index].name ?? ""))}`;
+      const warn = (index, message) => console.warn(`matc: ${where(index)} keeps three.js's Fresnel: ${message}`);
+      const note = (index, message) => console.warn(`matc: ${where(index)}: ${message}`);
+      const metals = gltfMetals({ matc, build, compile, json: parser.json, warn, note });
       const materials = new Set();
       gltf.scene.traverse((object) => {
         if (!object.isMesh) return;

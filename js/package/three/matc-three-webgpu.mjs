@@ -283,6 +283,10 @@ function coefficientRows(build, source) {
     return { red: fromF0red({ red, green, blue, f0 }), green: fromF0green({ red, green, blue, f0 }),
              blue: fromF0blue({ red, green, blue, f0 }) };
   }
+  if (kind === "f0Table") {
+    throw new MatcWebError("{ material, f0Table } (a textured glTF metal under an edge colour or a coat) is " +
+                           "WebGL's for now: use matc/three or matc/babylon");
+  }
   if (kind === "table") {
     const colour = (value) => uniform(new THREE.Color(...rgbOf(value)));
     const r = texture(source.reflectivityMap, uv()).rgb.mul(colour(source.reflectivity)).toConst("matc_r");

@@ -11,9 +11,10 @@
 //   const gold = new THREE.MeshPhysicalMaterial({ roughness: 0.3 });
 //   useMatcFresnel(gold, build, { material: await build.loadMaterial("gold") });
 import * as THREE from "three";
-import { sampleTrilinearly, tableTexture } from "./textures.mjs";
+import { f0TableTexture, sampleTrilinearly, tableTexture } from "./textures.mjs";
 import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, checkCoatedAreaLights, declarationsGlsl,
-         matcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
+         f0TableTexels, kF0TableEntries, matcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind }
+  from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -204,7 +205,8 @@ function checkBuild(build) {
 
 // The coefficients' source: { material } (from build.loadMaterial), { schlick: { basis,
 // zeroF0Coefficients } } (Schlick's curve of the material's base colour, its colour times its
-// map: a textured glTF metal), { reflectivityMap, edgeTintMap } (textured: through the
+// map: a textured glTF metal), { material, f0Table } (the same under an edge colour or a coat:
+// the coefficients at the base colour from MATC_materials_fresnel's f0Table), { reflectivityMap, edgeTintMap } (textured: through the
 // coefficient table, each map times the optional reflectivity/edgeTint colours) or { baked: {
 // c2Map, c3Map, f0Map? } } (`matc bake` textures; F0 from f0Map or the material's base colour).
 function sourceUniforms(build, source) {
@@ -214,6 +216,10 @@ function sourceUniforms(build, source) {
     const [red, green, blue] = rows.map((row) => new THREE.Vector4(...row));
     return { define: kind === "schlick" ? "MATC_SOURCE_SCHLICK" : "MATC_SOURCE_UNIFORM",
              uniforms: { matc_red: { value: red }, matc_green: { value: green }, matc_blue: { value: blue } } };
+  }
+  if (kind === "f0Table") {
+    const table = f0TableTexture(THREE, f0TableTexels(source.f0Table), kF0TableEntries);
+    return { define: "MATC_SOURCE_F0_TABLE", uniforms: { matc_f0_table: { value: table } } };
   }
   if (kind === "table") {
     const colour = (value) => new THREE.Color(...rgbOf(value));

@@ -1,17 +1,27 @@
 // Textures both three.js modules make (matc-three.mjs for WebGLRenderer, matc-three-webgpu.mjs for
 // WebGPURenderer); THREE is the caller's namespace ("three" or "three/webgpu": one core).
 
-// A matc table (matc-build.mjs) as a linearly filtered, clamped float texture.
-export function tableTexture(THREE, table) {
-  const texture = new THREE.DataTexture(table.data, table.size, table.size,
-                                        table.channels === 4 ? THREE.RGBAFormat : THREE.RGFormat,
-                                        table.half ? THREE.HalfFloatType : THREE.FloatType);
-  texture.minFilter = texture.magFilter = THREE.LinearFilter;
+// A clamped float texture of `data` without mips, filtered by `filter`, its texels read as they are.
+function floatTexture(THREE, data, width, height, format, type, filter) {
+  const texture = new THREE.DataTexture(data, width, height, format, type);
+  texture.minFilter = texture.magFilter = filter;
   texture.wrapS = texture.wrapT = THREE.ClampToEdgeWrapping;
   texture.generateMipmaps = false;
   texture.colorSpace = THREE.NoColorSpace;
   texture.needsUpdate = true;
   return texture;
+}
+
+// A matc table (matc-build.mjs) as a linearly filtered, clamped float texture.
+export function tableTexture(THREE, table) {
+  return floatTexture(THREE, table.data, table.size, table.size, table.channels === 4 ? THREE.RGBAFormat : THREE.RGFormat,
+                      table.half ? THREE.HalfFloatType : THREE.FloatType, THREE.LinearFilter);
+}
+
+// A textured metal's F0 table (f0TableTexels of matc-build.mjs) as the unfiltered RGBA32F texture
+// MATC_COEFFICIENTS_FROM_F0_TABLE reads with texelFetch (the interpolation is the shader's).
+export function f0TableTexture(THREE, texels, entries) {
+  return floatTexture(THREE, texels, entries, 6, THREE.RGBAFormat, THREE.FloatType, THREE.NearestFilter);
 }
 
 // matc bake's mips average coefficients, so one trilinear sampler for all of them is exact;
