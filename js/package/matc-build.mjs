@@ -5,6 +5,7 @@
 // be found exactly once. Engine-neutral: tables come back as typed arrays for the engine's own
 // texture class. KTX2 containers are read with ktx-parse (npm, the reader three.js bundles),
 // imported when a KTX2 table is read: raw tables (the package's) need nothing else.
+import { coatedSnippet } from "./coated-snippet.mjs";
 import { tableFiles } from "./tables.mjs";
 
 async function ktx2Reader() {
@@ -373,13 +374,55 @@ async function loadCoat(material, snippetUrl, file) {
 // The name of the glTF vendor extension `matc gltf` writes (docs/gltf.md).
 export const kGltfFresnelExtension = "MATC_materials_fresnel";
 
+// A number of `what` in [low, high], or an error naming it.
+function checkedNumber(value, low, high, what) {
+  if (typeof value !== "number" || !(value >= low && value <= high)) {
+    throw new MatcWebError(`${what} must be a number in [${low}, ${high}]`);
+  }
+  return value;
+}
+
+// A coated metal's two-lobe snippet from its extension: the compiler's template filled with the
+// extension's values (coated-snippet.mjs), each checked here as the schema has it.
+async function extensionCoatedMaterial(build, extension, rows) {
+  const what = `${kGltfFresnelExtension}.coat`;
+  const coat = extension.coat;
+  if (typeof coat !== "object" || coat === null) throw new MatcWebError(`${what} must be an object`);
+  const rgb = (value, field) => {
+    if (!Array.isArray(value) || value.length !== 3) throw new MatcWebError(`${field} must be 3 numbers in [0, 1]`);
+    return value.map((channel) => checkedNumber(channel, 0, 1, field));
+  };
+  const under = checkedRows(coat.underCoatCoefficients, what, "underCoatCoefficients");
+  const coatRow = coat.coatCoefficients;
+  if (!finiteRows(under) || !Array.isArray(coatRow) || coatRow.length !== 4 || !finiteRows([coatRow])) {
+    throw new MatcWebError(`${what}: underCoatCoefficients (3 rows) and coatCoefficients (one row) must be 4 finite numbers each`);
+  }
+  const versionNumber = /#define MATC_VERSION (\d+)/.exec(build.library)?.[1];
+  if (!versionNumber) throw new MatcWebError(`${build.url}: its shader library does not say its MATC_VERSION`);
+  const checked = {
+    weight: checkedNumber(coat.weight, 0, 1, `${what}.weight`), ior: checkedNumber(coat.ior, 1.05, 3, `${what}.ior`),
+    roughness: checkedNumber(coat.roughness, 0, 1, `${what}.roughness`), color: rgb(coat.color, `${what}.color`),
+    underCoatCoefficients: under, coatCoefficients: coatRow,
+  };
+  // Imported when needed: the staged package's (stage.mjs writes it from templates/glsl/).
+  const { kCoatedMaterialGlsl } = await import("./templates.mjs");
+  const snippet = coatedSnippet(kCoatedMaterialGlsl, {
+    name: extension.name, version: build.manifest.matc_version, versionNumber, coefficients: rows,
+    colorSpace: String(extension.colorSpace).replace(/[^A-Za-z0-9_]/g, "_"),
+    maxError: rgb(extension.maxError, `${kGltfFresnelExtension}.maxError`), coat: checked,
+  });
+  const { coatCoefficients: _, ...materialCoat } = checked;
+  return { name: extension.name, basis: build.basis, coefficients: rows, coat: { ...materialCoat, snippet } };
+}
+
 // A glTF material's MATC_materials_fresnel (`extension`) as build.loadMaterial gives a material:
 // { name, basis, coefficients, coat }. A bare metal's coefficients are the extension's own. A
-// coated metal's two-lobe shader snippet is the compiler's, so it comes from a build directory
-// that compiled the same asset (`matc -o DIR asset.glb`: its <name>.json and snippet), checked to
-// hold the extension's coefficients. Throws a MatcWebError saying why it cannot be used:
-// coefficients of another basis or matc version than the build's tables, malformed rows, or a
-// coated metal no build directory holds.
+// coated metal's two-lobe shader snippet is the build directory's when that compiled the same
+// asset (`matc -o DIR asset.glb`: its manifest lists the metal; its <name>.json and snippet,
+// checked to hold the extension's coefficients), else matc's template filled with the extension's
+// values. Throws a MatcWebError saying why it cannot be used: coefficients of another basis or
+// matc version than the build's tables, malformed members, or a build directory whose metal of
+// that name differs.
 export async function gltfExtensionMaterial(build, extension) {
   const version = build.manifest?.matc_version;
   if (extension?.basis !== build.basis || extension?.matcVersion !== version) {
@@ -404,15 +447,10 @@ export async function gltfExtensionMaterial(build, extension) {
   if (!extension.coat) {
     return { name: extension.name, basis: build.basis, coefficients: rows, coat: null, ...perPixel };
   }
-  const advice = "give the loader the compiler (matc: createMatc()) or a build directory that compiled this " +
-                 "asset (matc -o DIR asset.glb)";
-  if (!build.materialsByName) throw new MatcWebError(`a coated metal: its shader snippet is the compiler's; ${advice}`);
-  let material;
-  try {
-    material = await build.loadMaterial(extension.name);
-  } catch (error) {
-    throw new MatcWebError(`a coated metal whose snippet the build directory does not hold (${error.message}); ${advice}`);
-  }
+  const inDirectory = build.materialsByName &&
+                      (build.manifest.materials ?? []).some((material) => material?.name === extension.name);
+  if (!inDirectory) return { ...(await extensionCoatedMaterial(build, extension, rows)), ...perPixel };
+  const material = await build.loadMaterial(extension.name);
   const same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
   if (!material.coat || !same(material.coefficients, rows) ||
       !same(material.coat.underCoatCoefficients, extension.coat.underCoatCoefficients)) {

@@ -37,7 +37,8 @@ import { babylonProbeScene, renderBabylonProbe } from "/checks/babylon-scene-pag
         material.metadata?.matc ? (material.matcFresnel.kind === "schlick" ? "per-pixel" :
                                    (material.matcFresnel.kind === "f0Table" ? "f0-table " : "") +
                                    (material.matcFresnel.coat ? "coated" : "bare")) +
-                                  " " + material.metadata.matc.from
+                                  " " + material.metadata.matc.from +
+                                  (/from MATC_materials_fresnel/.test(material.matcFresnel.coat?.snippet) ? " (template)" : "")
                                 : "engine"]));
       return { byName, kinds, made: registration.materials.length };
     } finally {
@@ -71,8 +72,8 @@ await runLoaderCheck({
   summary: (worst) => `Babylon.js's glTF loader with matc's extension: a glTF-Transform car asset's paint (coated), ` +
               `chrome and trims (textured, per pixel) became matc metals compiled in the page, the tyre and the iridescent foil kept Babylon's ` +
               `material (the foil with a warning), largest difference from the CPU runtime ` +
-              `${worst.compiled.toExponential(2)}; from matc gltf's asset without the compiler, the chrome took ` +
-              `MATC_materials_fresnel's coefficients (${worst.extension.toExponential(2)}) and the coated paint kept ` +
-              `Babylon's material with a warning; with a build directory of the asset, the paint took its snippet ` +
+              `${worst.compiled.toExponential(2)}; from matc gltf's asset without the compiler, every metal took ` +
+              `MATC_materials_fresnel's coefficients, the coated paint its snippet from matc's template ` +
+              `(${worst.extension.toExponential(2)}); with a build directory of the asset, the paint took its snippet ` +
               `from it (${worst.directory.toExponential(2)})`,
 }, process.argv.slice(2));

@@ -5,8 +5,8 @@
 //     metals (the paint a coated one), the tyre and the foil keep three.js's material (the foil
 //     with a console warning that says why);
 //   - extension: what `matc gltf` wrote from it (MATC_materials_fresnel in each metal), with no
-//     compiler: the chrome takes its coefficients from the extension, the coated paint keeps
-//     three.js's material with a warning that its snippet is the compiler's;
+//     compiler: every metal takes its coefficients from the extension, the coated paint its
+//     snippet from matc's template filled with the extension's values;
 //   - directory: the same with a build directory that compiled the asset (`matc -o build car.glb`)
 //     and no compiler: the paint becomes a coated metal too, its snippet from the build.
 // The loaded metals, on the probe plane under the engine checks' lights, equal the CPU runtime's
@@ -45,7 +45,9 @@ import { probeScene, probeSetup, renderProbePixels } from "/checks/three-scene-p
       [name, material.userData.matc ? (material.userData.matc.source.schlick ? "per-pixel" :
                                        (material.userData.matc.source.f0Table ? "f0-table " : "") +
                                        (material.userData.matc.source.material.coat ? "coated" : "bare")) +
-                                      " " + material.userData.matc.from : "engine"]));
+                                      " " + material.userData.matc.from +
+                                      (/from MATC_materials_fresnel/.test(material.userData.matc.source.material?.coat?.snippet) ?
+                                       " (template)" : "") : "engine"]));
     return { byName, kinds, made: gltf.userData.matcMaterials.length };
   };
   const loads = {};
@@ -75,8 +77,8 @@ await runLoaderCheck({
   summary: (worst) => `three.js GLTFLoader with matc's plugin: a glTF-Transform car asset's paint (coated), chrome ` +
               `and trims (textured, per pixel) became matc metals compiled in the page, the tyre and the iridescent foil kept three.js's material ` +
               `(the foil with a warning), largest difference from the CPU runtime ${worst.compiled.toExponential(2)}; ` +
-              `from matc gltf's asset without the compiler, the chrome took MATC_materials_fresnel's coefficients ` +
-              `(${worst.extension.toExponential(2)}) and the coated paint kept three.js's material with a warning; ` +
+              `from matc gltf's asset without the compiler, every metal took MATC_materials_fresnel's coefficients, ` +
+              `the coated paint its snippet from matc's template (${worst.extension.toExponential(2)}); ` +
               `with a build directory of the asset, the paint took its snippet from it ` +
               `(${worst.directory.toExponential(2)})`,
 }, process.argv.slice(2));

@@ -254,6 +254,49 @@ console.log(`${cases} catalogue cases through the JS API`);
   }
 }
 
+// A coated metal from its MATC_materials_fresnel alone (no compiler in the page, no build directory
+// of the asset): matc's template filled with the extension's values is the compiler's snippet,
+// comment lines aside (they name the source and the fits' errors): a full clear coat, a partial
+// tinted one, a partial clear one at another index.
+{
+  const { gltfExtensionMaterial } = await import(path.join(work, "node_modules", "matc", "matc-build.mjs"));
+  const texts = matc_.textOutputs();
+  const build = { basis: "powers", manifest: { matc_version: "0.1.0" }, url: "test", library: texts.librarySource("glsl") };
+  const code = (snippet) => snippet.split("\n").filter((line) => !/^\s*\/\//.test(line)).join("\n");
+  const rows = (values) => values.map((row) => Array.from(row));
+  for (const coat of [{ weight: 1, ior: 1.5, roughness: 0.03 },
+                      { weight: 0.6, ior: 1.6, roughness: 0.2, color: [0.9, 0.7, 0.35] },
+                      { weight: 0.4, ior: 1.3, roughness: 0.1 }]) {
+    const compiled = matc_.compile(matc_.parseMaterial({ name: "lacquer", f82_tint: { f0: [0.93, 0.62, 0.52], tint: [0.9, 0.8, 0.7] },
+                                                         coat }));
+    const extension = {
+      name: compiled.name, basis: compiled.basis, matcVersion: "0.1.0", colorSpace: "lin_rec709",
+      coefficients: rows(compiled.coefficients), maxError: Array.from(compiled.coat.layeredMaxError),
+      coat: { weight: compiled.coat.weight, ior: compiled.coat.ior, roughness: compiled.coat.roughness,
+              color: Array.from(compiled.coat.color), underCoatCoefficients: rows(compiled.coat.underCoatCoefficients),
+              coatCoefficients: Array.from(compiled.coat.coatCoefficients) },
+    };
+    const material = await gltfExtensionMaterial(build, extension);
+    const compilers = texts.materialSource("glsl", compiled);
+    check(code(material.coat.snippet) === code(compilers),
+          `coat ${JSON.stringify(coat)}: the snippet from the extension is not the compiler's:\n${material.coat.snippet}\n--\n${compilers}`);
+    check(material.coat.snippet.includes("from MATC_materials_fresnel"), "the snippet from the extension says so");
+    for (const [change, pattern] of [[{ weight: 2 }, /coat\.weight must be a number in \[0, 1\]/],
+                                     [{ ior: "1.5" }, /coat\.ior must be a number in \[1\.05, 3\]/],
+                                     [{ color: [1, 1] }, /coat\.color must be 3 numbers/],
+                                     [{ coatCoefficients: [0.04, 0.96, NaN, 0.1] }, /coatCoefficients \(one row\) must be 4 finite numbers/]]) {
+      let message = "no error";
+      try {
+        await gltfExtensionMaterial(build, { ...extension, coat: { ...extension.coat, ...change } });
+      } catch (error) {
+        message = error.message;
+      }
+      check(pattern.test(message), `MATC_materials_fresnel.coat ${JSON.stringify(change)}: ${message}`);
+    }
+    compiled.dispose();
+  }
+}
+
 // Arguments: refused with the argument named, the instance usable after.
 const gold = matc_.compile(matc_.parseMaterial({ name: "gold", spectral: { preset: "Au" } }));
 const throwsWith = (call, pattern, what) => {

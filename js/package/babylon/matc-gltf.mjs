@@ -3,8 +3,9 @@
 // through useMatcFresnel (./matc-babylon.mjs) once its properties are loaded, with the
 // coefficients from the material's MATC_materials_fresnel (written by `matc gltf`) when that fits
 // the build's tables, or compiled in the page by the package's WebAssembly compiler (`matc`, when
-// given); a coated metal's snippet comes from the compiler or from a build directory that compiled
-// the same asset (gltfMetals in ../matc-build.mjs, shared with three.js's plugin).
+// given); a coated metal's snippet comes from the compiler, from a build directory that compiled
+// the same asset, or from matc's template filled with the extension's values (gltfMetals in
+// ../matc-build.mjs, shared with three.js's plugin).
 // Non-metals keep Babylon's material; a metal matc cannot follow (an iridescent one), or one with
 // neither the extension nor a compiler, keeps it too, with a console warning that says why.
 //

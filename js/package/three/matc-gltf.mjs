@@ -4,9 +4,9 @@
 // `matc gltf`) when that fits the build's tables, with no compiler in the page; otherwise the
 // package's WebAssembly compiler (`matc`, when given) compiles the glTF material's own JSON (the
 // importer `matc import` runs: F0 from baseColorFactor, the F82 edge colour, the clear coat and
-// its index). A coated metal's two-lobe shader snippet is the compiler's: it comes from the
-// compiler in the page, or from a build directory that compiled the same asset (gltfMetals in
-// ../matc-build.mjs, shared with the Babylon.js loader extension). Non-metals keep
+// its index). A coated metal's two-lobe shader snippet comes from the compiler in the page, from a
+// build directory that compiled the same asset, or from matc's template filled with the
+// extension's values (gltfMetals in ../matc-build.mjs, shared with the Babylon.js loader extension). Non-metals keep
 // three.js's material. A metal matc cannot follow (an iridescent one), or one with neither the
 // extension nor a compiler, keeps three.js's material too, with a console warning that says why.
 //
@@ -19,8 +19,8 @@
 //   const loader = new GLTFLoader().register(matcGltfPlugin({ matc, build }));
 //   const gltf = await loader.loadAsync("car.glb");   // its metals now use matc's Fresnel
 //
-// Without the compiler: loadMatcBuild("build/") of `matc -o build car.glb` (its tables, and its
-// coated metals' snippets), and matcGltfPlugin({ build }) for the asset `matc gltf` wrote.
+// Without the compiler: loadMatcBuild("build/") of a build directory (`matc -o build --shared-only`:
+// the tables), and matcGltfPlugin({ build }) for the asset `matc gltf` wrote.
 import { checkGltfLoaderOptions, gltfMetals } from "../matc-build.mjs";
 import { useMatcFresnel } from "./matc-three.mjs";
 
