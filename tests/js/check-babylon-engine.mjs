@@ -51,12 +51,16 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
       baked: async () => ({ baked: { c2Map: await baked(scene, "probe_c2.ktx2"), c3Map: await baked(scene, "probe_c3.ktx2"),
                                      f0Map: await baked(scene, "probe_f0.ktx2") } }),
       schlick: () => ({ schlick: { basis: build.basis, zeroF0Coefficients: config.schlick.zeroF0Coefficients } }),
+      f0table: () => ({ material: { name: "f0_table_probe", basis: build.basis, coefficients: config.f0Table.coefficients[0], coat: null },
+                      f0Table: { coefficients: config.f0Table.coefficients } }),
     };
     const source = sources[render.source] ? await sources[render.source]() : { material: materials[render.source] };
     const material = useMatcFresnel(new PBRMaterial("matc", scene), build, source, { areaLights: render.areaLights });
     material.roughness = render.roughness;
-    // The Schlick metal's F0 is the albedo colour (linear); the others' colour is in their coefficients.
-    material.albedoColor.set(...(render.source === "schlick" ? config.schlick.color : [1, 1, 1]));
+    // The Schlick and F0-table metals' F0 is the albedo colour (linear); the others' colour is in
+    // their coefficients.
+    material.albedoColor.set(...(render.source === "schlick" ? config.schlick.color
+                                 : render.source === "f0table" ? config.f0Table.color : [1, 1, 1]));
     made.push(material);
     out.renders[render.key] = await renderBabylonProbe({ scene, camera, material, light: render.light, config,
                                                          size: ${kProbeSize}, out, key: render.key });

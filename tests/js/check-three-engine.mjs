@@ -49,9 +49,12 @@ import { probeBuild } from "/checks/page-probe-build.mjs";
   sources.baked = { baked: { c2Map: await baked("probe_c2.ktx2"), c3Map: await baked("probe_c3.ktx2"),
                              f0Map: await baked("probe_f0.ktx2") } };
   sources.schlick = { schlick: { basis: build.basis, zeroF0Coefficients: config.schlick.zeroF0Coefficients } };
+  sources.f0table = { material: { name: "f0_table_probe", basis: build.basis, coefficients: config.f0Table.coefficients[0], coat: null },
+                      f0Table: { coefficients: config.f0Table.coefficients } };
   for (const render of config.renders) {
-    // The Schlick metal's F0 is the material's colour (linear).
-    const colour = render.source === "schlick" ? { color: new THREE.Color(...config.schlick.color) } : {};
+    // The Schlick and F0-table metals' F0 is the material's colour (linear).
+    const colour = render.source === "schlick" ? { color: new THREE.Color(...config.schlick.color) }
+                 : render.source === "f0table" ? { color: new THREE.Color(...config.f0Table.color) } : {};
     const material = useMatcFresnel(new THREE.MeshPhysicalMaterial({ roughness: render.roughness, ...colour }),
                                     build, sources[render.source], { areaLights: render.areaLights });
     out.renders[render.key] = renderProbePixels(renderer, probeScene(THREE, material, render.light, config, environment),

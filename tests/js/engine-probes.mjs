@@ -2,7 +2,7 @@
 // probe scene (a plane z = 0 seen from z = 1 with a 90 degree field of view into a 64 x 64 float
 // target), the builds they load (good ones and the ones that must fail), the CPU runtime's value
 // at each probe pixel for each light (`matc eval`), and the comparison.
-import { cpSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { kWebRoots, runPage } from "./browser-page.mjs";
@@ -48,6 +48,14 @@ export const kBaked = { reflectivity: [0.95, 0.64, 0.54], edgeTint: [1.0, 0.75, 
 export const kSchlick = { f0: [0.9, 0.55, 0.3] };
 const kSchlickMaterial = (f0) => ({ name: "schlick_probe", color_space: "lin_rec709",
                                     f82_tint: { f0, tint: [1, 1, 1] } });
+// An edge-coloured metal whose F0 is the engine material's base colour (the source
+// { material, f0Table }: a textured glTF metal under an edge colour). Its F0 table is the metal
+// compiled at 33 values of F0, entry i at (i / 32)^4, as `matc gltf` writes it; the colour's
+// channels sit on entries 30, 16 and 28 (exact in binary), where the table holds the metal
+// compiled at that F0: what the CPU runtime predicts. (The interpolation between entries is
+// checked against the CPU runtime on lavapipe.)
+export const kF0Table = { f0: [0.7724761962890625, 0.0625, 0.586181640625], tint: [0.9, 0.75, 0.6] };
+const kF0TableMaterial = (name, f0) => ({ name, color_space: "lin_rec709", f82_tint: { f0, tint: kF0Table.tint } });
 
 // Vector helpers (double precision; the GPU's float32 stays well within the tolerance).
 export const sub = (a, b) => a.map((x, i) => x - b[i]);
@@ -150,7 +158,7 @@ export function probeRenders() {
                      areaLights: "quality" });
     }
   }
-  for (const source of ["textured", "baked", "schlick"]) {
+  for (const source of kColourSources) {
     for (const light of ["environment", "point"]) {
       renders.push({ key: `${source} ${light} r=0.3`, source, light, roughness: 0.3 });
     }
@@ -190,8 +198,9 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibilit
     ["baked", ["--reflectivity", list(kBaked.reflectivity), "--edge-tint", list(kBaked.edgeTint)],
      kBaked.reflectivity, "Fbar_compiled", "F_compiled"],
     ["schlick", [schlickFile(out)], kSchlick.f0, "Fbar", "F"],
+    ["f0table", [f0TableFile(out)], kF0Table.f0, "Fbar", "F"],
   ]) {
-    for (const roughness of ["textured", "baked", "schlick"].includes(source) ? [0.3] : kProbeRoughness) {
+    for (const roughness of kColourSources.includes(source) ? [0.3] : kProbeRoughness) {
       const key = (light) => `${source} ${light} r=${roughness}`;
       if (!["environment", "point", "rect", "rect quality"].some((light) => wanted.has(key(light)))) continue;
       const terms = pointTerms[kProbeRoughness.indexOf(roughness)];
@@ -316,6 +325,30 @@ export function checkFailures(failures) {
   return Object.keys(kFailures).length;
 }
 
+// The sources rendered at roughness 0.3 under the environment and the point light only.
+const kColourSources = ["textured", "baked", "schlick", "f0table"];
+
+// The F0-table probe metal's material file at its colour (in `dir`), for the CPU runtime's side.
+function f0TableFile(dir) {
+  const file = join(dir, "f0_table_probe.json");
+  writeFileSync(file, JSON.stringify(kF0TableMaterial("f0_table_probe", kF0Table.f0)));
+  return file;
+}
+
+// The F0-table probe metal's table: the metal compiled at F0 = (i / 32)^4 on every channel, as
+// MATC_materials_fresnel's f0Table holds it (33 entries of rows R, G, B), compiled by matc.
+function f0TableCoefficients(matc, dir) {
+  const entries = join(dir, "f0_table_entries");
+  mkdirSync(entries);
+  const files = Array.from({ length: 33 }, (_, i) => {
+    const file = join(entries, `entry_${i}.json`);
+    writeFileSync(file, JSON.stringify(kF0TableMaterial(`entry_${i}`, Array(3).fill((i / 32) ** 4))));
+    return file;
+  });
+  run(matc, ["-q", "-o", join(entries, "out"), "--emit", "json", ...files]);
+  return files.map((_, i) => JSON.parse(readFileSync(join(entries, "out", `entry_${i}.json`), "utf8")).coefficients);
+}
+
 // The Schlick probe metal's material file (in `dir`), for the CPU runtime's side.
 function schlickFile(dir) {
   const file = join(dir, "schlick_probe.json");
@@ -351,7 +384,8 @@ export async function runProbeCheck(engine, [matc, materialsDir, webDir, mode]) 
       materials.map((name) => [name, readFileSync(join(materialsDir, `${name}.json`), "utf8")]));
     const config = { materials, coated: kProbeCoated, pixels: kProbePixels, renders, point: kPointLight,
                      rect: engine.rect?.light, textured: kTextured, compileInPage, materialTexts,
-                     schlick: { color: kSchlick.f0, zeroF0Coefficients: zeroF0Coefficients(matc, dir) } };
+                     schlick: { color: kSchlick.f0, zeroF0Coefficients: zeroF0Coefficients(matc, dir) },
+                     f0Table: { color: kF0Table.f0, coefficients: f0TableCoefficients(matc, dir) } };
     const result = await runPage({ html: engine.page(config), roots: { ...kWebRoots, web: webDir, ...roots }, dir,
                                    ...(engine.runPage ?? {}) });
     check(result.errors.length === 0, `${engine.name}: ${result.errors.join("\n")}`);

@@ -3,8 +3,9 @@
 // in punctual lights, image lighting (with matc's energy compensation) and rect area lights (matc's
 // LTC table and integral times sum_i c_i bbar_i, or three's LTC shape times it). The Fresnel is the WGSL library matc writes
 // (matc_fresnel.wgsl) called through wgslFn, so every basis works as compiled; coefficients from a
-// compiled material, from maps through the coefficient table, or from `matc bake` textures. A
-// coated matc material's coat lobe replaces three's clearcoat.
+// compiled material, from maps through the coefficient table, from `matc bake` textures, or from
+// the base colour (a textured glTF metal: Schlick's curve, or a bare metal's F0 table). A coated
+// matc material's coat lobe replaces three's clearcoat.
 //
 //   import { loadMatcBuild, useMatcFresnel } from "matc/three/webgpu";
 //   const build = await loadMatcBuild("matc-out/");
@@ -12,11 +13,11 @@
 //                               { material: await build.loadMaterial("gold") });
 import * as THREE from "three/webgpu";
 import { BRDF_GGX, LTC_Evaluate, LTC_Uv, clearcoatNormalView, clearcoatRoughness, diffuseColor, float, mat3,
-         normalView, positionView, positionViewDirection, roughness, step, texture, uniform, uv, vec3, vec4, wgsl,
-         wgslFn } from "three/tsl";
-import { sampleTrilinearly, tableTexture } from "./textures.mjs";
-import { MatcWebError, checkAnchors, checkAreaLights, checkCoatedAreaLights, matcBuildFiles, rgbOf,
-         sourceKind } from "../matc-build.mjs";
+         ivec2, normalView, positionView, positionViewDirection, roughness, step, texture, textureLoad, uniform, uv,
+         vec3, vec4, wgsl, wgslFn } from "three/tsl";
+import { f0TableTexture, sampleTrilinearly, tableTexture } from "./textures.mjs";
+import { MatcWebError, checkAnchors, checkAreaLights, checkCoatedAreaLights, f0TableTexels, kF0TableEntries,
+         matcBuildFiles, rgbOf, sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -91,6 +92,19 @@ export async function loadMatcBuild(source) {
   for (const channel of ["red", "green", "blue"]) {
     functions[`fromF0${channel}`] = entry(`matc_three_from_f0_${channel}`, "f0: vec3f", "vec4f",
                                           `matc_coefficients_from_f0(${coefficients}, f0).${channel}`);
+  }
+  // A textured metal's F0 table: the entry left of a channel's F0, and each channel's row of
+  // matc_coefficients_from_f0_entries on the entries left and right of its F0 (as the library's
+  // MATC_COEFFICIENTS_FROM_F0_TABLE reads them).
+  functions.f0TableLeft = wgslFn("fn matc_three_f0_table_left(f0: f32) -> i32 { " +
+                                 "return matc_f0_table_left(matc_f0_table_position(f0)); }", [library]);
+  const sides = "left_red: vec4f, left_green: vec4f, left_blue: vec4f, right_red: vec4f, right_green: vec4f, " +
+                "right_blue: vec4f";
+  for (const channel of ["red", "green", "blue"]) {
+    functions[`fromF0Entries${channel}`] = wgslFn(
+        `fn matc_three_from_f0_entries_${channel}(f0: vec3f, ${sides}) -> vec4f { return ` +
+        "matc_coefficients_from_f0_entries(f0, MatcFresnelCoefficients(left_red, left_green, left_blue), " +
+        `MatcFresnelCoefficients(right_red, right_green, right_blue)).${channel}; }`, [library]);
   }
   if (ltc) {
     // Rect area lights (the library has matc's LTC functions when the build wrote its table).
@@ -284,8 +298,23 @@ function coefficientRows(build, source) {
              blue: fromF0blue({ red, green, blue, f0 }) };
   }
   if (kind === "f0Table") {
-    throw new MatcWebError("{ material, f0Table } (a textured glTF metal under an edge colour or a coat) is " +
-                           "WebGL's for now: use matc/three or matc/babylon");
+    // A textured metal under an edge colour: its coefficients at the base colour (colour times
+    // map) from the entries of its F0 table around each channel's F0.
+    if (source.material.coat) {
+      throw new MatcWebError(`${source.material.name}: a coated metal's F0 table is WebGL's for now ` +
+                             "(matc/three, matc/babylon)");
+    }
+    const table = f0TableTexture(THREE, f0TableTexels(source.f0Table), kF0TableEntries);
+    const f0 = diffuseColor.rgb.toConst("matc_f0");
+    const { f0TableLeft } = build.functions;
+    const entries = (next) => ["x", "y", "z"].map((c, row) =>
+      textureLoad(table, ivec2(f0TableLeft({ f0: f0[c] }).add(next), row)));
+    const [leftRed, leftGreen, leftBlue] = entries(0);
+    const [rightRed, rightGreen, rightBlue] = entries(1);
+    const sides = { f0, left_red: leftRed, left_green: leftGreen, left_blue: leftBlue, right_red: rightRed,
+                    right_green: rightGreen, right_blue: rightBlue };
+    return { red: build.functions.fromF0Entriesred(sides), green: build.functions.fromF0Entriesgreen(sides),
+             blue: build.functions.fromF0Entriesblue(sides) };
   }
   if (kind === "table") {
     const colour = (value) => uniform(new THREE.Color(...rgbOf(value)));
@@ -321,7 +350,8 @@ function coatOf(compiled, material, areaLights) {
 }
 
 // Makes `material` (MeshStandardNodeMaterial or MeshPhysicalNodeMaterial) a matc metal with
-// `source` = { material } (build.loadMaterial), { schlick }, { reflectivityMap, edgeTintMap } or { baked }, as
+// `source` = { material } (build.loadMaterial), { schlick }, { material, f0Table } (a bare metal's),
+// { reflectivityMap, edgeTintMap } or { baked }, as
 // matc-three.mjs takes them. Returns the material; material.userData.matc.rows holds the
 // coefficient nodes (a compiled material's are uniforms: their .value can change without
 // recompiling).
