@@ -254,6 +254,34 @@ console.log(`${cases} catalogue cases through the JS API`);
   }
 }
 
+// What the glTF loaders make of a textured metal's extension (matc/build's gltfMetals): Schlick's
+// curve per pixel from zeroF0Coefficients, an edge-coloured metal from its f0Table, and one with
+// neither (compiled in another working space) at its factor, with a note that says so.
+{
+  const { gltfMetals } = await import(path.join(work, "node_modules", "matc", "matc-build.mjs"));
+  const build = { basis: "powers", manifest: { matc_version: "0.1.0" } };
+  const rows = (row) => [row, row, row];
+  const extension = { name: "Trim", basis: "powers", matcVersion: "0.1.0", coefficients: rows([0.9, 0.1, 0.03, 0.1]) };
+  const textured = (fresnel) => ({ name: "Trim", pbrMetallicRoughness: { metallicFactor: 1, baseColorTexture: { index: 0 } },
+                                   extensions: { MATC_materials_fresnel: fresnel } });
+  const json = { materials: [
+    textured({ ...extension, zeroF0Coefficients: rows([0, 1, 0.32, 0.99]) }),
+    textured({ ...extension, f0Table: { coefficients: Array.from({ length: 33 }, () => rows([0.5, 0.5, 0.1, 0.2])) } }),
+    textured({ ...extension, colorSpace: "acescg" }),
+  ] };
+  const notes = [], warnings = [];
+  const metals = gltfMetals({ build, json, warn: (index, why) => warnings.push([index, why]),
+                              note: (index, why) => notes.push([index, why]) });
+  const [schlick, table, factor] = await Promise.all([0, 1, 2].map((index) => metals.metalOf(index)));
+  check(schlick?.source.schlick?.zeroF0Coefficients?.length === 3, "a textured Schlick metal: the { schlick } source");
+  check(table?.source.f0Table?.coefficients?.length === 33 && table.source.material?.name === "Trim",
+        "a textured edge-coloured metal: the { material, f0Table } source");
+  check(factor?.source.material?.name === "Trim" && !factor.source.f0Table && !factor.source.schlick,
+        "a textured metal without per-pixel data: its factor");
+  check(notes.length === 1 && notes[0][0] === 2 && /baseColorTexture is not followed/.test(notes[0][1]) &&
+        warnings.length === 0, `the notes: ${JSON.stringify(notes)}, warnings: ${JSON.stringify(warnings)}`);
+}
+
 // A coated metal from its MATC_materials_fresnel alone (no compiler in the page, no build directory
 // of the asset): matc's template filled with the extension's values is the compiler's snippet,
 // comment lines aside (they name the source and the fits' errors): a full clear coat, a partial
