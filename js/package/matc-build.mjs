@@ -349,8 +349,11 @@ export async function matcBuildFiles(source, language) {
   return source;
 }
 
-// Whether `name` is an identifier, as matc's snippets name their functions after a material.
-const isSnippetName = (name) => /^[A-Za-z_][A-Za-z0-9_]*$/.test(name ?? "");
+// Whether `name` is a material name matc writes (material_name_problem in
+// compiler/src/material/parse.cpp): an identifier of at most 64 characters, not starting with "_"
+// and without "__" (its snippets' functions are matc_<kind>_<name>, and GLSL reserves "__").
+const isSnippetName = (name) => typeof name === "string" && name.length <= 64 &&
+                                /^[A-Za-z][A-Za-z0-9_]*$/.test(name) && !name.includes("__");
 
 // A coated material's coat (its <name>.json's coat section) and its shader snippet, whose
 // functions the integrations call for both lobes: { weight, ior, roughness, color,

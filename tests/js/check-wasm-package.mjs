@@ -241,6 +241,9 @@ console.log(`${cases} catalogue cases through the JS API`);
     [{ f0Table: { ...table, underCoatCoefficients: table.coefficients } }, /a bare metal's table has no underCoatCoefficients/],
     [{ f0Table: table, coat: { weight: 1 } }, /a coated metal's table needs underCoatCoefficients/],
     [{ name: "a;b" }, /name is not the identifier matc writes/],
+    [{ name: "a__b" }, /name is not the identifier matc writes/],
+    [{ name: "_trim" }, /name is not the identifier matc writes/],
+    [{ name: "t".repeat(65) }, /name is not the identifier matc writes/],
     [{ basis: "paper" }, /holds coefficients of basis paper/],
   ];
   for (const [change, pattern] of refusals) {

@@ -170,8 +170,8 @@ class Importer {
     } else if (textured) {
       not_carried.push_back(fmt::format(
           "baseColorTexture (compiled at baseColorFactor; under {} the curve is not linear in F0: "
-          "`matc gltf` writes the coefficients at 33 values of F0, between which an engine "
-          "interpolates a pixel's)",
+          "`matc gltf` writes the coefficients at 33 values of F0, between which the npm "
+          "package's loaders and native shaders interpolate a pixel's)",
           coat ? "a clear coat" : "an edge colour"));
     }
     if (coat) material_json["coat"] = std::move(*coat);
