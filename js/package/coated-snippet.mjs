@@ -50,8 +50,7 @@ export function coatedSnippet(template, { name, coefficients, colorSpace, maxErr
       : `  float inverse_mu_inside = inversesqrt(${floatLiteral(1 - inverseIorSquared)} + ` +
         `${floatLiteral(inverseIorSquared)} * mu * mu);\n  return exp2(vec3(${floatList(log2Colour)}) * inverse_mu_inside);`,
     // A full coat leaves nothing of the metal in air.
-    base: coat.weight >= 1 ? "through"
-                           : `mix(matc_combine(matc_coefficients_${name}, values), through, matc_coat_weight_${name})`,
+    base: coat.weight >= 1 ? "through" : `mix(matc_combine(in_air, values), through, matc_coat_weight_${name})`,
     layered_max_error: Math.max(...maxError).toFixed(4),
     under_coat_max_error: notCarried, coat_max_error: notCarried,
   };

@@ -112,11 +112,13 @@ ${material.coat.snippet}
 vec4 matc_coat_bbar;
 float matc_ndotv;
 #ifdef MATC_SOURCE_F0_TABLE
-// A textured metal: the metal's coefficients under the coat per pixel, from its F0 table.
+// A textured metal: the metal's coefficients under the coat per pixel (and in air, matc_c), from
+// its F0 table.
 MatcFresnelCoefficients matc_under_coat;
-vec3 matc_base_fresnel(float mu) { return matc_fresnel_textured_${name}(matc_under_coat, mu); }
+// In air as well: a partial coat mixes in the metal's own curve.
+vec3 matc_base_fresnel(float mu) { return matc_fresnel_textured_${name}(matc_c, matc_under_coat, mu); }
 vec3 matc_base_preintegrated() {
-	return matc_fresnel_preintegrated_textured_${name}(matc_under_coat, matc_bbar, matc_coat_bbar, matc_ndotv);
+	return matc_fresnel_preintegrated_textured_${name}(matc_c, matc_under_coat, matc_bbar, matc_coat_bbar, matc_ndotv);
 }
 #else
 #define matc_under_coat matc_under_coat_coefficients_${name}

@@ -38,7 +38,8 @@ vec3 matc_coat_tint_{{name}}(float mu) {
 // The base under the coat: in through the coat, reflected by the metal and the coat's underside
 // any number of times, out again: mix(in air, (1 - f)^2 v / (1 - f min(v, 1)), weight), or
 // the second term alone under a full coat.
-vec3 matc_coated_base_{{name}}(MatcFresnelCoefficients under_coat, vec4 values, vec4 coat_values,
+vec3 matc_coated_base_{{name}}(MatcFresnelCoefficients in_air, MatcFresnelCoefficients under_coat,
+                                  vec4 values, vec4 coat_values,
                                   vec3 tint) {
   float f = clamp(dot(matc_coat_coefficients_{{name}}, coat_values), 0.0, 1.0);
   vec3 v = matc_combine(under_coat, values) * tint;
@@ -50,20 +51,24 @@ vec3 matc_coated_base_{{name}}(MatcFresnelCoefficients under_coat, vec4 values, 
 }
 
 // A textured metal under this coat (docs/gltf.md): the base lobe with this pixel's coefficients
-// under the coat, under_coat (MATC_UNDER_COAT_FROM_F0_TABLE of the metal's F0 table), in place of
-// matc_under_coat_coefficients_{{name}}; the coat and its layering are this material's.
-vec3 matc_fresnel_textured_{{name}}(MatcFresnelCoefficients under_coat, float mu) {
+// in air and under the coat, in_air and under_coat (MATC_COEFFICIENTS_FROM_F0_TABLE and
+// MATC_UNDER_COAT_FROM_F0_TABLE of the metal's F0 table), in place of matc_coefficients_{{name}}
+// and matc_under_coat_coefficients_{{name}}; the coat and its layering are this material's.
+vec3 matc_fresnel_textured_{{name}}(MatcFresnelCoefficients in_air, MatcFresnelCoefficients under_coat,
+                                      float mu) {
   vec4 b = matc_basis(mu);
-  return matc_coated_base_{{name}}(under_coat, b, b, matc_coat_tint_{{name}}(mu));
+  return matc_coated_base_{{name}}(in_air, under_coat, b, b, matc_coat_tint_{{name}}(mu));
 }
-vec3 matc_fresnel_preintegrated_textured_{{name}}(MatcFresnelCoefficients under_coat, vec4 bbar, vec4 coat_bbar,
-                                                     float NdotV) {
-  return matc_coated_base_{{name}}(under_coat, bbar, coat_bbar, matc_coat_tint_{{name}}(NdotV));
+vec3 matc_fresnel_preintegrated_textured_{{name}}(MatcFresnelCoefficients in_air,
+                                                     MatcFresnelCoefficients under_coat, vec4 bbar,
+                                                     vec4 coat_bbar, float NdotV) {
+  return matc_coated_base_{{name}}(in_air, under_coat, bbar, coat_bbar, matc_coat_tint_{{name}}(NdotV));
 }
 
 // The base lobe's F for a direct light: mu = dot(V, H).
 vec3 matc_fresnel_{{name}}(float mu) {
-  return matc_fresnel_textured_{{name}}(matc_under_coat_coefficients_{{name}}, mu);
+  return matc_fresnel_textured_{{name}}(matc_coefficients_{{name}}, matc_under_coat_coefficients_{{name}},
+                                       mu);
 }
 
 // The coat lobe's F for a direct light, its weight included: mu = dot(V, H).
@@ -75,8 +80,8 @@ float matc_coat_fresnel_{{name}}(float mu) {
 // The base lobe's preintegrated F: bbar from the table at matc_lut_texcoord(NdotV, roughness),
 // coat_bbar at matc_lut_texcoord(NdotV, matc_coat_roughness_{{name}}).
 vec3 matc_fresnel_preintegrated_{{name}}(vec4 bbar, vec4 coat_bbar, float NdotV) {
-  return matc_fresnel_preintegrated_textured_{{name}}(matc_under_coat_coefficients_{{name}}, bbar,
-                                                     coat_bbar, NdotV);
+  return matc_fresnel_preintegrated_textured_{{name}}(
+      matc_coefficients_{{name}}, matc_under_coat_coefficients_{{name}}, bbar, coat_bbar, NdotV);
 }
 
 // The coat lobe's preintegrated F, its weight included.

@@ -36,7 +36,8 @@ fn matc_coat_tint_{{name}}(mu: f32) -> vec3f {
 // The base under the coat: in through the coat, reflected by the metal and the coat's underside
 // any number of times, out again: mix(in air, (1 - f)^2 v / (1 - f min(v, 1)), weight), or
 // the second term alone under a full coat.
-fn matc_coated_base_{{name}}(under_coat: MatcFresnelCoefficients, values: vec4f, coat_values: vec4f,
+fn matc_coated_base_{{name}}(in_air: MatcFresnelCoefficients, under_coat: MatcFresnelCoefficients,
+                             values: vec4f, coat_values: vec4f,
                              tint: vec3f) -> vec3f {
   let f = clamp(dot(matc_coat_coefficients_{{name}}, coat_values), 0.0, 1.0);
   let v = matc_combine(under_coat, values) * tint;
@@ -48,20 +49,24 @@ fn matc_coated_base_{{name}}(under_coat: MatcFresnelCoefficients, values: vec4f,
 }
 
 // A textured metal under this coat (docs/gltf.md): the base lobe with this pixel's coefficients
-// under the coat, under_coat (MATC_UNDER_COAT_FROM_F0_TABLE of the metal's F0 table), in place of
-// matc_under_coat_coefficients_{{name}}; the coat and its layering are this material's.
-fn matc_fresnel_textured_{{name}}(under_coat: MatcFresnelCoefficients, mu: f32) -> vec3f {
+// in air and under the coat, in_air and under_coat (MATC_COEFFICIENTS_FROM_F0_TABLE and
+// MATC_UNDER_COAT_FROM_F0_TABLE of the metal's F0 table), in place of matc_coefficients_{{name}}
+// and matc_under_coat_coefficients_{{name}}; the coat and its layering are this material's.
+fn matc_fresnel_textured_{{name}}(in_air: MatcFresnelCoefficients, under_coat: MatcFresnelCoefficients,
+                                  mu: f32) -> vec3f {
   let b = matc_basis(mu);
-  return matc_coated_base_{{name}}(under_coat, b, b, matc_coat_tint_{{name}}(mu));
+  return matc_coated_base_{{name}}(in_air, under_coat, b, b, matc_coat_tint_{{name}}(mu));
 }
-fn matc_fresnel_preintegrated_textured_{{name}}(under_coat: MatcFresnelCoefficients, bbar: vec4f,
+fn matc_fresnel_preintegrated_textured_{{name}}(in_air: MatcFresnelCoefficients,
+                                                 under_coat: MatcFresnelCoefficients, bbar: vec4f,
                                                  coat_bbar: vec4f, NdotV: f32) -> vec3f {
-  return matc_coated_base_{{name}}(under_coat, bbar, coat_bbar, matc_coat_tint_{{name}}(NdotV));
+  return matc_coated_base_{{name}}(in_air, under_coat, bbar, coat_bbar, matc_coat_tint_{{name}}(NdotV));
 }
 
 // The base lobe's F for a direct light: mu = dot(V, H).
 fn matc_fresnel_{{name}}(mu: f32) -> vec3f {
-  return matc_fresnel_textured_{{name}}(matc_under_coat_coefficients_{{name}}, mu);
+  return matc_fresnel_textured_{{name}}(matc_coefficients_{{name}}, matc_under_coat_coefficients_{{name}},
+                                       mu);
 }
 
 // The coat lobe's F for a direct light, its weight included: mu = dot(V, H).
@@ -73,8 +78,8 @@ fn matc_coat_fresnel_{{name}}(mu: f32) -> f32 {
 // The base lobe's preintegrated F: bbar from the table at matc_lut_texcoord(NdotV, roughness),
 // coat_bbar at matc_lut_texcoord(NdotV, matc_coat_roughness_{{name}}).
 fn matc_fresnel_preintegrated_{{name}}(bbar: vec4f, coat_bbar: vec4f, NdotV: f32) -> vec3f {
-  return matc_fresnel_preintegrated_textured_{{name}}(matc_under_coat_coefficients_{{name}}, bbar,
-                                                     coat_bbar, NdotV);
+  return matc_fresnel_preintegrated_textured_{{name}}(
+      matc_coefficients_{{name}}, matc_under_coat_coefficients_{{name}}, bbar, coat_bbar, NdotV);
 }
 
 // The coat lobe's preintegrated F, its weight included.

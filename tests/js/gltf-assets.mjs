@@ -52,7 +52,8 @@ const magentaTexture = (document, name) => document.createTexture(name)
 
 // car.glb: the car-paint asset (options: the metals' roughness; an iridescent foil metal too; a
 // textured bare trim; perPixel: the paint's texture (255, 0, 255) with red and blue of its factor on
-// F0-table entries, and an edge-coloured textured trim likewise, so that a loader following
+// F0-table entries, under a partial coat (0.7: the metal in air shows through too), and an
+// edge-coloured textured trim likewise, so that a loader following
 // them per pixel shades them as the metals compiled at F0 = factor with green 0).
 export async function carAsset(path, { paintRoughness = 0.4, chromeRoughness = 0.08, foil = false, trim = false,
                                        perPixel = false } = {}) {
@@ -64,7 +65,8 @@ export async function carAsset(path, { paintRoughness = 0.4, chromeRoughness = 0
   const paint = document.createMaterial("Car Paint")
     .setBaseColorFactor(perPixel ? [kF0TableEntry[28], 0.06, kF0TableEntry[16], 1] : [0.55, 0.06, 0.05, 1])
     .setMetallicFactor(1).setRoughnessFactor(paintRoughness).setBaseColorTexture(texture)
-    .setExtension("KHR_materials_clearcoat", clearcoat.createClearcoat().setClearcoatFactor(1).setClearcoatRoughnessFactor(0.03));
+    .setExtension("KHR_materials_clearcoat", clearcoat.createClearcoat().setClearcoatFactor(perPixel ? 0.7 : 1)
+      .setClearcoatRoughnessFactor(0.03));
   const chrome = document.createMaterial("Chrome").setBaseColorFactor([0.55, 0.556, 0.554, 1])
     .setMetallicFactor(1).setRoughnessFactor(chromeRoughness);
   const tyre = document.createMaterial("Tyre").setBaseColorFactor([0.02, 0.02, 0.02, 1])

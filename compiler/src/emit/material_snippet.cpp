@@ -78,12 +78,11 @@ std::string coated_snippet_source(ShaderLanguage language, const CompiledMateria
                   tint_vector, float_list(log2_color));
   // A full coat leaves nothing of the metal in air: no mix, and no in-air sum to compute.
   const std::string& name = compiled.material.name;
-  values["base"] = c.weight >= 1.0
-                       ? std::string("through")
-                       : fmt::format(
-                             "{}(matc_combine(matc_coefficients_{}, values), through, "
-                             "matc_coat_weight_{})",
-                             language == ShaderLanguage::hlsl ? "lerp" : "mix", name, name);
+  values["base"] = c.weight >= 1.0 ? std::string("through")
+                                   : fmt::format(
+                                         "{}(matc_combine(in_air, values), through, "
+                                         "matc_coat_weight_{})",
+                                         language == ShaderLanguage::hlsl ? "lerp" : "mix", name);
   values["layered_max_error"] = fmt::format("{:.4f}", worst_channel(coat.layered_error.max_abs));
   values["under_coat_max_error"] =
       fmt::format("{:.4f}", worst_channel(coat.under_coat_error.max_abs));
