@@ -111,22 +111,21 @@ vec3 matc_base_compensation() { return matc_energy_compensation(matc_c, matc_bba
 ${material.coat.snippet}
 vec4 matc_coat_bbar;
 float matc_ndotv;
+// The base's multiple scattering is a bare metal's, with the metal's F0 under the coat.
 #ifdef MATC_SOURCE_F0_TABLE
-// A textured metal: the metal's coefficients under the coat per pixel (and in air, matc_c), from
-// its F0 table.
+// A textured metal: the metal's coefficients under the coat per pixel (and in air, matc_c, which a
+// partial coat mixes in), from its F0 table.
 MatcFresnelCoefficients matc_under_coat;
-// In air as well: a partial coat mixes in the metal's own curve.
 vec3 matc_base_fresnel(float mu) { return matc_fresnel_textured_${name}(matc_c, matc_under_coat, mu); }
 vec3 matc_base_preintegrated() {
 	return matc_fresnel_preintegrated_textured_${name}(matc_c, matc_under_coat, matc_bbar, matc_coat_bbar, matc_ndotv);
 }
+vec3 matc_base_compensation() { return matc_energy_compensation(matc_under_coat, matc_bbar); }
 #else
-#define matc_under_coat matc_under_coat_coefficients_${name}
 vec3 matc_base_fresnel(float mu) { return matc_fresnel_${name}(mu); }
 vec3 matc_base_preintegrated() { return matc_fresnel_preintegrated_${name}(matc_bbar, matc_coat_bbar, matc_ndotv); }
+vec3 matc_base_compensation() { return matc_energy_compensation(matc_under_coat_coefficients_${name}, matc_bbar); }
 #endif
-// The base's multiple scattering as a bare metal's, with the metal's F0 under the coat.
-vec3 matc_base_compensation() { return matc_energy_compensation(matc_under_coat, matc_bbar); }
 float matc_coat_lobe_fresnel(float mu) { return matc_coat_fresnel_${name}(mu); }
 float matc_coat_lobe_preintegrated() { return matc_coat_fresnel_preintegrated_${name}(matc_coat_bbar); }
 `;
@@ -397,10 +396,10 @@ async function extensionCoatedMaterial(build, extension, rows) {
     if (!Array.isArray(value) || value.length !== 3) throw new MatcWebError(`${field} must be 3 numbers in [0, 1]`);
     return value.map((channel) => checkedNumber(channel, 0, 1, field));
   };
-  const under = checkedRows(coat.underCoatCoefficients, what, "underCoatCoefficients");
+  const under = checkedFiniteRows(coat.underCoatCoefficients, what, "underCoatCoefficients");
   const coatRow = coat.coatCoefficients;
-  if (!finiteRows(under) || !Array.isArray(coatRow) || coatRow.length !== 4 || !finiteRows([coatRow])) {
-    throw new MatcWebError(`${what}: underCoatCoefficients (3 rows) and coatCoefficients (one row) must be 4 finite numbers each`);
+  if (!Array.isArray(coatRow) || coatRow.length !== 4 || !finiteRows([coatRow])) {
+    throw new MatcWebError(`${what}: coatCoefficients (one row) must be 4 finite numbers`);
   }
   const versionNumber = /#define MATC_VERSION (\d+)/.exec(build.library)?.[1];
   if (!versionNumber) throw new MatcWebError(`${build.url}: its shader library does not say its MATC_VERSION`);
@@ -437,10 +436,7 @@ export async function gltfExtensionMaterial(build, extension) {
   if (!isSnippetName(extension.name)) {
     throw new MatcWebError(`its ${kGltfFresnelExtension}.name is not the identifier matc writes`);
   }
-  const rows = checkedRows(extension.coefficients, kGltfFresnelExtension, "coefficients");
-  if (!finiteRows(rows)) {
-    throw new MatcWebError(`its ${kGltfFresnelExtension}.coefficients must be finite numbers`);
-  }
+  const rows = checkedFiniteRows(extension.coefficients, kGltfFresnelExtension, "coefficients");
   // A textured metal's per-pixel data (Schlick's curve at F0 = 0, or its F0 table), checked here.
   const perPixel = {};
   if (extension.zeroF0Coefficients !== undefined) {
@@ -561,6 +557,13 @@ function checkedRows(rows, file, field) {
 // Whether every value of coefficient rows is a finite number.
 const finiteRows = (rows) => rows.every((row) => row.every((value) => typeof value === "number" && Number.isFinite(value)));
 
+// Coefficient rows (checkedRows) of finite numbers, or an error naming `what`.`field`.
+function checkedFiniteRows(rows, what, field) {
+  checkedRows(rows, what, field);
+  if (!finiteRows(rows)) throw new MatcWebError(`${what}.${field} must be finite numbers`);
+  return rows;
+}
+
 // Coefficient rows of a Schlick curve at F0 = 0 (c_0 = 0, c_1 = 1 per channel, finite c_2, c_3),
 // or an error naming `what`.
 function checkedZeroF0Rows(rows, what) {
@@ -582,10 +585,7 @@ function checkedF0Table(table, coated, what) {
     if (!Array.isArray(value) || value.length !== kF0TableEntries) {
       throw new MatcWebError(`${what}.${field} must be ${kF0TableEntries} entries of 3 rows of 4 numbers`);
     }
-    for (const entry of value) {
-      checkedRows(entry, what, field);
-      if (!finiteRows(entry)) throw new MatcWebError(`${what}.${field} must be finite numbers`);
-    }
+    for (const entry of value) checkedFiniteRows(entry, what, field);
   };
   entries(table?.coefficients, "coefficients");
   if (coated !== (table.underCoatCoefficients !== undefined)) {

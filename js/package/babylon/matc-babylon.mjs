@@ -197,14 +197,19 @@ function shaderSources() {
 
 // ---- A matc build directory as Babylon.js textures. ----
 
-function tableTexture(table, scene) {
-  const format = table.channels === 4 ? Constants.TEXTUREFORMAT_RGBA : Constants.TEXTUREFORMAT_RG;
-  const type = table.half ? Constants.TEXTURETYPE_HALF_FLOAT : Constants.TEXTURETYPE_FLOAT;
-  const texture = new RawTexture(table.data, table.size, table.size, format, scene, false, false,
-                                 Texture.BILINEAR_SAMPLINGMODE, type);
+// A clamped float texture of `data` without mips, sampled by `sampling`, its texels read as they are.
+function floatTexture(data, width, height, format, type, sampling, scene) {
+  const texture = new RawTexture(data, width, height, format, scene, false, false, sampling, type);
   texture.wrapU = texture.wrapV = Texture.CLAMP_ADDRESSMODE;
   texture.gammaSpace = false;
   return texture;
+}
+
+function tableTexture(table, scene) {
+  return floatTexture(table.data, table.size, table.size,
+                      table.channels === 4 ? Constants.TEXTUREFORMAT_RGBA : Constants.TEXTUREFORMAT_RG,
+                      table.half ? Constants.TEXTURETYPE_HALF_FLOAT : Constants.TEXTURETYPE_FLOAT,
+                      Texture.BILINEAR_SAMPLINGMODE, scene);
 }
 
 // Reads a matc build directory (`matc -o DIR`, with glsl, json and lut among --emit; ltc for rect
@@ -222,11 +227,8 @@ export async function loadMatcBuild(source, scene) {
 // A textured metal's F0 table (f0TableTexels of matc-build.mjs) as the unfiltered RGBA32F texture
 // MATC_COEFFICIENTS_FROM_F0_TABLE reads with texelFetch (the interpolation is the shader's).
 function f0TableTexture(table, scene) {
-  const texture = new RawTexture(f0TableTexels(table), kF0TableEntries, 6, Constants.TEXTUREFORMAT_RGBA, scene,
-                                 false, false, Texture.NEAREST_SAMPLINGMODE, Constants.TEXTURETYPE_FLOAT);
-  texture.wrapU = texture.wrapV = Texture.CLAMP_ADDRESSMODE;
-  texture.gammaSpace = false;
-  return texture;
+  return floatTexture(f0TableTexels(table), kF0TableEntries, 6, Constants.TEXTUREFORMAT_RGBA,
+                      Constants.TEXTURETYPE_FLOAT, Texture.NEAREST_SAMPLINGMODE, scene);
 }
 
 // Checks a build and a source of coefficients against Babylon's shaders; what the plugin keeps.

@@ -16,8 +16,8 @@ import { BRDF_GGX, LTC_Evaluate, LTC_Uv, clearcoatNormalView, clearcoatRoughness
          ivec2, normalView, positionView, positionViewDirection, roughness, step, texture, textureLoad, uniform, uv,
          vec3, vec4, wgsl, wgslFn } from "three/tsl";
 import { f0TableTexture, sampleTrilinearly, tableTexture } from "./textures.mjs";
-import { MatcWebError, checkAnchors, checkAreaLights, checkCoatedAreaLights, f0TableTexels, kF0TableEntries,
-         matcBuildFiles, rgbOf, sourceKind } from "../matc-build.mjs";
+import { MatcWebError, checkAnchors, checkAreaLights, checkCoatedAreaLights, matcBuildFiles, rgbOf,
+         sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -304,7 +304,7 @@ function coefficientRows(build, source) {
       throw new MatcWebError(`${source.material.name}: a coated metal's F0 table is WebGL's for now ` +
                              "(matc/three, matc/babylon)");
     }
-    const table = f0TableTexture(THREE, f0TableTexels(source.f0Table), kF0TableEntries);
+    const table = f0TableTexture(THREE, source.f0Table);
     const f0 = diffuseColor.rgb.toConst("matc_f0");
     const { f0TableLeft } = build.functions;
     const entries = (next) => ["x", "y", "z"].map((c, row) =>

@@ -13,8 +13,7 @@
 import * as THREE from "three";
 import { f0TableTexture, sampleTrilinearly, tableTexture } from "./textures.mjs";
 import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, checkCoatedAreaLights, declarationsGlsl,
-         f0TableTexels, kF0TableEntries, matcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind }
-  from "../matc-build.mjs";
+         matcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -218,8 +217,8 @@ function sourceUniforms(build, source) {
              uniforms: { matc_red: { value: red }, matc_green: { value: green }, matc_blue: { value: blue } } };
   }
   if (kind === "f0Table") {
-    const table = f0TableTexture(THREE, f0TableTexels(source.f0Table), kF0TableEntries);
-    return { define: "MATC_SOURCE_F0_TABLE", uniforms: { matc_f0_table: { value: table } } };
+    return { define: "MATC_SOURCE_F0_TABLE",
+             uniforms: { matc_f0_table: { value: f0TableTexture(THREE, source.f0Table) } } };
   }
   if (kind === "table") {
     const colour = (value) => new THREE.Color(...rgbOf(value));

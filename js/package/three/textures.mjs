@@ -1,5 +1,6 @@
 // Textures both three.js modules make (matc-three.mjs for WebGLRenderer, matc-three-webgpu.mjs for
 // WebGPURenderer); THREE is the caller's namespace ("three" or "three/webgpu": one core).
+import { f0TableTexels, kF0TableEntries } from "../matc-build.mjs";
 
 // A clamped float texture of `data` without mips, filtered by `filter`, its texels read as they are.
 function floatTexture(THREE, data, width, height, format, type, filter) {
@@ -18,10 +19,12 @@ export function tableTexture(THREE, table) {
                       table.half ? THREE.HalfFloatType : THREE.FloatType, THREE.LinearFilter);
 }
 
-// A textured metal's F0 table (f0TableTexels of matc-build.mjs) as the unfiltered RGBA32F texture
-// MATC_COEFFICIENTS_FROM_F0_TABLE reads with texelFetch (the interpolation is the shader's).
-export function f0TableTexture(THREE, texels, entries) {
-  return floatTexture(THREE, texels, entries, 6, THREE.RGBAFormat, THREE.FloatType, THREE.NearestFilter);
+// A textured metal's F0 table (a source's f0Table, as f0TableTexels lays it out) as the unfiltered
+// RGBA32F texture MATC_COEFFICIENTS_FROM_F0_TABLE reads with texelFetch (the interpolation is the
+// shader's).
+export function f0TableTexture(THREE, table) {
+  return floatTexture(THREE, f0TableTexels(table), kF0TableEntries, 6, THREE.RGBAFormat, THREE.FloatType,
+                      THREE.NearestFilter);
 }
 
 // matc bake's mips average coefficients, so one trilinear sampler for all of them is exact;
