@@ -74,7 +74,7 @@ TEST_F(MatcCli, EvalWithoutTheReferenceKeepsTheTablesFbar) {
 }
 
 // A coated material: both lobes and their sum, for direct lights and from the table (what the web
-// engines' probe tests compare renders with, lobe by lobe).
+// engines' probe tests compare renders with, lobe by lobe), and the exact curve of each lobe.
 TEST_F(MatcCli, EvalPrintsBothLobesOfACoatedMaterialAndTheirSum) {
   const CommandResult result =
       run({"eval", std::string(MATC_EXAMPLES_DIR) + "/copper_lacquered.json", "--mu", "0.3,0.9",
@@ -92,6 +92,13 @@ TEST_F(MatcCli, EvalPrintsBothLobesOfACoatedMaterialAndTheirSum) {
       EXPECT_DOUBLE_EQ(json["Fbar"][i][c].get<double>(),
                        json["Fbar_base"][i][c].get<double>() + coat_bar);
       EXPECT_NEAR(json["F"][i][c].get<double>(), json["F_exact"][i][c].get<double>(), 0.003);
+      // The exact curve lobe by lobe: what the web engines' references integrate apart.
+      const double exact_coat = json["F_exact_coat"][i].get<double>();
+      EXPECT_NEAR(json["F_exact_base"][i][c].get<double>() + exact_coat,
+                  json["F_exact"][i][c].get<double>(), 1e-15);
+      EXPECT_NEAR(json["F_base"][i][c].get<double>(), json["F_exact_base"][i][c].get<double>(),
+                  0.003);
+      EXPECT_NEAR(coat, exact_coat, 0.003);
     }
   }
 }

@@ -90,8 +90,15 @@ void add_coated(const EvaluationInputs& options, const CompiledMaterial& compile
   if (!options.mu.empty()) {
     out["mu"] = options.mu;
     ordered_json total = ordered_json::array(), base = ordered_json::array(),
-                 coat_lobe = ordered_json::array(), exact = ordered_json::array();
-    const LayeredCurve both(*in_air, *under, coat.input.weight, coat.input.ior, coat.input.color);
+                 coat_lobe = ordered_json::array(), exact = ordered_json::array(),
+                 exact_base = ordered_json::array(), exact_coat = ordered_json::array();
+    const auto layered = [&](LayeredCurve::Part part) {
+      return LayeredCurve(*in_air, *under, coat.input.weight, coat.input.ior, coat.input.color,
+                          part);
+    };
+    const LayeredCurve both = layered(LayeredCurve::Part::both);
+    const LayeredCurve base_part = layered(LayeredCurve::Part::base);
+    const LayeredCurve coat_part = layered(LayeredCurve::Part::coat);
     for (const double mu : options.mu) {
       const auto lobes =
           runtime::evaluate_coated_fresnel(compiled.coefficients, coefficients, shader_basis, mu);
@@ -99,11 +106,17 @@ void add_coated(const EvaluationInputs& options, const CompiledMaterial& compile
       base.push_back(lobes.base);
       coat_lobe.push_back(lobes.coat);
       exact.push_back(both.at(mu));
+      exact_base.push_back(base_part.at(mu));
+      exact_coat.push_back(coat_part.at(mu)[0]);
     }
     out["F"] = std::move(total);
     out["F_base"] = std::move(base);
     out["F_coat"] = std::move(coat_lobe);
     out["F_exact"] = std::move(exact);
+    // Each lobe's exact curve apart (a reference that integrates each lobe over its own
+    // roughness needs them so, as the split-sum and Monte-Carlo references here do).
+    out["F_exact_base"] = std::move(exact_base);
+    out["F_exact_coat"] = std::move(exact_coat);
   }
   if (options.ndotv.empty()) return;
   const Lut lut = stored_as(preintegrate_lut(basis, options.bake), options.precision);
