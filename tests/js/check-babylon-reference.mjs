@@ -2,8 +2,9 @@
 // 1, albedo = the material's F0, Schlick's Fresnel), both against the project's Monte-Carlo
 // reference of the same scene (tests/js/engine-scene.mjs) run as a Babylon ShaderMaterial, in
 // headless Chromium (Babylon's WebGL2 engine), for the Figure 2 material, beryllium and the
-// textured inlay (through the coefficient table and its bake); the regions and what each must
-// show are in tests/js/engine-reference.mjs. The environment is a float cube map prefiltered by
+// textured inlay (through the coefficient table and its bake), and the coated car paint of
+// examples/gltf as Babylon's glTF loader builds it and as matc's loader extension does; the
+// regions and what each must show are in tests/js/engine-reference.mjs. The environment is a float cube map prefiltered by
 // Babylon's own HDRFiltering, which the reference samples at its base level. Babylon loads its
 // area lights' LTC tables from its CDN at run time; with no network here, the page points
 // Tools.AssetBaseUrl at a local copy of Heitz et al.'s tables (three.js's RectAreaLightTexturesLib,
@@ -37,7 +38,9 @@ void main() {
 }`;
 
 const kPage = (config) => modulePage(config, {
-  head: `import { Constants } from "@babylonjs/core/Engines/constants.js";
+  head: `import "@babylonjs/loaders/glTF/2.0/index.js";
+import { LoadAssetContainerAsync } from "@babylonjs/core/Loading/sceneLoader.js";
+import { Constants } from "@babylonjs/core/Engines/constants.js";
 import { Matrix, Quaternion, Vector3 } from "@babylonjs/core/Maths/math.vector.js";
 import { Color3, Color4 } from "@babylonjs/core/Maths/math.color.js";
 import { CreateSphere } from "@babylonjs/core/Meshes/Builders/sphereBuilder.js";
@@ -55,6 +58,7 @@ import { CubeMapToSphericalPolynomialTools } from "@babylonjs/core/Misc/HighDyna
 import { Tools } from "@babylonjs/core/Misc/tools.js";
 import { read as readKtx2 } from "ktx-parse";
 import { loadMatcBuild, useMatcFresnel } from "/web/babylon/matc-babylon.mjs";
+import { registerMatcGltfExtension } from "/web/babylon/matc-gltf.mjs";
 import { babylonProbeScene } from "/checks/babylon-scene-page.mjs";
 ${environmentRadiance.toString()}
 ${environmentCubeFaces.toString()}
@@ -135,7 +139,8 @@ ${environmentCubeFaces.toString()}
     const uniforms = ["world", "viewProjection", "cameraPosition", "viewMatrix", "reference_roughness",
       "reference_f0", "reference_point_position", "reference_point_intensity", "reference_rect_origin",
       "reference_rect_u", "reference_rect_v", "reference_rect_normal", "reference_rect_intensity",
-      "reference_environment_samples", "reference_rect_side", "reference_lut_size", "reference_textured"];
+      "reference_environment_samples", "reference_rect_side", "reference_lut_size", "reference_textured",
+      "reference_coated", "reference_coat_roughness"];
     const shader = new ShaderMaterial("reference", scene, { vertexSource: config.babylonVertexShader,
       fragmentSource: config.fragmentPrelude + config.fragmentShader },
       { attributes: ["position", "normal", "uv"], uniforms,
@@ -156,11 +161,13 @@ ${environmentCubeFaces.toString()}
     shader.setInt("reference_rect_side", sceneConfig.samples.rectSide);
     shader.setFloat("reference_lut_size", build.lut.getSize().width);
     shader.setInt("reference_textured", textured ? 1 : 0);
+    shader.setInt("reference_coated", material.coatRoughness === undefined ? 0 : 1);
+    shader.setFloat("reference_coat_roughness", material.coatRoughness ?? 0);
     shader.setTexture("reference_environment", unfiltered);
     shader.setTexture("reference_albedo", build.lut);
     if (material.exactFresnel) {
       shader.setTexture("reference_fresnel", new RawTexture(new Float32Array(material.exactFresnel),
-          material.exactFresnel.length / 4, 1, Constants.TEXTUREFORMAT_RGBA, scene, false, false,
+          material.exactFresnel.length / 8, 2, Constants.TEXTUREFORMAT_RGBA, scene, false, false,
           Constants.TEXTURE_BILINEAR_SAMPLINGMODE, Constants.TEXTURETYPE_FLOAT));
     } else {
       shader.setTexture("reference_fresnel", build.lut);  // unused by the textured branch
@@ -241,6 +248,31 @@ ${environmentCubeFaces.toString()}
     quality.roughness = material.roughness;
     await draw(material.name + " matc-quality", quality, true);
   }
+  if (config.coated && !config.timing) {
+    // The car paint as Babylon's glTF loader builds it, and as matc's loader extension does.
+    const coated = config.coated;
+    const loaded = async (options) => {
+      const registration = options ? registerMatcGltfExtension(options) : null;
+      try {
+        const container = await LoadAssetContainerAsync(coated.asset, scene);
+        // Babylon's glTF loader turns on its specular anti-aliasing (roughness widened by the
+        // normal's derivatives), which the reference does not model (unlike three.js's, which it
+        // does): off in both loads, so that what differs is the Fresnel and the layering.
+        const material = container.materials[0];
+        material.enableSpecularAntiAliasing = false;
+        return { material, made: registration?.materials ?? [] };
+      } finally {
+        registration?.unregister();
+      }
+    };
+    await draw(coated.name + " reference", referenceMaterial(coated, null), false);
+    await draw(coated.name + " stock", (await loaded(null)).material, true);
+    const ours = await loaded({ build });
+    if (ours.made.length !== 1 || ours.material.metadata?.matc?.from !== "extension") {
+      out.errors.push(coated.asset + ": matc's loader extension did not make the car paint a matc metal from its extension");
+    }
+    await draw(coated.name + " matc", ours.material, true);
+  }
 `,
 });
 
@@ -265,5 +297,5 @@ const babylonVersion = JSON.parse(readFileSync(join(dirname(fileURLToPath(import
 await runReferenceComparison({
   name: "Babylon.js", prefix: "babylon", label: `Babylon.js ${babylonVersion} (WebGL2 engine, ANGLE on SwiftShader)`,
   page: (config) => kPage({ ...config, babylonVertexShader: kBabylonVertexShader, fragmentPrelude: kBabylonPrelude }),
-  prepare: writeBabylonLtcTables,
+  prepare: writeBabylonLtcTables, coated: true,
 }, process.argv.slice(2));

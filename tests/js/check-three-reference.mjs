@@ -2,8 +2,9 @@
 // (F0 = the material's F0, Schlick's Fresnel), both against the project's Monte-Carlo reference of
 // the same scene (tests/js/engine-scene.mjs: a sphere under an environment map, a point light and
 // a rect area light), rendered by WebGLRenderer in headless Chromium for the Figure 2 material,
-// beryllium and the textured inlay (through the coefficient table and its bake); the regions and
-// what each must show are in tests/js/engine-reference.mjs.
+// beryllium and the textured inlay (through the coefficient table and its bake); and the coated car
+// paint of examples/gltf as GLTFLoader builds it and as matc's GLTFLoader plugin does. The regions
+// and what each must show are in tests/js/engine-reference.mjs.
 //   node check-three-reference.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR MATC_EXAMPLE_MAPS
 //        EXAMPLES_TEXTURED_DIR [--markdown] [--images DIR] [--size N] [--lights PATH] [--timing]
 import { modulePage, threeVersion } from "./browser-page.mjs";
@@ -12,8 +13,10 @@ import { runReferenceComparison } from "./engine-reference.mjs";
 const kPage = (config) => modulePage(config, {
   head: `import * as THREE from "three";
 import { RectAreaLightUniformsLib } from "three/addons/lights/RectAreaLightUniformsLib.js";
+import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
 import { KTX2Loader } from "three/addons/loaders/KTX2Loader.js";
 import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three.mjs";
+import { matcGltfPlugin } from "/web/three/matc-gltf.mjs";
 import { inlayMaps, referenceMaterial, threeScene } from "/checks/three-scene-page.mjs";
 `,
   body: `
@@ -83,9 +86,26 @@ import { inlayMaps, referenceMaterial, threeScene } from "/checks/three-scene-pa
                                    { material: await build.loadMaterial(material.name) }, { areaLights: "quality" });
     draw(material.name + " matc-quality", quality, true);
   }
+  if (config.coated && !config.timing) {
+    // The car paint as three.js loads the asset, and as matc's plugin does (its coated metal).
+    const coated = config.coated;
+    const loaded = async (loader) => {
+      const gltf = await loader.loadAsync(coated.asset);
+      const materials = [];
+      gltf.scene.traverse((object) => { if (object.isMesh) materials.push(object.material); });
+      return { material: materials[0], made: gltf.userData.matcMaterials ?? [] };
+    };
+    draw(coated.name + " reference", reference(coated), false);
+    draw(coated.name + " stock", (await loaded(new GLTFLoader())).material, true);
+    const ours = await loaded(new GLTFLoader().register(matcGltfPlugin({ build })));
+    if (ours.made.length !== 1 || ours.material.userData.matc?.from !== "extension") {
+      out.errors.push(coated.asset + ": matc's plugin did not make the car paint a matc metal from its extension");
+    }
+    draw(coated.name + " matc", ours.material, true);
+  }
 `,
 });
 
-await runReferenceComparison({ name: "three.js", prefix: "three", page: kPage,
+await runReferenceComparison({ name: "three.js", prefix: "three", page: kPage, coated: true,
                                label: `three.js ${threeVersion()} (WebGLRenderer, ANGLE on SwiftShader)` },
                              process.argv.slice(2));

@@ -5,7 +5,9 @@
 // Each engine gives a page (config -> HTML) that renders "<material> reference", "<material>
 // stock", "<material> matc", "<material> matc-engine-ltc" and "<material> matc-quality" (the
 // areaLights options; and "inlaid_metals baked") as base64 RGBA floats, the reference with
-// 1 + NdotV in alpha.
+// 1 + NdotV in alpha. An engine with a glTF loader (engine.coated) also renders the coated car
+// paint of examples/gltf as its own loader builds it ("Car_Paint stock") and as matc's loader
+// does ("Car_Paint matc"), against the two-lobe reference.
 //   runReferenceComparison(engine, process.argv.slice(2)), argv: MATC MATERIALS_DIR
 //   EXAMPLES_WEB_DIR MATC_EXAMPLE_MAPS EXAMPLES_TEXTURED_DIR [--markdown] [--images DIR]
 //   [--size N] [--lights environment|point|rect] [--timing]
@@ -18,6 +20,7 @@ import { kWebRoots, runPage } from "./browser-page.mjs";
 import { kReferenceFragmentShader, kReferenceVertexShader, kScene, rectLightGeometry,
          sceneWith } from "./engine-scene.mjs";
 import { displayByte, writePng } from "./png.mjs";
+import { materialsOnSpheres } from "./gltf-assets.mjs";
 import { check, finish } from "./report.mjs";
 import { run } from "./shader-cases.mjs";
 
@@ -38,6 +41,16 @@ const kRegions = [
 // The renders of each material with useMatcFresnel's other areaLights options ("<material> <kind>").
 const kAreaLightVariants = [{ kind: "matc-engine-ltc", label: "engine's LTC" },
                             { kind: "matc-quality", label: "quality level" }];
+
+// The coated metal: the car paint of examples/gltf (a metallic base under a clear coat, read as
+// docs/gltf.md reads it), each material of the asset on a sphere for the engines' loaders.
+const kCoatedAsset = { source: join("gltf", "car_paint.gltf"), file: "car_paint.glb" };
+
+// The reference's exact curves as its texture holds them: row 0 the metal's (a coated metal's
+// base lobe's), row 1 a coated metal's coat lobe's (zero for a bare metal); RGBA per cosine.
+function fresnelRows(base, coat = null) {
+  return [...base.flatMap((rgb) => [...rgb, 1]), ...base.flatMap((_, i) => coat ? [coat[i], coat[i], coat[i], 1] : [0, 0, 0, 1])];
+}
 
 const floats = (text) => new Float32Array(Buffer.from(text, "base64").buffer.slice(0));
 
@@ -95,24 +108,43 @@ export async function runReferenceComparison(engine, argv) {
   const dir = mkdtempSync(join(tmpdir(), "matc-engine-reference-"));
   try {
     const out = join(dir, "out");
+    // The coated asset: its materials on spheres, and the asset as `matc gltf` writes it (matc's
+    // loader reads the extension; the two-lobe snippet comes from this build, which compiles it).
+    const asset = join(dir, kCoatedAsset.file), assets = join(dir, "gltf");
+    if (engine.coated) {
+      mkdirSync(assets);
+      await materialsOnSpheres(join(dirname(materialsDir), kCoatedAsset.source), asset);
+      run(matc, ["gltf", "-q", asset, "-o", join(assets, kCoatedAsset.file)]);
+    }
     run(matc, ["-q", "-o", out, "--emit", "glsl,wgsl,json,lut,ltc,coefficient-table", "--lut-precision", "f32",
-               ...kMaterials.map((name) => join(materialsDir, `${name}.json`))]);
+               ...kMaterials.map((name) => join(materialsDir, `${name}.json`)), ...(engine.coated ? [asset] : [])]);
     const cosines = Array.from({ length: kScene.fresnelSamples }, (_, i) => i / (kScene.fresnelSamples - 1));
     const materials = kMaterials.map((name) => {
       const compiled = JSON.parse(readFileSync(join(out, `${name}.json`), "utf8"));
       const exact = JSON.parse(run(matc, ["eval", join(materialsDir, `${name}.json`), "--mu", cosines.join(",")]))
                       .F_exact;
       return { name, roughness: compiled.roughness, f0: compiled.coefficients.map((row) => row[0]),
-               exactFresnel: exact.flatMap((rgb) => [...rgb, 1]) };
+               exactFresnel: fresnelRows(exact) };
     });
+    // Each lobe's exact curve; the base's multiple scattering with its curve's F0.
+    let coated = null;
+    if (engine.coated) {
+      const evaluated = JSON.parse(run(matc, ["eval", asset, "--mu", cosines.join(",")]));
+      const compiled = JSON.parse(readFileSync(join(out, `${evaluated.name}.json`), "utf8"));
+      coated = { name: evaluated.name, asset: `/gltf/${kCoatedAsset.file}`, roughness: compiled.roughness,
+                 coatRoughness: evaluated.coat.roughness, f0: evaluated.F_exact_base.at(-1),
+                 exactFresnel: fresnelRows(evaluated.F_exact_base, evaluated.F_exact_coat) };
+    }
     // The inlay's maps and bake, as the examples' build makes them.
     const textured = join(dir, "textured");
     run(exampleMaps, ["--size", "512", "-o", join(textured, "maps")]);
     cpSync(join(texturedDir, "inlaid_metals.json"), join(textured, "inlaid_metals.json"));
     run(matc, ["bake", "-q", "--f0", "-o", join(textured, "baked"), join(textured, "inlaid_metals.json")]);
-    const config = { textured: { name: "inlaid_metals", roughness: 0.3 }, scene: { ...sceneWith(lightPaths), size }, materials, rect: rectLightGeometry(kScene.rect),
-                     vertexShader: kReferenceVertexShader, fragmentShader: kReferenceFragmentShader };
-    const roots = { ...kWebRoots, web: webDir, out, textured, ...(engine.prepare?.(dir) ?? {}) };
+    const config = { textured: { name: "inlaid_metals", roughness: 0.3 }, scene: { ...sceneWith(lightPaths), size }, materials, coated,
+                     rect: rectLightGeometry(kScene.rect), vertexShader: kReferenceVertexShader,
+                     fragmentShader: kReferenceFragmentShader };
+    const roots = { ...kWebRoots, web: webDir, out, textured, ...(coated ? { gltf: assets } : {}),
+                    ...(engine.prepare?.(dir) ?? {}) };
     const pageOptions = { roots, dir, budgetMs: 600000, ...engine.runPage };
     const result = await runPage({ html: engine.page(config), ...pageOptions });
     check(result.errors.length === 0, `${engine.name}: ${result.errors.join("\n")}`);
@@ -173,6 +205,29 @@ export async function runReferenceComparison(engine, argv) {
         writePanels(join(imagesDir, `${engine.prefix}_${inlay}_difference.png`), size, [
           { image: stock, against: reference, scaleBy: 4 }, { image: table, against: reference, scaleBy: 4 },
           { image: baked, against: reference, scaleBy: 4 }]);
+      }
+    }
+    // The coated car paint as the engine's glTF loader builds it and as matc's does: closer to
+    // the two-lobe reference than the engine's own in every region.
+    if (coated) {
+      const images = ["reference", "stock", "matc"].map((kind) => result.images[`${coated.name} ${kind}`]);
+      check(images.every(Boolean), `${coated.name}: not every image was rendered`);
+      if (images.every(Boolean)) {
+        const [reference, stock, ours] = images.map(floats);
+        const stockErrors = regionErrors(stock, reference);
+        regionErrors(ours, reference).forEach((o, r) => {
+          const s = stockErrors[r];
+          check(o.pixels > 50, `${coated.name}, ${kRegions[r].name}: only ${o.pixels} pixels`);
+          check(o.all < s.all, `${coated.name} (glTF), ${kRegions[r].name}: matc's error ${o.all.toFixed(4)} ` +
+                               `against the engine's loading's ${s.all.toFixed(4)}: not closer`);
+          rows.push({ name: `${coated.name} (glTF, coated)`, region: kRegions[r].name, pixels: o.pixels, stock: s, ours: o });
+        });
+        if (imagesDir) {
+          writePanels(join(imagesDir, `${engine.prefix}_${coated.name}.png`), size,
+                      [{ image: reference }, { image: stock }, { image: ours }]);
+          writePanels(join(imagesDir, `${engine.prefix}_${coated.name}_difference.png`), size, [
+            { image: stock, against: reference, scaleBy: 4 }, { image: ours, against: reference, scaleBy: 4 }]);
+        }
       }
     }
     const percent = (x) => `${(100 * x).toFixed(1)}%`;

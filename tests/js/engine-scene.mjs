@@ -3,10 +3,14 @@
 // project's Monte-Carlo reference of it, a GLSL ES 3.00 fragment shader that engines can run as a
 // plain shader material: single-scattering GGX (alpha = roughness^2, height-correlated Smith)
 // with the material's *exact* Fresnel curve (tabulated at 1024 cosines), the environment by
-// visible-normal sampling (Heitz 2018), the rect light by stratified area sampling, the point
-// light in closed form; times Turquin's multiple-scattering factor 1 + F0 (1 - E) / E (E the
+// visible-normal sampling (Heitz 2018), the rect light by stratified area sampling and the same
+// visible-normal samples combined by multiple importance sampling (the balance heuristic: area
+// samples alone sparkle on a sharp lobe, a coat's), the point light in closed form; times Turquin's multiple-scattering factor 1 + F0 (1 - E) / E (E the
 // lobe's directional albedo, channel 0 of matc's table), which both engine materials apply to
-// their punctual and image lighting.
+// their punctual and image lighting. A coated metal is two such lobes (coating.md): the base's
+// at its roughness with the exact layered base curve at v.h (the multiple-scattering factor with
+// that curve's F0), plus the coat's at the coat's roughness with its weight times the coat's
+// exact Fresnel at v.h (`matc eval`'s F_exact_base and F_exact_coat).
 
 // The rect light's radiance is a whole number: Babylon.js's stock area-light Fresnel mixes the
 // light's colour into its weights (computeAreaSpecularLighting), which only works for colours up
@@ -110,7 +114,11 @@ uniform samplerCube reference_environment;  // looked up with -z, as Babylon.js 
 #else
 uniform sampler2D reference_environment;  // equirectangular, linear filtering
 #endif
-uniform sampler2D reference_fresnel;      // exact F(mu), mu = i / (n - 1), n texels in a row
+// Exact F(mu), mu = i / (n - 1), n texels in a row: row 0 the metal's (a coated metal's base
+// lobe's), row 1 a coated metal's coat lobe's (reference_coated = 1), weight included.
+uniform sampler2D reference_fresnel;
+uniform int reference_coated;
+uniform float reference_coat_roughness;
 // A textured metal instead (reference_textured = 1): Gulbrandsen's reflectivity and edge tint
 // per pixel from these maps (linear values), the exact conductor Fresnel of their n + ik.
 uniform int reference_textured;
@@ -151,24 +159,26 @@ vec3 conductor_fresnel(vec3 n, vec3 k, float mu) {
   vec3 rp = rs * (c2 * a2b2 - 2.0 * a * c * s2 + s2 * s2) / (c2 * a2b2 + 2.0 * a * c * s2 + s2 * s2);
   return 0.5 * (rs + rp);
 }
-vec3 exact_fresnel(float mu) {
+// lobe 0: the metal (or a coated metal's base), 1: the coat.
+vec3 exact_fresnel(float mu, int lobe) {
   if (reference_textured == 1) return conductor_fresnel(pixel_n, pixel_k, mu);
   float n = float(textureSize(reference_fresnel, 0).x);
-  return texture(reference_fresnel, vec2(clamp(mu, 0.0, 1.0) * (n - 1.0) / n + 0.5 / n, 0.5)).rgb;
+  float row = lobe == 0 ? 0.25 : 0.75;
+  return texture(reference_fresnel, vec2(clamp(mu, 0.0, 1.0) * (n - 1.0) / n + 0.5 / n, row)).rgb;
 }
 float smith_lambda(float a2, float cosine) {
   float c2 = max(cosine * cosine, 1e-8);
   return 0.5 * (sqrt(1.0 + a2 * (1.0 - c2) / c2) - 1.0);
 }
 // f(l, v) cos(l) for unit l, v in the shading frame of normal n.
-vec3 brdf_cosine(vec3 n, vec3 v, vec3 l, float a2) {
+vec3 brdf_cosine(vec3 n, vec3 v, vec3 l, float a2, int lobe) {
   float nl = dot(n, l), nv = dot(n, v);
   if (nl <= 0.0 || nv <= 0.0) return vec3(0.0);
   vec3 h = normalize(l + v);
   float nh = dot(n, h);
   float d = a2 / (PI * pow(nh * nh * (a2 - 1.0) + 1.0, 2.0));
   float g2 = 1.0 / (1.0 + smith_lambda(a2, nv) + smith_lambda(a2, nl));
-  return exact_fresnel(dot(v, h)) * (d * g2 / (4.0 * nv));
+  return exact_fresnel(dot(v, h), lobe) * (d * g2 / (4.0 * nv));
 }
 vec3 environment(vec3 d) {
 #ifdef REFERENCE_CUBE_ENVIRONMENT
@@ -208,6 +218,92 @@ vec3 sample_vndf(vec3 ve, float alpha, vec2 u) {
   vec3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;
   return normalize(vec3(alpha * nh.x, alpha * nh.y, max(0.0, nh.z)));
 }
+// The roughness a lobe shades with: the material's, or (REFERENCE_GEOMETRY_ROUGHNESS) the one
+// three.js shades with: at least 0.045, widened by the normal's screen-space derivative (its
+// specular anti-aliasing, for the base and the coat alike), so that the reference judges the
+// Fresnel alone.
+float shading_roughness(float roughness) {
+#ifdef REFERENCE_GEOMETRY_ROUGHNESS
+  vec3 view_normal = normalize(mat3(viewMatrix) * reference_normal);
+  vec3 dxy = max(abs(dFdx(view_normal)), abs(dFdy(view_normal)));
+  return min(max(roughness, 0.045) + max(max(dxy.x, dxy.y), dxy.z), 1.0);
+#else
+  return roughness;
+#endif
+}
+// Where the ray from the shaded point along l meets the rect light's front: its squared distance,
+// or 0 where it misses.
+float rect_hit(vec3 l) {
+  float facing = -dot(l, reference_rect_normal);
+  if (facing <= 0.0) return 0.0;
+  float t = dot(reference_position - reference_rect_origin, reference_rect_normal) / facing;
+  if (t <= 0.0) return 0.0;
+  vec3 q = reference_position + t * l - reference_rect_origin;
+  float s = dot(q, reference_rect_u) / dot(reference_rect_u, reference_rect_u);
+  float r = dot(q, reference_rect_v) / dot(reference_rect_v, reference_rect_v);
+  return s >= 0.0 && s <= 1.0 && r >= 0.0 && r <= 1.0 ? t * t : 0.0;
+}
+// The rect light's radiance towards v along l (a direction that meets it at squared distance d2),
+// as one of the rect's samples: f cos L / (the environment's count times the visible-normal pdf +
+// the rect's count times the area pdf), each pdf per solid angle; so a direction either strategy
+// drew adds this, and their sum over both strategies' samples is the balance heuristic's estimate.
+vec3 rect_sample(vec3 n, vec3 v, vec3 l, float d2, float a2, int lobe) {
+  float nv = dot(n, v);
+  vec3 h = normalize(l + v);
+  float nh = dot(n, h);
+  float d = a2 / (PI * pow(nh * nh * (a2 - 1.0) + 1.0, 2.0));
+  float visible_normal_pdf = d / (4.0 * nv * (1.0 + smith_lambda(a2, nv)));
+  float facing = -dot(l, reference_rect_normal);
+  float area = length(cross(reference_rect_u, reference_rect_v));
+  float area_pdf = d2 / (area * facing);
+  float strategies = float(reference_environment_samples) * visible_normal_pdf +
+                     float(reference_rect_side * reference_rect_side) * area_pdf;
+  return brdf_cosine(n, v, l, a2, lobe) * (reference_rect_intensity / strategies);
+}
+// One lobe's radiance towards v under the three lights, its exact curve at v.h.
+vec3 lobe_radiance(vec3 n, vec3 v, float roughness, int lobe, vec2 shift) {
+  float nv = dot(n, v);
+  float alpha = roughness * roughness;
+  float a2 = alpha * alpha;
+  vec3 rect = vec3(0.0);
+  // Environment: VNDF samples, weight F(v.h) G2 / G1(v).
+  vec3 t = normalize(abs(n.y) < 0.999 ? cross(vec3(0.0, 1.0, 0.0), n) : cross(vec3(1.0, 0.0, 0.0), n));
+  vec3 b = cross(n, t);
+  vec3 ve = vec3(dot(v, t), dot(v, b), nv);
+  vec3 image = vec3(0.0);
+  int count = reference_environment_samples;
+  for (int i = 0; i < count; ++i) {
+    vec2 u = fract(vec2((float(i) + 0.5) / float(count), radical_inverse(uint(i))) + shift);
+    vec3 h = sample_vndf(ve, alpha, u);
+    vec3 le = reflect(-ve, h);
+    if (le.z <= 0.0) continue;
+    float g1 = 1.0 / (1.0 + smith_lambda(a2, nv));
+    float g2 = 1.0 / (1.0 + smith_lambda(a2, nv) + smith_lambda(a2, le.z));
+    vec3 l = le.x * t + le.y * b + le.z * n;
+    image += environment(l) * exact_fresnel(dot(ve, h), lobe) * (g2 / g1);
+    float hit = rect_hit(l);
+    if (hit > 0.0) rect += rect_sample(n, v, l, hit, a2, lobe);
+  }
+  image /= float(count);
+  // Point light: closed form, as three.js attenuates it (1 / d^2).
+  vec3 to_point = reference_point_position - reference_position;
+  float d2 = dot(to_point, to_point);
+  vec3 point = brdf_cosine(n, v, normalize(to_point), a2, lobe) * (reference_point_intensity / d2);
+  // Rect light: stratified area samples, one-sided (and the visible-normal samples above).
+  int side = reference_rect_side;
+  for (int i = 0; i < side; ++i) {
+    for (int j = 0; j < side; ++j) {
+      vec2 st = (vec2(i, j) + shift) / float(side);  // jittered strata
+      vec3 p = reference_rect_origin + st.x * reference_rect_u + st.y * reference_rect_v;
+      vec3 to_light = p - reference_position;
+      float dl2 = dot(to_light, to_light);
+      vec3 l = to_light * inversesqrt(dl2);
+      if (-dot(l, reference_rect_normal) <= 0.0) continue;
+      rect += rect_sample(n, v, l, dl2, a2, lobe);
+    }
+  }
+  return image + point + rect;
+}
 void main() {
   vec3 f0 = reference_f0;
   if (reference_textured == 1) {
@@ -223,61 +319,18 @@ void main() {
   vec3 v = normalize(cameraPosition - reference_position);
   float nv = dot(n, v);
   if (nv <= 0.0) { reference_color = vec4(0.0, 0.0, 0.0, 1.0); return; }
-  float roughness = reference_roughness;
-#ifdef REFERENCE_GEOMETRY_ROUGHNESS
-  // The roughness three.js shades with: at least 0.045, widened by the normal's screen-space
-  // derivative (its specular anti-aliasing), so that the reference judges the Fresnel alone.
-  vec3 view_normal = normalize(mat3(viewMatrix) * reference_normal);
-  vec3 dxy = max(abs(dFdx(view_normal)), abs(dFdy(view_normal)));
-  roughness = min(max(reference_roughness, 0.045) + max(max(dxy.x, dxy.y), dxy.z), 1.0);
-#endif
-  float alpha = roughness * roughness;
-  float a2 = alpha * alpha;
-  // Environment: VNDF samples, weight F(v.h) G2 / G1(v).
-  vec3 t = normalize(abs(n.y) < 0.999 ? cross(vec3(0.0, 1.0, 0.0), n) : cross(vec3(1.0, 0.0, 0.0), n));
-  vec3 b = cross(n, t);
-  vec3 ve = vec3(dot(v, t), dot(v, b), nv);
+  // Both derivatives taken here, outside the lobes' branches.
+  float roughness = shading_roughness(reference_roughness);
+  float coat_roughness = shading_roughness(reference_coat_roughness);
   vec2 shift = pixel_shift();
-  vec3 image = vec3(0.0);
-  int count = reference_environment_samples;
-  for (int i = 0; i < count; ++i) {
-    vec2 u = fract(vec2((float(i) + 0.5) / float(count), radical_inverse(uint(i))) + shift);
-    vec3 h = sample_vndf(ve, alpha, u);
-    vec3 le = reflect(-ve, h);
-    if (le.z <= 0.0) continue;
-    float g1 = 1.0 / (1.0 + smith_lambda(a2, nv));
-    float g2 = 1.0 / (1.0 + smith_lambda(a2, nv) + smith_lambda(a2, le.z));
-    vec3 l = le.x * t + le.y * b + le.z * n;
-    image += environment(l) * exact_fresnel(dot(ve, h)) * (g2 / g1);
-  }
-  image /= float(count);
-  // Point light: closed form, as three.js attenuates it (1 / d^2).
-  vec3 to_point = reference_point_position - reference_position;
-  float d2 = dot(to_point, to_point);
-  vec3 point = brdf_cosine(n, v, normalize(to_point), a2) * (reference_point_intensity / d2);
-  // Rect light: stratified area samples, one-sided.
-  vec3 rect = vec3(0.0);
-  int side = reference_rect_side;
-  float area = length(cross(reference_rect_u, reference_rect_v));
-  for (int i = 0; i < side; ++i) {
-    for (int j = 0; j < side; ++j) {
-      vec2 st = (vec2(i, j) + shift) / float(side);  // jittered strata
-      vec3 p = reference_rect_origin + st.x * reference_rect_u + st.y * reference_rect_v;
-      vec3 to_light = p - reference_position;
-      float dl2 = dot(to_light, to_light);
-      vec3 l = to_light * inversesqrt(dl2);
-      float facing = -dot(l, reference_rect_normal);
-      if (facing <= 0.0) continue;
-      rect += brdf_cosine(n, v, l, a2) * (facing / dl2);
-    }
-  }
-  rect *= reference_rect_intensity * area / float(side * side);
-  // Turquin's multiple scattering, as the engine materials apply it.
+  vec3 base = lobe_radiance(n, v, roughness, 0, shift);
+  // Turquin's multiple scattering of the (base) lobe, as the engine materials apply it.
   float size = reference_lut_size;
   vec2 lut_uv = vec2(sqrt(clamp(nv, 0.0, 1.0)), roughness) * ((size - 1.0) / size) + 0.5 / size;
   float e = max(texture(reference_albedo, lut_uv).x, 1e-4);
   vec3 compensation = 1.0 + f0 * (1.0 - e) / e;
-  reference_color = vec4((image + point + rect) * compensation, 1.0 + nv);
+  vec3 coat = reference_coated == 1 ? lobe_radiance(n, v, coat_roughness, 1, shift) : vec3(0.0);
+  reference_color = vec4(base * compensation + coat, 1.0 + nv);
 }`;
 
 // The scene with only one of its light paths ("environment", "point", "rect"), or all ("all").

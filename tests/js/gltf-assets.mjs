@@ -149,3 +149,12 @@ export async function trimAsset(dir) {
 }
 
 
+
+// The materials of `source` (a glTF of materials alone, as examples/gltf holds them), each on a
+// sphere, as a GLB at `path`: what an engine's loader needs to build them, their JSON as it was.
+export async function materialsOnSpheres(source, path) {
+  const io = new NodeIO().registerExtensions([KHRMaterialsClearcoat, KHRMaterialsIridescence, KHRMaterialsSpecular]);
+  const document = await io.read(source);
+  scene(document, document.getRoot().listMaterials());
+  writeFileSync(path, await io.writeBinary(document));
+}

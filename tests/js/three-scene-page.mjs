@@ -88,9 +88,10 @@ export function threeScene(THREE, scene) {
   return { camera, equirect, sphere, lights };
 }
 
-// The reference's ShaderMaterial (WebGLRenderer) for `material` ({ roughness, f0, exactFresnel }
-// or the inlay's { roughness } with its maps); lut: matc_lut as a texture (channel 0: the lobe's
-// albedo, for the multiple-scattering factor).
+// The reference's ShaderMaterial (WebGLRenderer) for `material` ({ roughness, f0, exactFresnel:
+// the curves' two rows, coatRoughness for a coated metal } or the inlay's { roughness } with its
+// maps); lut: matc_lut as a texture (channel 0: the lobe's albedo, for the multiple-scattering
+// factor).
 export function referenceMaterial(THREE, scene, equirect, lut, material, maps = null) {
   const rect = rectLightGeometry(scene.rect);
   const vector = (v) => new THREE.Vector3(...v);
@@ -106,12 +107,14 @@ export function referenceMaterial(THREE, scene, equirect, lut, material, maps = 
     reference_rect_side: { value: scene.samples.rectSide },
     reference_lut_size: { value: lut.image.width },
     reference_textured: { value: maps ? 1 : 0 }, reference_f0: { value: vector(material.f0 ?? [0, 0, 0]) },
+    reference_coated: { value: material.coatRoughness === undefined ? 0 : 1 },
+    reference_coat_roughness: { value: material.coatRoughness ?? 0 },
   };
   if (maps) {
     uniforms.reference_reflectivity_map = { value: maps.reflectivity };
     uniforms.reference_edge_tint_map = { value: maps.edgeTint };
   } else {
-    const fresnel = new THREE.DataTexture(new Float32Array(material.exactFresnel), material.exactFresnel.length / 4, 1,
+    const fresnel = new THREE.DataTexture(new Float32Array(material.exactFresnel), material.exactFresnel.length / 8, 2,
                                           THREE.RGBAFormat, THREE.FloatType);
     fresnel.magFilter = fresnel.minFilter = THREE.LinearFilter;
     fresnel.needsUpdate = true;
