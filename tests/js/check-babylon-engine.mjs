@@ -43,6 +43,13 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
   };
   const materials = {};
   for (const name of config.materials) materials[name] = await loadProbeMaterial(name);
+  // The coated F0-table metal: its coat and snippet from the build, its coefficients in air and
+  // under the coat per pixel from its table at the material's colour.
+  const coatedTable = config.f0TableCoated;
+  const tableColour = (source) => source === "f0table" || source === coatedTable.name;
+  if (config.renders.some((render) => render.source === coatedTable.name)) {
+    materials[coatedTable.name] = await build.loadMaterial(coatedTable.name);
+  }
   for (const render of config.renders) {
     const made = [];  // what this render adds to the scene, disposed after it
     const sources = {
@@ -53,6 +60,9 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
       schlick: () => ({ schlick: { basis: build.basis, zeroF0Coefficients: config.schlick.zeroF0Coefficients } }),
       f0table: () => ({ material: { name: "f0_table_probe", basis: build.basis, coefficients: config.f0Table.coefficients[0], coat: null },
                       f0Table: { coefficients: config.f0Table.coefficients } }),
+      [coatedTable.name]: () => ({ material: materials[coatedTable.name],
+                                   f0Table: { coefficients: coatedTable.coefficients,
+                                              underCoatCoefficients: coatedTable.underCoatCoefficients } }),
     };
     const source = sources[render.source] ? await sources[render.source]() : { material: materials[render.source] };
     const material = useMatcFresnel(new PBRMaterial("matc", scene), build, source, { areaLights: render.areaLights });
@@ -60,7 +70,7 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
     // The Schlick and F0-table metals' F0 is the albedo colour (linear); the others' colour is in
     // their coefficients.
     material.albedoColor.set(...(render.source === "schlick" ? config.schlick.color
-                                 : render.source === "f0table" ? config.f0Table.color : [1, 1, 1]));
+                                 : tableColour(render.source) ? config.f0Table.color : [1, 1, 1]));
     made.push(material);
     out.renders[render.key] = await renderBabylonProbe({ scene, camera, material, light: render.light, config,
                                                          size: ${kProbeSize}, out, key: render.key });

@@ -52,10 +52,19 @@ import { probeBuild } from "/checks/page-probe-build.mjs";`,
     f0table: { material: { name: "f0_table_probe", basis: build.basis, coefficients: config.f0Table.coefficients[0], coat: null },
                       f0Table: { coefficients: config.f0Table.coefficients } },
   };
+  // The coated F0-table metal: its coat and snippet from the build, its coefficients in air and
+  // under the coat per pixel from its table at the material's colour.
+  const coatedTable = config.f0TableCoated;
+  const tableColour = (source) => source === "f0table" || source === coatedTable.name;
+  if (config.renders.some((render) => render.source === coatedTable.name)) {
+    sources[coatedTable.name] = { material: await build.loadMaterial(coatedTable.name),
+                                  f0Table: { coefficients: coatedTable.coefficients,
+                                             underCoatCoefficients: coatedTable.underCoatCoefficients } };
+  }
   for (const render of config.renders) {
     // The Schlick and F0-table metals' F0 is the material's colour (linear).
     const colour = render.source === "schlick" ? { color: new THREE.Color(...config.schlick.color) }
-                 : render.source === "f0table" ? { color: new THREE.Color(...config.f0Table.color) } : {};
+                 : tableColour(render.source) ? { color: new THREE.Color(...config.f0Table.color) } : {};
     const material = useMatcFresnel(new THREE.MeshPhysicalNodeMaterial({ roughness: render.roughness, ...colour }), build,
                                     sources[render.source] ?? { material: materials[render.source] },
                                     { areaLights: render.areaLights });

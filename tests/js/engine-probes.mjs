@@ -56,6 +56,14 @@ const kSchlickMaterial = (f0) => ({ name: "schlick_probe", color_space: "lin_rec
 // checked against the CPU runtime on lavapipe.)
 export const kF0Table = { f0: [0.7724761962890625, 0.0625, 0.586181640625], tint: [0.9, 0.75, 0.6] };
 const kF0TableMaterial = (name, f0) => ({ name, color_space: "lin_rec709", f82_tint: { f0, tint: kF0Table.tint } });
+// The same metal under a partial clear coat (the source { material, f0Table } of a textured glTF
+// metal under a coat): its table holds each entry's coefficients in air and under the coat, and
+// the partial coat lets the metal in air show through, so both halves count. The build compiles it
+// at a factor that is not the colour, as a glTF asset's factor and texture differ: a page that
+// took the material's own rows instead of the table's would draw the factor's metal.
+export const kF0TableCoated = { name: "f0_table_coated_probe", coat: { weight: 0.7, ior: 1.5, roughness: 0.1 },
+                                factor: [0.3, 0.3, 0.3] };
+const kF0TableCoatedMaterial = (name, f0) => ({ ...kF0TableMaterial(name, f0), coat: kF0TableCoated.coat });
 
 // Vector helpers (double precision; the GPU's float32 stays well within the tolerance).
 export const sub = (a, b) => a.map((x, i) => x - b[i]);
@@ -124,7 +132,8 @@ export function prepareProbeBuilds(matc, materialsDir, dir) {
   const out = join(dir, "out");
   const materialFiles = [...kProbeMaterials, kProbeCoated].map((name) => join(materialsDir, `${name}.json`));
   run(matc, ["-q", "-o", out, "--emit", "glsl,wgsl,json,lut,ltc,coefficient-table",
-             "--lut-precision", "f32", "--coefficient-table-precision", "f32", ...materialFiles]);
+             "--lut-precision", "f32", "--coefficient-table-precision", "f32", ...materialFiles,
+             f0TableCoatedFile(join(dir, "f0_table_coated_factor"), kF0TableCoated.factor)]);
   run(matc, ["bake", "-q", "--reflectivity", kBaked.reflectivity.join(","), "--edge-tint",
              kBaked.edgeTint.join(","), "--name", "probe", "--precision", "f32", "--f0", "-o",
              join(dir, "baked")]);
@@ -158,7 +167,7 @@ export function probeRenders() {
                      areaLights: "quality" });
     }
   }
-  for (const source of kColourSources) {
+  for (const source of [...kColourSources, kF0TableCoated.name]) {
     for (const light of ["environment", "point"]) {
       renders.push({ key: `${source} ${light} r=0.3`, source, light, roughness: 0.3 });
     }
@@ -174,9 +183,10 @@ export function probeRenders() {
 // engine's GGX alpha for a roughness), the rect light's radiance (rect.light.intensity) x `L_ltc`
 // (rect.corners in world space; `L_ltc_following` at the quality level), times the compensation
 // too where the engine applies it to area lights (rect.compensated). bare and coated name the
-// materials (<name>.json in materialsDir and, compiled, in out): the probe checks' by default.
+// materials (<name>.json in materialsDir and, compiled, in out): the probe checks' by default;
+// coatedFiles[name] = { file, compiledIn } a coated one's material file and compiled folder instead.
 export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibility, rect, renders,
-                                 bare = kProbeMaterials, coated = [kProbeCoated] }) {
+                                 bare = kProbeMaterials, coated = [kProbeCoated], coatedFiles = {} }) {
   const wanted = new Set(renders.map((render) => render.key));
   const ndotv = kProbePixels.map((pixel) => Math.fround(dot(kNormal, viewAt(pixel))));
   const pointTerms = kProbeRoughness.map((roughness) => kProbePixels.map((pixel) => {
@@ -230,7 +240,8 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibilit
     }
   }
   for (const name of coated) {
-    Object.assign(expected, expectedCoatedProbes({ name, matc, materialsDir, out, alphaOf, coatVisibility, rect,
+    const { file, compiledIn } = coatedFiles[name] ?? { file: join(materialsDir, `${name}.json`), compiledIn: out };
+    Object.assign(expected, expectedCoatedProbes({ name, file, out: compiledIn, matc, alphaOf, coatVisibility, rect,
                                                    wanted, ndotv, albedo, pointTerms }));
   }
   return expected;
@@ -242,13 +253,12 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibilit
 // Rect lights: `L_ltc_base` and `L_ltc_coat` of `matc eval --quad-light`, the base's compensated
 // where the engine compensates rect lights. engine.coatVisibility: the coat lobe's visibility term
 // where the engine's is not the base's (Babylon's Kelemen).
-function expectedCoatedProbes({ name, matc, materialsDir, out, alphaOf, coatVisibility, rect, wanted, ndotv, albedo,
+function expectedCoatedProbes({ name, file, matc, out, alphaOf, coatVisibility, rect, wanted, ndotv, albedo,
                                 pointTerms }) {
   const roughness = 0.3;
   const key = (light) => `${name} ${light} r=${roughness}`;
   const expected = {};
   if (!["environment", "point", "rect"].some((light) => wanted.has(key(light)))) return expected;
-  const file = join(materialsDir, `${name}.json`);
   const compiled = JSON.parse(readFileSync(join(out, `${name}.json`), "utf8"));
   const underCoatF0 = compiled.coat.under_coat_coefficients.map((row) => row[0]);
   const coatAlpha = alphaOf(compiled.coat.input.roughness);
@@ -349,6 +359,39 @@ function f0TableCoefficients(matc, dir) {
   return files.map((_, i) => JSON.parse(readFileSync(join(entries, "out", `entry_${i}.json`), "utf8")).coefficients);
 }
 
+// The coated F0-table probe metal's material file at `f0` (in `dir`, made if missing): at its
+// factor for the probe build (its coat and snippet), at its colour for the CPU runtime's side.
+function f0TableCoatedFile(dir, f0) {
+  mkdirSync(dir, { recursive: true });
+  const file = join(dir, `${kF0TableCoated.name}.json`);
+  writeFileSync(file, JSON.stringify(kF0TableCoatedMaterial(kF0TableCoated.name, f0)));
+  return file;
+}
+
+// The same metal at its colour, compiled: what the CPU runtime's side evaluates.
+function f0TableCoatedAtColour(matc, dir) {
+  const file = f0TableCoatedFile(join(dir, "f0_table_coated_colour"), kF0Table.f0);
+  const compiledIn = join(dir, "f0_table_coated_colour", "out");
+  run(matc, ["-q", "-o", compiledIn, "--emit", "json", file]);
+  return { file, compiledIn };
+}
+
+// Its table: the coated metal compiled at F0 = (i / 32)^4 on every channel, each entry's rows in
+// air and under the coat, as MATC_materials_fresnel's f0Table holds them.
+function f0TableCoatedCoefficients(matc, dir) {
+  const entries = join(dir, "f0_table_coated_entries");
+  mkdirSync(entries);
+  const files = Array.from({ length: 33 }, (_, i) => {
+    const file = join(entries, `entry_${i}.json`);
+    writeFileSync(file, JSON.stringify(kF0TableCoatedMaterial(`entry_${i}`, Array(3).fill((i / 32) ** 4))));
+    return file;
+  });
+  run(matc, ["-q", "-o", join(entries, "out"), "--emit", "json", ...files]);
+  const compiled = files.map((_, i) => JSON.parse(readFileSync(join(entries, "out", `entry_${i}.json`), "utf8")));
+  return { coefficients: compiled.map((entry) => entry.coefficients),
+           underCoatCoefficients: compiled.map((entry) => entry.coat.under_coat_coefficients) };
+}
+
 // The Schlick probe metal's material file (in `dir`), for the CPU runtime's side.
 function schlickFile(dir) {
   const file = join(dir, "schlick_probe.json");
@@ -385,12 +428,15 @@ export async function runProbeCheck(engine, [matc, materialsDir, webDir, mode]) 
     const config = { materials, coated: kProbeCoated, pixels: kProbePixels, renders, point: kPointLight,
                      rect: engine.rect?.light, textured: kTextured, compileInPage, materialTexts,
                      schlick: { color: kSchlick.f0, zeroF0Coefficients: zeroF0Coefficients(matc, dir) },
-                     f0Table: { color: kF0Table.f0, coefficients: f0TableCoefficients(matc, dir) } };
+                     f0Table: { color: kF0Table.f0, coefficients: f0TableCoefficients(matc, dir) },
+                     f0TableCoated: { name: kF0TableCoated.name, ...f0TableCoatedCoefficients(matc, dir) } };
     const result = await runPage({ html: engine.page(config), roots: { ...kWebRoots, web: webDir, ...roots }, dir,
                                    ...(engine.runPage ?? {}) });
     check(result.errors.length === 0, `${engine.name}: ${result.errors.join("\n")}`);
     const expected = expectedProbes({ matc, materialsDir, out, alphaOf: engine.alphaOf,
-                                      coatVisibility: engine.coatVisibility, rect: engine.rect, renders });
+                                      coatVisibility: engine.coatVisibility, rect: engine.rect, renders,
+                                      coated: [kProbeCoated, kF0TableCoated.name],
+                                      coatedFiles: { [kF0TableCoated.name]: f0TableCoatedAtColour(matc, dir) } });
     const worst = compareProbes(result.renders ?? {}, expected);
     const refused = checkFailures(result.failures ?? {});
     console.log(`${engine.label} with matc's Fresnel${compileInPage ? " (materials compiled in the page)" : ""}: ` +

@@ -4,7 +4,7 @@
 // LTC table and integral times sum_i c_i bbar_i, or three's LTC shape times it). The Fresnel is the WGSL library matc writes
 // (matc_fresnel.wgsl) called through wgslFn, so every basis works as compiled; coefficients from a
 // compiled material, from maps through the coefficient table, from `matc bake` textures, or from
-// the base colour (a textured glTF metal: Schlick's curve, or a bare metal's F0 table). A coated
+// the base colour (a textured glTF metal: Schlick's curve, or its F0 table, under a coat too). A coated
 // matc material's coat lobe replaces three's clearcoat.
 //
 //   import { loadMatcBuild, useMatcFresnel } from "matc/three/webgpu";
@@ -100,11 +100,14 @@ export async function loadMatcBuild(source) {
                                  "return matc_f0_table_left(matc_f0_table_position(f0)); }", [library]);
   const sides = "left_red: vec4f, left_green: vec4f, left_blue: vec4f, right_red: vec4f, right_green: vec4f, " +
                 "right_blue: vec4f";
+  // Under a coat, the metal seen from the coat likewise (matc_under_coat_from_f0_entries).
   for (const channel of ["red", "green", "blue"]) {
-    functions[`fromF0Entries${channel}`] = wgslFn(
-        `fn matc_three_from_f0_entries_${channel}(f0: vec3f, ${sides}) -> vec4f { return ` +
-        "matc_coefficients_from_f0_entries(f0, MatcFresnelCoefficients(left_red, left_green, left_blue), " +
-        `MatcFresnelCoefficients(right_red, right_green, right_blue)).${channel}; }`, [library]);
+    for (const [key, from] of [["fromF0Entries", "coefficients"], ["fromF0UnderCoat", "under_coat"]]) {
+      functions[`${key}${channel}`] = wgslFn(
+          `fn matc_three_${from}_from_f0_entries_${channel}(f0: vec3f, ${sides}) -> vec4f { return ` +
+          `matc_${from}_from_f0_entries(f0, MatcFresnelCoefficients(left_red, left_green, left_blue), ` +
+          `MatcFresnelCoefficients(right_red, right_green, right_blue)).${channel}; }`, [library]);
+    }
   }
   if (ltc) {
     // Rect area lights (the library has matc's LTC functions when the build wrote its table).
@@ -122,16 +125,23 @@ export async function loadMatcBuild(source) {
         `matc_ltc_quad_light_following(${coefficients}, bbar, ltc, roughness, N, V, P, q0, q1, q2, q3)`);
   }
   const loadMaterial = files.loadMaterial;
-  // A coated material's lobes: its own snippet (<name>.wgsl) through wgslFn.
+  // A coated material's lobes: its own snippet (<name>.wgsl) through wgslFn. The base lobe's
+  // take the coefficient rows in air and under the coat (layerRows): the material's own, or a
+  // textured metal's per pixel from its F0 table (the snippet's matc_fresnel_textured_<name>).
   const withCoatFunctions = (material) => {
     if (!material.coat) return material;
     const snippet = wgsl(material.coat.snippet);
     const name = material.name;
     const fn = (code) => wgslFn(code, [library, snippet]);
+    const rows = (prefix) => ["red", "green", "blue"].map((channel) => `${prefix}_${channel}: vec4f`).join(", ");
+    const struct = (prefix) => `MatcFresnelCoefficients(${prefix}_red, ${prefix}_green, ${prefix}_blue)`;
     material.coat.functions = {
-      baseFresnel: fn(`fn matc_three_base_fresnel_${name}(mu: f32) -> vec3f { return matc_fresnel_${name}(mu); }`),
-      basePreintegrated: fn(`fn matc_three_base_preintegrated_${name}(bbar: vec4f, coat_bbar: vec4f, ndotv: f32) -> vec3f ` +
-                            `{ return matc_fresnel_preintegrated_${name}(bbar, coat_bbar, ndotv); }`),
+      baseFresnel: fn(`fn matc_three_base_fresnel_${name}(${rows("in_air")}, ${rows("under_coat")}, mu: f32) -> vec3f ` +
+                      `{ return matc_fresnel_textured_${name}(${struct("in_air")}, ${struct("under_coat")}, mu); }`),
+      basePreintegrated: fn(`fn matc_three_base_preintegrated_${name}(${rows("in_air")}, ${rows("under_coat")}, ` +
+                            "bbar: vec4f, coat_bbar: vec4f, ndotv: f32) -> vec3f { return " +
+                            `matc_fresnel_preintegrated_textured_${name}(${struct("in_air")}, ${struct("under_coat")}, ` +
+                            "bbar, coat_bbar, ndotv); }"),
       coatFresnel: fn(`fn matc_three_coat_fresnel_${name}(mu: f32) -> f32 { return matc_coat_fresnel_${name}(mu); }`),
       coatPreintegrated: fn(`fn matc_three_coat_preintegrated_${name}(coat_bbar: vec4f) -> f32 ` +
                             `{ return matc_coat_fresnel_preintegrated_${name}(coat_bbar); }`),
@@ -140,6 +150,12 @@ export async function loadMatcBuild(source) {
   };
   return { ...files, lut, ltc, coefficientTable, functions,
            async loadMaterial(name) { return withCoatFunctions(await loadMaterial(name)); } };
+}
+
+// A coated material's base-lobe arguments: the rows in air and under the coat, by parameter name.
+function layerRows({ red, green, blue }, { red: underRed, green: underGreen, blue: underBlue }) {
+  return { in_air_red: red, in_air_green: green, in_air_blue: blue,
+           under_coat_red: underRed, under_coat_green: underGreen, under_coat_blue: underBlue };
 }
 
 // three's physical lighting with matc's Fresnel; `matc` holds the coefficient rows (uniform nodes),
@@ -168,7 +184,8 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
       if (coat) {
         const coatBbar = texture(lut, functions.lutTexcoord({ ndotv, roughness: clearcoatRoughness })).toConst("matc_coat_bbar");
         this.matcCoatBbar = coatBbar;
-        this.matcPreintegrated = coat.functions.basePreintegrated({ bbar: this.matcBbar, coat_bbar: coatBbar, ndotv })
+        this.matcPreintegrated = coat.functions.basePreintegrated({ ...layerRows(rows, coat.underCoatRows),
+                                                                    bbar: this.matcBbar, coat_bbar: coatBbar, ndotv })
             .toConst("matc_preintegrated");
         this.matcCoatPreintegrated = coat.functions.coatPreintegrated({ coat_bbar: coatBbar }).toConst("matc_coat_preintegrated");
       } else {
@@ -220,7 +237,8 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
     const dotVH = positionViewDirection.dot(halfDir).clamp();
     const ggx = BRDF_GGX({ lightDirection, f0: vec3(1), f90: float(1), roughness });
     const coat = this.matc.coat;
-    const fresnel = coat ? coat.functions.baseFresnel({ mu: dotVH }) : this.matc.functions.fresnel({ ...this.matc.rows, mu: dotVH });
+    const fresnel = coat ? coat.functions.baseFresnel({ ...layerRows(this.matc.rows, coat.underCoatRows), mu: dotVH })
+                         : this.matc.functions.fresnel({ ...this.matc.rows, mu: dotVH });
     reflectedLight.directSpecular.addAssign(
         dotNL.mul(lightColor).mul(ggx).mul(fresnel).mul(this.multiScatteringCompensation));
     if (coat) {
@@ -298,23 +316,24 @@ function coefficientRows(build, source) {
              blue: fromF0blue({ red, green, blue, f0 }) };
   }
   if (kind === "f0Table") {
-    // A textured metal under an edge colour: its coefficients at the base colour (colour times
-    // map) from the entries of its F0 table around each channel's F0.
-    if (source.material.coat) {
-      throw new MatcWebError(`${source.material.name}: a coated metal's F0 table is WebGL's for now ` +
-                             "(matc/three, matc/babylon)");
-    }
+    // A textured metal under an edge colour or a coat: its coefficients at the base colour
+    // (colour times map) from the entries of its F0 table around each channel's F0 (rows 0 to
+    // 2); under a coat also the metal seen from the coat (rows 3 to 5), in `underCoat`.
     const table = f0TableTexture(THREE, source.f0Table);
     const f0 = diffuseColor.rgb.toConst("matc_f0");
-    const { f0TableLeft } = build.functions;
-    const entries = (next) => ["x", "y", "z"].map((c, row) =>
-      textureLoad(table, ivec2(f0TableLeft({ f0: f0[c] }).add(next), row)));
-    const [leftRed, leftGreen, leftBlue] = entries(0);
-    const [rightRed, rightGreen, rightBlue] = entries(1);
-    const sides = { f0, left_red: leftRed, left_green: leftGreen, left_blue: leftBlue, right_red: rightRed,
-                    right_green: rightGreen, right_blue: rightBlue };
-    return { red: build.functions.fromF0Entriesred(sides), green: build.functions.fromF0Entriesgreen(sides),
-             blue: build.functions.fromF0Entriesblue(sides) };
+    const { functions } = build;
+    const rowsFrom = (firstRow, key) => {
+      const entries = (next) => ["x", "y", "z"].map((c, row) =>
+        textureLoad(table, ivec2(functions.f0TableLeft({ f0: f0[c] }).add(next), firstRow + row)));
+      const [leftRed, leftGreen, leftBlue] = entries(0);
+      const [rightRed, rightGreen, rightBlue] = entries(1);
+      const sides = { f0, left_red: leftRed, left_green: leftGreen, left_blue: leftBlue, right_red: rightRed,
+                      right_green: rightGreen, right_blue: rightBlue };
+      return { red: functions[`${key}red`](sides), green: functions[`${key}green`](sides),
+               blue: functions[`${key}blue`](sides) };
+    };
+    const inAir = rowsFrom(0, "fromF0Entries");
+    return source.material.coat ? { ...inAir, underCoat: rowsFrom(3, "fromF0UnderCoat") } : inAir;
   }
   if (kind === "table") {
     const colour = (value) => uniform(new THREE.Color(...rgbOf(value)));
@@ -334,10 +353,11 @@ function coefficientRows(build, source) {
   return { red: row("x"), green: row("y"), blue: row("z") };
 }
 
-// A coated material's coat: its snippet's functions and the under-coat coefficient rows (for the
-// base's compensation). The coat's lobe and layering are the compiled material's (weight, index,
+// A coated material's coat: its snippet's functions and the under-coat coefficient rows (the
+// material's uniforms, or a textured metal's per pixel: `underCoat`; for the base lobe and its
+// compensation). The coat's lobe and layering are the compiled material's (weight, index,
 // colour, roughness): three's clearcoat, set to 1, only switches its coat light paths on.
-function coatOf(compiled, material, areaLights) {
+function coatOf(compiled, material, areaLights, underCoat = null) {
   if (!material.isMeshPhysicalNodeMaterial) {
     throw new MatcWebError(`${compiled.name} is coated: its coat lobe needs a MeshPhysicalNodeMaterial`);
   }
@@ -345,12 +365,13 @@ function coatOf(compiled, material, areaLights) {
   if (!compiled.coat.functions) throw new MatcWebError("useMatcFresnel (WebGPU) needs this module's loadMaterial");
   material.clearcoat = 1;
   material.clearcoatRoughness = compiled.coat.roughness;
+  if (underCoat) return { ...compiled.coat, underCoatRows: underCoat };
   const [red, green, blue] = compiled.coat.underCoatCoefficients.map((row) => uniform(new THREE.Vector4(...row)));
   return { ...compiled.coat, underCoatRows: { red, green, blue } };
 }
 
 // Makes `material` (MeshStandardNodeMaterial or MeshPhysicalNodeMaterial) a matc metal with
-// `source` = { material } (build.loadMaterial), { schlick }, { material, f0Table } (a bare metal's),
+// `source` = { material } (build.loadMaterial), { schlick }, { material, f0Table },
 // { reflectivityMap, edgeTintMap } or { baked }, as
 // matc-three.mjs takes them. Returns the material; material.userData.matc.rows holds the
 // coefficient nodes (a compiled material's are uniforms: their .value can change without
@@ -366,9 +387,9 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc" } 
   }
   if (!build?.functions) throw new MatcWebError("useMatcFresnel (WebGPU) needs this module's loadMatcBuild");
   checkLightingModel();
-  const coat = source?.material?.coat ? coatOf(source.material, material, areaLights) : null;
-  const matc = { rows: coefficientRows(build, source), functions: build.functions, lut: build.lut, ltc: build.ltc,
-                 url: build.url, areaLights, coat };
+  const { underCoat, ...rows } = coefficientRows(build, source);
+  const coat = source?.material?.coat ? coatOf(source.material, material, areaLights, underCoat) : null;
+  const matc = { rows, functions: build.functions, lut: build.lut, ltc: build.ltc, url: build.url, areaLights, coat };
   material.metalness = 1;
   material.metalnessNode = null;
   material.setupLightingModel = () => new MatcPhysicalLightingModel(matc, material);
