@@ -47,7 +47,12 @@ struct Comparison {
   bool tinted_coat = false;  // ours_coated under a tinted coat instead of a clear one
 };
 
-const std::array<Comparison, 20> kComparisons = {{
+// The models whose pass draws a coated material's two lobes.
+bool coated(FresnelModel model) {
+  return model == FresnelModel::ours_coated || model == FresnelModel::f0_table_coated;
+}
+
+const std::array<Comparison, 22> kComparisons = {{
     {"F alone, compiled coefficients", FresnelQuantity::direct, FresnelModel::ours,
      FresnelModel::schlick, std::nullopt},
     {"one GGX light, compiled coefficients", FresnelQuantity::ggx_light, FresnelModel::ours,
@@ -103,6 +108,16 @@ const std::array<Comparison, 20> kComparisons = {{
      FresnelModel::ours_with_schlick_coat, std::nullopt},
     {"split-sum image light, coated vs Filament's clear coat", FresnelQuantity::preintegrated,
      FresnelModel::ours_coated, FresnelModel::schlick_clear_coat, std::nullopt},
+    // Issue #53: a textured glTF metal under a coat, its coefficients in air and under the coat
+    // per pixel from its F0 table, against the same coated metal at its factor.
+    {"one GGX light, textured glTF metal under a coat: per pixel through its F0 table (in air and "
+     "under the coat) vs the coated metal at its factor",
+     FresnelQuantity::ggx_light, FresnelModel::f0_table_coated, FresnelModel::ours_coated,
+     std::nullopt},
+    {"split-sum image light, textured glTF metal under a coat: through its F0 table vs the coated "
+     "metal at its factor",
+     FresnelQuantity::preintegrated, FresnelModel::f0_table_coated, FresnelModel::ours_coated,
+     std::nullopt},
     // Issue #28: a third of the 1586 its kernel measured, against Karis' 26 there.
     {"texture-free Fbar: our closed form vs Karis' fit", FresnelQuantity::preintegrated_closed_form,
      FresnelModel::ours, FresnelModel::schlick, 20.3},
@@ -194,7 +209,7 @@ int main(int argc, char** argv) {
   using VariantKey = std::tuple<FresnelModel, FresnelQuantity, matc::runtime::BasisKind, bool>;
   const auto key = [](const Comparison& row, FresnelModel model) {
     return VariantKey{model, row.quantity, row.basis.value_or(matc::runtime::kDefaultBasis),
-                      model == FresnelModel::ours_coated && row.tinted_coat};
+                      coated(model) && row.tinted_coat};
   };
   std::map<VariantKey, matc::SpirvWords> fragments;
   for (const Comparison& row : kComparisons) {
@@ -203,9 +218,9 @@ int main(int argc, char** argv) {
       const BasisBuild& basis_build = *builds.at(std::get<2>(key(row, model)));
       fragments[key(row, model)] = matc::compile_fullscreen_stage(
           matc::cost_pass_source(basis_build.build,
-                                 model != FresnelModel::ours_coated ? basis_build.material
-                                 : row.tinted_coat                  ? basis_build.tinted
-                                                                    : basis_build.coated,
+                                 !coated(model)    ? basis_build.material
+                                 : row.tinted_coat ? basis_build.tinted
+                                                   : basis_build.coated,
                                  model, row.quantity, 1280, 720),
           matc::ShaderStage::fragment, "cost_pass.frag");
     }

@@ -81,6 +81,11 @@ void main() {
   // The coefficient table's binding stands in for the F0 table (the same fetch instructions).
   MatcFresnelCoefficients c =
       MATC_COEFFICIENTS_FROM_F0_TABLE(sampler2D(matc_coefficient_table, matc_lut_sampler), a);
+#if MATC_COST_COAT == 1
+  // Under a coat, the metal seen from the coat too (the table's rows 3 to 5).
+  MatcFresnelCoefficients under_coat =
+      MATC_UNDER_COAT_FROM_F0_TABLE(sampler2D(matc_coefficient_table, matc_lut_sampler), a);
+#endif
 #else
   MatcFresnelCoefficients c = matc_coefficients_{{name}};
 #endif
@@ -124,7 +129,10 @@ void main() {
   float coat_D = coat_a2 / (PI * coat_d * coat_d);
   float coat_Vis = 0.5 / (NoL * sqrt(NoV * NoV * (1.0 - coat_a2) + coat_a2) +
                           NoV * sqrt(NoL * NoL * (1.0 - coat_a2) + coat_a2));
-#if MATC_COST_COAT == 1
+#if MATC_COST_COAT == 1 && MATC_COST_F0_TABLE
+  vec3 base_f = matc_fresnel_textured_{{name}}(c, under_coat, VoH);
+  float coat_f = matc_coat_fresnel_{{name}}(VoH);
+#elif MATC_COST_COAT == 1
   vec3 base_f = matc_fresnel_{{name}}(VoH);
   float coat_f = matc_coat_fresnel_{{name}}(VoH);
 #else
@@ -186,7 +194,11 @@ void main() {
       textureLod(sampler2D(environment, matc_lut_sampler), env_uv, {{coat_roughness}} * 6.0).rgb;
   vec4 coat_texel = textureLod(sampler2D(matc_lut, matc_lut_sampler),
                                matc_lut_texcoord(NoV, {{coat_roughness}}), 0.0);
-#if MATC_COST_COAT == 1
+#if MATC_COST_COAT == 1 && MATC_COST_F0_TABLE
+  vec3 f = matc_fresnel_preintegrated_textured_{{name}}(c, under_coat, texel, coat_texel, NoV) *
+               radiance +
+           matc_coat_fresnel_preintegrated_{{name}}(coat_texel) * coat_radiance;
+#elif MATC_COST_COAT == 1
   vec3 f = matc_fresnel_preintegrated_{{name}}(texel, coat_texel, NoV) * radiance +
            matc_coat_fresnel_preintegrated_{{name}}(coat_texel) * coat_radiance;
 #else

@@ -31,6 +31,7 @@ int material_map_count(FresnelModel model) {
     case FresnelModel::schlick_textured:
     case FresnelModel::from_f0:
     case FresnelModel::f0_table:
+    case FresnelModel::f0_table_coated:
       return 1;
     case FresnelModel::table:
       return 2;
@@ -51,7 +52,8 @@ int material_map_count(FresnelModel model) {
 std::vector<CostPassBinding> cost_pass_bindings(FresnelModel model, FresnelQuantity quantity) {
   std::vector<CostPassBinding> bindings = {{0, CostPassResource::table},
                                            {1, CostPassResource::sampler}};
-  if (model == FresnelModel::table || model == FresnelModel::f0_table)
+  if (model == FresnelModel::table || model == FresnelModel::f0_table ||
+      model == FresnelModel::f0_table_coated)
     bindings.push_back({2, CostPassResource::coefficient_table});
   if (quantity == FresnelQuantity::quad_light || quantity == FresnelQuantity::quad_light_following)
     bindings.push_back({3, CostPassResource::ltc_table});
@@ -69,11 +71,11 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
                        model == FresnelModel::schlick_clear_coat;
   // 0: no coat; 1: ours coated; 2: ours bare under a Schlick coat; 3: Filament's clear coat.
   int coat = 0;
-  if (model == FresnelModel::ours_coated) coat = 1;
+  if (model == FresnelModel::ours_coated || model == FresnelModel::f0_table_coated) coat = 1;
   if (model == FresnelModel::ours_with_schlick_coat) coat = 2;
   if (model == FresnelModel::schlick_clear_coat) coat = 3;
   if (coat == 1 && !compiled.coat)
-    throw std::invalid_argument("cost pass: ours_coated needs a coated material");
+    throw std::invalid_argument("cost pass: a coated model needs a coated material");
   // The coat lobe's roughness and weight: the coated material's, else a lacquer's 0.1 and 1.
   const double coat_roughness = compiled.coat ? compiled.coat->input.roughness : 0.1;
   const double coat_weight = compiled.coat ? compiled.coat->input.weight : 1.0;
@@ -85,6 +87,8 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
   if (model == FresnelModel::from_f0) model_name = "ours per pixel from an F0 map";
   if (model == FresnelModel::f0_table) model_name = "ours per pixel from an F0 map and F0 table";
   if (model == FresnelModel::ours_coated) model_name = "ours, coated (two lobes)";
+  if (model == FresnelModel::f0_table_coated)
+    model_name = "ours, coated, per pixel from an F0 map and F0 table";
   if (model == FresnelModel::ours_with_schlick_coat) model_name = "ours under a Schlick coat lobe";
   if (model == FresnelModel::schlick_clear_coat) model_name = "Filament's clear coat (Schlick)";
   const char* quantity_name = "Fbar";
@@ -109,8 +113,8 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
                     "MATC_COST_IMAGE_LIGHT {}\n#define MATC_COST_COAT {}",
                     flag(schlick), flag(model == FresnelModel::table),
                     flag(model == FresnelModel::baked), flag(model == FresnelModel::from_f0),
-                    flag(model == FresnelModel::f0_table), material_map_count(model),
-                    flag(quantity == FresnelQuantity::direct),
+                    flag(model == FresnelModel::f0_table || model == FresnelModel::f0_table_coated),
+                    material_map_count(model), flag(quantity == FresnelQuantity::direct),
                     flag(quantity == FresnelQuantity::ggx_light),
                     flag(quantity == FresnelQuantity::quad_light),
                     flag(quantity == FresnelQuantity::quad_light_following),

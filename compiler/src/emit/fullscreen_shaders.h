@@ -23,7 +23,10 @@ namespace matc {
 // binding stands in for it: texelFetch's code does not depend on the texture). Coated
 // metals (docs/coating.md), two lobes each: ours for a coated material (its base and coat lobes);
 // ours bare with a Schlick coat lobe (F0 0.04) attenuating it; Filament's clear coat (Schlick with
-// F0 converted into the coat, f0ClearCoatToSurface, under the same Schlick coat lobe).
+// F0 converted into the coat, f0ClearCoatToSurface, under the same Schlick coat lobe); ours coated
+// per pixel through an F0 table (a textured glTF metal under a coat: its coefficients in air and
+// under the coat from the table, MATC_UNDER_COAT_FROM_F0_TABLE too, into the coated snippet's
+// textured functions).
 enum class FresnelModel {
   schlick,
   schlick_textured,
@@ -34,7 +37,8 @@ enum class FresnelModel {
   f0_table,
   ours_coated,
   ours_with_schlick_coat,
-  schlick_clear_coat
+  schlick_clear_coat,
+  f0_table_coated
 };
 // F alone (mu from the pixel); F inside one GGX punctual light (D, height-correlated Smith V, F,
 // NdotL); image-based light: preintegrated Fbar from one table fetch times the prefiltered
