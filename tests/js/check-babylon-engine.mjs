@@ -21,7 +21,7 @@ import { RawTexture } from "@babylonjs/core/Materials/Textures/rawTexture.js";
 import { ShaderStore } from "@babylonjs/core/Engines/shaderStore.js";
 import { read as readKtx2 } from "ktx-parse";
 import { babylonProbeScene, renderBabylonProbe } from "/checks/babylon-scene-page.mjs";
-import { probeBuild } from "/checks/page-probe-build.mjs";
+import { coatedF0TableSource, probeBuild } from "/checks/page-probe-build.mjs";
 import { loadMatcBuild, useMatcFresnel } from "/web/babylon/matc-babylon.mjs";
 import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";
 `,
@@ -43,13 +43,9 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
   };
   const materials = {};
   for (const name of config.materials) materials[name] = await loadProbeMaterial(name);
-  // The coated F0-table metal: its coat and snippet from the build, its coefficients in air and
-  // under the coat per pixel from its table at the material's colour.
-  const coatedTable = config.f0TableCoated;
-  const tableColour = (source) => source === "f0table" || source === coatedTable.name;
-  if (config.renders.some((render) => render.source === coatedTable.name)) {
-    materials[coatedTable.name] = await build.loadMaterial(coatedTable.name);
-  }
+  // The coated F0-table metal, at the material's colour too.
+  const coatedTable = await coatedF0TableSource(build, config);
+  const tableColour = (source) => source === "f0table" || source === config.f0TableCoated.name;
   for (const render of config.renders) {
     const made = [];  // what this render adds to the scene, disposed after it
     const sources = {
@@ -60,9 +56,7 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
       schlick: () => ({ schlick: { basis: build.basis, zeroF0Coefficients: config.schlick.zeroF0Coefficients } }),
       f0table: () => ({ material: { name: "f0_table_probe", basis: build.basis, coefficients: config.f0Table.coefficients[0], coat: null },
                       f0Table: { coefficients: config.f0Table.coefficients } }),
-      [coatedTable.name]: () => ({ material: materials[coatedTable.name],
-                                   f0Table: { coefficients: coatedTable.coefficients,
-                                              underCoatCoefficients: coatedTable.underCoatCoefficients } }),
+      [config.f0TableCoated.name]: () => coatedTable,
     };
     const source = sources[render.source] ? await sources[render.source]() : { material: materials[render.source] };
     const material = useMatcFresnel(new PBRMaterial("matc", scene), build, source, { areaLights: render.areaLights });

@@ -24,7 +24,7 @@ import { RectAreaLightUniformsLib } from "three/addons/lights/RectAreaLightUnifo
 import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three.mjs";
 import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";
 import { probeScene, probeSetup, renderProbePixels } from "/checks/three-scene-page.mjs";
-import { probeBuild } from "/checks/page-probe-build.mjs";
+import { coatedF0TableSource, probeBuild } from "/checks/page-probe-build.mjs";
 `,
   body: `
   out.renders = {};
@@ -51,15 +51,9 @@ import { probeBuild } from "/checks/page-probe-build.mjs";
   sources.schlick = { schlick: { basis: build.basis, zeroF0Coefficients: config.schlick.zeroF0Coefficients } };
   sources.f0table = { material: { name: "f0_table_probe", basis: build.basis, coefficients: config.f0Table.coefficients[0], coat: null },
                       f0Table: { coefficients: config.f0Table.coefficients } };
-  // The coated F0-table metal: its coat and snippet from the build, its coefficients in air and
-  // under the coat per pixel from its table at the material's colour.
-  const coatedTable = config.f0TableCoated;
-  const tableColour = (source) => source === "f0table" || source === coatedTable.name;
-  if (config.renders.some((render) => render.source === coatedTable.name)) {
-    sources[coatedTable.name] = { material: await build.loadMaterial(coatedTable.name),
-                                  f0Table: { coefficients: coatedTable.coefficients,
-                                             underCoatCoefficients: coatedTable.underCoatCoefficients } };
-  }
+  // The coated F0-table metal, at the material's colour too.
+  sources[config.f0TableCoated.name] = await coatedF0TableSource(build, config);
+  const tableColour = (source) => source === "f0table" || source === config.f0TableCoated.name;
   for (const render of config.renders) {
     // The Schlick and F0-table metals' F0 is the material's colour (linear).
     const colour = render.source === "schlick" ? { color: new THREE.Color(...config.schlick.color) }

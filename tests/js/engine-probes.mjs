@@ -345,18 +345,20 @@ function f0TableFile(dir) {
   return file;
 }
 
-// The F0-table probe metal's table: the metal compiled at F0 = (i / 32)^4 on every channel, as
-// MATC_materials_fresnel's f0Table holds it (33 entries of rows R, G, B), compiled by matc.
-function f0TableCoefficients(matc, dir) {
-  const entries = join(dir, "f0_table_entries");
-  mkdirSync(entries);
+// An F0-table probe metal's table: the metal (material(name, f0)) compiled by matc at
+// F0 = (i / 32)^4 on every channel, as MATC_materials_fresnel's f0Table holds it (33 entries of
+// rows R, G, B; a coated metal's also under the coat).
+function f0TableOf(matc, dir, material) {
+  mkdirSync(dir);
   const files = Array.from({ length: 33 }, (_, i) => {
-    const file = join(entries, `entry_${i}.json`);
-    writeFileSync(file, JSON.stringify(kF0TableMaterial(`entry_${i}`, Array(3).fill((i / 32) ** 4))));
+    const file = join(dir, `entry_${i}.json`);
+    writeFileSync(file, JSON.stringify(material(`entry_${i}`, Array(3).fill((i / 32) ** 4))));
     return file;
   });
-  run(matc, ["-q", "-o", join(entries, "out"), "--emit", "json", ...files]);
-  return files.map((_, i) => JSON.parse(readFileSync(join(entries, "out", `entry_${i}.json`), "utf8")).coefficients);
+  run(matc, ["-q", "-o", join(dir, "out"), "--emit", "json", ...files]);
+  const compiled = files.map((_, i) => JSON.parse(readFileSync(join(dir, "out", `entry_${i}.json`), "utf8")));
+  return { coefficients: compiled.map((entry) => entry.coefficients),
+           ...(compiled[0].coat ? { underCoatCoefficients: compiled.map((entry) => entry.coat.under_coat_coefficients) } : {}) };
 }
 
 // The coated F0-table probe metal's material file at `f0` (in `dir`, made if missing): at its
@@ -374,22 +376,6 @@ function f0TableCoatedAtColour(matc, dir) {
   const compiledIn = join(dir, "f0_table_coated_colour", "out");
   run(matc, ["-q", "-o", compiledIn, "--emit", "json", file]);
   return { file, compiledIn };
-}
-
-// Its table: the coated metal compiled at F0 = (i / 32)^4 on every channel, each entry's rows in
-// air and under the coat, as MATC_materials_fresnel's f0Table holds them.
-function f0TableCoatedCoefficients(matc, dir) {
-  const entries = join(dir, "f0_table_coated_entries");
-  mkdirSync(entries);
-  const files = Array.from({ length: 33 }, (_, i) => {
-    const file = join(entries, `entry_${i}.json`);
-    writeFileSync(file, JSON.stringify(kF0TableCoatedMaterial(`entry_${i}`, Array(3).fill((i / 32) ** 4))));
-    return file;
-  });
-  run(matc, ["-q", "-o", join(entries, "out"), "--emit", "json", ...files]);
-  const compiled = files.map((_, i) => JSON.parse(readFileSync(join(entries, "out", `entry_${i}.json`), "utf8")));
-  return { coefficients: compiled.map((entry) => entry.coefficients),
-           underCoatCoefficients: compiled.map((entry) => entry.coat.under_coat_coefficients) };
 }
 
 // The Schlick probe metal's material file (in `dir`), for the CPU runtime's side.
@@ -428,8 +414,9 @@ export async function runProbeCheck(engine, [matc, materialsDir, webDir, mode]) 
     const config = { materials, coated: kProbeCoated, pixels: kProbePixels, renders, point: kPointLight,
                      rect: engine.rect?.light, textured: kTextured, compileInPage, materialTexts,
                      schlick: { color: kSchlick.f0, zeroF0Coefficients: zeroF0Coefficients(matc, dir) },
-                     f0Table: { color: kF0Table.f0, coefficients: f0TableCoefficients(matc, dir) },
-                     f0TableCoated: { name: kF0TableCoated.name, ...f0TableCoatedCoefficients(matc, dir) } };
+                     f0Table: { color: kF0Table.f0, ...f0TableOf(matc, join(dir, "f0_table_entries"), kF0TableMaterial) },
+                     f0TableCoated: { name: kF0TableCoated.name,
+                                      ...f0TableOf(matc, join(dir, "f0_table_coated_entries"), kF0TableCoatedMaterial) } };
     const result = await runPage({ html: engine.page(config), roots: { ...kWebRoots, web: webDir, ...roots }, dir,
                                    ...(engine.runPage ?? {}) });
     check(result.errors.length === 0, `${engine.name}: ${result.errors.join("\n")}`);

@@ -30,3 +30,12 @@ export async function probeBuild(out, config, loadMatcBuild, { language = "glsl"
                 /compiled with basis extended, but the tables are powers/);
   return { build, directoryBuild, loadProbeMaterial: (name) => build.loadMaterial(compile(name)) };
 }
+
+// The coated F0-table probe's source ({ material, f0Table }: its coat and snippet from the build,
+// its coefficients in air and under the coat per pixel from its table), or null when no render
+// draws it (a build compiled in the page does not hold it).
+export async function coatedF0TableSource(build, config) {
+  const { name, coefficients, underCoatCoefficients } = config.f0TableCoated;
+  if (!config.renders.some((render) => render.source === name)) return null;
+  return { material: await build.loadMaterial(name), f0Table: { coefficients, underCoatCoefficients } };
+}
