@@ -61,7 +61,7 @@ const kF0TableMaterial = (name, f0) => ({ name, color_space: "lin_rec709", f82_t
 // the partial coat lets the metal in air show through, so both halves count. The build compiles it
 // at a factor that is not the colour, as a glTF asset's factor and texture differ: a page that
 // took the material's own rows instead of the table's would draw the factor's metal.
-export const kF0TableCoated = { name: "f0_table_coated_probe", coat: { weight: 0.7, ior: 1.5, roughness: 0.1 },
+const kF0TableCoated = { name: "f0_table_coated_probe", coat: { weight: 0.7, ior: 1.5, roughness: 0.1 },
                                 factor: [0.3, 0.3, 0.3] };
 const kF0TableCoatedMaterial = (name, f0) => ({ ...kF0TableMaterial(name, f0), coat: kF0TableCoated.coat });
 

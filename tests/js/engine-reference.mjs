@@ -148,12 +148,27 @@ export async function runReferenceComparison(engine, argv) {
     const pageOptions = { roots, dir, budgetMs: 600000, ...engine.runPage };
     const result = await runPage({ html: engine.page(config), ...pageOptions });
     check(result.errors.length === 0, `${engine.name}: ${result.errors.join("\n")}`);
+    // The renders "<name> <kind>" of `kinds` (the reference first) as floats, or null where one is
+    // missing (a failed check); with --images, their panels and each one's difference from the
+    // reference (4x), <prefix>_<name>.png and <prefix>_<name>_difference.png.
+    const rendered = (name, kinds) => {
+      const texts = kinds.map((kind) => result.images[`${name} ${kind}`]);
+      check(texts.every(Boolean), `${name}: not every image was rendered`);
+      if (!texts.every(Boolean)) return null;
+      const images = texts.map(floats);
+      if (imagesDir) {
+        const [reference, ...others] = images;
+        writePanels(join(imagesDir, `${engine.prefix}_${name}.png`), size, images.map((image) => ({ image })));
+        writePanels(join(imagesDir, `${engine.prefix}_${name}_difference.png`), size,
+                    others.map((image) => ({ image, against: reference, scaleBy: 4 })));
+      }
+      return images;
+    };
     const rows = [];
     for (const { name } of materials) {
-      const images = ["reference", "stock", "matc"].map((kind) => result.images[`${name} ${kind}`]);
-      check(images.every(Boolean), `${name}: not every image was rendered`);
-      if (!images.every(Boolean)) continue;
-      const [reference, stock, ours] = images.map(floats);
+      const images = rendered(name, ["reference", "stock", "matc"]);
+      if (!images) continue;
+      const [reference, stock, ours] = images;
       const stockErrors = regionErrors(stock, reference), oursErrors = regionErrors(ours, reference);
       kRegions.forEach((region, r) => {
         const s = stockErrors[r], o = oursErrors[r];
@@ -176,18 +191,12 @@ export async function runReferenceComparison(engine, argv) {
           rows.push({ name: `${name} (${label})`, region: kRegions[r].name, pixels: o.pixels, stock: s, ours: o });
         });
       }
-      if (imagesDir) {
-        writePanels(join(imagesDir, `${engine.prefix}_${name}.png`), size, [{ image: reference }, { image: stock }, { image: ours }]);
-        writePanels(join(imagesDir, `${engine.prefix}_${name}_difference.png`), size, [
-          { image: stock, against: reference, scaleBy: 4 }, { image: ours, against: reference, scaleBy: 4 }]);
-      }
     }
     // The inlay through the coefficient table and through its bake.
     const inlay = config.textured.name;
-    const texturedImages = ["reference", "stock", "matc", "baked"].map((kind) => result.images[`${inlay} ${kind}`]);
-    check(texturedImages.every(Boolean), `${inlay}: not every image was rendered`);
-    if (texturedImages.every(Boolean)) {
-      const [reference, stock, table, baked] = texturedImages.map(floats);
+    const texturedImages = rendered(inlay, ["reference", "stock", "matc", "baked"]);
+    if (texturedImages) {
+      const [reference, stock, table, baked] = texturedImages;
       const stockErrors = regionErrors(stock, reference);
       for (const [label, image] of [["coefficient table", table], ["baked", baked]]) {
         regionErrors(image, reference).forEach((o, r) => {
@@ -199,36 +208,20 @@ export async function runReferenceComparison(engine, argv) {
           rows.push({ name: `${inlay} (${label})`, region: kRegions[r].name, pixels: o.pixels, stock: s, ours: o });
         });
       }
-      if (imagesDir) {
-        writePanels(join(imagesDir, `${engine.prefix}_${inlay}.png`), size,
-                    [{ image: reference }, { image: stock }, { image: table }, { image: baked }]);
-        writePanels(join(imagesDir, `${engine.prefix}_${inlay}_difference.png`), size, [
-          { image: stock, against: reference, scaleBy: 4 }, { image: table, against: reference, scaleBy: 4 },
-          { image: baked, against: reference, scaleBy: 4 }]);
-      }
     }
     // The coated car paint as the engine's glTF loader builds it and as matc's does: closer to
     // the two-lobe reference than the engine's own in every region.
-    if (coated) {
-      const images = ["reference", "stock", "matc"].map((kind) => result.images[`${coated.name} ${kind}`]);
-      check(images.every(Boolean), `${coated.name}: not every image was rendered`);
-      if (images.every(Boolean)) {
-        const [reference, stock, ours] = images.map(floats);
-        const stockErrors = regionErrors(stock, reference);
-        regionErrors(ours, reference).forEach((o, r) => {
-          const s = stockErrors[r];
-          check(o.pixels > 50, `${coated.name}, ${kRegions[r].name}: only ${o.pixels} pixels`);
-          check(o.all < s.all, `${coated.name} (glTF), ${kRegions[r].name}: matc's error ${o.all.toFixed(4)} ` +
-                               `against the engine's loading's ${s.all.toFixed(4)}: not closer`);
-          rows.push({ name: `${coated.name} (glTF, coated)`, region: kRegions[r].name, pixels: o.pixels, stock: s, ours: o });
-        });
-        if (imagesDir) {
-          writePanels(join(imagesDir, `${engine.prefix}_${coated.name}.png`), size,
-                      [{ image: reference }, { image: stock }, { image: ours }]);
-          writePanels(join(imagesDir, `${engine.prefix}_${coated.name}_difference.png`), size, [
-            { image: stock, against: reference, scaleBy: 4 }, { image: ours, against: reference, scaleBy: 4 }]);
-        }
-      }
+    const coatedImages = coated ? rendered(coated.name, ["reference", "stock", "matc"]) : null;
+    if (coatedImages) {
+      const [reference, stock, ours] = coatedImages;
+      const stockErrors = regionErrors(stock, reference);
+      regionErrors(ours, reference).forEach((o, r) => {
+        const s = stockErrors[r];
+        check(o.pixels > 50, `${coated.name}, ${kRegions[r].name}: only ${o.pixels} pixels`);
+        check(o.all < s.all, `${coated.name} (glTF), ${kRegions[r].name}: matc's error ${o.all.toFixed(4)} ` +
+                             `against the engine's loading's ${s.all.toFixed(4)}: not closer`);
+        rows.push({ name: `${coated.name} (glTF, coated)`, region: kRegions[r].name, pixels: o.pixels, stock: s, ours: o });
+      });
     }
     const percent = (x) => `${(100 * x).toFixed(1)}%`;
     const table = [

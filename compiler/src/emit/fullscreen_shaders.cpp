@@ -47,13 +47,17 @@ int material_map_count(FresnelModel model) {
   return 0;
 }
 
+// Whether a model reads a textured metal's F0 table (bare, or in air and under a coat).
+bool reads_f0_table(FresnelModel model) {
+  return model == FresnelModel::f0_table || model == FresnelModel::f0_table_coated;
+}
+
 }  // namespace
 
 std::vector<CostPassBinding> cost_pass_bindings(FresnelModel model, FresnelQuantity quantity) {
   std::vector<CostPassBinding> bindings = {{0, CostPassResource::table},
                                            {1, CostPassResource::sampler}};
-  if (model == FresnelModel::table || model == FresnelModel::f0_table ||
-      model == FresnelModel::f0_table_coated)
+  if (model == FresnelModel::table || reads_f0_table(model))
     bindings.push_back({2, CostPassResource::coefficient_table});
   if (quantity == FresnelQuantity::quad_light || quantity == FresnelQuantity::quad_light_following)
     bindings.push_back({3, CostPassResource::ltc_table});
@@ -113,8 +117,8 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
                     "MATC_COST_IMAGE_LIGHT {}\n#define MATC_COST_COAT {}",
                     flag(schlick), flag(model == FresnelModel::table),
                     flag(model == FresnelModel::baked), flag(model == FresnelModel::from_f0),
-                    flag(model == FresnelModel::f0_table || model == FresnelModel::f0_table_coated),
-                    material_map_count(model), flag(quantity == FresnelQuantity::direct),
+                    flag(reads_f0_table(model)), material_map_count(model),
+                    flag(quantity == FresnelQuantity::direct),
                     flag(quantity == FresnelQuantity::ggx_light),
                     flag(quantity == FresnelQuantity::quad_light),
                     flag(quantity == FresnelQuantity::quad_light_following),
