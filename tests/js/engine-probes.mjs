@@ -319,6 +319,7 @@ export const kFailures = {
   textured_without_edge_tint: "needs both reflectivityMap and edgeTintMap",
   schlick_not_zero_f0: "zeroF0Coefficients must be rows [0, 1, c_2, c_3] of finite numbers",
   f0_table_without_material: "an F0 table (f0Table) comes with its { material }",
+  coated_f0_table_without_under_coat: "f0Table: a coated metal's table needs underCoatCoefficients",
   unknown_area_light_option: 'areaLights: "fast"; allowed: "matc", "quality", "engine"',
   coated_quality_area_lights: "is coated: the quality-level area lights take bare metals",
   coated_without_snippet: "a coated material needs its own shader snippet",

@@ -38,6 +38,9 @@ export async function checkBadInputs(out, { loadMatcBuild, build, material, coat
   await failure("schlick_not_zero_f0", () => useMatc({ schlick: { basis: material.basis, zeroF0Coefficients: material.coefficients } }));
   // An F0 table without the material it belongs to.
   await failure("f0_table_without_material", () => useMatc({ f0Table: { coefficients: [] } }));
+  // A coated metal's F0 table without its rows under the coat.
+  await failure("coated_f0_table_without_under_coat", () =>
+    useMatc({ material: coated, f0Table: { coefficients: Array.from({ length: 33 }, () => coated.coefficients) } }));
   await failure("coated_quality_area_lights", () => useMatc({ material: coated }, { areaLights: "quality" }));
   await failure("coated_without_snippet", () => build.loadMaterial(`${coated.name}_without_snippet`));
 }
