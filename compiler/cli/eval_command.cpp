@@ -25,7 +25,7 @@ struct EvalOptions {
   std::string reflectivity;  // --reflectivity and --edge-tint: the coefficient-table path
   std::string edge_tint;
   std::string quad_light;     // "x,y,z;x,y,z;x,y,z;x,y,z" in the shading frame: area-light radiance
-  bool no_reference = false;  // --no-reference: no split-sum integral per (NdotV, roughness)
+  bool no_reference = false;  // --no-reference: no Monte-Carlo references, the shaders' values
   api::EvaluationOptions evaluation;
 };
 
@@ -170,18 +170,18 @@ Command register_eval(CLI::App& app) {
           ->check(CLI::Range(0.0, 1.0));
   ndotv_option->needs(roughness_option);
   roughness_option->needs(ndotv_option);
-  CLI::Option* no_reference_option = command->add_flag(
+  command->add_flag(
       "--no-reference", options->no_reference,
-      "Leave out Fbar_reference, the exact split-sum integral per --ndotv value (a Monte-Carlo "
-      "integral each: the slow part of evaluating many points)");
+      "Leave out the references: Fbar_reference, the exact split-sum integral per --ndotv "
+      "value (a Monte-Carlo integral each: the slow part of evaluating many points), a coated "
+      "material's layered ones, and --quad-light's L_reference and L_ltc_exact_fresnel");
   command
       ->add_option("--quad-light", options->quad_light,
                    "A quad light of radiance 1, \"x,y,z;x,y,z;x,y,z;x,y,z\" in the shading frame "
                    "(normal +z, view in the xz-plane towards +x): radiance by LTC with ours (one "
                    "shape, and the quality level's shape and Fresnel following the light) and "
                    "with Schlick's Fresnel, and the exact integral (docs/ltc.md)")
-      ->needs(ndotv_option)
-      ->excludes(no_reference_option);
+      ->needs(ndotv_option);
   command
       ->add_option("--light-samples", options->evaluation.light_samples,
                    "Monte-Carlo sample pairs of the --quad-light reference")

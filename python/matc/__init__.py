@@ -306,7 +306,8 @@ def evaluate(material, mu=(), ndotv=(), roughness=(), *, reference=True, quad_li
     ``F`` and ``F_exact`` at the cosines ``mu``; ``Fbar`` (from the table), ``Fbar_analytic`` and
     ``Fbar_reference`` at the (``ndotv``, ``roughness``) pairs; a coated material's lobes; with
     ``quad_light`` ("x,y,z;x,y,z;x,y,z;x,y,z" in the shading frame) its radiance by LTC beside the
-    exact integral. Options are ``matc eval``'s: ``light_samples``, ``lut_size``,
+    exact integral. ``reference=False`` leaves out the Monte-Carlo references (``Fbar_reference``,
+    a coated material's layered ones, ``L_reference``): the shaders' values alone, fast. Options are ``matc eval``'s: ``light_samples``, ``lut_size``,
     ``lut_samples``, ``lut_precision``, ``coefficient_table_precision``, ``basis``,
     ``color_space``, ``gamut_mapping``. Raises ``ValueError`` for options out of range."""
     return _matc._evaluate(_one_material(material), _float_list(mu, "mu"),

@@ -56,7 +56,8 @@ TEST_F(MatcCli, EvalPrintsFbarFromTheTableBesideTheReference) {
   EXPECT_NE(mismatched.err.find("pair up"), std::string::npos) << mismatched.err;
 }
 
-// --no-reference drops only the split-sum integral: the table's Fbar is the same numbers.
+// --no-reference drops only the Monte-Carlo references: the table's Fbar and the quad light's LTC
+// radiance are the same numbers.
 TEST_F(MatcCli, EvalWithoutTheReferenceKeepsTheTablesFbar) {
   const std::string file = std::string(MATC_EXAMPLES_DIR) + "/beryllium.json";
   const CommandResult with = run({"eval", file, "--ndotv", "0.2,0.9", "--roughness", "0.3,0.7"});
@@ -67,10 +68,33 @@ TEST_F(MatcCli, EvalWithoutTheReferenceKeepsTheTablesFbar) {
   const auto fast = nlohmann::json::parse(without.out);
   EXPECT_FALSE(fast.contains("Fbar_reference"));
   EXPECT_EQ(fast["Fbar"], full["Fbar"]);
-  EXPECT_EQ(run({"eval", file, "--ndotv", "0.5", "--roughness", "0.5", "--no-reference",
-                 "--quad-light", "1,0,1;1,1,1;0,1,1;0,0,1"})
-                .exit_code,
-            2);
+  const std::string quad = "1,0,1;1,1,1;0,1,1;0,0,1";
+  for (const std::string& material :
+       {file, std::string(MATC_EXAMPLES_DIR) + "/copper_lacquered.json"}) {
+    const std::vector<std::string> lit = {
+        "eval",    material,       "--ndotv", "0.5,0.8",         "--roughness",
+        "0.5,0.3", "--quad-light", quad,      "--light-samples", "16"};
+    const CommandResult referenced = run(lit);
+    std::vector<std::string> unreferenced_arguments = lit;
+    unreferenced_arguments.push_back("--no-reference");
+    const CommandResult unreferenced = run(unreferenced_arguments);
+    ASSERT_EQ(unreferenced.exit_code, 0) << unreferenced.err;
+    const auto reference = nlohmann::json::parse(referenced.out);
+    const auto shaders_only = nlohmann::json::parse(unreferenced.out);
+    const bool coated = reference.contains("coat");
+    for (const char* key : {"L_reference", "L_reference_standard_error", "L_ltc_exact_fresnel",
+                            "Fbar_reference", "Fbar_layered_reference"})
+      EXPECT_FALSE(shaders_only.contains(key)) << material << ": " << key;
+    EXPECT_FALSE(shaders_only["quad_light"].contains("reference_samples"));
+    EXPECT_TRUE(reference.contains("L_reference"));
+    EXPECT_EQ(shaders_only["quad_light"]["vertices"], reference["quad_light"]["vertices"]);
+    for (const char* key :
+         coated ? std::vector<const char*>{"L_ltc", "L_ltc_base", "L_ltc_coat"}
+                : std::vector<const char*>{"L_ltc", "L_ltc_following", "L_ltc_schlick"}) {
+      ASSERT_TRUE(reference.contains(key)) << material << ": " << key;
+      EXPECT_EQ(shaders_only[key], reference[key]) << material << ": " << key;
+    }
+  }
 }
 
 // A coated material: both lobes and their sum, for direct lights and from the table (what the web

@@ -113,13 +113,14 @@ function evaluateAtProbes(matc, args, ndotv, roughness, terms) {
 }
 
 // `matc eval --quad-light` of a material at every probe for the rect light (its corners in each
-// probe's shading frame).
+// probe's shading frame): the LTC radiance alone (--no-reference: a coated material's layered
+// references were most of an engine check's time).
 function quadLightsAtProbes(matc, args, ndotv, roughness, rect) {
   return kProbePixels.map((pixel, i) => {
     const quad = rect.corners.map((corner) => toShadingFrame(corner, pixel).join(",")).join(";");
     return JSON.parse(run(matc, [
       "eval", ...args, "--lut-precision", "f32", "--ndotv", String(ndotv[i]),
-      "--roughness", String(roughness), "--quad-light", quad, "--light-samples", "16"]));
+      "--roughness", String(roughness), "--quad-light", quad, "--no-reference"]));
   });
 }
 

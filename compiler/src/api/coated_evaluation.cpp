@@ -45,6 +45,7 @@ void add_coated_quad_light(const EvaluationInputs& options, const std::vector<Ve
     ours.push_back(lobes.total());
     ours_base.push_back(lobes.base);
     ours_coat.push_back(lobes.coat);
+    if (!options.reference) continue;
     const AreaLightEstimate base_part = integrate_polygon_light(
         GgxLobe(ndotv, roughness), quad, [&](double mu) { return base_table.at(mu); },
         options.light_samples);
@@ -64,6 +65,7 @@ void add_coated_quad_light(const EvaluationInputs& options, const std::vector<Ve
   // apart).
   out["L_ltc_base"] = std::move(ours_base);
   out["L_ltc_coat"] = std::move(ours_coat);
+  if (!options.reference) return;
   out["L_reference"] = std::move(reference);
   out["L_reference_standard_error"] = std::move(standard_error);
 }
@@ -142,7 +144,11 @@ void add_coated(const EvaluationInputs& options, const CompiledMaterial& compile
   out["Fbar_base"] = std::move(base);
   out["Fbar_coat"] = std::move(coat_lobe);
   out["Fbar_analytic"] = std::move(closed_form);
-  if (!options.reference) return;
+  if (!options.reference) {
+    if (options.quad)
+      add_coated_quad_light(options, *options.quad, compiled, lut, *in_air, *under, out);
+    return;
+  }
   const TabulatedCurve in_air_exact(*in_air);
   const TabulatedCurve under_exact(*under);
   ordered_json split_sum = ordered_json::array(), monte_carlo = ordered_json::array(),

@@ -125,13 +125,15 @@ void add_quad_light(const EvaluationInputs& options, const std::vector<Vec3>& qu
           coefficients[k].second, lut.view(), shader_basis, ltc, ndotv, roughness, quad));
     }
     const auto lobe_values = runtime::sample_lut(schlick_lut.view(), ndotv, roughness);
-    const runtime::Rgb& fbar_exact = inputs.fbar_reference[i];
-    runtime::Rgb with_schlick{}, with_exact{};
-    for (std::size_t c = 0; c < 3; ++c) {
+    runtime::Rgb with_schlick{};
+    for (std::size_t c = 0; c < 3; ++c)
       with_schlick[c] = integral * (f0[c] * lobe_values[0] + (1.0 - f0[c]) * lobe_values[1]);
-      with_exact[c] = integral * fbar_exact[c];
-    }
     schlick.push_back(with_schlick);
+    if (!options.reference) continue;
+    const runtime::Rgb& fbar_exact = inputs.fbar_reference[i];
+    runtime::Rgb with_exact{};
+    for (std::size_t c = 0; c < 3; ++c)
+      with_exact[c] = integral * fbar_exact[c];
     exact_fresnel.push_back(with_exact);
     const AreaLightEstimate estimate = integrate_polygon_light(
         GgxLobe(ndotv, roughness), quad, [&](double mu) { return tabulated.at(mu); },
@@ -144,6 +146,7 @@ void add_quad_light(const EvaluationInputs& options, const std::vector<Vec3>& qu
   for (std::size_t k = 0; k < coefficients.size(); ++k)
     out["L_ltc_following" + coefficients[k].first] = std::move(following[k]);
   out["L_ltc_schlick"] = std::move(schlick);
+  if (!options.reference) return;
   out["L_ltc_exact_fresnel"] = std::move(exact_fresnel);
   out["L_reference"] = std::move(reference);
   out["L_reference_standard_error"] = std::move(standard_error);
@@ -175,9 +178,8 @@ void add_quad_light_description(const EvaluationInputs& options, const std::vect
   ordered_json vertices = ordered_json::array();
   for (const Vec3& vertex : quad)
     vertices.push_back(vertex);
-  out["quad_light"] = {{"vertices", std::move(vertices)},
-                       {"ltc_table", {{"size", ltc.size}}},
-                       {"reference_samples", options.light_samples}};
+  out["quad_light"] = {{"vertices", std::move(vertices)}, {"ltc_table", {{"size", ltc.size}}}};
+  if (options.reference) out["quad_light"]["reference_samples"] = options.light_samples;
 }
 
 // A bare metal's F, Fbar and quad light.
@@ -256,9 +258,6 @@ evaluation::EvaluationInputs resolved(const EvaluationOptions& options) {
   if (!options.quad_light.empty()) {
     if (options.ndotv.empty())
       throw std::invalid_argument("quad_light: needs (NdotV, roughness) pairs to light");
-    if (!options.reference)
-      throw std::invalid_argument(
-          "quad_light: needs the reference, which its outputs compare with");
     if (options.quad_light.size() != 4)
       throw std::invalid_argument(
           fmt::format("quad_light: {} vertices; a quad has 4", options.quad_light.size()));

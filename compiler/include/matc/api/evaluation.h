@@ -23,7 +23,8 @@ struct EvaluationOptions {
   std::vector<double> ndotv;      // Fbar at these NdotV values, each in [0, 1] ...
   std::vector<double> roughness;  // ... and one perceptual roughness per NdotV
   // Fbar_reference, the exact split-sum integral per pair (a Monte-Carlo integral each: the slow
-  // part of evaluating many pairs); a quad light needs it.
+  // part of evaluating many pairs), a coated material's layered references, and a quad light's
+  // exact integral (L_reference) and L_ltc_exact_fresnel; false: the shaders' values alone.
   bool reference = true;
   // A quad light of radiance 1: its four vertices in the shading frame (normal +z, view in the
   // xz-plane towards +x); empty: none. Needs pairs.
@@ -38,7 +39,7 @@ struct EvaluationOptions {
 
 // The evaluation of `material` as JSON text. Throws std::invalid_argument naming an option out of
 // range or outside its names, or contradicting another (no cosines and no pairs, pairs of two
-// lengths, a quad light without pairs or without the reference).
+// lengths, a quad light without pairs).
 std::string evaluate(const Material& material, const EvaluationOptions& options);
 // The coefficient-table path for Gulbrandsen's reflectivity and edge tint per channel (each in
 // [0, 1]): F and Fbar from the table's coefficients beside the per-material compile.
