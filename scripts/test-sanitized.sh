@@ -12,10 +12,13 @@ fuzz_seconds=${1:-60}
 # interpreter; the module's C++ is libmatc's, which the sanitized suite covers, and its own
 # tests (with their fuzz pass) run in the plain build. No benchmarks and studies either (bench/,
 # a tenth of this build's compile work): their checks print docs tables and cost figures, which
-# the plain build checks once; the library code they call runs here through the unit tests.
+# the plain build checks once; the library code they call runs here through the unit tests. No
+# comparison renders (examples/render, another tenth): their checks compare images' errors, which
+# the plain build checks; the library and the Vulkan executor they drive run here through
+# DeviceValidation, the executor's tests and `matc validate`.
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DMATC_BUILD_FUZZERS=ON \
   -DMATC_SANITIZE=address,undefined,fuzzer-no-link -DMATC_BUILD_PYTHON=OFF -DMATC_BUILD_WASM=OFF \
-  -DMATC_BUILD_BENCH=OFF >/dev/null
+  -DMATC_BUILD_BENCH=OFF -DMATC_BUILD_RENDERS=OFF >/dev/null
 cmake --build build-fuzz
 
 # libFuzzer writes crash, leak and slow-unit inputs to the working directory unless told where:
@@ -83,7 +86,7 @@ build-fuzz/tests/fuzz/matc_image_map_fuzzer -artifact_prefix="$artifacts" -max_t
 # every other test with it.
 export LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1"
-vulkan_tests="Vulkan|DeviceValidation|validate_on_device|Validat|comparison_render|textured_render|baked_render|area_light_render"
+vulkan_tests="Vulkan|DeviceValidation|validate_on_device|Validat"
 # matc validate per example material runs one code path with other numbers (10 s each here): the
 # sanitized run keeps a measured bare metal, a coated one, the embedded table and MaterialX, and
 # leaves the rest to the plain build.
@@ -110,6 +113,11 @@ once_only="_docs_current|_readme_current|clang_format|layers_|bazel_remote_cache
 # hand matc's outputs to independent tools (Ajv on the schema, Khronos' glTF-Validator,
 # glslang and spirv-val on the emitted shaders; 80 s) and Ninja's depfile edges.
 once_only="$once_only|CheckedIn|RegenerationApi.MakesTheCheckedInSourcesAgain|material_schema|gltf_out_validated|emitted_shaders_independent_tools|depfile_drives_ninja"
+# Three sweeps of the accuracy targets over many materials (2,200 random (r, g) through the
+# coefficient table, the F82-tint materials, the measured metals under coats: 70 s of test time
+# here) run code that the same suites' other tests run here on a few; the targets are numbers,
+# checked once.
+once_only="$once_only|CoefficientTable.MeetsTheTargetsAgainstThePerMaterialCompile|Accuracy.F82BasisFitsF82TintMaterialsWithinTheTarget|CoatedCompile.MeasuredMetalsUnderClearCoatsMeetTheTargets"
 ctest --test-dir build-fuzz --output-on-failure --parallel "$(nproc)" \
   -E "cmake_package_engine_example|per_material_ninja_edges|output_hashes|two_writers_one_folder|$once_only|$browser_tests|$vulkan_tests"
 ASAN_OPTIONS=detect_leaks=0 ctest --test-dir build-fuzz --output-on-failure \
