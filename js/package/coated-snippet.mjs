@@ -1,6 +1,7 @@
-// A coated metal's GLSL snippet made from its MATC_materials_fresnel (docs/gltf.md), for a page
-// with neither the compiler nor a build directory that compiled the asset: matc's own template
-// (templates/glsl/material_coated.glsl, which stage.mjs puts into the package's templates.mjs)
+// A coated metal's GLSL or WGSL snippet made from its MATC_materials_fresnel (docs/gltf.md), for a
+// page with neither the compiler nor a build directory that compiled the asset: matc's own template
+// (templates/<language>/material_coated.<language>, which stage.mjs puts into the package's
+// templates.mjs)
 // filled with the extension's values as the compiler fills it (compiler/src/emit/material_snippet.cpp),
 // so the functions, and the layering they compute, are the compiler's. Only the template's notes
 // of the under-coat and coat fits' own errors, which the extension does not carry, say so instead.
@@ -28,11 +29,16 @@ function floatLiteral(value) {
 
 const floatList = (values) => values.map(floatLiteral).join(", ");
 
-// The snippet of the metal `name` from `template` (the coated-material GLSL template) and checked
+// The snippet of the metal `name` from `template` (the coated-material template of `language`,
+// "glsl" or "wgsl") and checked
 // extension values: `coefficients` (3 rows, the metal in air), `colorSpace`, `maxError` (3
 // numbers), and `coat` ({ weight, ior, roughness, color, underCoatCoefficients, coatCoefficients }).
 // `versionNumber`: the shader library's MATC_VERSION, which the snippet checks.
-export function coatedSnippet(template, { name, coefficients, colorSpace, maxError, coat, versionNumber, version }) {
+export function coatedSnippet(template, { name, coefficients, colorSpace, maxError, coat, versionNumber, version,
+                                          language = "glsl" }) {
+  if (language !== "glsl" && language !== "wgsl") throw new Error(`matc: no coated template in ${language}`);
+  const wgsl = language === "wgsl";
+  const vector = wgsl ? "vec3f" : "vec3";
   const log2Colour = coat.color.map((value) => (value >= 1 ? 0 : Math.log2(Math.max(value, 1e-30))));
   const inverseIorSquared = 1 / (coat.ior * coat.ior);
   const notCarried = "(not in MATC_materials_fresnel)";
@@ -46,9 +52,10 @@ export function coatedSnippet(template, { name, coefficients, colorSpace, maxErr
     coat_roughness: floatLiteral(coat.roughness), coat_ior: String(coat.ior),
     // A clear coat tints nothing: no exponentials where the common case needs none.
     tint_body: log2Colour.every((value) => value === 0)
-      ? "  return vec3(1.0);"
-      : `  float inverse_mu_inside = inversesqrt(${floatLiteral(1 - inverseIorSquared)} + ` +
-        `${floatLiteral(inverseIorSquared)} * mu * mu);\n  return exp2(vec3(${floatList(log2Colour)}) * inverse_mu_inside);`,
+      ? `  return ${vector}(1.0);`
+      : `  ${wgsl ? "let" : "float"} inverse_mu_inside = ${wgsl ? "inverseSqrt" : "inversesqrt"}(` +
+        `${floatLiteral(1 - inverseIorSquared)} + ${floatLiteral(inverseIorSquared)} * mu * mu);\n` +
+        `  return exp2(${vector}(${floatList(log2Colour)}) * inverse_mu_inside);`,
     // A full coat leaves nothing of the metal in air.
     base: coat.weight >= 1 ? "through" : `mix(matc_combine(in_air, values), through, matc_coat_weight_${name})`,
     layered_max_error: Math.max(...maxError).toFixed(4),

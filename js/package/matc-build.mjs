@@ -401,17 +401,19 @@ async function extensionCoatedMaterial(build, extension, rows) {
   if (!Array.isArray(coatRow) || coatRow.length !== 4 || !finiteRows([coatRow])) {
     throw new MatcWebError(`${what}: coatCoefficients (one row) must be 4 finite numbers`);
   }
-  const versionNumber = /#define MATC_VERSION (\d+)/.exec(build.library)?.[1];
+  // The library's version: `#define MATC_VERSION n` in GLSL, `const MATC_VERSION: i32 = n;` in WGSL.
+  const versionNumber = /(?:#define MATC_VERSION|const MATC_VERSION: i32 =) (\d+)/.exec(build.library)?.[1];
   if (!versionNumber) throw new MatcWebError(`${build.url}: its shader library does not say its MATC_VERSION`);
   const checked = {
     weight: checkedNumber(coat.weight, 0, 1, `${what}.weight`), ior: checkedNumber(coat.ior, 1.05, 3, `${what}.ior`),
     roughness: checkedNumber(coat.roughness, 0, 1, `${what}.roughness`), color: rgb(coat.color, `${what}.color`),
     underCoatCoefficients: under, coatCoefficients: coatRow,
   };
-  // Imported when needed: the staged package's (stage.mjs writes it from templates/glsl/).
-  const { kCoatedMaterialGlsl } = await import("./templates.mjs");
-  const snippet = coatedSnippet(kCoatedMaterialGlsl, {
-    name: extension.name, version: build.manifest.matc_version, versionNumber, coefficients: rows,
+  // Imported when needed: the staged package's (stage.mjs writes it from templates/glsl/ and wgsl/).
+  const { kCoatedMaterialGlsl, kCoatedMaterialWgsl } = await import("./templates.mjs");
+  const language = build.language ?? "glsl";
+  const snippet = coatedSnippet(language === "wgsl" ? kCoatedMaterialWgsl : kCoatedMaterialGlsl, {
+    name: extension.name, version: build.manifest.matc_version, versionNumber, coefficients: rows, language,
     colorSpace: String(extension.colorSpace).replace(/[^A-Za-z0-9_]/g, "_"),
     maxError: rgb(extension.maxError, `${kGltfFresnelExtension}.maxError`), coat: checked,
   });

@@ -28,7 +28,8 @@ const resolved = spawnSync(process.execPath, ["--input-type=module", "-e",
   "console.log(typeof m.createMatc, typeof b.compiledMatcBuildFiles, m.version);"], { cwd: work, encoding: "utf8" });
 check(resolved.stdout.trim() === `function function ${JSON.parse(fs.readFileSync(path.join(work, "node_modules", "matc", "package.json"))).version}`,
       `import "matc" and "matc/build" from the project: ${resolved.stdout}${resolved.stderr}`);
-for (const file of ["three/matc-three.mjs", "three/matc-three-webgpu.mjs", "three/matc-gltf.mjs", "babylon/matc-babylon.mjs",
+for (const file of ["three/matc-three.mjs", "three/matc-three-webgpu.mjs", "three/matc-gltf.mjs", "three/matc-gltf-webgpu.mjs",
+                    "three/gltf-plugin.mjs", "babylon/matc-babylon.mjs",
                     "babylon/matc-gltf.mjs", "tables/matc_lut.bin"]) {
   check(fs.existsSync(path.join(work, "node_modules", "matc", file)), `the package lacks ${file}`);
 }
@@ -287,12 +288,13 @@ console.log(`${cases} catalogue cases through the JS API`);
 
 // A coated metal from its MATC_materials_fresnel alone (no compiler in the page, no build directory
 // of the asset): matc's template filled with the extension's values is the compiler's snippet,
-// comment lines aside (they name the source and the fits' errors): a full clear coat, a partial
-// tinted one, a partial clear one at another index.
-{
+// comment lines aside (they name the source and the fits' errors), in GLSL (WebGL) and WGSL
+// (WebGPU): a full clear coat, a partial tinted one, a partial clear one at another index.
+for (const language of ["glsl", "wgsl"]) {
   const { gltfExtensionMaterial } = await import(path.join(work, "node_modules", "matc", "matc-build.mjs"));
   const texts = matc_.textOutputs();
-  const build = { basis: "powers", manifest: { matc_version: "0.1.0" }, url: "test", library: texts.librarySource("glsl") };
+  const build = { basis: "powers", manifest: { matc_version: "0.1.0" }, url: "test", language,
+                  library: texts.librarySource(language) };
   const code = (snippet) => snippet.split("\n").filter((line) => !/^\s*\/\//.test(line)).join("\n");
   const rows = (values) => values.map((row) => Array.from(row));
   for (const coat of [{ weight: 1, ior: 1.5, roughness: 0.03 },
@@ -308,9 +310,9 @@ console.log(`${cases} catalogue cases through the JS API`);
               coatCoefficients: Array.from(compiled.coat.coatCoefficients) },
     };
     const material = await gltfExtensionMaterial(build, extension);
-    const compilers = texts.materialSource("glsl", compiled);
+    const compilers = texts.materialSource(language, compiled);
     check(code(material.coat.snippet) === code(compilers),
-          `coat ${JSON.stringify(coat)}: the snippet from the extension is not the compiler's:\n${material.coat.snippet}\n--\n${compilers}`);
+          `${language}, coat ${JSON.stringify(coat)}: the snippet from the extension is not the compiler's:\n${material.coat.snippet}\n--\n${compilers}`);
     check(material.coat.snippet.includes("from MATC_materials_fresnel"), "the snippet from the extension says so");
     for (const [change, pattern] of [[{ weight: 2 }, /coat\.weight must be a number in \[0, 1\]/],
                                      [{ ior: "1.5" }, /coat\.ior must be a number in \[1\.05, 3\]/],

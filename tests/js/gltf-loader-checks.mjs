@@ -26,7 +26,7 @@ const kProbed = { compiled: { "Car Paint": "Car_Paint", Chrome: "Chrome", Trim: 
 const kPerPixel = ["Car_Paint", "Trim", "Edge_Trim"];
 
 // In `dir`: assets/car.glb (roughness 0.3, the foil), assets/car_matc.glb (`matc gltf`'s) and
-// build/ (`matc -o build car.glb`: the metals' JSON and snippets, the tables). Returns
+// build/ (`matc -o build car.glb`: the metals' JSON and GLSL and WGSL snippets, the tables). Returns
 // { assets, car, build }: the folders to serve and the asset.
 async function carAssetsForLoaders(dir, matc) {
   const assets = join(dir, "assets");
@@ -35,7 +35,7 @@ async function carAssetsForLoaders(dir, matc) {
   await carAsset(car, { paintRoughness: 0.3, chromeRoughness: 0.3, foil: true, trim: true, perPixel: true });
   run(matc, ["gltf", "-q", car, "-o", join(assets, "car_matc.glb")]);
   const build = join(dir, "build");
-  run(matc, ["-q", "-o", build, "--emit", "glsl,json,lut,ltc", car]);
+  run(matc, ["-q", "-o", build, "--emit", "glsl,wgsl,json,lut,ltc", car]);
   return { assets, car, build };
 }
 
@@ -98,8 +98,10 @@ function loaderChecks({ result, engine, matc, car, dir, probed, lights, terms })
 // An engine's loader check: its page (config -> HTML: { probed, lights, pixels, point, rect }; it
 // loads /assets/car.glb and /assets/car_matc.glb, the latter also with /build/) run over the car
 // assets in real time, then the checks above. `engine` names it in its warnings, `terms` are its
-// probe terms; `summary(worst)` says what was measured. argv: MATC NPM_DIR.
-export async function runLoaderCheck({ engine, page, terms, summary }, [matc, npmDir]) {
+// probe terms; `summary(worst)` says what was measured; `browserArgs`, Chromium's flags (WebGPU's);
+// `checkResult(result)`, the engine's own checks of what its page reported. argv: MATC NPM_DIR.
+export async function runLoaderCheck({ engine, page, terms, summary, browserArgs = [], checkResult = () => {} },
+                                     [matc, npmDir]) {
   const dir = mkdtempSync(join(tmpdir(), "matc-gltf-loader-"));
   try {
     const { assets, car, build } = await carAssetsForLoaders(dir, matc);
@@ -107,8 +109,9 @@ export async function runLoaderCheck({ engine, page, terms, summary }, [matc, np
       html: page({ probed: kProbed, lights: kLights, pixels: kProbePixels, point: kPointLight, rect: kProbeRectLight }),
       // Real time: under virtual time Chromium may call the page done while it waits on a
       // texture's decode (no network fetch pending), before the third load has run.
-      roots: { ...kWebRoots, web: npmDir, assets, build }, dir, realTime: true, budgetMs: 120000 });
+      roots: { ...kWebRoots, web: npmDir, assets, build }, dir, realTime: true, budgetMs: 120000, browserArgs });
     check(result.errors.length === 0, `page: ${result.errors.join("\n")}`);
+    checkResult(result);
     console.log(summary(loaderChecks({ result, engine, matc, car, dir, probed: kProbed, lights: kLights, terms })));
   } finally {
     rmSync(dir, { recursive: true, force: true });

@@ -20,8 +20,9 @@
 //   const gltf = await loader.loadAsync("car.glb");   // its metals now use matc's Fresnel
 //
 // Without the compiler: loadMatcBuild("build/") of a build directory (`matc -o build --shared-only`:
-// the tables), and matcGltfPlugin({ build }) for the asset `matc gltf` wrote.
-import { checkGltfLoaderOptions, gltfMetals } from "../matc-build.mjs";
+// the tables), and matcGltfPlugin({ build }) for the asset `matc gltf` wrote. WebGPURenderer:
+// matc/three/webgpu/gltf (./matc-gltf-webgpu.mjs).
+import { threeGltfPlugin } from "./gltf-plugin.mjs";
 import { useMatcFresnel } from "./matc-three.mjs";
 
 // Returns the plugin for `new GLTFLoader().register(...)`. build: loadMatcBuild(...) of
@@ -29,37 +30,6 @@ import { useMatcFresnel } from "./matc-three.mjs";
 // MATC_materials_fresnel (optional); options.compile: the compile's options (basis, colorSpace:
 // glTF's colours are linear Rec.709); options.areaLights: as useMatcFresnel takes it.
 export function matcGltfPlugin({ matc = null, build, compile = {}, areaLights = "matc" }) {
-  checkGltfLoaderOptions(matc, build, "matcGltfPlugin");
-  return (parser) => ({
-    name: "matc",
-    async afterRoot(gltf) {
-      // The asset's name escaped (JSON), so that it cannot forge console lines.
-      const where = (index) => `glTF materials[${index}] ${JSON.stringify(String(parser.json.materials[index].name ?? ""))}`;
-      const warn = (index, message) => console.warn(`matc: ${where(index)} keeps three.js's Fresnel: ${message}`);
-      const note = (index, message) => console.warn(`matc: ${where(index)}: ${message}`);
-      const metals = gltfMetals({ matc, build, compile, json: parser.json, warn, note });
-      const materials = new Set();
-      gltf.scene.traverse((object) => {
-        if (!object.isMesh) return;
-        for (const material of Array.isArray(object.material) ? object.material : [object.material]) {
-          materials.add(material);
-        }
-      });
-      const made = [];
-      for (const material of materials) {
-        const index = parser.associations.get(material)?.materials;
-        if (index === undefined) continue;
-        const found = await metals.metalOf(index);
-        if (!found) continue;
-        try {
-          useMatcFresnel(material, build, found.source, { areaLights });
-          Object.assign(material.userData.matc, { gltfMaterial: index, from: found.from });
-          made.push(material);
-        } catch (error) {
-          warn(index, error.message);
-        }
-      }
-      gltf.userData.matcMaterials = made;
-    },
-  });
+  return threeGltfPlugin({ matc, build, compile, what: "matcGltfPlugin",
+                           make: (material, source) => useMatcFresnel(material, build, source, { areaLights }) });
 }

@@ -148,7 +148,9 @@ export async function loadMatcBuild(source) {
     };
     return material;
   };
-  return { ...files, lut, ltc, coefficientTable, functions,
+  // withCoatFunctions: for a coated material made elsewhere with this build's WGSL snippet (a glTF
+  // metal's from its MATC_materials_fresnel, ./matc-gltf-webgpu.mjs).
+  return { ...files, lut, ltc, coefficientTable, functions, withCoatFunctions,
            async loadMaterial(name) { return withCoatFunctions(await loadMaterial(name)); } };
 }
 
@@ -386,10 +388,16 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc" } 
     throw new MatcWebError("useMatcFresnel (WebGPU) takes a MeshStandardNodeMaterial or MeshPhysicalNodeMaterial");
   }
   if (!build?.functions) throw new MatcWebError("useMatcFresnel (WebGPU) needs this module's loadMatcBuild");
+  // three's lighting model computes an iridescent material's Fresnel itself (the film over the
+  // metal with its extinction taken as 0), in place of the one matc replaces.
+  if (material.iridescence > 0) {
+    throw new MatcWebError("iridescence replaces the base Fresnel; it cannot be combined with matc's");
+  }
   checkLightingModel();
   const { underCoat, ...rows } = coefficientRows(build, source);
   const coat = source?.material?.coat ? coatOf(source.material, material, areaLights, underCoat) : null;
-  const matc = { rows, functions: build.functions, lut: build.lut, ltc: build.ltc, url: build.url, areaLights, coat };
+  const matc = { rows, functions: build.functions, lut: build.lut, ltc: build.ltc, url: build.url, areaLights, coat,
+                 source };
   material.metalness = 1;
   material.metalnessNode = null;
   material.setupLightingModel = () => new MatcPhysicalLightingModel(matc, material);
