@@ -19,46 +19,21 @@ import { runLoaderCheck } from "./gltf-loader-checks.mjs";
 
 const page = (config) => modulePage(config, {
   head: `import * as THREE from "three";
-import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
 import { RectAreaLightUniformsLib } from "three/addons/lights/RectAreaLightUniformsLib.js";
 import { createMatc } from "/web/index.mjs";
 import { compiledMatcBuildFiles } from "/web/matc-build.mjs";
 import { loadMatcBuild } from "/web/three/matc-three.mjs";
 import { matcGltfPlugin } from "/web/three/matc-gltf.mjs";
+import { loadCarThreeWays, recordConsole } from "/checks/three-gltf-loads-page.mjs";
 import { probeScene, probeSetup, renderProbePixels } from "/checks/three-scene-page.mjs";
 `,
   body: `
-  out.console = [];
-  for (const level of ["error", "warn"]) {
-    const original = console[level].bind(console);
-    console[level] = (...args) => { out.console.push(level + ": " + args.join(" ")); original(...args); };
-  }
+  recordConsole(out);
   const renderer = new THREE.WebGLRenderer({ canvas: document.createElement("canvas") });
   RectAreaLightUniformsLib.init();
   const matc = await createMatc();
   const build = await loadMatcBuild(await compiledMatcBuildFiles(matc));
-  const load = async (url, plugin) => {
-    const gltf = await new GLTFLoader().register(plugin).loadAsync(url);
-    const byName = {};
-    gltf.scene.traverse((object) => { if (object.isMesh) byName[object.material.name] = object.material; });
-    const kinds = Object.fromEntries(Object.entries(byName).map(([name, material]) =>
-      [name, material.userData.matc ? (material.userData.matc.source.schlick ? "per-pixel" :
-                                       (material.userData.matc.source.f0Table ? "f0-table " : "") +
-                                       (material.userData.matc.source.material.coat ? "coated" : "bare")) +
-                                      " " + material.userData.matc.from +
-                                      (/from MATC_materials_fresnel/.test(material.userData.matc.source.material?.coat?.snippet) ?
-                                       " (template)" : "") : "engine"]));
-    return { byName, kinds, made: gltf.userData.matcMaterials.length };
-  };
-  const loads = {};
-  for (const [name, url, options] of [["compiled", "/assets/car.glb", { matc, build }],
-                                      ["extension", "/assets/car_matc.glb", { build }],
-                                      ["directory", "/assets/car_matc.glb", { build: await loadMatcBuild("/build/") }]]) {
-    out.console.push("-- " + name);
-    loads[name] = await load(url, matcGltfPlugin(options));
-  }
-  out.kinds = Object.fromEntries(Object.entries(loads).map(([name, load]) => [name, load.kinds]));
-  out.made = Object.fromEntries(Object.entries(loads).map(([name, load]) => [name, load.made]));
+  const loads = await loadCarThreeWays(out, { matcGltfPlugin, matc, build, directoryBuild: await loadMatcBuild("/build/") });
   const { target, camera, environment } = probeSetup(THREE, renderer, ${kProbeSize});
   out.renders = {};
   for (const [load, probed] of Object.entries(config.probed)) {

@@ -16,7 +16,7 @@ import { read as readKtx2 } from "ktx-parse";
 import { RectAreaLightTexturesLib } from "three/addons/lights/RectAreaLightTexturesLib.js";
 import { loadMatcBuild, useMatcFresnel } from "/web/three/matc-three-webgpu.mjs";
 import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs";
-import { probeScene, webGpuRenderer } from "/checks/three-scene-page.mjs";
+import { probeScene, webGpuProbeSetup, webGpuRenderer } from "/checks/three-scene-page.mjs";
 import { coatedF0TableSource, probeBuild } from "/checks/page-probe-build.mjs";`,
   body: `
   out.renders = {};
@@ -24,12 +24,7 @@ import { coatedF0TableSource, probeBuild } from "/checks/page-probe-build.mjs";`
   const renderer = await webGpuRenderer(THREE, RectAreaLightTexturesLib);
   const { build, directoryBuild, loadProbeMaterial } =
       await probeBuild(out, config, loadMatcBuild, { language: "wgsl" });
-  const target = new THREE.RenderTarget(${kProbeSize}, ${kProbeSize}, { type: THREE.FloatType });
-  const camera = new THREE.PerspectiveCamera(90, 1, 0.1, 10);
-  camera.position.set(0, 0, 1);
-  const white = new THREE.DataTexture(new Float32Array(64 * 32 * 4).fill(1), 64, 32, THREE.RGBAFormat, THREE.FloatType);
-  white.mapping = THREE.EquirectangularReflectionMapping;
-  white.needsUpdate = true;
+  const { environment: white, renderPixels } = webGpuProbeSetup(THREE, renderer, ${kProbeSize});
   const materials = {};
   for (const name of config.materials) materials[name] = await loadProbeMaterial(name);
   const constant = (rgb) => {
@@ -62,15 +57,7 @@ import { coatedF0TableSource, probeBuild } from "/checks/page-probe-build.mjs";`
     const material = useMatcFresnel(new THREE.MeshPhysicalNodeMaterial({ roughness: render.roughness, ...colour }), build,
                                     sources[render.source] ?? { material: materials[render.source] },
                                     { areaLights: render.areaLights });
-    const scene = probeScene(THREE, material, render.light, config, white);
-    renderer.setRenderTarget(target);
-    await renderer.renderAsync(scene, camera);
-    const pixels = [];
-    for (const [x, y] of config.pixels) {
-      const texel = await renderer.readRenderTargetPixelsAsync(target, x, ${kProbeSize} - 1 - y, 1, 1);
-      pixels.push(Array.from(texel.subarray(0, 3)));
-    }
-    out.renders[render.key] = pixels;
+    out.renders[render.key] = await renderPixels(probeScene(THREE, material, render.light, config, white), config.pixels);
   }
   const lightingModel = THREE.PhysicalLightingModel.prototype;
   const original = lightingModel.indirectSpecular;

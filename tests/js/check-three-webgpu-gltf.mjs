@@ -13,40 +13,19 @@ import { check } from "./report.mjs";
 
 const page = (config) => modulePage(config, {
   head: `import * as THREE from "three/webgpu";
-import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
 import { RectAreaLightTexturesLib } from "three/addons/lights/RectAreaLightTexturesLib.js";
 import { createMatc } from "/web/index.mjs";
 import { compiledMatcBuildFiles } from "/web/matc-build.mjs";
 import { loadMatcBuild } from "/web/three/matc-three-webgpu.mjs";
 import { matcGltfPlugin } from "/web/three/matc-gltf-webgpu.mjs";
-import { probeScene, webGpuRenderer } from "/checks/three-scene-page.mjs";
+import { loadCarThreeWays, recordConsole } from "/checks/three-gltf-loads-page.mjs";
+import { probeScene, webGpuProbeSetup, webGpuRenderer } from "/checks/three-scene-page.mjs";
 `,
   body: `
-  out.console = [];
-  for (const level of ["error", "warn"]) {
-    const original = console[level].bind(console);
-    console[level] = (...args) => { out.console.push(level + ": " + args.join(" ")); original(...args); };
-  }
+  recordConsole(out);
   const renderer = await webGpuRenderer(THREE, RectAreaLightTexturesLib);
   const matc = await createMatc();
   const build = await loadMatcBuild(await compiledMatcBuildFiles(matc, { language: "wgsl" }));
-  const load = async (url, plugin) => {
-    const gltf = await new GLTFLoader().register(plugin).loadAsync(url);
-    const byName = {};
-    gltf.scene.traverse((object) => { if (object.isMesh) byName[object.material.name] = object.material; });
-    const kinds = Object.fromEntries(Object.entries(byName).map(([name, material]) =>
-      [name, material.userData.matc ? (material.userData.matc.source.schlick ? "per-pixel" :
-                                       (material.userData.matc.source.f0Table ? "f0-table " : "") +
-                                       (material.userData.matc.source.material.coat ? "coated" : "bare")) +
-                                      " " + material.userData.matc.from +
-                                      (/from MATC_materials_fresnel/.test(material.userData.matc.source.material?.coat?.snippet) ?
-                                       " (template)" : "") : "engine"]));
-    // A matc metal is a node material, on the meshes that used three.js's (byName reads the meshes).
-    if (gltf.userData.matcMaterials.some((material) => !material.isMeshStandardNodeMaterial)) {
-      throw new Error(url + ": a matc metal that is not a node material");
-    }
-    return { byName, kinds, made: gltf.userData.matcMaterials.length };
-  };
   // Options it cannot use, refused by name when the plugin is made.
   out.refusals = [{ build: null }, { build: { loadMaterial() {} } }].map((options) => {
     try {
@@ -56,33 +35,18 @@ import { probeScene, webGpuRenderer } from "/checks/three-scene-page.mjs";
       return error.message;
     }
   });
-  const loads = {};
-  for (const [name, url, options] of [["compiled", "/assets/car.glb", { matc, build }],
-                                      ["extension", "/assets/car_matc.glb", { build }],
-                                      ["directory", "/assets/car_matc.glb", { build: await loadMatcBuild("/build/") }]]) {
-    out.console.push("-- " + name);
-    loads[name] = await load(url, matcGltfPlugin(options));
+  const loads = await loadCarThreeWays(out, { matcGltfPlugin, matc, build, directoryBuild: await loadMatcBuild("/build/") });
+  // A matc metal is a node material, on the meshes that used three.js's (byName reads the meshes).
+  for (const [name, load] of Object.entries(loads)) {
+    if (load.made.some((material) => !material.isMeshStandardNodeMaterial)) throw new Error(name + ": a matc metal that is not a node material");
   }
-  out.kinds = Object.fromEntries(Object.entries(loads).map(([name, load]) => [name, load.kinds]));
-  out.made = Object.fromEntries(Object.entries(loads).map(([name, load]) => [name, load.made]));
-  const target = new THREE.RenderTarget(${kProbeSize}, ${kProbeSize}, { type: THREE.FloatType });
-  const camera = new THREE.PerspectiveCamera(90, 1, 0.1, 10);
-  camera.position.set(0, 0, 1);
-  const white = new THREE.DataTexture(new Float32Array(64 * 32 * 4).fill(1), 64, 32, THREE.RGBAFormat, THREE.FloatType);
-  white.mapping = THREE.EquirectangularReflectionMapping;
-  white.needsUpdate = true;
+  const { environment, renderPixels } = webGpuProbeSetup(THREE, renderer, ${kProbeSize});
   out.renders = {};
   for (const [load, probed] of Object.entries(config.probed)) {
     for (const [name, key] of Object.entries(probed)) {
       for (const light of config.lights) {
-        renderer.setRenderTarget(target);
-        renderer.render(probeScene(THREE, loads[load].byName[name], light, config, white), camera);
-        const pixels = [];
-        for (const [x, y] of config.pixels) {
-          const texel = await renderer.readRenderTargetPixelsAsync(target, x, ${kProbeSize} - 1 - y, 1, 1);
-          pixels.push(Array.from(texel.subarray(0, 3)));
-        }
-        out.renders[load + " " + key + " " + light + " r=0.3"] = pixels;
+        out.renders[load + " " + key + " " + light + " r=0.3"] =
+            await renderPixels(probeScene(THREE, loads[load].byName[name], light, config, environment), config.pixels);
       }
     }
   }

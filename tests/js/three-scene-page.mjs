@@ -60,6 +60,29 @@ export function renderProbePixels(renderer, scene, camera, target, pixels) {
   });
 }
 
+// The same for a WebGPURenderer: the target, the camera, the white environment (an equirectangular
+// texture, which the renderer prefilters itself), and renderPixels(scene, pixels): the RGB of each
+// of `pixels` ([x, y], y up; WebGPU reads rows from the top).
+export function webGpuProbeSetup(THREE, renderer, size) {
+  const target = new THREE.RenderTarget(size, size, { type: THREE.FloatType });
+  const camera = new THREE.PerspectiveCamera(90, 1, 0.1, 10);
+  camera.position.set(0, 0, 1);
+  const environment = new THREE.DataTexture(new Float32Array(64 * 32 * 4).fill(1), 64, 32, THREE.RGBAFormat, THREE.FloatType);
+  environment.mapping = THREE.EquirectangularReflectionMapping;
+  environment.needsUpdate = true;
+  const renderPixels = async (scene, pixels) => {
+    renderer.setRenderTarget(target);
+    renderer.render(scene, camera);
+    const rgb = [];
+    for (const [x, y] of pixels) {
+      const texel = await renderer.readRenderTargetPixelsAsync(target, x, size - 1 - y, 1, 1);
+      rgb.push(Array.from(texel.subarray(0, 3)));
+    }
+    return rgb;
+  };
+  return { target, camera, environment, renderPixels };
+}
+
 // The probe checks' scene (engine-probes.mjs): a plane with `material` under one render's light
 // ("environment": `environment`; "point", "rect": config's lights).
 export function probeScene(THREE, material, light, config, environment) {
