@@ -29,6 +29,9 @@ import { run } from "./shader-cases.mjs";
 
 const [matc, npmDir, apiDump] = process.argv.slice(2);
 const kSizeLimit = 200 * 1024;
+// A smaller window than a desktop's: each step draws the page's view on Chromium's CPU rasteriser,
+// and the checks read the probe renders, curves and exports, not the view.
+const kWindowSize = "800,600";
 const lights = ["environment", "point", "rect"];
 const select = (selector, value) => ({ selector, value, event: "change" });
 const input = (selector, value) => ({ selector, value });
@@ -147,7 +150,7 @@ function maxDifference(a, b) {
 
 const dir = mkdtempSync(join(tmpdir(), "matc-lookdev-"));
 try {
-  const result = await runLookdevPage({ npmDir, config: kConfig, dir: join(dir, "page") });
+  const result = await runLookdevPage({ npmDir, config: kConfig, dir: join(dir, "page"), windowSize: kWindowSize });
   check(result.errors.length === 0, `page: ${result.errors.join("\n")}`);
   check(result.console.length === 0, `the page's console: ${result.console.join("\n")}`);
   check(result.start?.name === "Cu", `the page started with ${result.start?.name}, not its default Cu`);
@@ -223,12 +226,13 @@ try {
   const worstProbe = compareProbes(renders, expected);
 
   // The link: the coated case's URL, opened afresh, shows the same material.
-  const again = await runLookdevPage({ npmDir, config: { cases: [] }, dir: join(dir, "link"), fragment: coated?.hash ?? "" });
+  const again = await runLookdevPage({ npmDir, config: { cases: [] }, dir: join(dir, "link"), windowSize: kWindowSize,
+                                       fragment: coated?.hash ?? "" });
   check(again.errors.length === 0 && again.console.length === 0, `the link: ${[...again.errors, ...again.console].join("\n")}`);
   check(again.start?.exports?.glsl === coated?.exports?.glsl, "the coated case's link does not reproduce its GLSL");
 
   // A broken link: the default metal, the reason beside the document box, the text not run as markup.
-  const broken = await runLookdevPage({ npmDir, config: { cases: [] }, dir: join(dir, "broken-link"),
+  const broken = await runLookdevPage({ npmDir, config: { cases: [] }, dir: join(dir, "broken-link"), windowSize: kWindowSize,
                                         fragment: "#material=%7B%3Cimg%20src%3Dx%20onerror%3Dalert(1)%3E&view=%3Cb%3E" });
   check(broken.errors.length === 0 && broken.console.length === 0, `a broken link: ${[...broken.errors, ...broken.console].join("\n")}`);
   check(broken.start?.name === "Cu", `a broken link opened ${broken.start?.name}, not the default Cu`);
