@@ -47,11 +47,6 @@ struct Comparison {
   bool tinted_coat = false;  // ours_coated under a tinted coat instead of a clear one
 };
 
-// The models whose pass draws a coated material's two lobes.
-bool coated(FresnelModel model) {
-  return model == FresnelModel::ours_coated || model == FresnelModel::f0_table_coated;
-}
-
 const std::array<Comparison, 22> kComparisons = {{
     {"F alone, compiled coefficients", FresnelQuantity::direct, FresnelModel::ours,
      FresnelModel::schlick, std::nullopt},
@@ -209,7 +204,7 @@ int main(int argc, char** argv) {
   using VariantKey = std::tuple<FresnelModel, FresnelQuantity, matc::runtime::BasisKind, bool>;
   const auto key = [](const Comparison& row, FresnelModel model) {
     return VariantKey{model, row.quantity, row.basis.value_or(matc::runtime::kDefaultBasis),
-                      coated(model) && row.tinted_coat};
+                      matc::draws_coated_material(model) && row.tinted_coat};
   };
   std::map<VariantKey, matc::SpirvWords> fragments;
   for (const Comparison& row : kComparisons) {
@@ -218,9 +213,9 @@ int main(int argc, char** argv) {
       const BasisBuild& basis_build = *builds.at(std::get<2>(key(row, model)));
       fragments[key(row, model)] = matc::compile_fullscreen_stage(
           matc::cost_pass_source(basis_build.build,
-                                 !coated(model)    ? basis_build.material
-                                 : row.tinted_coat ? basis_build.tinted
-                                                   : basis_build.coated,
+                                 !matc::draws_coated_material(model) ? basis_build.material
+                                 : row.tinted_coat                   ? basis_build.tinted
+                                                                     : basis_build.coated,
                                  model, row.quantity, 1280, 720),
           matc::ShaderStage::fragment, "cost_pass.frag");
     }

@@ -54,6 +54,10 @@ bool reads_f0_table(FresnelModel model) {
 
 }  // namespace
 
+bool draws_coated_material(FresnelModel model) {
+  return model == FresnelModel::ours_coated || model == FresnelModel::f0_table_coated;
+}
+
 std::vector<CostPassBinding> cost_pass_bindings(FresnelModel model, FresnelQuantity quantity) {
   std::vector<CostPassBinding> bindings = {{0, CostPassResource::table},
                                            {1, CostPassResource::sampler}};
@@ -75,7 +79,7 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
                        model == FresnelModel::schlick_clear_coat;
   // 0: no coat; 1: ours coated; 2: ours bare under a Schlick coat; 3: Filament's clear coat.
   int coat = 0;
-  if (model == FresnelModel::ours_coated || model == FresnelModel::f0_table_coated) coat = 1;
+  if (draws_coated_material(model)) coat = 1;
   if (model == FresnelModel::ours_with_schlick_coat) coat = 2;
   if (model == FresnelModel::schlick_clear_coat) coat = 3;
   if (coat == 1 && !compiled.coat)

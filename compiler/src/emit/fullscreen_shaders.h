@@ -71,6 +71,9 @@ struct CostPassBinding {
   std::uint32_t binding = 0;
   CostPassResource resource = CostPassResource::table;
 };
+// Whether a model draws a coated material's two lobes (ours coated, at its coefficients or per
+// pixel through its F0 table): its cost pass needs a coated material.
+bool draws_coated_material(FresnelModel model);
 // Every binding the cost pass of (model, quantity) declares, the one place that decides them.
 std::vector<CostPassBinding> cost_pass_bindings(FresnelModel model, FresnelQuantity quantity);
 
