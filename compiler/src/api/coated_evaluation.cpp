@@ -28,11 +28,14 @@ void add_coated_quad_light(const EvaluationInputs& options, const std::vector<Ve
                            ordered_json& out) {
   const CoatInput& coat = compiled.coat->input;
   const runtime::LtcTableView ltc = runtime::shipped_ltc_table();
-  const LayeredCurve base(in_air, under, coat.weight, coat.ior, coat.color,
-                          LayeredCurve::Part::base);
-  const LayeredCurve coat_lobe(in_air, under, coat.weight, coat.ior, coat.color,
-                               LayeredCurve::Part::coat);
-  const TabulatedCurve base_table(base), coat_table(coat_lobe);
+  // The exact lobes the reference integrates, tabulated only when it is asked for.
+  std::optional<TabulatedCurve> base_table, coat_table;
+  if (options.reference) {
+    base_table.emplace(
+        LayeredCurve(in_air, under, coat.weight, coat.ior, coat.color, LayeredCurve::Part::base));
+    coat_table.emplace(
+        LayeredCurve(in_air, under, coat.weight, coat.ior, coat.color, LayeredCurve::Part::coat));
+  }
   add_quad_light_description(options, quad, ltc, out);
   ordered_json ours = ordered_json::array(), ours_base = ordered_json::array(),
                ours_coat = ordered_json::array(), reference = ordered_json::array(),
@@ -47,10 +50,10 @@ void add_coated_quad_light(const EvaluationInputs& options, const std::vector<Ve
     ours_coat.push_back(lobes.coat);
     if (!options.reference) continue;
     const AreaLightEstimate base_part = integrate_polygon_light(
-        GgxLobe(ndotv, roughness), quad, [&](double mu) { return base_table.at(mu); },
+        GgxLobe(ndotv, roughness), quad, [&](double mu) { return base_table->at(mu); },
         options.light_samples);
     const AreaLightEstimate coat_part = integrate_polygon_light(
-        GgxLobe(ndotv, coat.roughness), quad, [&](double mu) { return coat_table.at(mu); },
+        GgxLobe(ndotv, coat.roughness), quad, [&](double mu) { return coat_table->at(mu); },
         options.light_samples);
     Rgb sum{}, error{};
     for (std::size_t c = 0; c < 3; ++c) {
@@ -144,27 +147,24 @@ void add_coated(const EvaluationInputs& options, const CompiledMaterial& compile
   out["Fbar_base"] = std::move(base);
   out["Fbar_coat"] = std::move(coat_lobe);
   out["Fbar_analytic"] = std::move(closed_form);
-  if (!options.reference) {
-    if (options.quad)
-      add_coated_quad_light(options, *options.quad, compiled, lut, *in_air, *under, out);
-    return;
+  if (options.reference) {
+    const TabulatedCurve in_air_exact(*in_air);
+    const TabulatedCurve under_exact(*under);
+    ordered_json split_sum = ordered_json::array(), monte_carlo = ordered_json::array(),
+                 standard_error = ordered_json::array();
+    for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
+      const double ndotv = options.ndotv[i];
+      split_sum.push_back(
+          layered_split_sum(in_air_exact, under_exact, coat.input, ndotv, options.roughness[i]));
+      const LayeredEstimate estimate =
+          layered_albedo({*in_air, *metal_in_coat, coat.input, options.roughness[i]}, ndotv);
+      monte_carlo.push_back(estimate.mean);
+      standard_error.push_back(estimate.standard_error);
+    }
+    out["Fbar_reference"] = std::move(split_sum);
+    out["Fbar_layered_reference"] = std::move(monte_carlo);
+    out["Fbar_layered_reference_standard_error"] = std::move(standard_error);
   }
-  const TabulatedCurve in_air_exact(*in_air);
-  const TabulatedCurve under_exact(*under);
-  ordered_json split_sum = ordered_json::array(), monte_carlo = ordered_json::array(),
-               standard_error = ordered_json::array();
-  for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
-    const double ndotv = options.ndotv[i];
-    split_sum.push_back(
-        layered_split_sum(in_air_exact, under_exact, coat.input, ndotv, options.roughness[i]));
-    const LayeredEstimate estimate =
-        layered_albedo({*in_air, *metal_in_coat, coat.input, options.roughness[i]}, ndotv);
-    monte_carlo.push_back(estimate.mean);
-    standard_error.push_back(estimate.standard_error);
-  }
-  out["Fbar_reference"] = std::move(split_sum);
-  out["Fbar_layered_reference"] = std::move(monte_carlo);
-  out["Fbar_layered_reference_standard_error"] = std::move(standard_error);
   if (options.quad)
     add_coated_quad_light(options, *options.quad, compiled, lut, *in_air, *under, out);
 }
