@@ -93,6 +93,7 @@ set(MATC_NATIVE_SOURCES
   src/fit/coefficient_table.cpp
   src/fit/conductor_solver.cpp
   src/base/exclusive_file.cpp
+  src/base/pending_file.cpp
   src/lut/analytic_lut_fit.cpp
   src/lut/split_sum_reference.cpp
   src/lut/comparison_lobes.cpp

@@ -81,7 +81,7 @@ TEST_F(MatcCli, SameInputsGiveSameBytesAndUnchangedFilesAreNotRewritten) {
 
 // matc removes only files it created: not a temporary of the form its writers once used whose
 // process is gone (it may be a writer in another pid namespace, or an input), not a user's file,
-// not a guess at today's form. A killed run (SIGKILL) leaves its own temporaries.
+// not a guess at today's form.
 TEST_F(MatcCli, LeavesEveryFileItDidNotCreate) {
   write_file(dir_ / "m" / "good.json", kGood);
   const pid_t child = ::fork();
@@ -104,29 +104,44 @@ TEST_F(MatcCli, LeavesEveryFileItDidNotCreate) {
   EXPECT_EQ(files, 17u + 2u);  // its 17 and the two planted files of other forms
 }
 
+// `count` metals of different indices written as m/m<i>.json under `directory`; their paths
+// relative to it.
+std::vector<std::string> write_metal_batch(const fs::path& directory, int count) {
+  std::vector<std::string> files;
+  for (int i = 0; i < count; ++i) {
+    const std::string name = fmt::format("m{:04}", i);
+    write_file(directory / "m" / (name + ".json"),
+               fmt::format(R"({{"name": "{}", "ior": {{"n": {}, "k": 3}}}})", name,
+                           0.2 + i * 2.0 / count));
+    files.push_back("m/" + name + ".json");
+  }
+  return files;
+}
+
+// matc started with `args` in `directory` as a child process (to be signalled); its pid.
+pid_t start_matc(const fs::path& directory, const std::vector<std::string>& args) {
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::chdir(directory.c_str());
+    std::vector<char*> argv = {const_cast<char*>(MATC_BINARY)};
+    for (const std::string& arg : args)
+      argv.push_back(const_cast<char*>(arg.c_str()));
+    argv.push_back(nullptr);
+    ::execv(MATC_BINARY, argv.data());
+    ::_exit(127);
+  }
+  return child;
+}
+
 // Ctrl-C (SIGINT) or SIGTERM mid-run: matc removes the temporaries it had in flight, nothing
 // else, and dies of the signal. Whenever the signal lands, no temporary may remain.
 TEST_F(MatcCli, AnInterruptedRunRemovesItsTemporariesAndNothingElse) {
   std::vector<std::string> args = {"-q", "-j", "2", "-o", "out"};
-  for (int i = 0; i < 200; ++i) {
-    const std::string name = fmt::format("m{:03}", i);
-    write_file(
-        dir_ / "m" / (name + ".json"),
-        fmt::format(R"({{"name": "{}", "ior": {{"n": {}, "k": 3}}}})", name, 0.2 + i * 0.01));
-    args.push_back("m/" + name + ".json");
-  }
+  for (const std::string& file : write_metal_batch(dir_, 200))
+    args.push_back(file);
   write_file(dir_ / "out" / ".notes.tmp7", "not matc's");
   for (const int signal : {SIGINT, SIGTERM}) {
-    const pid_t child = ::fork();
-    if (child == 0) {
-      ::chdir(dir_.c_str());
-      std::vector<char*> argv = {const_cast<char*>(MATC_BINARY)};
-      for (std::string& arg : args)
-        argv.push_back(arg.data());
-      argv.push_back(nullptr);
-      ::execv(MATC_BINARY, argv.data());
-      ::_exit(127);
-    }
+    const pid_t child = start_matc(dir_, args);
     ASSERT_GT(child, 0);
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     ::kill(child, signal);
@@ -139,6 +154,40 @@ TEST_F(MatcCli, AnInterruptedRunRemovesItsTemporariesAndNothingElse) {
       EXPECT_EQ(entry.path().filename().string().find(".matc-"), std::string::npos) << entry.path();
     EXPECT_EQ(read_file(dir_ / "out" / ".notes.tmp7"), "not matc's");
   }
+}
+
+// A run killed outright (SIGKILL: a build system cancelling an action, a CI time-out) cannot
+// clean up, so its files have no name until they are complete (O_TMPFILE): eight kills at
+// different moments of a 1,000-material batch, then a complete run, leave no temporary, and the
+// complete run's files equal a run's that was never killed.
+TEST_F(MatcCli, RunsKilledOutrightLeaveNoTemporaries) {
+  std::vector<std::string> args = {"-q", "-j", "2", "-o", "out"};
+  for (const std::string& file : write_metal_batch(dir_, 1000))
+    args.push_back(file);
+  int killed = 0;
+  for (int kill = 0; kill < 8; ++kill) {
+    const pid_t child = start_matc(dir_, args);
+    ASSERT_GT(child, 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(40 + 45 * kill));
+    ::kill(child, SIGKILL);
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    killed += WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL ? 1 : 0;
+  }
+  EXPECT_GE(killed, 4);  // most kills land mid-run (a finished run is no test of this)
+  const CommandResult complete = run(args);
+  ASSERT_EQ(complete.exit_code, 0) << complete.err;
+  std::vector<std::string> fresh = args;
+  fresh[4] = "fresh";
+  ASSERT_EQ(run(fresh).exit_code, 0);
+  std::size_t files = 0;
+  for (const auto& entry : fs::directory_iterator(dir_ / "out")) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_EQ(name.find(".matc-"), std::string::npos) << name;
+    EXPECT_EQ(read_file(entry.path()), read_file(dir_ / "fresh" / name)) << name;
+    ++files;
+  }
+  EXPECT_EQ(files, 1000u * 6 + 11);  // six per material, the shared files and the manifest
 }
 
 // With -k a material whose files cannot all be written leaves none of them (all or none), and

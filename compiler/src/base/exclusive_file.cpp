@@ -67,17 +67,16 @@ std::string unguessable_part() {
   return fmt::format("{:016x}", bits);
 }
 
-}  // namespace
-
-ExclusiveFile create_exclusive_file(const std::filesystem::path& directory, std::string_view stem) {
+// A new name ".<stem>.matc-<hex>.tmp" in `directory`, made by `make` (0 on success, -1 with errno),
+// retried while it exists. Throws std::runtime_error when none can be made.
+template <typename Make>
+std::filesystem::path make_exclusive_name(const std::filesystem::path& directory,
+                                          std::string_view stem, const Make& make) {
   const std::filesystem::path parent = directory.empty() ? "." : directory;
   for (int attempt = 0;; ++attempt) {
     const std::filesystem::path path =
         parent / fmt::format(".{}.matc-{}.tmp", stem, unguessable_part());
-    const int descriptor = temporaries_in_flight().create(path.string(), [&] {
-      return ::open(path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
-    });
-    if (descriptor >= 0) return {path, descriptor};
+    if (temporaries_in_flight().create(path.string(), [&] { return make(path); }) >= 0) return path;
     const int error = errno;
     if (error == EINTR) throw std::runtime_error("interrupted: no new file is started");
     if (error != EEXIST || attempt == 16) {
@@ -85,6 +84,27 @@ ExclusiveFile create_exclusive_file(const std::filesystem::path& directory, std:
           fmt::format("cannot create a file in '{}': {}", parent.string(), std::strerror(error)));
     }
   }
+}
+
+}  // namespace
+
+ExclusiveFile create_exclusive_file(const std::filesystem::path& directory, std::string_view stem) {
+  int descriptor = -1;
+  const std::filesystem::path path =
+      make_exclusive_name(directory, stem, [&](const std::filesystem::path& name) {
+        descriptor = ::open(name.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
+        return descriptor;
+      });
+  return {path, descriptor};
+}
+
+std::filesystem::path link_exclusive_file(int descriptor, const std::filesystem::path& directory,
+                                          std::string_view stem) {
+  // Through /proc's link to the descriptor: linkat(AT_EMPTY_PATH) needs CAP_DAC_READ_SEARCH.
+  const std::string open_file = fmt::format("/proc/self/fd/{}", descriptor);
+  return make_exclusive_name(directory, stem, [&](const std::filesystem::path& name) {
+    return ::linkat(AT_FDCWD, open_file.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW);
+  });
 }
 
 void discard_exclusive_file(const std::filesystem::path& path) {

@@ -17,6 +17,11 @@ struct ExclusiveFile {
   int descriptor = -1;  // open for reading and writing; the caller closes it
 };
 ExclusiveFile create_exclusive_file(const std::filesystem::path& directory, std::string_view stem);
+// Gives the open file `descriptor` (an O_TMPFILE, which has no name) a new name as
+// create_exclusive_file would make it, exclusively and registered the same way; returns it.
+// Throws std::runtime_error when it cannot.
+std::filesystem::path link_exclusive_file(int descriptor, const std::filesystem::path& directory,
+                                          std::string_view stem);
 // Removes a file create_exclusive_file made (and only such a file) and forgets it.
 void discard_exclusive_file(const std::filesystem::path& path);
 // Forgets it without removing it: it was renamed into place, or is unlinked by its user.
@@ -24,7 +29,8 @@ void forget_exclusive_file(const std::filesystem::path& path);
 
 // Removes every temporary this process has created and not yet renamed into place or discarded,
 // and refuses new ones: for a handler of SIGINT or SIGTERM, run on a thread of its own. matc
-// removes no other file: a run killed outright (SIGKILL) leaves its ".*.matc-*.tmp" files.
+// removes no other file. Outputs are written unnamed where the system allows (pending_file.h), so
+// a run killed outright (SIGKILL) leaves no ".*.matc-*.tmp" files there.
 void remove_temporaries_in_flight();
 
 }  // namespace matc

@@ -10,8 +10,8 @@
 #include <fmt/format.h>
 
 #include "base/content_hash.h"
-#include "base/exclusive_file.h"
 #include "base/json_format.h"
+#include "base/pending_file.h"
 
 namespace matc {
 namespace {
@@ -63,14 +63,14 @@ void ManifestWriter::append(std::string_view formatted_entry) {
     return;
   }
   if (!spool_) {
-    // Created on the first entry, exclusively (never an existing file of that name), and
-    // unlinked at once.
+    // Created on the first entry with no name (or exclusively, and unlinked at once).
     std::filesystem::create_directories(spool_directory_);
-    const ExclusiveFile file = create_exclusive_file(spool_directory_, "matc_manifest.entries");
-    spool_.reset(::fdopen(file.descriptor, "w+b"));
+    PendingFile file = PendingFile::create(spool_directory_, "matc_manifest.entries");
+    const int descriptor = ::dup(file.descriptor());
+    if (descriptor >= 0) spool_.reset(::fdopen(descriptor, "w+b"));
     const int error = errno;
-    if (!spool_) ::close(file.descriptor);
-    discard_exclusive_file(file.path);
+    if (!spool_ && descriptor >= 0) ::close(descriptor);
+    file.discard();
     if (!spool_) {
       throw std::runtime_error(fmt::format("cannot open the manifest's entries in '{}': {}",
                                            spool_directory_.string(), std::strerror(error)));

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <future>
 #include <iterator>
+#include <optional>
 #include <stdexcept>
 #include <streambuf>
 #include <string>
@@ -16,7 +17,7 @@
 
 #include <fmt/format.h>
 
-#include "base/exclusive_file.h"
+#include "base/pending_file.h"
 
 namespace matc {
 namespace {
@@ -45,26 +46,28 @@ bool holds_bytes(const Target& target, const std::filesystem::path& path, std::s
   return existing == bytes;
 }
 
-// Whether the temporary `a` and the output `b` hold the same bytes, read a block at a time (a
-// symlink at `b` is never read: it is replaced).
-bool same_contents(const std::filesystem::path& a, const std::filesystem::path& b) {
-  std::error_code error;
+// Whether the pending file `pending` (written, its offset anywhere) and the output `b` hold the
+// same bytes, read a block at a time (a symlink at `b` is never read: it is replaced).
+bool same_contents(int pending, const std::filesystem::path& b) {
   const Target existing = inspect(b);
-  const auto size = std::filesystem::file_size(a, error);
-  if (error || existing.kind != Target::Kind::regular || existing.size != size) return false;
-  std::ifstream in_a(a, std::ios::binary);
+  struct stat status {};
+  if (::fstat(pending, &status) != 0 || existing.kind != Target::Kind::regular ||
+      existing.size != static_cast<std::uintmax_t>(status.st_size))
+    return false;
   std::ifstream in_b(b, std::ios::binary);
   std::string block_a(1 << 16, '\0');
   std::string block_b(1 << 16, '\0');
-  while (in_a && in_b) {
-    in_a.read(block_a.data(), static_cast<std::streamsize>(block_a.size()));
+  off_t offset = 0;
+  while (in_b) {
+    const ssize_t read_a = ::pread(pending, block_a.data(), block_a.size(), offset);
     in_b.read(block_b.data(), static_cast<std::streamsize>(block_b.size()));
-    if (in_a.gcount() != in_b.gcount() ||
-        block_a.compare(0, static_cast<std::size_t>(in_a.gcount()), block_b, 0,
-                        static_cast<std::size_t>(in_b.gcount())) != 0)
+    if (read_a < 0 || read_a != in_b.gcount() ||
+        block_a.compare(0, static_cast<std::size_t>(read_a), block_b, 0,
+                        static_cast<std::size_t>(read_a)) != 0)
       return false;
+    offset += read_a;
   }
-  return in_a.eof() && in_b.eof();
+  return offset == status.st_size;
 }
 
 // Writes `size` bytes to `descriptor`, through partial writes and interruptions.
@@ -116,83 +119,53 @@ class DescriptorBuffer : public std::streambuf {
   std::vector<char> buffer_;
 };
 
-// A temporary file beside `path`, writes it with `produce` and returns its name; nothing of it
-// is left on failure. It is created with O_EXCL under a name with an unguessable part, so it is
-// never a file that existed before: not an input, not another writer's temporary.
-std::filesystem::path write_temporary(const std::filesystem::path& path,
-                                      const std::function<void(std::ostream&)>& produce) {
-  ExclusiveFile file = create_exclusive_file(path.parent_path(), path.filename().string());
+// A pending file for `path` (pending_file.h: unnamed until published), written with `produce`;
+// nothing of it is left on failure.
+PendingFile write_pending(const std::filesystem::path& path,
+                          const std::function<void(std::ostream&)>& produce) {
+  PendingFile file = PendingFile::create(path.parent_path(), path.filename().string());
   bool written = false;
   std::string failure;
-  try {
-    DescriptorBuffer buffer(file.descriptor);
+  {
+    DescriptorBuffer buffer(file.descriptor());
     std::ostream out(&buffer);
-    produce(out);
+    produce(out);  // an exception discards the file (its destructor)
     out.flush();
     written = static_cast<bool>(out);
     if (!written) failure = std::strerror(errno);
-  } catch (...) {
-    ::close(file.descriptor);
-    discard_exclusive_file(file.path);
-    throw;
   }
-  if (::close(file.descriptor) != 0 && written) {
-    written = false;
-    failure = std::strerror(errno);
-  }
-  if (!written) {
-    discard_exclusive_file(file.path);
+  if (!written)
     throw std::runtime_error(fmt::format("cannot write '{}': {}", path.string(), failure));
-  }
-  return file.path;
+  return file;
 }
 
-// write_temporary for bytes already in memory.
-std::filesystem::path write_temporary(const std::filesystem::path& path, std::string_view bytes) {
-  return write_temporary(path, [bytes](std::ostream& out) {
+// write_pending for bytes already in memory.
+PendingFile write_pending(const std::filesystem::path& path, std::string_view bytes) {
+  return write_pending(path, [bytes](std::ostream& out) {
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   });
-}
-
-void move_into_place(const std::filesystem::path& temporary, const std::filesystem::path& path) {
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    discard_exclusive_file(temporary);
-    throw std::runtime_error(
-        fmt::format("cannot replace '{}': {}", path.string(), error.message()));
-  }
-  forget_exclusive_file(temporary);
 }
 
 }  // namespace
 
 WriteOutcome write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
   if (holds_bytes(inspect(path), path, bytes)) return WriteOutcome::unchanged;
-  const std::filesystem::path temporary = write_temporary(path, bytes);
-  move_into_place(temporary, path);
+  write_pending(path, bytes).publish(path);
   return WriteOutcome::written;
 }
 
 WriteOutcome write_file_atomically(const std::filesystem::path& path,
                                    const std::function<void(std::ostream&)>& produce) {
-  const std::filesystem::path temporary = write_temporary(path, produce);
-  if (same_contents(temporary, path)) {
-    discard_exclusive_file(temporary);
-    return WriteOutcome::unchanged;
-  }
-  move_into_place(temporary, path);
+  PendingFile pending = write_pending(path, produce);
+  if (same_contents(pending.descriptor(), path)) return WriteOutcome::unchanged;  // discarded
+  pending.publish(path);
   return WriteOutcome::written;
 }
 
 std::vector<WriteOutcome> write_files_atomically(const std::filesystem::path& directory,
                                                  std::span<const OutputFile> files) {
   std::vector<WriteOutcome> outcomes(files.size(), WriteOutcome::unchanged);
-  std::vector<std::filesystem::path> temporaries(files.size());
-  const auto discard_all = [&] {
-    for (const std::filesystem::path& temporary : temporaries)
-      if (!temporary.empty()) discard_exclusive_file(temporary);
-  };
+  std::vector<std::optional<PendingFile>> pending(files.size());  // discarded when destroyed
   // Large sets (baked textures, hundreds of MB) are written on a thread per file: copying into
   // the page cache is most of a write's time. Small ones (a material's shaders) on this thread.
   std::size_t total_bytes = 0;
@@ -206,7 +179,7 @@ std::vector<WriteOutcome> write_files_atomically(const std::filesystem::path& di
     if (existing.kind == Target::Kind::directory)
       throw std::runtime_error(
           fmt::format("cannot replace '{}': it is a directory", target.string()));
-    temporaries[i] = write_temporary(target, files[i].bytes);
+    pending[i] = write_pending(target, files[i].bytes);
     outcomes[i] = WriteOutcome::written;
   };
   std::exception_ptr failure;
@@ -229,20 +202,10 @@ std::vector<WriteOutcome> write_files_atomically(const std::filesystem::path& di
       failure = std::current_exception();
     }
   }
-  if (failure) {
-    discard_all();
-    std::rethrow_exception(failure);
-  }
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    if (temporaries[i].empty()) continue;
-    try {
-      move_into_place(temporaries[i], directory / files[i].name);
-      temporaries[i].clear();
-    } catch (...) {
-      discard_all();  // what is left: the targets already renamed hold their new bytes
-      throw;
-    }
-  }
+  if (failure) std::rethrow_exception(failure);
+  // A failure here leaves the targets already published with their new bytes.
+  for (std::size_t i = 0; i < files.size(); ++i)
+    if (pending[i]) pending[i]->publish(directory / files[i].name);
   return outcomes;
 }
 

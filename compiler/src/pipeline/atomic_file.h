@@ -9,7 +9,6 @@
 #include <string_view>
 #include <vector>
 
-#include "base/exclusive_file.h"
 #include "base/output_file.h"
 
 namespace matc {
@@ -17,8 +16,9 @@ namespace matc {
 enum class WriteOutcome { written, unchanged };
 
 // Leaves the file untouched when it already holds `bytes` (so build systems see no change);
-// otherwise writes a temporary file beside it (create_exclusive_file) and renames it into place.
-// Throws std::runtime_error with a readable reason on failure, leaving no temporary behind.
+// otherwise writes a file beside it that has no name until it is complete (base/pending_file.h)
+// and gives it the output's name. Throws std::runtime_error with a readable reason on failure,
+// leaving no temporary behind.
 WriteOutcome write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
 
 // The same for a file too large to hold in memory: `produce` writes the bytes to the stream it
@@ -26,9 +26,9 @@ WriteOutcome write_file_atomically(const std::filesystem::path& path, std::strin
 WriteOutcome write_file_atomically(const std::filesystem::path& path,
                                    const std::function<void(std::ostream&)>& produce);
 
-// All of `files` into `directory`, or none: every changed file's temporary is written (and every
-// target checked to be replaceable) before the first is renamed into place, so a failure leaves
-// the directory as it was. Outcomes in the order of `files`.
+// All of `files` into `directory`, or none: every changed file is written (and every target
+// checked to be replaceable) before the first takes its name, so a failure leaves the directory as
+// it was. Outcomes in the order of `files`.
 std::vector<WriteOutcome> write_files_atomically(const std::filesystem::path& directory,
                                                  std::span<const OutputFile> files);
 
