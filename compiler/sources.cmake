@@ -80,6 +80,7 @@ set(MATC_NATIVE_SOURCES
   src/api/tables.cpp
   src/api/fbar_reference.cpp
   src/api/files.cpp
+  src/api/gltf_files.cpp
   src/api/report.cpp
   src/api/basis.cpp
   src/api/regeneration.cpp

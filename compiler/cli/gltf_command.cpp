@@ -17,8 +17,6 @@
 namespace matc::cli {
 namespace {
 
-namespace fs = std::filesystem;
-
 struct GltfOptions {
   std::string input;
   std::string output;
@@ -33,33 +31,6 @@ bool ends_with_any_case(const std::string& path, std::string_view extension) {
     if (static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c) != extension[i]) return false;
   }
   return true;
-}
-
-// Why the asset may not be written to `output`: into its own input, or a .gltf away from the
-// files it names beside it (they would not resolve). Empty when it may.
-std::string output_problem(const GltfOptions& options, const api::GltfAsset& asset) {
-  const fs::path input(options.input);
-  const fs::path output(options.output);
-  const std::string written = api::path_identity(output.string());
-  if (written == api::path_identity(input.string()))
-    return fmt::format("output '{}' would overwrite its input", api::printable(options.output));
-  for (const std::string& uri : asset.external_uris) {
-    if (written == api::path_identity((input.parent_path() / uri).string()))
-      return fmt::format("output '{}' would overwrite '{}', a file the asset names",
-                         api::printable(options.output), api::echoed(uri, 128));
-  }
-  const auto folder = [](const fs::path& path) {
-    return api::path_identity(
-        (path.parent_path().empty() ? fs::path(".") : path.parent_path()).string());
-  };
-  if (!asset.external_uris.empty() && folder(output) != folder(input)) {
-    return fmt::format(
-        "output '{}' is not in the folder of '{}', whose asset names {} file(s) beside it "
-        "('{}'...): they would not resolve from there",
-        api::printable(options.output), api::printable(options.input), asset.external_uris.size(),
-        api::echoed(asset.external_uris.front(), 128));
-  }
-  return {};
 }
 
 int run_gltf(const GltfOptions& options) {
@@ -86,18 +57,16 @@ int run_gltf(const GltfOptions& options) {
     return kExitInputError;
   }
   // Every material carries the asset's notes; each compile adds its own after them.
-  const std::size_t asset_notes = asset.materials.front().material().diagnostics().size();
-  print_diagnostics(asset.materials.front().material().diagnostics());
+  const std::size_t asset_notes = asset.notes.size();
+  print_diagnostics(asset.notes);
   for (const api::CompiledMaterial& material : asset.materials)
     print_diagnostics(material.diagnostics(), asset_notes);
-  if (const std::string problem = output_problem(options, asset); !problem.empty()) {
-    fmt::print(stderr, "matc gltf: error: {}\n", problem);
-    return kExitInputError;
-  }
+  api::GltfFilesCopied copied;
   try {
-    const fs::path output(options.output);
-    if (!output.parent_path().empty()) fs::create_directories(output.parent_path());
-    api::write_file(output.string(), asset.bytes);
+    copied = api::write_gltf(asset, options.input, options.output);
+  } catch (const std::invalid_argument& problem) {
+    fmt::print(stderr, "matc gltf: error: {}\n", problem.what());
+    return kExitInputError;
   } catch (const std::exception& error) {
     fmt::print(stderr, "matc gltf: error: cannot write '{}': {}\n", api::printable(options.output),
                api::printable(error.what()));
@@ -107,9 +76,17 @@ int run_gltf(const GltfOptions& options) {
     std::string names;
     for (const api::CompiledMaterial& material : asset.materials)
       names += (names.empty() ? "" : ", ") + material.name();
-    fmt::print("matc gltf: {}: {} metal(s) with MATC_materials_fresnel ({}; basis {})\n",
-               api::printable(options.output), asset.materials.size(), names,
-               options.compile.basis);
+    if (asset.materials.empty()) {
+      fmt::print("matc gltf: {}: no metal, written unchanged\n", api::printable(options.output));
+    } else {
+      fmt::print("matc gltf: {}: {} metal(s) with MATC_materials_fresnel ({}; basis {})\n",
+                 api::printable(options.output), asset.materials.size(), names,
+                 options.compile.basis);
+    }
+    const std::size_t beside = copied.written.size() + copied.unchanged.size();
+    if (beside > 0)
+      fmt::print("matc gltf: {} file(s) the asset names copied beside it ({} unchanged)\n", beside,
+                 copied.unchanged.size());
   }
   return kExitSuccess;
 }
@@ -125,8 +102,8 @@ Command register_gltf(CLI::App& app) {
   command->add_option("asset", options->input, "The glTF asset (.gltf or .glb)")->required();
   command
       ->add_option("-o,--output", options->output,
-                   "The asset written (.glb for a .glb, .gltf for a .gltf; a .gltf that names "
-                   "files beside it goes into its own folder)")
+                   "The asset written (.glb for a .glb, .gltf for a .gltf; the files a .gltf "
+                   "names beside it are copied beside the output when it is in another folder)")
       ->required();
   add_name_option(*command, "--basis", options->compile.basis, "basis", kBasisHelp);
   add_color_name_options(*command, options->compile);

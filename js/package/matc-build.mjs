@@ -509,9 +509,9 @@ export function gltfMetals({ matc = null, build, compile = {}, json, warn, note 
       const extension = written.materials[0].extensions[kGltfFresnelExtension];
       return withSource(index, await build.loadMaterial(compiled), "compiled", extension);
     } catch (error) {
-      // Not a metal: the engine's material stays, silently. Anything else (a value matc refuses,
-      // options that do not fit the build) is said.
-      if (!/holds no metal/.test(error.message)) warn(index, error.message);
+      // A value matc refuses, options that do not fit the build. (Not a metal compiles to no
+      // material: the engine's material stays, silently.)
+      warn(index, error.message);
       return null;
     }
   };

@@ -7,13 +7,15 @@
 //   - glTF-Transform reads the output: the same materials, factors, texture bytes and geometry;
 //   - each extension object passes docs/gltf/MATC_materials_fresnel.schema.json (Ajv), and its
 //     coefficients (and coat) equal those `matc -o` writes into <name>.json for the same asset;
-//   - a second run over the output gives the same bytes; outputs that would overwrite the input,
-//     leave a .gltf's buffers behind or change the container are refused, nothing written.
+//   - a second run over the output gives the same bytes; a .gltf written into another folder has
+//     the files it names copied beside it (validated there); an asset without a metal is written
+//     unchanged (exit 0); outputs that would overwrite the input or change the container are
+//     refused, nothing written.
 //   node check-gltf-out.mjs MATC SCHEMA
 import { spawnSync } from "node:child_process";
-import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
-import { join } from "node:path";
+import { dirname, join } from "node:path";
 import { Logger, NodeIO } from "@gltf-transform/core";
 import { KHRONOS_EXTENSIONS } from "@gltf-transform/extensions";
 import Ajv from "ajv";
@@ -35,7 +37,7 @@ function glbParts(bytes) {
 }
 
 // The glTF-Validator's report of the asset at `path` (external resources beside it).
-async function validated(path, dir) {
+async function validated(path, dir = dirname(path)) {
   const bytes = new Uint8Array(readFileSync(path));
   return validator.validateBytes(bytes, {
     uri: path, maxIssues: 1000,
@@ -128,14 +130,23 @@ try {
   mkdirSync(join(dir, "out"));
   const carOut = join(dir, "out", "car.glb");
   const trimOut = join(dir, "trim_matc.gltf");
+  // Into another folder: the files the .gltf names are copied beside it.
+  const trimElsewhere = join(dir, "out", "nested", "trim.gltf");
   run(matc, ["gltf", "-q", car, "-o", carOut]);
   run(matc, ["gltf", "-q", trim, "-o", trimOut]);
+  run(matc, ["gltf", "-q", trim, "-o", trimElsewhere]);
+  const named = JSON.parse(readFileSync(trim, "utf8")).buffers.map((b) => decodeURIComponent(b.uri));
+  check(named.length > 0 && named.every((file) => Buffer.compare(readFileSync(join(dir, file)),
+                                                                 readFileSync(join(dir, "out", "nested", file))) === 0),
+        `${trimElsewhere}: the files ${named} are not copied beside it byte for byte`);
+  check(readdirSync(join(dir, "out", "nested")).sort().join() === ["trim.gltf", ...named].sort().join(),
+        `${trimElsewhere}: beside it ${readdirSync(join(dir, "out", "nested"))}`);
 
   let metals = 0;
-  for (const [input, output, binary] of [[car, carOut, true], [trim, trimOut, false]]) {
+  for (const [input, output, binary] of [[car, carOut, true], [trim, trimOut, false], [trim, trimElsewhere, false]]) {
     const inBytes = new Uint8Array(readFileSync(input)), outBytes = new Uint8Array(readFileSync(output));
     // The validator: no error; its messages those of the input plus one for the vendor extension.
-    const [before, after] = [await validated(input, dir), await validated(output, dir)];
+    const [before, after] = [await validated(input), await validated(output)];
     check(after.issues.numErrors === 0, `${output}: glTF-Validator errors: ${messages(after).join("\n")}`);
     const added = messages(after).filter((m) => !messages(before).includes(m));
     check(added.length === 1 && added[0].startsWith("UNSUPPORTED_EXTENSION") && added[0].includes(kExtension) &&
@@ -156,8 +167,17 @@ try {
     run(matc, ["gltf", "-q", output, "-o", again]);
     check(Buffer.compare(readFileSync(again), outBytes) === 0, `${output}: a second run changed the bytes`);
   }
-  check(metals === 6, `${metals} metals carry the extension (car: paint, chrome, foil, textured trim; trim: 2)`);
+  check(metals === 8, `${metals} metals carry the extension (car: paint, chrome, foil, textured trim; trim: 2, twice)`);
   check(perPixelMetals === 1, `${perPixelMetals} metals carry zeroF0Coefficients (the textured trim)`);
+
+  // An asset without a metal goes through a pipeline: exit 0, a note, the bytes as they were.
+  const plastic = join(dir, "plastic.gltf");
+  writeFileSync(plastic, JSON.stringify({ asset: { version: "2.0" }, materials: [
+    { name: "Rubber", pbrMetallicRoughness: { metallicFactor: 0 } }] }));
+  const plain = spawnSync(matc, ["gltf", plastic, "-o", join(dir, "out", "plastic.gltf")], { encoding: "utf8" });
+  check(plain.status === 0 && plain.stderr.includes("holds no metal") && plain.stdout.includes("written unchanged") &&
+        Buffer.compare(readFileSync(plastic), readFileSync(join(dir, "out", "plastic.gltf"))) === 0,
+        `matc gltf of an asset without a metal: exit ${plain.status}, ${plain.stdout}${plain.stderr}`);
 
   // Refusals: nothing written.
   const refused = (args, status, phrase) => {
@@ -166,10 +186,16 @@ try {
           `matc gltf ${args.join(" ")}: exit ${result.status}, ${result.stderr}`);
   };
   refused([car, "-o", car], 1, "would overwrite its input");
-  refused([trim, "-o", join(dir, "out", "trim.gltf")], 1, "would not resolve from there");
+  // A file of the same name with other bytes where the buffer would be copied: another asset's,
+  // maybe; never replaced.
+  mkdirSync(join(dir, "sub"));
+  writeFileSync(join(dir, "sub", named[0]), "the user's");
+  refused([trim, "-o", join(dir, "sub", "trim.gltf")], 1, "other bytes");
   refused([car, "-o", join(dir, "out", "car.gltf")], 2, "an output ending in .glb");
-  check(!existsSync(join(dir, "out", "trim.gltf")) && !existsSync(join(dir, "out", "car.gltf")), "a refused run wrote its output");
-  console.log(`matc gltf: ${metals} metals written into 2 glTF-Transform assets (.glb, .gltf beside its buffer); ` +
+  check(!existsSync(join(dir, "sub", "trim.gltf")) && !existsSync(join(dir, "out", "car.gltf")) &&
+        readFileSync(join(dir, "sub", named[0]), "utf8") === "the user's", "a refused run wrote its output");
+  console.log(`matc gltf: ${metals} metals written into 3 glTF-Transform assets (.glb, .gltf beside its buffer and in ` +
+              `another folder with its buffer copied); an asset without a metal written unchanged; ` +
               `glTF-Validator: no errors, only the vendor extension's information added; every other byte ` +
               `carried; glTF-Transform reads the same materials, textures and geometry; a second run gives the same bytes`);
 } finally {

@@ -63,8 +63,9 @@ def test_refusals_are_the_clis(tmp_path):
     [diagnostic] = refused.value.errors
     assert (diagnostic.line, diagnostic.column, diagnostic.field) == (1, 63, "materials[0].name")
     assert "given twice" in diagnostic.message
-    with pytest.raises(matc.MaterialError, match="holds no metal"):
-        matc.compile_gltf(BAD_INPUTS / "gltf_no_metal.gltf")
+    # An asset without a metal is no refusal: its bytes back, no material.
+    plain = matc.compile_gltf(BAD_INPUTS / "gltf_no_metal.gltf")
+    assert plain.materials == [] and plain.bytes == (BAD_INPUTS / "gltf_no_metal.gltf").read_bytes()
     with pytest.raises(matc.MaterialError, match="cannot read"):
         matc.compile_gltf(tmp_path / "missing.glb")
     with pytest.raises(ValueError, match="names no glTF asset"):

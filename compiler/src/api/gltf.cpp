@@ -38,6 +38,7 @@ GltfAsset compile_imported(std::string_view bytes, const std::string& path,
   throw_if_errors(imported.diagnostics);
   const std::vector<Diagnostic> notes = public_diagnostics(imported.diagnostics);
   GltfAsset asset;
+  asset.notes = notes;
   std::map<std::size_t, nlohmann::ordered_json> extensions;
   // The coefficients at F0 = 0 of Schlick's curve, for the textured metals (the same for each).
   std::optional<CompiledMaterial> zero_f0;

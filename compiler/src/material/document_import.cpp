@@ -89,4 +89,31 @@ std::string DocumentNames::claim(const std::string& document_name, const SourceL
   return name;
 }
 
+std::string DocumentNames::claim_unique(const std::string& document_name,
+                                        const std::set<std::string>& reserved,
+                                        const SourceLocation& location, const std::string& field,
+                                        const std::string& description, Diagnostics& diagnostics) {
+  const std::string name = sanitized_material_name(document_name);
+  const auto taken = taken_.find(material_name_key(name));
+  if (taken == taken_.end()) return claim(document_name, location, field, description, diagnostics);
+  // `<stem>_<n>` within the length limit, never with "__" (the stem loses a trailing '_').
+  std::string stem = name;
+  for (int n = 2;; ++n) {
+    const std::string suffix = fmt::format("_{}", n);
+    stem.resize(std::min(stem.size(), kMaxMaterialNameLength - suffix.size()));
+    while (!stem.empty() && stem.back() == '_')
+      stem.pop_back();
+    const std::string derived = stem + suffix;
+    const std::string key = material_name_key(derived);
+    if (taken_.contains(key) || reserved.contains(key)) continue;
+    diagnostics.note(location, field,
+                     fmt::format("imported as '{}': '{}' is '{}' ({}) ignoring case", derived, name,
+                                 taken->second.name, taken->second.description),
+                     "material names that differ ignoring case (they name files); the glTF "
+                     "loaders match materials by index");
+    taken_.emplace(key, First{derived, description});
+    return derived;
+  }
+}
+
 }  // namespace matc

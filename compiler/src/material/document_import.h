@@ -6,6 +6,7 @@
 
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -75,6 +76,12 @@ class DocumentNames {
   std::string claim(const std::string& document_name, const SourceLocation& location,
                     const std::string& field, const std::string& description,
                     Diagnostics& diagnostics);
+  // The same for a format whose names need not be unique (glTF): a name taken already becomes
+  // `<name>_<n>`, with the smallest n from 2 whose name is free and none of `reserved` (the keys
+  // of names the document's later materials hold), with a note saying so.
+  std::string claim_unique(const std::string& document_name, const std::set<std::string>& reserved,
+                           const SourceLocation& location, const std::string& field,
+                           const std::string& description, Diagnostics& diagnostics);
 
  private:
   struct First {

@@ -20,7 +20,8 @@ namespace fs = std::filesystem;
 
 constexpr std::string_view kAllowedAsset = "a glTF 2.0 asset (docs/gltf.md)";
 
-// %XX sequences of a URI decoded (the file name it stands for).
+}  // namespace
+
 std::string percent_decoded(std::string_view uri) {
   std::string out;
   for (std::size_t i = 0; i < uri.size(); ++i) {
@@ -39,6 +40,8 @@ std::string percent_decoded(std::string_view uri) {
   }
   return out;
 }
+
+namespace {
 
 // Why a file URI (decoded) may not be read: absolute, with a scheme, or leaving the asset's
 // folder. Empty when it may.

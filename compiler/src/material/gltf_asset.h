@@ -15,6 +15,9 @@
 
 namespace matc {
 
+// A URI's %XX sequences decoded: the relative file name it stands for.
+std::string percent_decoded(std::string_view uri);
+
 // The asset `bytes` named `path` (".glb": binary, else JSON), its external buffers read through
 // `loader` from the asset's folder. Empty when `diagnostics` got an error.
 std::optional<tinygltf::Model> read_gltf_asset(std::string_view bytes, const std::string& path,

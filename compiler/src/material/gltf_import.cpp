@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <filesystem>
+#include <set>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "base/echoed_text.h"
 #include "gltf_asset.h"
+#include "material/materialx_import.h"
 
 namespace matc {
 
@@ -23,10 +25,10 @@ constexpr std::string_view kEdgeColor = "EXT_materials_specular_edge_color";
 
 // Material extensions that change a metal's reflectance in ways matc does not carry (named in
 // a note when present), and those that make the material something other than a metal.
-constexpr std::array<std::string_view, 7> kNotCarriedExtensions{
+constexpr std::array<std::string_view, 8> kNotCarriedExtensions{
     "KHR_materials_iridescence",  "KHR_materials_anisotropy", "KHR_materials_sheen",
     "KHR_materials_transmission", "KHR_materials_volume",     "KHR_materials_diffuse_transmission",
-    "KHR_materials_dispersion"};
+    "KHR_materials_dispersion",   "KHR_materials_coat"};
 constexpr std::array<std::string_view, 2> kNotMetalExtensions{"KHR_materials_pbrSpecularGlossiness",
                                                               "KHR_materials_unlit"};
 
@@ -45,21 +47,32 @@ class Importer {
       : model_(model), path_(path), result_(result) {}
 
   void run() {
+    // glTF's names need not be unique: a clash takes a derived name, never one a later material
+    // holds itself.
+    for (std::size_t i = 0; i < model_.materials.size(); ++i)
+      names_held_.insert(material_name_key(sanitized_material_name(document_name(i))));
     for (std::size_t i = 0; i < model_.materials.size(); ++i)
       material(i);
+    // An asset without a metal is valid, and a pipeline sees every asset: nothing to compile.
     if (result_.materials.empty() && !result_.diagnostics.has_errors()) {
-      result_.diagnostics.error(
+      result_.diagnostics.note(
           {path_, 0, 0}, "",
           model_.materials.empty()
-              ? std::string("holds no materials")
-              : fmt::format("holds no metal (none of its {} materials has metallicFactor above 0)",
-                            model_.materials.size()),
-          "a glTF asset with at least one metallic material");
+              ? std::string("holds no materials: nothing for matc to compile")
+              : fmt::format("holds no metal (none of its {} materials has metallicFactor above "
+                            "0): nothing for matc to compile",
+                            model_.materials.size()));
     }
     if (result_.diagnostics.has_errors()) result_.materials.clear();
   }
 
  private:
+  // The material's name, or `material_<index>` when it has none.
+  std::string document_name(std::size_t index) const {
+    const std::string& name = model_.materials[index].name;
+    return name.empty() ? fmt::format("material_{}", index) : name;
+  }
+
   // `materials[3] "CarPaint"` (the name escaped when printed), or `materials[3]`.
   std::string field_of(std::size_t index) const {
     const std::string& name = model_.materials[index].name;
@@ -185,10 +198,8 @@ class Importer {
                               "lists what is left out and why)",
                               list));
     }
-    const std::string document_name =
-        source.name.empty() ? fmt::format("material_{}", index) : source.name;
-    const std::string name =
-        names_.claim(document_name, where(), field, field, result_.diagnostics);
+    const std::string name = names_.claim_unique(document_name(index), names_held_, where(), field,
+                                                 field, result_.diagnostics);
     if (name.empty()) return;
     material_json["name"] = name;
     const std::size_t added = result_.materials.size();
@@ -277,6 +288,7 @@ class Importer {
   const std::string& path_;
   DocumentImport& result_;
   DocumentNames names_;
+  std::set<std::string> names_held_;  // every material's own name (its key)
 };
 
 }  // namespace

@@ -159,6 +159,58 @@ TEST(PublicApi, FilesAnInputNamesComeFromMemoryWhenGiven) {
   EXPECT_EQ(asset.external_uris, std::vector<std::string>{"b.bin"});
 }
 
+namespace {
+std::string file_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+void put_file(const fs::path& path, const std::string& bytes) {
+  fs::create_directories(path.parent_path());
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+}  // namespace
+
+// write_gltf: a .gltf written into another folder takes the files it names along (decoded URIs,
+// subfolders, each once); over an input, or over another file of a copy's name, it writes nothing.
+TEST(PublicApi, WriteGltfCopiesTheFilesItNamesBesideTheOutput) {
+  const fs::path folder = fs::temp_directory_path() / "matc_api_write_gltf_test";
+  fs::remove_all(folder);
+  put_file(folder / "in" / "car.gltf",
+           R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 4, "uri": "data/b%20x.bin"},
+               {"byteLength": 4, "uri": "data/b x.bin"}], "images": [{"uri": "t.png"}, {"uri": "data/t.png"}],
+               "materials": [{"name": "steel"}]})");
+  put_file(folder / "in" / "data" / "b x.bin", "abcd");
+  put_file(folder / "in" / "t.png", "png!");
+  put_file(folder / "in" / "data" / "t.png", "png2");
+  const std::string input = (folder / "in" / "car.gltf").string();
+  const matc::api::GltfAsset asset = matc::api::compile_gltf_file(input);
+  const matc::api::GltfFilesCopied copied =
+      matc::api::write_gltf(asset, input, (folder / "out" / "car.gltf").string());
+  EXPECT_EQ(copied.written, (std::vector<std::string>{"data/b x.bin", "t.png", "data/t.png"}));
+  EXPECT_EQ(file_text(folder / "out" / "data" / "b x.bin"), "abcd");
+  EXPECT_EQ(file_text(folder / "out" / "t.png"), "png!");
+  EXPECT_EQ(file_text(folder / "out" / "car.gltf"), asset.bytes);
+  const auto again = matc::api::write_gltf(asset, input, (folder / "out" / "car.gltf").string());
+  EXPECT_TRUE(again.written.empty());
+  EXPECT_EQ(again.unchanged.size(), 3u);
+  // In its own folder nothing is copied.
+  EXPECT_TRUE(matc::api::write_gltf(asset, input, (folder / "in" / "car_matc.gltf").string())
+                  .written.empty());
+  // Refused, nothing written: over the input; a copy over a file the asset names (t.png over
+  // data/t.png from the subfolder); over another file with other bytes.
+  EXPECT_THROW(matc::api::write_gltf(asset, input, input), std::invalid_argument);
+  EXPECT_THROW(matc::api::write_gltf(asset, input, (folder / "in" / "data" / "x.gltf").string()),
+               std::invalid_argument);  // t.png would be copied over data/t.png
+  put_file(folder / "other" / "t.png", "someone else's");
+  EXPECT_THROW(matc::api::write_gltf(asset, input, (folder / "other" / "car.gltf").string()),
+               std::invalid_argument);
+  EXPECT_EQ(file_text(folder / "other" / "t.png"), "someone else's");
+  EXPECT_FALSE(fs::exists(folder / "other" / "car.gltf"));
+  EXPECT_FALSE(fs::exists(folder / "other" / "data"));
+  EXPECT_FALSE(fs::exists(folder / "in" / "data" / "x.gltf"));
+  fs::remove_all(folder);
+}
+
 TEST(PublicApi, BatchRefusesBadOptionsBeforeWriting) {
   const std::vector<matc::api::BatchSource> sources = {
       matc::api::BatchSource::file(std::string(MATC_EXAMPLES_DIR) + "/gold.json")};

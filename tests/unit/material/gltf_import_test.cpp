@@ -122,24 +122,48 @@ TEST(GltfImport, WhatIsNotCarriedGetsANoteNamingTheMaterialAndTheProperty) {
   EXPECT_NE(text.find("materials[1] \"Rubber\": not imported: not a metal"), std::string::npos);
 }
 
-TEST(GltfImport, AnAssetWithoutAMetalIsAnError) {
+// A pipeline sees every asset: one without a metal is valid, with nothing to compile.
+TEST(GltfImport, AnAssetWithoutAMetalImportsNothingWithANote) {
   const auto imported =
       import_gltf(asset(R"({"pbrMetallicRoughness": {"metallicFactor": 0}})"), "plastic.gltf");
   EXPECT_TRUE(imported.materials.empty());
+  EXPECT_FALSE(imported.diagnostics.has_errors());
   EXPECT_NE(all_diagnostics(imported).find(
-                "plastic.gltf: error: holds no metal (none of its 1 materials has metallicFactor "
-                "above 0)"),
-            std::string::npos);
-}
-
-TEST(GltfImport, NamesAreSanitisedAndMustStayDistinct) {
-  const auto imported = import_gltf(asset(R"({"name": "Trim A"}, {"name": "trim-a"})"), "a.gltf");
-  EXPECT_TRUE(imported.materials.empty());
-  EXPECT_NE(all_diagnostics(imported).find(
-                "materials[1] \"trim-a\": becomes 'trim_a', which is 'Trim_A' (materials[0] "
-                "\"Trim A\") ignoring case"),
+                "plastic.gltf: note: holds no metal (none of its 1 materials has metallicFactor "
+                "above 0): nothing for matc to compile"),
             std::string::npos)
       << all_diagnostics(imported);
+  const auto empty = import_gltf(R"({"asset": {"version": "2.0"}})", "empty.gltf");
+  EXPECT_TRUE(empty.materials.empty());
+  EXPECT_FALSE(empty.diagnostics.has_errors()) << all_diagnostics(empty);
+}
+
+// glTF's names need not be unique (they name files in matc): a clash ignoring case, after
+// sanitising, or with an unnamed material's `material_<index>` takes a derived name with a note,
+// never one a later material holds itself, never with "__", at most 64 characters.
+TEST(GltfImport, CollidingNamesTakeDerivedUniqueNames) {
+  const std::string long_name(70, 'x');
+  const auto imported = import_gltf(
+      asset(R"({"name": "Gold"}, {"name": "gold"}, {"name": "gold_2"}, {"name": "Metal 1"},
+               {"name": "Metal_1"}, {}, {"name": "material_5"}, {"name": "Trim_"}, {"name": "trim_"},
+               {"name": ")" +
+            long_name + R"("}, {"name": ")" + long_name + R"(y"}, {"name": "Gold"})"),
+      "a.gltf");
+  ASSERT_FALSE(imported.diagnostics.has_errors()) << all_diagnostics(imported);
+  std::vector<std::string> names;
+  for (const ImportedMaterial& material : imported.materials)
+    names.push_back(material.material.name);
+  const std::string x64(64, 'x');
+  EXPECT_EQ(names, (std::vector<std::string>{"Gold", "gold_3", "gold_2", "Metal_1", "Metal_1_2",
+                                             "material_5", "material_5_2", "Trim_", "trim_2", x64,
+                                             x64.substr(0, 62) + "_2", "Gold_4"}));
+  EXPECT_NE(all_diagnostics(imported).find(
+                "a.gltf: note: materials[1] \"gold\": imported as 'gold_3': 'gold' is 'Gold' "
+                "(materials[0] \"Gold\") ignoring case"),
+            std::string::npos)
+      << all_diagnostics(imported);
+  for (std::size_t i = 0; i < imported.materials.size(); ++i)
+    EXPECT_EQ(imported.materials[i].document_index, i);
 }
 
 TEST(GltfImport, ValuesOutsideGltfsOrMatcsRangesAreErrors) {
