@@ -27,12 +27,16 @@ inline void require_refused_if_nul(std::string_view text, bool accepted) {
   if (accepted && text.find('\0') != std::string_view::npos) __builtin_trap();
 }
 
-// What a document importer (MaterialX, glTF) returns: an error exactly when it imports nothing,
+// What a document importer (MaterialX, glTF) returns: no material beside an error, and an error
+// when it imports nothing unless `empty_is_valid` (glTF: an asset without a metal is a note),
 // every diagnostic printable, every material one the parser accepts from its own JSON (`path`
 // names it), and the first one compiled without a NaN (compiling is slow next to reading: one
 // per input covers the paths).
-inline void require_sound_import(const DocumentImport& imported, const std::string& path) {
-  if (imported.materials.empty() != imported.diagnostics.has_errors()) __builtin_trap();
+inline void require_sound_import(const DocumentImport& imported, const std::string& path,
+                                 bool empty_is_valid = false) {
+  if (!imported.materials.empty() && imported.diagnostics.has_errors()) __builtin_trap();
+  if (!empty_is_valid && imported.materials.empty() && !imported.diagnostics.has_errors())
+    __builtin_trap();
   require_printable_diagnostics(imported.diagnostics);
   for (const ImportedMaterial& material : imported.materials) {
     const ParseResult reparsed = parse_material(material.json, path);
