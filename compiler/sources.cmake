@@ -88,6 +88,7 @@ set(MATC_NATIVE_SOURCES
   src/api/bake.cpp
   src/api/evaluation.cpp
   src/api/coated_evaluation.cpp
+  src/api/metal_rough_evaluation.cpp
   src/basis/training_set.cpp
   src/basis/basis_polynomial_fit.cpp
   src/basis/basis_fit.cpp

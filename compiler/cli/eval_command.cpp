@@ -26,6 +26,7 @@ struct EvalOptions {
   std::string edge_tint;
   std::string quad_light;     // "x,y,z;x,y,z;x,y,z;x,y,z" in the shading frame: area-light radiance
   bool no_reference = false;  // --no-reference: no Monte-Carlo references, the shaders' values
+  double metalness = 0;       // --metalness, when given: glTF's metal-rough mix
   api::EvaluationOptions evaluation;
 };
 
@@ -57,6 +58,21 @@ bool read_quad_light(EvalOptions& options) {
   }
 }
 
+// Prints what `evaluate` returns; an option the library refuses (a NaN that CLI11's ranges let
+// through, say) is a usage error naming it.
+template <typename Evaluate>
+int print_evaluation(const Evaluate& evaluate) {
+  std::string text;
+  try {
+    text = evaluate();
+  } catch (const std::invalid_argument& error) {
+    fmt::print(stderr, "matc eval: error: {}\n", api::printable(error.what()));
+    return kExitUsageError;
+  }
+  fmt::print("{}", text);
+  return kExitSuccess;
+}
+
 // `matc eval --reflectivity R --edge-tint G`: the coefficient-table path beside the compile.
 int run_eval_artistic(EvalOptions& options) {
   if (!options.file.empty()) {
@@ -78,8 +94,14 @@ int run_eval_artistic(EvalOptions& options) {
     return kExitInputError;
   }
   if (!read_quad_light(options)) return kExitInputError;
-  fmt::print("{}", api::evaluate_artistic(reflectivity, edge_tint, options.evaluation));
-  return kExitSuccess;
+  if (options.evaluation.metalness) {
+    fmt::print(stderr,
+               "matc eval: error: --metalness mixes a material's metal; the coefficient-table "
+               "path (--reflectivity, --edge-tint) has none\n");
+    return kExitUsageError;
+  }
+  return print_evaluation(
+      [&] { return api::evaluate_artistic(reflectivity, edge_tint, options.evaluation); });
 }
 
 // The material to evaluate: the file's only one, or the document's material named --material.
@@ -133,8 +155,14 @@ int run_eval(EvalOptions& options) {
   if (!read_quad_light(options)) return kExitInputError;
   const std::optional<api::Material> material = chosen_material(options);
   if (!material) return kExitInputError;
-  fmt::print("{}", api::evaluate(*material, evaluation));
-  return kExitSuccess;
+  if (evaluation.metalness && material->coated()) {
+    fmt::print(stderr,
+               "matc eval: error: --metalness: {} is coated; the metal-rough mix is evaluated for "
+               "bare metals (docs/gltf.md)\n",
+               material->name());
+    return kExitUsageError;
+  }
+  return print_evaluation([&] { return api::evaluate(*material, evaluation); });
 }
 
 }  // namespace
@@ -187,9 +215,21 @@ Command register_eval(CLI::App& app) {
                    "Monte-Carlo sample pairs of the --quad-light reference")
       ->capture_default_str()
       ->check(CLI::Range(std::size_t{16}, std::size_t{1} << 26));
+  CLI::Option* metalness_option =
+      command
+          ->add_option("--metalness", options->metalness,
+                       "glTF's metal-rough model (docs/gltf.md): F and Fbar of the metal mixed "
+                       "by this metalness with glTF's dielectric (F0 0.04, F90 1), as "
+                       "matc_metal_rough computes them")
+          ->check(CLI::Range(0.0, 1.0));
   add_evaluation_options(*command, options->evaluation);
 
-  return {command, [options] { return run_eval(*options); }, true};
+  return {command,
+          [options, metalness_option] {
+            if (metalness_option->count() > 0) options->evaluation.metalness = options->metalness;
+            return run_eval(*options);
+          },
+          true};
 }
 
 }  // namespace matc::cli

@@ -56,6 +56,20 @@ vec3 matc_energy_compensation(MatcFresnelCoefficients c, vec4 bbar) {
   float albedo = max(bbar.x, 1e-4);  // guards the NdotV = 0 column
   return vec3(1.0) + f0 * ((1.0 - albedo) / albedo);
 }
+// glTF's metal-rough model per pixel (docs/gltf.md): glTF's BRDF mixes its dielectric and metal
+// BRDFs by metalness (metallicFactor times the metallic-roughness texture's blue channel); matc's
+// Fresnel replaces the metal's only. `dielectric` and `metal` are the same term of each lobe (F for
+// a light, each with its own multiple-scattering scale; the preintegrated F for image light).
+vec3 matc_metal_rough(vec3 dielectric, vec3 metal, float metalness) {
+  return mix(dielectric, metal, clamp(metalness, 0.0, 1.0));
+}
+// glTF's dielectric Fresnel, Schlick's curve from f0 to f90 (f0 0.04 and f90 1 at glTF's index
+// 1.5; KHR_materials_ior and KHR_materials_specular change both), for an engine without its own.
+vec3 matc_dielectric_fresnel(vec3 f0, vec3 f90, float VdotH) {
+  float m = clamp(1.0 - VdotH, 0.0, 1.0);
+  float m2 = m * m;
+  return f0 + (f90 - f0) * (m2 * m2 * m);
+}
 {{coefficient_table}}
 {{area_lights}}
 {{analytic_lut}}

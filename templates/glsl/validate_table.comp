@@ -5,7 +5,8 @@
 // coefficients, F(mu) from the (n, k) ones through matc_artistic_from_ior, F(mu) from
 // matc_coefficients_from_baked with F0 = r, c_2 = g - 0.5, c_3 = k / 8 - 0.5, and F(mu) from
 // matc_coefficients_from_f0 with F0 = r on the same rows at F0 = 0, and F(mu) from an F0 table
-// at F0 = r, in air and under a coat, whose entry i of channel c is matc_check_f0_entry(i, c).
+// at F0 = r, in air and under a coat, whose entry i of channel c is matc_check_f0_entry(i, c),
+// and glTF's metal-rough mix of the (r, g) metal with a dielectric (matc_metal_rough).
 {{library}}
 layout(local_size_x = 64) in;
 layout(std430, set = 0, binding = 0) readonly buffer MatcQueries { vec4 matc_queries[]; };
@@ -46,18 +47,23 @@ void main() {
       sampler2D(matc_coefficient_table, matc_linear_sampler), ior_r, ior_g);
   MatcFresnelCoefficients baked =
       matc_coefficients_from_baked(r, g - 0.5, k.xyz * 0.125 - 0.5);
-  matc_results[7u * i] = vec4(matc_fresnel(c, reflectivity_mu.w), 1.0);
-  matc_results[7u * i + 1u] = vec4(matc_fresnel_preintegrated(c, bbar), 1.0);
-  matc_results[7u * i + 2u] = vec4(matc_fresnel(from_ior, reflectivity_mu.w), 1.0);
-  matc_results[7u * i + 3u] = vec4(matc_fresnel(baked, reflectivity_mu.w), 1.0);
+  matc_results[8u * i] = vec4(matc_fresnel(c, reflectivity_mu.w), 1.0);
+  matc_results[8u * i + 1u] = vec4(matc_fresnel_preintegrated(c, bbar), 1.0);
+  matc_results[8u * i + 2u] = vec4(matc_fresnel(from_ior, reflectivity_mu.w), 1.0);
+  matc_results[8u * i + 3u] = vec4(matc_fresnel(baked, reflectivity_mu.w), 1.0);
   // Per pixel from F0 = r, on rows at F0 = 0 of (0, 1, g - 0.5, k / 8 - 0.5).
   MatcFresnelCoefficients from_f0 = matc_coefficients_from_f0(
       matc_coefficients_from_baked(vec3(0.0), g - 0.5, k.xyz * 0.125 - 0.5), r);
-  matc_results[7u * i + 4u] = vec4(matc_fresnel(from_f0, reflectivity_mu.w), 1.0);
+  matc_results[8u * i + 4u] = vec4(matc_fresnel(from_f0, reflectivity_mu.w), 1.0);
   MatcFresnelCoefficients left = matc_check_f0_entries(r, 0, g, n_roughness.xyz, k.xyz);
   MatcFresnelCoefficients right = matc_check_f0_entries(r, 1, g, n_roughness.xyz, k.xyz);
   MatcFresnelCoefficients in_air = matc_coefficients_from_f0_entries(r, left, right);
   MatcFresnelCoefficients under_coat = matc_under_coat_from_f0_entries(r, left, right);
-  matc_results[7u * i + 5u] = vec4(matc_fresnel(in_air, reflectivity_mu.w), 1.0);
-  matc_results[7u * i + 6u] = vec4(matc_fresnel(under_coat, reflectivity_mu.w), 1.0);
+  matc_results[8u * i + 5u] = vec4(matc_fresnel(in_air, reflectivity_mu.w), 1.0);
+  matc_results[8u * i + 6u] = vec4(matc_fresnel(under_coat, reflectivity_mu.w), 1.0);
+  // glTF's metal-rough mix: the (r, g) metal with a dielectric of F0 g * 0.08 and F90 NdotV, by
+  // metalness = roughness.
+  vec3 dielectric = matc_dielectric_fresnel(g * 0.08, vec3(edge_tint_ndotv.w), reflectivity_mu.w);
+  matc_results[8u * i + 7u] = vec4(
+      matc_metal_rough(dielectric, matc_fresnel(c, reflectivity_mu.w), n_roughness.w), 1.0);
 }

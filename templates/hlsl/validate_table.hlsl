@@ -4,7 +4,8 @@
 // the (r, g) coefficients, F(mu) from the (n, k) ones through matc_artistic_from_ior, F(mu) from
 // matc_coefficients_from_baked with F0 = r, c_2 = g - 0.5, c_3 = k / 8 - 0.5, and F(mu) from
 // matc_coefficients_from_f0 with F0 = r on the same rows at F0 = 0, and F(mu) from an F0 table
-// at F0 = r, in air and under a coat, whose entry i of channel c is matc_check_f0_entry(i, c).
+// at F0 = r, in air and under a coat, whose entry i of channel c is matc_check_f0_entry(i, c),
+// and glTF's metal-rough mix of the (r, g) metal with a dielectric (matc_metal_rough).
 {{library}}
 [[vk::binding(0, 0)]] StructuredBuffer<float4> matc_queries : register(t0);
 [[vk::binding(1, 0)]] RWStructuredBuffer<float4> matc_results : register(u1);
@@ -46,18 +47,24 @@ void main(uint3 id : SV_DispatchThreadID) {
       MATC_COEFFICIENTS_FROM_TABLE(matc_coefficient_table, matc_linear_sampler, ior_r, ior_g);
   MatcFresnelCoefficients baked =
       matc_coefficients_from_baked(r, g - 0.5, k.xyz * 0.125 - 0.5);
-  matc_results[7 * i] = float4(matc_fresnel(c, reflectivity_mu.w), 1.0);
-  matc_results[7 * i + 1] = float4(matc_fresnel_preintegrated(c, bbar), 1.0);
-  matc_results[7 * i + 2] = float4(matc_fresnel(from_ior, reflectivity_mu.w), 1.0);
-  matc_results[7 * i + 3] = float4(matc_fresnel(baked, reflectivity_mu.w), 1.0);
+  matc_results[8 * i] = float4(matc_fresnel(c, reflectivity_mu.w), 1.0);
+  matc_results[8 * i + 1] = float4(matc_fresnel_preintegrated(c, bbar), 1.0);
+  matc_results[8 * i + 2] = float4(matc_fresnel(from_ior, reflectivity_mu.w), 1.0);
+  matc_results[8 * i + 3] = float4(matc_fresnel(baked, reflectivity_mu.w), 1.0);
   // Per pixel from F0 = r, on rows at F0 = 0 of (0, 1, g - 0.5, k / 8 - 0.5).
   MatcFresnelCoefficients from_f0 = matc_coefficients_from_f0(
       matc_coefficients_from_baked(float3(0.0, 0.0, 0.0), g - 0.5, k.xyz * 0.125 - 0.5), r);
-  matc_results[7 * i + 4] = float4(matc_fresnel(from_f0, reflectivity_mu.w), 1.0);
+  matc_results[8 * i + 4] = float4(matc_fresnel(from_f0, reflectivity_mu.w), 1.0);
   MatcFresnelCoefficients left = matc_check_f0_entries(r, 0, g, n_roughness.xyz, k.xyz);
   MatcFresnelCoefficients right = matc_check_f0_entries(r, 1, g, n_roughness.xyz, k.xyz);
   MatcFresnelCoefficients in_air = matc_coefficients_from_f0_entries(r, left, right);
   MatcFresnelCoefficients under_coat = matc_under_coat_from_f0_entries(r, left, right);
-  matc_results[7 * i + 5] = float4(matc_fresnel(in_air, reflectivity_mu.w), 1.0);
-  matc_results[7 * i + 6] = float4(matc_fresnel(under_coat, reflectivity_mu.w), 1.0);
+  matc_results[8 * i + 5] = float4(matc_fresnel(in_air, reflectivity_mu.w), 1.0);
+  matc_results[8 * i + 6] = float4(matc_fresnel(under_coat, reflectivity_mu.w), 1.0);
+  // glTF's metal-rough mix: the (r, g) metal with a dielectric of F0 g * 0.08 and F90 NdotV, by
+  // metalness = roughness.
+  float3 dielectric =
+      matc_dielectric_fresnel(g * 0.08, float3(1.0, 1.0, 1.0) * edge_tint_ndotv.w, reflectivity_mu.w);
+  matc_results[8 * i + 7] = float4(
+      matc_metal_rough(dielectric, matc_fresnel(c, reflectivity_mu.w), n_roughness.w), 1.0);
 }

@@ -56,6 +56,20 @@ fn matc_energy_compensation(c: MatcFresnelCoefficients, bbar: vec4f) -> vec3f {
   let albedo = max(bbar.x, 1e-4);  // guards the NdotV = 0 column
   return vec3f(1.0) + f0 * ((1.0 - albedo) / albedo);
 }
+// glTF's metal-rough model per pixel (docs/gltf.md): glTF's BRDF mixes its dielectric and metal
+// BRDFs by metalness (metallicFactor times the metallic-roughness texture's blue channel); matc's
+// Fresnel replaces the metal's only. `dielectric` and `metal` are the same term of each lobe (F for
+// a light, each with its own multiple-scattering scale; the preintegrated F for image light).
+fn matc_metal_rough(dielectric: vec3f, metal: vec3f, metalness: f32) -> vec3f {
+  return mix(dielectric, metal, clamp(metalness, 0.0, 1.0));
+}
+// glTF's dielectric Fresnel, Schlick's curve from f0 to f90 (f0 0.04 and f90 1 at glTF's index
+// 1.5; KHR_materials_ior and KHR_materials_specular change both), for an engine without its own.
+fn matc_dielectric_fresnel(f0: vec3f, f90: vec3f, VdotH: f32) -> vec3f {
+  let m = clamp(1.0 - VdotH, 0.0, 1.0);
+  let m2 = m * m;
+  return f0 + (f90 - f0) * (m2 * m2 * m);
+}
 {{coefficient_table}}
 {{area_lights}}
 {{analytic_lut}}

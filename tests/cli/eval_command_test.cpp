@@ -1,5 +1,7 @@
 // The matc binary end to end, `matc eval`: decomposed and exact Fresnel, Fbar from the table, its
 // bad inputs.
+#include <cmath>
+
 #include "matc_cli.h"
 
 namespace matc::cli_test {
@@ -99,6 +101,50 @@ TEST_F(MatcCli, EvalWithoutTheReferenceKeepsTheTablesFbar) {
 
 // A coated material: both lobes and their sum, for direct lights and from the table (what the web
 // engines' probe tests compare renders with, lobe by lobe), and the exact curve of each lobe.
+// --metalness: glTF's metal-rough mix with glTF's dielectric (F0 0.04, F90 1). At 0 it is the
+// dielectric, at 1 the metal, between them the linear mix; the dielectric's Fbar is Schlick's
+// split sum (at roughness 0, its F at NdotV). Refused for a coated metal, the coefficient-table
+// path, and outside [0, 1].
+TEST_F(MatcCli, EvalMixesTheMetalWithGltfsDielectricByMetalness) {
+  const std::string chromium = std::string(MATC_EXAMPLES_DIR) + "/chromium.json";
+  const auto eval = [&](const std::string& metalness) {
+    const CommandResult result =
+        run({"eval", chromium, "--mu", "0.1,0.5,1", "--ndotv", "0.3,1", "--roughness", "0,0.6",
+             "--no-reference", "--metalness", metalness});
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    return nlohmann::json::parse(result.out);
+  };
+  const auto none = eval("0"), full = eval("1"), quarter = eval("0.25");
+  for (const char* key : {"F", "Fbar"}) {
+    const std::string term = key;
+    for (std::size_t i = 0; i < full[term].size(); ++i) {
+      for (std::size_t c = 0; c < 3; ++c) {
+        const double metal = full[term][i][c], dielectric = none[term + "_dielectric"][i][c];
+        EXPECT_DOUBLE_EQ(full[term + "_metal_rough"][i][c].get<double>(), metal);
+        EXPECT_DOUBLE_EQ(none[term + "_metal_rough"][i][c].get<double>(), dielectric);
+        EXPECT_NEAR(quarter[term + "_metal_rough"][i][c].get<double>(),
+                    0.75 * dielectric + 0.25 * metal, 1e-15);
+      }
+    }
+  }
+  // Schlick's curve from 0.04 to 1, and its split sum at roughness 0 (a mirror: F at NdotV).
+  EXPECT_NEAR(none["F_dielectric"][0][0].get<double>(), 0.04 + 0.96 * std::pow(0.9, 5), 1e-15);
+  EXPECT_NEAR(none["F_dielectric"][2][1].get<double>(), 0.04, 1e-15);
+  EXPECT_NEAR(none["Fbar_dielectric"][0][2].get<double>(), 0.04 + 0.96 * std::pow(0.7, 5), 2e-3);
+  EXPECT_EQ(quarter["metalness"], 0.25);
+  EXPECT_EQ(run({"eval", chromium, "--mu", "0.5", "--metalness", "1.5"}).exit_code, 2);
+  EXPECT_EQ(run({"eval", chromium, "--mu", "0.5", "--metalness", "nan"}).exit_code, 2);
+  const CommandResult coated =
+      run({"eval", std::string(MATC_EXAMPLES_DIR) + "/copper_lacquered.json", "--mu", "0.5",
+           "--metalness", "0.5"});
+  EXPECT_EQ(coated.exit_code, 2);
+  EXPECT_NE(coated.err.find("is coated"), std::string::npos) << coated.err;
+  EXPECT_EQ(run({"eval", "--reflectivity", "0.5", "--edge-tint", "0.5", "--mu", "0.5",
+                 "--metalness", "0.5"})
+                .exit_code,
+            2);
+}
+
 TEST_F(MatcCli, EvalPrintsBothLobesOfACoatedMaterialAndTheirSum) {
   const CommandResult result =
       run({"eval", std::string(MATC_EXAMPLES_DIR) + "/copper_lacquered.json", "--mu", "0.3,0.9",

@@ -7,6 +7,7 @@
 // - textured metals: coefficients from the coefficient table (rg16float) for per-channel (r, g);
 // - an area light: gold under two quads (one crossing the horizon), with the LTC table
 //   (rgba32float, which needs the "float32-filterable" feature);
+// - glTF's metal-rough mix of gold with glTF's dielectric (matc_metal_rough);
 // and everything is compared with the CPU runtime (`matc eval`) at matc validate's tolerances.
 // examples/web/specular.wgsl (docs/shaders.md shows it) must give Fbar with energy compensation,
 // and the library with an embedded table (--embed-lut) must compile too.
@@ -222,6 +223,22 @@ try {
              { L: kPreintegratedTolerance, L_following: kPreintegratedTolerance });
     });
   }
+
+  // glTF's metal-rough mix (matc_metal_rough of glTF's dielectric, matc_dielectric_fresnel, and
+  // gold) against `matc eval --metalness`'s F_metal_rough at the queries' cosines.
+  await attempt("gold, metal-rough mix", async () => {
+    const kMetalness = 0.35;
+    const count = queries.flat.length / 4;
+    const mu = Array.from({ length: count }, (_, i) => queries.flat[4 * i]);
+    const expected = JSON.parse(run(matc, ["eval", join(materialsDir, "gold.json"), ...options,
+                                           "--mu", mu.join(","), "--metalness", String(kMetalness)]));
+    const values = await dispatch(cases.library + gold.snippet + perQueryKernel(
+      `  matc_results[i] = vec4f(matc_metal_rough(matc_dielectric_fresnel(vec3f(0.04), vec3f(1.0), query.x),
+                                             matc_fresnel(matc_coefficients_gold, query.x), ${kMetalness}), 1.0);`),
+                                  queries.flat, 1);
+    report("gold, metal-rough mix at metalness 0.35", [["F", largestDifference(values, expected.F_metal_rough, 4, 0)]],
+           { F: kFresnelTolerance });
+  });
 
   // The documented example: specular_gold(NdotV, roughness) = Fbar (1 + F0 (1 - E) / E), E the
   // table's directional albedo (Fbar of r = 1 from the coefficient-table path). Compared

@@ -187,6 +187,9 @@ std::string evaluate_bare(const EvaluationInputs& options, const Material& mater
   const runtime::BasisView basis = runtime::shipped_basis(options.basis);
   const ColorOptions color = options.color;
   if (material.coat) {
+    if (options.metalness)
+      throw std::invalid_argument(
+          "metalness: the metal-rough mix of a coated metal is not evaluated (docs/gltf.md)");
     ordered_json out;
     out["name"] = material.name;
     out["basis"] = runtime::basis_name(basis.kind);
@@ -202,12 +205,16 @@ std::string evaluate_bare(const EvaluationInputs& options, const Material& mater
   out["basis"] = runtime::basis_name(basis.kind);
   out["color_space"] = color_space_name(color.working_space);
   if (!options.mu.empty()) add_direct_fresnel(options, *curve, coefficients, out);
+  std::optional<SplitSumInputs> inputs;
   if (!options.ndotv.empty()) {
-    const SplitSumInputs inputs = split_sum_inputs(options, *curve, basis);
-    add_preintegrated_fresnel(options, inputs, coefficients, out);
+    inputs = split_sum_inputs(options, *curve, basis);
+    add_preintegrated_fresnel(options, *inputs, coefficients, out);
     if (options.quad)
-      add_quad_light(options, *options.quad, *curve, inputs, coefficients, basis, out);
+      add_quad_light(options, *options.quad, *curve, *inputs, coefficients, basis, out);
   }
+  static const Lut kNoTable;  // read only for pairs
+  if (options.metalness)
+    add_metal_rough(options, coefficients.front().second, inputs ? inputs->lut : kNoTable, out);
   return format_json(out);
 }
 
@@ -279,6 +286,10 @@ evaluation::EvaluationInputs resolved(const EvaluationOptions& options) {
   inputs.coefficient_table_precision = option_from_name(
       "coefficient_table_precision", options.coefficient_table_precision, LutPrecision::f16);
   inputs.color = color_options_of(options.compile);
+  if (options.metalness) {
+    check_unit_interval("metalness", std::span<const double>(&*options.metalness, 1));
+    inputs.metalness = options.metalness;
+  }
   return inputs;
 }
 
@@ -292,6 +303,9 @@ std::string evaluate_artistic(const Rgb& reflectivity, const Rgb& edge_tint,
                               const EvaluationOptions& options) {
   check_unit_interval("reflectivity", reflectivity);
   check_unit_interval("edge_tint", edge_tint);
+  if (options.metalness)
+    throw std::invalid_argument(
+        "metalness: the coefficient-table path has no metal-rough mix; evaluate a material");
   return evaluation::evaluate_table_path(resolved(options), reflectivity, edge_tint);
 }
 

@@ -35,6 +35,7 @@ struct EvaluationInputs {
   runtime::BasisKind basis = runtime::kDefaultBasis;
   LutPrecision coefficient_table_precision = LutPrecision::f16;
   ColorOptions color;
+  std::optional<double> metalness;  // glTF's metal-rough mix with glTF's dielectric, when given
 };
 
 using nlohmann::ordered_json;
@@ -49,6 +50,13 @@ void add_preintegrated_points(const EvaluationInputs& inputs, const Lut& lut, or
 // The quad light and the tables its radiance outputs were computed with.
 void add_quad_light_description(const EvaluationInputs& inputs, const std::vector<Vec3>& quad,
                                 const runtime::LtcTableView& ltc, ordered_json& out);
+
+// glTF's metal-rough model at `inputs.metalness` (docs/gltf.md): F and Fbar of the metal with
+// `coefficients` mixed with glTF's default dielectric (F0 0.04, F90 1; Schlick's curve, its split
+// sum from a table baked like matc's), as matc_metal_rough and matc_dielectric_fresnel compute
+// them: F_metal_rough, Fbar_metal_rough, and the dielectric's own F_dielectric, Fbar_dielectric.
+void add_metal_rough(const EvaluationInputs& inputs, const runtime::Coefficients& coefficients,
+                     const Lut& lut, ordered_json& out);
 
 // A coated material (docs/coating.md): both lobes and their sum beside the exact layered curve,
 // preintegrated beside the split sums and the Monte-Carlo layered reference, and the quad light.

@@ -40,12 +40,14 @@ std::string validation_kernel_source(ShaderLanguage language, std::string_view l
                                      bool coated = false);
 
 // The coefficient-table path's kernel (templates/*/validate_table.*): bindings 0 queries (four vec4
-// each: r.rgb and mu, g.rgb and NdotV, n.rgb and roughness, k.rgb), 1 results (seven vec4: F and
+// each: r.rgb and mu, g.rgb and NdotV, n.rgb and roughness, k.rgb), 1 results (eight vec4: F and
 // Fbar from (r, g), F from (n, k), F from baked coefficients, F per pixel from F0 = r on rows at
-// F0 = 0, F from an F0 table at F0 = r in air and under a coat), 2 the preintegrated table, 3 the
+// F0 = 0, F from an F0 table at F0 = r in air and under a coat, the metal-rough mix of the (r, g)
+// metal with a dielectric of F0 0.08 g and F90 NdotV by metalness = roughness), 2 the
+// preintegrated table, 3 the
 // sampler of both tables, 4 the coefficient table (its .xy).
 inline constexpr std::size_t kTableValidationQueryVectors = 4;
-inline constexpr std::size_t kTableValidationResultsPerQuery = 7;
+inline constexpr std::size_t kTableValidationResultsPerQuery = 8;
 std::string table_validation_kernel_source(ShaderLanguage language, std::string_view library);
 
 // The area-light kernel (templates/*/validate_area_lights.*): bindings 0 queries (eight vec4 each:

@@ -12,6 +12,7 @@
 #include "matc/runtime/coefficient_table.h"
 #include "matc/runtime/f0_table.h"
 #include "matc/runtime/lut.h"
+#include "matc/runtime/metal_rough.h"
 #include "matc/runtime/shader_basis.h"
 #include "validate/device_validator.h"
 
@@ -79,6 +80,7 @@ class CoefficientTableCheck final : public DeviceCheck {
     CheckedQuantity from_f0{"F(from F0)", tolerance_};
     CheckedQuantity f0_table{"F(F0 table)", tolerance_};
     CheckedQuantity f0_table_under_coat{"F(F0 table, under a coat)", tolerance_};
+    CheckedQuantity metal_rough{"F(metal-rough)", tolerance_};
     for (std::size_t i = 0; i < queries_.size(); ++i) {
       const TableQuery& q = queries_[i];
       const float* result = &results[i * kTableValidationResultsPerQuery * 4];
@@ -120,8 +122,19 @@ class CoefficientTableCheck final : public DeviceCheck {
                                                    table_of_query, as_rgb(q.reflectivity)),
                                                shader_basis, q.mu),
                      result + 24, i);
+      // glTF's metal-rough mix: the (r, g) metal with a dielectric of F0 g * 0.08 and F90 NdotV,
+      // by metalness = roughness.
+      const runtime::Rgb dielectric = runtime::dielectric_fresnel(
+          as_rgb({q.edge_tint[0] * 0.08f, q.edge_tint[1] * 0.08f, q.edge_tint[2] * 0.08f}),
+          {q.ndotv, q.ndotv, q.ndotv}, q.mu);
+      record_largest(
+          metal_rough,
+          runtime::metal_rough(
+              dielectric, runtime::evaluate_fresnel(coefficients, shader_basis, q.mu), q.roughness),
+          result + 28, i);
     }
-    return {fresnel, preintegrated, from_ior, baked, from_f0, f0_table, f0_table_under_coat};
+    return {fresnel,  preintegrated,       from_ior,   baked, from_f0,
+            f0_table, f0_table_under_coat, metal_rough};
   }
 
   std::string describe_query(std::size_t index, std::string_view label) const override {

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -35,6 +36,10 @@ struct EvaluationOptions {
   std::size_t lut_samples = kDefaultLutSamples;
   std::string lut_precision;                // f32 (default) or f16
   std::string coefficient_table_precision;  // f16 (default) or f32: the coefficient-table path
+  // glTF's metal-rough model (docs/gltf.md): F and Fbar of the metal mixed by this metalness, in
+  // [0, 1], with glTF's default dielectric (F0 0.04, F90 1): F_metal_rough, Fbar_metal_rough and
+  // the dielectric's F_dielectric, Fbar_dielectric. Bare metals only.
+  std::optional<double> metalness;
 };
 
 // The evaluation of `material` as JSON text. Throws std::invalid_argument naming an option out of

@@ -1,0 +1,52 @@
+// matc eval --metalness: glTF's metal-rough mix of a metal with glTF's dielectric (docs/gltf.md).
+#include "evaluation_parts.h"
+#include "lut/comparison_lobes.h"
+#include "matc/runtime/lut.h"
+#include "matc/runtime/metal_rough.h"
+#include "matc/runtime/shader_basis.h"
+
+namespace matc::evaluation {
+
+void add_metal_rough(const EvaluationInputs& inputs, const runtime::Coefficients& coefficients,
+                     const Lut& lut, ordered_json& out) {
+  const double metalness = *inputs.metalness;
+  const runtime::Rgb f0{runtime::kGltfDielectricF0, runtime::kGltfDielectricF0,
+                        runtime::kGltfDielectricF0};
+  const runtime::Rgb f90{1.0, 1.0, 1.0};
+  out["metalness"] = metalness;
+  out["dielectric"] = {{"f0", f0}, {"f90", f90}};
+  if (!inputs.mu.empty()) {
+    const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(inputs.basis);
+    ordered_json dielectric = ordered_json::array(), mixed = ordered_json::array();
+    for (const double mu : inputs.mu) {
+      const runtime::Rgb d = runtime::dielectric_fresnel(f0, f90, mu);
+      dielectric.push_back(d);
+      mixed.push_back(runtime::metal_rough(
+          d, runtime::evaluate_fresnel(coefficients, shader_basis, mu), metalness));
+    }
+    out["F_dielectric"] = std::move(dielectric);
+    out["F_metal_rough"] = std::move(mixed);
+  }
+  if (!inputs.ndotv.empty()) {
+    // Schlick's split sum is f0 x + (f90 - f0) y from a table of its lobes (albedo x, the
+    // (1 - mu)^5 lobe y), baked as matc's own table is.
+    const ComparisonLobes lobes(runtime::shipped_basis(inputs.basis).samples());
+    const Lut schlick_lut = preintegrate_lut(lobes.view(), inputs.bake);
+    ordered_json dielectric = ordered_json::array(), mixed = ordered_json::array();
+    for (std::size_t i = 0; i < inputs.ndotv.size(); ++i) {
+      const auto lobe =
+          runtime::sample_lut(schlick_lut.view(), inputs.ndotv[i], inputs.roughness[i]);
+      runtime::Rgb d{};
+      for (std::size_t c = 0; c < 3; ++c)
+        d[c] = f0[c] * lobe[0] + (f90[c] - f0[c]) * lobe[1];
+      dielectric.push_back(d);
+      mixed.push_back(runtime::metal_rough(
+          d, runtime::evaluate_fbar(coefficients, lut.view(), inputs.ndotv[i], inputs.roughness[i]),
+          metalness));
+    }
+    out["Fbar_dielectric"] = std::move(dielectric);
+    out["Fbar_metal_rough"] = std::move(mixed);
+  }
+}
+
+}  // namespace matc::evaluation
