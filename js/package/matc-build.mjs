@@ -474,6 +474,14 @@ function gltfMaterialAsset(json, index) {
 
 const isGltfMetal = (material) => (material.pbrMetallicRoughness?.metallicFactor ?? 1) > 0;
 
+// Whether a glTF metal's metalness varies from 1: a metallicFactor below 1 or a
+// metallicRoughnessTexture (whose blue channel scales it per pixel). Such a material is glTF's
+// metal-rough model per pixel: matc's metal mixed with the engine's dielectric (docs/gltf.md).
+export const isGltfMetalRough = (material) => {
+  const pbr = material.pbrMetallicRoughness ?? {};
+  return (pbr.metallicFactor ?? 1) < 1 || pbr.metallicRoughnessTexture !== undefined;
+};
+
 // What the engines' glTF loaders (three/matc-gltf.mjs, babylon/matc-gltf.mjs) make of an asset's
 // materials: `metalOf(index)` resolves to { metal (as build.loadMaterial gives it), from:
 // "extension" | "compiled", source: useMatcFresnel's }, or null for a material that stays the

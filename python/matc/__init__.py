@@ -19,6 +19,7 @@ docs/python.md describes every function.
 import collections as _collections
 import json as _json
 import math as _math
+import numbers as _numbers
 import os as _os
 
 try:
@@ -301,18 +302,30 @@ def compile_gltf(asset, **options):
 
 
 def evaluate(material, mu=(), ndotv=(), roughness=(), *, reference=True, quad_light=None,
-             **options):
+             metalness=None, **options):
     """What ``matc eval`` prints for ``material`` (anything :func:`compile` takes), as a dict:
     ``F`` and ``F_exact`` at the cosines ``mu``; ``Fbar`` (from the table), ``Fbar_analytic`` and
     ``Fbar_reference`` at the (``ndotv``, ``roughness``) pairs; a coated material's lobes; with
     ``quad_light`` ("x,y,z;x,y,z;x,y,z;x,y,z" in the shading frame) its radiance by LTC beside the
     exact integral. ``reference=False`` leaves out the Monte-Carlo references (``Fbar_reference``,
-    a coated material's layered ones, ``L_reference``): the shaders' values alone, fast. Options are ``matc eval``'s: ``light_samples``, ``lut_size``,
+    a coated material's layered ones, ``L_reference``): the shaders' values alone, fast.
+    ``metalness`` (in [0, 1], ``matc eval --metalness``): glTF's metal-rough mix of a bare metal
+    with glTF's dielectric, ``F_metal_rough`` and ``Fbar_metal_rough`` beside the dielectric's own
+    (docs/gltf.md). Options are ``matc eval``'s: ``light_samples``, ``lut_size``,
     ``lut_samples``, ``lut_precision``, ``coefficient_table_precision``, ``basis``,
     ``color_space``, ``gamut_mapping``. Raises ``ValueError`` for options out of range."""
     return _matc._evaluate(_one_material(material), _float_list(mu, "mu"),
                            _float_list(ndotv, "ndotv"), _float_list(roughness, "roughness"),
-                           reference, quad_light, **options)
+                           reference, quad_light, _metalness(metalness), **options)
+
+
+def _metalness(value):
+    # A real number (numpy's too), or None; bool is refused though it is an int.
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, _numbers.Real):
+        raise TypeError(f"metalness: a real number in [0, 1], not {type(value).__name__}")
+    return float(value)
 
 
 def _float_list(values, argument):

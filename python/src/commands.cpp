@@ -24,7 +24,7 @@ py::object json_value(const std::string& text) {
 py::object evaluate(const api::Material& material, const std::vector<double>& mu,
                     const std::vector<double>& ndotv, const std::vector<double>& roughness,
                     bool reference, const std::optional<std::string>& quad_light,
-                    std::size_t light_samples, std::size_t lut_size, std::size_t lut_samples,
+                    const std::optional<double>& metalness, std::size_t light_samples, std::size_t lut_size, std::size_t lut_samples,
                     const std::string& lut_precision,
                     const std::string& coefficient_table_precision, const std::string& basis,
                     const std::string& color_space, const std::string& gamut_mapping) {
@@ -34,6 +34,7 @@ py::object evaluate(const api::Material& material, const std::vector<double>& mu
   options.roughness = roughness;
   options.reference = reference;
   if (quad_light) options.quad_light = api::parse_quad_light(*quad_light);
+  options.metalness = metalness;
   options.light_samples = light_samples;
   options.lut_size = lut_size;
   options.lut_samples = lut_samples;
@@ -62,7 +63,7 @@ py::dict basis_dict(const std::string& name) {
 void register_commands(py::module_& module) {
   const api::CompileOptions defaults = api::default_compile_options();
   module.def("_evaluate", &evaluate, py::arg("material"), py::arg("mu"), py::arg("ndotv"),
-             py::arg("roughness"), py::arg("reference"), py::arg("quad_light"),
+             py::arg("roughness"), py::arg("reference"), py::arg("quad_light"), py::arg("metalness"),
              py::arg("light_samples") = api::kDefaultLightSamples,
              py::arg("lut_size") = api::kDefaultLutSize,
              py::arg("lut_samples") = api::kDefaultLutSamples, py::arg("lut_precision") = "f32",

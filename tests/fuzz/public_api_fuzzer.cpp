@@ -4,7 +4,8 @@
 // two halves of the rest as "a.csv" and "b.bin"); the rest is the document. What parses is
 // compiled, its values read, its curves evaluated on cosines read from the input (NaN and values
 // outside [0, 1] among them; Fbar and its reference on the same values as pairs, an output span of
-// the wrong size once) and its texts written. Allowed outcomes: MaterialError (an error, every line
+// the wrong size once), its texts written, and matc eval's metal-rough mix evaluated there (the
+// first value as the metalness). Allowed outcomes: MaterialError (an error, every line
 // printable), std::invalid_argument for a bad option or cosine, std::logic_error for a bare metal's
 // lobes; anything else (another exception, a crash, a sanitizer report) is a finding. The same
 // bytes also go, before parsing, to the calls that take numbers or words rather than a document:
@@ -153,6 +154,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (texts.material_source(language, compiled).empty()) __builtin_trap();
       if (texts.material_json(compiled).empty()) __builtin_trap();
     });
+    // matc eval's metal-rough mix (--metalness) at the input's cosines, the first of them as the
+    // metalness (NaN and values outside [0, 1] among them); F only (Fbar bakes a full table).
+    if (!mu.empty()) {
+      matc::api::EvaluationOptions evaluation;
+      evaluation.mu.assign(mu.begin() + 1, mu.end());
+      evaluation.metalness = mu.front();
+      evaluation.compile = options;
+      allow_invalid_argument([&] {
+        if (matc::api::evaluate(material, evaluation).empty()) __builtin_trap();
+      });
+    }
   }
   return 0;
 }

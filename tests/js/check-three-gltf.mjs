@@ -14,27 +14,13 @@
 // at their F0 per pixel), to 1e-4.
 //   node check-three-gltf.mjs MATC NPM_DIR
 import { modulePage } from "./browser-page.mjs";
-import { kProbeSize, kThreeJsProbeTerms } from "./engine-probes.mjs";
-import { runLoaderCheck } from "./gltf-loader-checks.mjs";
+import { kThreeJsProbeTerms } from "./engine-probes.mjs";
+import { kThreeGltfPageHead, kThreeGltfPageSetup, runLoaderCheck } from "./gltf-loader-checks.mjs";
 
 const page = (config) => modulePage(config, {
-  head: `import * as THREE from "three";
-import { RectAreaLightUniformsLib } from "three/addons/lights/RectAreaLightUniformsLib.js";
-import { createMatc } from "/web/index.mjs";
-import { compiledMatcBuildFiles } from "/web/matc-build.mjs";
-import { loadMatcBuild } from "/web/three/matc-three.mjs";
-import { matcGltfPlugin } from "/web/three/matc-gltf.mjs";
-import { loadCarThreeWays, recordConsole } from "/checks/three-gltf-loads-page.mjs";
-import { probeScene, probeSetup, renderProbePixels } from "/checks/three-scene-page.mjs";
-`,
-  body: `
-  recordConsole(out);
-  const renderer = new THREE.WebGLRenderer({ canvas: document.createElement("canvas") });
-  RectAreaLightUniformsLib.init();
-  const matc = await createMatc();
-  const build = await loadMatcBuild(await compiledMatcBuildFiles(matc));
+  head: kThreeGltfPageHead,
+  body: `${kThreeGltfPageSetup}
   const loads = await loadCarThreeWays(out, { matcGltfPlugin, matc, build, directoryBuild: await loadMatcBuild("/build/") });
-  const { target, camera, environment } = probeSetup(THREE, renderer, ${kProbeSize});
   out.renders = {};
   for (const [load, probed] of Object.entries(config.probed)) {
     for (const [name, key] of Object.entries(probed)) {

@@ -105,6 +105,30 @@ export async function carAsset(path, { paintRoughness = 0.4, chromeRoughness = 0
   writeFileSync(path, bytes);
 }
 
+// The metals of metalRoughAsset: the same base colour and roughness, metalness from a texture's
+// blue channel (every texel alike: 0, 128 and 255 of 255, read as linear data) or a factor.
+export const kMetalRough = {
+  baseColor: [0.9, 0.6, 0.3], roughness: 0.3,
+  textured: { "Metal 0": 0, "Metal Half": 128, "Metal Full": 255 },
+  factor: { "Metal Factor": 0.3 }, plain: "Metal Plain",
+};
+
+// metal_rough.glb: glTF's metal-rough model as artists paint it, one material per metalness:
+// a metallicRoughnessTexture (green 255: roughness at its factor; blue the metalness) on the
+// textured ones, a metallicFactor of 0.3 on one, and a plain full metal (factor 1, no texture).
+export async function metalRoughAsset(path) {
+  const document = new Document();
+  const material = (name) => document.createMaterial(name).setBaseColorFactor([...kMetalRough.baseColor, 1])
+    .setRoughnessFactor(kMetalRough.roughness).setMetallicFactor(1);
+  const materials = Object.entries(kMetalRough.textured).map(([name, blue]) => material(name).setMetallicRoughnessTexture(
+    document.createTexture(name).setMimeType("image/png")
+      .setImage(pngBytes(4, 4, new Uint8Array(4 * 4 * 3).map((_, i) => [0, 255, blue][i % 3])))));
+  for (const [name, factor] of Object.entries(kMetalRough.factor)) materials.push(material(name).setMetallicFactor(factor));
+  materials.push(material(kMetalRough.plain));
+  scene(document, materials);
+  writeFileSync(path, await new NodeIO().writeBinary(document));
+}
+
 // A GLB (`bytes`) with its JSON chunk edited by `edit(json)`; the BIN chunk carried as it is.
 function withGlbJson(bytes, edit) {
   const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);

@@ -8,10 +8,32 @@ import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "nod
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { kWebRoots, runPage } from "./browser-page.mjs";
-import { compareProbes, expectedProbes, kPointLight, kProbePixels, kProbeRectLight } from "./engine-probes.mjs";
+import { compareProbes, expectedProbes, kPointLight, kProbePixels, kProbeRectLight, kProbeSize } from "./engine-probes.mjs";
 import { carAsset } from "./gltf-assets.mjs";
 import { check, finish } from "./report.mjs";
 import { run } from "./shader-cases.mjs";
+
+// The module imports and first lines of a three.js (WebGLRenderer) glTF loader page
+// (check-three-gltf.mjs, check-three-metal-rough.mjs): the console recorded, a renderer with rect
+// lights, the compiler and its build in the page, and the probe target, camera and environment.
+export const kThreeGltfPageHead = `import * as THREE from "three";
+import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
+import { RectAreaLightUniformsLib } from "three/addons/lights/RectAreaLightUniformsLib.js";
+import { createMatc } from "/web/index.mjs";
+import { compiledMatcBuildFiles } from "/web/matc-build.mjs";
+import { loadMatcBuild } from "/web/three/matc-three.mjs";
+import { matcGltfPlugin } from "/web/three/matc-gltf.mjs";
+import { loadCarThreeWays, recordConsole } from "/checks/three-gltf-loads-page.mjs";
+import { probeScene, probeSetup, renderProbePixels } from "/checks/three-scene-page.mjs";
+`;
+export const kThreeGltfPageSetup = `
+  recordConsole(out);
+  const renderer = new THREE.WebGLRenderer({ canvas: document.createElement("canvas") });
+  RectAreaLightUniformsLib.init();
+  const matc = await createMatc();
+  const build = await loadMatcBuild(await compiledMatcBuildFiles(matc));
+  const { target, camera, environment } = probeSetup(THREE, renderer, ${kProbeSize});
+`;
 
 const kLights = ["environment", "point", "rect"];
 // The engine's material name -> the matc material `matc import` writes for it, per load.

@@ -29,7 +29,28 @@ def test_evaluate_with_a_quad_light_and_options():
     assert "L_reference" in ours
 
 
+def test_evaluate_with_metalness_is_matc_eval():
+    ours = matc.evaluate(EXAMPLES / "chromium.json", mu=[1, 0.5, 0.1], ndotv=[0.3], roughness=[0.5],
+                         reference=False, metalness=0.4, lut_size=16, lut_samples=64)
+    cli = matc_eval(EXAMPLES / "chromium.json", "--mu", "1,0.5,0.1", "--ndotv", "0.3",
+                    "--roughness", "0.5", "--no-reference", "--metalness", "0.4", "--lut-size", "16",
+                    "--lut-samples", "64")
+    assert ours == cli
+    assert ours["F_metal_rough"][0] == pytest.approx(
+        [0.6 * 0.04 + 0.4 * f for f in ours["F"][0]], abs=1e-15)
+
+
 @pytest.mark.parametrize("call, error, message", [
+    (lambda: matc.evaluate(EXAMPLES / "gold.json", mu=0.5, metalness=1.5), ValueError,
+     "metalness: element 0 is 1.5"),
+    (lambda: matc.evaluate(EXAMPLES / "gold.json", mu=0.5, metalness=float("nan")), ValueError,
+     "metalness: element 0 is nan"),
+    (lambda: matc.evaluate(EXAMPLES / "gold.json", mu=0.5, metalness="0.5"), TypeError,
+     "metalness: a real number"),
+    (lambda: matc.evaluate(EXAMPLES / "gold.json", mu=0.5, metalness=True), TypeError,
+     "metalness: a real number"),
+    (lambda: matc.evaluate(EXAMPLES / "copper_lacquered.json", mu=0.5, metalness=0.5), ValueError,
+     "coated metal is not evaluated"),
     (lambda: matc.evaluate(EXAMPLES / "gold.json"), ValueError, "both empty"),
     (lambda: matc.evaluate(EXAMPLES / "gold.json", mu=1.5), ValueError, "mu: element 0 is 1.5"),
     (lambda: matc.evaluate(EXAMPLES / "gold.json", ndotv=[0.5], roughness=[]), ValueError,

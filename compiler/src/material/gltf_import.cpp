@@ -152,13 +152,16 @@ class Importer {
     }
     if (!in_range(field, "pbrMetallicRoughness.roughnessFactor", pbr.roughnessFactor, 0, 1)) return;
     std::vector<std::string> not_carried;
+    // The compile carries the metal; glTF's mix with the engine's dielectric is the shader's.
     if (pbr.metallicFactor < 1)
-      not_carried.push_back(
-          fmt::format("partial metalness (metallicFactor {}: compiled as a full "
-                      "metal; the engine mixes in its dielectric)",
-                      pbr.metallicFactor));
+      not_carried.push_back(fmt::format(
+          "partial metalness (metallicFactor {}: the metal is compiled; the shader mixes "
+          "it with the engine's dielectric, matc_metal_rough)",
+          pbr.metallicFactor));
     if (pbr.metallicRoughnessTexture.index >= 0)
-      not_carried.push_back("metallicRoughnessTexture's metalness (compiled as a full metal)");
+      not_carried.push_back(
+          "metallicRoughnessTexture's metalness (the metal is compiled; the shader mixes it with "
+          "the engine's dielectric per pixel, matc_metal_rough)");
 
     ordered_json material_json;
     material_json["name"] = "";

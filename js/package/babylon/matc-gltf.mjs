@@ -20,7 +20,7 @@
 //   matcGltf.unregister();
 import { registerGLTFExtension, unregisterGLTFExtension }
   from "@babylonjs/loaders/glTF/2.0/glTFLoaderExtensionRegistry.js";
-import { checkGltfLoaderOptions, gltfMetals } from "../matc-build.mjs";
+import { checkGltfLoaderOptions, gltfMetals, isGltfMetalRough } from "../matc-build.mjs";
 import { useMatcFresnel } from "./matc-babylon.mjs";
 
 // The loader extension's name in Babylon's registry (not a glTF extension: it runs on every asset).
@@ -41,6 +41,7 @@ class MatcGltfLoaderExtension {
     const where = (index) => `glTF materials[${index}] ${JSON.stringify(String(loader.gltf.materials[index].name ?? ""))}`;
     this.warn = (index, message) => console.warn(`matc: ${where(index)} keeps Babylon.js's Fresnel: ${message}`);
     const note = (index, message) => console.warn(`matc: ${where(index)}: ${message}`);
+    this.note = note;
     this.metals = gltfMetals({ matc, build, compile, json: loader.gltf, warn: this.warn, note });
   }
 
@@ -54,6 +55,10 @@ class MatcGltfLoaderExtension {
     return this.loader.loadMaterialPropertiesAsync(context, material, babylonMaterial).then(async () => {
       const found = await this.metals.metalOf(material.index);
       if (!found) return;
+      // glTF's metal-rough mix per pixel is three.js WebGLRenderer's (matc/three/gltf) so far.
+      if (isGltfMetalRough(material)) {
+        this.note(material.index, "its metalness (partial or textured) is not mixed in Babylon.js yet: drawn as a full metal");
+      }
       try {
         useMatcFresnel(babylonMaterial, this.build, found.source, { areaLights: this.areaLights });
         babylonMaterial.metadata = { ...babylonMaterial.metadata, matc: { gltfMaterial: material.index, from: found.from } };

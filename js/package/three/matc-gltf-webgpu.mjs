@@ -37,8 +37,10 @@ function nodeMaterialOf(material) {
 export function matcGltfPlugin({ matc = null, build, compile = {}, areaLights = "matc" }) {
   const plugin = threeGltfPlugin({
     matc, build, compile, what: "matcGltfPlugin (WebGPU)",
-    make: (material, source) => {
+    make: (material, source, { metalRough, note }) => {
       if (!material.isMeshStandardMaterial) throw new MatcWebError("three.js built no MeshStandardMaterial for it");
+      // glTF's metal-rough mix per pixel is WebGLRenderer's (matc/three/gltf) so far.
+      if (metalRough) note("its metalness (partial or textured) is not mixed in WebGPURenderer yet: drawn as a full metal");
       // A coated metal made from the extension carries its snippet; this build makes its functions.
       if (source.material?.coat && !source.material.coat.functions) build.withCoatFunctions(source.material);
       return useMatcFresnel(nodeMaterialOf(material), build, source, { areaLights });

@@ -38,13 +38,29 @@ ${lobesGlsl(material)}
 void matc_image_lighting( inout vec3 singleScatter, inout vec3 multiScatter ) {
 	singleScatter += matc_base_preintegrated() * matc_base_compensation();
 }
+#ifdef MATC_METAL_ROUGH
+// glTF's metal-rough model per pixel (docs/gltf.md): three's own dielectric lobe mixed with matc's
+// metal by material.metalness. Set before the lights: the dielectric's F90 (three blends its F90
+// with the metal's) and its multiple-scattering scale (three's, with the dielectric's F0).
+float matc_dielectric_f90;
+vec3 matc_dielectric_compensation;
+#endif
 `;
 
 // What main() computes before the lights, as three.js sees the pixel.
-const kPixelSetup = pixelSetupGlsl({
+const kPixelSetup = `${pixelSetupGlsl({
   uv: "vUv", baseColour: "diffuseColor.rgb", roughness: "material.roughness",
   ndotv: "saturate( dot( normal, isOrthographic ? vec3( 0.0, 0.0, 1.0 ) : normalize( vViewPosition ) ) )",
-  coatRoughness: "material.clearcoatRoughness" });
+  coatRoughness: "material.clearcoatRoughness" })}
+#ifdef MATC_METAL_ROUGH
+	#if defined( IOR ) && defined( USE_SPECULAR )
+		matc_dielectric_f90 = specularIntensityFactor;
+	#else
+		matc_dielectric_f90 = 1.0;
+	#endif
+	matc_dielectric_compensation = vec3( 1.0 );
+#endif
+`;
 
 // Each patch: the chunk, the exact text it replaces (found once, or the chunk changed), the text
 // put there, and what it means (docs/web-engines.md lists these).
@@ -58,9 +74,16 @@ export const kPatches = [
   {
     chunk: "lights_physical_pars_fragment",
     anchor: "vec3 F = F_Schlick( f0, f90, dotVH ); #ifdef USE_IRIDESCENCE",
-    replacement: () => "\tvec3 F = matc_base_fresnel( dotVH );\n\n\t#ifdef USE_IRIDESCENCE\n",
+    replacement: () =>
+      "#ifdef MATC_METAL_ROUGH\n" +
+      "\tvec3 F = matc_metal_rough( F_Schlick( material.specularColor, matc_dielectric_f90, dotVH ) * matc_dielectric_compensation, " +
+      "matc_base_fresnel( dotVH ) * matc_base_compensation(), material.metalness );\n" +
+      "#else\n" +
+      "\tvec3 F = matc_base_fresnel( dotVH );\n" +
+      "#endif\n\n\t#ifdef USE_IRIDESCENCE\n",
     what: "punctual lights: F_Schlick(f0, f90, dotVH) in BRDF_GGX becomes matc_fresnel(c, dotVH) (a coated " +
-          "material's base lobe: the metal through the coat)",
+          "material's base lobe: the metal through the coat); with metalRough, three's dielectric Schlick curve and " +
+          "matc's metal mixed by metalness (matc_metal_rough), each lobe with its own multiple-scattering scale",
   },
   {
     chunk: "lights_physical_pars_fragment",
@@ -118,6 +141,9 @@ export const kPatches = [
     anchor: "\t\treflectedLight.directSpecular += lightColor * fresnel * LTC_Evaluate( normal, viewDir, " +
             "position, mInv, rectCoords );\n",
     replacement: () =>
+      "#ifdef MATC_METAL_ROUGH\n" +
+      "\t\tvec3 matc_specular_before = reflectedLight.directSpecular;\n" +
+      "#endif\n" +
       "#ifdef MATC_ENGINE_LTC\n" +
       "\t\treflectedLight.directSpecular += lightColor * matc_base_preintegrated() * LTC_Evaluate( normal, viewDir, position, mInv, rectCoords );\n" +
       "#else\n" +
@@ -130,18 +156,30 @@ export const kPatches = [
       "\t\tif ( matc_lit ) reflectedLight.directSpecular += lightColor * matc_base_preintegrated() * matc_ltc_quad_integral( " +
       "matc_ltc_transform( normal, viewDir, matc_ltc_texel ), position, rectCoords[ 0 ], rectCoords[ 1 ], rectCoords[ 2 ], rectCoords[ 3 ] );\n" +
       "#endif\n" +
+      "#endif\n" +
+      "#ifdef MATC_METAL_ROUGH\n" +
+      "\t\treflectedLight.directSpecular = matc_specular_before + matc_metal_rough( lightColor * ( material.specularColor * t2.x + " +
+      "( matc_dielectric_f90 - material.specularColor ) * t2.y ) * LTC_Evaluate( normal, viewDir, position, mInv, rectCoords ), " +
+      "reflectedLight.directSpecular - matc_specular_before, material.metalness );\n" +
       "#endif\n",
     what: "rect area lights: Hill's two-channel LTC Fresnel and the LTC_1 shape become matc's LTC " +
           "(matc_ltc) times sum_i c_i bbar_i, one-sided like three's; with areaLights: \"quality\", matc's " +
           "quality level (the shape and the Fresnel follow the light across the lobe); with areaLights: \"engine\", " +
-          "three's LTC_1 shape times sum_i c_i bbar_i",
+          "three's LTC_1 shape times sum_i c_i bbar_i; with metalRough, three's own dielectric term and matc's mixed by metalness",
   },
   {
     chunk: "lights_fragment_begin",
     anchor: "\t\tmaterial.multiScatteringCompensation = 1.0 + material.specularColorBlended * " +
             "( 1.0 / EssMs - 1.0 );\n",
-    replacement: () => "\t\tmaterial.multiScatteringCompensation = matc_base_compensation();\n",
-    what: "punctual lights' multiple scattering: F0 from the coefficients, E from matc's table",
+    replacement: () =>
+      "#ifdef MATC_METAL_ROUGH\n" +
+      "\t\tmatc_dielectric_compensation = 1.0 + material.specularColor * ( 1.0 / EssMs - 1.0 );\n" +
+      "\t\tmaterial.multiScatteringCompensation = vec3( 1.0 );\n" +
+      "#else\n" +
+      "\t\tmaterial.multiScatteringCompensation = matc_base_compensation();\n" +
+      "#endif\n",
+    what: "punctual lights' multiple scattering: F0 from the coefficients, E from matc's table (with metalRough, " +
+          "each lobe's scale inside BRDF_GGX's mix: three's with the dielectric's F0, matc's)",
   },
   {
     chunk: "lights_fragment_begin",
@@ -237,13 +275,16 @@ function sourceUniforms(build, source) {
 }
 
 // Makes `material` (MeshStandardMaterial or MeshPhysicalMaterial) a matc metal: metalness 1, its
-// Fresnel in every light path from `source` (see sourceUniforms). Returns the material; its
+// Fresnel in every light path from `source` (see sourceUniforms). options.metalRough: glTF's
+// metal-rough model per pixel instead (docs/gltf.md): the material keeps its metalness and
+// metalnessMap, and matc's metal replaces three's metal lobe only, mixed by the pixel's metalness
+// with three's own dielectric in every light path (not under a matc coat). Returns the material; its
 // userData.matc.uniforms can be changed later (e.g. another compiled material's coefficients).
 // options.areaLights: "matc" (default: matc's LTC table and horizon-clipped integral, checked
 // against the CPU runtime), "quality" (the same with matc's quality level: the lobe's shape and
 // the Fresnel follow the light across the lobe, docs/ltc.md; a quarter more per light) or "engine"
 // (three's LTC shape with matc's Fresnel: cheaper; docs/web-engines.md measures them).
-export function useMatcFresnel(material, build, source, { areaLights = "matc" } = {}) {
+export function useMatcFresnel(material, build, source, { areaLights = "matc", metalRough = false } = {}) {
   checkAreaLights(areaLights);
   checkBuild(build);
   if (!material?.isMeshStandardMaterial) {
@@ -262,12 +303,18 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc" } 
     throw new MatcWebError(`${source.material.name} is coated: its coat lobe needs a MeshPhysicalMaterial`);
   }
   if (coat) checkCoatedAreaLights(source.material, areaLights);
+  if (metalRough && coat) {
+    throw new MatcWebError(`${source.material.name} is coated: metalRough mixes a bare metal with three's dielectric`);
+  }
   // Checked now, so that a changed engine fails here and not at the first frame.
   const { [kMainShader]: main, ...chunks } = patchChunks(THREE.ShaderChunk, build.library, source.material);
   Object.assign(uniforms, { matc_lut: { value: build.lut }, matc_ltc: { value: build.ltc ?? build.lut } });
-  material.metalness = 1;
-  material.metalnessMap = null;
+  if (!metalRough) {
+    material.metalness = 1;
+    material.metalnessMap = null;
+  }
   material.defines = { ...(material.defines ?? {}), [define]: "" };
+  if (metalRough) material.defines.MATC_METAL_ROUGH = "";
   if (uv) material.defines.USE_UV = "";
   if (f0) material.defines.MATC_BAKED_F0 = "";
   if (areaLights === "engine") material.defines.MATC_ENGINE_LTC = "";
@@ -300,7 +347,8 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc" } 
   };
   // A coated material's constants are in its snippet: one program per snippet (not per name: a
   // material recompiled in the page under the same name with another coat needs its own).
-  material.customProgramCacheKey = () => `matc:${define}:${areaLights}:${build.url}:${coat ? source.material.coat.snippet : ""}`;
+  material.customProgramCacheKey = () =>
+    `matc:${define}:${areaLights}:${metalRough}:${build.url}:${coat ? source.material.coat.snippet : ""}`;
   material.needsUpdate = true;
   return material;
 }
