@@ -47,7 +47,7 @@ struct Comparison {
   bool tinted_coat = false;  // ours_coated under a tinted coat instead of a clear one
 };
 
-const std::array<Comparison, 22> kComparisons = {{
+const std::array<Comparison, 24> kComparisons = {{
     {"F alone, compiled coefficients", FresnelQuantity::direct, FresnelModel::ours,
      FresnelModel::schlick, std::nullopt},
     {"one GGX light, compiled coefficients", FresnelQuantity::ggx_light, FresnelModel::ours,
@@ -76,6 +76,16 @@ const std::array<Comparison, 22> kComparisons = {{
     {"split-sum image light, textured glTF metal: per pixel from the F0 map vs F0 map",
      FresnelQuantity::preintegrated, FresnelModel::from_f0, FresnelModel::schlick_textured,
      std::nullopt},
+    // Issue #65: glTF's metal-rough model per pixel, against the engines' own (Schlick's with F0
+    // blended by metalness).
+    {"one GGX light, glTF metal-rough per pixel (base colour and metalness maps): ours mixed with "
+     "the dielectric (matc_metal_rough) vs Schlick's blended F0",
+     FresnelQuantity::ggx_light, FresnelModel::from_f0_metal_rough,
+     FresnelModel::schlick_metal_rough, std::nullopt},
+    {"split-sum image light, glTF metal-rough per pixel: ours mixed with the engine's dielectric "
+     "(its DFG fetch too) vs Schlick's blended F0",
+     FresnelQuantity::preintegrated, FresnelModel::from_f0_metal_rough,
+     FresnelModel::schlick_metal_rough, std::nullopt},
     {"split-sum image light, textured glTF metal under an edge colour: through its F0 table vs F0 "
      "map",
      FresnelQuantity::preintegrated, FresnelModel::f0_table, FresnelModel::schlick_textured,

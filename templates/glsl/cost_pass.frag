@@ -57,8 +57,15 @@ void main() {
 #if MATC_COST_MAPS >= 3
   vec3 c3 = textureLod(sampler2D(map_c, matc_lut_sampler), map_uv, 0.0).xyz;
 #endif
+#if MATC_COST_METAL_ROUGH
+  // glTF's metal-rough model: the base colour is map a, the metalness map b's blue channel.
+  float metalness = b.z;
+#endif
 #if MATC_COST_SCHLICK
-#if MATC_COST_MAPS
+#if MATC_COST_METAL_ROUGH
+  // As engines shade it: one Schlick curve, F0 blended from the dielectric's to the base colour.
+  vec3 F0 = mix(vec3(0.04), a, metalness);
+#elif MATC_COST_MAPS
   vec3 F0 = a;
 #elif MATC_COST_COAT == 3
   // Filament's f0ClearCoatToSurface: F0 seen from inside a coat of 1.5, a fit of the exact
@@ -93,6 +100,16 @@ void main() {
 #if MATC_COST_SCHLICK
 #define COST_FRESNEL(MU) matc_cost_schlick(F0, (MU))
 #define COST_FRESNEL_PREINTEGRATED(TEXEL) (F0 * (TEXEL).x + (vec3(1.0) - F0) * (TEXEL).y)
+#elif MATC_COST_METAL_ROUGH
+// Ours mixed with the dielectric's Schlick curve by metalness (matc_metal_rough); for image light
+// the dielectric's split sum from the engine's own two-channel DFG table (matc_lut's binding
+// stands in for it: the same fetch instructions, at the engine's (roughness, NdotV) coordinates).
+#define COST_FRESNEL(MU) \
+  matc_metal_rough(matc_dielectric_fresnel(vec3(0.04), vec3(1.0), (MU)), matc_fresnel(c, (MU)), metalness)
+#define COST_ENGINE_DFG textureLod(sampler2D(matc_lut, matc_lut_sampler), vec2(uv.y, uv.x), 0.0)
+#define COST_FRESNEL_PREINTEGRATED(TEXEL)                                                      \
+  matc_metal_rough(vec3(0.04) * COST_ENGINE_DFG.x + vec3(0.96) * COST_ENGINE_DFG.y,           \
+                   matc_fresnel_preintegrated(c, (TEXEL)), metalness)
 #elif MATC_COST_TABLE || MATC_COST_BAKED || MATC_COST_FROM_F0 || MATC_COST_F0_TABLE
 #define COST_FRESNEL(MU) matc_fresnel(c, (MU))
 #define COST_FRESNEL_PREINTEGRATED(TEXEL) matc_fresnel_preintegrated(c, (TEXEL))

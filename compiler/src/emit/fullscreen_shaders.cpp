@@ -34,6 +34,8 @@ int material_map_count(FresnelModel model) {
     case FresnelModel::f0_table_coated:
       return 1;
     case FresnelModel::table:
+    case FresnelModel::schlick_metal_rough:
+    case FresnelModel::from_f0_metal_rough:
       return 2;
     case FresnelModel::baked:
       return 3;
@@ -76,7 +78,11 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
                              FresnelModel model, FresnelQuantity quantity, std::uint32_t width,
                              std::uint32_t height) {
   const bool schlick = model == FresnelModel::schlick || model == FresnelModel::schlick_textured ||
-                       model == FresnelModel::schlick_clear_coat;
+                       model == FresnelModel::schlick_clear_coat ||
+                       model == FresnelModel::schlick_metal_rough;
+  const bool metal_rough =
+      model == FresnelModel::schlick_metal_rough || model == FresnelModel::from_f0_metal_rough;
+  const bool from_f0 = model == FresnelModel::from_f0 || model == FresnelModel::from_f0_metal_rough;
   // 0: no coat; 1: ours coated; 2: ours bare under a Schlick coat; 3: Filament's clear coat.
   int coat = 0;
   if (draws_coated_material(model)) coat = 1;
@@ -99,6 +105,10 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
     model_name = "ours, coated, per pixel from an F0 map and F0 table";
   if (model == FresnelModel::ours_with_schlick_coat) model_name = "ours under a Schlick coat lobe";
   if (model == FresnelModel::schlick_clear_coat) model_name = "Filament's clear coat (Schlick)";
+  if (model == FresnelModel::schlick_metal_rough)
+    model_name = "Schlick's metal-rough, F0 blended by a metalness map";
+  if (model == FresnelModel::from_f0_metal_rough)
+    model_name = "ours per pixel from an F0 map, mixed with the dielectric by a metalness map";
   const char* quantity_name = "Fbar";
   if (quantity == FresnelQuantity::direct) quantity_name = "F";
   if (quantity == FresnelQuantity::ggx_light) quantity_name = "one GGX light";
@@ -118,16 +128,16 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
                     "{}\n#define MATC_COST_DIRECT "
                     "{}\n#define MATC_COST_GGX_LIGHT {}\n#define MATC_COST_QUAD_LIGHT {}\n#define "
                     "MATC_COST_QUAD_LIGHT_FOLLOWING {}\n#define MATC_COST_CLOSED_FORM {}\n#define "
-                    "MATC_COST_IMAGE_LIGHT {}\n#define MATC_COST_COAT {}",
+                    "MATC_COST_IMAGE_LIGHT {}\n#define MATC_COST_COAT {}\n#define "
+                    "MATC_COST_METAL_ROUGH {}",
                     flag(schlick), flag(model == FresnelModel::table),
-                    flag(model == FresnelModel::baked), flag(model == FresnelModel::from_f0),
-                    flag(reads_f0_table(model)), material_map_count(model),
-                    flag(quantity == FresnelQuantity::direct),
+                    flag(model == FresnelModel::baked), flag(from_f0), flag(reads_f0_table(model)),
+                    material_map_count(model), flag(quantity == FresnelQuantity::direct),
                     flag(quantity == FresnelQuantity::ggx_light),
                     flag(quantity == FresnelQuantity::quad_light),
                     flag(quantity == FresnelQuantity::quad_light_following),
                     flag(quantity == FresnelQuantity::preintegrated_closed_form),
-                    flag(quantity == FresnelQuantity::preintegrated), coat)},
+                    flag(quantity == FresnelQuantity::preintegrated), coat, flag(metal_rough))},
        {"library", build.library_source(ShaderLanguage::glsl)},
        {"material", build.material_source(ShaderLanguage::glsl, compiled)},
        {"name", compiled.material.name},

@@ -26,7 +26,11 @@ namespace matc {
 // F0 converted into the coat, f0ClearCoatToSurface, under the same Schlick coat lobe); ours coated
 // per pixel through an F0 table (a textured glTF metal under a coat: its coefficients in air and
 // under the coat from the table, MATC_UNDER_COAT_FROM_F0_TABLE too, into the coated snippet's
-// textured functions).
+// textured functions). glTF's metal-rough model per pixel (a base colour map and a metalness map):
+// Schlick's with F0 blended from the dielectric's 0.04 to the base colour by metalness, as engines
+// shade it (one curve); ours per pixel from the base colour (matc_coefficients_from_f0) mixed by
+// metalness with the dielectric's Schlick curve (matc_metal_rough), for image light with the
+// engine's two-channel DFG fetch for the dielectric (matc_lut's binding stands in for it).
 enum class FresnelModel {
   schlick,
   schlick_textured,
@@ -38,7 +42,9 @@ enum class FresnelModel {
   ours_coated,
   ours_with_schlick_coat,
   schlick_clear_coat,
-  f0_table_coated
+  f0_table_coated,
+  schlick_metal_rough,
+  from_f0_metal_rough
 };
 // F alone (mu from the pixel); F inside one GGX punctual light (D, height-correlated Smith V, F,
 // NdotL); image-based light: preintegrated Fbar from one table fetch times the prefiltered
