@@ -23,6 +23,7 @@
 #include <string_view>
 #include <vector>
 
+#include "matc/api/evaluation.h"
 #include "matc/api/spirv.h"
 #include "matc/api/tables.h"
 #include "matc/matc.h"
