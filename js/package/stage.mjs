@@ -21,10 +21,11 @@ if (manifest.version !== version) {
   process.exit(1);
 }
 
-// The engine integrations read builds of this version (matc-build.mjs's kMatcVersion).
-const integrationVersion = /kMatcVersion = "([^"]+)"/.exec(fs.readFileSync(path.join(here, "matc-build.mjs"), "utf8"))?.[1];
+// The engine integrations read builds of this version (integration/errors.mjs's kMatcVersion).
+const integrationVersion =
+  /kMatcVersion = "([^"]+)"/.exec(fs.readFileSync(path.join(here, "integration", "errors.mjs"), "utf8"))?.[1];
 if (integrationVersion !== version) {
-  console.error(`js/package/matc-build.mjs: kMatcVersion ${integrationVersion}, but the project is ${version}`);
+  console.error(`js/package/integration/errors.mjs: kMatcVersion ${integrationVersion}, but the project is ${version}`);
   process.exit(1);
 }
 
@@ -51,6 +52,9 @@ fs.writeFileSync(path.join(outDir, "templates.mjs"),
 for (const [folder, files] of [["three", ["matc-three.mjs", "matc-three-webgpu.mjs", "matc-gltf.mjs", "matc-gltf-webgpu.mjs",
                                            "gltf-plugin.mjs", "textures.mjs", "README.md"]],
                                ["babylon", ["matc-babylon.mjs", "matc-gltf.mjs", "README.md"]],
+                               ["integration", ["build-directory.mjs", "coefficient-rows.mjs", "errors.mjs",
+                                                "f0-table.mjs", "gltf-extension.mjs", "physical-glsl.mjs",
+                                                "shader-patches.mjs", "sources.mjs", "README.md"]],
                                ["lookdev", ["index.html", "lookdev.css", "lookdev.mjs", "lookdev-plot.mjs",
                                             "lookdev-state.mjs", "lookdev-view.mjs", "README.md"]]]) {
   fs.mkdirSync(path.join(outDir, folder));

@@ -1,0 +1,189 @@
+// glTF assets in the engines' loaders: a metal's MATC_materials_fresnel (written by `matc gltf`)
+// read into what build.loadMaterial gives, its coated snippet from a build directory or matc's
+// template, and which of an asset's materials become matc metals (gltfMetals).
+import { coatedSnippet } from "../coated-snippet.mjs";
+import { checkedFiniteRows, checkedZeroF0Rows, finiteRows } from "./coefficient-rows.mjs";
+import { MatcWebError } from "./errors.mjs";
+import { checkedF0Table } from "./f0-table.mjs";
+import { isSnippetName } from "./build-directory.mjs";
+
+// The name of the glTF vendor extension `matc gltf` writes (docs/gltf.md).
+export const kGltfFresnelExtension = "MATC_materials_fresnel";
+
+// A number of `what` in [low, high], or an error naming it.
+function checkedNumber(value, low, high, what) {
+  if (typeof value !== "number" || !(value >= low && value <= high)) {
+    throw new MatcWebError(`${what} must be a number in [${low}, ${high}]`);
+  }
+  return value;
+}
+
+// A coated metal's two-lobe snippet from its extension: the compiler's template filled with the
+// extension's values (coated-snippet.mjs), each checked here as the schema has it.
+async function extensionCoatedMaterial(build, extension, rows) {
+  const what = `${kGltfFresnelExtension}.coat`;
+  const coat = extension.coat;
+  if (typeof coat !== "object" || coat === null) throw new MatcWebError(`${what} must be an object`);
+  const rgb = (value, field) => {
+    if (!Array.isArray(value) || value.length !== 3) throw new MatcWebError(`${field} must be 3 numbers in [0, 1]`);
+    return value.map((channel) => checkedNumber(channel, 0, 1, field));
+  };
+  const under = checkedFiniteRows(coat.underCoatCoefficients, what, "underCoatCoefficients");
+  const coatRow = coat.coatCoefficients;
+  if (!Array.isArray(coatRow) || coatRow.length !== 4 || !finiteRows([coatRow])) {
+    throw new MatcWebError(`${what}: coatCoefficients (one row) must be 4 finite numbers`);
+  }
+  // The library's version: `#define MATC_VERSION n` in GLSL, `const MATC_VERSION: i32 = n;` in WGSL.
+  const versionNumber = /(?:#define MATC_VERSION|const MATC_VERSION: i32 =) (\d+)/.exec(build.library)?.[1];
+  if (!versionNumber) throw new MatcWebError(`${build.url}: its shader library does not say its MATC_VERSION`);
+  const checked = {
+    weight: checkedNumber(coat.weight, 0, 1, `${what}.weight`), ior: checkedNumber(coat.ior, 1.05, 3, `${what}.ior`),
+    roughness: checkedNumber(coat.roughness, 0, 1, `${what}.roughness`), color: rgb(coat.color, `${what}.color`),
+    underCoatCoefficients: under, coatCoefficients: coatRow,
+  };
+  // Imported when needed: the staged package's (stage.mjs writes it from templates/glsl/ and wgsl/).
+  const { kCoatedMaterialGlsl, kCoatedMaterialWgsl } = await import("../templates.mjs");
+  const language = build.language ?? "glsl";
+  const snippet = coatedSnippet(language === "wgsl" ? kCoatedMaterialWgsl : kCoatedMaterialGlsl, {
+    name: extension.name, version: build.manifest.matc_version, versionNumber, coefficients: rows, language,
+    colorSpace: String(extension.colorSpace).replace(/[^A-Za-z0-9_]/g, "_"),
+    maxError: rgb(extension.maxError, `${kGltfFresnelExtension}.maxError`), coat: checked,
+  });
+  const { coatCoefficients: _, ...materialCoat } = checked;
+  return { name: extension.name, basis: build.basis, coefficients: rows, coat: { ...materialCoat, snippet } };
+}
+
+// A glTF material's MATC_materials_fresnel (`extension`) as build.loadMaterial gives a material:
+// { name, basis, coefficients, coat }. A bare metal's coefficients are the extension's own. A
+// coated metal's two-lobe shader snippet is the build directory's when that compiled the same
+// asset (`matc -o DIR asset.glb`: its manifest lists the metal; its <name>.json and snippet,
+// checked to hold the extension's coefficients), else matc's template filled with the extension's
+// values. Throws a MatcWebError saying why it cannot be used: coefficients of another basis or
+// matc version than the build's tables, malformed members, or a build directory whose metal of
+// that name differs.
+export async function gltfExtensionMaterial(build, extension) {
+  const version = build.manifest?.matc_version;
+  if (extension?.basis !== build.basis || extension?.matcVersion !== version) {
+    throw new MatcWebError(`its ${kGltfFresnelExtension} holds coefficients of basis ${extension?.basis} from ` +
+                           `matc ${extension?.matcVersion}; the build's tables are basis ${build.basis} from matc ${version}`);
+  }
+  if (!isSnippetName(extension.name)) {
+    throw new MatcWebError(`its ${kGltfFresnelExtension}.name is not the identifier matc writes`);
+  }
+  const rows = checkedFiniteRows(extension.coefficients, kGltfFresnelExtension, "coefficients");
+  // A textured metal's per-pixel data (Schlick's curve at F0 = 0, or its F0 table), checked here.
+  const perPixel = {};
+  if (extension.zeroF0Coefficients !== undefined) {
+    perPixel.zeroF0Coefficients = checkedZeroF0Rows(extension.zeroF0Coefficients, kGltfFresnelExtension);
+  }
+  if (extension.f0Table !== undefined) {
+    perPixel.f0Table = checkedF0Table(extension.f0Table, Boolean(extension.coat), `${kGltfFresnelExtension}.f0Table`);
+  }
+  if (!extension.coat) {
+    return { name: extension.name, basis: build.basis, coefficients: rows, coat: null, ...perPixel };
+  }
+  const inDirectory = build.materialsByName &&
+                      (build.manifest.materials ?? []).some((material) => material?.name === extension.name);
+  if (!inDirectory) return { ...(await extensionCoatedMaterial(build, extension, rows)), ...perPixel };
+  const material = await build.loadMaterial(extension.name);
+  const same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
+  if (!material.coat || !same(material.coefficients, rows) ||
+      !same(material.coat.underCoatCoefficients, extension.coat.underCoatCoefficients)) {
+    throw new MatcWebError(`the build directory's ${extension.name} is not this asset's metal (its coefficients ` +
+                           "differ): compile the same asset with the same options into it");
+  }
+  return { ...material, ...perPixel };
+}
+
+// The glTF material `index` of the asset `json` alone, as a glTF asset the importer reads (a
+// material needs no other part of the asset to be compiled). Loader bookkeeping (keys starting
+// with "_", a loader's `index`) is left out.
+function gltfMaterialAsset(json, index) {
+  const { index: _, ...material } = json.materials[index];
+  return JSON.stringify({ asset: { version: "2.0" }, materials: [material], extensionsUsed: json.extensionsUsed ?? [] },
+                        (key, value) => (key.startsWith("_") ? undefined : value));
+}
+
+const isGltfMetal = (material) => (material.pbrMetallicRoughness?.metallicFactor ?? 1) > 0;
+
+// Whether a glTF metal's metalness varies from 1: a metallicFactor below 1 or a
+// metallicRoughnessTexture (whose blue channel scales it per pixel). Such a material is glTF's
+// metal-rough model per pixel: matc's metal mixed with the engine's dielectric (docs/gltf.md).
+export const isGltfMetalRough = (material) => {
+  const pbr = material.pbrMetallicRoughness ?? {};
+  return (pbr.metallicFactor ?? 1) < 1 || pbr.metallicRoughnessTexture !== undefined;
+};
+
+// What the engines' glTF loaders (three/matc-gltf.mjs, babylon/matc-gltf.mjs) make of an asset's
+// materials: `metalOf(index)` resolves to { metal (as build.loadMaterial gives it), from:
+// "extension" | "compiled", source: useMatcFresnel's }, or null for a material that stays the
+// engine's. A textured metal follows the engine's base colour (factor times texture) per pixel:
+// of Schlick's curve (no edge colour, no coat) with the source { schlick }, under an edge colour
+// or a coat with { material, f0Table }; one whose extension carries neither (compiled in another
+// working space) is shaded at its factor, with `note(index, why)`. A metal's
+// MATC_materials_fresnel is used when it fits the build; otherwise `matc` (createMatc(), when
+// given) compiles the glTF material with `compile`'s options. A metal matc cannot take gets
+// `warn(index, why)`; a non-metal nothing. Each index is resolved once.
+export function gltfMetals({ matc = null, build, compile = {}, json, warn, note = warn }) {
+  const found = new Map();
+  const textured = (index) => json.materials[index].pbrMetallicRoughness?.baseColorTexture !== undefined;
+  // `perPixel`: the extension's (or the metal's, from gltfExtensionMaterial) zeroF0Coefficients or f0Table.
+  const withSource = (index, metal, from, perPixel) => {
+    if (!textured(index)) return { metal, from, source: { material: metal } };
+    if (perPixel?.zeroF0Coefficients) {
+      return { metal, from, source: { schlick: { basis: metal.basis, zeroF0Coefficients: perPixel.zeroF0Coefficients } } };
+    }
+    if (perPixel?.f0Table) return { metal, from, source: { material: metal, f0Table: perPixel.f0Table } };
+    note(index, `its baseColorTexture is not followed (its ${kGltfFresnelExtension} has no f0Table: ` +
+                "compiled in a working space other than lin_rec709); shaded at its baseColorFactor");
+    return { metal, from, source: { material: metal } };
+  };
+  // `matc gltf` in the page: the importer decides which metals follow their texture per pixel, and
+  // writes their zeroF0Coefficients, as for an asset written offline.
+  const compileInPage = async (index) => {
+    try {
+      const asset = matc.compileGltf(gltfMaterialAsset(json, index), "asset.gltf", compile);
+      const [compiled] = asset.materials;
+      if (!compiled) return null;
+      const written = JSON.parse(new TextDecoder().decode(asset.bytes));
+      const extension = written.materials[0].extensions[kGltfFresnelExtension];
+      return withSource(index, await build.loadMaterial(compiled), "compiled", extension);
+    } catch (error) {
+      // A value matc refuses, options that do not fit the build. (Not a metal compiles to no
+      // material: the engine's material stays, silently.)
+      warn(index, error.message);
+      return null;
+    }
+  };
+  const resolve = async (index) => {
+    const material = json.materials[index];
+    const extension = material.extensions?.[kGltfFresnelExtension];
+    let refusal = null;
+    if (extension && isGltfMetal(material)) {
+      try {
+        const metal = await gltfExtensionMaterial(build, extension);
+        return withSource(index, metal, "extension", metal);
+      } catch (error) {
+        refusal = error.message;
+      }
+    }
+    if (matc) return compileInPage(index);
+    if (isGltfMetal(material)) {
+      warn(index, refusal ?? `no ${kGltfFresnelExtension} (matc gltf writes it) and no compiler in the page (matc)`);
+    }
+    return null;
+  };
+  return {
+    metalOf(index) {
+      if (!found.has(index)) found.set(index, resolve(index));
+      return found.get(index);
+    },
+  };
+}
+
+// Checks a glTF loader's options (matc optional, build required).
+export function checkGltfLoaderOptions(matc, build, what) {
+  if ((matc !== null && typeof matc?.parseMaterials !== "function") || typeof build?.loadMaterial !== "function") {
+    throw new MatcWebError(`${what} takes { build: await loadMatcBuild(...), matc?: await createMatc() }`);
+  }
+}

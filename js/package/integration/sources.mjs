@@ -1,0 +1,72 @@
+// The options and coefficient sources the integrations' useMatcFresnel takes, checked against the
+// build: areaLights, colour options, and the source's kind.
+import { checkedZeroF0Rows } from "./coefficient-rows.mjs";
+import { MatcWebError } from "./errors.mjs";
+import { checkedF0Table } from "./f0-table.mjs";
+
+// Checks the areaLights option against what a coated material takes in an integration
+// (`allowed`): the quality level's area lights take bare metals.
+export function checkCoatedAreaLights(material, areaLights, allowed = ["matc", "engine"]) {
+  if (allowed.includes(areaLights)) return;
+  const why = areaLights === "quality" ? "the quality-level area lights take bare metals"
+                                       : `its coat lobe needs matc's LTC on rect lights (areaLights "${areaLights}")`;
+  throw new MatcWebError(`${material.name} is coated: ${why}; use areaLights ` +
+                         allowed.map((value) => `"${value}"`).join(" or "));
+}
+
+// A colour option of a source (reflectivity, edgeTint): [r, g, b], one grey value, or 1 when absent.
+export function rgbOf(value) {
+  return Array.isArray(value) ? value : [value ?? 1, value ?? 1, value ?? 1];
+}
+
+// Checks the areaLights option against the values an integration supports.
+export function checkAreaLights(areaLights, allowed = ["matc", "quality", "engine"]) {
+  if (!allowed.includes(areaLights)) {
+    throw new MatcWebError(`areaLights: "${areaLights}"; allowed: ${allowed.map((value) => `"${value}"`).join(", ")}`);
+  }
+}
+
+// Checks that a source of coefficients (see the integrations' useMatcFresnel) fits the build;
+// returns its kind: "schlick", "material", "table" or "baked".
+export function sourceKind(build, source) {
+  if (source?.schlick) {
+    const { basis, zeroF0Coefficients } = source.schlick;
+    if (basis !== build.basis) {
+      throw new MatcWebError(`schlick: coefficients of basis ${basis}, the build's tables are ${build.basis}`);
+    }
+    checkedZeroF0Rows(zeroF0Coefficients, "schlick");
+    return "schlick";
+  }
+  if (source?.f0Table) {
+    if (!source.material) throw new MatcWebError("an F0 table (f0Table) comes with its { material }");
+    checkedF0Table(source.f0Table, Boolean(source.material.coat), "f0Table");
+  }
+  if (source?.material) {
+    if (source.material.basis !== build.basis) {
+      throw new MatcWebError(`${source.material.name}: coefficients of basis ${source.material.basis}, ` +
+                             `the build's tables are ${build.basis}`);
+    }
+    return source.f0Table ? "f0Table" : "material";
+  }
+  if (source?.reflectivityMap || source?.edgeTintMap) {
+    if (!source.reflectivityMap || !source.edgeTintMap) {
+      throw new MatcWebError("a textured metal needs both reflectivityMap and edgeTintMap");
+    }
+    if (!build.coefficientTable) {
+      throw new MatcWebError(`${build.url}: textured metals need the coefficient table; compile with ` +
+                             "--emit coefficient-table among the outputs");
+    }
+    return "table";
+  }
+  if (source?.baked) {
+    if (!source.baked.c2Map || !source.baked.c3Map) {
+      throw new MatcWebError("baked coefficients need c2Map and c3Map (matc bake)");
+    }
+    if (source.baked.basis && source.baked.basis !== build.basis) {
+      throw new MatcWebError(`baked coefficients of basis ${source.baked.basis}, the build's tables are ${build.basis}`);
+    }
+    return "baked";
+  }
+  throw new MatcWebError("useMatcFresnel needs { material }, { material, f0Table }, { schlick }, " +
+                         "{ reflectivityMap, edgeTintMap } or { baked }");
+}
