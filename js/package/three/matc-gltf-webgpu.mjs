@@ -39,11 +39,13 @@ export function matcGltfPlugin({ matc = null, build, compile = {}, areaLights = 
     matc, build, compile, what: "matcGltfPlugin (WebGPU)",
     make: (material, source, { metalRough, note }) => {
       if (!material.isMeshStandardMaterial) throw new MatcWebError("three.js built no MeshStandardMaterial for it");
-      // glTF's metal-rough mix per pixel is WebGLRenderer's (matc/three/gltf) so far.
-      if (metalRough) note("its metalness (partial or textured) is not mixed in WebGPURenderer yet: drawn as a full metal");
+      // glTF's metal-rough mix per pixel, but not under matc's coat (yet): a coated metal stays a
+      // full metal, with a note.
+      const coated = Boolean(source.material?.coat);
+      if (metalRough && coated) note("its metalness (partial or textured) is not mixed under a clear coat: drawn as a full metal");
       // A coated metal made from the extension carries its snippet; this build makes its functions.
       if (source.material?.coat && !source.material.coat.functions) build.withCoatFunctions(source.material);
-      return useMatcFresnel(nodeMaterialOf(material), build, source, { areaLights });
+      return useMatcFresnel(nodeMaterialOf(material), build, source, { areaLights, metalRough: metalRough && !coated });
     },
   });
   // A build of matc/three (WebGL: GLSL) passes the shared check; its metals could not draw here.

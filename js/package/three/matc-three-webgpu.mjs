@@ -12,8 +12,9 @@
 //   const gold = useMatcFresnel(new THREE.MeshPhysicalNodeMaterial({ roughness: 0.3 }), build,
 //                               { material: await build.loadMaterial("gold") });
 import * as THREE from "three/webgpu";
-import { BRDF_GGX, LTC_Evaluate, LTC_Uv, clearcoatNormalView, clearcoatRoughness, diffuseColor, float, mat3,
-         ivec2, normalView, positionView, positionViewDirection, roughness, step, texture, textureLoad, uniform, uv,
+import { BRDF_GGX, BRDF_Lambert, F_Schlick, LTC_Evaluate, LTC_Uv, clearcoatNormalView, clearcoatRoughness,
+         diffuseColor, diffuseContribution, float, mat3, ivec2, metalness, normalView, positionView,
+         positionViewDirection, roughness, specularColor, specularF90, step, texture, textureLoad, uniform, uv,
          vec3, vec4, wgsl, wgslFn } from "three/tsl";
 import { f0TableTexture, sampleTrilinearly, tableTexture } from "./textures.mjs";
 import { MatcWebError, checkAnchors, checkAreaLights, checkCoatedAreaLights, matcBuildFiles, rgbOf,
@@ -227,7 +228,13 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
   }
 
   // Image lighting: sum_i c_i bbar_i times matc's compensation (as the CPU runtime computes it).
-  computeMultiscattering(singleScatter) {
+  // With metalRough (glTF's metal-rough model), the dielectric's term (start() computes it into
+  // singleScatteringDielectric) stays three's own; three mixes the two by metalness.
+  computeMultiscattering(singleScatter, ...rest) {
+    if (this.matc.metalRough && singleScatter === this.singleScatteringDielectric) {
+      super.computeMultiscattering(singleScatter, ...rest);
+      return;
+    }
     this.matcTerms();
     singleScatter.addAssign(this.matcPreintegrated.mul(this.matcCompensation));
   }
@@ -241,6 +248,10 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
     const coat = this.matc.coat;
     const fresnel = coat ? coat.functions.baseFresnel({ ...layerRows(this.matc.rows, coat.underCoatRows), mu: dotVH })
                          : this.matc.functions.fresnel({ ...this.matc.rows, mu: dotVH });
+    if (this.matc.metalRough) {
+      this.metalRoughDirect({ irradiance: dotNL.mul(lightColor), ggx, fresnel, dotVH, reflectedLight });
+      return;
+    }
     reflectedLight.directSpecular.addAssign(
         dotNL.mul(lightColor).mul(ggx).mul(fresnel).mul(this.multiScatteringCompensation));
     if (coat) {
@@ -253,11 +264,57 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
     }
   }
 
+  // glTF's metal-rough model, punctual lights: three's dielectric lobe and matc's metal, each with
+  // its own multiple-scattering scale, mixed by metalness as matc_metal_rough does ((1 - m) times
+  // the dielectric's Schlick curve is that curve from (1 - m) F0 to specularF90 - m: three blends
+  // F90 as mix(f90, 1, m)), and three's diffuse with its fresnel_mix, as its own direct() draws it.
+  metalRoughDirect({ irradiance, ggx, fresnel, dotVH, reflectedLight }) {
+    const dielectricCompensation = specularColor.mul(this.dfg.x.add(this.dfg.y).reciprocal().sub(1.0)).add(1.0);
+    const dielectric = F_Schlick({ f0: specularColor.mul(metalness.oneMinus()), f90: specularF90.sub(metalness), dotVH })
+      .mul(dielectricCompensation);
+    const metal = fresnel.mul(this.multiScatteringCompensation).mul(metalness);
+    reflectedLight.directSpecular.addAssign(irradiance.mul(ggx).mul(dielectric.add(metal)));
+    const F = F_Schlick({ f0: specularColor, f90: specularF90, dotVH });
+    reflectedLight.directDiffuse.addAssign(irradiance.mul(BRDF_Lambert({ diffuseColor: diffuseContribution })).mul(F.oneMinus()));
+  }
+
   // Rect area lights: matc's LTC table and horizon-clipped integral times sum_i c_i bbar_i,
   // one-sided like three's (areaLights "matc"), matc's quality level ("quality"), or three's LTC
   // shape times it ("engine").
-  directRectArea({ lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1 }) {
+  directRectArea({ lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1, ltc_2 }) {
     this.matcTerms();
+    if (this.matc.metalRough) {
+      this.metalRoughRectArea({ lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1, ltc_2 });
+      return;
+    }
+    this.matcRectArea({ lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1 });
+  }
+
+  // glTF's metal-rough model, rect area lights: three's dielectric term (Hill's LTC Fresnel with
+  // the dielectric's F0 and F90, weighted by 1 - metalness as in metalRoughDirect) and its diffuse,
+  // as its own directRectArea draws them, beside matc's metal (matcRectArea) weighted by metalness.
+  metalRoughRectArea({ lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1, ltc_2 }) {
+    const N = normalView;
+    const V = positionViewDirection;
+    const P = positionView.toVar();
+    const p0 = lightPosition.add(halfWidth).sub(halfHeight);
+    const p1 = lightPosition.sub(halfWidth).sub(halfHeight);
+    const p2 = lightPosition.sub(halfWidth).add(halfHeight);
+    const p3 = lightPosition.add(halfWidth).add(halfHeight);
+    const uvLtc = LTC_Uv({ N, V, roughness });
+    const t1 = ltc_1.sample(uvLtc).toVar();
+    const t2 = ltc_2.sample(uvLtc).toVar();
+    const mInv = mat3(vec3(t1.x, 0, t1.y), vec3(0, 1, 0), vec3(t1.z, 0, t1.w)).toVar();
+    const f0 = specularColor.mul(metalness.oneMinus());
+    const dielectric = f0.mul(t2.x).add(specularF90.sub(metalness).sub(f0).mul(t2.y));
+    reflectedLight.directSpecular.addAssign(lightColor.mul(dielectric).mul(LTC_Evaluate({ N, V, P, mInv, p0, p1, p2, p3 })));
+    reflectedLight.directDiffuse.addAssign(lightColor.mul(diffuseContribution)
+      .mul(LTC_Evaluate({ N, V, P, mInv: mat3(1, 0, 0, 0, 1, 0, 0, 0, 1), p0, p1, p2, p3 })));
+    this.matcRectArea({ lightColor: lightColor.mul(metalness), lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1 });
+  }
+
+  // matc's metal under a rect area light.
+  matcRectArea({ lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1 }) {
     const p0 = lightPosition.add(halfWidth).sub(halfHeight);
     const p1 = lightPosition.sub(halfWidth).sub(halfHeight);
     const p2 = lightPosition.sub(halfWidth).add(halfHeight);
@@ -382,7 +439,11 @@ function coatOf(compiled, material, areaLights, underCoat = null) {
 // against the CPU runtime), "quality" (the same with matc's quality level: the lobe's shape and
 // the Fresnel follow the light across the lobe, docs/ltc.md; a quarter more per light) or "engine"
 // (three's LTC shape with matc's Fresnel: cheaper; docs/web-engines.md measures them).
-export function useMatcFresnel(material, build, source, { areaLights = "matc" } = {}) {
+// options.metalRough: glTF's metal-rough model per pixel (docs/gltf.md): the material keeps its
+// metalness (and metalnessNode, a glTF metal's map), and matc's metal replaces three's metal lobe
+// only, mixed with three's own dielectric by the pixel's metalness in every light path (not
+// under a matc coat).
+export function useMatcFresnel(material, build, source, { areaLights = "matc", metalRough = false } = {}) {
   checkAreaLights(areaLights);
   if (!material?.isMeshStandardNodeMaterial) {
     throw new MatcWebError("useMatcFresnel (WebGPU) takes a MeshStandardNodeMaterial or MeshPhysicalNodeMaterial");
@@ -395,15 +456,20 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc" } 
   }
   checkLightingModel();
   const { underCoat, ...rows } = coefficientRows(build, source);
+  if (metalRough && source?.material?.coat) {
+    throw new MatcWebError(`${source.material.name} is coated: metalRough mixes a bare metal with three's dielectric`);
+  }
   const coat = source?.material?.coat ? coatOf(source.material, material, areaLights, underCoat) : null;
   const matc = { rows, functions: build.functions, lut: build.lut, ltc: build.ltc, url: build.url, areaLights, coat,
-                 source };
-  material.metalness = 1;
-  material.metalnessNode = null;
+                 source, metalRough };
+  if (!metalRough) {
+    material.metalness = 1;
+    material.metalnessNode = null;
+  }
   material.setupLightingModel = () => new MatcPhysicalLightingModel(matc, material);
   material.userData.matc = matc;
   // The coefficients are this material's uniforms: no pipeline shared with another material.
-  material.customProgramCacheKey = () => `matc:${material.uuid}:${areaLights}`;
+  material.customProgramCacheKey = () => `matc:${material.uuid}:${areaLights}:${metalRough}`;
   material.needsUpdate = true;
   return material;
 }
