@@ -152,17 +152,6 @@ class Importer {
     }
     if (!in_range(field, "pbrMetallicRoughness.roughnessFactor", pbr.roughnessFactor, 0, 1)) return;
     std::vector<std::string> not_carried;
-    // The compile carries the metal; glTF's mix with the engine's dielectric is the shader's.
-    if (pbr.metallicFactor < 1)
-      not_carried.push_back(fmt::format(
-          "partial metalness (metallicFactor {}: the metal is compiled; the shader mixes "
-          "it with the engine's dielectric, matc_metal_rough)",
-          pbr.metallicFactor));
-    if (pbr.metallicRoughnessTexture.index >= 0)
-      not_carried.push_back(
-          "metallicRoughnessTexture's metalness (the metal is compiled; the shader mixes it with "
-          "the engine's dielectric per pixel, matc_metal_rough)");
-
     ordered_json material_json;
     material_json["name"] = "";
     material_json["description"] = fmt::format("glTF materials[{}] of {}", index,
@@ -175,6 +164,7 @@ class Importer {
     material_json["roughness"] = pbr.roughnessFactor;
     std::optional<ordered_json> coat;
     if (!read_coat(field, source, coat, not_carried)) return;
+    metalness_notes(pbr, coat.has_value(), not_carried);
     // A textured Schlick metal is carried per pixel (its coefficients are linear in F0); an edge
     // colour or a coat makes the curve's shape depend on F0 otherwise.
     const bool textured = pbr.baseColorTexture.index >= 0;
@@ -212,6 +202,23 @@ class Importer {
       result_.materials.back().per_pixel_f0 = per_pixel_f0;
       result_.materials.back().f0_table = textured && !per_pixel_f0;
     }
+  }
+
+  // Partial or textured metalness: the compile carries the metal, and glTF's mix with the
+  // engine's dielectric is the shader's (matc_metal_rough), except under a coat, where the loaders
+  // draw the coated metal whole.
+  static void metalness_notes(const tinygltf::PbrMetallicRoughness& pbr, bool coated,
+                              std::vector<std::string>& not_carried) {
+    const std::string how =
+        coated ? "the metal is compiled; under a clear coat it is drawn as a full metal, not mixed"
+               : "the metal is compiled; the shader mixes it with the engine's dielectric";
+    if (pbr.metallicFactor < 1)
+      not_carried.push_back(fmt::format("partial metalness (metallicFactor {}: {}{})",
+                                        pbr.metallicFactor, how,
+                                        coated ? "" : ", matc_metal_rough"));
+    if (pbr.metallicRoughnessTexture.index >= 0)
+      not_carried.push_back(fmt::format("metallicRoughnessTexture's metalness ({}{})", how,
+                                        coated ? "" : " per pixel, matc_metal_rough"));
   }
 
   // EXT_materials_specular_edge_color inside KHR_materials_specular: the specular colour times

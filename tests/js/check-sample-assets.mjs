@@ -1,0 +1,79 @@
+// Public glTF sample assets as they arrive (sample-asset-shapes.mjs: the materials of Khronos's
+// FlightHelmet, CompareMetallic and ClearCoatCarPaint, placeholder buffers and images beside them)
+// through matc as a pipeline runs it:
+//   - `matc gltf` into another folder: exit 0, every metal given MATC_materials_fresnel, the files
+//     the asset names copied beside the output byte for byte, and the Khronos glTF-Validator reports
+//     the output exactly as the input plus its information that it does not know the extension;
+//   - `matc import` and `matc -o` (compile): exit 0, one material file and one compile per metal,
+//     the notes for what is not carried (textured metalness, transmission, a coat over partial
+//     metalness) printed, nothing refused;
+//   - the npm package reads each asset (with its buffers given) to the same metals.
+//   node check-sample-assets.mjs MATC NPM_DIR
+import { spawnSync } from "node:child_process";
+import { mkdirSync, mkdtempSync, readFileSync, readdirSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { dirname, join } from "node:path";
+import validator from "gltf-validator";
+import { check, finish } from "./report.mjs";
+import { kSampleAssetShapes, writeSampleAsset } from "./sample-asset-shapes.mjs";
+
+const [matc, npmDir] = process.argv.slice(2);
+const kExtension = "MATC_materials_fresnel";
+
+const matcRun = (args) => spawnSync(matc, args, { encoding: "utf8" });
+
+async function validated(path) {
+  return validator.validateBytes(new Uint8Array(readFileSync(path)), {
+    uri: path, maxIssues: 1000,
+    externalResourceFunction: async (uri) => new Uint8Array(readFileSync(join(dirname(path), decodeURIComponent(uri)))),
+  });
+}
+const messages = (report) => report.issues.messages
+  .map((m) => `${m.code} ${(m.pointer ?? "").replace(/^\/extensionsUsed\/\d+$/, "/extensionsUsed")}`).sort();
+
+const { createMatc } = await import(join(npmDir, "index.mjs"));
+const wasm = await createMatc();
+const dir = mkdtempSync(join(tmpdir(), "matc-sample-assets-"));
+let metals = 0;
+try {
+  for (const shape of kSampleAssetShapes) {
+    const folder = join(dir, shape.name);
+    mkdirSync(folder);
+    const asset = writeSampleAsset(shape, folder);
+    const output = join(dir, "out", shape.name, `${shape.name}.gltf`);
+    const written = matcRun(["gltf", asset, "-o", output]);
+    check(written.status === 0, `${shape.name}: matc gltf: exit ${written.status}: ${written.stderr}`);
+    if (written.status !== 0) continue;
+    const json = JSON.parse(readFileSync(output, "utf8"));
+    const carrying = json.materials.filter((material) => material.extensions?.[kExtension]).length;
+    check(carrying === shape.metals, `${shape.name}: ${carrying} metals carry ${kExtension}, not ${shape.metals}`);
+    metals += carrying;
+    for (const file of [...shape.buffers.map(([uri]) => uri), ...shape.images]) {
+      check(Buffer.compare(readFileSync(join(folder, file)), readFileSync(join(dirname(output), file))) === 0,
+            `${shape.name}: ${file} is not copied beside the output byte for byte`);
+    }
+    const [before, after] = [await validated(asset), await validated(output)];
+    const added = messages(after).filter((m) => !messages(before).includes(m));
+    check(after.issues.numErrors === before.issues.numErrors && added.length === 1 &&
+          added[0].startsWith("UNSUPPORTED_EXTENSION"),
+          `${shape.name}: the validator's findings beyond the input's: ${added.join("; ")} ` +
+          `(errors ${before.issues.numErrors} -> ${after.issues.numErrors})`);
+    // The importer and the compile, as a pipeline runs them.
+    const imported = matcRun(["import", "-o", join(dir, "materials", shape.name), asset]);
+    check(imported.status === 0 && readdirSync(join(dir, "materials", shape.name)).length === shape.metals,
+          `${shape.name}: matc import: exit ${imported.status}: ${imported.stderr}`);
+    const compiled = matcRun(["-q", "-o", join(dir, "build", shape.name), "--emit", "json", asset]);
+    check(compiled.status === 0, `${shape.name}: matc -o: exit ${compiled.status}: ${compiled.stderr}`);
+    // The npm package, the asset's buffers given as the files beside it.
+    const files = Object.fromEntries(shape.buffers.map(([uri]) => [uri, new Uint8Array(readFileSync(join(folder, uri)))]));
+    const parsed = wasm.parseMaterials(readFileSync(asset, "utf8"), `${shape.name}.gltf`, { files });
+    check(parsed.length === shape.metals, `${shape.name}: the npm package reads ${parsed.length} metals`);
+  }
+  check(metals === 8, `${metals} metals written`);
+  console.log(`${kSampleAssetShapes.length} public sample assets' materials (${kSampleAssetShapes.map((s) => s.name).join(", ")}): ` +
+              `${metals} metals through matc gltf (copied beside an output in another folder, glTF-Validator findings ` +
+              `unchanged but for the vendor extension), matc import, matc -o and the npm package; nothing refused`);
+} finally {
+  rmSync(dir, { recursive: true, force: true });
+}
+finish();
