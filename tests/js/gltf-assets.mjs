@@ -116,9 +116,9 @@ export const kMetalRough = {
 // metal_rough.glb: glTF's metal-rough model as artists paint it, one material per metalness:
 // a metallicRoughnessTexture (green 255: roughness at its factor; blue the metalness) on the
 // textured ones, a metallicFactor of 0.3 on one, and a plain full metal (factor 1, no texture).
-export async function metalRoughAsset(path) {
+export async function metalRoughAsset(path, { baseColor = kMetalRough.baseColor } = {}) {
   const document = new Document();
-  const material = (name) => document.createMaterial(name).setBaseColorFactor([...kMetalRough.baseColor, 1])
+  const material = (name) => document.createMaterial(name).setBaseColorFactor([...baseColor, 1])
     .setRoughnessFactor(kMetalRough.roughness).setMetallicFactor(1);
   const materials = Object.entries(kMetalRough.textured).map(([name, blue]) => material(name).setMetallicRoughnessTexture(
     document.createTexture(name).setMimeType("image/png")

@@ -28,8 +28,13 @@ export { MatcWebError };
 export const kTestedBabylonVersions = ["9.31.0"];
 
 // This pixel's coefficients and its texel of matc_lut at (NdotV, roughness) as Babylon shades them.
-const kPixelSetup = pixelSetupGlsl({ uv: "vMainUV1", baseColour: "surfaceAlbedo.rgb", roughness: "roughness",
-                                     ndotv: "absEps(dot(normalW, viewDirectionW))", coatRoughness: "vClearCoatParams.y" });
+const kPixelSetup = `${pixelSetupGlsl({ uv: "vMainUV1", baseColour: "surfaceAlbedo.rgb", roughness: "roughness",
+                                        ndotv: "absEps(dot(normalW, viewDirectionW))", coatRoughness: "vClearCoatParams.y" })}
+#ifdef MATC_METAL_ROUGH
+	matc_dielectric_energy = vec3(1.0);
+	matc_metal_energy = vec3(1.0);
+#endif
+`;
 
 // Declarations: the matc library, the tables, the globals the patched light paths read (the
 // vector uniforms come through the plugin's uniform block), the lobes' functions (a coated
@@ -38,6 +43,15 @@ const kDeclarations = (library, material) => `
 #ifdef MATC_FRESNEL
 ${declarationsGlsl(library, { uniforms: false })}
 ${lobesGlsl(material)}
+#ifdef MATC_METAL_ROUGH
+// glTF's metal-rough model per pixel (docs/gltf.md): Babylon's own dielectric lobe mixed with
+// matc's metal by metallic, each with its own energy conservation (Babylon scales the sum by one
+// factor of its blended F0; matc_metal_rough takes each lobe with its own, set before the lights).
+// The dielectric's F90, which Babylon blends with the metal's, from its reflectivity block.
+vec3 matc_dielectric_f90;
+vec3 matc_dielectric_energy;
+vec3 matc_metal_energy;
+#endif
 // A rect area light of Babylon's (centre, half width, half height; one-sided like Babylon's):
 // its corners, or false where P is behind it.
 bool matc_rect_corners(vec3 P, vec3 centre, vec3 halfWidth, vec3 halfHeight, out vec3 q0, out vec3 q1, out vec3 q2, out vec3 q3) {
@@ -96,7 +110,10 @@ const kPatches = [
   {
     source: "lightFragment",
     anchor: "coloredFresnel=fresnelSchlickGGX(preInfo.VdotH,clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90);",
-    replacement: "coloredFresnel=matc_base_fresnel(preInfo.VdotH);",
+    replacement: "\n#ifdef MATC_METAL_ROUGH\n" +
+                 "coloredFresnel=matc_metal_rough(fresnelSchlickGGX(preInfo.VdotH,reflectivityOut.dielectricColorF0,matc_dielectric_f90)*" +
+                 "matc_dielectric_energy,matc_base_fresnel(preInfo.VdotH)*matc_metal_energy,reflectivityOut.metallic);\n" +
+                 "#else\ncoloredFresnel=matc_base_fresnel(preInfo.VdotH);\n#endif\n",
     what: "punctual lights: fresnelSchlickGGX(VdotH, R0, R90) becomes matc_fresnel(c, VdotH) (a coated " +
           "material's base lobe: the metal through the coat)",
   },
@@ -128,6 +145,10 @@ const kPatches = [
                  "#else\n" +
                  "info.specular=light$1.vLightSpecular.rgb*matc_rect_area_light(normalW,viewDirectionW,vPositionW,roughness," +
                  "light$1.vLightData.xyz,light$1.vLightWidth.xyz,light$1.vLightHeight.xyz);\n#endif\n" +
+                 "#ifdef MATC_METAL_ROUGH\n" +
+                 "info.specular=matc_metal_rough(computeAreaSpecularLighting(preInfo,light$1.vLightSpecular.rgb,reflectivityOut.dielectricColorF0," +
+                 "matc_dielectric_f90)*matc_dielectric_energy,info.specular*matc_metal_energy,reflectivityOut.metallic);\n" +
+                 "#endif\n" +
                  "#ifdef MATC_COATED\n" +
                  "info.clearCoat=vec4(light$1.vLightSpecular.rgb*matc_rect_coat_light(normalW,viewDirectionW,vPositionW," +
                  "clearcoatOut.clearCoatRoughness,light$1.vLightData.xyz,light$1.vLightWidth.xyz,light$1.vLightHeight.xyz),1.0);\n" +
@@ -139,8 +160,16 @@ const kPatches = [
   {
     source: "pbrBlockReflectance",
     anchor: "vec3 colorSpecularEnvironmentReflectance=getReflectanceFromBRDFLookup(clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90,environmentBrdf);",
-    replacement: "vec3 colorSpecularEnvironmentReflectance=matc_base_preintegrated();",
-    what: "image lighting: the BRDF lookup's R0/R90 mix becomes sum_i c_i bbar_i",
+    replacement: "\n#ifdef MATC_METAL_ROUGH\n" +
+                 "#ifdef MS_BRDF_ENERGY_CONSERVATION\n" +
+                 "matc_dielectric_energy=getEnergyConservationFactor(reflectivityOut.dielectricColorF0,environmentBrdf);\n" +
+                 "matc_metal_energy=matc_base_compensation();\n" +
+                 "#endif\n" +
+                 "vec3 colorSpecularEnvironmentReflectance=matc_metal_rough(getReflectanceFromBRDFLookup(reflectivityOut.dielectricColorF0," +
+                 "matc_dielectric_f90,environmentBrdf)*matc_dielectric_energy,matc_base_preintegrated()*matc_metal_energy,reflectivityOut.metallic);\n" +
+                 "#else\nvec3 colorSpecularEnvironmentReflectance=matc_base_preintegrated();\n#endif\n",
+    what: "image lighting: the BRDF lookup's R0/R90 mix becomes sum_i c_i bbar_i (with metalRough, mixed by " +
+          "metallic with Babylon's own dielectric lookup, each lobe with its energy conservation)",
   },
   {
     source: "pbrBlockReflectance",
@@ -152,9 +181,17 @@ const kPatches = [
   {
     source: "pbrBlockFinalLitComponents",
     anchor: "vec3 coloredEnergyConservationFactor=getEnergyConservationFactor(clearcoatOut.specularEnvironmentR0,environmentBrdf);",
-    replacement: "vec3 coloredEnergyConservationFactor=matc_base_compensation();",
+    replacement: "\n#ifdef MATC_METAL_ROUGH\nvec3 coloredEnergyConservationFactor=vec3(1.0);\n#else\n" +
+                 "vec3 coloredEnergyConservationFactor=matc_base_compensation();\n#endif\n",
     what: "energy conservation of the specular lobe (direct and image lighting): F0 and E from matc (a coated " +
-          "material's: the metal's F0 under the coat)",
+          "material's: the metal's F0 under the coat; with metalRough, 1: each lobe carries its own)",
+  },
+  {
+    source: "pbrBlockReflectivity",
+    anchor: "outParams.colorReflectanceF90=mix(dielectricColorF90,conductorColorF90,outParams.metallic);",
+    replacement: "\n#ifdef MATC_METAL_ROUGH\nmatc_dielectric_f90=dielectricColorF90;\n#endif\n" +
+                 "outParams.colorReflectanceF90=mix(dielectricColorF90,conductorColorF90,outParams.metallic);\n",
+    what: "with metalRough, the dielectric's F90 kept for its own lobe (Babylon blends it with the metal's)",
   },
   {
     source: "pbrBlockClearcoat",
@@ -191,7 +228,8 @@ function shaderRegex(anchor) {
 
 function shaderSources() {
   return { pbrPixelShader: ShaderStore.ShadersStore.pbrPixelShader,
-           ...Object.fromEntries(["lightFragment", "pbrBlockReflectance", "pbrBlockFinalLitComponents", "pbrBlockClearcoat"]
+           ...Object.fromEntries(["lightFragment", "pbrBlockReflectance", "pbrBlockFinalLitComponents", "pbrBlockClearcoat",
+                                  "pbrBlockReflectivity"]
              .map((name) => [name, ShaderStore.IncludesShadersStore[name]])) };
 }
 
@@ -232,7 +270,7 @@ function f0TableTexture(table, scene) {
 }
 
 // Checks a build and a source of coefficients against Babylon's shaders; what the plugin keeps.
-function preparePlugin(material, build, source, areaLights) {
+function preparePlugin(material, build, source, areaLights, metalRough) {
   checkAreaLights(areaLights);
   if (!build || typeof build.library !== "string" || !build.lut) {
     throw new MatcWebError("useMatcFresnel needs the result of loadMatcBuild");
@@ -247,10 +285,17 @@ function preparePlugin(material, build, source, areaLights) {
   const coat = source.material?.coat;
   // Babylon's rect lights have no coat lobe of their own: matc's LTC draws it.
   if (coat) checkCoatedAreaLights(source.material, areaLights, ["matc"]);
+  if (metalRough && coat) {
+    throw new MatcWebError(`${source.material.name} is coated: metalRough mixes a bare metal with Babylon's dielectric`);
+  }
+  if (metalRough && material.brdf?.conductorSpecularModel === Constants.MATERIAL_CONDUCTOR_SPECULAR_MODEL_OPENPBR) {
+    throw new MatcWebError("metalRough: the material uses Babylon's OpenPBR conductor model (an edge colour), " +
+                           "which mixes its own dielectric already");
+  }
   const colour = (value) => new Vector3(...rgbOf(value));
   const rows = kind === "material" ? source.material.coefficients : kind === "schlick" ? source.schlick.zeroF0Coefficients : null;
   const f0Table = kind === "f0Table" ? f0TableTexture(source.f0Table, material.getScene()) : null;
-  return { build, source, kind, areaLights, f0Table, coat, coatId: coat ? coatIdOf(source.material.coat.snippet) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
+  return { build, source, kind, areaLights, metalRough, f0Table, coat, coatId: coat ? coatIdOf(source.material.coat.snippet) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
            coefficients: rows && rows.map((row) => new Vector4(...row)) };
 }
 
@@ -273,14 +318,14 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
   // { material, f0Table } (the same under an edge colour or a coat, from its F0 table),
   // { reflectivityMap, edgeTintMap, reflectivity?, edgeTint? } (through the coefficient table) or
   // { baked: { c2Map, c3Map, f0Map? } }.
-  constructor(material, build, source, areaLights = "matc") {
-    pendingPlugin = preparePlugin(material, build, source, areaLights);
+  constructor(material, build, source, areaLights = "matc", metalRough = false) {
+    pendingPlugin = preparePlugin(material, build, source, areaLights, metalRough);
     try {
       super(material, "MatcFresnel", 200,
             { MATC_FRESNEL: false, MATC_SOURCE_UNIFORM: false, MATC_SOURCE_SCHLICK: false,
               MATC_SOURCE_F0_TABLE: false, MATC_SOURCE_TABLE: false,
               MATC_SOURCE_BAKED: false, MATC_BAKED_F0: false, MATC_ENGINE_LTC: false,
-              MATC_QUALITY_LTC: false, MATC_COATED: false, MATC_COAT_ID: 0 });
+              MATC_QUALITY_LTC: false, MATC_COATED: false, MATC_COAT_ID: 0, MATC_METAL_ROUGH: false });
       Object.assign(this, pendingPlugin);
     } finally {
       pendingPlugin = null;
@@ -308,6 +353,7 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
     defines.MATC_QUALITY_LTC = this.areaLights === "quality";
     defines.MATC_COATED = Boolean(this.coat);
     defines.MATC_COAT_ID = this.coatId;
+    defines.MATC_METAL_ROUGH = Boolean(this.metalRough);
     if (this.kind === "table" || this.kind === "baked") {
       defines._needUVs = true;
       defines.MAINUV1 = true;
@@ -377,14 +423,18 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
 // (default: matc's LTC table and horizon-clipped integral), "quality" (the same with matc's
 // quality level: the lobe's shape and the Fresnel follow the light across the lobe, docs/ltc.md)
 // or "engine" (Babylon's LTC shape with matc's Fresnel: cheaper; needs Babylon's LTC tables).
-export function useMatcFresnel(material, build, source, { areaLights = "matc" } = {}) {
+// options.metalRough: glTF's metal-rough model per pixel (docs/gltf.md): the material keeps its
+// metallic and metallicTexture, and matc's metal replaces Babylon's metal lobe only, mixed with
+// Babylon's own dielectric by the pixel's metallic in every light path (not under a matc coat,
+// nor under Babylon's OpenPBR conductor model).
+export function useMatcFresnel(material, build, source, { areaLights = "matc", metalRough = false } = {}) {
   if (!material?.getClassName || !["PBRMaterial"].includes(material.getClassName())) {
     throw new MatcWebError("useMatcFresnel takes a Babylon.js PBRMaterial");
   }
   if (material.iridescence?.isEnabled) {
     throw new MatcWebError("iridescence replaces the base Fresnel; it cannot be combined with matc's");
   }
-  material.matcFresnel = new MatcFresnelPlugin(material, build, source, areaLights);
+  material.matcFresnel = new MatcFresnelPlugin(material, build, source, areaLights, metalRough);
   const coat = material.matcFresnel.coat;
   if (coat) {
     // The coat's lobe and layering are the compiled material's (weight, index, colour, roughness):
@@ -392,7 +442,9 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc" } 
     Object.assign(material.clearCoat, { isEnabled: true, intensity: 1, roughness: coat.roughness,
                                         indexOfRefraction: coat.ior, isTintEnabled: false });
   }
-  material.metallic = 1;
-  material.metallicTexture = null;
+  if (!metalRough) {
+    material.metallic = 1;
+    material.metallicTexture = null;
+  }
   return material;
 }
