@@ -96,9 +96,9 @@ TEST(DeviceValidation, CoefficientTablePathMatchesTheCpuRuntime) {
       ASSERT_EQ(result.paths.size(), 2u);
       EXPECT_TRUE(result.passed()) << matc::runtime::basis_name(basis);
       for (const matc::PathResult& path : result.paths) {
-        ASSERT_EQ(path.quantities.size(), 7u);
+        ASSERT_EQ(path.quantities.size(), 8u);
         for (const char* label : {"F(r, g)", "Fbar(r, g)", "F(n, k)", "F(baked)", "F(from F0)",
-                                  "F(F0 table)", "F(F0 table, under a coat)"})
+                                  "F(F0 table)", "F(F0 table, under a coat)", "F(metal-rough)"})
           EXPECT_LE(path.quantity(label).max_abs, 1e-4) << label;
       }
       EXPECT_TRUE(validator.layer_messages().empty());
