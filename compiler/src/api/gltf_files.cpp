@@ -34,23 +34,6 @@ std::vector<std::string> external_files(const GltfAsset& asset) {
   return files;
 }
 
-// Whether the regular files `a` and `b` hold the same bytes.
-bool same_bytes(const fs::path& a, const fs::path& b) {
-  std::error_code error_a, error_b;
-  if (fs::file_size(a, error_a) != fs::file_size(b, error_b) || error_a || error_b) return false;
-  std::ifstream in_a(a, std::ios::binary), in_b(b, std::ios::binary);
-  std::string block_a(1 << 16, '\0'), block_b(1 << 16, '\0');
-  while (in_a && in_b) {
-    in_a.read(block_a.data(), static_cast<std::streamsize>(block_a.size()));
-    in_b.read(block_b.data(), static_cast<std::streamsize>(block_b.size()));
-    if (in_a.gcount() != in_b.gcount() ||
-        block_a.compare(0, static_cast<std::size_t>(in_a.gcount()), block_b, 0,
-                        static_cast<std::size_t>(in_b.gcount())) != 0)
-      return false;
-  }
-  return in_a.eof() && in_b.eof();
-}
-
 // Why a copy of `source` may not go to `target`: something else is there (a file with other
 // bytes, a link, a folder: another asset's, maybe, which matc did not write). Empty when nothing
 // is there, or the same bytes are.
@@ -59,7 +42,7 @@ std::string copy_target_problem(const fs::path& source, const fs::path& target) 
   const fs::file_status status = fs::symlink_status(target, error);
   if (error || status.type() == fs::file_type::not_found) return {};
   if (status.type() != fs::file_type::regular) return "exists and is not a plain file";
-  return same_bytes(source, target) ? std::string() : "exists with other bytes";
+  return same_file_contents(source, target) ? std::string() : "exists with other bytes";
 }
 
 // Why the asset may not be written to `output` (nothing written then); empty when it may.
@@ -130,9 +113,12 @@ GltfFilesCopied write_gltf(const GltfAsset& asset, std::string_view input,
   if (!output_path.parent_path().empty()) fs::create_directories(output_path.parent_path());
   if (copies) {
     for (const std::string& file : files) {
-      const bool written =
-          copy_beside_output(folder_of(input_path) / file, folder_of(output_path) / file) ==
-          matc::WriteOutcome::written;
+      // A file already there holds the same bytes (output_problem compared it): not read again.
+      const fs::path target = folder_of(output_path) / file;
+      std::error_code error;
+      const bool there = fs::symlink_status(target, error).type() == fs::file_type::regular;
+      const bool written = !there && copy_beside_output(folder_of(input_path) / file, target) ==
+                                         matc::WriteOutcome::written;
       (written ? copied.written : copied.unchanged).push_back(file);
     }
   }

@@ -98,12 +98,15 @@ ExclusiveFile create_exclusive_file(const std::filesystem::path& directory, std:
   return {path, descriptor};
 }
 
+int link_open_file(int descriptor, const std::filesystem::path& name) {
+  const std::string open_file = fmt::format("/proc/self/fd/{}", descriptor);
+  return ::linkat(AT_FDCWD, open_file.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW);
+}
+
 std::filesystem::path link_exclusive_file(int descriptor, const std::filesystem::path& directory,
                                           std::string_view stem) {
-  // Through /proc's link to the descriptor: linkat(AT_EMPTY_PATH) needs CAP_DAC_READ_SEARCH.
-  const std::string open_file = fmt::format("/proc/self/fd/{}", descriptor);
   return make_exclusive_name(directory, stem, [&](const std::filesystem::path& name) {
-    return ::linkat(AT_FDCWD, open_file.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW);
+    return link_open_file(descriptor, name);
   });
 }
 

@@ -17,6 +17,10 @@ struct ExclusiveFile {
   int descriptor = -1;  // open for reading and writing; the caller closes it
 };
 ExclusiveFile create_exclusive_file(const std::filesystem::path& directory, std::string_view stem);
+// Links the open file `descriptor` (an O_TMPFILE, which has no name) as `name`, through
+// /proc/self/fd (linkat with AT_EMPTY_PATH needs CAP_DAC_READ_SEARCH): 0, or -1 with errno
+// (EEXIST where something has that name).
+int link_open_file(int descriptor, const std::filesystem::path& name);
 // Gives the open file `descriptor` (an O_TMPFILE, which has no name) a new name as
 // create_exclusive_file would make it, exclusively and registered the same way; returns it.
 // Throws std::runtime_error when it cannot.

@@ -34,13 +34,6 @@ int open_unnamed(const std::filesystem::path& directory) {
 #endif
 }
 
-// Links the unnamed `descriptor` as `target` when nothing is there; false when something is (or
-// the link cannot be made this way), and the caller goes through a temporary name.
-bool link_where_absent(int descriptor, const std::filesystem::path& target) {
-  const std::string open_file = fmt::format("/proc/self/fd/{}", descriptor);
-  return ::linkat(AT_FDCWD, open_file.c_str(), AT_FDCWD, target.c_str(), AT_SYMLINK_FOLLOW) == 0;
-}
-
 }  // namespace
 
 PendingFile PendingFile::create(const std::filesystem::path& directory, std::string_view name) {
@@ -75,7 +68,9 @@ void PendingFile::publish(const std::filesystem::path& target) {
     discard();
     throw std::runtime_error(fmt::format("cannot replace '{}': {}", target.string(), reason));
   };
-  if (!named() && link_where_absent(descriptor_, target)) {
+  // An absent target takes the name directly; where something has it (or the link fails), the
+  // file goes through a temporary name renamed over it.
+  if (!named() && link_open_file(descriptor_, target) == 0) {
     discard();  // named now: closing the descriptor leaves the file
     return;
   }

@@ -1,5 +1,6 @@
 #include "pipeline/atomic_file.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -207,6 +208,14 @@ std::vector<WriteOutcome> write_files_atomically(const std::filesystem::path& di
   for (std::size_t i = 0; i < files.size(); ++i)
     if (pending[i]) pending[i]->publish(directory / files[i].name);
   return outcomes;
+}
+
+bool same_file_contents(const std::filesystem::path& a, const std::filesystem::path& b) {
+  const int descriptor = ::open(a.c_str(), O_RDONLY | O_CLOEXEC);
+  if (descriptor < 0) return false;
+  const bool same = same_contents(descriptor, b);
+  ::close(descriptor);
+  return same;
 }
 
 std::string path_identity(const std::filesystem::path& path) {

@@ -32,6 +32,10 @@ WriteOutcome write_file_atomically(const std::filesystem::path& path,
 std::vector<WriteOutcome> write_files_atomically(const std::filesystem::path& directory,
                                                  std::span<const OutputFile> files);
 
+// Whether the regular file `a` and the file at `b` hold the same bytes, read a block at a time (a
+// symlink at `b` never does: it is not read).
+bool same_file_contents(const std::filesystem::path& a, const std::filesystem::path& b);
+
 // The canonical form of a path (as far as it exists), for "would this output overwrite an
 // input?" checks.
 std::string path_identity(const std::filesystem::path& path);
