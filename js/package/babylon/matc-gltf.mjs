@@ -21,7 +21,7 @@
 import { registerGLTFExtension, unregisterGLTFExtension }
   from "@babylonjs/loaders/glTF/2.0/glTFLoaderExtensionRegistry.js";
 import { Constants } from "@babylonjs/core/Engines/constants.js";
-import { checkGltfLoaderOptions, gltfMetals, isGltfMetalRough } from "../matc-build.mjs";
+import { checkGltfLoaderOptions, gltfMetals } from "../matc-build.mjs";
 import { useMatcFresnel } from "./matc-babylon.mjs";
 
 // The loader extension's name in Babylon's registry (not a glTF extension: it runs on every asset).
@@ -56,17 +56,16 @@ class MatcGltfLoaderExtension {
     return this.loader.loadMaterialPropertiesAsync(context, material, babylonMaterial).then(async () => {
       const found = await this.metals.metalOf(material.index);
       if (!found) return;
-      // glTF's metal-rough mix per pixel, but not under matc's coat nor Babylon's OpenPBR conductor
-      // model (an edge colour, which mixes its dielectric itself): there a full metal, with a note.
+      // glTF's metal-rough mix per pixel (gltfMetals leaves out coated metals), but not under
+      // Babylon's OpenPBR conductor model (an edge colour, which mixes its dielectric itself):
+      // there a full metal, with a note.
       const openPbr = babylonMaterial.brdf?.conductorSpecularModel === Constants.MATERIAL_CONDUCTOR_SPECULAR_MODEL_OPENPBR;
-      const blocked = found.source.material?.coat ? "under a clear coat" : openPbr ? "under an edge colour" : "";
-      const metalRough = isGltfMetalRough(material);
-      if (metalRough && blocked) {
-        this.note(material.index, `its metalness (partial or textured) is not mixed ${blocked}: drawn as a full metal`);
+      if (found.metalRough && openPbr) {
+        this.note(material.index, "its metalness (partial or textured) is not mixed under an edge colour: drawn as a full metal");
       }
       try {
         useMatcFresnel(babylonMaterial, this.build, found.source,
-                       { areaLights: this.areaLights, metalRough: metalRough && !blocked });
+                       { areaLights: this.areaLights, metalRough: found.metalRough && !openPbr });
         babylonMaterial.metadata = { ...babylonMaterial.metadata, matc: { gltfMaterial: material.index, from: found.from } };
         this.made.push(babylonMaterial);
       } catch (error) {

@@ -116,7 +116,8 @@ export const isGltfMetalRough = (material) => {
 
 // What the engines' glTF loaders (three/matc-gltf.mjs, babylon/matc-gltf.mjs) make of an asset's
 // materials: `metalOf(index)` resolves to { metal (as build.loadMaterial gives it), from:
-// "extension" | "compiled", source: useMatcFresnel's }, or null for a material that stays the
+// "extension" | "compiled", source: useMatcFresnel's, metalRough: useMatcFresnel's option, set for
+// a bare metal whose metalness is partial or textured }, or null for a material that stays the
 // engine's. A textured metal follows the engine's base colour (factor times texture) per pixel:
 // of Schlick's curve (no edge colour, no coat) with the source { schlick }, under an edge colour
 // or a coat with { material, f0Table }; one whose extension carries neither (compiled in another
@@ -128,15 +129,24 @@ export function gltfMetals({ matc = null, build, compile = {}, json, warn, note 
   const found = new Map();
   const textured = (index) => json.materials[index].pbrMetallicRoughness?.baseColorTexture !== undefined;
   // `perPixel`: the extension's (or the metal's, from gltfExtensionMaterial) zeroF0Coefficients or f0Table.
-  const withSource = (index, metal, from, perPixel) => {
-    if (!textured(index)) return { metal, from, source: { material: metal } };
+  const sourceOf = (index, metal, perPixel) => {
+    if (!textured(index)) return { material: metal };
     if (perPixel?.zeroF0Coefficients) {
-      return { metal, from, source: { schlick: { basis: metal.basis, zeroF0Coefficients: perPixel.zeroF0Coefficients } } };
+      return { schlick: { basis: metal.basis, zeroF0Coefficients: perPixel.zeroF0Coefficients } };
     }
-    if (perPixel?.f0Table) return { metal, from, source: { material: metal, f0Table: perPixel.f0Table } };
+    if (perPixel?.f0Table) return { material: metal, f0Table: perPixel.f0Table };
     note(index, `its baseColorTexture is not followed (its ${kGltfFresnelExtension} has no f0Table: ` +
                 "compiled in a working space other than lin_rec709); shaded at its baseColorFactor");
-    return { metal, from, source: { material: metal } };
+    return { material: metal };
+  };
+  // metalRough: glTF's metal-rough mix per pixel, but not under matc's coat (yet): a coated metal
+  // stays a full metal, with a note.
+  const withSource = (index, metal, from, perPixel) => {
+    const metalRough = isGltfMetalRough(json.materials[index]);
+    if (metalRough && metal.coat) {
+      note(index, "its metalness (partial or textured) is not mixed under a clear coat: drawn as a full metal");
+    }
+    return { metal, from, source: sourceOf(index, metal, perPixel), metalRough: metalRough && !metal.coat };
   };
   // `matc gltf` in the page: the importer decides which metals follow their texture per pixel, and
   // writes their zeroF0Coefficients, as for an asset written offline.

@@ -5,11 +5,11 @@
 // uses it, and the parser's associations follow. Non-metals, and metals matc cannot follow, keep
 // three.js's material (the latter with a console warning that says why). Imports no three.js, so
 // that a page loads the one its renderer needs.
-import { checkGltfLoaderOptions, gltfMetals, isGltfMetalRough } from "../matc-build.mjs";
+import { checkGltfLoaderOptions, gltfMetals } from "../matc-build.mjs";
 
-// make(material, source, { metalRough }) -> the matc material (useMatcFresnel's result);
-// metalRough: the glTF material's metalness is partial or textured (glTF's metal-rough model per
-// pixel, isGltfMetalRough). `what` names the plugin in the options' error.
+// make(material, source, metalRough) -> the matc material (useMatcFresnel's result); metalRough:
+// glTF's metal-rough model per pixel (gltfMetals decides it). `what` names the plugin in the
+// options' error.
 export function threeGltfPlugin({ matc, build, compile, what, make }) {
   checkGltfLoaderOptions(matc, build, what);
   return (parser) => ({
@@ -37,8 +37,7 @@ export function threeGltfPlugin({ matc, build, compile, what, make }) {
         const found = await metals.metalOf(index);
         if (!found) continue;
         try {
-          const metalRough = isGltfMetalRough(parser.json.materials[index]);
-          const matcMaterial = make(material, found.source, { metalRough, note: (message) => note(index, message) });
+          const matcMaterial = make(material, found.source, found.metalRough);
           Object.assign(matcMaterial.userData.matc, { gltfMaterial: index, from: found.from });
           if (matcMaterial !== material) {
             for (const { object, slot } of places) {

@@ -37,15 +37,11 @@ function nodeMaterialOf(material) {
 export function matcGltfPlugin({ matc = null, build, compile = {}, areaLights = "matc" }) {
   const plugin = threeGltfPlugin({
     matc, build, compile, what: "matcGltfPlugin (WebGPU)",
-    make: (material, source, { metalRough, note }) => {
+    make: (material, source, metalRough) => {
       if (!material.isMeshStandardMaterial) throw new MatcWebError("three.js built no MeshStandardMaterial for it");
-      // glTF's metal-rough mix per pixel, but not under matc's coat (yet): a coated metal stays a
-      // full metal, with a note.
-      const coated = Boolean(source.material?.coat);
-      if (metalRough && coated) note("its metalness (partial or textured) is not mixed under a clear coat: drawn as a full metal");
       // A coated metal made from the extension carries its snippet; this build makes its functions.
       if (source.material?.coat && !source.material.coat.functions) build.withCoatFunctions(source.material);
-      return useMatcFresnel(nodeMaterialOf(material), build, source, { areaLights, metalRough: metalRough && !coated });
+      return useMatcFresnel(nodeMaterialOf(material), build, source, { areaLights, metalRough });
     },
   });
   // A build of matc/three (WebGL: GLSL) passes the shared check; its metals could not draw here.

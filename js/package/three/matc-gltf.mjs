@@ -31,13 +31,6 @@ import { useMatcFresnel } from "./matc-three.mjs";
 // glTF's colours are linear Rec.709); options.areaLights: as useMatcFresnel takes it.
 export function matcGltfPlugin({ matc = null, build, compile = {}, areaLights = "matc" }) {
   return threeGltfPlugin({ matc, build, compile, what: "matcGltfPlugin",
-                           make: (material, source, { metalRough, note }) => {
-                             // glTF's metal-rough mix per pixel, but not under matc's coat (yet): a coated
-                             // metal stays a full metal, with a note.
-                             const coated = Boolean(source.material?.coat);
-                             if (metalRough && coated) {
-                               note("its metalness (partial or textured) is not mixed under a clear coat: drawn as a full metal");
-                             }
-                             return useMatcFresnel(material, build, source, { areaLights, metalRough: metalRough && !coated });
-                           } });
+                           make: (material, source, metalRough) =>
+                             useMatcFresnel(material, build, source, { areaLights, metalRough }) });
 }

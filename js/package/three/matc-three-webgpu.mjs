@@ -283,24 +283,24 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
   // shape times it ("engine").
   directRectArea({ lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1, ltc_2 }) {
     this.matcTerms();
+    // The light's corners, as three's directRectArea places them, and the shading point.
+    const rect = {
+      N: normalView, V: positionViewDirection, P: positionView.toVar(),
+      p0: lightPosition.add(halfWidth).sub(halfHeight), p1: lightPosition.sub(halfWidth).sub(halfHeight),
+      p2: lightPosition.sub(halfWidth).add(halfHeight), p3: lightPosition.add(halfWidth).add(halfHeight),
+    };
     if (this.matc.metalRough) {
-      this.metalRoughRectArea({ lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1, ltc_2 });
+      this.metalRoughRectArea({ lightColor, rect, reflectedLight, ltc_1, ltc_2 });
       return;
     }
-    this.matcRectArea({ lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1 });
+    this.matcRectArea({ lightColor, rect, reflectedLight, ltc_1 });
   }
 
   // glTF's metal-rough model, rect area lights: three's dielectric term (Hill's LTC Fresnel with
   // the dielectric's F0 and F90, weighted by 1 - metalness as in metalRoughDirect) and its diffuse,
   // as its own directRectArea draws them, beside matc's metal (matcRectArea) weighted by metalness.
-  metalRoughRectArea({ lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1, ltc_2 }) {
-    const N = normalView;
-    const V = positionViewDirection;
-    const P = positionView.toVar();
-    const p0 = lightPosition.add(halfWidth).sub(halfHeight);
-    const p1 = lightPosition.sub(halfWidth).sub(halfHeight);
-    const p2 = lightPosition.sub(halfWidth).add(halfHeight);
-    const p3 = lightPosition.add(halfWidth).add(halfHeight);
+  metalRoughRectArea({ lightColor, rect, reflectedLight, ltc_1, ltc_2 }) {
+    const { N, V, P, p0, p1, p2, p3 } = rect;
     const uvLtc = LTC_Uv({ N, V, roughness });
     const t1 = ltc_1.sample(uvLtc).toVar();
     const t2 = ltc_2.sample(uvLtc).toVar();
@@ -310,18 +310,12 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
     reflectedLight.directSpecular.addAssign(lightColor.mul(dielectric).mul(LTC_Evaluate({ N, V, P, mInv, p0, p1, p2, p3 })));
     reflectedLight.directDiffuse.addAssign(lightColor.mul(diffuseContribution)
       .mul(LTC_Evaluate({ N, V, P, mInv: mat3(1, 0, 0, 0, 1, 0, 0, 0, 1), p0, p1, p2, p3 })));
-    this.matcRectArea({ lightColor: lightColor.mul(metalness), lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1 });
+    this.matcRectArea({ lightColor: lightColor.mul(metalness), rect, reflectedLight, ltc_1 });
   }
 
   // matc's metal under a rect area light.
-  matcRectArea({ lightColor, lightPosition, halfWidth, halfHeight, reflectedLight, ltc_1 }) {
-    const p0 = lightPosition.add(halfWidth).sub(halfHeight);
-    const p1 = lightPosition.sub(halfWidth).sub(halfHeight);
-    const p2 = lightPosition.sub(halfWidth).add(halfHeight);
-    const p3 = lightPosition.add(halfWidth).add(halfHeight);
-    const N = normalView;
-    const V = positionViewDirection;
-    const P = positionView.toVar();
+  matcRectArea({ lightColor, rect, reflectedLight, ltc_1 }) {
+    const { N, V, P, p0, p1, p2, p3 } = rect;
     if (this.matc.areaLights !== "engine") {
       const { functions, ltc, rows, url } = this.matc;
       if (!ltc) throw new MatcWebError(`${url}: rect area lights need matc's LTC table; compile with --emit ltc`);
