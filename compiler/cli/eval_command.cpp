@@ -155,13 +155,6 @@ int run_eval(EvalOptions& options) {
   if (!read_quad_light(options)) return kExitInputError;
   const std::optional<api::Material> material = chosen_material(options);
   if (!material) return kExitInputError;
-  if (evaluation.metalness && material->coated()) {
-    fmt::print(stderr,
-               "matc eval: error: --metalness: {} is coated; the metal-rough mix is evaluated for "
-               "bare metals (docs/gltf.md)\n",
-               material->name());
-    return kExitUsageError;
-  }
   return print_evaluation([&] { return api::evaluate(*material, evaluation); });
 }
 

@@ -309,8 +309,9 @@ def evaluate(material, mu=(), ndotv=(), roughness=(), *, reference=True, quad_li
     ``quad_light`` ("x,y,z;x,y,z;x,y,z;x,y,z" in the shading frame) its radiance by LTC beside the
     exact integral. ``reference=False`` leaves out the Monte-Carlo references (``Fbar_reference``,
     a coated material's layered ones, ``L_reference``): the shaders' values alone, fast.
-    ``metalness`` (in [0, 1], ``matc eval --metalness``): glTF's metal-rough mix of a bare metal
-    with glTF's dielectric, ``F_metal_rough`` and ``Fbar_metal_rough`` beside the dielectric's own
+    ``metalness`` (in [0, 1], ``matc eval --metalness``): glTF's metal-rough mix of the metal
+    with glTF's dielectric (under a coated metal's coat, the dielectric times the coat's
+    transmission), ``F_metal_rough`` and ``Fbar_metal_rough`` beside the dielectric's own
     (docs/gltf.md). Options are ``matc eval``'s: ``light_samples``, ``lut_size``,
     ``lut_samples``, ``lut_precision``, ``coefficient_table_precision``, ``basis``,
     ``color_space``, ``gamut_mapping``. Raises ``ValueError`` for options out of range."""

@@ -35,6 +35,10 @@ CoatedFresnel evaluate_coated_fresnel(const Coefficients& in_air, const CoatCoef
           coat.weight * std::min(f, 1.0)};
 }
 
+double coat_transmission(const CoatCoefficients& coat, const ShaderBasis& basis, double ndotv) {
+  return 1.0 - coat.weight * std::min(coat_sum(coat.coat, evaluate_shader_basis(basis, ndotv)), 1.0);
+}
+
 CoatedFresnel evaluate_coated_fbar(const Coefficients& in_air, const CoatCoefficients& coat,
                                    const LutView& lut, double ndotv, double roughness) {
   return evaluate_coated_preintegrated(in_air, coat, sample_lut(lut, ndotv, roughness),

@@ -4,7 +4,9 @@
 // (xyz) and the coat lobe's (w) at mu, then both preintegrated through the bound table and
 // sampler, the embedded table (zero without one) and the closed form; the coat lobe is sampled
 // at the coat's roughness. Fifth: a quad light of radiance 1 overhead (the shading frame: normal
-// +z, view in the xz-plane at NdotV) on both lobes, through matc_ltc.
+// +z, view in the xz-plane at NdotV) on both lobes, through matc_ltc. Sixth: glTF's metal-rough
+// mix under the coat (matc_metal_rough_{{name}}) of glTF's dielectric and the base lobe at mu,
+// metalness = roughness, at NdotV (xyz), and the coat's transmission at NdotV (w).
 {{library}}
 {{material}}
 layout(local_size_x = 64) in;
@@ -37,14 +39,18 @@ void main() {
                         matc_ltc_texcoord(query.y, query.z), 0.0);
   vec4 coat_ltc = textureLod(sampler2D(matc_ltc, matc_lut_sampler),
                              matc_ltc_texcoord(query.y, coat_roughness), 0.0);
-  matc_results[5u * i] = vec4(matc_fresnel_{{name}}(query.x), matc_coat_fresnel_{{name}}(query.x));
-  matc_results[5u * i + 1u] = matc_lobes(bbar, coat_bbar, query.y);
-  matc_results[5u * i + 2u] = embedded;
-  matc_results[5u * i + 4u] = vec4(
+  matc_results[6u * i] = vec4(matc_fresnel_{{name}}(query.x), matc_coat_fresnel_{{name}}(query.x));
+  matc_results[6u * i + 1u] = matc_lobes(bbar, coat_bbar, query.y);
+  matc_results[6u * i + 2u] = embedded;
+  matc_results[6u * i + 4u] = vec4(
       matc_ltc_quad_light_{{name}}(bbar, coat_bbar, ltc, coat_ltc, vec3(0.0, 0.0, 1.0), V,
                                    vec3(0.0), {{quad}}),
       1.0);
-  matc_results[5u * i + 3u] =
+  matc_results[6u * i + 3u] =
       matc_lobes(matc_preintegrated_basis_analytic(query.y, query.z),
                  matc_preintegrated_basis_analytic(query.y, coat_roughness), query.y);
+  matc_results[6u * i + 5u] =
+      vec4(matc_metal_rough_{{name}}(matc_dielectric_fresnel(vec3(0.04), vec3(1.0), query.x),
+                                     matc_fresnel_{{name}}(query.x), query.z, query.y),
+           matc_coat_transmission_{{name}}(query.y));
 }

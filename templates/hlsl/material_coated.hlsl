@@ -77,6 +77,18 @@ float matc_coat_fresnel_{{name}}(float mu) {
   return matc_coat_weight_{{name}} * f;
 }
 
+// glTF's metal-rough model under this coat (docs/gltf.md): the engine's dielectric is layered as
+// glTF layers a clear coat, everything it reflects (its diffuse too) times
+// matc_coat_transmission_{{name}}(NdotV), 1 - the coat lobe's F at NdotV; the metal's part is this
+// material's base lobe (the metal through the coat). matc_metal_rough_{{name}} mixes a lobe's
+// dielectric term and this material's base lobe (F or preintegrated F) by metalness.
+float matc_coat_transmission_{{name}}(float NdotV) {
+  return 1.0 - matc_coat_fresnel_{{name}}(NdotV);
+}
+float3 matc_metal_rough_{{name}}(float3 dielectric, float3 metal, float metalness, float NdotV) {
+  return matc_metal_rough(dielectric * matc_coat_transmission_{{name}}(NdotV), metal, metalness);
+}
+
 // The base lobe's preintegrated F: bbar from the table at matc_lut_texcoord(NdotV, roughness),
 // coat_bbar at matc_lut_texcoord(NdotV, matc_coat_roughness_{{name}}).
 float3 matc_fresnel_preintegrated_{{name}}(float4 bbar, float4 coat_bbar, float NdotV) {

@@ -3,7 +3,9 @@
 // (xyz) and the coat lobe's (w) at mu, then both preintegrated through the bound table and
 // sampler, the embedded table (zero without one) and the closed form; the coat lobe is sampled
 // at the coat's roughness. Fifth: a quad light of radiance 1 overhead (the shading frame: normal
-// +z, view in the xz-plane at NdotV) on both lobes, through matc_ltc.
+// +z, view in the xz-plane at NdotV) on both lobes, through matc_ltc. Sixth: glTF's metal-rough
+// mix under the coat (matc_metal_rough_{{name}}) of glTF's dielectric and the base lobe at mu,
+// metalness = roughness, at NdotV (xyz), and the coat's transmission at NdotV (w).
 {{library}}
 {{material}}
 [[vk::binding(0, 0)]] StructuredBuffer<float4> matc_queries : register(t0);
@@ -34,14 +36,19 @@ void main(uint3 id : SV_DispatchThreadID) {
   float4 ltc = matc_ltc.SampleLevel(matc_lut_sampler, matc_ltc_texcoord(query.y, query.z), 0.0);
   float4 coat_ltc =
       matc_ltc.SampleLevel(matc_lut_sampler, matc_ltc_texcoord(query.y, coat_roughness), 0.0);
-  matc_results[5 * i] = float4(matc_fresnel_{{name}}(query.x), matc_coat_fresnel_{{name}}(query.x));
-  matc_results[5 * i + 1] = matc_lobes(bbar, coat_bbar, query.y);
-  matc_results[5 * i + 2] = embedded;
-  matc_results[5 * i + 4] = float4(
+  matc_results[6 * i] = float4(matc_fresnel_{{name}}(query.x), matc_coat_fresnel_{{name}}(query.x));
+  matc_results[6 * i + 1] = matc_lobes(bbar, coat_bbar, query.y);
+  matc_results[6 * i + 2] = embedded;
+  matc_results[6 * i + 4] = float4(
       matc_ltc_quad_light_{{name}}(bbar, coat_bbar, ltc, coat_ltc, float3(0.0, 0.0, 1.0), V,
                                    float3(0.0, 0.0, 0.0), {{quad}}),
       1.0);
-  matc_results[5 * i + 3] =
+  matc_results[6 * i + 3] =
       matc_lobes(matc_preintegrated_basis_analytic(query.y, query.z),
                  matc_preintegrated_basis_analytic(query.y, coat_roughness), query.y);
+  matc_results[6 * i + 5] =
+      float4(matc_metal_rough_{{name}}(matc_dielectric_fresnel(float3(0.04, 0.04, 0.04),
+                                                               float3(1.0, 1.0, 1.0), query.x),
+                                       matc_fresnel_{{name}}(query.x), query.z, query.y),
+             matc_coat_transmission_{{name}}(query.y));
 }

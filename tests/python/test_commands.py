@@ -40,6 +40,24 @@ def test_evaluate_with_metalness_is_matc_eval():
         [0.6 * 0.04 + 0.4 * f for f in ours["F"][0]], abs=1e-15)
 
 
+def test_evaluate_with_metalness_under_a_coat_is_matc_eval():
+    # The coat lobe lies over the mix; the dielectric under it is scaled by the coat's
+    # transmission at NdotV (mu for F): 1 - the coat lobe's F there.
+    ours = matc.evaluate(EXAMPLES / "copper_lacquered.json", mu=[1, 0.5, 0.1], ndotv=[0.3],
+                         roughness=[0.5], reference=False, metalness=0.4, lut_size=16,
+                         lut_samples=64)
+    cli = matc_eval(EXAMPLES / "copper_lacquered.json", "--mu", "1,0.5,0.1", "--ndotv", "0.3",
+                    "--roughness", "0.5", "--no-reference", "--metalness", "0.4", "--lut-size",
+                    "16", "--lut-samples", "64")
+    assert ours == cli
+    for i in range(3):
+        coat = ours["F_coat"][i]
+        assert ours["F_metal_rough"][i] == pytest.approx(
+            [coat + 0.6 * d * (1 - coat) + 0.4 * b
+             for d, b in zip(ours["F_dielectric"][i], ours["F_base"][i])], abs=1e-14)
+    assert ours["Fbar_metal_rough"][0] != pytest.approx(ours["Fbar"][0], abs=1e-3)
+
+
 @pytest.mark.parametrize("call, error, message", [
     (lambda: matc.evaluate(EXAMPLES / "gold.json", mu=0.5, metalness=1.5), ValueError,
      "metalness: element 0 is 1.5"),
@@ -49,8 +67,6 @@ def test_evaluate_with_metalness_is_matc_eval():
      "metalness: a real number"),
     (lambda: matc.evaluate(EXAMPLES / "gold.json", mu=0.5, metalness=True), TypeError,
      "metalness: a real number"),
-    (lambda: matc.evaluate(EXAMPLES / "copper_lacquered.json", mu=0.5, metalness=0.5), ValueError,
-     "coated metal is not evaluated"),
     (lambda: matc.evaluate(EXAMPLES / "gold.json"), ValueError, "both empty"),
     (lambda: matc.evaluate(EXAMPLES / "gold.json", mu=1.5), ValueError, "mu: element 0 is 1.5"),
     (lambda: matc.evaluate(EXAMPLES / "gold.json", ndotv=[0.5], roughness=[]), ValueError,

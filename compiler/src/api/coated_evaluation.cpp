@@ -123,8 +123,27 @@ void add_coated(const EvaluationInputs& options, const CompiledMaterial& compile
     out["F_exact_base"] = std::move(exact_base);
     out["F_exact_coat"] = std::move(exact_coat);
   }
+  const Lut lut = options.ndotv.empty()
+                      ? Lut{}
+                      : stored_as(preintegrate_lut(basis, options.bake), options.precision);
+  if (options.metalness) {
+    add_metal_rough(
+        options,
+        {.fresnel = [&](double mu) {
+           return runtime::evaluate_coated_fresnel(compiled.coefficients, coefficients,
+                                                   shader_basis, mu);
+         },
+         .fbar = [&](double ndotv,
+                     double roughness) {
+           return runtime::evaluate_coated_fbar(compiled.coefficients, coefficients, lut.view(),
+                                                ndotv, roughness);
+         },
+         .transmission = [&](double ndotv) {
+           return runtime::coat_transmission(coefficients, shader_basis, ndotv);
+         }},
+        out);
+  }
   if (options.ndotv.empty()) return;
-  const Lut lut = stored_as(preintegrate_lut(basis, options.bake), options.precision);
   const runtime::AnalyticLutCoefficients& analytic = runtime::shipped_analytic_lut(basis.kind);
   add_preintegrated_points(options, lut, out);
   ordered_json total = ordered_json::array(), base = ordered_json::array(),

@@ -187,9 +187,6 @@ std::string evaluate_bare(const EvaluationInputs& options, const Material& mater
   const runtime::BasisView basis = runtime::shipped_basis(options.basis);
   const ColorOptions color = options.color;
   if (material.coat) {
-    if (options.metalness)
-      throw std::invalid_argument(
-          "metalness: the metal-rough mix of a coated metal is not evaluated (docs/gltf.md)");
     ordered_json out;
     out["name"] = material.name;
     out["basis"] = runtime::basis_name(basis.kind);
@@ -213,8 +210,12 @@ std::string evaluate_bare(const EvaluationInputs& options, const Material& mater
       add_quad_light(options, *options.quad, *curve, *inputs, coefficients, basis, out);
   }
   static const Lut kNoTable;  // read only for pairs
-  if (options.metalness)
-    add_metal_rough(options, coefficients.front().second, inputs ? inputs->lut : kNoTable, out);
+  if (options.metalness) {
+    add_metal_rough(options,
+                    bare_metal_lobes(coefficients.front().second, options.basis,
+                                     inputs ? inputs->lut : kNoTable),
+                    out);
+  }
   return format_json(out);
 }
 

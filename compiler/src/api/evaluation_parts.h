@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -15,6 +16,7 @@
 #include "formats/table_format.h"
 #include "lut/preintegrate.h"
 #include "matc/runtime/basis.h"
+#include "matc/runtime/coat.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/vec3.h"
@@ -51,12 +53,28 @@ void add_preintegrated_points(const EvaluationInputs& inputs, const Lut& lut, or
 void add_quad_light_description(const EvaluationInputs& inputs, const std::vector<Vec3>& quad,
                                 const runtime::LtcTableView& ltc, ordered_json& out);
 
-// glTF's metal-rough model at `inputs.metalness` (docs/gltf.md): F and Fbar of the metal with
-// `coefficients` mixed with glTF's default dielectric (F0 0.04, F90 1; Schlick's curve, its split
-// sum from a table baked like matc's), as matc_metal_rough and matc_dielectric_fresnel compute
-// them: F_metal_rough, Fbar_metal_rough, and the dielectric's own F_dielectric, Fbar_dielectric.
-void add_metal_rough(const EvaluationInputs& inputs, const runtime::Coefficients& coefficients,
-                     const Lut& lut, ordered_json& out);
+// The metal's side of glTF's metal-rough mix: its lobes' F at mu and preintegrated F at (NdotV,
+// roughness) (a bare metal's in .base; a coated one's base and coat lobes), and the coat's
+// transmission at NdotV (runtime::coat_transmission; 1 for a bare metal).
+struct MetalRoughLobes {
+  std::function<runtime::CoatedFresnel(double mu)> fresnel;
+  std::function<runtime::CoatedFresnel(double ndotv, double roughness)> fbar;
+  std::function<double(double ndotv)> transmission;
+};
+
+// A bare metal's lobes: `coefficients` with `basis`, preintegrated through `lut` (all three kept
+// alive by the caller).
+MetalRoughLobes bare_metal_lobes(const runtime::Coefficients& coefficients,
+                                 runtime::BasisKind basis, const Lut& lut);
+
+// glTF's metal-rough model at `inputs.metalness` (docs/gltf.md): F and Fbar of the metal mixed
+// with glTF's default dielectric (F0 0.04, F90 1; Schlick's curve, its split sum from a table
+// baked like matc's), as matc_metal_rough and matc_dielectric_fresnel compute them (under a coat,
+// matc_metal_rough_<name>: the dielectric times the coat's transmission, the coat lobe over the
+// mix, F at mu with NdotV = mu): F_metal_rough, Fbar_metal_rough, and the dielectric's own
+// F_dielectric, Fbar_dielectric.
+void add_metal_rough(const EvaluationInputs& inputs, const MetalRoughLobes& metal,
+                     ordered_json& out);
 
 // A coated material (docs/coating.md): both lobes and their sum beside the exact layered curve,
 // preintegrated beside the split sums and the Monte-Carlo layered reference, and the quad light.

@@ -1,14 +1,42 @@
 // matc eval --metalness: glTF's metal-rough mix of a metal with glTF's dielectric (docs/gltf.md).
 #include "evaluation_parts.h"
 #include "lut/comparison_lobes.h"
+#include "matc/runtime/coat.h"
 #include "matc/runtime/lut.h"
 #include "matc/runtime/metal_rough.h"
 #include "matc/runtime/shader_basis.h"
 
 namespace matc::evaluation {
+namespace {
 
-void add_metal_rough(const EvaluationInputs& inputs, const runtime::Coefficients& coefficients,
-                     const Lut& lut, ordered_json& out) {
+// The dielectric under the coat's transmission mixed with the base lobe, the coat lobe over both
+// (a bare metal: transmission 1, no coat lobe).
+runtime::Rgb mix_lobes(const runtime::Rgb& dielectric, const runtime::CoatedFresnel& metal,
+                       double metalness, double transmission) {
+  const runtime::Rgb base =
+      runtime::metal_rough_under_coat(dielectric, metal.base, metalness, transmission);
+  return {base[0] + metal.coat, base[1] + metal.coat, base[2] + metal.coat};
+}
+
+}  // namespace
+
+MetalRoughLobes bare_metal_lobes(const runtime::Coefficients& coefficients,
+                                 runtime::BasisKind basis, const Lut& lut) {
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(basis);
+  return {
+      .fresnel = [&coefficients, &shader_basis](
+                     double mu) -> runtime::CoatedFresnel {
+        return {.base = runtime::evaluate_fresnel(coefficients, shader_basis, mu)};
+      },
+      .fbar = [&coefficients, &lut](double ndotv, double roughness) -> runtime::CoatedFresnel {
+        return {.base = runtime::evaluate_fbar(coefficients, lut.view(), ndotv, roughness)};
+      },
+      .transmission = [](double) { return 1.0; },
+  };
+}
+
+void add_metal_rough(const EvaluationInputs& inputs, const MetalRoughLobes& metal,
+                     ordered_json& out) {
   const double metalness = *inputs.metalness;
   const runtime::Rgb f0{runtime::kGltfDielectricF0, runtime::kGltfDielectricF0,
                         runtime::kGltfDielectricF0};
@@ -16,13 +44,11 @@ void add_metal_rough(const EvaluationInputs& inputs, const runtime::Coefficients
   out["metalness"] = metalness;
   out["dielectric"] = {{"f0", f0}, {"f90", f90}};
   if (!inputs.mu.empty()) {
-    const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(inputs.basis);
     ordered_json dielectric = ordered_json::array(), mixed = ordered_json::array();
     for (const double mu : inputs.mu) {
       const runtime::Rgb d = runtime::dielectric_fresnel(f0, f90, mu);
       dielectric.push_back(d);
-      mixed.push_back(runtime::metal_rough(
-          d, runtime::evaluate_fresnel(coefficients, shader_basis, mu), metalness));
+      mixed.push_back(mix_lobes(d, metal.fresnel(mu), metalness, metal.transmission(mu)));
     }
     out["F_dielectric"] = std::move(dielectric);
     out["F_metal_rough"] = std::move(mixed);
@@ -40,9 +66,8 @@ void add_metal_rough(const EvaluationInputs& inputs, const runtime::Coefficients
       for (std::size_t c = 0; c < 3; ++c)
         d[c] = f0[c] * lobe[0] + (f90[c] - f0[c]) * lobe[1];
       dielectric.push_back(d);
-      mixed.push_back(runtime::metal_rough(
-          d, runtime::evaluate_fbar(coefficients, lut.view(), inputs.ndotv[i], inputs.roughness[i]),
-          metalness));
+      mixed.push_back(mix_lobes(d, metal.fbar(inputs.ndotv[i], inputs.roughness[i]), metalness,
+                                metal.transmission(inputs.ndotv[i])));
     }
     out["Fbar_dielectric"] = std::move(dielectric);
     out["Fbar_metal_rough"] = std::move(mixed);

@@ -9,6 +9,7 @@
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/lut.h"
+#include "matc/runtime/metal_rough.h"
 #include "matc/runtime/shader_basis.h"
 #include "validate/device_validator.h"
 
@@ -81,6 +82,10 @@ class MaterialCheck final : public DeviceCheck {
   std::string describe_query(std::size_t index, std::string_view label) const override {
     const ValidationQuery& q = queries_[index];
     if (label == "F" || label == "coat F") return fmt::format("mu {:.4f}", q.mu);
+    if (label == "F(metal-rough)") {
+      return fmt::format("mu {:.4f}, NdotV {:.4f}, metalness {:.4f}", q.mu, q.ndotv, q.roughness);
+    }
+    if (label == "coat transmission") return fmt::format("NdotV {:.4f}", q.ndotv);
     if (label == "L") {
       return fmt::format("NdotV {:.4f}, roughness {:.4f}, kCoatedValidationQuad", q.ndotv,
                          q.roughness);
@@ -105,7 +110,9 @@ class MaterialCheck final : public DeviceCheck {
                                                {"embedded coat Fbar", tolerance_.embedded},
                                                {"closed-form Fbar", tolerance_.analytic},
                                                {"closed-form coat Fbar", tolerance_.analytic},
-                                               {"L", tolerance_.preintegrated}};
+                                               {"L", tolerance_.preintegrated},
+                                               {"F(metal-rough)", tolerance_.fresnel},
+                                               {"coat transmission", tolerance_.fresnel}};
     const auto record = [&](std::size_t slot, const runtime::CoatedFresnel& expected,
                             const float* actual, std::size_t query) {
       record_largest(quantities[2 * slot], expected.base, actual, query);
@@ -123,6 +130,19 @@ class MaterialCheck final : public DeviceCheck {
                          .total(),
                      result + 16, i);
       record(1, runtime::evaluate_coated_fbar(c, coat, table, q.ndotv, q.roughness), result + 4, i);
+      // glTF's dielectric (F0 0.04, F90 1) and the base lobe at mu, metalness = roughness.
+      constexpr runtime::Rgb kGltfDielectric{runtime::kGltfDielectricF0, runtime::kGltfDielectricF0,
+                                             runtime::kGltfDielectricF0};
+      const double transmission = runtime::coat_transmission(coat, shader_basis, q.ndotv);
+      record_largest(quantities[9],
+                     runtime::metal_rough_under_coat(
+                         runtime::dielectric_fresnel(kGltfDielectric, {1.0, 1.0, 1.0}, q.mu),
+                         runtime::evaluate_coated_fresnel(c, coat, shader_basis, q.mu).base,
+                         q.roughness, transmission),
+                     result + 20, i);
+      const float transmission_actual[3] = {result[23], result[23], result[23]};
+      record_largest(quantities[10], {transmission, transmission, transmission},
+                     transmission_actual, i);
       if (embedded) {
         record(2, runtime::evaluate_coated_fbar(c, coat, embedded->view(), q.ndotv, q.roughness),
                result + 8, i);

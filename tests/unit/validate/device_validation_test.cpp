@@ -227,3 +227,22 @@ TEST(PublicDeviceValidation, TheLibrarysChecksAsPublicResults) {
 }
 
 }  // namespace
+
+// A coated metal's kernel checks both lobes and glTF's metal-rough mix under its coat
+// (matc_metal_rough_<name>, the dielectric times the coat's transmission) against the runtime.
+TEST(DeviceValidation, CoatedMetalRoughMixMatchesTheCpuRuntime) {
+  const matc::ParseResult parsed =
+      matc::read_material_file(MATC_EXAMPLES_DIR "/copper_lacquered.json");
+  ASSERT_TRUE(parsed.material.has_value());
+  const matc::Build build(small_build());
+  const matc::DeviceValidator validator(build, {true, ""});
+  const matc::CheckResult result =
+      validator.validate(matc::compile_material(*parsed.material, matc::runtime::shipped_basis()));
+  ASSERT_EQ(result.paths.size(), 2u);
+  EXPECT_TRUE(result.passed());
+  for (const matc::PathResult& path : result.paths) {
+    EXPECT_LE(path.quantity("F(metal-rough)").max_abs, 1e-5);
+    EXPECT_LE(path.quantity("coat transmission").max_abs, 1e-5);
+    EXPECT_GT(path.quantity("coat transmission").max_abs, 0.0);  // float32 against double
+  }
+}

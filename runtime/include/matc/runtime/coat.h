@@ -81,4 +81,10 @@ CoatedFresnel polygon_light_ltc_coated(const Coefficients& in_air, const CoatCoe
                                        const LutView& lut, const LtcTableView& ltc, double ndotv,
                                        double roughness, std::span<const Vec3> vertices);
 
+// What reaches a layer under the coat and comes back through it as glTF layers a clear coat
+// (KHR_materials_clearcoat), matc_coat_transmission_<name>: 1 - the coat lobe's F at NdotV, its
+// weight included. glTF's metal-rough model under a matc coat scales the engine's dielectric,
+// diffuse included, by it (metal_rough.h, docs/gltf.md).
+double coat_transmission(const CoatCoefficients& coat, const ShaderBasis& basis, double ndotv);
+
 }  // namespace matc::runtime

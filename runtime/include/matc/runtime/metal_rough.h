@@ -21,6 +21,18 @@ inline Rgb metal_rough(const Rgb& dielectric, const Rgb& metal, double metalness
   return mixed;
 }
 
+// The same under a matc coat, as matc_metal_rough_<name> computes it: the dielectric times the
+// coat's transmission at NdotV (coat_transmission in coat.h: glTF's layering of a clear coat),
+// mixed with the coated material's base lobe, `base` (the metal through the coat). The coat lobe
+// lies over both, whatever the metalness.
+inline Rgb metal_rough_under_coat(const Rgb& dielectric, const Rgb& base, double metalness,
+                                  double transmission) {
+  Rgb layered{};
+  for (std::size_t c = 0; c < 3; ++c)
+    layered[c] = dielectric[c] * transmission;
+  return metal_rough(layered, base, metalness);
+}
+
 // glTF's dielectric Fresnel: Schlick's curve from f0 to f90 at the cosine mu (clamped to [0, 1]);
 // f0 0.04 and f90 1 at glTF's index 1.5.
 inline Rgb dielectric_fresnel(const Rgb& f0, const Rgb& f90, double mu) {
