@@ -17,7 +17,7 @@ import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { kWebRoots, modulePage, runPage } from "./browser-page.mjs";
 import { compareProbes, expectedProbes, kBabylonProbeTerms, kPointLight, kProbePixels, kProbeRectLight, kProbeSize,
-         kThreeJsProbeTerms } from "./engine-probes.mjs";
+         kThreeJsProbeTerms, probeNdotV } from "./engine-probes.mjs";
 import { kThreeGltfPageHead, kThreeGltfPageSetup } from "./gltf-loader-checks.mjs";
 import { kMetalRough, metalRoughAsset } from "./gltf-assets.mjs";
 import { check, finish } from "./report.mjs";
@@ -99,15 +99,17 @@ const threePage = (config) => modulePage(config, {
   body: `${webGpu ? kWebGpuSetup : kThreeGltfPageSetup}
   out.renders = {};
   out.made = {};
-  for (const [load, loader] of [["engine", new GLTFLoader()], ["matc", new GLTFLoader().register(matcGltfPlugin({ matc, build }))]]) {
-    const gltf = await loader.loadAsync("/assets/metal_rough.glb");
-    out.made["metal_rough " + load] = (gltf.userData.matcMaterials ?? []).length;
-    const byName = {};
-    gltf.scene.traverse((object) => { if (object.isMesh) byName[object.material.name] = object.material; });
-    for (const name of config.names) {
-      for (const light of config.lights) {
-        const scene = probeScene(THREE, byName[name], light, config, environment);
-        out.renders["metal_rough " + load + " " + name + " " + light] = ${webGpu ? kWebGpuRender : kWebGlRender};
+  for (const asset of config.assets) {
+    for (const [load, loader] of [["engine", new GLTFLoader()], ["matc", new GLTFLoader().register(matcGltfPlugin({ matc, build }))]]) {
+      const gltf = await loader.loadAsync("/assets/" + asset + ".glb");
+      out.made[asset + " " + load] = (gltf.userData.matcMaterials ?? []).length;
+      const byName = {};
+      gltf.scene.traverse((object) => { if (object.isMesh) byName[object.material.name] = object.material; });
+      for (const name of config.names) {
+        for (const light of config.lights) {
+          const scene = probeScene(THREE, byName[name], light, config, environment);
+          out.renders[asset + " " + load + " " + name + " " + light] = ${webGpu ? kWebGpuRender : kWebGlRender};
+        }
       }
     }
   }
@@ -128,9 +130,14 @@ try {
   mkdirSync(assets);
   const asset = join(assets, "metal_rough.glb");
   await metalRoughAsset(asset);
-  // Babylon.js: the mix on a black base colour too (no diffuse; see above).
-  const names = babylon ? ["metal_rough", "metal_rough_black"] : ["metal_rough"];
-  if (babylon) await metalRoughAsset(join(assets, "metal_rough_black.glb"), { baseColor: [0, 0, 0] });
+  // Under a clear coat too; Babylon.js: the mix on a black base colour as well (no diffuse; see above).
+  await metalRoughAsset(join(assets, "metal_rough_coated.glb"), { coat: kMetalRough.coat });
+  const names = ["metal_rough", "metal_rough_coated"];
+  if (babylon) {
+    await metalRoughAsset(join(assets, "metal_rough_black.glb"), { baseColor: [0, 0, 0] });
+    await metalRoughAsset(join(assets, "metal_rough_coated_black.glb"), { baseColor: [0, 0, 0], coat: kMetalRough.coat });
+    names.push("metal_rough_black", "metal_rough_coated_black");
+  }
   const config = { names: kNames, assets: names, lights: kLights, pixels: kProbePixels, point: kPointLight, rect: kProbeRectLight };
   const result = await runPage({
     html: (babylon ? babylonPage : threePage)(config),
@@ -148,11 +155,15 @@ try {
                  ["Metal Factor", kMetalRough.factor["Metal Factor"]]];
   let worst = 0, apart = 0;
   for (const assetName of names) {
-    // Babylon.js's coloured asset: the ends (the engine's own at 0, matc's metal at 1).
-    const checked = babylon && assetName === "metal_rough" ? mixes.filter(([, m]) => m === 0 || m === 1) : mixes;
+    const coated = assetName.includes("coated");
+    // Babylon.js's coloured assets: the ends (the engine's own at 0, matc's metal at 1).
+    const checked = babylon && !assetName.includes("black") ? mixes.filter(([, m]) => m === 0 || m === 1) : mixes;
     for (const light of kLights) {
-      const dielectric = render(assetName, "engine", "Metal 0", light);
+      // Under a coat, matc's coat lobe (the coat's exact Fresnel, where the engine has Schlick's)
+      // lies over the dielectric too: the ends are matc's renders (the non-metal one checked below).
+      const dielectric = render(assetName, coated ? "matc" : "engine", "Metal 0", light);
       const metal = render(assetName, "matc", kMetalRough.plain, light);
+
       for (const [name, metalness] of checked) {
         const d = difference(render(assetName, "matc", name, light), mixOf(dielectric, metal, metalness));
         worst = Math.max(worst, d);
@@ -174,11 +185,43 @@ try {
                                     coated: [], renders: kLights.map((light) => ({ key: `Metal_Full ${light} r=0.3`, light })) });
   const cpu = compareProbes(Object.fromEntries(kLights.map((light) =>
     [`Metal_Full ${light} r=0.3`, render("metal_rough", "matc", "Metal Full", light)])), expected);
+  // The same under the coat: both lobes as the CPU runtime evaluates them.
+  const coatedMaterials = join(dir, "materials_coated");
+  run(matc, ["import", "-q", "-o", coatedMaterials, join(assets, "metal_rough_coated.glb")]);
+  const coatedOut = join(dir, "out_coated");
+  run(matc, ["-q", "-o", coatedOut, "--emit", "json", join(coatedMaterials, "Metal_Full.json")]);
+  const expectedCoated = expectedProbes({
+    matc, materialsDir: coatedMaterials, out: coatedOut, ...terms, bare: [], coated: ["Metal_Full"],
+    renders: kLights.map((light) => ({ key: `Metal_Full ${light} r=0.3`, light })) });
+  const cpuCoated = compareProbes(Object.fromEntries(kLights.map((light) =>
+    [`Metal_Full ${light} r=0.3`, render("metal_rough_coated", "matc", "Metal Full", light)])), expectedCoated);
+  // A non-metal texel under the coat: the engine's own uncoated dielectric times the coat's
+  // transmission at the pixel's NdotV (glTF's layering: 1 - the coat lobe's F there, from matc eval),
+  // under matc's coat lobe (the CPU runtime's).
+  const coatLobe = expectedProbes({
+    matc, materialsDir: coatedMaterials, out: coatedOut, ...terms, bare: [], coated: ["Metal_Full"], coatLobeOnly: true,
+    renders: kLights.map((light) => ({ key: `Metal_Full ${light} r=0.3`, light })) });
+  const ndotv = kProbePixels.map((pixel) => Math.fround(probeNdotV(pixel)));
+  const coatF = JSON.parse(run(matc, ["eval", join(coatedMaterials, "Metal_Full.json"), "--no-reference",
+                                      "--mu", ndotv.join(",")])).F_coat;
+  const dielectricExpected = {}, dielectricRendered = {};
+  for (const light of kLights) {
+    const key = `Metal_0 ${light}`;
+    dielectricExpected[key] = render("metal_rough", "engine", "Metal 0", light).map((rgb, i) =>
+      rgb.map((value, c) => (1 - coatF[i]) * value + coatLobe[`Metal_Full ${light} r=0.3`][i][c]));
+    dielectricRendered[key] = render("metal_rough_coated", "matc", "Metal 0", light);
+  }
+  const coatedDielectric = compareProbes(dielectricRendered, dielectricExpected);
+  const ownCoat = Math.max(...kLights.map((light) => difference(render("metal_rough_coated", "matc", "Metal 0", light),
+                                                                 render("metal_rough_coated", "engine", "Metal 0", light))));
   console.log(`${engineName}: its glTF loader with matc's, glTF's metal-rough model per pixel: metalness 0, 128/255, 1 ` +
               `(texture) and 0.3 (factor) within ${worst.toExponential(2)} of (1 - m) the engine's own material + m matc's ` +
               `metal under point, rect and image light${babylon ? " (the mix on a black base colour)" : ""}; the full ` +
               `metal within ${cpu.toExponential(2)} of the CPU runtime; the engine's own half metal ` +
-              `${apart.toExponential(2)} away from matc's`);
+              `${apart.toExponential(2)} away from matc's. Under a clear coat (factor ${kMetalRough.coat.factor}): ` +
+              `the same mix of matc's ends, the full metal within ${cpuCoated.toExponential(2)} of the CPU runtime, ` +
+              `a non-metal texel within ${coatedDielectric.toExponential(2)} of the engine's own dielectric through ` +
+              `matc's coat (the engine's own clear coat ${ownCoat.toExponential(2)} away)`);
 } finally {
   rmSync(dir, { recursive: true, force: true });
 }

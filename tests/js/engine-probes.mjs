@@ -77,6 +77,8 @@ export const normalize = (a) => scale(a, 1 / Math.sqrt(dot(a, a)));
 const kNormal = [0, 0, 1];
 const pointAt = ([x, y]) => [(2 * (x + 0.5)) / kProbeSize - 1, (2 * (y + 0.5)) / kProbeSize - 1, 0];
 const viewAt = (pixel) => normalize(sub([0, 0, 1], pointAt(pixel)));
+// A probe pixel's NdotV on the plane (the engines' shading normal +z).
+export const probeNdotV = (pixel) => dot(kNormal, viewAt(pixel));
 
 // GGX without F, D x height-correlated Smith visibility (or Kelemen's 1 / (4 (v.h)^2) with
 // visibility "kelemen"), for the engine's alpha.
@@ -186,8 +188,10 @@ export function probeRenders() {
 // too where the engine applies it to area lights (rect.compensated). bare and coated name the
 // materials (<name>.json in materialsDir and, compiled, in out): the probe checks' by default;
 // coatedFiles[name] = { file, compiledIn } a coated one's material file and compiled folder instead.
+// coatLobeOnly: a coated metal's coat lobe alone (what lies over whatever is under the coat).
 export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibility, rect, renders,
-                                 bare = kProbeMaterials, coated = [kProbeCoated], coatedFiles = {} }) {
+                                 bare = kProbeMaterials, coated = [kProbeCoated], coatedFiles = {},
+                                 coatLobeOnly = false }) {
   const wanted = new Set(renders.map((render) => render.key));
   const ndotv = kProbePixels.map((pixel) => Math.fround(dot(kNormal, viewAt(pixel))));
   const pointTerms = kProbeRoughness.map((roughness) => kProbePixels.map((pixel) => {
@@ -243,7 +247,7 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibilit
   for (const name of coated) {
     const { file, compiledIn } = coatedFiles[name] ?? { file: join(materialsDir, `${name}.json`), compiledIn: out };
     Object.assign(expected, expectedCoatedProbes({ name, file, out: compiledIn, matc, alphaOf, coatVisibility, rect,
-                                                   wanted, ndotv, albedo, pointTerms }));
+                                                   wanted, ndotv, albedo, pointTerms, coatLobeOnly }));
   }
   return expected;
 }
@@ -255,7 +259,8 @@ export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibilit
 // where the engine compensates rect lights. engine.coatVisibility: the coat lobe's visibility term
 // where the engine's is not the base's (Babylon's Kelemen).
 function expectedCoatedProbes({ name, file, matc, out, alphaOf, coatVisibility, rect, wanted, ndotv, albedo,
-                                pointTerms }) {
+                                pointTerms, coatLobeOnly }) {
+  const baseWeight = coatLobeOnly ? 0 : 1;
   const roughness = 0.3;
   const key = (light) => `${name} ${light} r=${roughness}`;
   const expected = {};
@@ -266,7 +271,7 @@ function expectedCoatedProbes({ name, file, matc, out, alphaOf, coatVisibility, 
   const terms = pointTerms[kProbeRoughness.indexOf(roughness)];
   const evaluated = evaluateAtProbes(matc, [file], ndotv, roughness, terms);
   const e = albedo(roughness);
-  const layered = (base, coat, i) => compensatedFbar(base, underCoatF0, e[i]).map((value) => value + coat);
+  const layered = (base, coat, i) => compensatedFbar(base, underCoatF0, e[i]).map((value) => baseWeight * value + coat);
   if (wanted.has(key("environment"))) {
     expected[key("environment")] = ndotv.map((_, i) => layered(evaluated.Fbar_base[i], evaluated.Fbar_coat[i], i));
   }
@@ -274,14 +279,14 @@ function expectedCoatedProbes({ name, file, matc, out, alphaOf, coatVisibility, 
     expected[key("point")] = terms.map((t, i) => {
       const coatGgx = ggxWithoutFresnel(t.light, t.view, coatAlpha, coatVisibility).value;
       const base = compensatedFbar(evaluated.F_base[i], underCoatF0, e[i]).map((value) => value * t.ggx);
-      return base.map((value) => t.irradiance * (value + coatGgx * evaluated.F_coat[i]));
+      return base.map((value) => t.irradiance * (baseWeight * value + coatGgx * evaluated.F_coat[i]));
     });
   }
   if (wanted.has(key("rect"))) {
     expected[key("rect")] = quadLightsAtProbes(matc, [file], ndotv, roughness, rect).map((light, i) => {
       const base = light.L_ltc_base[0].map((value) => value * rect.light.intensity);
       const coat = light.L_ltc_coat[0] * rect.light.intensity;
-      return (rect.compensated ? compensatedFbar(base, underCoatF0, e[i]) : base).map((value) => value + coat);
+      return (rect.compensated ? compensatedFbar(base, underCoatF0, e[i]) : base).map((value) => baseWeight * value + coat);
     });
   }
   return expected;

@@ -111,22 +111,30 @@ export const kMetalRough = {
   baseColor: [0.9, 0.6, 0.3], roughness: 0.3,
   textured: { "Metal 0": 0, "Metal Half": 128, "Metal Full": 255 },
   factor: { "Metal Factor": 0.3 }, plain: "Metal Plain",
+  coat: { factor: 0.8, roughness: 0.1 },  // metal_rough_coated.glb's
 };
 
 // metal_rough.glb: glTF's metal-rough model as artists paint it, one material per metalness:
 // a metallicRoughnessTexture (green 255: roughness at its factor; blue the metalness) on the
 // textured ones, a metallicFactor of 0.3 on one, and a plain full metal (factor 1, no texture).
-export async function metalRoughAsset(path, { baseColor = kMetalRough.baseColor } = {}) {
+// `coat`: every material under a KHR_materials_clearcoat ({ factor, roughness }).
+export async function metalRoughAsset(path, { baseColor = kMetalRough.baseColor, coat = null } = {}) {
   const document = new Document();
-  const material = (name) => document.createMaterial(name).setBaseColorFactor([...baseColor, 1])
-    .setRoughnessFactor(kMetalRough.roughness).setMetallicFactor(1);
+  const clearcoat = coat && document.createExtension(KHRMaterialsClearcoat);
+  const material = (name) => {
+    const made = document.createMaterial(name).setBaseColorFactor([...baseColor, 1])
+      .setRoughnessFactor(kMetalRough.roughness).setMetallicFactor(1);
+    if (!coat) return made;
+    return made.setExtension("KHR_materials_clearcoat", clearcoat.createClearcoat().setClearcoatFactor(coat.factor)
+      .setClearcoatRoughnessFactor(coat.roughness));
+  };
   const materials = Object.entries(kMetalRough.textured).map(([name, blue]) => material(name).setMetallicRoughnessTexture(
     document.createTexture(name).setMimeType("image/png")
       .setImage(pngBytes(4, 4, new Uint8Array(4 * 4 * 3).map((_, i) => [0, 255, blue][i % 3])))));
   for (const [name, factor] of Object.entries(kMetalRough.factor)) materials.push(material(name).setMetallicFactor(factor));
   materials.push(material(kMetalRough.plain));
   scene(document, materials);
-  writeFileSync(path, await new NodeIO().writeBinary(document));
+  writeFileSync(path, await new NodeIO().registerExtensions([KHRMaterialsClearcoat]).writeBinary(document));
 }
 
 // A GLB (`bytes`) with its JSON chunk edited by `edit(json)`; the BIN chunk carried as it is.

@@ -205,20 +205,19 @@ class Importer {
   }
 
   // Partial or textured metalness: the compile carries the metal, and glTF's mix with the
-  // engine's dielectric is the shader's (matc_metal_rough), except under a coat, where the loaders
-  // draw the coated metal whole.
+  // engine's dielectric is the shader's (matc_metal_rough; under a coat matc_metal_rough_<name>,
+  // the dielectric seen through the coat).
   static void metalness_notes(const tinygltf::PbrMetallicRoughness& pbr, bool coated,
                               std::vector<std::string>& not_carried) {
-    const std::string how =
-        coated ? "the metal is compiled; under a clear coat it is drawn as a full metal, not mixed"
-               : "the metal is compiled; the shader mixes it with the engine's dielectric";
+    const std::string how = coated ? "the metal is compiled; the shader mixes it with the engine's "
+                                     "dielectric under the coat, matc_metal_rough_<name>"
+                                   : "the metal is compiled; the shader mixes it with the engine's "
+                                     "dielectric, matc_metal_rough";
     if (pbr.metallicFactor < 1)
-      not_carried.push_back(fmt::format("partial metalness (metallicFactor {}: {}{})",
-                                        pbr.metallicFactor, how,
-                                        coated ? "" : ", matc_metal_rough"));
+      not_carried.push_back(
+          fmt::format("partial metalness (metallicFactor {}: {})", pbr.metallicFactor, how));
     if (pbr.metallicRoughnessTexture.index >= 0)
-      not_carried.push_back(fmt::format("metallicRoughnessTexture's metalness ({}{})", how,
-                                        coated ? "" : " per pixel, matc_metal_rough"));
+      not_carried.push_back(fmt::format("metallicRoughnessTexture's metalness ({}, per pixel)", how));
   }
 
   // EXT_materials_specular_edge_color inside KHR_materials_specular: the specular colour times

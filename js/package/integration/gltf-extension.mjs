@@ -117,7 +117,7 @@ export const isGltfMetalRough = (material) => {
 // What the engines' glTF loaders (three/matc-gltf.mjs, babylon/matc-gltf.mjs) make of an asset's
 // materials: `metalOf(index)` resolves to { metal (as build.loadMaterial gives it), from:
 // "extension" | "compiled", source: useMatcFresnel's, metalRough: useMatcFresnel's option, set for
-// a bare metal whose metalness is partial or textured }, or null for a material that stays the
+// a metal (bare or coated) whose metalness is partial or textured }, or null for a material that stays the
 // engine's. A textured metal follows the engine's base colour (factor times texture) per pixel:
 // of Schlick's curve (no edge colour, no coat) with the source { schlick }, under an edge colour
 // or a coat with { material, f0Table }; one whose extension carries neither (compiled in another
@@ -139,15 +139,11 @@ export function gltfMetals({ matc = null, build, compile = {}, json, warn, note 
                 "compiled in a working space other than lin_rec709); shaded at its baseColorFactor");
     return { material: metal };
   };
-  // metalRough: glTF's metal-rough mix per pixel, but not under matc's coat (yet): a coated metal
-  // stays a full metal, with a note.
-  const withSource = (index, metal, from, perPixel) => {
-    const metalRough = isGltfMetalRough(json.materials[index]);
-    if (metalRough && metal.coat) {
-      note(index, "its metalness (partial or textured) is not mixed under a clear coat: drawn as a full metal");
-    }
-    return { metal, from, source: sourceOf(index, metal, perPixel), metalRough: metalRough && !metal.coat };
-  };
+  // metalRough: glTF's metal-rough mix per pixel (under a coat too: the engine's dielectric
+  // through the coat as glTF layers a clear coat).
+  const withSource = (index, metal, from, perPixel) => ({
+    metal, from, source: sourceOf(index, metal, perPixel), metalRough: isGltfMetalRough(json.materials[index]),
+  });
   // `matc gltf` in the page: the importer decides which metals follow their texture per pixel, and
   // writes their zeroF0Coefficients, as for an asset written offline.
   const compileInPage = async (index) => {

@@ -65,6 +65,8 @@ vec3 matc_base_preintegrated() { return matc_fresnel_preintegrated_${name}(matc_
 vec3 matc_base_compensation() { return matc_energy_compensation(matc_under_coat_coefficients_${name}, matc_bbar); }
 #endif
 float matc_coat_lobe_fresnel(float mu) { return matc_coat_fresnel_${name}(mu); }
+// glTF's metal-rough model under the coat: what the engine's dielectric reflects (diffuse too) times this.
+float matc_coat_transmission() { return matc_coat_transmission_${name}(matc_ndotv); }
 float matc_coat_lobe_preintegrated() { return matc_coat_fresnel_preintegrated_${name}(matc_coat_bbar); }
 `;
 }

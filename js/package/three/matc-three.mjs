@@ -41,9 +41,13 @@ void matc_image_lighting( inout vec3 singleScatter, inout vec3 multiScatter ) {
 #ifdef MATC_METAL_ROUGH
 // glTF's metal-rough model per pixel (docs/gltf.md): three's own dielectric lobe mixed with matc's
 // metal by material.metalness. Set before the lights: the dielectric's F90 (three blends its F90
-// with the metal's) and its multiple-scattering scale (three's, with the dielectric's F0).
+// with the metal's), its multiple-scattering scale (three's, with the dielectric's F0) and, under a
+// matc coat, the coat's transmission at NdotV, which scales all the dielectric reflects (glTF's
+// layering of a clear coat; docs/gltf.md): its specular term here, its diffuse through
+// material.diffuseContribution.
 float matc_dielectric_f90;
 vec3 matc_dielectric_compensation;
+float matc_dielectric_transmission;
 #endif
 `;
 
@@ -58,7 +62,13 @@ const kPixelSetup = `${pixelSetupGlsl({
 	#else
 		matc_dielectric_f90 = 1.0;
 	#endif
-	matc_dielectric_compensation = vec3( 1.0 );
+	#ifdef MATC_COATED
+		matc_dielectric_transmission = matc_coat_transmission();
+		material.diffuseContribution *= matc_dielectric_transmission;
+	#else
+		matc_dielectric_transmission = 1.0;
+	#endif
+	matc_dielectric_compensation = vec3( matc_dielectric_transmission );
 #endif
 `;
 
@@ -138,6 +148,21 @@ export const kPatches = [
   },
   {
     chunk: "lights_physical_pars_fragment",
+    anchor: "vec3 singleScattering = mix( singleScatteringDielectric, singleScatteringMetallic, material.metalness ); " +
+            "vec3 multiScattering = mix( multiScatteringDielectric, multiScatteringMetallic, material.metalness );",
+    replacement: () =>
+      "#ifdef MATC_METAL_ROUGH\n" +
+      "\tvec3 singleScattering = mix( singleScatteringDielectric * matc_dielectric_transmission, singleScatteringMetallic, material.metalness );\n" +
+      "\tvec3 multiScattering = mix( multiScatteringDielectric * matc_dielectric_transmission, multiScatteringMetallic, material.metalness );\n" +
+      "#else\n" +
+      "\tvec3 singleScattering = mix( singleScatteringDielectric, singleScatteringMetallic, material.metalness );\n" +
+      "\tvec3 multiScattering = mix( multiScatteringDielectric, multiScatteringMetallic, material.metalness );\n" +
+      "#endif\n",
+    what: "image lighting with metalRough under a matc coat: three's dielectric terms times the coat's transmission " +
+          "at NdotV before its mix by metalness (glTF's layering of a clear coat; 1 without a coat)",
+  },
+  {
+    chunk: "lights_physical_pars_fragment",
     anchor: "\t\treflectedLight.directSpecular += lightColor * fresnel * LTC_Evaluate( normal, viewDir, " +
             "position, mInv, rectCoords );\n",
     replacement: () =>
@@ -159,7 +184,7 @@ export const kPatches = [
       "#endif\n" +
       "#ifdef MATC_METAL_ROUGH\n" +
       "\t\treflectedLight.directSpecular = matc_specular_before + matc_metal_rough( lightColor * ( material.specularColor * t2.x + " +
-      "( matc_dielectric_f90 - material.specularColor ) * t2.y ) * LTC_Evaluate( normal, viewDir, position, mInv, rectCoords ), " +
+      "( matc_dielectric_f90 - material.specularColor ) * t2.y ) * matc_dielectric_transmission * LTC_Evaluate( normal, viewDir, position, mInv, rectCoords ), " +
       "reflectedLight.directSpecular - matc_specular_before, material.metalness );\n" +
       "#endif\n",
     what: "rect area lights: Hill's two-channel LTC Fresnel and the LTC_1 shape become matc's LTC " +
@@ -173,7 +198,7 @@ export const kPatches = [
             "( 1.0 / EssMs - 1.0 );\n",
     replacement: () =>
       "#ifdef MATC_METAL_ROUGH\n" +
-      "\t\tmatc_dielectric_compensation = 1.0 + material.specularColor * ( 1.0 / EssMs - 1.0 );\n" +
+      "\t\tmatc_dielectric_compensation = ( 1.0 + material.specularColor * ( 1.0 / EssMs - 1.0 ) ) * matc_dielectric_transmission;\n" +
       "\t\tmaterial.multiScatteringCompensation = vec3( 1.0 );\n" +
       "#else\n" +
       "\t\tmaterial.multiScatteringCompensation = matc_base_compensation();\n" +
@@ -278,7 +303,8 @@ function sourceUniforms(build, source) {
 // Fresnel in every light path from `source` (see sourceUniforms). options.metalRough: glTF's
 // metal-rough model per pixel instead (docs/gltf.md): the material keeps its metalness and
 // metalnessMap, and matc's metal replaces three's metal lobe only, mixed by the pixel's metalness
-// with three's own dielectric in every light path (not under a matc coat). Returns the material; its
+// with three's own dielectric in every light path (under a matc coat, the dielectric seen through
+// it as glTF layers a clear coat). Returns the material; its
 // userData.matc.uniforms can be changed later (e.g. another compiled material's coefficients).
 // options.areaLights: "matc" (default: matc's LTC table and horizon-clipped integral, checked
 // against the CPU runtime), "quality" (the same with matc's quality level: the lobe's shape and
@@ -303,9 +329,6 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc", m
     throw new MatcWebError(`${source.material.name} is coated: its coat lobe needs a MeshPhysicalMaterial`);
   }
   if (coat) checkCoatedAreaLights(source.material, areaLights);
-  if (metalRough && coat) {
-    throw new MatcWebError(`${source.material.name} is coated: metalRough mixes a bare metal with three's dielectric`);
-  }
   // Checked now, so that a changed engine fails here and not at the first frame.
   const { [kMainShader]: main, ...chunks } = patchChunks(THREE.ShaderChunk, build.library, source.material);
   Object.assign(uniforms, { matc_lut: { value: build.lut }, matc_ltc: { value: build.ltc ?? build.lut } });
