@@ -146,6 +146,8 @@ export async function loadMatcBuild(source) {
       coatFresnel: fn(`fn matc_three_coat_fresnel_${name}(mu: f32) -> f32 { return matc_coat_fresnel_${name}(mu); }`),
       coatPreintegrated: fn(`fn matc_three_coat_preintegrated_${name}(coat_bbar: vec4f) -> f32 ` +
                             `{ return matc_coat_fresnel_preintegrated_${name}(coat_bbar); }`),
+      transmission: fn(`fn matc_three_coat_transmission_${name}(ndotv: f32) -> f32 ` +
+                       `{ return matc_coat_transmission_${name}(ndotv); }`),
     };
     return material;
   };
@@ -191,6 +193,8 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
                                                                     bbar: this.matcBbar, coat_bbar: coatBbar, ndotv })
             .toConst("matc_preintegrated");
         this.matcCoatPreintegrated = coat.functions.coatPreintegrated({ coat_bbar: coatBbar }).toConst("matc_coat_preintegrated");
+        // glTF's metal-rough model under the coat: what three's dielectric reflects times this.
+        this.matcTransmission = coat.functions.transmission({ ndotv }).toConst("matc_coat_transmission");
       } else {
         this.matcPreintegrated = functions.preintegrated({ ...rows, bbar: this.matcBbar }).toConst("matc_preintegrated");
       }
@@ -210,8 +214,17 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
 
   // Image lighting; a coated material's coat lobe: three's prefiltered radiance at the coat's
   // roughness times the coat's preintegrated F (its weight included).
+  // With metalRough under a coat, three's dielectric terms (its (1 - metalness) share of the mix)
+  // through the coat: the 1 - transmission of them taken back out.
   indirectSpecular(builder) {
     this.withoutThreeCoat(() => super.indirectSpecular(builder));
+    if (this.matc.coat && this.matc.metalRough) {
+      const { radiance, iblIrradiance, reflectedLight } = builder.context;
+      const dielectric = radiance.mul(this.singleScatteringDielectric)
+        .add(this.multiScatteringDielectric.mul(iblIrradiance.mul(1 / Math.PI)));
+      reflectedLight.indirectSpecular.subAssign(
+        dielectric.mul(metalness.oneMinus()).mul(this.matcTransmission.oneMinus()));
+    }
     if (this.matc.coat) {
       this.matcTerms();
       this.clearcoatSpecularIndirect.addAssign(this.clearcoatRadiance.mul(this.matcCoatPreintegrated));
@@ -229,10 +242,16 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
 
   // Image lighting: sum_i c_i bbar_i times matc's compensation (as the CPU runtime computes it).
   // With metalRough (glTF's metal-rough model), the dielectric's term (start() computes it into
-  // singleScatteringDielectric) stays three's own; three mixes the two by metalness.
+  // singleScatteringDielectric, before the lights) stays three's own; three mixes the two by
+  // metalness. Under a coat, three's diffuse is seen through it from then on: diffuseContribution
+  // times the coat's transmission.
   computeMultiscattering(singleScatter, ...rest) {
     if (this.matc.metalRough && singleScatter === this.singleScatteringDielectric) {
       super.computeMultiscattering(singleScatter, ...rest);
+      if (this.matc.coat) {
+        this.matcTerms();
+        diffuseContribution.mulAssign(this.matcTransmission);
+      }
       return;
     }
     this.matcTerms();
@@ -250,10 +269,10 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
                          : this.matc.functions.fresnel({ ...this.matc.rows, mu: dotVH });
     if (this.matc.metalRough) {
       this.metalRoughDirect({ irradiance: dotNL.mul(lightColor), ggx, fresnel, dotVH, reflectedLight });
-      return;
+    } else {
+      reflectedLight.directSpecular.addAssign(
+          dotNL.mul(lightColor).mul(ggx).mul(fresnel).mul(this.multiScatteringCompensation));
     }
-    reflectedLight.directSpecular.addAssign(
-        dotNL.mul(lightColor).mul(ggx).mul(fresnel).mul(this.multiScatteringCompensation));
     if (coat) {
       // The coat lobe: three's GGX at the coat's roughness and normal times the coat's F(v.h).
       const dotNLcc = clearcoatNormalView.dot(lightDirection).clamp();
@@ -267,11 +286,13 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
   // glTF's metal-rough model, punctual lights: three's dielectric lobe and matc's metal, each with
   // its own multiple-scattering scale, mixed by metalness as matc_metal_rough does ((1 - m) times
   // the dielectric's Schlick curve is that curve from (1 - m) F0 to specularF90 - m: three blends
-  // F90 as mix(f90, 1, m)), and three's diffuse with its fresnel_mix, as its own direct() draws it.
+  // F90 as mix(f90, 1, m)), and three's diffuse with its fresnel_mix, as its own direct() draws it;
+  // under a coat, the dielectric times the coat's transmission (its diffuse: diffuseContribution).
   metalRoughDirect({ irradiance, ggx, fresnel, dotVH, reflectedLight }) {
     const dielectricCompensation = specularColor.mul(this.dfg.x.add(this.dfg.y).reciprocal().sub(1.0)).add(1.0);
-    const dielectric = F_Schlick({ f0: specularColor.mul(metalness.oneMinus()), f90: specularF90.sub(metalness), dotVH })
+    const schlick = F_Schlick({ f0: specularColor.mul(metalness.oneMinus()), f90: specularF90.sub(metalness), dotVH })
       .mul(dielectricCompensation);
+    const dielectric = this.matc.coat ? schlick.mul(this.matcTransmission) : schlick;
     const metal = fresnel.mul(this.multiScatteringCompensation).mul(metalness);
     reflectedLight.directSpecular.addAssign(irradiance.mul(ggx).mul(dielectric.add(metal)));
     const F = F_Schlick({ f0: specularColor, f90: specularF90, dotVH });
@@ -306,15 +327,18 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
     const t2 = ltc_2.sample(uvLtc).toVar();
     const mInv = mat3(vec3(t1.x, 0, t1.y), vec3(0, 1, 0), vec3(t1.z, 0, t1.w)).toVar();
     const f0 = specularColor.mul(metalness.oneMinus());
-    const dielectric = f0.mul(t2.x).add(specularF90.sub(metalness).sub(f0).mul(t2.y));
+    const hill = f0.mul(t2.x).add(specularF90.sub(metalness).sub(f0).mul(t2.y));
+    const dielectric = this.matc.coat ? hill.mul(this.matcTransmission) : hill;
     reflectedLight.directSpecular.addAssign(lightColor.mul(dielectric).mul(LTC_Evaluate({ N, V, P, mInv, p0, p1, p2, p3 })));
     reflectedLight.directDiffuse.addAssign(lightColor.mul(diffuseContribution)
       .mul(LTC_Evaluate({ N, V, P, mInv: mat3(1, 0, 0, 0, 1, 0, 0, 0, 1), p0, p1, p2, p3 })));
-    this.matcRectArea({ lightColor: lightColor.mul(metalness), rect, reflectedLight, ltc_1 });
+    this.matcRectArea({ lightColor, rect, reflectedLight, ltc_1, baseWeight: metalness });
   }
 
-  // matc's metal under a rect area light.
-  matcRectArea({ lightColor, rect, reflectedLight, ltc_1 }) {
+  // matc's metal under a rect area light, its base lobe weighted by `baseWeight` (the metal-rough
+  // mix's metalness; the coat lobe lies over the mix whole).
+  matcRectArea({ lightColor, rect, reflectedLight, ltc_1, baseWeight = null }) {
+    const baseColour = baseWeight ? lightColor.mul(baseWeight) : lightColor;
     const { N, V, P, p0, p1, p2, p3 } = rect;
     if (this.matc.areaLights !== "engine") {
       const { functions, ltc, rows, url } = this.matc;
@@ -325,7 +349,7 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
       const radiance = this.matc.areaLights === "quality"
           ? functions.quadLightFollowing({ ...rows, bbar: this.matcBbar, ltc: texel, roughness, ...corners })
           : this.matcPreintegrated.mul(functions.quadIntegral({ ltc: texel, ...corners }));
-      reflectedLight.directSpecular.addAssign(lightColor.mul(radiance).mul(lit));
+      reflectedLight.directSpecular.addAssign(baseColour.mul(radiance).mul(lit));
       if (this.matc.coat) {
         // The coat lobe: matc's LTC at the coat's roughness and normal times its preintegrated F.
         const Ncc = clearcoatNormalView;
@@ -338,7 +362,7 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
     const t1 = ltc_1.sample(LTC_Uv({ N, V, roughness })).toVar();
     const mInv = mat3(vec3(t1.x, 0, t1.y), vec3(0, 1, 0), vec3(t1.z, 0, t1.w)).toVar();
     reflectedLight.directSpecular.addAssign(
-        lightColor.mul(this.matcPreintegrated).mul(LTC_Evaluate({ N, V, P, mInv, p0, p1, p2, p3 })));
+        baseColour.mul(this.matcPreintegrated).mul(LTC_Evaluate({ N, V, P, mInv, p0, p1, p2, p3 })));
     if (this.matc.coat) {
       // The coat lobe: three's LTC shape at the coat's roughness times its preintegrated F.
       const Ncc = clearcoatNormalView;
@@ -435,8 +459,8 @@ function coatOf(compiled, material, areaLights, underCoat = null) {
 // (three's LTC shape with matc's Fresnel: cheaper; docs/web-engines.md measures them).
 // options.metalRough: glTF's metal-rough model per pixel (docs/gltf.md): the material keeps its
 // metalness (and metalnessNode, a glTF metal's map), and matc's metal replaces three's metal lobe
-// only, mixed with three's own dielectric by the pixel's metalness in every light path (not
-// under a matc coat).
+// only, mixed with three's own dielectric by the pixel's metalness in every light path (under a
+// matc coat, the dielectric seen through it as glTF layers a clear coat).
 export function useMatcFresnel(material, build, source, { areaLights = "matc", metalRough = false } = {}) {
   checkAreaLights(areaLights);
   if (!material?.isMeshStandardNodeMaterial) {
@@ -450,9 +474,6 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc", m
   }
   checkLightingModel();
   const { underCoat, ...rows } = coefficientRows(build, source);
-  if (metalRough && source?.material?.coat) {
-    throw new MatcWebError(`${source.material.name} is coated: metalRough mixes a bare metal with three's dielectric`);
-  }
   const coat = source?.material?.coat ? coatOf(source.material, material, areaLights, underCoat) : null;
   const matc = { rows, functions: build.functions, lut: build.lut, ltc: build.ltc, url: build.url, areaLights, coat,
                  source, metalRough };
