@@ -11,6 +11,10 @@
 //     (Babylon.js scales its diffuse by a Fresnel of its blended F0, not linear in m: there the
 //     mix is checked on the same asset with a black base colour, which has no diffuse);
 //   - and the engine's own half metal differs from matc's there (the check is not vacuous).
+// The same asset under a KHR_materials_clearcoat (metal_rough_coated.glb): matc's coat lobe over
+// the mix of matc's ends; the full metal as the CPU runtime's coated metal (both lobes); a texel of
+// metalness 0 as the engine's own uncoated dielectric times the coat's transmission at the pixel's
+// NdotV (1 - the coat lobe's F, matc eval) under the CPU runtime's coat lobe.
 //   node check-gltf-metal-rough.mjs MATC NPM_DIR [three|three-webgpu|babylon]
 import { mkdirSync, mkdtempSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";

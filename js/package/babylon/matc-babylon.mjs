@@ -31,7 +31,12 @@ export const kTestedBabylonVersions = ["9.31.0"];
 const kPixelSetup = `${pixelSetupGlsl({ uv: "vMainUV1", baseColour: "surfaceAlbedo.rgb", roughness: "roughness",
                                         ndotv: "absEps(dot(normalW, viewDirectionW))", coatRoughness: "vClearCoatParams.y" })}
 #ifdef MATC_METAL_ROUGH
-	matc_dielectric_energy = vec3(1.0);
+	#ifdef MATC_COATED
+		matc_dielectric_transmission = matc_coat_transmission();
+	#else
+		matc_dielectric_transmission = 1.0;
+	#endif
+	matc_dielectric_energy = vec3(matc_dielectric_transmission);
 	matc_metal_energy = vec3(1.0);
 #endif
 `;
@@ -47,8 +52,11 @@ ${lobesGlsl(material)}
 // glTF's metal-rough model per pixel (docs/gltf.md): Babylon's own dielectric lobe mixed with
 // matc's metal by metallic, each with its own energy conservation (Babylon scales the sum by one
 // factor of its blended F0; matc_metal_rough takes each lobe with its own, set before the lights).
-// The dielectric's F90, which Babylon blends with the metal's, from its reflectivity block.
+// The dielectric's F90, which Babylon blends with the metal's, from its reflectivity block. Under a
+// matc coat, the coat's transmission at NdotV scales all the dielectric reflects (glTF's layering
+// of a clear coat; docs/gltf.md): its specular through matc_dielectric_energy, its diffuse albedo.
 vec3 matc_dielectric_f90;
+float matc_dielectric_transmission;
 vec3 matc_dielectric_energy;
 vec3 matc_metal_energy;
 #endif
@@ -108,6 +116,14 @@ const kPatches = [
     what: "this pixel's coefficients (uniform, coefficient table or baked) and its texel of matc_lut",
   },
   {
+    source: "pbrPixelShader",
+    anchor: "surfaceAlbedo=reflectivityOut.surfaceAlbedo;",
+    replacement: "surfaceAlbedo=reflectivityOut.surfaceAlbedo;\n#if defined(MATC_METAL_ROUGH) && defined(MATC_COATED)\n" +
+                 "surfaceAlbedo*=matc_dielectric_transmission;\n#endif\n",
+    what: "with metalRough under a matc coat, the dielectric's diffuse albedo times the coat's transmission at NdotV " +
+          "(glTF's layering of a clear coat; its specular through its energy factor)",
+  },
+  {
     source: "lightFragment",
     anchor: "coloredFresnel=fresnelSchlickGGX(preInfo.VdotH,clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90);",
     replacement: "\n#ifdef MATC_METAL_ROUGH\n" +
@@ -162,7 +178,7 @@ const kPatches = [
     anchor: "vec3 colorSpecularEnvironmentReflectance=getReflectanceFromBRDFLookup(clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90,environmentBrdf);",
     replacement: "\n#ifdef MATC_METAL_ROUGH\n" +
                  "#ifdef MS_BRDF_ENERGY_CONSERVATION\n" +
-                 "matc_dielectric_energy=getEnergyConservationFactor(reflectivityOut.dielectricColorF0,environmentBrdf);\n" +
+                 "matc_dielectric_energy=getEnergyConservationFactor(reflectivityOut.dielectricColorF0,environmentBrdf)*matc_dielectric_transmission;\n" +
                  "matc_metal_energy=matc_base_compensation();\n" +
                  "#endif\n" +
                  "vec3 colorSpecularEnvironmentReflectance=matc_metal_rough(getReflectanceFromBRDFLookup(reflectivityOut.dielectricColorF0," +
@@ -285,9 +301,6 @@ function preparePlugin(material, build, source, areaLights, metalRough) {
   const coat = source.material?.coat;
   // Babylon's rect lights have no coat lobe of their own: matc's LTC draws it.
   if (coat) checkCoatedAreaLights(source.material, areaLights, ["matc"]);
-  if (metalRough && coat) {
-    throw new MatcWebError(`${source.material.name} is coated: metalRough mixes a bare metal with Babylon's dielectric`);
-  }
   if (metalRough && material.brdf?.conductorSpecularModel === Constants.MATERIAL_CONDUCTOR_SPECULAR_MODEL_OPENPBR) {
     throw new MatcWebError("metalRough: the material uses Babylon's OpenPBR conductor model (an edge colour), " +
                            "which mixes its own dielectric already");
@@ -425,8 +438,9 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
 // or "engine" (Babylon's LTC shape with matc's Fresnel: cheaper; needs Babylon's LTC tables).
 // options.metalRough: glTF's metal-rough model per pixel (docs/gltf.md): the material keeps its
 // metallic and metallicTexture, and matc's metal replaces Babylon's metal lobe only, mixed with
-// Babylon's own dielectric by the pixel's metallic in every light path (not under a matc coat,
-// nor under Babylon's OpenPBR conductor model).
+// Babylon's own dielectric by the pixel's metallic in every light path (under a matc coat, the
+// dielectric seen through it as glTF layers a clear coat; not under Babylon's OpenPBR conductor
+// model).
 export function useMatcFresnel(material, build, source, { areaLights = "matc", metalRough = false } = {}) {
   if (!material?.getClassName || !["PBRMaterial"].includes(material.getClassName())) {
     throw new MatcWebError("useMatcFresnel takes a Babylon.js PBRMaterial");

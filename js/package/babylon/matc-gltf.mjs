@@ -56,7 +56,7 @@ class MatcGltfLoaderExtension {
     return this.loader.loadMaterialPropertiesAsync(context, material, babylonMaterial).then(async () => {
       const found = await this.metals.metalOf(material.index);
       if (!found) return;
-      // glTF's metal-rough mix per pixel (gltfMetals leaves out coated metals), but not under
+      // glTF's metal-rough mix per pixel (under a matc coat too), but not under
       // Babylon's OpenPBR conductor model (an edge colour, which mixes its dielectric itself):
       // there a full metal, with a note.
       const openPbr = babylonMaterial.brdf?.conductorSpecularModel === Constants.MATERIAL_CONDUCTOR_SPECULAR_MODEL_OPENPBR;
