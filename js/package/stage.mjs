@@ -55,7 +55,7 @@ for (const [folder, files] of [["three", ["matc-three.mjs", "matc-three-webgpu.m
                                ["integration", ["build-directory.mjs", "coefficient-rows.mjs", "errors.mjs",
                                                 "f0-table.mjs", "gltf-extension.mjs", "physical-glsl.mjs",
                                                 "shader-patches.mjs", "sources.mjs", "README.md"]],
-                               ["lookdev", ["index.html", "lookdev.css", "lookdev.mjs", "lookdev-plot.mjs",
+                               ["lookdev", ["index.html", "lookdev.css", "lookdev.mjs", "lookdev-asset.mjs", "lookdev-plot.mjs",
                                             "lookdev-state.mjs", "lookdev-view.mjs", "README.md"]]]) {
   fs.mkdirSync(path.join(outDir, folder));
   for (const file of files) fs.copyFileSync(path.join(here, folder, file), path.join(outDir, folder, file));

@@ -36,7 +36,8 @@ CoatedFresnel evaluate_coated_fresnel(const Coefficients& in_air, const CoatCoef
 }
 
 double coat_transmission(const CoatCoefficients& coat, const ShaderBasis& basis, double ndotv) {
-  return 1.0 - coat.weight * std::min(coat_sum(coat.coat, evaluate_shader_basis(basis, ndotv)), 1.0);
+  return 1.0 -
+         coat.weight * std::min(coat_sum(coat.coat, evaluate_shader_basis(basis, ndotv)), 1.0);
 }
 
 CoatedFresnel evaluate_coated_fbar(const Coefficients& in_air, const CoatCoefficients& coat,

@@ -2,7 +2,8 @@
 // package as a project's node_modules and driven through its controls in headless Chromium
 // (lookdev-check-page.mjs). For materials chosen as a person would (a preset, a colour-picker
 // metal in ACEScg, typed n and k, a coated metal, a pasted material file, a pasted MaterialX
-// document and a pasted glTF asset of several metals, one chosen, a .gltf dropped with its buffer):
+// document and a pasted glTF asset of several metals, one chosen, a .gltf dropped with its buffer,
+// a .glb whose metals take their metalness from a texture or a factor):
 //   - no console error or warning, no uncaught exception;
 //   - the probe pixels of the page's matc material (its three.js material, under the engine checks'
 //     environment, point and rect lights) equal the CPU runtime's (`matc eval`), to 1e-4;
@@ -15,6 +16,10 @@
 //     keeps the last good material (coefficients, link);
 //   - the page's link reproduces a material (a second load from the coated case's URL), and a
 //     broken link opens the default metal with its reason;
+//   - the dropped .glb shows in the asset view, loaded by matc's glTF plugin beside three.js's own
+//     GLTFLoader, and each of its materials on the probe plane is right: a texel of metalness 0 as
+//     three.js's own material, the full metal as the CPU runtime's, half metal and the factor 0.3
+//     as the mix (glTF's metal-rough model per pixel, docs/gltf.md);
 //   - the page and its assets stay under 200 KiB.
 //   node check-lookdev.mjs MATC NPM_DIR MATC_API_DUMP
 import { execFileSync } from "node:child_process";
@@ -23,6 +28,7 @@ import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { compareProbes, expectedProbes, kPointLight, kProbePixels, kProbeRectLight, kProbeSize,
          kThreeJsProbeTerms } from "./engine-probes.mjs";
+import { kMetalRough, metalRoughAsset } from "./gltf-assets.mjs";
 import { runLookdevPage } from "./lookdev-page.mjs";
 import { check, finish } from "./report.mjs";
 import { run } from "./shader-cases.mjs";
@@ -114,6 +120,10 @@ const kCases = [
     lights: ["environment"] },
 ];
 
+// metal_rough.glb's materials (gltf-assets.mjs): metalness 0, 128/255 and 1 from a texture, 0.3
+// from a factor, and a plain full metal.
+const kAssetMaterials = [...Object.keys(kMetalRough.textured), ...Object.keys(kMetalRough.factor), kMetalRough.plain];
+
 const kConfig = { probeSize: kProbeSize, pixels: kProbePixels, point: kPointLight, rect: kProbeRectLight,
                   cases: kCases };
 
@@ -150,6 +160,13 @@ function maxDifference(a, b) {
 
 const dir = mkdtempSync(join(tmpdir(), "matc-lookdev-"));
 try {
+  const metalRoughGlb = join(dir, "metal_rough.glb");
+  await metalRoughAsset(metalRoughGlb);
+  kCases.push({
+    key: "dropped textured-metalness asset", name: "Metal_0", bare: true, lights: ["environment"],
+    steps: [{ drop: [{ name: "metal_rough.glb", base64: readFileSync(metalRoughGlb).toString("base64") }] }],
+    assetMaterials: kAssetMaterials, choices: kAssetMaterials.map((name) => name.replace(" ", "_")),
+  });
   const result = await runLookdevPage({ npmDir, config: kConfig, dir: join(dir, "page"), windowSize: kWindowSize });
   check(result.errors.length === 0, `page: ${result.errors.join("\n")}`);
   check(result.console.length === 0, `the page's console: ${result.console.join("\n")}`);
@@ -201,6 +218,10 @@ try {
     }
 
     for (const [light, pixels] of Object.entries(shown.renders)) renders[`${testCase.name} ${light} r=0.3`] = pixels;
+    // The asset view's full metal (matc's loader) is the chosen material's metal at metalness 1.
+    for (const [light, pixels] of Object.entries(shown.asset?.renders?.["matc Metal Full"] ?? {})) {
+      renders[`Metal_Full ${light} r=0.3`] = pixels;
+    }
     for (const refusal of testCase.refusals ?? []) {
       const refused = result.refusals[refusal.key];
       check(Boolean(refused), `${refusal.key}: not run`);
@@ -212,16 +233,47 @@ try {
       if (refusal.control) check(refused.controlMarked, `${refusal.key}: the control is not marked`);
     }
   }
+  // The asset view of the dropped .glb.
+  const assetCase = result.cases["dropped textured-metalness asset"];
+  const asset = assetCase?.asset;
+  const mixed = (asset?.metals ?? []).filter((metal) => metal.metalRough).map((metal) => metal.name);
+  check(asset?.scene === "asset", `the dropped asset is not shown (scene ${asset?.scene})`);
+  check(mixed.join() === [...Object.keys(kMetalRough.textured), ...Object.keys(kMetalRough.factor)].join(),
+        `the asset's metals mixed per pixel: ${mixed}`);
+  check(asset?.summary?.includes("4 mixed per pixel"), `the asset's line: ${asset?.summary}`);
+  const assetRender = (load, name, light) => asset?.renders?.[`${load} ${name}`]?.[light] ?? [];
+  const difference = (a, b) => (a.length === b.length && a.length > 0
+    ? Math.max(...a.flatMap((rgb, i) => rgb.map((value, c) => Math.abs(value - b[i][c]) / Math.max(1, Math.abs(b[i][c])))))
+    : Infinity);
+  let worstAssetMix = 0;
+  for (const light of assetCase ? ["environment"] : []) {
+    const dielectric = assetRender("engine", "Metal 0", light), metal = assetRender("matc", "Metal Full", light);
+    for (const [name, m] of [["Metal 0", 0], ["Metal Half", kMetalRough.textured["Metal Half"] / 255], ["Metal Full", 1],
+                             ["Metal Factor", kMetalRough.factor["Metal Factor"]]]) {
+      const d = difference(assetRender("matc", name, light), dielectric.map((rgb, i) => rgb.map((v, c) => (1 - m) * v + m * metal[i][c])));
+      worstAssetMix = Math.max(worstAssetMix, d);
+      check(d <= 1e-5, `the asset view's ${name}, ${light}: ${d} from (1 - ${m}) three.js's own + ${m} matc's metal`);
+    }
+    check(difference(assetRender("engine", "Metal Full", light), metal) > 1e-3, "the asset view: three.js's own metal equals matc's");
+  }
   const coated = result.cases.coated;
   check(coated?.labels?.[1]?.includes("F0 in coat"), `coated: the comparison's label ${coated?.labels}`);
 
   // The probes, each case under its lights, against the CPU runtime at the page's compile (linear Rec.709).
+  // The asset view's full metal: the material file `matc import` writes for it.
+  const imported = join(dir, "imported");
+  run(matc, ["import", "-q", "-o", imported, metalRoughGlb]);
+  writeFileSync(join(materials, "Metal_Full.json"), readFileSync(join(imported, "Metal_Full.json")));
+  const assetProbes = assetCase ? [{ key: "Metal_Full environment r=0.3", light: "environment", roughness: 0.3 }] : [];
   const probeOut = join(dir, "probe-out");
-  run(matc, ["-q", "-o", probeOut, "--emit", "json", ...kCases.map((c) => join(materials, `${c.name}.json`))]);
-  const probeRenders = kCases.flatMap((c) => c.lights.map((light) => ({ key: `${c.name} ${light} r=0.3`, light, roughness: 0.3 })));
+  run(matc, ["-q", "-o", probeOut, "--emit", "json", ...kCases.map((c) => join(materials, `${c.name}.json`)),
+             join(materials, "Metal_Full.json")]);
+  const probeRenders = [...kCases.flatMap((c) => c.lights.map((light) => ({ key: `${c.name} ${light} r=0.3`, light, roughness: 0.3 }))),
+                        ...assetProbes];
   const expected = expectedProbes({
     matc, materialsDir: materials, out: probeOut, ...kThreeJsProbeTerms, renders: probeRenders,
-    bare: kCases.filter((c) => c.bare).map((c) => c.name), coated: kCases.filter((c) => !c.bare).map((c) => c.name) });
+    bare: [...kCases.filter((c) => c.bare).map((c) => c.name), "Metal_Full"],
+    coated: kCases.filter((c) => !c.bare).map((c) => c.name) });
   check(Object.keys(expected).length === probeRenders.length, `${Object.keys(expected).length} probe renders expected`);
   const worstProbe = compareProbes(renders, expected);
 
@@ -246,7 +298,8 @@ try {
               `${worstProbe.toExponential(2)}; curves within ${worstCurve.toExponential(2)} of the native library; ` +
               `${identicalSnippets} snippets byte-identical to matc's, ${identicalJson} of ${kCases.length} ` +
               `<name>.json too (the others within ${worstJson.toExponential(2)}); ` +
-              `${Object.keys(result.refusals).length} refusals shown beside their controls; the link reproduces ` +
+              `${Object.keys(result.refusals).length} refusals shown beside their controls; a dropped textured-metalness ` +
+              `asset in the asset view within ${worstAssetMix.toExponential(2)} of the mix of three.js's own and matc's metal; the link reproduces ` +
               `a coated material; page ${(size / 1024).toFixed(1)} KiB`);
 } finally {
   rmSync(dir, { recursive: true, force: true });

@@ -32,11 +32,13 @@ function sphere(document, buffer, segments = 16, rings = 8) {
     .setIndices(accessor("SCALAR", new Uint16Array(indices)));
 }
 
-function scene(document, materials) {
+// One UV sphere per material in a row along x; `segments` and `rings` as sphere() takes them.
+function scene(document, materials, { segments = 16, rings = 8 } = {}) {
   const buffer = document.createBuffer("geometry");
   const root = document.createScene("scene");
   materials.forEach((material, i) => {
-    const mesh = document.createMesh(material.getName()).addPrimitive(sphere(document, buffer).setMaterial(material));
+    const mesh = document.createMesh(material.getName())
+      .addPrimitive(sphere(document, buffer, segments, rings).setMaterial(material));
     root.addChild(document.createNode(material.getName()).setMesh(mesh).setTranslation([2.5 * i, 0, 0]));
   });
 }
@@ -135,6 +137,23 @@ export async function metalRoughAsset(path, { baseColor = kMetalRough.baseColor,
   materials.push(material(kMetalRough.plain));
   scene(document, materials);
   writeFileSync(path, await new NodeIO().registerExtensions([KHRMaterialsClearcoat]).writeBinary(document));
+}
+
+// metalness_stripes.glb: one gold sphere whose metallicRoughnessTexture paints bands of metal,
+// half metal and non-metal (blue 255, 0, 128, 0) from pole to pole, as a real asset paints worn paint or
+// inlays: the look-development page's asset view in docs (docs/images/lookdev_asset.png).
+export async function metalnessStripesAsset(path) {
+  const document = new Document();
+  const size = 64, bands = [255, 0, 128, 0];
+  const texels = new Uint8Array(size * size * 3);
+  for (let y = 0; y < size; ++y) {
+    for (let x = 0; x < size; ++x) texels.set([0, 255, bands[Math.floor((y * 2 * bands.length) / size) % bands.length]], 3 * (y * size + x));
+  }
+  const gold = document.createMaterial("Inlaid gold").setBaseColorFactor([1.0, 0.71, 0.29, 1])
+    .setRoughnessFactor(0.12).setMetallicFactor(1)
+    .setMetallicRoughnessTexture(document.createTexture("stripes").setMimeType("image/png").setImage(pngBytes(size, size, texels)));
+  scene(document, [gold], { segments: 96, rings: 48 });
+  writeFileSync(path, await new NodeIO().writeBinary(document));
 }
 
 // A GLB (`bytes`) with its JSON chunk edited by `edit(json)`; the BIN chunk carried as it is.

@@ -22,7 +22,9 @@ const $ = (selector) => {
 function apply(step) {
   if (step.drop !== undefined) {
     const transfer = new DataTransfer();
-    for (const file of step.drop) transfer.items.add(new File([file.text], file.name));
+    const bytes = (file) => (file.base64 !== undefined
+      ? Uint8Array.from(atob(file.base64), (character) => character.charCodeAt(0)) : file.text);
+    for (const file of step.drop) transfer.items.add(new File([bytes(file)], file.name));
     document.dispatchEvent(new DragEvent("drop", { dataTransfer: transfer, bubbles: true, cancelable: true }));
     return;
   }
@@ -47,13 +49,13 @@ async function settle(lookdev) {
   await lookdev.idle();
 }
 
-// The page's matc material on the probe plane under each light, read at the probe pixels.
-function probeRenders(view, lights) {
+// The page's matc material (or `material`) on the probe plane under each light, read at the probe pixels.
+function probeRenders(view, lights, material = view.matcMaterial) {
   const renderer = view.renderer;
   const { target, camera, pmrem, environment } = probeSetup(THREE, renderer, config.probeSize);
   const renders = {};
   for (const light of lights) {
-    renders[light] = renderProbePixels(renderer, probeScene(THREE, view.matcMaterial, light, config, environment),
+    renders[light] = renderProbePixels(renderer, probeScene(THREE, material, light, config, environment),
                                        camera, target, config.pixels);
   }
   renderer.setRenderTarget(null);
@@ -107,6 +109,22 @@ try {
       renders: probeRenders(app.view, testCase.lights ?? []),
       labels: [$("#label-left").textContent, $("#label-right").textContent],
     };
+    // An opened asset's view: what the page says of it, and each named glTF material of either load
+    // (matc's loader, three.js's own) on the probe plane.
+    if (testCase.assetMaterials) {
+      const asset = app.view.asset;
+      const byName = (root) => {
+        const found = {};
+        root?.traverse((object) => { if (object.isMesh) found[object.material.name] = object.material; });
+        return found;
+      };
+      const loads = { matc: byName(asset?.matc), engine: byName(asset?.engine) };
+      out.cases[testCase.key].asset = {
+        summary: $("#asset-notes").textContent, scene: $("#scene").value, metals: asset?.metals ?? [],
+        renders: Object.fromEntries(Object.entries(loads).flatMap(([load, materials]) => testCase.assetMaterials
+          .filter((name) => materials[name]).map((name) => [`${load} ${name}`, probeRenders(app.view, testCase.lights, materials[name])]))),
+      };
+    }
     // Each refusal: the message beside its control, the last good material kept.
     for (const refusal of testCase.refusals ?? []) {
       const before = { compiled: app.compiled, coefficients: coefficientsOf(app.view), hash: location.hash };

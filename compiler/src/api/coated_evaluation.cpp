@@ -127,21 +127,22 @@ void add_coated(const EvaluationInputs& options, const CompiledMaterial& compile
                       ? Lut{}
                       : stored_as(preintegrate_lut(basis, options.bake), options.precision);
   if (options.metalness) {
-    add_metal_rough(
-        options,
-        {.fresnel = [&](double mu) {
-           return runtime::evaluate_coated_fresnel(compiled.coefficients, coefficients,
-                                                   shader_basis, mu);
-         },
-         .fbar = [&](double ndotv,
-                     double roughness) {
-           return runtime::evaluate_coated_fbar(compiled.coefficients, coefficients, lut.view(),
-                                                ndotv, roughness);
-         },
-         .transmission = [&](double ndotv) {
-           return runtime::coat_transmission(coefficients, shader_basis, ndotv);
-         }},
-        out);
+    add_metal_rough(options,
+                    {.fresnel =
+                         [&](double mu) {
+                           return runtime::evaluate_coated_fresnel(compiled.coefficients,
+                                                                   coefficients, shader_basis, mu);
+                         },
+                     .fbar =
+                         [&](double ndotv, double roughness) {
+                           return runtime::evaluate_coated_fbar(compiled.coefficients, coefficients,
+                                                                lut.view(), ndotv, roughness);
+                         },
+                     .transmission =
+                         [&](double ndotv) {
+                           return runtime::coat_transmission(coefficients, shader_basis, ndotv);
+                         }},
+                    out);
   }
   if (options.ndotv.empty()) return;
   const runtime::AnalyticLutCoefficients& analytic = runtime::shipped_analytic_lut(basis.kind);

@@ -24,8 +24,7 @@ MetalRoughLobes bare_metal_lobes(const runtime::Coefficients& coefficients,
                                  runtime::BasisKind basis, const Lut& lut) {
   const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(basis);
   return {
-      .fresnel = [&coefficients, &shader_basis](
-                     double mu) -> runtime::CoatedFresnel {
+      .fresnel = [&coefficients, &shader_basis](double mu) -> runtime::CoatedFresnel {
         return {.base = runtime::evaluate_fresnel(coefficients, shader_basis, mu)};
       },
       .fbar = [&coefficients, &lut](double ndotv, double roughness) -> runtime::CoatedFresnel {

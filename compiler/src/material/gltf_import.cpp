@@ -217,7 +217,8 @@ class Importer {
       not_carried.push_back(
           fmt::format("partial metalness (metallicFactor {}: {})", pbr.metallicFactor, how));
     if (pbr.metallicRoughnessTexture.index >= 0)
-      not_carried.push_back(fmt::format("metallicRoughnessTexture's metalness ({}, per pixel)", how));
+      not_carried.push_back(
+          fmt::format("metallicRoughnessTexture's metalness ({}, per pixel)", how));
   }
 
   // EXT_materials_specular_edge_color inside KHR_materials_specular: the specular colour times

@@ -2,8 +2,9 @@
 // saddle) under a room environment and a rect light, drawn by three.js's WebGLRenderer with matc's
 // Fresnel in every light path (the package's matc/three integration), beside the same objects in
 // three.js's own metal (Schlick's curve from F0; for a coated metal F0 seen from inside the coat,
-// as Filament converts it, under three's clearcoat). Split view, one side only, or flipped; orbit
-// controls; frames drawn on demand.
+// as Filament converts it, under three's clearcoat). Or, for an opened glTF asset, the asset itself
+// as matc's GLTFLoader plugin loads it beside three.js's own loading (lookdev-asset.mjs). Split
+// view, one side only, or flipped; orbit controls; frames drawn on demand.
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 import { RoomEnvironment } from "three/addons/environments/RoomEnvironment.js";
@@ -69,6 +70,56 @@ export class LookdevView {
     this.controls.addEventListener("change", () => this.requestFrame());
     new ResizeObserver(() => this.requestFrame()).observe(canvas);
     this.pending = 0;  // the requested animation frame's id, 0 when none
+    this.asset = null;       // loadAssetPair's, while an asset is open
+    this.showAsset = false;  // the asset drawn instead of the sphere and torus
+  }
+
+  // Puts an opened asset (loadAssetPair's, or null) in the scene, framed by the camera; returns the
+  // one it replaces (for the caller to dispose).
+  setAsset(asset) {
+    const previous = this.asset;
+    if (previous) this.scene.remove(previous.matc, previous.engine);
+    this.asset = asset;
+    if (asset) {
+      this.scene.add(asset.matc, asset.engine);
+      const sphere = new THREE.Box3().setFromObject(asset.engine).getBoundingSphere(new THREE.Sphere());
+      this.assetFrame = { centre: sphere.center.clone(), radius: Math.max(sphere.radius, 1e-3) };
+    }
+    this.frameCamera();
+    this.requestFrame();
+    return previous;
+  }
+
+  // Draws the asset (true) or the sphere and torus (false).
+  setShowAsset(show) {
+    this.showAsset = Boolean(show) && Boolean(this.asset);
+    this.frameCamera();
+    this.requestFrame();
+  }
+
+  // The camera at its start for what is shown: the sphere and torus, or the asset's bounds seen
+  // from its +z side.
+  frameCamera() {
+    if (this.showAsset && this.asset) {
+      // The bounds fit the narrower of the two fields of view of one side of the view.
+      const { centre, radius } = this.assetFrame;
+      const sideAspect = Math.max(1, this.canvas.clientWidth) / this.sides().length / Math.max(1, this.canvas.clientHeight);
+      const halfVertical = THREE.MathUtils.degToRad(this.camera.fov / 2);
+      const halfHorizontal = Math.atan(Math.tan(halfVertical) * sideAspect);
+      const distance = 1.1 * radius / Math.sin(Math.min(halfVertical, halfHorizontal));
+      this.camera.position.copy(centre).add(new THREE.Vector3(0, 0.03 * distance, distance));
+      this.camera.near = distance / 100;
+      this.camera.far = distance * 10;
+      this.controls.target.copy(centre);
+    } else {
+      this.camera.position.set(0, 0.2, 7.2);
+      this.camera.near = 0.1;
+      this.camera.far = 50;
+      this.controls.target.set(0, 0.03, 0);
+    }
+    this.camera.updateProjectionMatrix();
+    this.controls.update();
+    this.controls.saveState();
   }
 
   // Shows a compiled material: `loaded` (build.loadMaterial(compiled) of the build's language),
@@ -96,6 +147,7 @@ export class LookdevView {
 
   setMode(mode) {
     this.mode = mode;
+    if (this.showAsset) this.frameCamera();
     this.requestFrame();
   }
 
@@ -143,9 +195,17 @@ export class LookdevView {
     this.camera.aspect = part / height;
     this.camera.updateProjectionMatrix();
     this.renderer.setScissorTest(true);
+    const asset = this.showAsset ? this.asset : null;
     sides.forEach((side, i) => {
       const material = side === "matc" ? this.matcMaterial : this.engineMaterial;
-      for (const mesh of this.meshes) mesh.material = material;
+      for (const mesh of this.meshes) {
+        mesh.material = material;
+        mesh.visible = !asset;
+      }
+      if (this.asset) {
+        this.asset.matc.visible = Boolean(asset) && side === "matc";
+        this.asset.engine.visible = Boolean(asset) && side === "engine";
+      }
       this.renderer.setViewport(i * part, 0, part, height);
       this.renderer.setScissor(i * part, 0, part, height);
       this.renderer.render(this.scene, this.camera);

@@ -7,6 +7,7 @@
 import { createMatc } from "../index.mjs";
 import { compiledMatcBuildFiles } from "../matc-build.mjs";
 import { loadMatcBuild } from "../three/matc-three.mjs";
+import { disposeAsset, escapedText, loadAssetPair } from "./lookdev-asset.mjs";
 import { curveSeries, drawCurves } from "./lookdev-plot.mjs";
 import { defaultState, hexToLinear, kModels, linearToHex, materialText, modelDefaults, modelOf, rgbOf,
          stateFromHash, stateToHash } from "./lookdev-state.mjs";
@@ -264,6 +265,7 @@ function scheduleUpdate() {
 // is drawn.
 async function idle() {
   while (reading) await reading;
+  while (assetLoading) await assetLoading;
   while (running) await running;
   app.view.flush();
 }
@@ -272,6 +274,52 @@ async function idle() {
 
 let documentMaterials = [];
 let reading = null;  // dropped files being read
+let assetLoading = null;  // an opened glTF asset being loaded for the asset view
+let assetGeneration = 0;  // the newest opened document's number: an older load's result is dropped
+
+// The scene control: the metal (sphere and torus), or the opened glTF asset when it has meshes.
+function showSceneChoice() {
+  const asset = app.view.asset;
+  $("#scene-asset").disabled = !asset || asset.meshes === 0;
+  $("#scene").value = app.view.showAsset ? "asset" : "metal";
+}
+
+// The asset view's line: what matc's loader made of the asset's materials (names escaped as JSON).
+function assetSummary(path, asset) {
+  if (asset.meshes === 0) return `${escapedText(path)}: no meshes to show`;
+  const mixed = asset.metals.filter((metal) => metal.metalRough);
+  const names = (metals) => metals.map((metal) => JSON.stringify(metal.name)).join(", ");
+  return `${escapedText(path)}: ${asset.metals.length} metal${asset.metals.length === 1 ? "" : "s"} drawn by matc` +
+    (mixed.length ? `, ${mixed.length} mixed per pixel with three.js's dielectric by metalness (${names(mixed)})` : "");
+}
+
+// Loads an opened glTF document (bytes) into the asset view, and shows it when it has meshes; any
+// other document closes the asset view.
+function openAsset(bytes, path, files) {
+  const generation = ++assetGeneration;
+  const loaded = bytes ? loadAssetPair({ bytes, path, files, matc: app.matc, build: app.build }) : Promise.resolve(null);
+  assetLoading = loaded.then((asset) => {
+    if (generation !== assetGeneration) {
+      if (asset) disposeAsset(asset);
+      return;
+    }
+    const previous = app.view.setAsset(asset);
+    if (previous) disposeAsset(previous);
+    app.view.setShowAsset(Boolean(asset && asset.meshes > 0));
+    $("#asset-notes").textContent = asset ? assetSummary(path, asset) : "";
+    $("#asset-notes").classList.remove("refused");
+  }, (error) => {
+    if (generation !== assetGeneration) return;
+    const previous = app.view.setAsset(null);
+    if (previous) disposeAsset(previous);
+    app.view.setShowAsset(false);
+    $("#asset-notes").textContent = error.message;
+    $("#asset-notes").classList.add("refused");
+  }).finally(() => {
+    showSceneChoice();
+    if (generation === assetGeneration) assetLoading = null;
+  });
+}
 
 // `files`: the files the document names (a .gltf's buffers, a spectral CSV), by name.
 function openDocument(text, path, files = undefined) {
@@ -285,6 +333,8 @@ function openDocument(text, path, files = undefined) {
   }
   for (const old of documentMaterials) old.dispose();
   documentMaterials = materials;
+  const gltf = /\.(gltf|glb)$/i.test(path);
+  openAsset(gltf ? (typeof text === "string" ? new TextEncoder().encode(text) : text) : null, path, files ?? {});
   const choice = $("#choice");
   choice.replaceChildren(...materials.map((material, i) => new Option(material.name, String(i))));
   $("#choice-label").hidden = materials.length < 2;
@@ -366,6 +416,10 @@ async function start() {
     app.view.setMode(app.state.view);
     if (app.compiled) history.replaceState(null, "", stateToHash(app.state));
   });
+  $("#scene").addEventListener("change", () => {
+    app.view.setShowAsset($("#scene").value === "asset");
+    showSceneChoice();
+  });
   $("#load-pasted").addEventListener("click", () => openDocument($("#paste").value, pastedPath($("#paste").value)));
   $("#choice").addEventListener("change", () => chooseDocumentMaterial(Number($("#choice").value)));
   document.addEventListener("dragover", (event) => event.preventDefault());
@@ -399,7 +453,9 @@ async function start() {
     }
   });
   app.view.onFrame = (sides) => {
-    const names = { matc: "matc", engine: `three.js Schlick${app.compiled?.coat ? " (F0 in coat, clearcoat)" : ""}` };
+    const names = app.view.showAsset
+      ? { matc: "matc's glTF loader", engine: "three.js's GLTFLoader" }
+      : { matc: "matc", engine: `three.js Schlick${app.compiled?.coat ? " (F0 in coat, clearcoat)" : ""}` };
     $("#label-left").textContent = names[sides[0]];
     $("#label-right").textContent = sides[1] ? names[sides[1]] : "";
   };
@@ -418,4 +474,5 @@ window.matcLookdev = {
   idle,
   exportText,
   openDocument,
+  openDroppedFiles,
 };
