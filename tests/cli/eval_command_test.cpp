@@ -134,11 +134,22 @@ TEST_F(MatcCli, EvalMixesTheMetalWithGltfsDielectricByMetalness) {
   EXPECT_EQ(quarter["metalness"], 0.25);
   EXPECT_EQ(run({"eval", chromium, "--mu", "0.5", "--metalness", "1.5"}).exit_code, 2);
   EXPECT_EQ(run({"eval", chromium, "--mu", "0.5", "--metalness", "nan"}).exit_code, 2);
+  // A coated metal: the coat lobe over the mix, the dielectric under the coat's transmission
+  // (1 - the coat lobe's F at NdotV, here mu), the metal's part the base lobe.
   const CommandResult coated =
-      run({"eval", std::string(MATC_EXAMPLES_DIR) + "/copper_lacquered.json", "--mu", "0.5",
-           "--metalness", "0.5"});
-  EXPECT_EQ(coated.exit_code, 2);
-  EXPECT_NE(coated.err.find("is coated"), std::string::npos) << coated.err;
+      run({"eval", std::string(MATC_EXAMPLES_DIR) + "/copper_lacquered.json", "--mu", "0.2,0.5,1",
+           "--no-reference", "--metalness", "0.5"});
+  ASSERT_EQ(coated.exit_code, 0) << coated.err;
+  const auto layered = nlohmann::json::parse(coated.out);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double coat = layered["F_coat"][i].get<double>();
+    for (std::size_t c = 0; c < 3; ++c) {
+      EXPECT_NEAR(layered["F_metal_rough"][i][c].get<double>(),
+                  coat + 0.5 * (1.0 - coat) * layered["F_dielectric"][i][c].get<double>() +
+                      0.5 * layered["F_base"][i][c].get<double>(),
+                  1e-15);
+    }
+  }
   EXPECT_EQ(run({"eval", "--reflectivity", "0.5", "--edge-tint", "0.5", "--mu", "0.5",
                  "--metalness", "0.5"})
                 .exit_code,
