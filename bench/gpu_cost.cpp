@@ -47,7 +47,7 @@ struct Comparison {
   bool tinted_coat = false;  // ours_coated under a tinted coat instead of a clear one
 };
 
-const std::array<Comparison, 24> kComparisons = {{
+const std::array<Comparison, 26> kComparisons = {{
     {"F alone, compiled coefficients", FresnelQuantity::direct, FresnelModel::ours,
      FresnelModel::schlick, std::nullopt},
     {"one GGX light, compiled coefficients", FresnelQuantity::ggx_light, FresnelModel::ours,
@@ -123,6 +123,18 @@ const std::array<Comparison, 24> kComparisons = {{
      "metal at its factor",
      FresnelQuantity::preintegrated, FresnelModel::f0_table_coated, FresnelModel::ours_coated,
      std::nullopt},
+    // Issue #65: glTF's metal-rough model under a clear coat, against the engines' (Schlick's
+    // blended F0 under a Schlick coat lobe that takes its share off the whole base).
+    {"one GGX light, glTF metal-rough under a clear coat: ours coated per pixel through the F0 "
+     "table, the dielectric under the coat's transmission, vs Schlick's blended F0 under a Schlick "
+     "coat",
+     FresnelQuantity::ggx_light, FresnelModel::f0_table_coated_metal_rough,
+     FresnelModel::schlick_clear_coat_metal_rough, std::nullopt},
+    {"split-sum image light, glTF metal-rough under a clear coat (a fetch per lobe and the "
+     "engine's "
+     "dielectric DFG) vs Schlick's blended F0 under a Schlick coat",
+     FresnelQuantity::preintegrated, FresnelModel::f0_table_coated_metal_rough,
+     FresnelModel::schlick_clear_coat_metal_rough, std::nullopt},
     // Issue #28: a third of the 1586 its kernel measured, against Karis' 26 there.
     {"texture-free Fbar: our closed form vs Karis' fit", FresnelQuantity::preintegrated_closed_form,
      FresnelModel::ours, FresnelModel::schlick, 20.3},

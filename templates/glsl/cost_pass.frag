@@ -146,7 +146,13 @@ void main() {
   float coat_D = coat_a2 / (PI * coat_d * coat_d);
   float coat_Vis = 0.5 / (NoL * sqrt(NoV * NoV * (1.0 - coat_a2) + coat_a2) +
                           NoV * sqrt(NoL * NoL * (1.0 - coat_a2) + coat_a2));
-#if MATC_COST_COAT == 1 && MATC_COST_F0_TABLE
+#if MATC_COST_COAT == 1 && MATC_COST_F0_TABLE && MATC_COST_METAL_ROUGH
+  // glTF's metal-rough model under the coat: the dielectric through the coat's transmission.
+  vec3 base_f = matc_metal_rough_{{name}}(matc_dielectric_fresnel(vec3(0.04), vec3(1.0), VoH),
+                                          matc_fresnel_textured_{{name}}(c, under_coat, VoH),
+                                          metalness, NoV);
+  float coat_f = matc_coat_fresnel_{{name}}(VoH);
+#elif MATC_COST_COAT == 1 && MATC_COST_F0_TABLE
   vec3 base_f = matc_fresnel_textured_{{name}}(c, under_coat, VoH);
   float coat_f = matc_coat_fresnel_{{name}}(VoH);
 #elif MATC_COST_COAT == 1
@@ -211,7 +217,14 @@ void main() {
       textureLod(sampler2D(environment, matc_lut_sampler), env_uv, {{coat_roughness}} * 6.0).rgb;
   vec4 coat_texel = textureLod(sampler2D(matc_lut, matc_lut_sampler),
                                matc_lut_texcoord(NoV, {{coat_roughness}}), 0.0);
-#if MATC_COST_COAT == 1 && MATC_COST_F0_TABLE
+#if MATC_COST_COAT == 1 && MATC_COST_F0_TABLE && MATC_COST_METAL_ROUGH
+  vec3 f = matc_metal_rough_{{name}}(vec3(0.04) * COST_ENGINE_DFG.x + vec3(0.96) * COST_ENGINE_DFG.y,
+                                     matc_fresnel_preintegrated_textured_{{name}}(
+                                         c, under_coat, texel, coat_texel, NoV),
+                                     metalness, NoV) *
+               radiance +
+           matc_coat_fresnel_preintegrated_{{name}}(coat_texel) * coat_radiance;
+#elif MATC_COST_COAT == 1 && MATC_COST_F0_TABLE
   vec3 f = matc_fresnel_preintegrated_textured_{{name}}(c, under_coat, texel, coat_texel, NoV) *
                radiance +
            matc_coat_fresnel_preintegrated_{{name}}(coat_texel) * coat_radiance;

@@ -36,6 +36,8 @@ int material_map_count(FresnelModel model) {
     case FresnelModel::table:
     case FresnelModel::schlick_metal_rough:
     case FresnelModel::from_f0_metal_rough:
+    case FresnelModel::schlick_clear_coat_metal_rough:
+    case FresnelModel::f0_table_coated_metal_rough:
       return 2;
     case FresnelModel::baked:
       return 3;
@@ -51,13 +53,15 @@ int material_map_count(FresnelModel model) {
 
 // Whether a model reads a textured metal's F0 table (bare, or in air and under a coat).
 bool reads_f0_table(FresnelModel model) {
-  return model == FresnelModel::f0_table || model == FresnelModel::f0_table_coated;
+  return model == FresnelModel::f0_table || model == FresnelModel::f0_table_coated ||
+         model == FresnelModel::f0_table_coated_metal_rough;
 }
 
 }  // namespace
 
 bool draws_coated_material(FresnelModel model) {
-  return model == FresnelModel::ours_coated || model == FresnelModel::f0_table_coated;
+  return model == FresnelModel::ours_coated || model == FresnelModel::f0_table_coated ||
+         model == FresnelModel::f0_table_coated_metal_rough;
 }
 
 std::vector<CostPassBinding> cost_pass_bindings(FresnelModel model, FresnelQuantity quantity) {
@@ -79,15 +83,20 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
                              std::uint32_t height) {
   const bool schlick = model == FresnelModel::schlick || model == FresnelModel::schlick_textured ||
                        model == FresnelModel::schlick_clear_coat ||
-                       model == FresnelModel::schlick_metal_rough;
-  const bool metal_rough =
-      model == FresnelModel::schlick_metal_rough || model == FresnelModel::from_f0_metal_rough;
+                       model == FresnelModel::schlick_metal_rough ||
+                       model == FresnelModel::schlick_clear_coat_metal_rough;
+  const bool metal_rough = model == FresnelModel::schlick_metal_rough ||
+                           model == FresnelModel::from_f0_metal_rough ||
+                           model == FresnelModel::schlick_clear_coat_metal_rough ||
+                           model == FresnelModel::f0_table_coated_metal_rough;
   const bool from_f0 = model == FresnelModel::from_f0 || model == FresnelModel::from_f0_metal_rough;
   // 0: no coat; 1: ours coated; 2: ours bare under a Schlick coat; 3: Filament's clear coat.
   int coat = 0;
   if (draws_coated_material(model)) coat = 1;
   if (model == FresnelModel::ours_with_schlick_coat) coat = 2;
-  if (model == FresnelModel::schlick_clear_coat) coat = 3;
+  if (model == FresnelModel::schlick_clear_coat ||
+      model == FresnelModel::schlick_clear_coat_metal_rough)
+    coat = 3;
   if (coat == 1 && !compiled.coat)
     throw std::invalid_argument("cost pass: a coated model needs a coated material");
   // The coat lobe's roughness and weight: the coated material's, else a lacquer's 0.1 and 1.
@@ -109,6 +118,11 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
     model_name = "Schlick's metal-rough, F0 blended by a metalness map";
   if (model == FresnelModel::from_f0_metal_rough)
     model_name = "ours per pixel from an F0 map, mixed with the dielectric by a metalness map";
+  if (model == FresnelModel::schlick_clear_coat_metal_rough)
+    model_name = "Schlick's metal-rough under a Schlick clear coat lobe";
+  if (model == FresnelModel::f0_table_coated_metal_rough)
+    model_name =
+        "ours, coated, per pixel through an F0 table, mixed with the dielectric under the coat";
   const char* quantity_name = "Fbar";
   if (quantity == FresnelQuantity::direct) quantity_name = "F";
   if (quantity == FresnelQuantity::ggx_light) quantity_name = "one GGX light";

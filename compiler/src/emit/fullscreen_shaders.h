@@ -30,7 +30,10 @@ namespace matc {
 // Schlick's with F0 blended from the dielectric's 0.04 to the base colour by metalness, as engines
 // shade it (one curve); ours per pixel from the base colour (matc_coefficients_from_f0) mixed by
 // metalness with the dielectric's Schlick curve (matc_metal_rough), for image light with the
-// engine's two-channel DFG fetch for the dielectric (matc_lut's binding stands in for it).
+// engine's two-channel DFG fetch for the dielectric (matc_lut's binding stands in for it). The
+// same under a clear coat: Schlick's blended F0 under a Schlick coat lobe, as three.js layers it;
+// ours coated per pixel through the F0 table, mixed with the dielectric under the coat's
+// transmission (matc_metal_rough_<name>).
 enum class FresnelModel {
   schlick,
   schlick_textured,
@@ -44,7 +47,9 @@ enum class FresnelModel {
   schlick_clear_coat,
   f0_table_coated,
   schlick_metal_rough,
-  from_f0_metal_rough
+  from_f0_metal_rough,
+  schlick_clear_coat_metal_rough,
+  f0_table_coated_metal_rough
 };
 // F alone (mu from the pixel); F inside one GGX punctual light (D, height-correlated Smith V, F,
 // NdotL); image-based light: preintegrated Fbar from one table fetch times the prefiltered
