@@ -91,11 +91,20 @@ std::string DocumentNames::claim(const std::string& document_name, const SourceL
 
 std::string DocumentNames::claim_unique(const std::string& document_name,
                                         const std::set<std::string>& reserved,
+                                        const std::set<std::string>& shared_stems,
                                         const SourceLocation& location, const std::string& field,
                                         const std::string& description, Diagnostics& diagnostics) {
   const std::string name = sanitized_material_name(document_name);
-  const auto taken = taken_.find(material_name_key(name));
-  if (taken == taken_.end()) return claim(document_name, location, field, description, diagnostics);
+  const std::string name_key = material_name_key(name);
+  const auto taken = taken_.find(name_key);
+  if (taken == taken_.end() && !shared_stems.contains(name_key))
+    return claim(document_name, location, field, description, diagnostics);
+  const std::string why =
+      taken != taken_.end()
+          ? fmt::format("'{}' is '{}' ({}) ignoring case", name, taken->second.name,
+                        taken->second.description)
+          : fmt::format("'{}' names the files every build writes once ({}.*) ignoring case", name,
+                        name_key);
   // `<stem>_<n>` within the length limit, never with "__" (the stem loses a trailing '_').
   std::string stem = name;
   for (int n = 2;; ++n) {
@@ -105,10 +114,8 @@ std::string DocumentNames::claim_unique(const std::string& document_name,
       stem.pop_back();
     const std::string derived = stem + suffix;
     const std::string key = material_name_key(derived);
-    if (taken_.contains(key) || reserved.contains(key)) continue;
-    diagnostics.note(location, field,
-                     fmt::format("imported as '{}': '{}' is '{}' ({}) ignoring case", derived, name,
-                                 taken->second.name, taken->second.description),
+    if (taken_.contains(key) || reserved.contains(key) || shared_stems.contains(key)) continue;
+    diagnostics.note(location, field, fmt::format("imported as '{}': {}", derived, why),
                      "material names that differ ignoring case (they name files); the glTF "
                      "loaders match materials by index");
     taken_.emplace(key, First{derived, description});

@@ -9,12 +9,26 @@
 #include <nlohmann/json.hpp>
 
 #include "base/echoed_text.h"
+#include "emit/output_layout.h"
 #include "gltf_asset.h"
 #include "material/materialx_import.h"
 
 namespace matc {
 
 namespace {
+
+// The keys of the files every build writes once (matc_lut, matc_fresnel, ...): a material of
+// such a name would write over them, so a glTF material named so takes a derived name.
+const std::set<std::string>& shared_stem_keys() {
+  static const std::set<std::string> keys = [] {
+    std::set<std::string> out;
+    for (const std::string& stem : shared_file_stems())
+      out.insert(material_name_key(stem));
+    return out;
+  }();
+  return keys;
+}
+
 
 using nlohmann::ordered_json;
 
@@ -191,8 +205,9 @@ class Importer {
                               "lists what is left out and why)",
                               list));
     }
-    const std::string name = names_.claim_unique(document_name(index), names_held_, where(), field,
-                                                 field, result_.diagnostics);
+    const std::string name = names_.claim_unique(document_name(index), names_held_,
+                                                 shared_stem_keys(), where(), field, field,
+                                                 result_.diagnostics);
     if (name.empty()) return;
     material_json["name"] = name;
     const std::size_t added = result_.materials.size();

@@ -166,6 +166,26 @@ TEST(GltfImport, CollidingNamesTakeDerivedUniqueNames) {
     EXPECT_EQ(imported.materials[i].document_index, i);
 }
 
+// A glTF material named like a file every build writes once (matc_lut.ktx2, matc_fresnel.glsl,
+// matc_manifest.json, in any case) takes a derived name with a note: valid glTF, imported.
+TEST(GltfImport, NamesOfSharedFilesTakeDerivedNames) {
+  const auto imported = import_gltf(
+      asset(R"({"name": "matc_lut"}, {"name": "MATC_Fresnel"}, {"name": "matc_manifest"},
+               {"name": "matc_lut_2"})"),
+      "a.gltf");
+  ASSERT_FALSE(imported.diagnostics.has_errors()) << all_diagnostics(imported);
+  std::vector<std::string> names;
+  for (const ImportedMaterial& material : imported.materials)
+    names.push_back(material.material.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"matc_lut_3", "MATC_Fresnel_2", "matc_manifest_2",
+                                             "matc_lut_2"}));
+  EXPECT_NE(all_diagnostics(imported).find(
+                "a.gltf: note: materials[0] \"matc_lut\": imported as 'matc_lut_3': 'matc_lut' "
+                "names the files every build writes once (matc_lut.*) ignoring case"),
+            std::string::npos)
+      << all_diagnostics(imported);
+}
+
 TEST(GltfImport, ValuesOutsideGltfsOrMatcsRangesAreErrors) {
   for (const auto& [material, phrase] : std::vector<std::pair<std::string, std::string>>{
            {R"({"pbrMetallicRoughness": {"baseColorFactor": [1.2, 0.5, 0.5, 1]}})",
