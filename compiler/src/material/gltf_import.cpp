@@ -29,7 +29,6 @@ const std::set<std::string>& shared_stem_keys() {
   return keys;
 }
 
-
 using nlohmann::ordered_json;
 
 constexpr std::string_view kClearcoat = "KHR_materials_clearcoat";
@@ -205,9 +204,9 @@ class Importer {
                               "lists what is left out and why)",
                               list));
     }
-    const std::string name = names_.claim_unique(document_name(index), names_held_,
-                                                 shared_stem_keys(), where(), field, field,
-                                                 result_.diagnostics);
+    const std::string name =
+        names_.claim_unique(document_name(index), names_held_, shared_stem_keys(), where(), field,
+                            field, result_.diagnostics);
     if (name.empty()) return;
     material_json["name"] = name;
     const std::size_t added = result_.materials.size();
