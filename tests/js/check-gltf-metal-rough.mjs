@@ -14,7 +14,9 @@
 // The same asset under a KHR_materials_clearcoat (metal_rough_coated.glb): matc's coat lobe over
 // the mix of matc's ends; the full metal as the CPU runtime's coated metal (both lobes); a texel of
 // metalness 0 as the engine's own uncoated dielectric times the coat's transmission at the pixel's
-// NdotV (1 - the coat lobe's F, matc eval) under the CPU runtime's coat lobe.
+// NdotV (1 - the coat lobe's F, matc eval) under the CPU runtime's coat lobe. And under an edge
+// colour (metal_rough_edge.glb, EXT_materials_specular_edge_color; Babylon.js's OpenPBR conductor
+// model): the mix, and the full metal as the CPU runtime's edge-coloured metal.
 //   node check-gltf-metal-rough.mjs MATC NPM_DIR [three|three-webgpu|babylon]
 import { mkdirSync, mkdtempSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
@@ -136,7 +138,8 @@ try {
   await metalRoughAsset(asset);
   // Under a clear coat too; Babylon.js: the mix on a black base colour as well (no diffuse; see above).
   await metalRoughAsset(join(assets, "metal_rough_coated.glb"), { coat: kMetalRough.coat });
-  const names = ["metal_rough", "metal_rough_coated"];
+  await metalRoughAsset(join(assets, "metal_rough_edge.glb"), { edge: kMetalRough.edge });
+  const names = ["metal_rough", "metal_rough_coated", "metal_rough_edge"];
   if (babylon) {
     await metalRoughAsset(join(assets, "metal_rough_black.glb"), { baseColor: [0, 0, 0] });
     await metalRoughAsset(join(assets, "metal_rough_coated_black.glb"), { baseColor: [0, 0, 0], coat: kMetalRough.coat });
@@ -218,6 +221,15 @@ try {
   const coatedDielectric = compareProbes(dielectricRendered, dielectricExpected);
   const ownCoat = Math.max(...kLights.map((light) => difference(render("metal_rough_coated", "matc", "Metal 0", light),
                                                                  render("metal_rough_coated", "engine", "Metal 0", light))));
+  // The edge-coloured full metal (F82 tint; Babylon.js's OpenPBR conductor model) against the CPU runtime.
+  const edgeMaterials = join(dir, "materials_edge");
+  run(matc, ["import", "-q", "-o", edgeMaterials, join(assets, "metal_rough_edge.glb")]);
+  const edgeOut = join(dir, "out_edge");
+  run(matc, ["-q", "-o", edgeOut, "--emit", "json", join(edgeMaterials, "Metal_Full.json")]);
+  const expectedEdge = expectedProbes({ matc, materialsDir: edgeMaterials, out: edgeOut, ...terms, bare: ["Metal_Full"],
+                                        coated: [], renders: kLights.map((light) => ({ key: `Metal_Full ${light} r=0.3`, light })) });
+  const cpuEdge = compareProbes(Object.fromEntries(kLights.map((light) =>
+    [`Metal_Full ${light} r=0.3`, render("metal_rough_edge", "matc", "Metal Full", light)])), expectedEdge);
   console.log(`${engineName}: its glTF loader with matc's, glTF's metal-rough model per pixel: metalness 0, 128/255, 1 ` +
               `(texture) and 0.3 (factor) within ${worst.toExponential(2)} of (1 - m) the engine's own material + m matc's ` +
               `metal under point, rect and image light${babylon ? " (the mix on a black base colour)" : ""}; the full ` +
@@ -225,7 +237,9 @@ try {
               `${apart.toExponential(2)} away from matc's. Under a clear coat (factor ${kMetalRough.coat.factor}): ` +
               `the same mix of matc's ends, the full metal within ${cpuCoated.toExponential(2)} of the CPU runtime, ` +
               `a non-metal texel within ${coatedDielectric.toExponential(2)} of the engine's own dielectric through ` +
-              `matc's coat (the engine's own clear coat ${ownCoat.toExponential(2)} away)`);
+              `matc's coat (the engine's own clear coat ${ownCoat.toExponential(2)} away). Under an edge colour ` +
+              `(EXT_materials_specular_edge_color${babylon ? ", Babylon.js's OpenPBR conductor model" : ""}): the mix as above, ` +
+              `the full metal within ${cpuEdge.toExponential(2)} of the CPU runtime`);
 } finally {
   rmSync(dir, { recursive: true, force: true });
 }

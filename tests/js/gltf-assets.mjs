@@ -114,18 +114,23 @@ export const kMetalRough = {
   textured: { "Metal 0": 0, "Metal Half": 128, "Metal Full": 255 },
   factor: { "Metal Factor": 0.3 }, plain: "Metal Plain",
   coat: { factor: 0.8, roughness: 0.1 },  // metal_rough_coated.glb's
+  edge: [0.95, 0.8, 0.6],                 // metal_rough_edge.glb's edge colour
 };
 
 // metal_rough.glb: glTF's metal-rough model as artists paint it, one material per metalness:
 // a metallicRoughnessTexture (green 255: roughness at its factor; blue the metalness) on the
 // textured ones, a metallicFactor of 0.3 on one, and a plain full metal (factor 1, no texture).
-// `coat`: every material under a KHR_materials_clearcoat ({ factor, roughness }).
-export async function metalRoughAsset(path, { baseColor = kMetalRough.baseColor, coat = null } = {}) {
+// `coat`: every material under a KHR_materials_clearcoat ({ factor, roughness }); `edge`: every
+// material's edge colour (KHR_materials_specular's specularColorFactor with
+// EXT_materials_specular_edge_color: an F82 tint, Babylon.js's OpenPBR conductor model).
+export async function metalRoughAsset(path, { baseColor = kMetalRough.baseColor, coat = null, edge = null } = {}) {
   const document = new Document();
   const clearcoat = coat && document.createExtension(KHRMaterialsClearcoat);
+  const specular = edge && document.createExtension(KHRMaterialsSpecular);
   const material = (name) => {
     const made = document.createMaterial(name).setBaseColorFactor([...baseColor, 1])
       .setRoughnessFactor(kMetalRough.roughness).setMetallicFactor(1);
+    if (edge) made.setExtension("KHR_materials_specular", specular.createSpecular().setSpecularColorFactor(edge));
     if (!coat) return made;
     return made.setExtension("KHR_materials_clearcoat", clearcoat.createClearcoat().setClearcoatFactor(coat.factor)
       .setClearcoatRoughnessFactor(coat.roughness));
@@ -136,7 +141,13 @@ export async function metalRoughAsset(path, { baseColor = kMetalRough.baseColor,
   for (const [name, factor] of Object.entries(kMetalRough.factor)) materials.push(material(name).setMetallicFactor(factor));
   materials.push(material(kMetalRough.plain));
   scene(document, materials);
-  writeFileSync(path, await new NodeIO().registerExtensions([KHRMaterialsClearcoat]).writeBinary(document));
+  const bytes = await new NodeIO().registerExtensions([KHRMaterialsClearcoat, KHRMaterialsSpecular]).writeBinary(document);
+  writeFileSync(path, !edge ? bytes : withGlbJson(bytes, (json) => {
+    for (const written of json.materials) {
+      written.extensions.KHR_materials_specular.extensions = { EXT_materials_specular_edge_color: { specularEdgeColorEnabled: true } };
+    }
+    json.extensionsUsed.push("EXT_materials_specular_edge_color");
+  }));
 }
 
 // metalness_stripes.glb: one gold sphere whose metallicRoughnessTexture paints bands of metal,

@@ -105,6 +105,18 @@ vec4 matc_coat_light(preLightingInfo info, vec3 Ncc, float geometricRoughnessFac
 #endif
 `;
 
+// Image lighting with metalRough (under Babylon's own conductor model and its OpenPBR one alike):
+// each lobe's energy conservation, then Babylon's dielectric lookup mixed with matc's metal by
+// metallic; opens the #else of what stands without metalRough.
+const kMetalRoughImageLighting = "\n#ifdef MATC_METAL_ROUGH\n" +
+  "#ifdef MS_BRDF_ENERGY_CONSERVATION\n" +
+  "matc_dielectric_energy=getEnergyConservationFactor(reflectivityOut.dielectricColorF0,environmentBrdf)*matc_dielectric_transmission;\n" +
+  "matc_metal_energy=matc_base_compensation();\n" +
+  "#endif\n" +
+  "vec3 colorSpecularEnvironmentReflectance=matc_metal_rough(getReflectanceFromBRDFLookup(reflectivityOut.dielectricColorF0," +
+  "matc_dielectric_f90,environmentBrdf)*matc_dielectric_energy,matc_base_preintegrated()*matc_metal_energy,reflectivityOut.metallic);\n" +
+  "#else\n";
+
 // Each replacement: the shader source it is checked in (Babylon's ShaderStore name), its anchor
 // there (also what the plugin hands Babylon as a regular expression, applied to the shader after
 // its includes are expanded, where lightFragment's {X} is a light's number), and its text.
@@ -135,11 +147,20 @@ const kPatches = [
   },
   {
     source: "lightFragment",
-    anchor: "{vec3 metalFresnel=reflectivityOut.specularWeight*getF82Specular(preInfo.VdotH,clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90,reflectivityOut.roughness);",
-    replacement: "{vec3 metalFresnel=matc_base_fresnel(preInfo.VdotH);",
+    anchor: "{vec3 metalFresnel=reflectivityOut.specularWeight*getF82Specular(preInfo.VdotH,clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90,reflectivityOut.roughness);" +
+            "vec3 dielectricFresnel=fresnelSchlickGGX(preInfo.VdotH,reflectivityOut.dielectricColorF0,reflectivityOut.colorReflectanceF90);" +
+            "coloredFresnel=mix(dielectricFresnel,metalFresnel,reflectivityOut.metallic);}",
+    replacement: "\n#ifdef MATC_METAL_ROUGH\n" +
+                 "coloredFresnel=matc_metal_rough(fresnelSchlickGGX(preInfo.VdotH,reflectivityOut.dielectricColorF0,matc_dielectric_f90)*" +
+                 "matc_dielectric_energy,matc_base_fresnel(preInfo.VdotH)*matc_metal_energy,reflectivityOut.metallic);\n" +
+                 "#else\n" +
+                 "{vec3 metalFresnel=matc_base_fresnel(preInfo.VdotH);" +
+                 "vec3 dielectricFresnel=fresnelSchlickGGX(preInfo.VdotH,reflectivityOut.dielectricColorF0,reflectivityOut.colorReflectanceF90);" +
+                 "coloredFresnel=mix(dielectricFresnel,metalFresnel,reflectivityOut.metallic);}\n" +
+                 "#endif\n",
     what: "punctual lights under Babylon's OpenPBR conductor model (a glTF metal with an edge colour): the " +
           "F82 metal Fresnel, times the specular weight, becomes matc_fresnel(c, VdotH) (the edge colour and its " +
-          "weight are in the coefficients)",
+          "weight are in the coefficients); with metalRough, mixed with Babylon's dielectric as above",
   },
   {
     source: "lightFragment",
@@ -176,23 +197,22 @@ const kPatches = [
   {
     source: "pbrBlockReflectance",
     anchor: "vec3 colorSpecularEnvironmentReflectance=getReflectanceFromBRDFLookup(clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90,environmentBrdf);",
-    replacement: "\n#ifdef MATC_METAL_ROUGH\n" +
-                 "#ifdef MS_BRDF_ENERGY_CONSERVATION\n" +
-                 "matc_dielectric_energy=getEnergyConservationFactor(reflectivityOut.dielectricColorF0,environmentBrdf)*matc_dielectric_transmission;\n" +
-                 "matc_metal_energy=matc_base_compensation();\n" +
-                 "#endif\n" +
-                 "vec3 colorSpecularEnvironmentReflectance=matc_metal_rough(getReflectanceFromBRDFLookup(reflectivityOut.dielectricColorF0," +
-                 "matc_dielectric_f90,environmentBrdf)*matc_dielectric_energy,matc_base_preintegrated()*matc_metal_energy,reflectivityOut.metallic);\n" +
-                 "#else\nvec3 colorSpecularEnvironmentReflectance=matc_base_preintegrated();\n#endif\n",
+    replacement: kMetalRoughImageLighting + "vec3 colorSpecularEnvironmentReflectance=matc_base_preintegrated();\n#endif\n",
     what: "image lighting: the BRDF lookup's R0/R90 mix becomes sum_i c_i bbar_i (with metalRough, mixed by " +
           "metallic with Babylon's own dielectric lookup, each lobe with its energy conservation)",
   },
   {
     source: "pbrBlockReflectance",
-    anchor: "vec3 metalEnvironmentReflectance=reflectivityOut.specularWeight*getF82Specular(NdotV,clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90,reflectivityOut.roughness);",
-    replacement: "vec3 metalEnvironmentReflectance=matc_base_preintegrated();",
+    anchor: "vec3 metalEnvironmentReflectance=reflectivityOut.specularWeight*getF82Specular(NdotV,clearcoatOut.specularEnvironmentR0,reflectivityOut.colorReflectanceF90,reflectivityOut.roughness);" +
+            "vec3 dielectricEnvironmentReflectance=getReflectanceFromBRDFLookup(reflectivityOut.dielectricColorF0,reflectivityOut.colorReflectanceF90,environmentBrdf);" +
+            "vec3 colorSpecularEnvironmentReflectance=mix(dielectricEnvironmentReflectance,metalEnvironmentReflectance,reflectivityOut.metallic);",
+    replacement: kMetalRoughImageLighting +
+                 "vec3 metalEnvironmentReflectance=matc_base_preintegrated();" +
+                 "vec3 dielectricEnvironmentReflectance=getReflectanceFromBRDFLookup(reflectivityOut.dielectricColorF0,reflectivityOut.colorReflectanceF90,environmentBrdf);" +
+                 "vec3 colorSpecularEnvironmentReflectance=mix(dielectricEnvironmentReflectance,metalEnvironmentReflectance,reflectivityOut.metallic);\n" +
+                 "#endif\n",
     what: "image lighting under Babylon's OpenPBR conductor model (a glTF metal with an edge colour): the F82 " +
-          "metal term becomes sum_i c_i bbar_i",
+          "metal term becomes sum_i c_i bbar_i; with metalRough, mixed with Babylon's dielectric lookup as above",
   },
   {
     source: "pbrBlockFinalLitComponents",
@@ -301,10 +321,6 @@ function preparePlugin(material, build, source, areaLights, metalRough) {
   const coat = source.material?.coat;
   // Babylon's rect lights have no coat lobe of their own: matc's LTC draws it.
   if (coat) checkCoatedAreaLights(source.material, areaLights, ["matc"]);
-  if (metalRough && material.brdf?.conductorSpecularModel === Constants.MATERIAL_CONDUCTOR_SPECULAR_MODEL_OPENPBR) {
-    throw new MatcWebError("metalRough: the material uses Babylon's OpenPBR conductor model (an edge colour), " +
-                           "which mixes its own dielectric already");
-  }
   const colour = (value) => new Vector3(...rgbOf(value));
   const rows = kind === "material" ? source.material.coefficients : kind === "schlick" ? source.schlick.zeroF0Coefficients : null;
   const f0Table = kind === "f0Table" ? f0TableTexture(source.f0Table, material.getScene()) : null;
@@ -439,8 +455,8 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
 // options.metalRough: glTF's metal-rough model per pixel (docs/gltf.md): the material keeps its
 // metallic and metallicTexture, and matc's metal replaces Babylon's metal lobe only, mixed with
 // Babylon's own dielectric by the pixel's metallic in every light path (under a matc coat, the
-// dielectric seen through it as glTF layers a clear coat; not under Babylon's OpenPBR conductor
-// model).
+// dielectric seen through it as glTF layers a clear coat; under Babylon's OpenPBR conductor model
+// too, whose own mix of its dielectric and metal terms becomes matc_metal_rough's).
 export function useMatcFresnel(material, build, source, { areaLights = "matc", metalRough = false } = {}) {
   if (!material?.getClassName || !["PBRMaterial"].includes(material.getClassName())) {
     throw new MatcWebError("useMatcFresnel takes a Babylon.js PBRMaterial");

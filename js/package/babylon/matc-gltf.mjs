@@ -20,7 +20,6 @@
 //   matcGltf.unregister();
 import { registerGLTFExtension, unregisterGLTFExtension }
   from "@babylonjs/loaders/glTF/2.0/glTFLoaderExtensionRegistry.js";
-import { Constants } from "@babylonjs/core/Engines/constants.js";
 import { checkGltfLoaderOptions, gltfMetals } from "../matc-build.mjs";
 import { useMatcFresnel } from "./matc-babylon.mjs";
 
@@ -56,16 +55,10 @@ class MatcGltfLoaderExtension {
     return this.loader.loadMaterialPropertiesAsync(context, material, babylonMaterial).then(async () => {
       const found = await this.metals.metalOf(material.index);
       if (!found) return;
-      // glTF's metal-rough mix per pixel (under a matc coat too), but not under
-      // Babylon's OpenPBR conductor model (an edge colour, which mixes its dielectric itself):
-      // there a full metal, with a note.
-      const openPbr = babylonMaterial.brdf?.conductorSpecularModel === Constants.MATERIAL_CONDUCTOR_SPECULAR_MODEL_OPENPBR;
-      if (found.metalRough && openPbr) {
-        this.note(material.index, "its metalness (partial or textured) is not mixed under an edge colour: drawn as a full metal");
-      }
+      // glTF's metal-rough mix per pixel (under a matc coat and Babylon's OpenPBR conductor model too).
       try {
         useMatcFresnel(babylonMaterial, this.build, found.source,
-                       { areaLights: this.areaLights, metalRough: found.metalRough && !openPbr });
+                       { areaLights: this.areaLights, metalRough: found.metalRough });
         babylonMaterial.metadata = { ...babylonMaterial.metadata, matc: { gltfMaterial: material.index, from: found.from } };
         this.made.push(babylonMaterial);
       } catch (error) {
