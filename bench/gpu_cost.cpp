@@ -47,7 +47,7 @@ struct Comparison {
   bool tinted_coat = false;  // ours_coated under a tinted coat instead of a clear one
 };
 
-const std::array<Comparison, 26> kComparisons = {{
+const std::array<Comparison, 27> kComparisons = {{
     {"F alone, compiled coefficients", FresnelQuantity::direct, FresnelModel::ours,
      FresnelModel::schlick, std::nullopt},
     {"one GGX light, compiled coefficients", FresnelQuantity::ggx_light, FresnelModel::ours,
@@ -55,6 +55,9 @@ const std::array<Comparison, 26> kComparisons = {{
     {"one GGX light, compiled coefficients, `--basis extended` (fitted, piecewise polynomial)",
      FresnelQuantity::ggx_light, FresnelModel::ours, FresnelModel::schlick, std::nullopt, true,
      matc::runtime::BasisKind::extended},
+    {"one GGX light, compiled coefficients, `--basis f82` (b_3 fitted: piecewise polynomial)",
+     FresnelQuantity::ggx_light, FresnelModel::ours, FresnelModel::schlick, std::nullopt, true,
+     matc::runtime::BasisKind::f82},
     {"one GGX light, textured: coefficient table from r, g maps vs F0 map",
      FresnelQuantity::ggx_light, FresnelModel::table, FresnelModel::schlick_textured, 1.5},
     {"one GGX light, textured: baked F0, C2, C3 maps vs F0 map", FresnelQuantity::ggx_light,

@@ -20,6 +20,10 @@ cmake --build "$build" --target matc_coated_accuracy >/dev/null
   "$build/bench/matc_coated_accuracy" --examples "$root/examples/materials/copper_lacquered.json" \
   "$root/examples/materialx/standard_surface_copper.mtlx" \
   "$root/examples/materialx/open_pbr_lacquered_gold.mtlx"
+# Which shipped basis each kind of material wants (about 3 s): the per-material rule of issue #66.
+cmake --build "$build" --target matc_basis_choice_study >/dev/null
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" basis-choice \
+  "$build/bench/matc_basis_choice_study"
 # The basis study (about 1.5 minutes on 2 cores; no test reruns it, the unit tests hold the
 # shipped basis to the targets it was chosen for).
 cmake --build "$build" --target matc_basis_study >/dev/null
