@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/echoed_text.h"
-#include "emit/output_layout.h"
+#include "base/shared_file_stems.h"
 #include "gltf_asset.h"
 #include "material/materialx_import.h"
 
@@ -22,7 +22,7 @@ namespace {
 const std::set<std::string>& shared_stem_keys() {
   static const std::set<std::string> keys = [] {
     std::set<std::string> out;
-    for (const std::string& stem : shared_file_stems())
+    for (const std::string_view stem : kSharedFileStems)
       out.insert(material_name_key(stem));
     return out;
   }();

@@ -12,11 +12,13 @@
 
 #include "base/content_hash.h"
 #include "base/json_format.h"
+#include "base/shared_file_stems.h"
 #include "compile/compile.h"
 #include "emit/build.h"
 #include "emit/library_module.h"
 #include "emit/manifest_writer.h"
 #include "emit/material_module_template.h"
+#include "emit/output_layout.h"
 #include "emit/shader_literals.h"
 #include "emit/template.h"
 #include "emit/validation_kernel.h"
@@ -423,3 +425,14 @@ TEST(Build, ManifestListsEveryFileWithItsHash) {
 
 }  // namespace
 }  // namespace matc
+
+// The files a build writes once, as the output layout names them, are the base list the glTF
+// importer keeps material names off (base/shared_file_stems.h): one more shared file, one more
+// stem there.
+TEST(OutputLayout, SharedStemsAreTheBaseList) {
+  std::vector<std::string> from_layout = matc::shared_file_stems();
+  std::vector<std::string> base(matc::kSharedFileStems.begin(), matc::kSharedFileStems.end());
+  std::sort(from_layout.begin(), from_layout.end());
+  std::sort(base.begin(), base.end());
+  EXPECT_EQ(from_layout, base);
+}
