@@ -215,7 +215,8 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
   // Image lighting; a coated material's coat lobe: three's prefiltered radiance at the coat's
   // roughness times the coat's preintegrated F (its weight included).
   // With metalRough under a coat, three's dielectric terms (its (1 - metalness) share of the mix)
-  // through the coat: the 1 - transmission of them taken back out.
+  // through the coat: the 1 - transmission of them taken back out (before sheen's energy scale,
+  // which three applies to the whole term: a sheen over a coated metal-rough metal is off by that).
   indirectSpecular(builder) {
     this.withoutThreeCoat(() => super.indirectSpecular(builder));
     if (this.matc.coat && this.matc.metalRough) {
