@@ -21,6 +21,7 @@ set(MATC_CORE_SOURCES
   src/optics/reflectance_curve.cpp
   src/optics/spectrum.cpp
   src/optics/spectral.cpp
+  src/optics/thin_film.cpp
   src/optics/presets.cpp
   src/fit/minimax.cpp
   src/fit/coefficients.cpp

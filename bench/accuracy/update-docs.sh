@@ -24,6 +24,11 @@ cmake --build "$build" --target matc_coated_accuracy >/dev/null
 cmake --build "$build" --target matc_basis_choice_study >/dev/null
 "$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" basis-choice \
   "$build/bench/matc_basis_choice_study"
+# A thin film over a metal (about 15 s of CPU; no test reruns it: optics' unit tests hold the
+# physics, tests/unit/optics/thin_film_test.cpp).
+cmake --build "$build" --target matc_thin_film_study >/dev/null
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" thin-film-study \
+  "$build/bench/matc_thin_film_study"
 # The basis study (about 1.5 minutes on 2 cores; no test reruns it, the unit tests hold the
 # shipped basis to the targets it was chosen for).
 cmake --build "$build" --target matc_basis_study >/dev/null

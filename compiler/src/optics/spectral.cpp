@@ -65,17 +65,17 @@ std::vector<Rgb> weights_for(ColorSpace space) {
   return w;
 }
 
-const std::vector<Rgb>& weights(ColorSpace space) {
+}  // namespace
+
+const std::vector<Rgb>& spectral_weights(ColorSpace space) {
   static const std::array<std::vector<Rgb>, 4> all = {
       weights_for(ColorSpace::lin_rec709), weights_for(ColorSpace::acescg),
       weights_for(ColorSpace::lin_rec2020), weights_for(ColorSpace::lin_displayp3)};
   return all.at(static_cast<std::size_t>(space));
 }
 
-}  // namespace
-
 SpectralCurve::SpectralCurve(const Spectrum& spectrum, ColorSpace space)
-    : weights_(weights(space)) {
+    : weights_(spectral_weights(space)) {
   ior_.reserve(kGridSize);
   for (std::size_t i = 0; i < kGridSize; ++i) {
     ior_.push_back(spectrum.at(static_cast<double>(kCieFirstNm) + static_cast<double>(i)));

@@ -15,6 +15,10 @@ namespace matc {
 inline constexpr int kCieFirstNm = 360;
 inline constexpr int kCieLastNm = 830;
 
+// w_c(lambda) on the integration grid (kCieFirstNm + i nm) for a working space: each channel sums
+// to 1 (a perfect mirror is the space's white). Computed once per space.
+const std::vector<Rgb>& spectral_weights(ColorSpace space);
+
 class SpectralCurve final : public ReflectanceCurve {
  public:
   explicit SpectralCurve(const Spectrum& spectrum, ColorSpace space = kDefaultColorSpace);

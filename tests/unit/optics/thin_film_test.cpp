@@ -1,0 +1,126 @@
+// A thin dielectric film over a conductor (optics/thin_film.h), the physics issue #67 builds on:
+// against the bare metal where the film vanishes, against an independent method (Born and Wolf's
+// characteristic matrix), and on measured spectra.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <numbers>
+
+#include "optics/presets.h"
+#include "optics/spectral.h"
+#include "optics/thin_film.h"
+
+namespace {
+
+using matc::ComplexIor;
+using matc::ThinFilm;
+using Complex = std::complex<double>;
+
+// Metals at one wavelength (gold, titanium and silver near 550 nm, and a weak absorber).
+constexpr std::array<ComplexIor, 4> kMetals = {
+    {{0.43, 2.46}, {2.54, 3.43}, {0.06, 3.59}, {1.8, 0.05}}};
+constexpr std::array<double, 6> kCosines = {1.0, 0.8, 0.5, 0.3, 0.1, 0.02};
+
+// Born and Wolf's characteristic matrix of one layer (Principles of Optics, 1.6), for the
+// e^{-i omega t} convention: M = [[cos b, -i sin b / p1], [-i p1 sin b, cos b]] with b the film's
+// phase thickness 2 pi d n1 cos(theta_1) / lambda and p_j the polarisation's admittance
+// (n_j cos(theta_j) for s, cos(theta_j) / n_j for p). r = (p0 B - C) / (p0 B + C) with
+// (B, C) = M (1, p2). A derivation of its own: no Airy sum, no interface amplitudes.
+double characteristic_matrix_reflectance(double mu, double wavelength, const ThinFilm& film,
+                                         ComplexIor metal) {
+  const double sin2 = 1.0 - mu * mu;
+  const Complex n0 = 1.0, n1 = film.ior, n2 = metal.eta();
+  const Complex cos0 = mu;
+  const Complex cos1 = std::sqrt(1.0 - sin2 / (n1 * n1));
+  const Complex cos2 = std::sqrt(n2 * n2 - sin2) / n2;  // the decaying root, as n2 cos2
+  const Complex b = 2.0 * std::numbers::pi * film.thickness_nm * n1 * cos1 / wavelength;
+  const auto reflectance = [&](Complex p0, Complex p1, Complex p2) {
+    const Complex i(0.0, 1.0);
+    const Complex B = std::cos(b) - i * std::sin(b) / p1 * p2;
+    const Complex C = -i * p1 * std::sin(b) + std::cos(b) * p2;
+    return std::norm((p0 * B - C) / (p0 * B + C));
+  };
+  const double s = reflectance(n0 * cos0, n1 * cos1, n2 * cos2);
+  const double p = reflectance(cos0 / n0, cos1 / n1, cos2 / n2);
+  return 0.5 * (s + p);
+}
+
+TEST(ThinFilm, AFilmOfNoThicknessOrOfIndexOneIsTheBareMetal) {
+  for (const ComplexIor metal : kMetals) {
+    for (const double mu : kCosines) {
+      const double bare = matc::fresnel_exact(mu, metal);
+      EXPECT_NEAR(matc::thin_film_reflectance(mu, 550.0, {1.8, 0.0}, metal), bare, 1e-13)
+          << metal.n << " " << metal.k << " " << mu;
+      EXPECT_NEAR(matc::thin_film_reflectance(mu, 550.0, {1.0, 350.0}, metal), bare, 1e-13);
+    }
+  }
+}
+
+TEST(ThinFilm, AgreesWithTheCharacteristicMatrix) {
+  double worst = 0.0;
+  for (const ComplexIor metal : kMetals) {
+    for (const double mu : kCosines) {
+      for (const ThinFilm film : {ThinFilm{1.33, 30.0}, ThinFilm{1.6, 120.0}, ThinFilm{2.3, 350.0},
+                                  ThinFilm{2.5, 900.0}}) {
+        for (const double wavelength : {380.0, 550.0, 780.0}) {
+          const double ours = matc::thin_film_reflectance(mu, wavelength, film, metal);
+          const double matrix = characteristic_matrix_reflectance(mu, wavelength, film, metal);
+          worst = std::max(worst, std::abs(ours - matrix));
+          ASSERT_GE(ours, 0.0);
+          ASSERT_LE(ours, 1.0);
+        }
+      }
+    }
+  }
+  EXPECT_LT(worst, 1e-12);
+}
+
+// The film's phase repeats when its optical path grows by a wavelength: a film thicker by
+// lambda / (2 n1 cos(theta_1)) reflects the same.
+TEST(ThinFilm, ThePhaseRepeatsEveryHalfWavelengthOfOpticalPath) {
+  const ComplexIor titanium{2.54, 3.43};
+  for (const double mu : {1.0, 0.6, 0.2}) {
+    const double cos1 = std::sqrt(1.0 - (1.0 - mu * mu) / (2.0 * 2.0));
+    const double period = 550.0 / (2.0 * 2.0 * cos1);
+    EXPECT_NEAR(matc::thin_film_reflectance(mu, 550.0, {2.0, 200.0}, titanium),
+                matc::thin_film_reflectance(mu, 550.0, {2.0, 200.0 + period}, titanium), 1e-12);
+  }
+}
+
+// On measured spectra, reduced to RGB as bare metals are: no film is the bare curve; a film of
+// 350 nm and index 2.3 colours titanium strongly (../shared/notes/thin_film.md's sanity values)
+// and leaves silver near its bare curve.
+TEST(ThinFilmCurve, OnMeasuredMetals) {
+  const auto* titanium = matc::find_metal_preset("Ti");
+  const auto* silver = matc::find_metal_preset("Ag");
+  ASSERT_NE(titanium, nullptr);
+  ASSERT_NE(silver, nullptr);
+  const matc::SpectralCurve bare_titanium(matc::preset_spectrum(*titanium));
+  const matc::ThinFilmCurve no_film(matc::preset_spectrum(*titanium), {2.3, 0.0});
+  for (const double mu : kCosines) {
+    for (std::size_t c = 0; c < 3; ++c)
+      EXPECT_NEAR(no_film.at(mu)[c], bare_titanium.at(mu)[c], 1e-12);
+  }
+  const matc::Rgb filmed =
+      matc::ThinFilmCurve(matc::preset_spectrum(*titanium), {2.3, 350.0}).at(1.0);
+  const matc::Rgb bare = bare_titanium.at(1.0);
+  double furthest = 0.0;
+  for (std::size_t c = 0; c < 3; ++c)
+    furthest = std::max(furthest, std::abs(filmed[c] - bare[c]));
+  EXPECT_GT(furthest, 0.1) << filmed[0] << " " << filmed[1] << " " << filmed[2];
+  // Strongly coloured: its channels far apart, where bare titanium is nearly grey.
+  EXPECT_GT(*std::max_element(filmed.begin(), filmed.end()) -
+                *std::min_element(filmed.begin(), filmed.end()),
+            0.1);
+  const matc::SpectralCurve bare_silver(matc::preset_spectrum(*silver));
+  const matc::ThinFilmCurve filmed_silver(matc::preset_spectrum(*silver), {1.5, 350.0});
+  for (const double mu : {1.0, 0.5}) {
+    for (std::size_t c = 0; c < 3; ++c)
+      EXPECT_NEAR(filmed_silver.at(mu)[c], bare_silver.at(mu)[c], 0.05);
+  }
+}
+
+}  // namespace
