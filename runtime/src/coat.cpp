@@ -12,6 +12,11 @@ double coat_sum(const ChannelCoefficients& coat, const std::array<double, kBasis
   return std::max(0.0, sum);
 }
 
+// The coat lobe's F, its weight included, from the coat's sum (coat_sum).
+double coat_lobe(const CoatCoefficients& coat, double sum) {
+  return coat.weight * std::min(sum, 1.0);
+}
+
 }  // namespace
 
 Rgb coat_tint(const CoatCoefficients& coat, double mu) {
@@ -32,12 +37,11 @@ CoatedFresnel evaluate_coated_fresnel(const Coefficients& in_air, const CoatCoef
   const double f = coat_sum(coat.coat, b);
   return {layered_base(combine(in_air, b), combine(coat.under_coat, b), coat_tint(coat, mu), f,
                        coat.weight),
-          coat.weight * std::min(f, 1.0)};
+          coat_lobe(coat, f)};
 }
 
 double coat_transmission(const CoatCoefficients& coat, const ShaderBasis& basis, double ndotv) {
-  return 1.0 -
-         coat.weight * std::min(coat_sum(coat.coat, evaluate_shader_basis(basis, ndotv)), 1.0);
+  return 1.0 - coat_lobe(coat, coat_sum(coat.coat, evaluate_shader_basis(basis, ndotv)));
 }
 
 CoatedFresnel evaluate_coated_fbar(const Coefficients& in_air, const CoatCoefficients& coat,
@@ -54,7 +58,7 @@ CoatedFresnel evaluate_coated_preintegrated(const Coefficients& in_air,
   const double f = coat_sum(coat.coat, coat_bbar);
   return {layered_base(combine(in_air, base), combine(coat.under_coat, base),
                        coat_tint(coat, ndotv), f, coat.weight),
-          coat.weight * std::min(f, 1.0)};
+          coat_lobe(coat, f)};
 }
 
 CoatedFresnel polygon_light_ltc_coated(const Coefficients& in_air, const CoatCoefficients& coat,

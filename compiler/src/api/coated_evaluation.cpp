@@ -137,10 +137,6 @@ void add_coated(const EvaluationInputs& options, const CompiledMaterial& compile
                          [&](double ndotv, double roughness) {
                            return runtime::evaluate_coated_fbar(compiled.coefficients, coefficients,
                                                                 lut.view(), ndotv, roughness);
-                         },
-                     .transmission =
-                         [&](double ndotv) {
-                           return runtime::coat_transmission(coefficients, shader_basis, ndotv);
                          }},
                     out);
   }

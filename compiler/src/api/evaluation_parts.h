@@ -54,12 +54,12 @@ void add_quad_light_description(const EvaluationInputs& inputs, const std::vecto
                                 const runtime::LtcTableView& ltc, ordered_json& out);
 
 // The metal's side of glTF's metal-rough mix: its lobes' F at mu and preintegrated F at (NdotV,
-// roughness) (a bare metal's in .base; a coated one's base and coat lobes), and the coat's
-// transmission at NdotV (runtime::coat_transmission; 1 for a bare metal).
+// roughness) (a bare metal's in .base; a coated one's base and coat lobes). The coat's
+// transmission at NdotV is 1 - fresnel(NdotV).coat (runtime::coat_transmission; 1 for a bare
+// metal).
 struct MetalRoughLobes {
   std::function<runtime::CoatedFresnel(double mu)> fresnel;
   std::function<runtime::CoatedFresnel(double ndotv, double roughness)> fbar;
-  std::function<double(double ndotv)> transmission;
 };
 
 // A bare metal's lobes: `coefficients` with `basis`, preintegrated through `lut` (all three kept

@@ -9,12 +9,13 @@
 namespace matc::evaluation {
 namespace {
 
-// The dielectric under the coat's transmission mixed with the base lobe, the coat lobe over both
-// (a bare metal: transmission 1, no coat lobe).
+// The dielectric under the coat's transmission at NdotV (1 - the coat lobe's F there, from
+// `at_ndotv`) mixed with the base lobe, the coat lobe over both (a bare metal: transmission 1, no
+// coat lobe).
 runtime::Rgb mix_lobes(const runtime::Rgb& dielectric, const runtime::CoatedFresnel& metal,
-                       double metalness, double transmission) {
+                       double metalness, const runtime::CoatedFresnel& at_ndotv) {
   const runtime::Rgb base =
-      runtime::metal_rough_under_coat(dielectric, metal.base, metalness, transmission);
+      runtime::metal_rough_under_coat(dielectric, metal.base, metalness, 1.0 - at_ndotv.coat);
   return {base[0] + metal.coat, base[1] + metal.coat, base[2] + metal.coat};
 }
 
@@ -30,7 +31,6 @@ MetalRoughLobes bare_metal_lobes(const runtime::Coefficients& coefficients,
       .fbar = [&coefficients, &lut](double ndotv, double roughness) -> runtime::CoatedFresnel {
         return {.base = runtime::evaluate_fbar(coefficients, lut.view(), ndotv, roughness)};
       },
-      .transmission = [](double) { return 1.0; },
   };
 }
 
@@ -47,7 +47,9 @@ void add_metal_rough(const EvaluationInputs& inputs, const MetalRoughLobes& meta
     for (const double mu : inputs.mu) {
       const runtime::Rgb d = runtime::dielectric_fresnel(f0, f90, mu);
       dielectric.push_back(d);
-      mixed.push_back(mix_lobes(d, metal.fresnel(mu), metalness, metal.transmission(mu)));
+      // F at mu: a mirror-like surface, NdotV = mu.
+      const runtime::CoatedFresnel lobes = metal.fresnel(mu);
+      mixed.push_back(mix_lobes(d, lobes, metalness, lobes));
     }
     out["F_dielectric"] = std::move(dielectric);
     out["F_metal_rough"] = std::move(mixed);
@@ -66,7 +68,7 @@ void add_metal_rough(const EvaluationInputs& inputs, const MetalRoughLobes& meta
         d[c] = f0[c] * lobe[0] + (f90[c] - f0[c]) * lobe[1];
       dielectric.push_back(d);
       mixed.push_back(mix_lobes(d, metal.fbar(inputs.ndotv[i], inputs.roughness[i]), metalness,
-                                metal.transmission(inputs.ndotv[i])));
+                                metal.fresnel(inputs.ndotv[i])));
     }
     out["Fbar_dielectric"] = std::move(dielectric);
     out["Fbar_metal_rough"] = std::move(mixed);

@@ -120,25 +120,27 @@ class MaterialCheck final : public DeviceCheck {
       record_largest(quantities[2 * slot + 1], {expected.coat, expected.coat, expected.coat},
                      coat_actual, query);
     };
+    // glTF's dielectric (F0 0.04, F90 1), which the kernel mixes with the base lobe at mu.
+    constexpr runtime::Rgb kGltfDielectric{runtime::kGltfDielectricF0, runtime::kGltfDielectricF0,
+                                           runtime::kGltfDielectricF0};
     for (std::size_t i = 0; i < queries_.size(); ++i) {
       const ValidationQuery& q = queries_[i];
       const float* result = &results[i * kCoatedValidationResultsPerQuery * 4];
-      record(0, runtime::evaluate_coated_fresnel(c, coat, shader_basis, q.mu), result, i);
+      const runtime::CoatedFresnel lobes =
+          runtime::evaluate_coated_fresnel(c, coat, shader_basis, q.mu);
+      record(0, lobes, result, i);
       record_largest(quantities[8],
                      runtime::polygon_light_ltc_coated(c, coat, table, runtime::shipped_ltc_table(),
                                                        q.ndotv, q.roughness, kCoatedValidationQuad)
                          .total(),
                      result + 16, i);
       record(1, runtime::evaluate_coated_fbar(c, coat, table, q.ndotv, q.roughness), result + 4, i);
-      // glTF's dielectric (F0 0.04, F90 1) and the base lobe at mu, metalness = roughness.
-      constexpr runtime::Rgb kGltfDielectric{runtime::kGltfDielectricF0, runtime::kGltfDielectricF0,
-                                             runtime::kGltfDielectricF0};
+      // The metal-rough mix under the coat at mu, metalness = roughness, at NdotV.
       const double transmission = runtime::coat_transmission(coat, shader_basis, q.ndotv);
       record_largest(quantities[9],
                      runtime::metal_rough_under_coat(
                          runtime::dielectric_fresnel(kGltfDielectric, {1.0, 1.0, 1.0}, q.mu),
-                         runtime::evaluate_coated_fresnel(c, coat, shader_basis, q.mu).base,
-                         q.roughness, transmission),
+                         lobes.base, q.roughness, transmission),
                      result + 20, i);
       const float transmission_actual[3] = {result[23], result[23], result[23]};
       record_largest(quantities[10], {transmission, transmission, transmission},
