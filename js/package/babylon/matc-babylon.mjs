@@ -31,11 +31,7 @@ export const kTestedBabylonVersions = ["9.31.0"];
 const kPixelSetup = `${pixelSetupGlsl({ uv: "vMainUV1", baseColour: "surfaceAlbedo.rgb", roughness: "roughness",
                                         ndotv: "absEps(dot(normalW, viewDirectionW))", coatRoughness: "vClearCoatParams.y" })}
 #ifdef MATC_METAL_ROUGH
-	#ifdef MATC_COATED
-		matc_dielectric_transmission = matc_coat_transmission();
-	#else
-		matc_dielectric_transmission = 1.0;
-	#endif
+	matc_dielectric_transmission = matc_coat_transmission();
 	matc_dielectric_energy = vec3(matc_dielectric_transmission);
 	matc_metal_energy = vec3(1.0);
 #endif
@@ -130,9 +126,9 @@ const kPatches = [
   {
     source: "pbrPixelShader",
     anchor: "surfaceAlbedo=reflectivityOut.surfaceAlbedo;",
-    replacement: "surfaceAlbedo=reflectivityOut.surfaceAlbedo;\n#if defined(MATC_METAL_ROUGH) && defined(MATC_COATED)\n" +
+    replacement: "surfaceAlbedo=reflectivityOut.surfaceAlbedo;\n#ifdef MATC_METAL_ROUGH\n" +
                  "surfaceAlbedo*=matc_dielectric_transmission;\n#endif\n",
-    what: "with metalRough under a matc coat, the dielectric's diffuse albedo times the coat's transmission at NdotV " +
+    what: "with metalRough, the dielectric's diffuse albedo times a matc coat's transmission at NdotV (1 without one) " +
           "(glTF's layering of a clear coat; its specular through its energy factor)",
   },
   {

@@ -42,6 +42,7 @@ export function lobesGlsl(material) {
 vec3 matc_base_fresnel(float mu) { return matc_fresnel(matc_c, mu); }
 vec3 matc_base_preintegrated() { return matc_fresnel_preintegrated(matc_c, matc_bbar); }
 vec3 matc_base_compensation() { return matc_energy_compensation(matc_c, matc_bbar); }
+float matc_coat_transmission() { return 1.0; }  // no coat over the engine's dielectric
 `;
   }
   const name = material.name;

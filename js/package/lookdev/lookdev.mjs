@@ -298,23 +298,22 @@ function assetSummary(path, asset) {
 function openAsset(bytes, path, files) {
   const generation = ++assetGeneration;
   const loaded = bytes ? loadAssetPair({ bytes, path, files, matc: app.matc, build: app.build }) : Promise.resolve(null);
+  // The newest document's asset (or none) into the view, with its line under it.
+  const show = (asset, line, refused) => {
+    const previous = app.view.setAsset(asset);
+    if (previous) disposeAsset(previous);
+    app.view.setShowAsset(Boolean(asset && asset.meshes > 0));
+    $("#asset-notes").textContent = line;
+    $("#asset-notes").classList.toggle("refused", refused);
+  };
   assetLoading = loaded.then((asset) => {
     if (generation !== assetGeneration) {
       if (asset) disposeAsset(asset);
       return;
     }
-    const previous = app.view.setAsset(asset);
-    if (previous) disposeAsset(previous);
-    app.view.setShowAsset(Boolean(asset && asset.meshes > 0));
-    $("#asset-notes").textContent = asset ? assetSummary(path, asset) : "";
-    $("#asset-notes").classList.remove("refused");
+    show(asset, asset ? assetSummary(path, asset) : "", false);
   }, (error) => {
-    if (generation !== assetGeneration) return;
-    const previous = app.view.setAsset(null);
-    if (previous) disposeAsset(previous);
-    app.view.setShowAsset(false);
-    $("#asset-notes").textContent = error.message;
-    $("#asset-notes").classList.add("refused");
+    if (generation === assetGeneration) show(null, error.message, true);
   }).finally(() => {
     showSceneChoice();
     if (generation === assetGeneration) assetLoading = null;

@@ -62,12 +62,8 @@ const kPixelSetup = `${pixelSetupGlsl({
 	#else
 		matc_dielectric_f90 = 1.0;
 	#endif
-	#ifdef MATC_COATED
-		matc_dielectric_transmission = matc_coat_transmission();
-		material.diffuseContribution *= matc_dielectric_transmission;
-	#else
-		matc_dielectric_transmission = 1.0;
-	#endif
+	matc_dielectric_transmission = matc_coat_transmission();
+	material.diffuseContribution *= matc_dielectric_transmission;
 	matc_dielectric_compensation = vec3( matc_dielectric_transmission );
 #endif
 `;
