@@ -13,6 +13,7 @@
 #include <fmt/core.h>
 
 #include "error_totals.h"
+#include "f82_tint_look.h"
 #include "fit/accuracy.h"
 #include "fit/coefficients.h"
 #include "lut/comparison_lobes.h"
@@ -333,13 +334,10 @@ void print_f82_tint() {
   for (const matc::MetalPreset& preset : matc::metal_presets()) {
     if (!preset.caveat.empty()) continue;
     const matc::SpectralCurve exact(matc::preset_spectrum(preset));
-    const matc::Rgb f0 = exact.at(1.0);
-    const matc::Rgb f82 = exact.at(matc::kF82MuBar);
-    matc::Rgb tint{};
-    for (std::size_t c = 0; c < 3; ++c) {
-      tint[c] = std::min(1.0, f82[c] / matc::fresnel_schlick(matc::kF82MuBar, f0[c]));
-      tint_min = std::min(tint_min, tint[c]);
-      tint_max = std::max(tint_max, tint[c]);
+    const auto [f0, tint] = matc::bench::f82_tint_look(exact);
+    for (const double value : tint) {
+      tint_min = std::min(tint_min, value);
+      tint_max = std::max(tint_max, value);
     }
     const FitAccuracy accuracy = measure(matc::F82TintCurve(f0, tint));
     ours.add(accuracy.decomposition);

@@ -19,6 +19,7 @@
 #include <fmt/core.h>
 
 #include "error_totals.h"
+#include "f82_tint_look.h"
 #include "fit/accuracy.h"
 #include "fit/coefficients.h"
 #include "optics/fresnel.h"
@@ -54,16 +55,6 @@ double worst_channel(const matc::ErrorStats& stats) {
   return std::max({stats.max_abs[0], stats.max_abs[1], stats.max_abs[2]});
 }
 
-// Fixed-seed draws in [0, 1) (mt19937_64's output is specified by the standard).
-class Draws {
- public:
-  explicit Draws(std::uint64_t seed) : generator_(seed) {}
-  double next() { return static_cast<double>(generator_() >> 11) * 0x1.0p-53; }
-
- private:
-  std::mt19937_64 generator_;
-};
-
 std::vector<Family> families() {
   std::vector<Family> out;
   Family measured{"the 23 reliable measured metals (exact spectral curves)", BasisKind::powers, {}};
@@ -72,12 +63,8 @@ std::vector<Family> families() {
   for (const matc::MetalPreset& preset : matc::metal_presets()) {
     if (!preset.caveat.empty()) continue;
     auto exact = std::make_unique<matc::SpectralCurve>(matc::preset_spectrum(preset));
-    const matc::Rgb f0 = exact->at(1.0);
-    const matc::Rgb f82 = exact->at(matc::kF82MuBar);
-    matc::Rgb tint{};
-    for (std::size_t c = 0; c < 3; ++c)
-      tint[c] = std::min(1.0, f82[c] / matc::fresnel_schlick(matc::kF82MuBar, f0[c]));
-    measured_f82.curves.push_back(std::make_unique<matc::F82TintCurve>(f0, tint));
+    const matc::bench::F82TintLook look = matc::bench::f82_tint_look(*exact);
+    measured_f82.curves.push_back(std::make_unique<matc::F82TintCurve>(look.f0, look.tint));
     measured.curves.push_back(std::move(exact));
   }
   out.push_back(std::move(measured));
@@ -96,12 +83,12 @@ std::vector<Family> families() {
   Family random_f82{"F82-tint, 200 random coloured looks (F0 0.02-0.98, tint 0-1 per channel)",
                     BasisKind::f82,
                     {}};
-  Draws draws(6601);
+  matc::bench::UnitDraws draws(6601);
   for (int i = 0; i < 200; ++i) {
     matc::Rgb f0{}, tint{};
     for (std::size_t c = 0; c < 3; ++c) {
-      f0[c] = 0.02 + 0.96 * draws.next();
-      tint[c] = draws.next();
+      f0[c] = 0.02 + 0.96 * draws();
+      tint[c] = draws();
     }
     random_f82.curves.push_back(std::make_unique<matc::F82TintCurve>(f0, tint));
   }
@@ -125,9 +112,9 @@ std::vector<Family> families() {
 
   Family conductors{
       "complex indices, 200 random conductors (n 0.05-3, k 0.5-8)", BasisKind::powers, {}};
-  Draws index_draws(6602);
+  matc::bench::UnitDraws index_draws(6602);
   for (int i = 0; i < 200; ++i) {
-    const matc::ComplexIor ior{0.05 + 2.95 * index_draws.next(), 0.5 + 7.5 * index_draws.next()};
+    const matc::ComplexIor ior{0.05 + 2.95 * index_draws(), 0.5 + 7.5 * index_draws()};
     conductors.curves.push_back(std::make_unique<matc::IorCurve>(std::array{ior, ior, ior}));
   }
   out.push_back(std::move(conductors));

@@ -14,6 +14,7 @@
 
 #include "basis/basis_fit.h"
 #include "error_totals.h"
+#include "f82_tint_look.h"
 #include "fit/accuracy.h"
 #include "fit/coefficients.h"
 #include "optics/presets.h"
@@ -87,12 +88,8 @@ int main() {
   for (const matc::MetalPreset& preset : matc::metal_presets()) {
     if (!preset.caveat.empty()) continue;
     metals.emplace_back(matc::preset_spectrum(preset));
-    const matc::Rgb f0 = metals.back().at(1.0);
-    const matc::Rgb f82 = metals.back().at(matc::kF82MuBar);
-    matc::Rgb tint{};
-    for (std::size_t c = 0; c < 3; ++c)
-      tint[c] = std::min(1.0, f82[c] / matc::fresnel_schlick(matc::kF82MuBar, f0[c]));
-    metal_f82.emplace_back(f0, tint);
+    const matc::bench::F82TintLook look = matc::bench::f82_tint_look(metals.back());
+    metal_f82.emplace_back(look.f0, look.tint);
   }
 
   fmt::print(

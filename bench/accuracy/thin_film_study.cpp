@@ -28,34 +28,19 @@ namespace {
 
 constexpr std::array<std::string_view, 5> kMetals = {"Ti", "Au", "Cu", "Fe", "Cr"};
 
-// The film over a dielectric that reflects as the metal does at normal incidence, per wavelength.
-class DielectricBaseCurve final : public matc::ReflectanceCurve {
- public:
-  DielectricBaseCurve(const matc::Spectrum& metal, const matc::ThinFilm& film)
-      : weights_(matc::spectral_weights(matc::kDefaultColorSpace)), film_(film) {
-    for (std::size_t i = 0; i < weights_.size(); ++i) {
-      const double s = std::sqrt(std::min(
-          matc::fresnel_normal_incidence(metal.at(matc::kCieFirstNm + static_cast<double>(i))),
-          0.999999));
-      base_.push_back({(1.0 + s) / (1.0 - s), 0.0});
-    }
+// The dielectric that reflects as the metal does at normal incidence, per wavelength of the
+// integration grid: the base the engines put under their film.
+matc::Spectrum dielectric_base(const matc::Spectrum& metal) {
+  matc::Spectrum base;
+  for (int nm = matc::kCieFirstNm; nm <= matc::kCieLastNm; ++nm) {
+    const double s = std::sqrt(
+        std::min(matc::fresnel_normal_incidence(metal.at(static_cast<double>(nm))), 0.999999));
+    base.wavelength_nm.push_back(nm);
+    base.n.push_back((1.0 + s) / (1.0 - s));
+    base.k.push_back(0.0);
   }
-  matc::Rgb at(double mu) const override {
-    matc::Rgb result{};
-    for (std::size_t i = 0; i < weights_.size(); ++i) {
-      const double f = matc::thin_film_reflectance(mu, matc::kCieFirstNm + static_cast<double>(i),
-                                                   film_, base_[i]);
-      for (std::size_t c = 0; c < 3; ++c)
-        result[c] += weights_[i][c] * f;
-    }
-    return result;
-  }
-
- private:
-  const std::vector<matc::Rgb>& weights_;
-  std::vector<matc::ComplexIor> base_;
-  matc::ThinFilm film_;
-};
+  return base;
+}
 
 struct Row {
   double fit = 0.0;        // the default basis' fit of the exact curve, worst over [0, 1]
@@ -74,7 +59,7 @@ Row measure(const matc::ThinFilm& film) {
                                matc::runtime::shipped_shader_basis())
             .decomposition;
     row.fit = std::max({row.fit, fit.max_abs[0], fit.max_abs[1], fit.max_abs[2]});
-    const DielectricBaseCurve engines(metal, film);
+    const matc::ThinFilmCurve engines(dielectric_base(metal), film);
     for (int j = 0; j <= 95; ++j) {
       const double mu = 0.05 + 0.01 * j;
       const matc::Rgb a = exact.at(mu), b = engines.at(mu);
