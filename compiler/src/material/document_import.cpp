@@ -99,12 +99,12 @@ std::string DocumentNames::claim_unique(const std::string& document_name,
   const auto taken = taken_.find(name_key);
   if (taken == taken_.end() && !shared_stems.contains(name_key))
     return claim(document_name, location, field, description, diagnostics);
+  const bool clash = taken != taken_.end();
   const std::string why =
-      taken != taken_.end()
-          ? fmt::format("'{}' is '{}' ({}) ignoring case", name, taken->second.name,
-                        taken->second.description)
-          : fmt::format("'{}' names the files every build writes once ({}.*) ignoring case", name,
-                        name_key);
+      clash ? fmt::format("'{}' is '{}' ({}) ignoring case", name, taken->second.name,
+                          taken->second.description)
+            : fmt::format("'{}' names the files every build writes once ({}.*) ignoring case", name,
+                          name_key);
   // `<stem>_<n>` within the length limit, never with "__" (the stem loses a trailing '_').
   std::string stem = name;
   for (int n = 2;; ++n) {
@@ -116,8 +116,10 @@ std::string DocumentNames::claim_unique(const std::string& document_name,
     const std::string key = material_name_key(derived);
     if (taken_.contains(key) || reserved.contains(key) || shared_stems.contains(key)) continue;
     diagnostics.note(location, field, fmt::format("imported as '{}': {}", derived, why),
-                     "material names that differ ignoring case (they name files); the glTF "
-                     "loaders match materials by index");
+                     clash ? "material names that differ ignoring case (they name files); the "
+                             "glTF loaders match materials by index"
+                           : "a material name other than the shared files' (matc_lut, "
+                             "matc_fresnel, ...); the glTF loaders match materials by index");
     taken_.emplace(key, First{derived, description});
     return derived;
   }
