@@ -55,7 +55,7 @@ const std::array<Comparison, 27> kComparisons = {{
     {"one GGX light, compiled coefficients, `--basis extended` (fitted, piecewise polynomial)",
      FresnelQuantity::ggx_light, FresnelModel::ours, FresnelModel::schlick, std::nullopt, true,
      matc::runtime::BasisKind::extended},
-    {"one GGX light, compiled coefficients, `--basis f82` (b_3 fitted: piecewise polynomial)",
+    {"one GGX light, compiled coefficients, `--basis f82` (closed form m^5, mu m^6, mu m^11)",
      FresnelQuantity::ggx_light, FresnelModel::ours, FresnelModel::schlick, std::nullopt, true,
      matc::runtime::BasisKind::f82},
     {"one GGX light, textured: coefficient table from r, g maps vs F0 map",

@@ -11,7 +11,6 @@ set(matc_runtime_generated
   src/generated/paper_basis_table.cpp
   src/generated/paper_coefficient_table.cpp
   src/generated/paper_analytic_lut_table.cpp
-  src/generated/f82_basis_table.cpp
   src/generated/f82_coefficient_table.cpp
   src/generated/f82_analytic_lut_table.cpp
   src/generated/ltc_table.cpp)

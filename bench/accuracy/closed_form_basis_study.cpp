@@ -110,7 +110,7 @@ int main() {
   fmt::print("\n");
   header("basis", sets);
   fmt::print("{}", row("**shipped `powers`**: m^6, mu m^3, mu m^9 (closed form)", sets,
-                       matc::powers_fitted_basis()));
+                       matc::closed_form_fitted_basis(matc::runtime::BasisKind::powers)));
   for (const Exponents e : {Exponents{5, 4}, Exponents{8, 4}, Exponents{7, 4}}) {
     fmt::print("{}",
                row(fmt::format("m^{}, mu m^{}, mu m^{}", e.k, e.p, e.k + e.p), sets, candidate(e)));

@@ -49,9 +49,11 @@ int run_basis(const BasisOptions& options) {
                basis.probes[0], std::acos(basis.probes[0]), basis.probes[1],
                std::acos(basis.probes[1]));
     if (basis.closed_form) {
+      const auto [edge, lobe] = basis.closed_form_exponents;
       fmt::print(
-          "shader form: m = 1 - mu, b_1 = m^6, b_2 = mu m^3, b_3 = b_2 b_1 (the table is the "
-          "closed form sampled)\n");
+          "shader form: m = 1 - mu, b_1 = m^{}, b_2 = mu m^{}, b_3 = b_2 b_1 (the table is the "
+          "closed form sampled)\n",
+          edge, lobe);
       return kExitSuccess;
     }
     const auto& at = basis.polynomial_error_at_samples;
@@ -89,9 +91,9 @@ int run_regenerate(api::CheckedInSource source, const RegenerateOptions& options
       for (const runtime::BasisKind each : runtime::kFittedBases)
         fitted.push_back(runtime::basis_name(each));
       fmt::print(stderr,
-                 "matc: error: --basis {} is a closed form (runtime/src/{}_basis.cpp) with no "
+                 "matc: error: --basis {} is a closed form (runtime/src/powers_basis.cpp) with no "
                  "table to fit; the fitted bases are {}\n",
-                 runtime::basis_name(kind), runtime::basis_name(kind), fmt::join(fitted, ", "));
+                 runtime::basis_name(kind), fmt::join(fitted, ", "));
       return kExitUsageError;
     }
   }

@@ -8,8 +8,8 @@ inline constexpr const char* kBasisHelp =
     "Fresnel basis: powers (default; the closed form m^6, mu m^3, mu m^9 with m = 1 - mu, "
     "near-minimax coefficients), extended (the authors' dielectrics extended with "
     "conductors, curves weighted by 1 - F0), paper (the authors' construction, "
-    "coefficients matched at two angles) or f82 (exact for F82-tint and Schlick "
-    "curves, for OpenPBR looks); docs/accuracy.md compares them";
+    "coefficients matched at two angles) or f82 (the closed form m^5, mu m^6, mu m^11: exact "
+    "for F82-tint and Schlick curves, for OpenPBR looks); docs/accuracy.md compares them";
 inline constexpr const char* kLutSizeHelp = "LUT width and height in texels";
 inline constexpr const char* kLutSamplesHelp = "Hammersley samples per texel";
 inline constexpr const char* kLutPrecisionHelp = "Texel precision";

@@ -34,6 +34,8 @@ void evaluate_fresnel(const Coefficients& coefficients, const ShaderBasis& basis
   if (basis.form == ShaderBasisForm::powers) {
     evaluate_each(coefficients, mu, rgb,
                   [](double cosine) { return evaluate_powers_basis(cosine); });
+  } else if (basis.form == ShaderBasisForm::f82) {
+    evaluate_each(coefficients, mu, rgb, [](double cosine) { return evaluate_f82_basis(cosine); });
   } else {
     evaluate_each(coefficients, mu, rgb, [&](double cosine) {
       return evaluate_basis_polynomial(basis.polynomial, cosine);

@@ -6,7 +6,14 @@
 namespace matc::runtime {
 
 std::array<double, kBasisSize> evaluate_shader_basis(const ShaderBasis& basis, double mu) {
-  if (basis.form == ShaderBasisForm::powers) return evaluate_powers_basis(mu);
+  switch (basis.form) {
+    case ShaderBasisForm::powers:
+      return evaluate_powers_basis(mu);
+    case ShaderBasisForm::f82:
+      return evaluate_f82_basis(mu);
+    case ShaderBasisForm::piecewise_polynomial:
+      break;
+  }
   return evaluate_basis_polynomial(basis.polynomial, mu);
 }
 

@@ -29,10 +29,9 @@ constexpr std::array<ShippedBasisRecord, 4> kRecords = {{
      paper_basis, [] { return ShaderBasis(paper_basis_polynomial()); }, paper_coefficient_table,
      paper_analytic_lut},
     {BasisKind::f82, "f82",
-     "b_1 = (1 - mu)^5 and b_2 = mu (1 - mu)^6 span F82-tint, b_3 fitted to conductors; "
-     "near-minimax coefficients",
-     f82_basis, [] { return ShaderBasis(f82_basis_polynomial()); }, f82_coefficient_table,
-     f82_analytic_lut},
+     "b_1 = (1 - mu)^5, b_2 = mu (1 - mu)^6 (F82-tint's span), b_3 = mu (1 - mu)^11 in closed "
+     "form; near-minimax coefficients",
+     f82_basis, ShaderBasis::f82, f82_coefficient_table, f82_analytic_lut},
 }};
 
 static_assert(kRecords.size() == kShippedBases.size());

@@ -2,6 +2,7 @@
 
 #include "basis/basis_polynomial_fit.h"
 #include "checked_options.h"
+#include "matc/runtime/powers_basis.h"
 #include "matc/runtime/shader_basis.h"
 #include "matc/runtime/shipped_bases.h"
 
@@ -13,7 +14,11 @@ BasisDescription describe_basis(std::string_view name) {
   BasisDescription out;
   out.name = runtime::basis_name(kind);
   out.description = runtime::shipped_basis_record(kind).description;
-  out.closed_form = kind == runtime::BasisKind::powers;
+  out.closed_form = runtime::is_closed_form(kind);
+  if (out.closed_form) {
+    const runtime::ClosedFormExponents exponents = runtime::closed_form_exponents(kind);
+    out.closed_form_exponents = {exponents.edge, exponents.lobe};
+  }
   for (std::size_t j = 0; j < basis.samples(); ++j) {
     out.mu.push_back(basis.mu_at(j));
     const auto values = basis.at_index(j);

@@ -1,9 +1,8 @@
 #include "basis/basis_fit.h"
 
-#include "matc/runtime/powers_basis.h"
-
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <cstdlib>
 
@@ -13,6 +12,8 @@
 
 #include "basis/basis_polynomial_fit.h"
 #include "basis/training_set.h"
+#include "matc/runtime/shader_basis.h"
+#include "matc/runtime/shipped_bases.h"
 #include "matc/version.h"
 #include "optics/fresnel.h"
 #include "optics/gulbrandsen.h"
@@ -159,52 +160,15 @@ FittedBasis fit_extended_basis() {
   return basis;
 }
 
-FittedBasis fit_f82_basis() {
-  const auto samples = static_cast<Index>(kExtendedConstruction.samples);
-  Eigen::VectorXd schlick(samples);
-  Eigen::VectorXd lobe(samples);
-  for (Index j = 0; j < samples; ++j) {
-    const double mu = static_cast<double>(j) / static_cast<double>(samples - 1);
-    schlick(j) = std::pow(1.0 - mu, 5.0);
-    lobe(j) = mu * std::pow(1.0 - mu, 6.0);
-  }
-  lobe /= lobe.maxCoeff();
-
-  // What b_1 = (1 - mu)^5 and b_2 leave of the extended training curves, each weighted by
-  // 1 - F0 like the extended fit: c_1 = 1 - F0 is fixed, so F - F0 - (1 - F0) b_1 is what b_2
-  // and b_3 must hold. b_2's share is projected out; b_3 is the first singular vector of the rest.
-  const std::vector<ComplexIor> iors = extended_training_iors();
-  Eigen::MatrixXd residual(static_cast<Index>(iors.size()), samples);
-  for (std::size_t row = 0; row < iors.size(); ++row) {
-    const double f0 = fresnel_exact(1.0, iors[row]);
-    for (Index j = 0; j < samples; ++j) {
-      const double mu = static_cast<double>(j) / static_cast<double>(samples - 1);
-      residual(static_cast<Index>(row), j) =
-          fresnel_exact(mu, iors[row]) - f0 - (1.0 - f0) * schlick(j);
-    }
-  }
-  const Eigen::VectorXd lobe_direction = lobe.normalized();
-  residual -= (residual * lobe_direction) * lobe_direction.transpose();
-  const Eigen::BDCSVD<Eigen::MatrixXd> svd(residual, Eigen::ComputeThinV);
-
-  FittedBasis basis;
-  basis.tables = {std::vector<double>(schlick.data(), schlick.data() + samples),
-                  std::vector<double>(lobe.data(), lobe.data() + samples),
-                  scaled_to_unit_peak(svd.matrixV().col(0))};
-  basis.kind = runtime::BasisKind::f82;
-  basis.probe_indices = probes_of(basis);
-  basis.shader = fit_basis_polynomial(basis.view());
-  return basis;
-}
-
-FittedBasis powers_fitted_basis() {
-  const runtime::BasisView view = runtime::powers_basis();
+FittedBasis closed_form_fitted_basis(runtime::BasisKind kind) {
+  assert(runtime::is_closed_form(kind));
+  const runtime::BasisView view = runtime::shipped_basis(kind);
   FittedBasis basis;
   for (std::size_t i = 0; i < basis.tables.size(); ++i)
     basis.tables[i].assign(view.tables[i].begin(), view.tables[i].end());
   basis.probe_indices = view.probe_indices;
-  basis.shader = runtime::ShaderBasis::powers();
-  basis.kind = runtime::BasisKind::powers;
+  basis.shader = runtime::shipped_shader_basis(kind);
+  basis.kind = kind;
   return basis;
 }
 
@@ -239,18 +203,18 @@ struct ShippedBasisRecipe {
 };
 
 constexpr std::array<ShippedBasisRecipe, runtime::kShippedBases.size()> kRecipes = {{
-    {runtime::BasisKind::powers, powers_fitted_basis,
+    {runtime::BasisKind::powers,
+     [] { return closed_form_fitted_basis(runtime::BasisKind::powers); },
      [] {
        return std::string(
            "// b_1..b_3: the closed form of runtime/powers_basis.h (nothing fitted).\n");
      }},
     {runtime::BasisKind::extended, fit_extended_basis, extended_training},
     {runtime::BasisKind::paper, [] { return fit_paper_basis(); }, paper_training},
-    {runtime::BasisKind::f82, fit_f82_basis,
+    {runtime::BasisKind::f82, [] { return closed_form_fitted_basis(runtime::BasisKind::f82); },
      [] {
        return std::string(
-           "// b_1 = (1 - mu)^5 and b_2 = mu (1 - mu)^6 scaled to a peak of 1: F82-tint's span.\n"
-           "// b_3: first singular vector of what they leave of the extended training set.\n");
+           "// b_1..b_3: the closed form of runtime/powers_basis.h (nothing fitted).\n");
      }},
 }};
 

@@ -91,17 +91,12 @@ inline constexpr BasisConstruction kExtendedConstruction = {1000, MeanShape::fir
 std::vector<ComplexIor> extended_training_iors();
 FittedBasis fit_extended_basis();
 
-// The F82-tint basis (runtime::BasisKind::f82): b_1 = (1 - mu)^5, b_2 = mu (1 - mu)^6 scaled to
-// a peak of 1, so that every F82-tint curve F0 + (1 - F0) b_1 - a mu (1 - mu)^6 lies in the span;
-// b_3 = the first singular vector of what b_1 and b_2 leave of the extended training set.
-FittedBasis fit_f82_basis();
+// A closed-form basis (runtime::is_closed_form: powers, f82) as a FittedBasis: its closed form
+// tabulated, its shader form the closed form itself. Nothing is fitted.
+FittedBasis closed_form_fitted_basis(runtime::BasisKind kind);
 
-// The powers basis (runtime::BasisKind::powers) as a FittedBasis: its closed form tabulated, its
-// shader form the closed form itself. Nothing is fitted.
-FittedBasis powers_fitted_basis();
-
-// Refits a shipped basis from scratch (what `matc basis fit --basis NAME` does); the powers
-// basis is returned as powers_fitted_basis().
+// Refits a shipped basis from scratch (what `matc basis fit --basis NAME` does); a closed form is
+// returned as closed_form_fitted_basis(kind).
 FittedBasis fit_shipped_basis(runtime::BasisKind kind);
 
 // The C++ source of runtime/src/generated/<name>_basis_table.cpp for a refit shipped basis.

@@ -49,10 +49,8 @@ std::vector<MaterialModuleTemplate> compile_material_module_templates() {
     options.basis = basis;
     const Build build(options);
     for (const bool nonnegative : {false, true}) {
-      // Only the powers basis' curves can be proven non-negative (fit/nonnegative_curve.h).
-      if (nonnegative &&
-          runtime::shipped_shader_basis(basis).form != runtime::ShaderBasisForm::powers)
-        continue;
+      // Only the closed forms' curves can be proven non-negative (fit/nonnegative_curve.h).
+      if (nonnegative && !runtime::is_closed_form(basis)) continue;
       templates.push_back({basis, nonnegative,
                            build.compile_material_library_module(template_material(nonnegative))});
     }

@@ -10,6 +10,7 @@
 
 #include "emit/template.h"
 #include "matc/runtime/analytic_lut.h"
+#include "matc/runtime/powers_basis.h"
 #include "matc/version.h"
 
 namespace matc {
@@ -68,11 +69,82 @@ std::string horner_steps(ShaderLanguage language, const runtime::BasisPolynomial
   return out;
 }
 
-// matc_basis(): the fitted bases' piecewise polynomial, or the powers basis' closed form.
-std::string basis_function_source(ShaderLanguage language, const runtime::ShaderBasis& basis) {
-  if (basis.form == runtime::ShaderBasisForm::powers) {
-    return fill_template(template_path(language, "basis_powers"), {});
+// The closed forms' steps to b1 = m^a and b2 = x m^b (runtime/powers_basis.h, the same steps):
+// {variable, expression} lines, and the template's count of multiplies.
+// matc_fresnel_sum() orders the sum for the fewest operations: powers as
+// c_0 + c_2 b_2 + b_1 (c_1 + c_3 b_2); f82, whose b_2 = mu m b_1, as
+// c_0 + b_1 (c_1 + mu m (c_2 + c_3 b_1)), which needs b_1 and mu m alone.
+struct ClosedFormSteps {
+  std::string_view multiplies;
+  std::array<std::array<std::string_view, 2>, 4> lines;  // an empty variable ends them
+  std::string_view sum_comment;
+  bool sum_needs_x_m;  // the sum reads `xm` = mu m
+  std::string_view sum;
+};
+
+const ClosedFormSteps& closed_form_steps(runtime::BasisKind kind) {
+  static constexpr ClosedFormSteps kPowers{
+      "Five",
+      {{{"m3", "m * m * m"}, {"b1", "m3 * m3"}, {"b2", "x * m3"}, {}}},
+      "c_0 + c_2 b_2 + b_1 (c_1 + c_3 b_2)\n// (b_3 = b_2 b_1)",
+      false,
+      "c0 + c2 * b.z + b.y * (c1 + c3 * b.z)"};
+  static constexpr ClosedFormSteps kF82{
+      "Six",
+      {{{"m2", "m * m"}, {"m4", "m2 * m2"}, {"b1", "m4 * m"}, {"b2", "x * (m4 * m2)"}}},
+      "c_0 + b_1 (c_1 + mu m (c_2 + c_3 b_1))\n// (b_2 = mu m b_1, b_3 = b_2 b_1)",
+      true,
+      "c0 + b.y * (c1 + xm * (c2 + c3 * b.y))"};
+  return kind == runtime::BasisKind::f82 ? kF82 : kPowers;
+}
+
+// The lines of matc_fresnel_sum() before its coefficients: the basis, and mu m where the sum
+// reads it (the optimiser shares the clamp and 1 - x with the inlined matc_basis()).
+std::string closed_form_sum_basis(ShaderLanguage language, const ClosedFormSteps& steps) {
+  std::string out;
+  switch (language) {
+    case ShaderLanguage::glsl:
+      out = "  vec4 b = matc_basis(mu);";
+      if (steps.sum_needs_x_m)
+        out += "\n  float x = clamp(mu, 0.0, 1.0);\n  float xm = x * (1.0 - x);";
+      break;
+    case ShaderLanguage::hlsl:
+      out = "  float4 b = matc_basis(mu);";
+      if (steps.sum_needs_x_m) out += "\n  float x = saturate(mu);\n  float xm = x * (1.0 - x);";
+      break;
+    case ShaderLanguage::wgsl:
+      out = "  let b = matc_basis(mu);";
+      if (steps.sum_needs_x_m) out += "\n  let x = clamp(mu, 0.0, 1.0);\n  let xm = x * (1.0 - x);";
+      break;
   }
+  return out;
+}
+
+std::string closed_form_basis_source(ShaderLanguage language, runtime::ShaderBasisForm form) {
+  const runtime::BasisKind kind =
+      form == runtime::ShaderBasisForm::f82 ? runtime::BasisKind::f82 : runtime::BasisKind::powers;
+  const ClosedFormSteps& steps = closed_form_steps(kind);
+  const runtime::ClosedFormExponents exponents = runtime::closed_form_exponents(kind);
+  const std::string_view declare = language == ShaderLanguage::wgsl ? "let" : "float";
+  std::string body;
+  for (const auto& [variable, expression] : steps.lines)
+    if (!variable.empty()) body += fmt::format("  {} {} = {};\n", declare, variable, expression);
+  body.pop_back();  // the template ends the last line
+  return fill_template(template_path(language, "basis_powers"),
+                       {{"basis", std::string(runtime::basis_name(kind))},
+                        {"edge_power", std::to_string(exponents.edge)},
+                        {"lobe_power", std::to_string(exponents.lobe)},
+                        {"product_power", std::to_string(exponents.edge + exponents.lobe)},
+                        {"multiplies", std::string(steps.multiplies)},
+                        {"powers", body},
+                        {"sum_comment", std::string(steps.sum_comment)},
+                        {"sum_basis", closed_form_sum_basis(language, steps)},
+                        {"sum", std::string(steps.sum)}});
+}
+
+// matc_basis(): the fitted bases' piecewise polynomial, or a closed form.
+std::string basis_function_source(ShaderLanguage language, const runtime::ShaderBasis& basis) {
+  if (basis.is_closed_form()) return closed_form_basis_source(language, basis.form);
   return fill_template(template_path(language, "basis_polynomial"),
                        {{"segments", std::to_string(runtime::kPolynomialSegments)},
                         {"last_segment", std::to_string(runtime::kPolynomialSegments - 1)},

@@ -7,7 +7,7 @@ namespace matc {
 
 bool fresnel_provably_nonnegative(const runtime::Coefficients& coefficients,
                                   const runtime::ShaderBasis& shader_basis) {
-  if (shader_basis.form != runtime::ShaderBasisForm::powers) return false;
+  if (!shader_basis.is_closed_form()) return false;
   std::array<double, 3> margins{};
   for (std::size_t channel = 0; channel < 3; ++channel) {
     double total = 0.0;

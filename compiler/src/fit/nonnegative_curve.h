@@ -15,16 +15,16 @@ namespace matc {
 inline constexpr double kNonnegativeMargin = 2e-3;
 inline constexpr std::size_t kNonnegativeCosines = 4097;
 
-// True when the basis is the powers basis and every channel of F = sum_i c_i b_i stays above
-// kNonnegativeMargin sum_i |c_i| at kNonnegativeCosines even cosines. Why that suffices:
-// |b_i'| <= 6 for the powers basis, so F dips at most 6 sum|c_i| / (2 * 4096) = 7.3e-4 sum|c_i|
-// between the cosines: F > 1.2e-3 sum|c_i| everywhere, so direct F needs no clamp. A texel of the
-// preintegrated table is an average of F over the lobe's samples (the bake shares samples and
-// non-negative weights across the four channels, and its basis table is the closed form sampled),
-// and half-precision storage moves each channel by at most 2^-11 of itself, at most
-// 4.9e-4 sum|c_i| in all: every texel, and every filtered fetch between texels, keeps
-// sum_i c_i bbar_i >= 0. The fitted bases' polynomials in sqrt(mu) have no such slope bound near
-// mu = 0: their materials keep the clamp.
+// True when the basis is a closed form (powers, f82) and every channel of F = sum_i c_i b_i stays
+// above kNonnegativeMargin sum_i |c_i| at kNonnegativeCosines even cosines. Why that suffices:
+// |b_i'| <= 6 for both closed forms (the largest is powers' b_1 = m^6 at mu = 0), so F dips at
+// most 6 sum|c_i| / (2 * 4096) = 7.3e-4 sum|c_i| between the cosines: F > 1.2e-3 sum|c_i|
+// everywhere, so direct F needs no clamp. A texel of the preintegrated table is an average of F
+// over the lobe's samples (the bake shares samples and non-negative weights across the four
+// channels, and its basis table is the closed form sampled), and half-precision storage moves each
+// channel by at most 2^-11 of itself, at most 4.9e-4 sum|c_i| in all: every texel, and every
+// filtered fetch between texels, keeps sum_i c_i bbar_i >= 0. The fitted bases' polynomials in
+// sqrt(mu) have no such slope bound near mu = 0: their materials keep the clamp.
 bool fresnel_provably_nonnegative(const runtime::Coefficients& coefficients,
                                   const runtime::ShaderBasis& shader_basis);
 

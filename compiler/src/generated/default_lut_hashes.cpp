@@ -32,14 +32,14 @@ std::vector<DefaultLutHash> checked_in_default_lut_hashes() {
     {BasisKind::paper, LutFormat::raw, LutPrecision::f32, "cd33d063381363b6"},
     {BasisKind::paper, LutFormat::header, LutPrecision::f16, "e55715c7b6898a8e"},
     {BasisKind::paper, LutFormat::header, LutPrecision::f32, "40c32e06477bf013"},
-    {BasisKind::f82, LutFormat::ktx2, LutPrecision::f16, "99c1a277bdfe13a4"},
-    {BasisKind::f82, LutFormat::ktx2, LutPrecision::f32, "0ac7acfc0686d63b"},
-    {BasisKind::f82, LutFormat::dds, LutPrecision::f16, "5cc7e4ae0c4b2e5c"},
-    {BasisKind::f82, LutFormat::dds, LutPrecision::f32, "3f95fb3a1a5c978c"},
-    {BasisKind::f82, LutFormat::raw, LutPrecision::f16, "18ac58728df2d47f"},
-    {BasisKind::f82, LutFormat::raw, LutPrecision::f32, "980b982b1625a4a8"},
-    {BasisKind::f82, LutFormat::header, LutPrecision::f16, "7a444f7b60a4f461"},
-    {BasisKind::f82, LutFormat::header, LutPrecision::f32, "0618e59f0417a73e"},
+    {BasisKind::f82, LutFormat::ktx2, LutPrecision::f16, "3089d091b2893006"},
+    {BasisKind::f82, LutFormat::ktx2, LutPrecision::f32, "606835c470f23ede"},
+    {BasisKind::f82, LutFormat::dds, LutPrecision::f16, "70b07d90d19b732d"},
+    {BasisKind::f82, LutFormat::dds, LutPrecision::f32, "0cc63023f56866f7"},
+    {BasisKind::f82, LutFormat::raw, LutPrecision::f16, "7232913e25d4e791"},
+    {BasisKind::f82, LutFormat::raw, LutPrecision::f32, "28f090aae32974b2"},
+    {BasisKind::f82, LutFormat::header, LutPrecision::f16, "4f1f102ea815b4b0"},
+    {BasisKind::f82, LutFormat::header, LutPrecision::f32, "d09e2660b49f574c"},
   };
 }
 

@@ -1,6 +1,7 @@
 // The shipped basis: its construction's properties, and that `matc basis fit` reproduces it.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -51,12 +52,13 @@ TEST_P(ShippedBasis, SecondElementRunsFromOneAtGrazingToZeroAtNormal) {
 
 TEST_P(ShippedBasis, ResidualElementsAreUnitPeakedAndVanishAtTheEnds) {
   const BasisView basis = runtime::shipped_basis(GetParam());
-  // The fitted tables are scaled to 1 at a sample; the closed form is unscaled and its peaks
-  // (mu = 1/4, 1/10) fall between samples.
-  const bool powers = GetParam() == runtime::BasisKind::powers;
-  const std::array<double, 2> peaks = {powers ? runtime::kPowersB2Peak : 1.0,
-                                       powers ? runtime::kPowersB3Peak : 1.0};
-  const double tolerance = powers ? 1e-6 : 0.0;
+  // The fitted tables are scaled to 1 at a sample; the closed forms are unscaled and their peaks
+  // (mu = 1/4, 1/10 for powers, 1/7, 1/12 for f82) fall between samples.
+  std::array<double, 2> peaks = {1.0, 1.0};
+  if (GetParam() == runtime::BasisKind::powers)
+    peaks = {runtime::kPowersB2Peak, runtime::kPowersB3Peak};
+  if (GetParam() == runtime::BasisKind::f82) peaks = {runtime::kF82B2Peak, runtime::kF82B3Peak};
+  const double tolerance = runtime::is_closed_form(GetParam()) ? 1e-6 : 0.0;
   for (std::size_t i = 1; i < 3; ++i) {
     const auto b = basis.tables[i];
     EXPECT_NEAR(*std::max_element(b.begin(), b.end()), peaks[i - 1], tolerance) << "b_" << i + 1;
@@ -199,12 +201,49 @@ TEST(PowersBasis, TableSamplesTheClosedForm) {
   }
 }
 
-TEST(PowersBasis, HasNoTableToFit) {
-  EXPECT_EQ(std::count(runtime::kFittedBases.begin(), runtime::kFittedBases.end(),
-                       runtime::BasisKind::powers),
-            0);
-  EXPECT_EQ(fit_shipped_basis(runtime::BasisKind::powers).shader.form,
-            runtime::ShaderBasisForm::powers);
+TEST(F82Basis, TableSamplesTheClosedForm) {
+  const BasisView basis = runtime::f82_basis();
+  EXPECT_EQ(basis.kind, runtime::BasisKind::f82);
+  for (std::size_t j = 0; j < basis.samples(); j += 37) {
+    const double mu = basis.mu_at(j);
+    const double m = 1.0 - mu;
+    EXPECT_NEAR(basis.tables[0][j], std::pow(m, 5), 1e-15);
+    EXPECT_NEAR(basis.tables[1][j], mu * std::pow(m, 6), 1e-15);
+    EXPECT_NEAR(basis.tables[2][j], mu * std::pow(m, 11), 1e-15);
+    EXPECT_EQ(
+        runtime::evaluate_shader_basis(runtime::shipped_shader_basis(runtime::BasisKind::f82), mu),
+        basis.at_index(j));
+  }
+}
+
+// F82-tint's curve, F0 + (1 - F0) m^5 - a mu m^6, is c = (F0, 1 - F0, -a, 0) in the f82 basis
+// at every cosine: the span holds it exactly, not to a fit.
+TEST(F82Basis, SpansEveryF82TintCurve) {
+  const runtime::ShaderBasis& basis = runtime::shipped_shader_basis(runtime::BasisKind::f82);
+  for (const double f0 : {0.02, 0.5, 0.97}) {
+    for (const double a : {-0.3, 0.0, 0.8}) {
+      for (int k = 0; k <= 100; ++k) {
+        const double mu = k / 100.0;
+        const auto b = runtime::evaluate_shader_basis(basis, mu);
+        const double curve =
+            f0 + (1.0 - f0) * std::pow(1.0 - mu, 5) - a * mu * std::pow(1.0 - mu, 6);
+        EXPECT_NEAR(f0 * b[0] + (1.0 - f0) * b[1] - a * b[2], curve, 1e-15) << f0 << " " << mu;
+      }
+    }
+  }
+}
+
+TEST(ClosedFormBases, HaveNoTableToFit) {
+  for (const auto& [kind, form] :
+       {std::pair{runtime::BasisKind::powers, runtime::ShaderBasisForm::powers},
+        std::pair{runtime::BasisKind::f82, runtime::ShaderBasisForm::f82}}) {
+    EXPECT_TRUE(runtime::is_closed_form(kind));
+    EXPECT_EQ(std::count(runtime::kFittedBases.begin(), runtime::kFittedBases.end(), kind), 0);
+    EXPECT_EQ(fit_shipped_basis(kind).shader.form, form);
+    EXPECT_EQ(runtime::shipped_shader_basis(kind).form, form);
+  }
+  for (const auto kind : runtime::kFittedBases)
+    EXPECT_FALSE(runtime::is_closed_form(kind));
 }
 
 const auto kBasisTestName = [](const auto& name) {

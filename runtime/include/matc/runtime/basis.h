@@ -27,10 +27,10 @@ enum class BasisKind {
   extended,
   // The authors' construction: unweighted SVDs, coefficients matched at two probe angles.
   paper,
-  // For looks authored as F82-tint (OpenPBR, Adobe Standard Material): b_1 = (1 - mu)^5 and
-  // b_2 = mu (1 - mu)^6 (scaled) span every F82-tint curve, Schlick's included, so those fit
-  // exactly; b_3 is the first singular vector of what they leave of the extended training set.
-  // Near-minimax coefficients. Measured metals fit about five times worse than with `extended`.
+  // For looks authored as F82-tint (OpenPBR, Adobe Standard Material, glTF's edge colour), in
+  // closed form like `powers` and at its cost: b_1 = (1 - mu)^5 and b_2 = mu (1 - mu)^6 span
+  // every F82-tint curve, Schlick's included, so those fit exactly; b_3 = b_1 b_2
+  // (powers_basis.h). Near-minimax coefficients. Measured metals fit worse than with `powers`.
   f82,
 };
 inline constexpr BasisKind kDefaultBasis = BasisKind::powers;
@@ -38,9 +38,13 @@ inline constexpr std::array<BasisKind, 4> kShippedBases = {BasisKind::powers, Ba
                                                            BasisKind::paper, BasisKind::f82};
 
 // The bases whose b_1..b_3 are fitted tables, checked in with their piecewise-polynomial shader
-// form (`matc basis fit`); the powers basis is a closed form with nothing to fit.
-inline constexpr std::array<BasisKind, 3> kFittedBases = {BasisKind::extended, BasisKind::paper,
-                                                          BasisKind::f82};
+// form (`matc basis fit`); `powers` and `f82` are closed forms with nothing to fit.
+inline constexpr std::array<BasisKind, 2> kFittedBases = {BasisKind::extended, BasisKind::paper};
+
+// Whether the shaders evaluate the basis in closed form (powers_basis.h).
+constexpr bool is_closed_form(BasisKind kind) {
+  return kind == BasisKind::powers || kind == BasisKind::f82;
+}
 
 // "powers", "extended", "paper", "f82": the names `--basis` accepts and outputs record.
 std::string_view basis_name(BasisKind kind);
@@ -72,9 +76,7 @@ struct BasisView {
 BasisView paper_basis();
 // The former default, checked in as src/generated/extended_basis_table.cpp (`matc basis fit`).
 BasisView extended_basis();
-// The F82-tint basis, checked in as src/generated/f82_basis_table.cpp (`matc basis fit --basis
-// f82`).
-BasisView f82_basis();
+// The closed forms (powers_basis(), f82_basis()) are declared in powers_basis.h.
 // One of them by kind (the default basis without an argument).
 BasisView shipped_basis(BasisKind kind = kDefaultBasis);
 

@@ -36,6 +36,5 @@ std::array<double, kBasisSize> evaluate_basis_polynomial(const BasisPolynomial& 
 // has every shipped basis' shader form.
 const BasisPolynomial& paper_basis_polynomial();
 const BasisPolynomial& extended_basis_polynomial();
-const BasisPolynomial& f82_basis_polynomial();
 
 }  // namespace matc::runtime
