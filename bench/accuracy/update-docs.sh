@@ -29,6 +29,13 @@ cmake --build "$build" --target matc_basis_choice_study >/dev/null
 cmake --build "$build" --target matc_thin_film_study >/dev/null
 "$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" thin-film-study \
   "$build/bench/matc_thin_film_study"
+# How finely a table must sample a filmed metal's curve (about a minute on 2 cores; no test reruns
+# it), and what a film over an RGB metal costs (3 s; thin_film_rgb_docs_current).
+cmake --build "$build" --target matc_thin_film_table_study matc_thin_film_rgb_study >/dev/null
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" thin-film-table-study \
+  "$build/bench/matc_thin_film_table_study"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" thin-film-rgb-study \
+  "$build/bench/matc_thin_film_rgb_study"
 # The basis study (about 1.5 minutes on 2 cores; no test reruns it, the unit tests hold the
 # shipped basis to the targets it was chosen for).
 cmake --build "$build" --target matc_basis_study >/dev/null
