@@ -12,6 +12,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 artistic=$root/examples/materials/tinted_steel.json
 spectral=$root/examples/materials/copper.json
+filmed=$root/examples/materials/titanium_anodised_blue.json
+bare_titanium=$root/examples/materials/titanium.json
 
 # Median wall time in milliseconds of `runs` runs of a command.
 median_ms() {
@@ -43,6 +45,9 @@ row "\`--no-shared --emit glsl,hlsl,wgsl,json\`, spectral preset (copper)" \
 row "\`--no-shared\` (every own file: + SPIR-V, C header), artistic" \
   "$matc" -q -o "$work/c" --no-shared "$artistic"
 row "\`--no-shared\`, spectral preset" "$matc" -q -o "$work/d" --no-shared "$spectral"
+row "\`--no-shared\`, spectral preset (titanium)" "$matc" -q -o "$work/g" --no-shared "$bare_titanium"
+row "\`--no-shared\`, the same titanium under a 45 nm film" \
+  "$matc" -q -o "$work/h" --no-shared "$filmed"
 row "\`--shared-only\` (libraries, SPIR-V library, 128x128 table bake, tables)" \
   "$matc" -q -o "$work/e" --shared-only
 row "one-material batch, every output (own and shared files, manifest)" \

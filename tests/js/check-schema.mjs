@@ -66,6 +66,12 @@ const cases = [
   ["zinc (warns)", `{"name": "a", "spectral": {"preset": "Zn"}}`, false],
   ["preset and file", `{"name": "a", "spectral": {"preset": "Au", "file": "x.csv"}}`, false],
   ["string number", `{"name": "a", "ior": {"n": "1.5", "k": 0}}`, false],
+  ["film", `{"name": "a", "spectral": {"preset": "Ti"}, "film": {"ior": 2.3, "thickness": 40}}`, true],
+  ["film, defaults", `{"name": "a", ${ior}, "film": {"thickness": 0}}`, true],
+  ["film without thickness", `{"name": "a", ${ior}, "film": {"ior": 1.5}}`, false],
+  ["film thickness negative", `{"name": "a", ${ior}, "film": {"thickness": -1}}`, false],
+  ["film index below 1", `{"name": "a", ${ior}, "film": {"ior": 0.9, "thickness": 10}}`, false],
+  ["film under a coat", `{"name": "a", ${ior}, "coat": {}, "film": {"thickness": 10}}`, false],
 ];
 
 for (const file of readdirSync(examplesDir).filter((f) => f.endsWith(".json")).sort()) {

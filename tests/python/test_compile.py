@@ -99,3 +99,16 @@ def test_accuracy_and_inputs_are_reported():
     assert np.all(accuracy["max_error"] < accuracy["schlick_max_error"])
     assert compiled.material.model == "ior"
     assert compiled.material.inputs["k"] == [3.70, 2.90, 2.10]
+
+
+def test_a_film_changes_the_exact_curve_and_none_is_the_bare_metal():
+    bare = matc.compile({"name": "ti", "spectral": {"preset": "Ti"}})
+    none = matc.compile({"name": "ti", "spectral": {"preset": "Ti"}, "film": {"thickness": 0}})
+    filmed = matc.compile({"name": "ti", "spectral": {"preset": "Ti"},
+                           "film": {"ior": 2.4, "thickness": 45}})
+    np.testing.assert_array_equal(none.exact(COSINES), bare.exact(COSINES))
+    np.testing.assert_array_equal(none.coefficients, bare.coefficients)
+    # 45 nm of titania turns grey titanium blue at normal incidence.
+    f0 = filmed.exact([1.0])[0]
+    assert f0[2] > 2 * f0[0] and f0[2] > 2 * f0[1]
+    assert filmed.ior is None

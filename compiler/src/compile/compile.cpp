@@ -13,6 +13,7 @@
 #include "matc/version.h"
 #include "optics/coat.h"
 #include "optics/spectral.h"
+#include "optics/thin_film.h"
 
 namespace matc {
 namespace {
@@ -31,6 +32,29 @@ std::optional<std::array<ComplexIor, 3>> per_channel_ior(const MaterialModel& mo
     return std::nullopt;
   }
   return ior;
+}
+
+// Every RGB material's index per channel: artistic and ior as per_channel_ior, F82-tint (which has
+// none) as the conductor with its F0 and F(1/7) (docs/coating.md). Spectral materials: nullopt.
+std::optional<std::array<ComplexIor, 3>> conductor_per_channel(const MaterialModel& model) {
+  if (const auto* f82 = std::get_if<F82TintInput>(&model)) {
+    std::array<ComplexIor, 3> ior{};
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double f_at_mu_bar = f82->tint[c] * fresnel_schlick(kF82MuBar, f82->f0[c]);
+      ior[c] = conductor_matching_f82(f82->f0[c], f_at_mu_bar);
+    }
+    return ior;
+  }
+  return per_channel_ior(model);
+}
+
+ThinFilm thin_film_of(const FilmInput& film) {
+  return {film.ior, film.thickness_nm, film.weight};
+}
+
+// A film of 0 nm, or of no coverage, is the bare metal: its curve, bit for bit.
+bool has_visible_film(const Material& material) {
+  return material.film && material.film->thickness_nm > 0.0 && material.film->weight > 0.0;
 }
 
 // `curve` with `color`'s gamut mapping applied. `sampled` is the same curve, cached where the
@@ -59,15 +83,23 @@ ColorSpace input_color_space(const Material& material, ColorSpace working_space)
 std::unique_ptr<ReflectanceCurve> make_working_space_curve(const Material& material,
                                                            ColorSpace working_space) {
   if (const auto* spectral = std::get_if<SpectralInput>(&material.model)) {
+    if (has_visible_film(material)) {
+      return std::make_unique<ThinFilmCurve>(spectral->spectrum, thin_film_of(*material.film),
+                                             working_space);
+    }
     return std::make_unique<SpectralCurve>(spectral->spectrum, working_space);
   }
+  const ColorSpace space = input_color_space(material, working_space);
   std::unique_ptr<ReflectanceCurve> curve;
-  if (const auto* f82 = std::get_if<F82TintInput>(&material.model)) {
+  if (has_visible_film(material)) {
+    // The channels' band sums use the input space's weights: the index per channel belongs to it.
+    curve = std::make_unique<ThinFilmChannelCurve>(*conductor_per_channel(material.model),
+                                                   thin_film_of(*material.film), space);
+  } else if (const auto* f82 = std::get_if<F82TintInput>(&material.model)) {
     curve = std::make_unique<F82TintCurve>(f82->f0, f82->tint);
   } else {
     curve = std::make_unique<IorCurve>(*per_channel_ior(material.model));
   }
-  const ColorSpace space = input_color_space(material, working_space);
   if (space == working_space) return curve;
   return std::make_unique<TransformedCurve>(std::move(curve), rgb_to_rgb(space, working_space));
 }
@@ -95,16 +127,7 @@ std::unique_ptr<ReflectanceCurve> make_metal_in_coat_curve(const Material& mater
     }
     metal_in_coat = std::make_unique<SpectralCurve>(relative, space);
   } else {
-    std::array<ComplexIor, 3> ior{};
-    if (const auto* f82 = std::get_if<F82TintInput>(&material.model)) {
-      // F82-tint has no index: the conductor with its F0 and F(1/7) stands in for it.
-      for (std::size_t c = 0; c < 3; ++c) {
-        const double f_at_mu_bar = f82->tint[c] * fresnel_schlick(kF82MuBar, f82->f0[c]);
-        ior[c] = conductor_matching_f82(f82->f0[c], f_at_mu_bar);
-      }
-    } else {
-      ior = *per_channel_ior(material.model);
-    }
+    std::array<ComplexIor, 3> ior = *conductor_per_channel(material.model);
     for (auto& channel : ior)
       channel = under_coat(channel, coat.ior);
     metal_in_coat = std::make_unique<IorCurve>(ior);
@@ -201,10 +224,11 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
       average_fresnel(compiled.coefficients, basis_hemispherical_averages(basis));
   compiled.fresnel_nonnegative = fresnel_provably_nonnegative(
       compiled.coefficients, runtime::shipped_shader_basis(basis.kind));
-  // The per-channel IOR describes the curve only where no matrix mixed the channels.
+  // The per-channel IOR describes the curve only where no matrix mixed the channels and no film
+  // lies over the metal.
   const bool channels_kept =
       input_color_space(material, color.working_space) == color.working_space &&
-      compiled.saturation == 1.0;
+      compiled.saturation == 1.0 && !has_visible_film(material);
   if (const auto ior = per_channel_ior(material.model); ior && channels_kept) {
     compiled.ior = *ior;
     std::array<ArtisticParameters, 3> artistic{};
@@ -236,7 +260,12 @@ void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics
   const double f82 = worst(accuracy.f82_tint);
   std::string advice;
   const bool f82_material = std::holds_alternative<F82TintInput>(compiled.material.model);
-  if (std::holds_alternative<ArtisticInput>(compiled.material.model)) {
+  if (compiled.material.film) {
+    advice =
+        "a film's interference makes F oscillate with angle, which the 4-term basis holds for "
+        "films up to about 50 nm (docs/accuracy.md, \"Thin films over metals\"): a thinner film "
+        "fits; the F the shaders compute is the fit's";
+  } else if (std::holds_alternative<ArtisticInput>(compiled.material.model)) {
     advice =
         "high reflectivity with a low edge tint makes curves like a high-index dielectric's, which "
         "no 4-term basis follows: lower the reflectivity or raise the edge tint, or give the "
@@ -250,11 +279,13 @@ void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics
   } else {
     advice = "check the input values; curves this far from measured metals fit poorly";
   }
-  if (!f82_material && (f82 < ours || schlick < ours)) {
+  if (!f82_material && !compiled.material.film && (f82 < ours || schlick < ours)) {
     advice += fmt::format("; for this curve {} is closer", f82 <= schlick ? "F82-tint" : "Schlick");
   }
   diagnostics.warning(
-      compiled.material.name_location, std::string(model_key(compiled.material.model)),
+      compiled.material.name_location,
+      compiled.material.film ? std::string("film")
+                             : std::string(model_key(compiled.material.model)),
       fmt::format("poor fit{}: max |F - exact| = {:.3f} (Schlick {:.3f}, F82-tint {:.3f}; the "
                   "measured metals stay under 0.02)",
                   compiled.coat ? " of the coated surface" : "", ours, schlick, f82),

@@ -31,7 +31,13 @@ ordered_json input_json(const Material& material) {
     input = spectral.preset.empty() ? ordered_json{{"file", spectral.file}}
                                     : ordered_json{{"preset", spectral.preset}};
   }
-  return {{std::string(model_key(material.model)), input}};
+  ordered_json out = {{std::string(model_key(material.model)), input}};
+  if (material.film) {
+    out["film"] = {{"weight", material.film->weight},
+                   {"ior", material.film->ior},
+                   {"thickness", material.film->thickness_nm}};
+  }
+  return out;
 }
 
 // A coated material's coat (docs/coating.md): what was asked, what was fitted, how close.

@@ -62,6 +62,20 @@ struct CoatInput {
   Rgb color{1.0, 1.0, 1.0};
 };
 
+// A thin dielectric film over the metal (heat-tinted titanium, anodised metals; docs/
+// material-format.md), named as OpenPBR's thin_film_*: the film's real index, its thickness in nm
+// and its coverage. The metal's F is the Airy sum of the film's reflections over the metal's own
+// complex index (optics/thin_film.h), mixed with the bare metal's by the weight.
+inline constexpr double kMinFilmIor = 1.0;
+inline constexpr double kMaxFilmIor = 3.0;
+inline constexpr double kMaxFilmThicknessNm = 2000.0;
+
+struct FilmInput {
+  double weight = 1.0;        // coverage in [0, 1]; a block that names a film means one
+  double ior = 1.4;           // OpenPBR's thin_film_ior default, in [kMinFilmIor, kMaxFilmIor]
+  double thickness_nm = 0.0;  // required, in [0, kMaxFilmThicknessNm]; 0 is the bare metal
+};
+
 struct Material {
   std::string name;  // validated identifier, see docs/material-format.md
   MaterialModel model;
@@ -73,6 +87,7 @@ struct Material {
   // space. Spectral materials have no RGB values and ignore it.
   std::optional<ColorSpace> color_space;
   std::optional<CoatInput> coat;  // absent: the metal is bare, seen from air
+  std::optional<FilmInput> film;  // absent: no film on the metal
 };
 
 // "artistic", "ior", "spectral" or "f82_tint": the key that selects the model in a material file.

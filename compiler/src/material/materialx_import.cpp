@@ -75,6 +75,11 @@ class MaterialXImporter {
                                        const MaterialXShadingModel& model,
                                        const MaterialXInputSpec& spec) {
     const std::string file = input.image_file.empty() ? "" : echoed(input.image_file, 128);
+    if (spec.name == model.film_weight.name || spec.name == model.film_thickness.name ||
+        spec.name == model.film_ior.name) {
+      return "matc imports constant films only (a textured thickness is not compiled yet), so "
+             "this material is skipped";
+    }
     if (spec.name == model.coat_roughness.name) {
       return "the coat's roughness is left out of the imported material (its default is used)";
     }
@@ -205,6 +210,17 @@ class MaterialXImporter {
       if (!coat) return;
       material_json["coat"] = std::move(*coat);
     }
+    const ImportedFilm film = read_film(shader, *model, element_name);
+    if (!film.ok) return;
+    if (film.block && material_json.contains("coat")) {
+      result_.diagnostics.warning(
+          film.location, element_name,
+          "has a thin film and a coat: a film under a coat is not modelled, so the film is left "
+          "out",
+          "a film on a bare metal (docs/material-format.md, \"film\")");
+    } else if (film.block) {
+      material_json["film"] = *film.block;
+    }
     if (material_json["name"].get<std::string>().empty()) return;  // a name clash, reported
     add_imported_material(result_, material_json, document_.path(), document_.at(*shader.material),
                           material_json["name"].get<std::string>());
@@ -253,6 +269,55 @@ class MaterialXImporter {
     const auto rgb = [](const Rgb& v) { return ordered_json::array({v[0], v[1], v[2]}); };
     return ordered_json{
         {"weight", weight}, {"ior", index}, {"roughness", coat_roughness}, {"color", rgb(tint)}};
+  }
+
+  // The film block of a material whose film weight (or, without one, thickness) is above 0;
+  // ok is false after an error or a connected input, which skips the material.
+  struct ImportedFilm {
+    bool ok = true;
+    std::optional<ordered_json> block;
+    SourceLocation location;
+  };
+
+  ImportedFilm read_film(const MaterialXShader& shader, const MaterialXShadingModel& model,
+                         const std::string& element_name) {
+    bool connected = false;
+    const auto thickness = read(shader, model, model.film_thickness, connected);
+    const auto ior = read(shader, model, model.film_ior, connected);
+    std::optional<InputValue> weight;
+    if (!model.film_weight.name.empty()) weight = read(shader, model, model.film_weight, connected);
+    if (!thickness || !ior || (!model.film_weight.name.empty() && !weight))
+      return {false, std::nullopt, {}};
+    const auto field = [&](const MaterialXInputSpec& spec) {
+      return fmt::format("{}.{}", element_name, spec.name);
+    };
+    const double coverage = weight ? weight->value[0] : (thickness->value[0] > 0.0 ? 1.0 : 0.0);
+    if (coverage < 0.0 || coverage > 1.0) {
+      result_.diagnostics.error(weight->location, field(model.film_weight),
+                                fmt::format("{} is out of range", coverage), "a number in [0, 1]");
+      return {false, std::nullopt, {}};
+    }
+    if (coverage == 0.0) return {true, std::nullopt, {}};
+    const double nm = thickness->value[0] * model.film_thickness_to_nm;
+    if (!(nm >= 0.0 && nm <= kMaxFilmThicknessNm)) {
+      result_.diagnostics.error(
+          thickness->location, field(model.film_thickness),
+          fmt::format("{} is out of range", thickness->value[0]),
+          fmt::format(
+              "a number in [0, {}] ({} in {})", kMaxFilmThicknessNm / model.film_thickness_to_nm,
+              model.film_thickness_to_nm == 1.0 ? "nanometres" : "micrometres", model.node));
+      return {false, std::nullopt, {}};
+    }
+    double index = ior->value[0];
+    if (index < kMinFilmIor || index > kMaxFilmIor) {
+      const double clamped = std::clamp(index, kMinFilmIor, kMaxFilmIor);
+      result_.diagnostics.warning(
+          ior->location, field(model.film_ior), fmt::format("{} is clamped to {}", index, clamped),
+          fmt::format("[{}, {}], the film indices matc compiles", kMinFilmIor, kMaxFilmIor));
+      index = clamped;
+    }
+    return {true, ordered_json{{"weight", coverage}, {"ior", index}, {"thickness", nm}},
+            thickness->location};
   }
 
   void clamp_channels(Rgb& values, double low, double high, const SourceLocation& location,

@@ -43,7 +43,14 @@ struct MaterialXShadingModel {
   MaterialXInputSpec coat_color;
   MaterialXInputSpec coat_roughness;
   MaterialXInputSpec coat_ior;
-  std::array<NotCarriedInput, 10> not_carried;
+  // The thin film (docs/material-format.md, "film"): carried when its weight is above 0. A model
+  // without a film weight (Standard Surface) has an empty film_weight name: its film is there
+  // when its thickness is above 0. The thickness is in nanometres times film_thickness_to_nm.
+  MaterialXInputSpec film_weight;
+  MaterialXInputSpec film_thickness;
+  MaterialXInputSpec film_ior;
+  double film_thickness_to_nm;
+  std::array<NotCarriedInput, 9> not_carried;
   ImportedModel imported;
   bool edge_scaled_by_weight;
   double max_f0;                // F0 is clamped to [0, max_f0]

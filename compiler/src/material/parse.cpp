@@ -23,14 +23,15 @@ using runtime::Rgb;
 
 constexpr std::array<std::string_view, 4> kModelKeys = {"artistic", "ior", "spectral", "f82_tint"};
 constexpr std::string_view kOneModel = "exactly one of artistic, ior, spectral, f82_tint";
-constexpr std::array<std::string_view, 10> kTopLevelFields = {
-    "$schema",  "name",     "description", "artistic",    "ior",
-    "spectral", "f82_tint", "roughness",   "color_space", "coat"};
+constexpr std::array<std::string_view, 11> kTopLevelFields = {
+    "$schema",  "name",      "description", "artistic", "ior", "spectral",
+    "f82_tint", "roughness", "color_space", "coat",     "film"};
 constexpr std::array<std::string_view, 2> kF82TintFields = {"f0", "tint"};
 constexpr std::array<std::string_view, 2> kArtisticFields = {"reflectivity", "edge_tint"};
 constexpr std::array<std::string_view, 2> kIorFields = {"n", "k"};
 constexpr std::array<std::string_view, 2> kSpectralFields = {"preset", "file"};
 constexpr std::array<std::string_view, 4> kCoatFields = {"weight", "ior", "roughness", "color"};
+constexpr std::array<std::string_view, 3> kFilmFields = {"weight", "ior", "thickness"};
 
 constexpr Range kReflectivityRange{0.0, 1.0, false};
 constexpr Range kUnitRange{0.0, 1.0};
@@ -38,6 +39,10 @@ constexpr Range kIorRange{0.0, kMaxIorComponent};
 // OpenPBR's coat_ior range, 1 (no interface) to 3, from 1.05: nearer 1 the coat's Fresnel is a
 // spike at grazing that no basis made for Fresnel curves holds (docs/coating.md).
 constexpr Range kCoatIorRange{kMinCoatIor, 3.0};
+// A film's index from 1 (no film) to OpenPBR's 3; thickness up to 2 micrometres, past the
+// thickest anodised or tempered films (about 1 micrometre) and well past where the fringes blur.
+constexpr Range kFilmIorRange{kMinFilmIor, kMaxFilmIor};
+constexpr Range kFilmThicknessRange{0.0, kMaxFilmThicknessNm};
 
 class MaterialReader : LocatedJsonReader {
  public:
@@ -75,6 +80,12 @@ class MaterialReader : LocatedJsonReader {
     if (root.contains("color_space")) material.color_space = read_color_space(root["color_space"]);
     if (auto model = read_model(root)) material.model = std::move(*model);
     if (root.contains("coat")) material.coat = read_coat(root);
+    if (root.contains("film")) material.film = read_film(root);
+    if (root.contains("film") && root.contains("coat")) {
+      error("/film", "is given with a coat",
+            "a film on a bare metal: a film under a coat is not modelled (the film would reflect "
+            "inside the coat, not in air); drop one of them");
+    }
 
     if (diagnostics_.has_errors()) return std::nullopt;
     return material;
@@ -126,21 +137,24 @@ class MaterialReader : LocatedJsonReader {
     return F82TintInput{*f0, *tint};
   }
 
+  // A block's number field, where given: range-checked into `into`; `ok` turns false on an error.
+  void read_block_number(const json& object, const std::string& block, std::string_view key,
+                         const Range& range, double& into, bool& ok) {
+    if (!object.contains(key)) return;
+    const auto value = read_number(object[std::string(key)], child(block, key), range);
+    if (value) into = *value;
+    ok = ok && value.has_value();
+  }
+
   // Every field is optional (CoatInput's defaults); each given one is range-checked.
   std::optional<CoatInput> read_coat(const json& root) {
     const json* object = object_field(root, "coat", kCoatFields);
     if (!object) return std::nullopt;
     CoatInput coat;
     bool ok = true;
-    const auto number = [&](std::string_view key, const Range& range, double& into) {
-      if (!object->contains(key)) return;
-      const auto value = read_number((*object)[std::string(key)], child("/coat", key), range);
-      if (value) into = *value;
-      ok = ok && value.has_value();
-    };
-    number("weight", kUnitRange, coat.weight);
-    number("ior", kCoatIorRange, coat.ior);
-    number("roughness", kUnitRange, coat.roughness);
+    read_block_number(*object, "/coat", "weight", kUnitRange, coat.weight, ok);
+    read_block_number(*object, "/coat", "ior", kCoatIorRange, coat.ior, ok);
+    read_block_number(*object, "/coat", "roughness", kUnitRange, coat.roughness, ok);
     if (object->contains("color")) {
       const auto color = read_rgb((*object)["color"], "/coat/color", kUnitRange);
       if (color) coat.color = *color;
@@ -148,6 +162,26 @@ class MaterialReader : LocatedJsonReader {
     }
     if (!ok) return std::nullopt;
     return coat;
+  }
+
+  // `thickness` is required (a film has no default thickness); weight and ior take FilmInput's
+  // defaults.
+  std::optional<FilmInput> read_film(const json& root) {
+    const json* object = object_field(root, "film", kFilmFields);
+    if (!object) return std::nullopt;
+    FilmInput film;
+    bool ok = true;
+    read_block_number(*object, "/film", "weight", kUnitRange, film.weight, ok);
+    read_block_number(*object, "/film", "ior", kFilmIorRange, film.ior, ok);
+    read_block_number(*object, "/film", "thickness", kFilmThicknessRange, film.thickness_nm, ok);
+    if (!object->contains("thickness")) {
+      missing("/film", "thickness",
+              fmt::format("the film's thickness in nanometres, a number in {}",
+                          kFilmThicknessRange.describe()));
+      ok = false;
+    }
+    if (!ok) return std::nullopt;
+    return film;
   }
 
   std::optional<ColorSpace> read_color_space(const json& value) {

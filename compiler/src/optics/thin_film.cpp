@@ -24,15 +24,94 @@ Amplitudes interface(Complex a, Complex q_a, Complex b, Complex q_b) {
   return {(q_a - q_b) / (q_a + q_b), (b * b * q_a - a * a * q_b) / (b * b * q_a + a * a * q_b)};
 }
 
+double wavelength_at(std::size_t grid_index) {
+  return static_cast<double>(kCieFirstNm) + static_cast<double>(grid_index);
+}
+
+// What the curves below need at one cosine, whatever the wavelength: the film's real q_1 (its
+// index is real and at least 1, so n_1^2 - sin^2 > 0), the air/film amplitudes (real) and the
+// phase's rate over 1 / lambda. thin_film_reflectance is the reference they are held to
+// (thin_film_test); these save its complex square root, exponential and first interface per
+// wavelength, which a compile evaluates at 2001 cosines x 471 wavelengths.
+struct FilmAtCosine {
+  double sin2 = 0.0;
+  double q1 = 0.0;
+  double n1_squared = 0.0;
+  double r01_s = 0.0;
+  double r01_p = 0.0;
+  double phase_per_inverse_nm = 0.0;  // delta = this / lambda
+
+  FilmAtCosine(double mu, const ThinFilm& film) {
+    const double cos0 = std::clamp(mu, 0.0, 1.0);
+    sin2 = 1.0 - cos0 * cos0;
+    n1_squared = film.ior * film.ior;
+    // n_1^2 - sin^2 as (n_1^2 - 1) + cos^2: near grazing, 1 - cos^2 rounds to 1 and a film of
+    // index 1 would lose its q_1 = cos (and the Airy sum become 0 / 0).
+    q1 = std::sqrt((n1_squared - 1.0) + cos0 * cos0);
+    r01_s = (cos0 - q1) / (cos0 + q1);
+    r01_p = (n1_squared * cos0 - q1) / (n1_squared * cos0 + q1);
+    phase_per_inverse_nm = 4.0 * std::numbers::pi * film.thickness_nm * q1;
+  }
+
+  // The film/metal amplitudes for the metal's eta^2. Divisions written out: std::complex's
+  // guards against infinities (__divdc3) cost more than the rest of the sum, and no operand here
+  // is infinite.
+  Amplitudes metal_amplitudes(Complex eta_squared) const {
+    const Complex q2 = principal_sqrt(eta_squared - sin2);
+    const Complex eta_q1 = eta_squared * q1, n1_q2 = n1_squared * q2;
+    return {quotient(q1 - q2, q1 + q2), quotient(eta_q1 - n1_q2, eta_q1 + n1_q2)};
+  }
+
+  // e^{i delta} at wavelength lambda.
+  Complex phase(double wavelength_nm) const {
+    const double delta = phase_per_inverse_nm / wavelength_nm;
+    return {std::cos(delta), std::sin(delta)};
+  }
+
+  // Unpolarised reflectance of the film over a metal of amplitudes r12 at the phase of a
+  // wavelength: |r01 + r12 e^{i delta}|^2 / |1 + r01 r12 e^{i delta}|^2 per polarisation.
+  double reflectance(const Amplitudes& r12, Complex phase) const {
+    const auto airy = [&](double first, Complex second) {
+      const Complex deeper = second * phase;
+      return std::norm(first + deeper) / std::norm(1.0 + first * deeper);
+    };
+    return 0.5 * (airy(r01_s, r12.s) + airy(r01_p, r12.p));
+  }
+
+  static Complex quotient(Complex a, Complex b) { return a * std::conj(b) / std::norm(b); }
+
+  // The root with a non-negative real part, as std::sqrt takes it, without csqrt's handling of
+  // infinities and signed zeros (nothing here is infinite, and eta^2 - sin^2 is never -0).
+  static Complex principal_sqrt(Complex z) {
+    const double t = std::sqrt(0.5 * (std::sqrt(std::norm(z)) + std::abs(z.real())));
+    if (t == 0.0) return 0.0;
+    if (z.real() >= 0.0) return {t, z.imag() / (2.0 * t)};
+    return {std::abs(z.imag()) / (2.0 * t), std::copysign(t, z.imag())};
+  }
+};
+
+// weight x filmed + (1 - weight) x bare, as covered_reflectance.
+double covered(const ThinFilm& film, double filmed, double mu, ComplexIor metal) {
+  if (film.weight == 1.0) return filmed;
+  return film.weight * filmed + (1.0 - film.weight) * fresnel_exact(mu, metal);
+}
+
 }  // namespace
+
+double covered_reflectance(double mu, double wavelength_nm, const ThinFilm& film,
+                           ComplexIor metal) {
+  return covered(film, thin_film_reflectance(mu, wavelength_nm, film, metal), mu, metal);
+}
 
 double thin_film_reflectance(double mu, double wavelength_nm, const ThinFilm& film,
                              ComplexIor metal) {
   const double cos0 = std::clamp(mu, 0.0, 1.0);
+  // At grazing every stack reflects everything; a film of index 1 would make it 0 / 0 below.
+  if (cos0 == 0.0) return 1.0;
   const double sin2 = 1.0 - cos0 * cos0;
   const Complex n0 = 1.0, n1 = film.ior, n2 = metal.eta();
   const Complex q0 = cos0;
-  const Complex q1 = std::sqrt(n1 * n1 - sin2);
+  const Complex q1 = std::sqrt((n1 * n1 - 1.0) + cos0 * cos0);  // as FilmAtCosine: exact near 0
   const Complex q2 = std::sqrt(n2 * n2 - sin2);
   const Amplitudes r01 = interface(n0, q0, n1, q1);
   const Amplitudes r12 = interface(n1, q1, n2, q2);
@@ -48,17 +127,48 @@ ThinFilmCurve::ThinFilmCurve(const Spectrum& metal, const ThinFilm& film, ColorS
     : weights_(spectral_weights(space)), film_(film) {
   ior_.reserve(weights_.size());
   for (std::size_t i = 0; i < weights_.size(); ++i)
-    ior_.push_back(metal.at(static_cast<double>(kCieFirstNm) + static_cast<double>(i)));
+    ior_.push_back(metal.at(wavelength_at(i)));
 }
 
 Rgb ThinFilmCurve::at(double mu) const {
+  if (!(mu > 0.0)) return {1.0, 1.0, 1.0};  // grazing, as thin_film_reflectance (weights sum to 1)
+  const FilmAtCosine at_cosine(mu, film_);
   Rgb result{};
   for (std::size_t i = 0; i < weights_.size(); ++i) {
-    const double f = thin_film_reflectance(
-        mu, static_cast<double>(kCieFirstNm) + static_cast<double>(i), film_, ior_[i]);
+    const Complex eta = ior_[i].eta();
+    const double filmed = at_cosine.reflectance(at_cosine.metal_amplitudes(eta * eta),
+                                                at_cosine.phase(wavelength_at(i)));
+    const double f = covered(film_, filmed, mu, ior_[i]);
     for (std::size_t c = 0; c < 3; ++c)
       result[c] += weights_[i][c] * f;
   }
+  return result;
+}
+
+ThinFilmChannelCurve::ThinFilmChannelCurve(const std::array<ComplexIor, 3>& ior,
+                                           const ThinFilm& film, ColorSpace space)
+    : weights_(spectral_weights(space)), ior_(ior), film_(film) {}
+
+Rgb ThinFilmChannelCurve::at(double mu) const {
+  if (!(mu > 0.0)) return {1.0, 1.0, 1.0};  // grazing, as thin_film_reflectance
+  // One index a channel: its amplitudes, and its bare reflectance, hold for every wavelength, and
+  // a wavelength's phase holds for every channel.
+  const FilmAtCosine at_cosine(mu, film_);
+  std::array<Amplitudes, 3> r12{};
+  for (std::size_t c = 0; c < 3; ++c) {
+    const Complex eta = ior_[c].eta();
+    r12[c] = at_cosine.metal_amplitudes(eta * eta);
+  }
+  Rgb filmed{};
+  for (std::size_t i = 0; i < weights_.size(); ++i) {
+    const Complex phase = at_cosine.phase(wavelength_at(i));
+    for (std::size_t c = 0; c < 3; ++c)
+      filmed[c] += weights_[i][c] * at_cosine.reflectance(r12[c], phase);
+  }
+  // The weights of a channel sum to 1, so the bare share is the channel's bare reflectance.
+  Rgb result{};
+  for (std::size_t c = 0; c < 3; ++c)
+    result[c] = covered(film_, filmed[c], mu, ior_[c]);
   return result;
 }
 

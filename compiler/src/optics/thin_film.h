@@ -10,6 +10,7 @@
 #include "optics/reflectance_curve.h"
 #include "optics/spectrum.h"
 
+#include <array>
 #include <vector>
 
 namespace matc {
@@ -17,6 +18,7 @@ namespace matc {
 struct ThinFilm {
   double ior = 1.5;           // the film's real index, >= 1
   double thickness_nm = 0.0;  // 0: no film (the bare metal exactly)
+  double weight = 1.0;        // coverage: the curves below mix the bare metal's F by 1 - weight
 };
 
 // Unpolarised reflectance at cosine mu in air (clamped to [0, 1]) and wavelength `wavelength_nm`:
@@ -25,6 +27,10 @@ struct ThinFilm {
 // wave decays into the metal). A film of thickness 0, or of index 1, gives fresnel_exact(mu, eta).
 double thin_film_reflectance(double mu, double wavelength_nm, const ThinFilm& film,
                              ComplexIor metal);
+
+// The same with the film's coverage: weight x the film's reflectance + (1 - weight) x the bare
+// metal's (fresnel_exact).
+double covered_reflectance(double mu, double wavelength_nm, const ThinFilm& film, ComplexIor metal);
 
 // The film over a spectral metal, per wavelength, reduced to RGB as SpectralCurve reduces the bare
 // metal (CIE 1931 2-degree observer under D65 into the working space).
@@ -36,6 +42,24 @@ class ThinFilmCurve final : public ReflectanceCurve {
  private:
   const std::vector<Rgb>& weights_;
   std::vector<ComplexIor> ior_;  // the metal on the integration grid
+  ThinFilm film_;
+};
+
+// The film over a metal known by one complex index per channel (an RGB material: Gulbrandsen's
+// r and g, n and k, F82-tint's stand-in conductor), in `space`: each channel's Airy sum at every
+// wavelength of the integration grid with that channel's index, weighted as ThinFilmCurve weights
+// that channel. Summing over the band, rather than taking one wavelength a channel, averages the
+// film's fringes as the spectral reduction does (docs/accuracy.md, "A film over an RGB metal").
+// A film of 0 nm gives fresnel_exact per channel (the weights of a channel sum to 1).
+class ThinFilmChannelCurve final : public ReflectanceCurve {
+ public:
+  ThinFilmChannelCurve(const std::array<ComplexIor, 3>& ior, const ThinFilm& film,
+                       ColorSpace space);
+  Rgb at(double mu) const override;
+
+ private:
+  const std::vector<Rgb>& weights_;
+  std::array<ComplexIor, 3> ior_;
   ThinFilm film_;
 };
 

@@ -108,7 +108,7 @@ TEST(MaterialParse, UnknownFieldWarnsWithSuggestionAndStillCompiles) {
   EXPECT_EQ(all_diagnostics(result),
             "materials/m.json:2:2: warning: roughnes: unknown field, ignored (did you mean "
             "'roughness'?); known fields here: $schema, name, description, artistic, ior, "
-            "spectral, f82_tint, roughness, color_space, coat\n");
+            "spectral, f82_tint, roughness, color_space, coat, film\n");
 }
 
 TEST(MaterialParse, EveryErrorInAFileIsReportedInOrder) {
@@ -261,6 +261,28 @@ TEST(MaterialNames, FollowTheDocumentedRule) {
   EXPECT_TRUE(material_name_problem("gold__x"));
   EXPECT_TRUE(material_name_problem("g\xc3\xb6ld"));
   EXPECT_TRUE(material_name_problem("../etc"));
+}
+
+TEST(MaterialParse, FilmTakesOpenPbrDefaultsButWeightOneAndNeedsAThickness) {
+  const auto result =
+      parse("{\"name\": \"m\", \"spectral\": {\"preset\": \"Ti\"}, \"film\": {\"thickness\": 40}}");
+  ASSERT_TRUE(result.material);
+  ASSERT_TRUE(result.material->film);
+  EXPECT_EQ(result.material->film->weight, 1.0);
+  EXPECT_EQ(result.material->film->ior, 1.4);
+  EXPECT_EQ(result.material->film->thickness_nm, 40.0);
+  EXPECT_TRUE(result.diagnostics.items().empty());
+  const auto given = parse(
+      "{\"name\": \"m\", \"ior\": {\"n\": 0.2, \"k\": 3.5}, \"film\": {\"weight\": 0.5, "
+      "\"ior\": 2.3, \"thickness\": 300}}");
+  ASSERT_TRUE(given.material);
+  EXPECT_EQ(given.material->film->weight, 0.5);
+  EXPECT_EQ(given.material->film->ior, 2.3);
+  EXPECT_EQ(given.material->film->thickness_nm, 300.0);
+  const auto missing =
+      parse("{\"name\": \"m\", \"ior\": {\"n\": 0.2, \"k\": 3.5}, \"film\": {\"ior\": 2.3}}");
+  EXPECT_FALSE(missing.material);
+  EXPECT_NE(all_diagnostics(missing).find("film.thickness: is missing"), std::string::npos);
 }
 
 TEST(MaterialParse, CoatTakesOpenPbrDefaultsButWeightOne) {

@@ -134,6 +134,48 @@ TEST(MaterialXImport, NotCarriedInputsAreNamedOnlyAwayFromTheirNeutralValue) {
       << text;
 }
 
+// Thin films: Standard Surface's thickness in nanometres (a film when above 0), OpenPBR's weight
+// and thickness in micrometres (0.5 by default), each model's index default; none without a
+// weight; none under a coat (a warning).
+TEST(MaterialXImport, ThinFilmsBecomeTheFilmBlockInNanometres) {
+  const auto imported = import_materialx(
+      document(
+          surface("standard_surface",
+                  input("metalness", "float", "1") + input("thin_film_thickness", "float", "350"),
+                  "Standard") +
+          surface("open_pbr_surface",
+                  input("base_metalness", "float", "1") +
+                      input("thin_film_weight", "float", "0.5") +
+                      input("thin_film_ior", "float", "2.3"),
+                  "OpenPbr") +
+          surface(
+              "open_pbr_surface",
+              input("base_metalness", "float", "1") + input("thin_film_thickness", "float", "0.2"),
+              "NoWeight") +
+          surface("open_pbr_surface",
+                  input("base_metalness", "float", "1") + input("thin_film_weight", "float", "1") +
+                      input("coat_weight", "float", "1"),
+                  "Coated")),
+      "f.mtlx");
+  ASSERT_EQ(imported.materials.size(), 4u) << all_diagnostics(imported);
+  const auto film = [&](std::size_t i) { return imported.materials[i].material.film; };
+  ASSERT_TRUE(film(0));
+  EXPECT_EQ(film(0)->weight, 1.0);
+  EXPECT_EQ(film(0)->ior, 1.5);
+  EXPECT_EQ(film(0)->thickness_nm, 350.0);
+  ASSERT_TRUE(film(1));
+  EXPECT_EQ(film(1)->weight, 0.5);
+  EXPECT_EQ(film(1)->ior, 2.3);
+  EXPECT_EQ(film(1)->thickness_nm, 500.0);
+  EXPECT_FALSE(film(2));
+  EXPECT_FALSE(film(3));
+  EXPECT_TRUE(imported.materials[3].material.coat);
+  EXPECT_NE(all_diagnostics(imported).find("Coated: has a thin film and a coat"), std::string::npos)
+      << all_diagnostics(imported);
+  EXPECT_EQ(all_diagnostics(imported).find("not carried"), std::string::npos)
+      << all_diagnostics(imported);
+}
+
 TEST(MaterialXImport, AbsentInputsTakeTheSpecificationDefaults) {
   const auto standard = import_materialx(
       document(surface("standard_surface", input("metalness", "float", "1"))), "s.mtlx");

@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "optics/presets.h"
+#include "optics/reflectance_curve.h"
 #include "optics/spectral.h"
 #include "optics/thin_film.h"
 
@@ -93,6 +94,70 @@ TEST(ThinFilm, ThePhaseRepeatsEveryHalfWavelengthOfOpticalPath) {
 // On measured spectra, reduced to RGB as bare metals are: no film is the bare curve; a film of
 // 350 nm and index 2.3 colours titanium strongly (../shared/notes/thin_film.md's sanity values)
 // and leaves silver near its bare curve.
+// An RGB metal's film: each channel's band sum with its own index. No film is the conductor to
+// rounding (a channel's weights sum to 1), a coverage of one half is the mean of bare and filmed,
+// and a film changes the colour.
+TEST(ThinFilmChannelCurve, ReducesToTheConductorAndMixesByCoverage) {
+  const std::array<ComplexIor, 3> ior = {ComplexIor{2.7, 3.8}, {2.5, 3.4}, {2.2, 3.0}};
+  const matc::IorCurve bare(ior);
+  const auto space = matc::kDefaultColorSpace;
+  const matc::ThinFilmChannelCurve none(ior, {2.3, 0.0}, space);
+  const matc::ThinFilmChannelCurve full(ior, {2.3, 120.0}, space);
+  const matc::ThinFilmChannelCurve half(ior, {2.3, 120.0, 0.5}, space);
+  double furthest = 0.0;
+  for (const double mu : kCosines) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      EXPECT_NEAR(none.at(mu)[c], bare.at(mu)[c], 1e-13);
+      EXPECT_NEAR(half.at(mu)[c], 0.5 * (bare.at(mu)[c] + full.at(mu)[c]), 1e-13);
+      furthest = std::max(furthest, std::abs(full.at(mu)[c] - bare.at(mu)[c]));
+    }
+  }
+  EXPECT_GT(furthest, 0.05);
+}
+
+// At grazing every stack reflects everything, a film of index 1 (the air/film interface then
+// vanishes, 0 / 0 at mu = 0 in the Airy sum) included.
+TEST(ThinFilm, GrazingReflectsEverything) {
+  const matc::Spectrum& titanium = matc::preset_spectrum(*matc::find_metal_preset("Ti"));
+  const std::array<ComplexIor, 3> ior = {ComplexIor{2.7, 3.8}, {2.5, 3.4}, {2.2, 3.0}};
+  for (const ThinFilm film : {ThinFilm{1.0, 45.0}, ThinFilm{2.4, 45.0, 0.5}}) {
+    EXPECT_EQ(matc::thin_film_reflectance(0.0, 550.0, film, ior[0]), 1.0);
+    EXPECT_EQ(matc::ThinFilmCurve(titanium, film).at(0.0), (matc::Rgb{1.0, 1.0, 1.0}));
+    EXPECT_EQ(matc::ThinFilmChannelCurve(ior, film, matc::kDefaultColorSpace).at(0.0),
+              (matc::Rgb{1.0, 1.0, 1.0}));
+    for (const double mu : {1e-9, 1e-4})
+      for (const double f : matc::ThinFilmCurve(titanium, film).at(mu))
+        EXPECT_TRUE(std::isfinite(f)) << mu;
+  }
+}
+
+// The curves evaluate the film per cosine once and per wavelength only what depends on it; they
+// must be the reference formula's sum, weighted as spectral curves are reduced.
+TEST(ThinFilmCurve, IsTheWeightedSumOfTheReference) {
+  const matc::Spectrum& gold = matc::preset_spectrum(*matc::find_metal_preset("Au"));
+  const std::array<ComplexIor, 3> ior = {ComplexIor{0.2, 3.5}, {0.5, 2.4}, {1.3, 1.8}};
+  const auto& weights = matc::spectral_weights(matc::kDefaultColorSpace);
+  for (const ThinFilm film : {ThinFilm{1.33, 90.0}, ThinFilm{2.4, 700.0, 0.3}}) {
+    const matc::ThinFilmCurve spectral(gold, film);
+    const matc::ThinFilmChannelCurve channels(ior, film, matc::kDefaultColorSpace);
+    for (const double mu : kCosines) {
+      matc::Rgb spectral_sum{}, channel_sum{};
+      for (std::size_t i = 0; i < weights.size(); ++i) {
+        const double nm = matc::kCieFirstNm + static_cast<double>(i);
+        const double f = matc::covered_reflectance(mu, nm, film, gold.at(nm));
+        for (std::size_t c = 0; c < 3; ++c) {
+          spectral_sum[c] += weights[i][c] * f;
+          channel_sum[c] += weights[i][c] * matc::covered_reflectance(mu, nm, film, ior[c]);
+        }
+      }
+      for (std::size_t c = 0; c < 3; ++c) {
+        EXPECT_NEAR(spectral.at(mu)[c], spectral_sum[c], 1e-13) << mu;
+        EXPECT_NEAR(channels.at(mu)[c], channel_sum[c], 1e-13) << mu;
+      }
+    }
+  }
+}
+
 TEST(ThinFilmCurve, OnMeasuredMetals) {
   const auto* titanium = matc::find_metal_preset("Ti");
   const auto* silver = matc::find_metal_preset("Ag");

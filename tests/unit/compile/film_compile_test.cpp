@@ -1,0 +1,55 @@
+// Materials with a film compiled (compile/compile.h, docs/material-format.md "film"): the curve the
+// compile fits is the film's, a film of 0 nm or of no coverage is the bare metal bit for bit, and
+// the fit's accuracy is reported against the film's curve.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "compile/compile.h"
+#include "matc/runtime/shipped_bases.h"
+#include "optics/presets.h"
+#include "optics/thin_film.h"
+
+namespace matc {
+namespace {
+
+Material titanium(std::optional<FilmInput> film) {
+  const MetalPreset& preset = *find_metal_preset("Ti");
+  Material material;
+  material.name = "titanium";
+  material.model = SpectralInput{std::string(preset.symbol), "", "", "", preset_spectrum(preset)};
+  material.film = film;
+  return material;
+}
+
+TEST(FilmCompile, NoThicknessOrNoCoverageIsTheBareMetalBitForBit) {
+  const auto& basis = runtime::shipped_basis();
+  const CompiledMaterial bare = compile_material(titanium(std::nullopt), basis);
+  for (const FilmInput film : {FilmInput{1.0, 2.3, 0.0}, FilmInput{0.0, 2.3, 300.0}}) {
+    const CompiledMaterial same = compile_material(titanium(film), basis);
+    EXPECT_EQ(same.coefficients, bare.coefficients);
+    EXPECT_EQ(same.f0, bare.f0);
+  }
+}
+
+TEST(FilmCompile, FitsTheFilmsCurveAndReportsHowClosely) {
+  const auto& basis = runtime::shipped_basis();
+  const FilmInput film{1.0, 2.3, 40.0};
+  const CompiledMaterial compiled = compile_material(titanium(film), basis);
+  const ThinFilmCurve exact(preset_spectrum(*find_metal_preset("Ti")), {2.3, 40.0});
+  const Rgb f0 = exact.at(1.0);
+  for (std::size_t c = 0; c < 3; ++c)
+    EXPECT_DOUBLE_EQ(compiled.f0[c], f0[c]);
+  // A 40 nm film of titania turns titanium dark gold: far from its bare grey F0 of about 0.58.
+  EXPECT_LT(compiled.f0[1], 0.2);
+  // The fit reported is the film curve's (0.0197 worst; docs/accuracy.md "Thin films").
+  const double worst = *std::max_element(compiled.accuracy.decomposition.max_abs.begin(),
+                                         compiled.accuracy.decomposition.max_abs.end());
+  EXPECT_GT(worst, 0.01);
+  EXPECT_LT(worst, 0.025);
+  // A film is not a conductor: no per-channel index describes the curve.
+  EXPECT_FALSE(compiled.ior);
+}
+
+}  // namespace
+}  // namespace matc
