@@ -81,6 +81,9 @@ TEST(FresnelConductor, AgreesWithTheComplexFormOnGulbrandsenConductors) {
 
 // The bake's solve is the compile's, within what the issue allows (1e-4; measured ~1e-6), on
 // every fifth 8-bit pair (every 25th under sanitizers: the same code, 25 times fewer solves).
+// f82's b_2 = mu m^6 and b_3 = mu m^11 are nearly parallel near grazing (both about mu), so
+// where the near-minimax iteration stops moves with the compiler's rounding: 1.9e-6 with GCC,
+// 1.3e-5 with clang (the sanitized build); the curves stay well inside the issue's 1e-4.
 TEST(ConductorSolver, MatchesTheCompileSolveOnAGridOfEightBitPairs) {
   const int step = test::kSanitizedBuild ? 25 : 5;
   for (const BasisKind basis : runtime::kShippedBases) {
@@ -98,7 +101,7 @@ TEST(ConductorSolver, MatchesTheCompileSolveOnAGridOfEightBitPairs) {
                                            curve_value(compiled, mu_at(m), basis)));
       }
     }
-    EXPECT_LT(worst, 1e-5) << runtime::basis_name(basis);
+    EXPECT_LT(worst, basis == BasisKind::f82 ? 5e-5 : 1e-5) << runtime::basis_name(basis);
   }
   const ChannelSolution white = ConductorSolver(runtime::kDefaultBasis).solve(1.0, 0.3);
   EXPECT_EQ(white.coefficients, (runtime::ChannelCoefficients{1.0, 0.0, 0.0, 0.0}));
