@@ -18,6 +18,7 @@
 #include "fit/accuracy.h"
 #include "fit/coefficient_table.h"
 #include "fit/coefficients.h"
+#include "gulbrandsen_look.h"
 #include "lut/coefficient_table_files.h"
 #include "lut/preintegrate.h"
 #include "matc/runtime/coefficient_table.h"
@@ -354,33 +355,6 @@ void print_designs() {
     fmt::print("{}", row.get());
 }
 
-// The (r, g) an artist would pick for a measured channel: r = its F0, g the edge tint whose
-// Gulbrandsen curve is closest to it (largest difference, over 201 cosines, searched to 1e-3).
-std::array<ArtisticParameters, 3> fitted_artistic(const matc::ReflectanceCurve& curve) {
-  std::array<ArtisticParameters, 3> out{};
-  const matc::Rgb f0 = curve.at(1.0);
-  std::vector<matc::Rgb> exact(201);
-  for (std::size_t j = 0; j < exact.size(); ++j)
-    exact[j] = curve.at(static_cast<double>(j) / 200.0);
-  for (std::size_t c = 0; c < 3; ++c) {
-    const auto distance = [&](double g) {
-      const matc::ComplexIor ior = matc::gulbrandsen_to_ior({f0[c], g});
-      double worst = 0.0;
-      for (std::size_t j = 0; j < exact.size(); ++j)
-        worst = std::max(worst, std::abs(matc::fresnel_exact(static_cast<double>(j) / 200.0, ior) -
-                                         exact[j][c]));
-      return worst;
-    };
-    double best_g = 0.0, best = distance(0.0);
-    for (int i = 1; i <= 1000; ++i) {
-      const double d = distance(i / 1000.0);
-      if (d < best) best = d, best_g = i / 1000.0;
-    }
-    out[c] = {f0[c], best_g};
-  }
-  return out;
-}
-
 struct SetScore {
   double compile_worst = 0.0, compile_mean = 0.0;
   double table_worst = 0.0, table_mean = 0.0;
@@ -400,7 +374,7 @@ std::string set_row(const TestSet& set) {
         matc::measure_accuracy(*curve.cached, compiled, shader_basis);
     const bool measured = !curve.artistic;
     const std::array<ArtisticParameters, 3> artistic =
-        measured ? fitted_artistic(*curve.cached) : *curve.artistic;
+        measured ? matc::bench::gulbrandsen_look(*curve.cached) : *curve.artistic;
     matc::runtime::Coefficients from_table{};
     for (std::size_t c = 0; c < 3; ++c) {
       from_table[c] = matc::runtime::channel_coefficients_from_table(

@@ -2,9 +2,8 @@
 // glTF's F0): which complex index and which wavelengths should a channel's film curve use, and what
 // does that cost against the spectral truth (issue #67, docs/accuracy.md "A film over an RGB
 // metal")? For titanium, gold, copper, iron and chromium, each channel's (n, k) is
-//   - Gulbrandsen's conductor of the bare curve's F0 with the edge tint that follows the bare curve
-//     best (what an artist's r and g would be: `artistic`, F82-tint and glTF's F0 reach an index
-//     this way), or
+//   - Gulbrandsen's conductor of the bare curve's look (gulbrandsen_look.h: what an artist's r and
+//     g would be; `artistic`, F82-tint and glTF's F0 reach an index this way), or
 //   - the measured index at the channel's centroid wavelength (sum_l l w_c(l) / sum_l w_c(l)), what
 //     an `ior` material's n and k per channel would be,
 // and the film over it is the Airy sum either at the centroid alone (one wavelength a channel) or
@@ -22,6 +21,7 @@
 
 #include <fmt/core.h>
 
+#include "gulbrandsen_look.h"
 #include "optics/fresnel.h"
 #include "optics/gulbrandsen.h"
 #include "optics/presets.h"
@@ -38,26 +38,12 @@ double checked_cosine(int j) {
   return 0.05 + 0.01 * j;  // 96 cosines, 0.05 to 1
 }
 
-// Each channel's Gulbrandsen conductor: F0 of the bare curve, and the edge tint (searched to
-// 1e-3) whose exact curve is closest to the channel's over 101 cosines.
+// Each channel's Gulbrandsen conductor: the look of the bare curve (its reflectivity held below 1,
+// where Gulbrandsen's mapping has a conductor).
 std::array<matc::ComplexIor, 3> channel_indices(const matc::ReflectanceCurve& bare) {
-  std::array<matc::ComplexIor, 3> out{};
-  const matc::Rgb f0 = bare.at(1.0);
-  std::array<matc::Rgb, 101> exact{};
-  for (std::size_t j = 0; j < exact.size(); ++j)
-    exact[j] = bare.at(static_cast<double>(j) / 100.0);
-  for (std::size_t c = 0; c < 3; ++c) {
-    double best = 1e9;
-    for (int i = 0; i <= 1000; ++i) {
-      const matc::ComplexIor ior = matc::gulbrandsen_to_ior({std::min(f0[c], 0.999), i / 1000.0});
-      double worst = 0.0;
-      for (std::size_t j = 0; j < exact.size(); ++j)
-        worst = std::max(worst, std::abs(matc::fresnel_exact(static_cast<double>(j) / 100.0, ior) -
-                                         exact[j][c]));
-      if (worst < best) best = worst, out[c] = ior;
-    }
-  }
-  return out;
+  const auto look = matc::bench::gulbrandsen_look(bare, 0.999);
+  return {matc::gulbrandsen_to_ior(look[0]), matc::gulbrandsen_to_ior(look[1]),
+          matc::gulbrandsen_to_ior(look[2])};
 }
 
 struct Errors {
