@@ -260,7 +260,7 @@ void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics
   const double f82 = worst(accuracy.f82_tint);
   std::string advice;
   const bool f82_material = std::holds_alternative<F82TintInput>(compiled.material.model);
-  if (compiled.material.film) {
+  if (has_visible_film(compiled.material)) {
     advice =
         "a film's interference makes F oscillate with angle, which the 4-term basis holds for "
         "films up to about 50 nm (docs/accuracy.md, \"Thin films over metals\"): a thinner film "
@@ -279,13 +279,13 @@ void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics
   } else {
     advice = "check the input values; curves this far from measured metals fit poorly";
   }
-  if (!f82_material && !compiled.material.film && (f82 < ours || schlick < ours)) {
+  if (!f82_material && !has_visible_film(compiled.material) && (f82 < ours || schlick < ours)) {
     advice += fmt::format("; for this curve {} is closer", f82 <= schlick ? "F82-tint" : "Schlick");
   }
   diagnostics.warning(
       compiled.material.name_location,
-      compiled.material.film ? std::string("film")
-                             : std::string(model_key(compiled.material.model)),
+      has_visible_film(compiled.material) ? std::string("film")
+                                          : std::string(model_key(compiled.material.model)),
       fmt::format("poor fit{}: max |F - exact| = {:.3f} (Schlick {:.3f}, F82-tint {:.3f}; the "
                   "measured metals stay under 0.02)",
                   compiled.coat ? " of the coated surface" : "", ours, schlick, f82),
