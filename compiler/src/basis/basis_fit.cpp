@@ -194,6 +194,10 @@ std::string extended_training() {
       grid.n_steps, grid.k_steps, grid.n_min, grid.n_max, grid.k_min, grid.k_max);
 }
 
+std::string closed_form_training() {
+  return "// b_1..b_3: the closed form of runtime/powers_basis.h (nothing fitted).\n";
+}
+
 // How each shipped basis (runtime/shipped_bases.h) is made: its fit and what its table's header
 // says about it.
 struct ShippedBasisRecipe {
@@ -204,18 +208,11 @@ struct ShippedBasisRecipe {
 
 constexpr std::array<ShippedBasisRecipe, runtime::kShippedBases.size()> kRecipes = {{
     {runtime::BasisKind::powers,
-     [] { return closed_form_fitted_basis(runtime::BasisKind::powers); },
-     [] {
-       return std::string(
-           "// b_1..b_3: the closed form of runtime/powers_basis.h (nothing fitted).\n");
-     }},
+     [] { return closed_form_fitted_basis(runtime::BasisKind::powers); }, closed_form_training},
     {runtime::BasisKind::extended, fit_extended_basis, extended_training},
     {runtime::BasisKind::paper, [] { return fit_paper_basis(); }, paper_training},
     {runtime::BasisKind::f82, [] { return closed_form_fitted_basis(runtime::BasisKind::f82); },
-     [] {
-       return std::string(
-           "// b_1..b_3: the closed form of runtime/powers_basis.h (nothing fitted).\n");
-     }},
+     closed_form_training},
 }};
 
 const ShippedBasisRecipe& recipe(runtime::BasisKind kind) {

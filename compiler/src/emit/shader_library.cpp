@@ -69,8 +69,8 @@ std::string horner_steps(ShaderLanguage language, const runtime::BasisPolynomial
   return out;
 }
 
-// The closed forms' steps to b1 = m^a and b2 = x m^b (runtime/powers_basis.h, the same steps):
-// {variable, expression} lines, and the template's count of multiplies.
+// A closed form's shader steps: matc_basis()'s {variable, expression} lines to b1 = m^a and
+// b2 = x m^b (the steps of runtime/powers_basis.h) with their count of multiplies, and how
 // matc_fresnel_sum() orders the sum for the fewest operations: powers as
 // c_0 + c_2 b_2 + b_1 (c_1 + c_3 b_2); f82, whose b_2 = mu m b_1, as
 // c_0 + b_1 (c_1 + mu m (c_2 + c_3 b_1)), which needs b_1 and mu m alone.
