@@ -187,32 +187,26 @@ TEST(ShippedBases, NamesRoundTripAndTheDefaultIsTheClosedForm) {
   EXPECT_FALSE(runtime::basis_from_name("schlick"));
 }
 
-// The closed form is what its table samples, and what the shaders compute from their literals.
-TEST(PowersBasis, TableSamplesTheClosedForm) {
-  const BasisView basis = runtime::powers_basis();
-  for (std::size_t j = 0; j < basis.samples(); j += 37) {
-    const double mu = basis.mu_at(j);
-    const double m = 1.0 - mu;
-    EXPECT_NEAR(basis.tables[0][j], std::pow(m, 6), 1e-15);
-    EXPECT_NEAR(basis.tables[1][j], mu * std::pow(m, 3), 1e-15);
-    EXPECT_NEAR(basis.tables[2][j], mu * std::pow(m, 9), 1e-15);
-    EXPECT_EQ(runtime::evaluate_shader_basis(runtime::shipped_shader_basis(), mu),
-              basis.at_index(j));
-  }
-}
-
-TEST(F82Basis, TableSamplesTheClosedForm) {
-  const BasisView basis = runtime::f82_basis();
-  EXPECT_EQ(basis.kind, runtime::BasisKind::f82);
-  for (std::size_t j = 0; j < basis.samples(); j += 37) {
-    const double mu = basis.mu_at(j);
-    const double m = 1.0 - mu;
-    EXPECT_NEAR(basis.tables[0][j], std::pow(m, 5), 1e-15);
-    EXPECT_NEAR(basis.tables[1][j], mu * std::pow(m, 6), 1e-15);
-    EXPECT_NEAR(basis.tables[2][j], mu * std::pow(m, 11), 1e-15);
-    EXPECT_EQ(
-        runtime::evaluate_shader_basis(runtime::shipped_shader_basis(runtime::BasisKind::f82), mu),
-        basis.at_index(j));
+// Each closed form is what its table samples, and what the shaders compute from their literals:
+// b_1 = m^a, b_2 = mu m^b, b_3 = mu m^(a+b), the exponents written out here.
+TEST(ClosedFormBases, TablesSampleTheClosedForms) {
+  struct Expected {
+    runtime::BasisKind kind;
+    int edge, lobe, product;
+  };
+  for (const Expected& expected : {Expected{runtime::BasisKind::powers, 6, 3, 9},
+                                   Expected{runtime::BasisKind::f82, 5, 6, 11}}) {
+    const BasisView basis = runtime::shipped_basis(expected.kind);
+    EXPECT_EQ(basis.kind, expected.kind);
+    for (std::size_t j = 0; j < basis.samples(); j += 37) {
+      const double mu = basis.mu_at(j);
+      const double m = 1.0 - mu;
+      EXPECT_NEAR(basis.tables[0][j], std::pow(m, expected.edge), 1e-15);
+      EXPECT_NEAR(basis.tables[1][j], mu * std::pow(m, expected.lobe), 1e-15);
+      EXPECT_NEAR(basis.tables[2][j], mu * std::pow(m, expected.product), 1e-15);
+      EXPECT_EQ(runtime::evaluate_shader_basis(runtime::shipped_shader_basis(expected.kind), mu),
+                basis.at_index(j));
+    }
   }
 }
 

@@ -8,14 +8,13 @@
 #include "matc/runtime/coat.h"
 #include "matc/runtime/shipped_bases.h"
 #include "optics/presets.h"
+#include "preset_material.h"
 
 namespace matc {
 namespace {
 
 Material coated_preset(const MetalPreset& preset, const CoatInput& coat) {
-  Material material;
-  material.name = "coated";
-  material.model = SpectralInput{std::string(preset.symbol), "", "", "", preset_spectrum(preset)};
+  Material material = test::preset_material(preset, "coated");
   material.coat = coat;
   return material;
 }

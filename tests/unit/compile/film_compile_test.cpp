@@ -9,15 +9,13 @@
 #include "matc/runtime/shipped_bases.h"
 #include "optics/presets.h"
 #include "optics/thin_film.h"
+#include "preset_material.h"
 
 namespace matc {
 namespace {
 
 Material titanium(std::optional<FilmInput> film) {
-  const MetalPreset& preset = *find_metal_preset("Ti");
-  Material material;
-  material.name = "titanium";
-  material.model = SpectralInput{std::string(preset.symbol), "", "", "", preset_spectrum(preset)};
+  Material material = test::preset_material(*find_metal_preset("Ti"), "titanium");
   material.film = film;
   return material;
 }
