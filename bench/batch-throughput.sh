@@ -40,10 +40,12 @@ measure() {  # label output_directory command...
 
 generate_materials "$work/materials" "$count"
 generate_materials "$work/small" $((count / 10))
+MIXED=1 generate_materials "$work/mixed" "$count"
 "$matc" -q -o "$work/warm" "$work/small/m000000.json"  # page in the binary once
 
 j1=$(measure j1 "$work/out1" "$matc" -q -j 1 -o "$work/out1" "$work"/materials/*.json)
 j2=$(measure j2 "$work/out2" "$matc" -q -j 2 -o "$work/out2" "$work"/materials/*.json)
+auto=$(measure auto "$work/out5" "$matc" -q -j 2 --basis auto -o "$work/out5" "$work"/mixed/*.json)
 small=$(measure small "$work/out3" "$matc" -q -j 2 -o "$work/out3" "$work"/small/*.json)
 single=$(measure single "$work/out4" "$matc" -q -j 1 -o "$work/out4" "$work/small/m000001.json")
 
@@ -84,6 +86,7 @@ disk_only=$(measure disk "$work/disk" bash -c disk)
 read -r _ j1_s j1_mb j1_cpu j1_user <<<"$j1"
 read -r _ j2_s j2_mb j2_cpu j2_user <<<"$j2"
 read -r _ small_s small_mb small_cpu small_user <<<"$small"
+read -r _ auto_s auto_mb auto_cpu auto_user <<<"$auto"
 read -r _ single_s single_mb single_cpu single_user <<<"$single"
 read -r _ cli_s _ <<<"$baseline"
 read -r _ disk_s _ <<<"$disk_only"
@@ -95,6 +98,7 @@ echo "| run | time (s) | CPU, user + system (s) | of it user (s) | materials/s |
 echo "|---|---:|---:|---:|---:|---:|"
 echo "| \`matc -j 1\` | $j1_s | $j1_cpu | $j1_user | $(rate "$count" "$j1_s") | $j1_mb |"
 echo "| \`matc -j 2\` | $j2_s | $j2_cpu | $j2_user | $(rate "$count" "$j2_s") | $j2_mb |"
+echo "| \`matc -j 2 --basis auto\`, half of them F82-tint looks (a basis per material, the table's two layers) | $auto_s | $auto_cpu | $auto_user | $(rate "$count" "$auto_s") | $auto_mb |"
 echo "| \`matc -j 2\`, $((count / 10)) materials | $small_s | $small_cpu | $small_user | $(rate $((count / 10)) "$small_s") | $small_mb |"
 echo "| \`matc\`, one material (process start, table bake, compile) | $single_s | $single_cpu | $single_user | $(rate 1 "$single_s") | $single_mb |"
 echo "| writing the -j 2 run's $files files alone (perl: write a temporary, rename), no compile | $disk_s | - | - | - | - |"

@@ -49,10 +49,12 @@ set(MATC_CORE_SOURCES
   src/base/json_format.cpp
   src/lut/microfacet_samples.cpp
   src/lut/preintegrate.cpp
+  src/lut/lut_atlas.cpp
   src/lut/energy.cpp
   src/formats/table_format.cpp
   src/formats/glb_container.cpp
   src/compile/compile.cpp
+  src/compile/basis_choice.cpp
   src/compile/f0_table.cpp
   src/emit/template.cpp
   src/emit/shader_literals.cpp

@@ -2,8 +2,9 @@
 // material"): every family of curves a build meets (measured metals, F82-tint looks, Schlick's
 // curve as glTF's F0-only metals import, Gulbrandsen's (r, g), complex indices) fitted with each
 // shipped basis; per family the worst and the mean of per-curve max error with each basis, with
-// the best shipped basis chosen per curve, and with the rule: F82-tint and Schlick curves to
-// `f82`, every exact curve (measured, (r, g), n and k) to `powers`, the default today. Each cell:
+// the best shipped basis chosen per curve, and with the rule `matc --basis auto` applies
+// (compile/basis_choice.h: F82-tint and Schlick curves to `f82`, every exact curve (measured,
+// (r, g), n and k) to `powers`), asked of a material of each family's model. Each cell:
 // worst max error / mean of per-curve max errors, each channel a curve (as docs/accuracy.md
 // counts them); "best per curve" picks one basis per material, the least worst channel, and
 // says how many materials each basis won.
@@ -18,6 +19,7 @@
 
 #include <fmt/core.h>
 
+#include "compile/basis_choice.h"
 #include "error_totals.h"
 #include "f82_tint_look.h"
 #include "fit/accuracy.h"
@@ -35,6 +37,13 @@ using matc::runtime::BasisKind;
 
 constexpr std::array<BasisKind, 4> kBases = {BasisKind::powers, BasisKind::extended,
                                              BasisKind::paper, BasisKind::f82};
+
+// The basis `matc --basis auto` gives a bare material of this model.
+BasisKind rule_for(matc::MaterialModel model) {
+  matc::Material material;
+  material.model = std::move(model);
+  return matc::per_material_basis(material);
+}
 
 // A family of curves and the basis the rule gives them.
 struct Family {
@@ -57,9 +66,11 @@ double worst_channel(const matc::ErrorStats& stats) {
 
 std::vector<Family> families() {
   std::vector<Family> out;
-  Family measured{"the 23 reliable measured metals (exact spectral curves)", BasisKind::powers, {}};
+  const BasisKind spectral_rule = rule_for(matc::SpectralInput{});
+  const BasisKind f82_tint_rule = rule_for(matc::F82TintInput{});
+  Family measured{"the 23 reliable measured metals (exact spectral curves)", spectral_rule, {}};
   Family measured_f82{
-      "the same metals as F82-tint looks (their own F0 and F82)", BasisKind::f82, {}};
+      "the same metals as F82-tint looks (their own F0 and F82)", f82_tint_rule, {}};
   for (const matc::MetalPreset& preset : matc::metal_presets()) {
     if (!preset.caveat.empty()) continue;
     auto exact = std::make_unique<matc::SpectralCurve>(matc::preset_spectrum(preset));
@@ -70,7 +81,7 @@ std::vector<Family> families() {
   out.push_back(std::move(measured));
   out.push_back(std::move(measured_f82));
 
-  Family grid{"F82-tint, grey grid: F0 0.02-0.98 (9), tint 0-1 (11)", BasisKind::f82, {}};
+  Family grid{"F82-tint, grey grid: F0 0.02-0.98 (9), tint 0-1 (11)", f82_tint_rule, {}};
   for (const double f0 : {0.02, 0.1, 0.2, 0.35, 0.5, 0.65, 0.8, 0.9, 0.98}) {
     for (int t = 0; t <= 10; ++t) {
       const double tint = t / 10.0;
@@ -81,7 +92,7 @@ std::vector<Family> families() {
   out.push_back(std::move(grid));
 
   Family random_f82{"F82-tint, 200 random coloured looks (F0 0.02-0.98, tint 0-1 per channel)",
-                    BasisKind::f82,
+                    f82_tint_rule,
                     {}};
   matc::bench::UnitDraws draws(6601);
   for (int i = 0; i < 200; ++i) {
@@ -95,7 +106,7 @@ std::vector<Family> families() {
   out.push_back(std::move(random_f82));
 
   Family schlick{
-      "Schlick's curve (tint 1: glTF's F0-only metals), F0 0.02-0.98 (49)", BasisKind::f82, {}};
+      "Schlick's curve (tint 1: glTF's F0-only metals), F0 0.02-0.98 (49)", f82_tint_rule, {}};
   for (int i = 0; i < 49; ++i) {
     const double f0 = 0.02 + 0.96 * i / 48.0;
     schlick.curves.push_back(
@@ -103,7 +114,7 @@ std::vector<Family> families() {
   }
   out.push_back(std::move(schlick));
 
-  Family artistic{"Gulbrandsen (r, g), 200 random (r < 0.99)", BasisKind::powers, {}};
+  Family artistic{"Gulbrandsen (r, g), 200 random (r < 0.99)", rule_for(matc::ArtisticInput{}), {}};
   for (const auto& [r, g] : matc::bench::random_artistic_inputs(200, 0.99)) {
     const matc::ComplexIor ior = matc::gulbrandsen_to_ior({r, g});
     artistic.curves.push_back(std::make_unique<matc::IorCurve>(std::array{ior, ior, ior}));
@@ -111,7 +122,7 @@ std::vector<Family> families() {
   out.push_back(std::move(artistic));
 
   Family conductors{
-      "complex indices, 200 random conductors (n 0.05-3, k 0.5-8)", BasisKind::powers, {}};
+      "complex indices, 200 random conductors (n 0.05-3, k 0.5-8)", rule_for(matc::IorInput{}), {}};
   matc::bench::UnitDraws index_draws(6602);
   for (int i = 0; i < 200; ++i) {
     const matc::ComplexIor ior{0.05 + 2.95 * index_draws(), 0.5 + 7.5 * index_draws()};

@@ -5,7 +5,8 @@
 
 namespace matc::cli {
 
-void add_lut_options(CLI::App& app, LutCliOptions& options, const std::string& prefix) {
+void add_lut_options(CLI::App& app, LutCliOptions& options, const std::string& prefix,
+                     bool per_material_basis) {
   app.add_option("--" + prefix + "size", options.size, kLutSizeHelp)
       ->capture_default_str()
       ->check(CLI::Range(api::kMinLutSize, api::kMaxLutSize));
@@ -14,7 +15,12 @@ void add_lut_options(CLI::App& app, LutCliOptions& options, const std::string& p
       ->check(CLI::Range(std::size_t{1}, api::kMaxLutSamples));
   add_name_option(app, "--" + prefix + "precision", options.precision, "lut_precision",
                   kLutPrecisionHelp);
-  add_name_option(app, "--basis", options.basis, "basis", kBasisHelp);
+  if (per_material_basis) {
+    add_name_option(app, "--basis", options.basis, "build_basis",
+                    std::string(kBasisHelp) + kPerMaterialBasisHelp, api::option_default("basis"));
+  } else {
+    add_name_option(app, "--basis", options.basis, "basis", kBasisHelp);
+  }
 }
 
 void add_coefficient_table_option(CLI::App& app, LutCliOptions& options) {

@@ -20,8 +20,10 @@ struct LutCliOptions {
   std::string coefficient_table_precision = "f16";
 };
 
-// Adds --<prefix>size, --<prefix>samples, --<prefix>precision and --basis to `app`.
-void add_lut_options(CLI::App& app, LutCliOptions& options, const std::string& prefix);
+// Adds --<prefix>size, --<prefix>samples, --<prefix>precision and --basis to `app`; a build's
+// --basis (`per_material_basis`) also takes "auto", a basis per material.
+void add_lut_options(CLI::App& app, LutCliOptions& options, const std::string& prefix,
+                     bool per_material_basis = false);
 
 // Adds --coefficient-table-precision to `app` (the commands that build shaders).
 void add_coefficient_table_option(CLI::App& app, LutCliOptions& options);

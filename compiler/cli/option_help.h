@@ -10,6 +10,11 @@ inline constexpr const char* kBasisHelp =
     "conductors, curves weighted by 1 - F0), paper (the authors' construction, "
     "coefficients matched at two angles) or f82 (the closed form m^5, mu m^6, mu m^11: exact "
     "for F82-tint and Schlick curves, for OpenPBR looks); docs/accuracy.md compares them";
+// Appended to kBasisHelp where a build takes --basis.
+inline constexpr const char* kPerMaterialBasisHelp =
+    "; or auto: each material the basis that holds its curve (f82 for bare F82-tint metals, powers "
+    "for the rest, or the material's own \"basis\"), the table a layer per basis side by side "
+    "(docs/accuracy.md, \"A basis per material\")";
 inline constexpr const char* kLutSizeHelp = "LUT width and height in texels";
 inline constexpr const char* kLutSamplesHelp = "Hammersley samples per texel";
 inline constexpr const char* kLutPrecisionHelp = "Texel precision";

@@ -81,7 +81,7 @@ Command register_validate(CLI::App& app) {
   command->add_option("--embed-lut-size", options->embed_lut_size, "Width and height of that table")
       ->capture_default_str()
       ->check(CLI::Range(api::kMinLutSize, api::kMaxEmbeddedLutSize));
-  add_lut_options(*command, options->lut, "lut-");
+  add_lut_options(*command, options->lut, "lut-", true);
   add_coefficient_table_option(*command, options->lut);
   add_device_options(*command, options->device);
   add_color_name_options(*command, options->color);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "matc/runtime/shipped_bases.h"
 
@@ -15,6 +16,13 @@ std::optional<BasisKind> basis_from_name(std::string_view name) {
   for (const BasisKind kind : kShippedBases)
     if (basis_name(kind) == name) return kind;
   return std::nullopt;
+}
+
+std::string per_material_basis_names() {
+  std::string names;
+  for (const BasisKind kind : kPerMaterialBases)
+    names.append(names.empty() ? "" : ", ").append(basis_name(kind));
+  return names;
 }
 
 BasisView shipped_basis(BasisKind kind) {

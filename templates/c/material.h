@@ -30,7 +30,7 @@ static const MatcFresnelCoefficients matc_coefficients_{{name}} = {
 #define MATC_{{name}}_LUT_SIZE {{lut_size}}
 #define MATC_{{name}}_LUT_HASH "{{lut_hash}}"
 /* The Fresnel basis both belong to (matc --basis). */
-#define MATC_{{name}}_BASIS "{{basis}}"
+#define MATC_{{name}}_BASIS "{{basis}}"{{lut_layer}}
 
 /* {{name}}.spv: a SPIR-V library module (Linkage capability) exporting matc_fresnel_{{name}} and
  * matc_fresnel_preintegrated_{{name}}, for linking with spirv-link or spvtools::Link. */

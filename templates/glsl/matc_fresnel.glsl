@@ -26,14 +26,7 @@ vec3 matc_combine(MatcFresnelCoefficients c, vec4 v) {
 }
 
 {{basis_function}}
-// Where to sample the preintegrated table, with linear filtering and clamp-to-edge addressing:
-// u = sqrt(NdotV) across, perceptual roughness down, texel centres on the ends of both axes.
-vec2 matc_lut_texcoord(float NdotV, float roughness) {
-  vec2 axes = vec2(sqrt(clamp(NdotV, 0.0, 1.0)), clamp(roughness, 0.0, 1.0));
-  // texcoord = (axes * (size - 1) + 0.5) / size, written as one multiply-add.
-  return axes * (float(MATC_LUT_SIZE - 1) / float(MATC_LUT_SIZE)) + 0.5 / float(MATC_LUT_SIZE);
-}
-
+{{lut_texcoord}}
 // The preintegrated Fresnel from the table's texel bbar at matc_lut_texcoord(NdotV, roughness):
 // sum_i c_i bbar_i, written with c_1 = 1 - c_0 (which every coefficient source sets) as
 // bbar_1 + c_0 (bbar_0 - bbar_1) + c_2 bbar_2 + c_3 bbar_3, three multiply-adds a channel.
@@ -73,5 +66,5 @@ vec3 matc_dielectric_fresnel(vec3 f0, vec3 f90, float VdotH) {
 {{coefficient_table}}
 {{area_lights}}
 {{analytic_lut}}
-{{embedded_lut}}
+{{basis_layers}}{{embedded_lut}}
 #endif  // MATC_FRESNEL_GLSL

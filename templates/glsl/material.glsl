@@ -24,4 +24,4 @@ vec3 matc_fresnel_{{name}}(float mu) {
 vec3 matc_fresnel_preintegrated_{{name}}(vec4 bbar) {
   return {{fresnel_preintegrated}}(matc_coefficients_{{name}}, bbar);
 }
-#endif  // MATC_MATERIAL_{{name}}
+{{layer_texcoord}}#endif  // MATC_MATERIAL_{{name}}

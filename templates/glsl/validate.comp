@@ -15,7 +15,7 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   vec4 query = matc_queries[i];
   vec4 bbar = textureLod(sampler2D(matc_lut, matc_lut_sampler),
-                         matc_lut_texcoord(query.y, query.z), 0.0);
+                         matc_lut_texcoord{{suffix}}(query.y, query.z), 0.0);
   vec4 embedded = vec4(0.0);
 #ifdef MATC_EMBEDDED_LUT_SIZE
   embedded = vec4(matc_fresnel_preintegrated_{{name}}(
@@ -25,5 +25,5 @@ void main() {
   matc_results[4u * i + 1u] = vec4(matc_fresnel_preintegrated_{{name}}(bbar), 1.0);
   matc_results[4u * i + 2u] = embedded;
   matc_results[4u * i + 3u] = vec4(matc_fresnel_preintegrated_{{name}}(
-                                       matc_preintegrated_basis_analytic(query.y, query.z)), 1.0);
+                                       matc_preintegrated_basis_analytic{{suffix}}(query.y, query.z)), 1.0);
 }

@@ -24,4 +24,4 @@ float3 matc_fresnel_{{name}}(float mu) {
 float3 matc_fresnel_preintegrated_{{name}}(float4 bbar) {
   return {{fresnel_preintegrated}}(matc_coefficients_{{name}}, bbar);
 }
-#endif  // MATC_MATERIAL_{{name}}
+{{layer_texcoord}}#endif  // MATC_MATERIAL_{{name}}

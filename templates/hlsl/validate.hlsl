@@ -13,7 +13,7 @@
 void main(uint3 id : SV_DispatchThreadID) {
   uint i = id.x;
   float4 query = matc_queries[i];
-  float4 bbar = matc_lut.SampleLevel(matc_lut_sampler, matc_lut_texcoord(query.y, query.z), 0.0);
+  float4 bbar = matc_lut.SampleLevel(matc_lut_sampler, matc_lut_texcoord{{suffix}}(query.y, query.z), 0.0);
   float4 embedded = 0.0;
 #ifdef MATC_EMBEDDED_LUT_SIZE
   embedded = float4(matc_fresnel_preintegrated_{{name}}(
@@ -23,5 +23,5 @@ void main(uint3 id : SV_DispatchThreadID) {
   matc_results[4 * i + 1] = float4(matc_fresnel_preintegrated_{{name}}(bbar), 1.0);
   matc_results[4 * i + 2] = embedded;
   matc_results[4 * i + 3] = float4(matc_fresnel_preintegrated_{{name}}(
-                                       matc_preintegrated_basis_analytic(query.y, query.z)), 1.0);
+                                       matc_preintegrated_basis_analytic{{suffix}}(query.y, query.z)), 1.0);
 }

@@ -5,12 +5,12 @@
 // second, clamped to [0, 1]), each a Chebyshev polynomial (total degree 12 for E, 6 for the
 // quadrature) in polar coordinates (x, y) about the mirror-grazing corner. Fitted to the
 // {{basis}} basis' 128x128 table by `matc basis analytic-lut`.
-const MATC_ANALYTIC_LUT_MIN_U: f32 = 0.01;  // the table's bake clamps NdotV at 1e-4
+const MATC_ANALYTIC_LUT_MIN_U{{constant_suffix}}: f32 = 0.01;  // the table's bake clamps NdotV at 1e-4
 
 // bbar_0..bbar_3 at (NdotV, roughness) without a fetch: use it where a texel of matc_lut would
 // be, with matc_fresnel_preintegrated and matc_energy_compensation.
-fn matc_preintegrated_basis_analytic(NdotV: f32, roughness: f32) -> vec4f {
-  let u = max(sqrt(clamp(NdotV, 0.0, 1.0)), MATC_ANALYTIC_LUT_MIN_U);
+fn matc_preintegrated_basis_analytic{{suffix}}(NdotV: f32, roughness: f32) -> vec4f {
+  let u = max(sqrt(clamp(NdotV, 0.0, 1.0)), MATC_ANALYTIC_LUT_MIN_U{{constant_suffix}});
   let r = clamp(roughness, 0.0, 1.0);
   let x = sqrt(2.0 * (u * u + r * r)) - 1.0;
   let a = u * sqrt(u);
@@ -18,5 +18,5 @@ fn matc_preintegrated_basis_analytic(NdotV: f32, roughness: f32) -> vec4f {
   let y = 2.0 * a / (a + b) - 1.0;
   // T_0..T_12 of x and y (T_k = 2 x T_(k-1) - T_(k-2)), then E, mu_a, mu_b and t.
 {{analytic_lut_fields}}
-  return albedo * mix(matc_basis(node_a), matc_basis(node_b), clamp(weight_b, 0.0, 1.0));
+  return albedo * mix(matc_basis{{suffix}}(node_a), matc_basis{{suffix}}(node_b), clamp(weight_b, 0.0, 1.0));
 }

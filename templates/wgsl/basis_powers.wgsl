@@ -1,7 +1,7 @@
 // The basis b_0..b_3 at mu = cos(theta), in closed form (matc's {{basis}} basis): with m = 1 - mu,
 // b_1 = m^{{edge_power}}, b_2 = mu m^{{lobe_power}} and b_3 = mu m^{{product_power}} = b_2 b_1 (unscaled: the tables are floating point).
 // {{multiplies}} multiplies.
-fn matc_basis(mu: f32) -> vec4f {
+fn matc_basis{{suffix}}(mu: f32) -> vec4f {
   let x = clamp(mu, 0.0, 1.0);
   let m = 1.0 - x;
 {{powers}}
@@ -11,7 +11,7 @@ fn matc_basis(mu: f32) -> vec4f {
 // F for a direct light (mu = dot(V, H)) without the clamp at 0, for curves matc proved
 // non-negative (docs/shaders.md). sum_i c_i b_i written as {{sum_comment}}: three multiply-adds a channel, the cheapest order on AMD's ISA
 // (bench/gpu_cost.cpp).
-fn matc_fresnel_sum(c: MatcFresnelCoefficients, mu: f32) -> vec3f {
+fn matc_fresnel_sum{{suffix}}(c: MatcFresnelCoefficients, mu: f32) -> vec3f {
 {{sum_basis}}
   let c0 = vec3f(c.red.x, c.green.x, c.blue.x);
   let c1 = vec3f(c.red.y, c.green.y, c.blue.y);
@@ -21,6 +21,6 @@ fn matc_fresnel_sum(c: MatcFresnelCoefficients, mu: f32) -> vec3f {
 }
 
 // F clamped at 0, where a truncated curve dips below it: what every coefficient source may use.
-fn matc_fresnel(c: MatcFresnelCoefficients, mu: f32) -> vec3f {
-  return max(matc_fresnel_sum(c, mu), vec3f(0.0));
+fn matc_fresnel{{suffix}}(c: MatcFresnelCoefficients, mu: f32) -> vec3f {
+  return max(matc_fresnel_sum{{suffix}}(c, mu), vec3f(0.0));
 }

@@ -26,14 +26,7 @@ fn matc_combine(c: MatcFresnelCoefficients, v: vec4f) -> vec3f {
 }
 
 {{basis_function}}
-// Where to sample the preintegrated table, with linear filtering and clamp-to-edge addressing:
-// u = sqrt(NdotV) across, perceptual roughness down, texel centres on the ends of both axes.
-fn matc_lut_texcoord(NdotV: f32, roughness: f32) -> vec2f {
-  let axes = vec2f(sqrt(clamp(NdotV, 0.0, 1.0)), clamp(roughness, 0.0, 1.0));
-  // texcoord = (axes * (size - 1) + 0.5) / size, written as one multiply-add.
-  return axes * (f32(MATC_LUT_SIZE - 1) / f32(MATC_LUT_SIZE)) + 0.5 / f32(MATC_LUT_SIZE);
-}
-
+{{lut_texcoord}}
 // The preintegrated Fresnel from the table's texel bbar at matc_lut_texcoord(NdotV, roughness):
 // sum_i c_i bbar_i, written with c_1 = 1 - c_0 (which every coefficient source sets) as
 // bbar_1 + c_0 (bbar_0 - bbar_1) + c_2 bbar_2 + c_3 bbar_3, three multiply-adds a channel.
@@ -73,4 +66,4 @@ fn matc_dielectric_fresnel(f0: vec3f, f90: vec3f, VdotH: f32) -> vec3f {
 {{coefficient_table}}
 {{area_lights}}
 {{analytic_lut}}
-{{embedded_lut}}
+{{basis_layers}}{{embedded_lut}}

@@ -21,3 +21,4 @@ fn matc_fresnel_{{name}}(mu: f32) -> vec3f {
 fn matc_fresnel_preintegrated_{{name}}(bbar: vec4f) -> vec3f {
   return {{fresnel_preintegrated}}(matc_coefficients_{{name}}, bbar);
 }
+{{layer_texcoord}}

@@ -103,7 +103,8 @@ void fuzz_numbers_and_words(std::string_view text) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
-  constexpr std::array<const char*, 4> kBases = {"", "paper", "f82", "no\x1b[31mbasis"};
+  // "auto": each material its own basis (f82 for the F82-tint ones, powers for the rest).
+  constexpr std::array<const char*, 4> kBases = {"", "paper", "auto", "no\x1b[31mbasis"};
   constexpr std::array<const char*, 4> kSpaces = {"", "acescg", "lin_displayp3", "\xff"};
   constexpr std::array<const char*, 2> kMappings = {"", "desaturate"};
   const unsigned pick = data[0];

@@ -72,6 +72,12 @@ const cases = [
   ["film thickness negative", `{"name": "a", ${ior}, "film": {"thickness": -1}}`, false],
   ["film index below 1", `{"name": "a", ${ior}, "film": {"ior": 0.9, "thickness": 10}}`, false],
   ["film under a coat", `{"name": "a", ${ior}, "coat": {}, "film": {"thickness": 10}}`, false],
+  ["basis pinned", `{"name": "a", "f82_tint": {"f0": 0.9, "tint": 0.5}, "basis": "powers"}`, true],
+  ["basis f82 pinned", `{"name": "a", ${ior}, "basis": "f82"}`, true],
+  ["basis fitted", `{"name": "a", ${ior}, "basis": "extended"}`, false],
+  ["basis not a name", `{"name": "a", ${ior}, "basis": 1}`, false],
+  ["basis f82 under a coat", `{"name": "a", ${ior}, "coat": {}, "basis": "f82"}`, false],
+  ["basis powers under a coat", `{"name": "a", ${ior}, "coat": {}, "basis": "powers"}`, true],
 ];
 
 for (const file of readdirSync(examplesDir).filter((f) => f.endsWith(".json")).sort()) {

@@ -51,6 +51,21 @@ def test_other_bases_and_colour_spaces_match_matc_eval():
         np.testing.assert_array_equal(compiled.exact([0.1, 0.6]), np.array(printed["F_exact"]))
 
 
+def test_a_basis_per_material_matches_matc_eval_and_the_build():
+    # --basis auto: the F82-tint example takes f82 (its curve exactly), a measured metal powers.
+    tinted = next(p for p in EXAMPLE_FILES if p.stem == "aluminium_brushed_openpbr")
+    for path, basis in ((tinted, "f82"), (EXAMPLE_FILES[0], "powers")):
+        compiled = matc.compile(path, basis="auto")
+        printed = matc_eval(path, "--mu", "0.1,0.6", "--basis", "auto", "--no-reference")
+        assert compiled.basis == printed["basis"] == basis
+        np.testing.assert_array_equal(compiled.fresnel([0.1, 0.6]), np.array(printed["F"]))
+        build = matc.Build(basis="auto")
+        assert build.compile(path).basis == basis
+        assert json.loads(build.files(compiled)[f"{compiled.name}.json"])["basis"][
+            "lut_layer"] == (1 if basis == "f82" else 0)
+    assert max(matc.compile(tinted, basis="auto").accuracy["max_error"]) < 1e-12
+
+
 def test_materialx_document_materials_compile_like_matc_eval():
     document = MATERIALX / "metals.mtlx"
     materials = matc.load(document)

@@ -93,7 +93,7 @@ def test_bad_types_raise_type_error(call):
     (lambda: matc.Build(lut_size=1), r"lut_size: 1 is out of range; an integer in \[2, 4096\]"),
     (lambda: matc.Build(lut_samples=0), "lut_samples: 0 is out of range"),
     (lambda: matc.Build(embed_lut=65), "embed_lut: 65 is out of range"),
-    (lambda: matc.Build(basis="nope"), "basis: 'nope' is not one of powers"),
+    (lambda: matc.Build(basis="nope"), "basis: 'nope' is not one of auto, powers"),
     (lambda: matc.Build(emit=["glsl", "msl"]), "emit: 'msl' is not one of"),
     (lambda: matc.Build(emit=[]), "emit: an empty list"),
     (lambda: matc.Build(lut_format="png"), "lut_format: 'png' is not one of ktx2"),

@@ -30,7 +30,9 @@ matc::BuildOptions library_options(const BuildOptions& options) {
   if (options.embed_lut != 0)
     checked_count("embed_lut", options.embed_lut, kMinLutSize, kMaxEmbeddedLutSize);
   out.embedded_lut_size = options.embed_lut;
-  out.basis = basis_of(options.compile);
+  const BasisChoice basis = basis_choice_of(options.compile);
+  out.basis = basis.forced;
+  out.per_material_basis = basis.per_material;
   out.color = color_options_of(options.compile);
   return out;
 }
@@ -46,7 +48,7 @@ BuildOptions public_options(const matc::BuildOptions& options) {
   out.lut_precision = lut_precision_name(options.lut_precision);
   out.coefficient_table_precision = lut_precision_name(options.coefficient_table_precision);
   out.embed_lut = options.embedded_lut_size;
-  out.compile = {std::string(runtime::basis_name(options.basis)),
+  out.compile = {std::string(option_name(BasisChoice{options.basis, options.per_material_basis})),
                  std::string(color_space_name(options.color.working_space)),
                  std::string(gamut_mapping_name(options.color.gamut_mapping))};
   return out;

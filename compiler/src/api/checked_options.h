@@ -11,6 +11,7 @@
 #include <fmt/ranges.h>
 
 #include "base/echoed_text.h"
+#include "compile/basis_choice.h"
 #include "compile/compile.h"
 #include "emit/build_options.h"
 #include "matc/api/compiled_material.h"
@@ -35,6 +36,15 @@ Value option_from_name(std::string_view option, std::string_view name, Value def
 
 inline runtime::BasisKind basis_of(const CompileOptions& options) {
   return option_from_name("basis", options.basis, runtime::kDefaultBasis);
+}
+
+// The build's choice (`auto` or a basis forced on every material), and the basis it gives one
+// material (compile/basis_choice.h).
+inline BasisChoice basis_choice_of(const CompileOptions& options) {
+  return option_from_name("basis", options.basis, BasisChoice{});
+}
+inline runtime::BasisKind basis_for(const matc::Material& material, const CompileOptions& options) {
+  return chosen_basis(material, basis_choice_of(options));
 }
 
 inline ColorOptions color_options_of(const CompileOptions& options) {
@@ -65,9 +75,18 @@ inline void check_same_options(const CompiledMaterial& compiled, const std::stri
   }
 }
 
+// The basis name a build of basis option `basis_option` ("auto" or a basis) gives `compiled`.
+inline std::string expected_basis(const CompiledMaterial& compiled,
+                                  const std::string& basis_option) {
+  return std::string(runtime::basis_name(
+      chosen_basis(compiled.value().material, basis_choice_of({basis_option, {}, {}}))));
+}
+
 // The same against a build's options.
 inline void check_same_options(const CompiledMaterial& compiled, const matc::BuildOptions& build) {
-  check_same_options(compiled, std::string(runtime::basis_name(build.basis)),
+  check_same_options(compiled,
+                     std::string(runtime::basis_name(chosen_basis(
+                         compiled.value().material, {build.basis, build.per_material_basis}))),
                      color_key_of(build.color));
 }
 

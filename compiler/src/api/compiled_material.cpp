@@ -316,9 +316,9 @@ CompiledMaterial public_compiled(std::shared_ptr<const matc::CompiledMaterial> c
 }
 
 CompiledMaterial compile(const Material& material, const CompileOptions& options) {
-  const runtime::BasisKind basis = basis_of(options);
-  const ColorOptions color = color_options_of(options);
   const matc::Material& value = material.value();
+  const runtime::BasisKind basis = basis_for(value, options);
+  const ColorOptions color = color_options_of(options);
   auto compiled = std::make_shared<const matc::CompiledMaterial>(
       compile_material(value, runtime::shipped_basis(basis), color));
   auto evaluation = evaluation_of(compiled, basis);

@@ -283,7 +283,8 @@ evaluation::EvaluationInputs resolved(const EvaluationOptions& options) {
   inputs.bake.size = checked_count("lut_size", options.lut_size, kMinLutSize, kMaxLutSize);
   inputs.bake.samples = checked_count("lut_samples", options.lut_samples, 1, kMaxLutSamples);
   inputs.precision = option_from_name("lut_precision", options.lut_precision, LutPrecision::f32);
-  inputs.basis = basis_of(options.compile);
+  // `auto` is resolved per material (evaluate()); the coefficient-table path is the first's.
+  inputs.basis = basis_choice_of(options.compile).forced;
   inputs.coefficient_table_precision = option_from_name(
       "coefficient_table_precision", options.coefficient_table_precision, LutPrecision::f16);
   inputs.color = color_options_of(options.compile);
@@ -297,7 +298,9 @@ evaluation::EvaluationInputs resolved(const EvaluationOptions& options) {
 }  // namespace
 
 std::string evaluate(const Material& material, const EvaluationOptions& options) {
-  return evaluation::evaluate_bare(resolved(options), material.value());
+  evaluation::EvaluationInputs inputs = resolved(options);
+  inputs.basis = basis_for(material.value(), options.compile);
+  return evaluation::evaluate_bare(inputs, material.value());
 }
 
 std::string evaluate_artistic(const Rgb& reflectivity, const Rgb& edge_tint,

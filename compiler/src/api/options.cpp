@@ -18,6 +18,7 @@ namespace {
 template <typename Visit>
 auto with_option_kind(std::string_view option, const Visit& visit) {
   if (option == "basis") return visit(runtime::kDefaultBasis);
+  if (option == "build_basis") return visit(BasisChoice{});
   if (option == "color_space") return visit(kDefaultColorSpace);
   if (option == "gamut_mapping") return visit(GamutMapping::none);
   if (option == "emit") return visit(OutputKind::glsl);
@@ -25,7 +26,8 @@ auto with_option_kind(std::string_view option, const Visit& visit) {
   if (option == "lut_precision") return visit(LutPrecision::f32);
   if (option == "ltc_objective") return visit(LtcObjective::polygons);
   throw std::invalid_argument(
-      "option: not one of basis, color_space, gamut_mapping, emit, lut_format, lut_precision, "
+      "option: not one of basis, build_basis, color_space, gamut_mapping, emit, lut_format, "
+      "lut_precision, "
       "ltc_objective");
 }
 

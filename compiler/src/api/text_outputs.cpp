@@ -8,11 +8,13 @@ namespace matc::api {
 
 TextOutputs::TextOutputs(const CompileOptions& options) {
   matc::BuildOptions build;
-  build.basis = basis_of(options);
+  const BasisChoice basis = basis_choice_of(options);
+  build.basis = basis.forced;
+  build.per_material_basis = basis.per_material;
   build.color = color_options_of(options);
   // `matc`'s default build: the default coefficient table, no embedded LUT.
   texts_ = std::make_shared<const matc::TextOutputs>(build, kDefaultCoefficientTableSize, nullptr);
-  basis_ = std::string(runtime::basis_name(build.basis));
+  basis_ = std::string(option_name(basis));
   color_key_ = color_key_of(build.color);
 }
 
@@ -22,12 +24,12 @@ const std::string& TextOutputs::library_source(std::string_view language) const 
 
 std::string TextOutputs::material_source(std::string_view language,
                                          const CompiledMaterial& compiled) const {
-  check_same_options(compiled, basis_, color_key_);
+  check_same_options(compiled, expected_basis(compiled, basis_), color_key_);
   return texts_->material_source(language_of(language), compiled.value());
 }
 
 std::string TextOutputs::material_json(const CompiledMaterial& compiled) const {
-  check_same_options(compiled, basis_, color_key_);
+  check_same_options(compiled, expected_basis(compiled, basis_), color_key_);
   return texts_->material_json(compiled.value(),
                                texts_->material_inputs_hash(compiled.value().material));
 }

@@ -204,6 +204,7 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
                                   const ColorOptions& color) {
   CompiledMaterial compiled;
   compiled.material = material;
+  compiled.basis = basis.kind;
   compiled.color = color;
   auto unmapped = make_working_space_curve(material, color.working_space);
   // The solve and the accuracy measurement share cosines: evaluate (integrate) the curve once.

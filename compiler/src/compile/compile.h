@@ -43,6 +43,9 @@ struct CompiledCoat {
 
 struct CompiledMaterial {
   Material material;
+  // The shipped basis the coefficients (and the coat's) are in: what every output of this
+  // material reads (its functions, its layer of the table, <name>.json).
+  runtime::BasisKind basis = runtime::kDefaultBasis;
   runtime::Coefficients coefficients{};
   FitAccuracy accuracy;
   Rgb f0{};   // exact reflectance at normal incidence

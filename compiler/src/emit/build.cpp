@@ -38,11 +38,33 @@ BuildOptions checked(BuildOptions options) {
                                             options.embedded_lut_size, kMinLutSize,
                                             kMaxEmbeddedLutSize));
   }
+  if (options.per_material_basis) {
+    if (options.basis != runtime::kPerMaterialBases.front()) {
+      throw std::invalid_argument(
+          fmt::format("a per-material build's first basis is {}, not {}",
+                      runtime::basis_name(runtime::kPerMaterialBases.front()),
+                      runtime::basis_name(options.basis)));
+    }
+    if (options.embedded_lut_size != 0) {
+      throw std::invalid_argument(
+          "--embed-lut holds one basis' table: give --basis NAME with it, not --basis auto");
+    }
+    if (options.lut_format == LutFormat::header) {
+      throw std::invalid_argument(
+          "--lut header holds one basis' table: give --basis NAME with it, not --basis auto");
+    }
+  }
   return options;
 }
 
+std::vector<runtime::BasisKind> table_layers(const BuildOptions& options) {
+  if (options.per_material_basis)
+    return {runtime::kPerMaterialBases.begin(), runtime::kPerMaterialBases.end()};
+  return {options.basis};
+}
+
 SharedTableOptions table_options(const BuildOptions& options) {
-  return {options.basis,
+  return {table_layers(options),
           options.lut,
           options.lut_format,
           options.lut_precision,
@@ -59,6 +81,24 @@ Build::Build(BuildOptions options)
 
 runtime::BasisView Build::basis() const {
   return runtime::shipped_basis(options_.basis);
+}
+
+BasisChoice Build::basis_choice() const {
+  return {options_.basis, options_.per_material_basis};
+}
+
+runtime::BasisView Build::basis_for(const Material& material) const {
+  return runtime::shipped_basis(chosen_basis(material, basis_choice()));
+}
+
+std::size_t Build::lut_layer(runtime::BasisKind basis) const {
+  const auto& layers = tables_.layers();
+  const auto found = std::find(layers.begin(), layers.end(), basis);
+  if (found == layers.end()) {
+    throw std::invalid_argument(
+        fmt::format("this build's table holds no layer of the {} basis", basis_name(basis)));
+  }
+  return static_cast<std::size_t>(found - layers.begin());
 }
 
 std::vector<OutputFile> Build::shared_outputs() const {
@@ -89,8 +129,8 @@ SpirvWords Build::material_library_module(const CompiledMaterial& compiled,
                                           std::string_view inputs_hash) const {
   // The template was compiled for the default table size (MATC_LUT_SIZE is in the module) and
   // no embedded table; it is empty in a bootstrap build.
-  const std::span<const std::uint32_t> template_words =
-      checked_in_material_module_template(options_.basis, compiled.fresnel_nonnegative);
+  const std::span<const std::uint32_t> template_words = checked_in_material_module_template(
+      compiled.basis, compiled.fresnel_nonnegative, options_.per_material_basis);
   // The checked-in template is an uncoated material's module; a coated one is compiled.
   if (options_.lut.size == kDefaultLutSize && !embedded_lut() && !template_words.empty() &&
       !compiled.coat)
@@ -106,8 +146,9 @@ SpirvWords Build::compile_material_library_module(const CompiledMaterial& compil
                                                   std::string_view inputs_hash) const {
   const std::string& name = compiled.material.name;
   return compile_library_module(
-      texts_.material_module_library() +
-          material_snippet_source(ShaderLanguage::glsl, compiled, inputs_hash),
+      texts_.material_module_library() + material_snippet_source(ShaderLanguage::glsl, compiled,
+                                                                 inputs_hash,
+                                                                 options_.per_material_basis),
       material_file_name(OutputKind::spirv, name),
       material_library_exports(name, compiled.coat.has_value()));
 }
@@ -120,7 +161,8 @@ MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const 
   for (const ShaderLanguage language : kShaderLanguages) {
     if (emit.contains(output_kind_of(language))) {
       out.files.push_back({material_file_name(output_kind_of(language), name),
-                           material_snippet_source(language, compiled, out.inputs_hash)});
+                           material_snippet_source(language, compiled, out.inputs_hash,
+                                                   options_.per_material_basis)});
     }
   }
   if (emit.contains(OutputKind::spirv) || emit.contains(OutputKind::header)) {
@@ -131,7 +173,10 @@ MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const 
     if (emit.contains(OutputKind::header)) {
       out.files.push_back(
           {material_file_name(OutputKind::header, name),
-           material_c_header(compiled, out.inputs_hash, tables_.lut_reference(), module)});
+           material_c_header(compiled, out.inputs_hash, tables_.lut_reference(), module,
+                             options_.per_material_basis
+                                 ? std::optional<std::size_t>(lut_layer(compiled.basis))
+                                 : std::nullopt)});
     }
   }
   if (emit.contains(OutputKind::json)) {
@@ -149,7 +194,15 @@ nlohmann::ordered_json Build::description() const {
   for (const OutputKind kind : options_.emit)
     emitted.emplace_back(layout_of(kind).name);
   description["emit"] = emitted;
-  description["basis"] = std::string(runtime::basis_name(options_.basis));
+  if (options_.per_material_basis) {
+    description["basis"] = "auto";
+    std::vector<std::string> layers;
+    for (const runtime::BasisKind basis : tables_.layers())
+      layers.emplace_back(runtime::basis_name(basis));
+    description["lut_layers"] = layers;
+  } else {
+    description["basis"] = std::string(runtime::basis_name(options_.basis));
+  }
   description["color"] = {{"working_space", color_space_name(options_.color.working_space)},
                           {"gamut_mapping", gamut_mapping_name(options_.color.gamut_mapping)}};
   tables_.describe(description);

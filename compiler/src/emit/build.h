@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compile/basis_choice.h"
 #include "compile/compile.h"
 #include "emit/build_options.h"
 #include "emit/c_header.h"
@@ -43,13 +44,24 @@ class Build {
   explicit Build(BuildOptions options);
 
   const BuildOptions& options() const { return options_; }
-  // The basis every material of this build is compiled against (options().basis).
+  // The basis every material of a one-basis build is compiled against (options().basis), the
+  // first layer's in a per-material build.
   runtime::BasisView basis() const;
+  BasisChoice basis_choice() const;
+  // The basis `material` is compiled against in this build (compile/basis_choice.h).
+  runtime::BasisView basis_for(const Material& material) const;
+  // The bases of the table's layers, in order (one unless --basis auto), and where `basis` is
+  // among them (std::invalid_argument if the table holds none of it).
+  const std::vector<runtime::BasisKind>& lut_layers() const { return tables_.layers(); }
+  std::size_t lut_layer(runtime::BasisKind basis) const;
   // The table is baked on first use (the LUT file, a header or the manifest naming its hash,
   // validation): a run that writes none of those never pays for it.
   const BakedLut& lut() const { return tables_.lut(); }
   // The table as the written file stores it (f16 rounding), what a renderer samples.
   const Lut& stored_lut() const { return tables_.stored_lut(); }
+  // `basis`' layer of it, and every layer side by side (the texture the file holds).
+  const Lut& stored_lut(runtime::BasisKind basis) const { return tables_.stored_lut(basis); }
+  const LutAtlas& stored_atlas() const { return tables_.stored_atlas(); }
   const Lut* embedded_lut() const { return tables_.embedded_lut(); }
   // The basis' coefficient table as the written file stores it (the preintegrated table's format,
   // coefficient_table_precision): what a shader samples for textured metals.

@@ -23,8 +23,11 @@ struct BuildOptions {
   // The coefficient table's (its format is lut_format's): f16 costs it nothing measurable.
   LutPrecision coefficient_table_precision = LutPrecision::f16;
   std::size_t embedded_lut_size = 0;  // --embed-lut: 0 for none, else 2..kMaxEmbeddedLutSize
-  runtime::BasisKind basis = runtime::kDefaultBasis;  // --basis
-  ColorOptions color;                                 // --color-space, --gamut-mapping
+  runtime::BasisKind basis = runtime::kDefaultBasis;  // --basis NAME: every material's
+  // --basis auto: each material its own (compile/basis_choice.h), the table a layer per basis of
+  // runtime::kPerMaterialBases side by side; `basis` is then the first layer's.
+  bool per_material_basis = false;
+  ColorOptions color;  // --color-space, --gamut-mapping
 };
 
 }  // namespace matc

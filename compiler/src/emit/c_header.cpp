@@ -34,7 +34,8 @@ std::string coat_block(const CompiledMaterial& compiled) {
 }  // namespace
 
 std::string material_c_header(const CompiledMaterial& compiled, std::string_view inputs_hash,
-                              const LutReference& lut, const SpirvWords& library_module) {
+                              const LutReference& lut, const SpirvWords& library_module,
+                              std::optional<std::size_t> lut_layer) {
   TemplateValues values = material_template_values(compiled, inputs_hash);
   values.erase("red");
   values.erase("green");
@@ -49,7 +50,13 @@ std::string material_c_header(const CompiledMaterial& compiled, std::string_view
   values.insert({{"lut_file", lut.file},
                  {"lut_size", std::to_string(lut.size)},
                  {"lut_hash", lut.hash},
-                 {"basis", lut.basis},
+                 {"basis", std::string(runtime::basis_name(compiled.basis))},
+                 {"lut_layer",
+                  lut_layer ? fmt::format("\n/* Its layer of the table, the basis' (matc --basis "
+                                          "auto): columns [layer size, (layer + 1) size). */\n"
+                                          "#define MATC_{}_LUT_LAYER {}",
+                                          compiled.material.name, *lut_layer)
+                            : ""},
                  {"spirv_word_count", std::to_string(library_module.size())},
                  {"spirv_words", words},
                  {"coat_block", coat_block(compiled)}});

@@ -2,6 +2,8 @@
 // is sampled with, and its SPIR-V library module as words.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -17,7 +19,9 @@ struct LutReference {
   std::string basis;  // the basis it integrates (and the coefficients were solved for)
 };
 
+// `lut_layer`: the material's layer of a per-material build's table (--basis auto), else none.
 std::string material_c_header(const CompiledMaterial& compiled, std::string_view inputs_hash,
-                              const LutReference& lut, const SpirvWords& library_module);
+                              const LutReference& lut, const SpirvWords& library_module,
+                              std::optional<std::size_t> lut_layer = std::nullopt);
 
 }  // namespace matc

@@ -17,8 +17,9 @@ std::array<float, 12> material_module_placeholders() {
   return values;
 }
 
-CompiledMaterial template_material(bool fresnel_nonnegative) {
+CompiledMaterial template_material(bool fresnel_nonnegative, runtime::BasisKind basis) {
   CompiledMaterial compiled;
+  compiled.basis = basis;
   compiled.fresnel_nonnegative = fresnel_nonnegative;
   compiled.material.name = std::string(kTemplateMaterialName);
   compiled.material.source_path = "template.json";
@@ -51,8 +52,18 @@ std::vector<MaterialModuleTemplate> compile_material_module_templates() {
     for (const bool nonnegative : {false, true}) {
       // Only the closed forms' curves can be proven non-negative (fit/nonnegative_curve.h).
       if (nonnegative && !runtime::is_closed_form(basis)) continue;
-      templates.push_back({basis, nonnegative,
+      templates.push_back({basis, nonnegative, false,
                            build.compile_material_library_module(template_material(nonnegative))});
+    }
+  }
+  BuildOptions per_material;
+  per_material.per_material_basis = true;
+  const Build build(per_material);
+  for (const runtime::BasisKind basis : runtime::kPerMaterialBases) {
+    for (const bool nonnegative : {false, true}) {
+      templates.push_back(
+          {basis, nonnegative, true,
+           build.compile_material_library_module(template_material(nonnegative, basis))});
     }
   }
   return templates;
@@ -70,8 +81,9 @@ std::string material_module_templates_source(std::span<const MaterialModuleTempl
       "namespace {{\n\n",
       kVersion);
   const auto array_name = [](const MaterialModuleTemplate& entry) {
-    return fmt::format("k{}{}", runtime::basis_name(entry.basis),
-                       entry.fresnel_nonnegative ? "_nonnegative" : "");
+    return fmt::format("k{}{}{}", runtime::basis_name(entry.basis),
+                       entry.fresnel_nonnegative ? "_nonnegative" : "",
+                       entry.per_material_build ? "_per_material" : "");
   };
   for (const MaterialModuleTemplate& entry : templates) {
     out +=
@@ -87,11 +99,16 @@ std::string material_module_templates_source(std::span<const MaterialModuleTempl
       "std::span<const std::uint32_t> checked_in_material_module_template(runtime::BasisKind "
       "basis,\n"
       "                                                                   bool "
-      "fresnel_nonnegative) {\n";
+      "fresnel_nonnegative,\n"
+      "                                                                   bool "
+      "per_material_build) {\n";
   for (const MaterialModuleTemplate& entry : templates) {
     out += fmt::format(
-        "  if (basis == runtime::BasisKind::{} && fresnel_nonnegative == {}) return {};\n",
-        runtime::basis_name(entry.basis), entry.fresnel_nonnegative, array_name(entry));
+        "  if (basis == runtime::BasisKind::{} && fresnel_nonnegative == {} &&\n"
+        "      per_material_build == {})\n"
+        "    return {};\n",
+        runtime::basis_name(entry.basis), entry.fresnel_nonnegative, entry.per_material_build,
+        array_name(entry));
   }
   // A basis without a checked-in module (a new one, before `matc basis material-modules`) is
   // compiled instead.

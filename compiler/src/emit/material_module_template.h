@@ -27,13 +27,17 @@ inline constexpr std::string_view kTemplateMaterialName = "MATC_TEMPLATE_MATERIA
 std::array<float, 12> material_module_placeholders();
 
 // The placeholder material whose module is the template: its functions clamp at 0, or (for
-// materials whose curve matc proved non-negative) not.
-CompiledMaterial template_material(bool fresnel_nonnegative = false);
+// materials whose curve matc proved non-negative) not; compiled against `basis`.
+CompiledMaterial template_material(bool fresnel_nonnegative = false,
+                                   runtime::BasisKind basis = runtime::kDefaultBasis);
 
-// The checked-in template of a basis and clamp (empty in a bootstrap build, and for a
-// combination no material can have: the fitted bases always clamp).
+// The checked-in template of a basis and clamp, in a one-basis build or a per-material one
+// (--basis auto, whose library and snippets differ); empty in a bootstrap build, and for a
+// combination no material can have (the fitted bases always clamp, and a per-material build
+// holds the closed forms only).
 std::span<const std::uint32_t> checked_in_material_module_template(runtime::BasisKind basis,
-                                                                   bool fresnel_nonnegative);
+                                                                   bool fresnel_nonnegative,
+                                                                   bool per_material_build);
 
 // `compiled`'s module from a template.
 SpirvWords patch_material_module(std::span<const std::uint32_t> template_words,
@@ -42,10 +46,12 @@ SpirvWords patch_material_module(std::span<const std::uint32_t> template_words,
 struct MaterialModuleTemplate {
   runtime::BasisKind basis = runtime::kDefaultBasis;
   bool fresnel_nonnegative = false;
+  bool per_material_build = false;
   SpirvWords words;
 };
-// Compiles the templates of every shipped basis, clamped, and of the powers basis unclamped
-// (glslang): what the checked-in file must hold.
+// Compiles the templates of every shipped basis, clamped, and of the closed forms unclamped, in
+// one-basis builds, and of the per-material bases in a per-material build (glslang): what the
+// checked-in file must hold.
 std::vector<MaterialModuleTemplate> compile_material_module_templates();
 // The C++ source of src/generated/material_module_templates.cpp.
 std::string material_module_templates_source(std::span<const MaterialModuleTemplate> templates);

@@ -92,8 +92,13 @@ std::string coated_snippet_source(ShaderLanguage language, const CompiledMateria
 
 }  // namespace
 
+std::string basis_function_suffix(const CompiledMaterial& compiled, bool per_material_build) {
+  if (!per_material_build || compiled.basis == runtime::kPerMaterialBases.front()) return "";
+  return "_" + std::string(runtime::basis_name(compiled.basis));
+}
+
 std::string material_snippet_source(ShaderLanguage language, const CompiledMaterial& compiled,
-                                    std::string_view inputs_hash) {
+                                    std::string_view inputs_hash, bool per_material_build) {
   TemplateValues values = material_template_values(compiled, inputs_hash);
   values.erase("red_c");
   values.erase("green_c");
@@ -101,11 +106,19 @@ std::string material_snippet_source(ShaderLanguage language, const CompiledMater
   if (compiled.coat) return coated_snippet_source(language, compiled, std::move(values));
   // A curve matc proved non-negative needs no clamp at 0 (fit/nonnegative_curve.h).
   const bool nonnegative = compiled.fresnel_nonnegative;
-  values["fresnel"] = nonnegative ? "matc_fresnel_sum" : "matc_fresnel";
+  const std::string suffix = basis_function_suffix(compiled, per_material_build);
+  values["fresnel"] = (nonnegative ? "matc_fresnel_sum" : "matc_fresnel") + suffix;
   values["fresnel_preintegrated"] =
       nonnegative ? "matc_fresnel_preintegrated_sum" : "matc_fresnel_preintegrated";
   values["clamp_note"] = nonnegative ? "Its curve stays above 0 (checked when compiled): no clamp."
                                      : "Clamped at 0, where the fitted curve may dip below it.";
+  values["layer_texcoord"] =
+      per_material_build
+          ? fill_template(template_path(language, "material_layer"),
+                          {{"name", compiled.material.name},
+                           {"basis", std::string(runtime::basis_name(compiled.basis))},
+                           {"suffix", suffix}})
+          : "";
   return fill_template(template_path(language, "material"), values);
 }
 

@@ -1,9 +1,11 @@
 #include "emit/shader_library.h"
 
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <numbers>
 #include <span>
+#include <stdexcept>
 #include <string>
 
 #include <fmt/format.h>
@@ -100,27 +102,31 @@ const ClosedFormSteps& closed_form_steps(runtime::BasisKind kind) {
 
 // The lines of matc_fresnel_sum() before its coefficients: the basis, and mu m where the sum
 // reads it (the optimiser shares the clamp and 1 - x with the inlined matc_basis()).
-std::string closed_form_sum_basis(ShaderLanguage language, const ClosedFormSteps& steps) {
+std::string closed_form_sum_basis(ShaderLanguage language, const ClosedFormSteps& steps,
+                                  std::string_view suffix) {
   std::string out;
   switch (language) {
     case ShaderLanguage::glsl:
-      out = "  vec4 b = matc_basis(mu);";
+      out = fmt::format("  vec4 b = matc_basis{}(mu);", suffix);
       if (steps.sum_needs_x_m)
         out += "\n  float x = clamp(mu, 0.0, 1.0);\n  float xm = x * (1.0 - x);";
       break;
     case ShaderLanguage::hlsl:
-      out = "  float4 b = matc_basis(mu);";
+      out = fmt::format("  float4 b = matc_basis{}(mu);", suffix);
       if (steps.sum_needs_x_m) out += "\n  float x = saturate(mu);\n  float xm = x * (1.0 - x);";
       break;
     case ShaderLanguage::wgsl:
-      out = "  let b = matc_basis(mu);";
+      out = fmt::format("  let b = matc_basis{}(mu);", suffix);
       if (steps.sum_needs_x_m) out += "\n  let x = clamp(mu, 0.0, 1.0);\n  let xm = x * (1.0 - x);";
       break;
   }
   return out;
 }
 
-std::string closed_form_basis_source(ShaderLanguage language, runtime::ShaderBasisForm form) {
+// `suffix` follows every function's name: empty for the first basis of a build, "_f82" for a
+// further layer's.
+std::string closed_form_basis_source(ShaderLanguage language, runtime::ShaderBasisForm form,
+                                     std::string_view suffix) {
   const runtime::BasisKind kind =
       form == runtime::ShaderBasisForm::f82 ? runtime::BasisKind::f82 : runtime::BasisKind::powers;
   const ClosedFormSteps& steps = closed_form_steps(kind);
@@ -138,13 +144,14 @@ std::string closed_form_basis_source(ShaderLanguage language, runtime::ShaderBas
                         {"multiplies", std::string(steps.multiplies)},
                         {"powers", body},
                         {"sum_comment", std::string(steps.sum_comment)},
-                        {"sum_basis", closed_form_sum_basis(language, steps)},
-                        {"sum", std::string(steps.sum)}});
+                        {"sum_basis", closed_form_sum_basis(language, steps, suffix)},
+                        {"sum", std::string(steps.sum)},
+                        {"suffix", std::string(suffix)}});
 }
 
 // matc_basis(): the fitted bases' piecewise polynomial, or a closed form.
 std::string basis_function_source(ShaderLanguage language, const runtime::ShaderBasis& basis) {
-  if (basis.is_closed_form()) return closed_form_basis_source(language, basis.form);
+  if (basis.is_closed_form()) return closed_form_basis_source(language, basis.form, "");
   return fill_template(template_path(language, "basis_polynomial"),
                        {{"segments", std::to_string(runtime::kPolynomialSegments)},
                         {"last_segment", std::to_string(runtime::kPolynomialSegments - 1)},
@@ -188,10 +195,16 @@ std::string analytic_lut_fields_source(ShaderLanguage language,
   return out;
 }
 
-std::string analytic_lut_source(ShaderLanguage language, runtime::BasisKind basis) {
+std::string analytic_lut_source(ShaderLanguage language, runtime::BasisKind basis,
+                                std::string_view suffix) {
+  std::string constant_suffix(suffix);
+  for (char& c : constant_suffix)
+    c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return fill_template(
       template_path(language, "analytic_lut"),
       {{"basis", std::string(runtime::basis_name(basis))},
+       {"suffix", std::string(suffix)},
+       {"constant_suffix", constant_suffix},
        {"analytic_lut_fields",
         analytic_lut_fields_source(language, runtime::shipped_analytic_lut(basis))}});
 }
@@ -208,6 +221,40 @@ std::string area_light_source(ShaderLanguage language, std::size_t ltc_size) {
         float_literal(std::sqrt(2.0 * std::numbers::pi / (kSides * std::sin(step))))}});
 }
 
+// matc_lut_texcoord: over the whole table, or over its first layer of several.
+std::string lut_texcoord_source(ShaderLanguage language, const ShaderLibraryOptions& options) {
+  if (options.further_layers.empty())
+    return fill_template(template_path(language, "lut_texcoord"), {});
+  return fill_template(template_path(language, "lut_layers"),
+                       {{"lut_layers", std::to_string(1 + options.further_layers.size())}});
+}
+
+// Each further layer's functions (templates/<language>/basis_layer.*).
+std::string basis_layers_source(ShaderLanguage language, const ShaderLibraryOptions& options) {
+  std::string out;
+  for (std::size_t k = 0; k < options.further_layers.size(); ++k) {
+    const runtime::BasisKind basis = options.further_layers[k];
+    const std::string name(runtime::basis_name(basis));
+    const std::string suffix = "_" + name;
+    const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(basis);
+    if (!shader_basis.is_closed_form())
+      throw std::logic_error("a table's further layers are closed forms");
+    out += fill_template(
+        template_path(language, "basis_layer"),
+        {{"basis", name},
+         {"layer", std::to_string(k + 1)},
+         {"basis_function", closed_form_basis_source(language, shader_basis.form, suffix)},
+         {"analytic_lut",
+          options.analytic_lut ? "\n" + analytic_lut_source(language, basis, suffix) : ""},
+         {"area_light",
+          options.area_light_functions
+              ? "\n" + fill_template(template_path(language, "basis_layer_area_light"),
+                                     {{"basis", name}})
+              : ""}});
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string shader_library_source(ShaderLanguage language, const runtime::ShaderBasis& basis,
@@ -220,6 +267,8 @@ std::string shader_library_source(ShaderLanguage language, const runtime::Shader
        {"inputs_hash", std::string(inputs_hash)},
        {"lut_size", std::to_string(options.lut_size)},
        {"basis_function", basis_function_source(language, basis)},
+       {"lut_texcoord", lut_texcoord_source(language, options)},
+       {"basis_layers", basis_layers_source(language, options)},
        {"coefficient_table",
         options.coefficient_table_functions
             ? fill_template(
@@ -230,7 +279,7 @@ std::string shader_library_source(ShaderLanguage language, const runtime::Shader
        {"area_lights",
         options.area_light_functions ? area_light_source(language, options.ltc_size) : ""},
        {"analytic_lut",
-        options.analytic_lut ? analytic_lut_source(language, *options.analytic_lut) : ""},
+        options.analytic_lut ? analytic_lut_source(language, *options.analytic_lut, "") : ""},
        {"embedded_lut",
         options.embedded_lut ? embedded_lut_source(language, *options.embedded_lut) : ""}});
 }

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "emit/shader_literals.h"
 #include "fit/coefficient_table.h"
@@ -29,6 +30,10 @@ struct ShaderLibraryOptions {
   // The closed form of this basis' table (matc_preintegrated_basis_analytic, its checked-in
   // coefficients); none without a value.
   std::optional<runtime::BasisKind> analytic_lut = std::nullopt;
+  // The table's layers after the first (--basis auto): each closed form's functions again with
+  // its name appended (matc_fresnel_f82, matc_lut_texcoord_f82, ...), and matc_lut_texcoord
+  // reading the first of them side by side.
+  std::vector<runtime::BasisKind> further_layers;
 };
 
 std::string shader_library_source(ShaderLanguage language, const runtime::ShaderBasis& basis,

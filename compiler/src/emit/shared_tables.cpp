@@ -1,5 +1,10 @@
 #include "emit/shared_tables.h"
 
+#include <algorithm>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
 #include "base/content_hash.h"
 #include "base/json_format.h"
 #include "ltc/ltc_table_files.h"
@@ -12,13 +17,13 @@ namespace matc {
 
 SharedTables::SharedTables(const SharedTableOptions& options)
     : options_(options),
-      stored_coefficient_table_(
-          matc::stored_coefficient_table(options.basis, options.coefficient_table_precision)),
+      stored_coefficient_table_(matc::stored_coefficient_table(
+          options.layers.front(), options.coefficient_table_precision)),
       coefficient_table_file_bytes_(encode_coefficient_table(
           stored_coefficient_table_, options.format, options.coefficient_table_precision)),
       ltc_file_bytes_(encode_ltc_table(runtime::shipped_ltc_table(), options.format)) {
   if (options_.embedded_lut_size != 0) {
-    embedded_lut_ = preintegrate_lut(runtime::shipped_basis(options_.basis),
+    embedded_lut_ = preintegrate_lut(runtime::shipped_basis(options_.layers.front()),
                                      {options_.embedded_lut_size, options_.lut.samples});
   }
 }
@@ -26,21 +31,40 @@ SharedTables::SharedTables(const SharedTableOptions& options)
 const SharedTables::Baked& SharedTables::baked() const {
   std::call_once(lazy_->once, [this] {
     Baked baked;
-    baked.lut = bake_lut(runtime::shipped_basis(options_.basis), options_.lut);
-    baked.stored = stored_as(baked.lut.lut, options_.lut_precision);
-    baked.file_bytes = encode_lut(baked.lut, options_.format, options_.lut_precision);
+    std::vector<const Lut*> stored;
+    for (const runtime::BasisKind basis : options_.layers) {
+      baked.layers.push_back(bake_lut(runtime::shipped_basis(basis), options_.lut));
+      baked.stored.push_back(stored_as(baked.layers.back().lut, options_.lut_precision));
+    }
+    for (const Lut& layer : baked.stored)
+      stored.push_back(&layer);
+    baked.atlas = side_by_side(stored);
+    baked.file_bytes =
+        options_.layers.size() == 1
+            ? encode_lut(baked.layers.front(), options_.format, options_.lut_precision)
+            : encode_lut_atlas(baked.atlas, options_.format, options_.lut_precision);
     baked.hash = hash_of_bytes(baked.file_bytes);  // once: headers and the manifest name it
     lazy_->baked = std::move(baked);
   });
   return *lazy_->baked;
 }
 
+const Lut& SharedTables::stored_lut(runtime::BasisKind basis) const {
+  const auto layer = std::find(options_.layers.begin(), options_.layers.end(), basis);
+  if (layer == options_.layers.end())
+    throw std::invalid_argument(fmt::format("the table holds no {} layer", basis_name(basis)));
+  return baked().stored[static_cast<std::size_t>(layer - options_.layers.begin())];
+}
+
 LutReference SharedTables::lut_reference() const {
-  const auto known =
-      default_lut_hash(options_.basis, options_.format, options_.lut_precision, options_.lut);
-  return {shared_file_name(OutputKind::lut, options_.format), options_.lut.size,
-          known ? std::string(*known) : baked().hash,
-          std::string(runtime::basis_name(options_.basis))};
+  const bool layered = options_.layers.size() > 1;
+  const auto known = layered ? std::optional<std::string_view>()
+                             : default_lut_hash(options_.layers.front(), options_.format,
+                                                options_.lut_precision, options_.lut);
+  return {
+      shared_file_name(OutputKind::lut, options_.format), options_.lut.size,
+      known ? std::string(*known) : baked().hash,
+      layered ? std::string("auto") : std::string(runtime::basis_name(options_.layers.front()))};
 }
 
 std::vector<OutputFile> SharedTables::files(const std::set<OutputKind>& emit) const {
@@ -50,7 +74,12 @@ std::vector<OutputFile> SharedTables::files(const std::set<OutputKind>& emit) co
     files.push_back({name, std::move(bytes)});
     files.push_back({name + ".json", std::move(manifest)});
   };
-  if (emit.contains(OutputKind::lut)) {
+  if (emit.contains(OutputKind::lut) && options_.layers.size() > 1) {
+    for (OutputFile& file : layered_lut_output_files(
+             baked().layers, baked().atlas, options_.format, options_.lut_precision,
+             shared_file_name(OutputKind::lut, options_.format)))
+      files.push_back(std::move(file));
+  } else if (emit.contains(OutputKind::lut)) {
     add(OutputKind::lut, baked().file_bytes,
         format_json(lut_manifest(lut(), options_.format, options_.lut_precision)));
   }

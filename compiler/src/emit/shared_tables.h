@@ -24,7 +24,9 @@ namespace matc {
 
 // What decides the tables' bytes (a build's options, less those of the shaders).
 struct SharedTableOptions {
-  runtime::BasisKind basis = runtime::kDefaultBasis;
+  // The preintegrated table's bases: one, or a layer each side by side (--basis auto). The
+  // coefficient and embedded tables are the first's.
+  std::vector<runtime::BasisKind> layers = {runtime::kDefaultBasis};
   LutOptions lut;
   LutFormat format = LutFormat::ktx2;
   LutPrecision lut_precision = LutPrecision::f32;
@@ -36,9 +38,15 @@ class SharedTables {
  public:
   explicit SharedTables(const SharedTableOptions& options);
 
-  const BakedLut& lut() const { return baked().lut; }
-  // The table as the written file stores it (f16 rounding), what a renderer samples.
-  const Lut& stored_lut() const { return baked().stored; }
+  // The first layer's table.
+  const BakedLut& lut() const { return baked().layers.front(); }
+  // The table as the written file stores it (f16 rounding), what a renderer samples: the first
+  // layer's, or `basis`' layer (one the table holds).
+  const Lut& stored_lut() const { return baked().stored.front(); }
+  const Lut& stored_lut(runtime::BasisKind basis) const;
+  // Every layer side by side as stored: the texture the file holds.
+  const LutAtlas& stored_atlas() const { return baked().atlas; }
+  const std::vector<runtime::BasisKind>& layers() const { return options_.layers; }
   const Lut* embedded_lut() const { return embedded_lut_ ? &*embedded_lut_ : nullptr; }
   const CoefficientTable& stored_coefficient_table() const { return stored_coefficient_table_; }
   // The preintegrated table's file name and hash, as headers and the manifest name it (the
@@ -52,8 +60,9 @@ class SharedTables {
 
  private:
   struct Baked {
-    BakedLut lut;
-    Lut stored;
+    std::vector<BakedLut> layers;
+    std::vector<Lut> stored;
+    LutAtlas atlas;
     std::string file_bytes;
     std::string hash;
   };

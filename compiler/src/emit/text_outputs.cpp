@@ -1,5 +1,6 @@
 #include "emit/text_outputs.h"
 
+#include <algorithm>
 #include <variant>
 
 #include <fmt/format.h>
@@ -16,25 +17,33 @@ namespace matc {
 namespace {
 
 std::string options_key_of(const BuildOptions& options) {
-  return fmt::format("lut {}x{} samples {} {} {} embed {} basis {}", options.lut.size,
-                     options.lut.size, options.lut.samples, lut_format_name(options.lut_format),
-                     lut_precision_name(options.lut_precision), options.embedded_lut_size,
-                     runtime::basis_name(options.basis));
+  return fmt::format(
+      "lut {}x{} samples {} {} {} embed {} basis {}", options.lut.size, options.lut.size,
+      options.lut.samples, lut_format_name(options.lut_format),
+      lut_precision_name(options.lut_precision), options.embedded_lut_size,
+      options.per_material_basis ? std::string_view("auto") : runtime::basis_name(options.basis));
 }
 
 }  // namespace
 
 TextOutputs::TextOutputs(const BuildOptions& options, std::size_t coefficient_table_size,
                          const Lut* embedded_lut)
-    : basis_(options.basis),
+    : per_material_(options.per_material_basis),
       options_key_(options_key_of(options)),
       color_key_(fmt::format("color {} gamut {}", color_space_name(options.color.working_space),
                              gamut_mapping_name(options.color.gamut_mapping))),
       inputs_hash_(ContentHash().add(options_key_).hex()) {
-  ShaderLibraryOptions library_options{options.lut.size, coefficient_table_size, embedded_lut};
+  ShaderLibraryOptions library_options;
+  library_options.lut_size = options.lut.size;
+  library_options.coefficient_table_size = coefficient_table_size;
+  library_options.embedded_lut = embedded_lut;
   library_options.ltc_size = runtime::shipped_ltc_table().size;
-  library_options.analytic_lut = basis_;
-  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(basis_);
+  library_options.analytic_lut = options.basis;
+  if (per_material_) {
+    library_options.further_layers.assign(runtime::kPerMaterialBases.begin() + 1,
+                                          runtime::kPerMaterialBases.end());
+  }
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(options.basis);
   glsl_library_ =
       shader_library_source(ShaderLanguage::glsl, shader_basis, library_options, inputs_hash_);
   hlsl_library_ =
@@ -73,12 +82,20 @@ std::string TextOutputs::material_inputs_hash(const Material& material) const {
 
 std::string TextOutputs::material_source(ShaderLanguage language,
                                          const CompiledMaterial& compiled) const {
-  return material_snippet_source(language, compiled, material_inputs_hash(compiled.material));
+  return material_snippet_source(language, compiled, material_inputs_hash(compiled.material),
+                                 per_material_);
 }
 
 std::string TextOutputs::material_json(const CompiledMaterial& compiled,
                                        std::string_view inputs_hash) const {
-  nlohmann::ordered_json json = compiled_material_json(compiled, runtime::shipped_basis(basis_));
+  nlohmann::ordered_json json =
+      compiled_material_json(compiled, runtime::shipped_basis(compiled.basis));
+  if (per_material_) {
+    // Where its bbar is in the table (layers side by side, matc_lut.*.json).
+    const auto& layers = runtime::kPerMaterialBases;
+    json["basis"]["lut_layer"] = static_cast<std::size_t>(
+        std::find(layers.begin(), layers.end(), compiled.basis) - layers.begin());
+  }
   json["inputs_hash"] = std::string(inputs_hash);
   return format_json(json);
 }

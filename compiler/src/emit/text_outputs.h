@@ -34,11 +34,12 @@ class TextOutputs {
   // parsed from memory works the same).
   std::string material_inputs_hash(const Material& material) const;
   std::string material_source(ShaderLanguage language, const CompiledMaterial& compiled) const;
+  bool per_material_basis() const { return per_material_; }
   // <name>.json, with the material's inputs hash.
   std::string material_json(const CompiledMaterial& compiled, std::string_view inputs_hash) const;
 
  private:
-  runtime::BasisKind basis_;
+  bool per_material_;        // --basis auto: a layer per basis (build_options.h)
   std::string options_key_;  // the options the shared files derive from
   std::string color_key_;    // the working space and gamut mapping: every material's numbers
   std::string inputs_hash_;

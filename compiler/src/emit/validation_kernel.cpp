@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "emit/material_snippet.h"
 #include "emit/template.h"
 #include "matc/version.h"
 #include "spirv/spirv_tools.h"
@@ -20,13 +21,16 @@ SpirvWords vulkan_compute_module(ShaderLanguage language, std::string source,
 
 std::string validation_kernel_source(ShaderLanguage language, std::string_view library,
                                      std::string_view material, std::string_view material_name,
-                                     bool coated) {
+                                     bool coated, std::string_view basis_suffix) {
   const bool glsl = language == ShaderLanguage::glsl;
   TemplateValues values = {{"version", kVersion},
                            {"name", std::string(material_name)},
                            {"library", std::string(library)},
                            {"material", std::string(material)}};
-  if (!coated) return fill_template(glsl ? "glsl/validate.comp" : "hlsl/validate.hlsl", values);
+  if (!coated) {
+    values["suffix"] = std::string(basis_suffix);
+    return fill_template(glsl ? "glsl/validate.comp" : "hlsl/validate.hlsl", values);
+  }
   std::string quad;
   for (const runtime::Vec3& corner : kCoatedValidationQuad)
     quad += (quad.empty() ? "" : ", ") + vector_literal(language, corner);
@@ -49,11 +53,13 @@ std::string area_light_validation_kernel_source(ShaderLanguage language, std::st
 SpirvWords material_validation_module(const Build& build, ShaderLanguage language,
                                       const CompiledMaterial& compiled) {
   const std::string& name = compiled.material.name;
-  return vulkan_compute_module(language,
-                               validation_kernel_source(language, build.library_source(language),
-                                                        build.material_source(language, compiled),
-                                                        name, compiled.coat.has_value()),
-                               fmt::format("{}.validate{}", name, shader_file_extension(language)));
+  return vulkan_compute_module(
+      language,
+      validation_kernel_source(language, build.library_source(language),
+                               build.material_source(language, compiled), name,
+                               compiled.coat.has_value(),
+                               basis_function_suffix(compiled, build.options().per_material_basis)),
+      fmt::format("{}.validate{}", name, shader_file_extension(language)));
 }
 
 SpirvWords table_validation_module(const Build& build, ShaderLanguage language) {

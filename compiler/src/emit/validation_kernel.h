@@ -38,7 +38,7 @@ inline constexpr std::array<runtime::Vec3, 4> kCoatedValidationQuad = {
     {{-0.5, -1.0, 1.5}, {-2.0, -1.0, 0.5}, {-2.0, 1.0, 0.5}, {-0.5, 1.0, 1.5}}};
 std::string validation_kernel_source(ShaderLanguage language, std::string_view library,
                                      std::string_view material, std::string_view material_name,
-                                     bool coated = false);
+                                     bool coated = false, std::string_view basis_suffix = "");
 
 // The coefficient-table path's kernel (templates/*/validate_table.*): bindings 0 queries (four vec4
 // each: r.rgb and mu, g.rgb and NdotV, n.rgb and roughness, k.rgb), 1 results (eight vec4: F and

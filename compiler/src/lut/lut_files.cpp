@@ -1,6 +1,7 @@
 #include "lut/lut_files.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -87,6 +88,46 @@ nlohmann::ordered_json lut_manifest(const BakedLut& baked, LutFormat format,
       {"basis_hemispherical_averages", baked.basis_averages},
       {"average_fresnel", "F_avg = sum_i c_i * basis_hemispherical_averages[i] per channel"}};
   return manifest;
+}
+
+std::string encode_lut_atlas(const LutAtlas& atlas, LutFormat format, LutPrecision precision) {
+  const formats::TexelImage image{atlas.width(), atlas.size, runtime::kBasisSize, atlas.texels};
+  switch (format) {
+    case LutFormat::ktx2:
+      return formats::encode_ktx2({&image, 1}, precision);
+    case LutFormat::dds:
+      return formats::encode_dds({&image, 1}, precision);
+    case LutFormat::raw:
+      return formats::texel_bytes(atlas.texels, precision);
+    case LutFormat::header:
+      break;
+  }
+  throw std::invalid_argument("a layered table has no header format");
+}
+
+std::vector<OutputFile> layered_lut_output_files(std::span<const BakedLut> layers,
+                                                 const LutAtlas& atlas, LutFormat format,
+                                                 LutPrecision precision,
+                                                 std::string_view file_name) {
+  nlohmann::ordered_json manifest = lut_manifest(layers.front(), format, precision);
+  manifest["size"] = {atlas.width(), atlas.size};
+  manifest["basis"] = "auto";
+  manifest["layer_size"] = {atlas.size, atlas.size};
+  manifest["layers"] = nlohmann::ordered_json::array();
+  for (std::size_t k = 0; k < layers.size(); ++k) {
+    manifest["layers"].push_back({{"basis", runtime::basis_name(layers[k].basis)},
+                                  {"columns", {k * atlas.size, (k + 1) * atlas.size - 1}},
+                                  {"basis_hemispherical_averages", layers[k].basis_averages}});
+  }
+  manifest["layout"]["layers"] =
+      "each basis' table side by side, layer k in columns [k size, (k + 1) size); a material's "
+      "<name>.json names its basis";
+  manifest["layout"]["sampling"] =
+      "linear filtering, clamp to edge, at (k size + u (size - 1) + 0.5) / (layers size) across "
+      "for layer k and (roughness (size - 1) + 0.5) / size down";
+  manifest["energy_compensation"]["basis_hemispherical_averages"] = "per layer (layers[k])";
+  return {{std::string(file_name), encode_lut_atlas(atlas, format, precision)},
+          {fmt::format("{}.json", file_name), format_json(manifest)}};
 }
 
 std::vector<OutputFile> lut_output_files(const BakedLut& baked, LutFormat format,

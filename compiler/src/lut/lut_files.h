@@ -4,6 +4,7 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -12,6 +13,7 @@
 
 #include "base/output_file.h"
 #include "formats/table_format.h"
+#include "lut/lut_atlas.h"
 #include "lut/preintegrate.h"
 
 namespace matc {
@@ -37,6 +39,15 @@ std::string encode_lut(const BakedLut& baked, LutFormat format, LutPrecision pre
 // The table as the file `file_name` and its manifest `file_name` + ".json", bytes in memory.
 std::vector<OutputFile> lut_output_files(const BakedLut& baked, LutFormat format,
                                          LutPrecision precision, std::string_view file_name);
+
+// A layered table (--basis auto: lut_atlas.h) as the file `file_name` in a texture format (not
+// the header) and its manifest, which names each layer's basis and columns. `atlas` holds the
+// layers as stored (stored_as), `layers` their bakes in the same order.
+std::vector<OutputFile> layered_lut_output_files(std::span<const BakedLut> layers,
+                                                 const LutAtlas& atlas, LutFormat format,
+                                                 LutPrecision precision,
+                                                 std::string_view file_name);
+std::string encode_lut_atlas(const LutAtlas& atlas, LutFormat format, LutPrecision precision);
 
 // The "layout" of a manifest for a square table with rows roughness and columns
 // u = `columns_from_ndotv` (the LUT's sqrt(NdotV), the LTC table's 1 - sqrt(1 - NdotV)), with

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "base/diagnostics.h"
+#include "matc/runtime/basis.h"
 #include "matc/runtime/fresnel.h"
 #include "optics/color_space.h"
 #include "optics/spectrum.h"
@@ -88,6 +89,9 @@ struct Material {
   std::optional<ColorSpace> color_space;
   std::optional<CoatInput> coat;  // absent: the metal is bare, seen from air
   std::optional<FilmInput> film;  // absent: no film on the metal
+  // The basis the file pins ("basis": one of the per-material layers, compile/basis_choice.h);
+  // absent: the build's rule chooses. `--basis NAME` overrides both.
+  std::optional<runtime::BasisKind> basis;
 };
 
 // "artistic", "ior", "spectral" or "f82_tint": the key that selects the model in a material file.

@@ -23,9 +23,9 @@ using runtime::Rgb;
 
 constexpr std::array<std::string_view, 4> kModelKeys = {"artistic", "ior", "spectral", "f82_tint"};
 constexpr std::string_view kOneModel = "exactly one of artistic, ior, spectral, f82_tint";
-constexpr std::array<std::string_view, 11> kTopLevelFields = {
-    "$schema",  "name",      "description", "artistic", "ior", "spectral",
-    "f82_tint", "roughness", "color_space", "coat",     "film"};
+constexpr std::array<std::string_view, 12> kTopLevelFields = {
+    "$schema",  "name",      "description", "artistic", "ior",  "spectral",
+    "f82_tint", "roughness", "color_space", "coat",     "film", "basis"};
 constexpr std::array<std::string_view, 2> kF82TintFields = {"f0", "tint"};
 constexpr std::array<std::string_view, 2> kArtisticFields = {"reflectivity", "edge_tint"};
 constexpr std::array<std::string_view, 2> kIorFields = {"n", "k"};
@@ -86,6 +86,7 @@ class MaterialReader : LocatedJsonReader {
             "a film on a bare metal: a film under a coat is not modelled (the film would reflect "
             "inside the coat, not in air); drop one of them");
     }
+    if (root.contains("basis")) material.basis = read_basis(root);
 
     if (diagnostics_.has_errors()) return std::nullopt;
     return material;
@@ -182,6 +183,40 @@ class MaterialReader : LocatedJsonReader {
     }
     if (!ok) return std::nullopt;
     return film;
+  }
+
+  // A pinned basis: one a per-material build's table holds, and f82 only on a bare metal (the
+  // coat's and the film's shader paths use the build's first basis).
+  std::optional<runtime::BasisKind> read_basis(const json& root) {
+    const std::string pointer = "/basis";
+    const json& value = root["basis"];
+    const std::string allowed = fmt::format(
+        "one of {} (the bases a per-material build's table holds; the fitted bases serve whole "
+        "builds: --basis NAME)",
+        runtime::per_material_basis_names());
+    if (!value.is_string()) {
+      error(pointer, fmt::format("is {}", describe_type(value)), allowed);
+      return std::nullopt;
+    }
+    const std::string name = value.get<std::string>();
+    const auto kind = runtime::basis_from_name(name);
+    if (!kind || !runtime::is_per_material_basis(*kind)) {
+      error(pointer,
+            kind ? fmt::format("'{}' is a fitted basis", name)
+                 : fmt::format("unknown basis '{}'", echoed(name)),
+            allowed);
+      return std::nullopt;
+    }
+    if (*kind != runtime::kDefaultBasis && (root.contains("coat") || root.contains("film"))) {
+      error(pointer,
+            fmt::format("pins '{}' on a metal with a {}", name,
+                        root.contains("coat") ? "coat" : "film"),
+            fmt::format("'{}': a coated or filmed metal takes the build's first basis; drop the "
+                        "pin, or force one basis on the whole build with --basis {}",
+                        runtime::basis_name(runtime::kDefaultBasis), name));
+      return std::nullopt;
+    }
+    return kind;
   }
 
   std::optional<ColorSpace> read_color_space(const json& value) {

@@ -56,6 +56,18 @@ std::span<const OptionName<runtime::BasisKind>> option_names<runtime::BasisKind>
 }
 
 template <>
+std::span<const OptionName<BasisChoice>> option_names<BasisChoice>() {
+  static const auto entries = [] {
+    std::vector<OptionName<BasisChoice>> list = {
+        {kPerMaterialBasisName, {runtime::kPerMaterialBases.front(), true}}};
+    for (const runtime::BasisKind kind : runtime::kShippedBases)
+      list.push_back({runtime::basis_name(kind), {kind, false}});
+    return list;
+  }();
+  return entries;
+}
+
+template <>
 std::span<const OptionName<ColorSpace>> option_names<ColorSpace>() {
   static const auto entries = named<ColorSpace>(defined_color_spaces(), color_space_name);
   return entries;

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "compile/basis_choice.h"
 #include "emit/output_layout.h"
 #include "formats/table_format.h"
 #include "ltc/ltc_fit.h"
@@ -37,6 +38,9 @@ template <>
 std::span<const OptionName<LutPrecision>> option_names<LutPrecision>();
 template <>
 std::span<const OptionName<runtime::BasisKind>> option_names<runtime::BasisKind>();
+// A build's basis: "auto" (a basis per material), then every shipped basis forced.
+template <>
+std::span<const OptionName<BasisChoice>> option_names<BasisChoice>();
 template <>
 std::span<const OptionName<ColorSpace>> option_names<ColorSpace>();
 template <>

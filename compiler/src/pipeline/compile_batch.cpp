@@ -143,7 +143,6 @@ CompileBatchResult compile_batch(const Build& build, std::span<const MaterialSou
                                  OutputSink& output, const CompileBatchOptions& options,
                                  const BatchEvents& events) {
   check_options(sources, output, options);
-  const runtime::BasisView basis = build.basis();
   // The manifest lists every file of a batch, so only a batch (not a split layout) writes it.
   const bool writes_manifest =
       !options.no_shared && !options.shared_only && build.options().emit.contains(OutputKind::json);
@@ -224,7 +223,8 @@ CompileBatchResult compile_batch(const Build& build, std::span<const MaterialSou
           material = std::make_unique<Material>(std::move(again.materials.front()));
         }
         name = material->name;
-        const CompiledMaterial compiled = compile_material(*material, basis, build.options().color);
+        const CompiledMaterial compiled =
+            compile_material(*material, build.basis_for(*material), build.options().color);
         warn_if_poor_fit(compiled, job.diagnostics);
         note_if_out_of_unit_range(compiled, job.diagnostics);
         MaterialOutputs outputs = build.material_outputs(compiled);

@@ -26,11 +26,12 @@ struct DeviceValidator::Device {
   vulkan::Image ltc;
   vulkan::LutSampler sampler;
 
-  Device(const vulkan::ContextOptions& options, const Lut& table,
+  // `table`: every layer of the preintegrated table, as the file holds them.
+  Device(const vulkan::ContextOptions& options, const LutAtlas& table,
          const CoefficientTable& coefficients)
       : context(options),
-        lut(context, static_cast<std::uint32_t>(table.size), static_cast<std::uint32_t>(table.size),
-            table.texels),
+        lut(context, static_cast<std::uint32_t>(table.width()),
+            static_cast<std::uint32_t>(table.size), table.texels),
         coefficient_table(context, static_cast<std::uint32_t>(coefficients.size()),
                           static_cast<std::uint32_t>(coefficients.size()),
                           rgba_texels(coefficients)),
@@ -69,8 +70,8 @@ DeviceValidator::DeviceValidator(const Build& build, const vulkan::ContextOption
                                  ValidationTolerance tolerance)
     : build_(build),
       tolerance_(tolerance),
-      device_(
-          std::make_unique<Device>(device, build.stored_lut(), build.stored_coefficient_table())) {}
+      device_(std::make_unique<Device>(device, build.stored_atlas(),
+                                       build.stored_coefficient_table())) {}
 
 DeviceValidator::~DeviceValidator() = default;
 

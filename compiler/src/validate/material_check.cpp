@@ -48,12 +48,12 @@ class MaterialCheck final : public DeviceCheck {
   KernelTables tables() const override { return {false, compiled_.coat.has_value()}; }
 
   std::vector<CheckedQuantity> compare(std::span<const float> results) const override {
-    const runtime::ShaderBasis& shader_basis =
-        runtime::shipped_shader_basis(build_.options().basis);
-    const runtime::LutView table = build_.stored_lut().view();
+    // The material's basis, its layer of the table and its closed form.
+    const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(compiled_.basis);
+    const runtime::LutView table = build_.stored_lut(compiled_.basis).view();
     const Lut* embedded = build_.embedded_lut();
     const runtime::AnalyticLutCoefficients& analytic =
-        runtime::shipped_analytic_lut(build_.options().basis);
+        runtime::shipped_analytic_lut(compiled_.basis);
     if (compiled_.coat) return compare_coated(results, shader_basis, table, embedded, analytic);
     const runtime::Coefficients& c = compiled_.coefficients;
     CheckedQuantity fresnel{"F", tolerance_.fresnel};

@@ -346,8 +346,8 @@ TEST(Build, WgslOutputsAreCompleteWgsl) {
 // constant, a module that validates and exports the same two functions.
 TEST(MaterialModuleTemplates, CheckedInTemplatesAreCurrent) {
   for (const MaterialModuleTemplate& entry : compile_material_module_templates()) {
-    const std::span<const std::uint32_t> checked_in =
-        checked_in_material_module_template(entry.basis, entry.fresnel_nonnegative);
+    const std::span<const std::uint32_t> checked_in = checked_in_material_module_template(
+        entry.basis, entry.fresnel_nonnegative, entry.per_material_build);
     EXPECT_TRUE(
         std::equal(entry.words.begin(), entry.words.end(), checked_in.begin(), checked_in.end()))
         << runtime::basis_name(entry.basis) << (entry.fresnel_nonnegative ? ", no clamp" : "");
@@ -377,10 +377,42 @@ TEST(MaterialModuleTemplates, PatchedModulesMatchAFullCompile) {
   // Placeholders must be found, once each.
   CompiledMaterial gold = example("gold");
   const std::span<const std::uint32_t> words =
-      checked_in_material_module_template(runtime::kDefaultBasis, gold.fresnel_nonnegative);
+      checked_in_material_module_template(runtime::kDefaultBasis, gold.fresnel_nonnegative, false);
   SpirvWords broken(words.begin(), words.end());
   EXPECT_THROW(patch_material_module(SpirvWords(broken.begin(), broken.begin() + 5), gold),
                std::logic_error);
+}
+
+// A per-material build (--basis auto) patches each material's module from its basis' template of
+// such a build: the same bytes as compiling its snippet, an f82 example among them.
+TEST(MaterialModuleTemplates, PerMaterialBuildsPatchTheirBasisTemplate) {
+  BuildOptions options;
+  options.per_material_basis = true;
+  const Build build(options);
+  std::size_t f82 = 0;
+  std::size_t bare = 0;
+  std::size_t identical = 0;
+  for (const std::string& file : test::example_material_files()) {
+    const ParseResult parsed = read_material_file(file);
+    ASSERT_TRUE(parsed.material.has_value());
+    const CompiledMaterial material =
+        compile_material(*parsed.material, build.basis_for(*parsed.material));
+    if (material.coat) continue;
+    ++bare;
+    const SpirvWords patched = build.material_library_module(material);
+    const SpirvWords compiled = build.compile_material_library_module(material);
+    if (material.basis == runtime::BasisKind::f82) {
+      ++f82;
+      EXPECT_EQ(patched, compiled) << material.material.name;
+    }
+    if (patched == compiled) {
+      ++identical;
+      continue;
+    }
+    EXPECT_NO_THROW(validate_spirv(patched, SpirvTarget::universal_1_3, material.material.name));
+  }
+  EXPECT_GE(f82, 1u);
+  EXPECT_GE(identical, bare / 2);
 }
 
 TEST(Build, EmbeddedTableIsOptionalAndBounded) {

@@ -108,7 +108,7 @@ TEST(MaterialParse, UnknownFieldWarnsWithSuggestionAndStillCompiles) {
   EXPECT_EQ(all_diagnostics(result),
             "materials/m.json:2:2: warning: roughnes: unknown field, ignored (did you mean "
             "'roughness'?); known fields here: $schema, name, description, artistic, ior, "
-            "spectral, f82_tint, roughness, color_space, coat, film\n");
+            "spectral, f82_tint, roughness, color_space, coat, film, basis\n");
 }
 
 TEST(MaterialParse, EveryErrorInAFileIsReportedInOrder) {

@@ -62,6 +62,35 @@ TEST(DeviceValidation, BothFrontEndsMatchTheCpuRuntime) {
 
 // The comparison can fail: float32 shaders are not bit-identical to the double CPU mirror, so a
 // zero tolerance must reject them, and says where the worst difference was.
+// --basis auto: an F82-tint material reads its own layer of the side-by-side table through its
+// own functions, and a measured metal the first layer, both against the CPU runtime on the
+// material's layer. Reading the wrong layer would be off by more than 0.01 (per_material_basis_
+// test), a hundred times Fbar's tolerance.
+TEST(DeviceValidation, APerMaterialBuildReadsEachMaterialsLayer) {
+  matc::BuildOptions options = small_build();
+  options.per_material_basis = true;
+  const matc::Build build(options);
+  const matc::DeviceValidator validator(build, {true, ""});
+  for (const char* file : {"/aluminium_brushed_openpbr.json", "/figure2_edge_tint.json"}) {
+    const matc::ParseResult parsed =
+        matc::read_material_file(std::string(MATC_EXAMPLES_DIR) + file);
+    ASSERT_TRUE(parsed.material.has_value());
+    const matc::CompiledMaterial compiled =
+        matc::compile_material(*parsed.material, build.basis_for(*parsed.material));
+    const matc::CheckResult result = validator.validate(compiled);
+    EXPECT_TRUE(result.passed()) << file;
+    for (const matc::PathResult& path : result.paths) {
+      EXPECT_LE(path.quantity("Fbar").max_abs, 1e-5) << file;
+      EXPECT_LE(path.quantity("closed-form Fbar").max_abs, 1e-5) << file;
+    }
+  }
+  // The shared files' checks (coefficient table, area lights) read the first layer through
+  // matc_lut_texcoord over the wider table.
+  for (const auto& check : validator.shared_file_checks())
+    EXPECT_TRUE(validator.run(*check).passed()) << check->subject();
+  EXPECT_TRUE(validator.layer_messages().empty());
+}
+
 TEST(DeviceValidation, ZeroToleranceFails) {
   const matc::Build build(small_build(4));
   const matc::DeviceValidator validator(build, {false, ""}, {0.0, 0.0, 0.0});

@@ -10,7 +10,8 @@
 
 namespace matc::api {
 
-// The names of "basis", "color_space", "gamut_mapping", "emit", "lut_format", "lut_precision"
+// The names of "basis", "build_basis" (a build's or a compile's: "auto", a basis per material,
+// then the bases), "color_space", "gamut_mapping", "emit", "lut_format", "lut_precision"
 // (also coefficient_table_precision's), "ltc_objective" (api/regeneration.h), in the order help
 // and errors list them. Another option
 // throws std::invalid_argument naming the options there are.

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace matc::runtime {
@@ -46,9 +47,20 @@ constexpr bool is_closed_form(BasisKind kind) {
   return kind == BasisKind::powers || kind == BasisKind::f82;
 }
 
+// The bases a per-material build gives its materials (`--basis auto`, docs/accuracy.md "A basis
+// per material"), in the order of their layers in its table: the closed forms, each a few
+// multiplies in a shader, between them exact on F82-tint curves and as good as any shipped basis
+// on measured metals.
+inline constexpr std::array<BasisKind, 2> kPerMaterialBases = {BasisKind::powers, BasisKind::f82};
+constexpr bool is_per_material_basis(BasisKind kind) {
+  return kind == BasisKind::powers || kind == BasisKind::f82;
+}
+
 // "powers", "extended", "paper", "f82": the names `--basis` accepts and outputs record.
 std::string_view basis_name(BasisKind kind);
 std::optional<BasisKind> basis_from_name(std::string_view name);
+// "powers, f82": the per-material bases' names, for messages.
+std::string per_material_basis_names();
 
 // A non-owning view of a tabulated basis. The tables must outlive the view.
 struct BasisView {

@@ -1,0 +1,17 @@
+// The table holds MATC_LUT_LAYERS bases side by side (matc --basis auto), each MATC_LUT_SIZE
+// texels wide: layer k in columns [k size, (k + 1) size). Each material's <name>.json names its
+// basis, and its snippet's matc_lut_texcoord_<name> samples that layer. Linear filtering and
+// clamp-to-edge addressing: u = sqrt(NdotV) across, perceptual roughness down, texel centres on
+// the ends of both axes of each layer, so filtering never reads the next layer.
+#define MATC_LUT_LAYERS {{lut_layers}}
+vec2 matc_lut_layer_texcoord(float NdotV, float roughness, float layer) {
+  vec2 axes = vec2(sqrt(clamp(NdotV, 0.0, 1.0)), clamp(roughness, 0.0, 1.0));
+  vec2 texcoord =
+      axes * (float(MATC_LUT_SIZE - 1) / float(MATC_LUT_SIZE)) + 0.5 / float(MATC_LUT_SIZE);
+  return vec2((texcoord.x + layer) / float(MATC_LUT_LAYERS), texcoord.y);
+}
+// The first layer: that of matc_basis and matc_fresnel above.
+vec2 matc_lut_texcoord(float NdotV, float roughness) {
+  return matc_lut_layer_texcoord(NdotV, roughness, 0.0);
+}
+
