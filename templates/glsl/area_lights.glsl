@@ -195,13 +195,7 @@ vec3 matc_ltc_following_radiance(vec3 geometry, vec4 bbar, vec3 f_light, vec3 fb
   return geometry.x * mix(bbar.x * f_light, fbar, geometry.z);
 }
 
-vec3 matc_ltc_following(MatcFresnelCoefficients c, vec4 bbar, vec4 ltc, float NdotV,
-                        float roughness, MatcLtcPolygon polygon) {
-  vec3 geometry = matc_ltc_following_geometry(polygon, ltc, NdotV, roughness, bbar.x);
-  return matc_ltc_following_radiance(geometry, bbar, matc_fresnel(c, geometry.y),
-                                     matc_fresnel_preintegrated(c, bbar));
-}
-
+{{following}}
 // Radiance from a quad light of radiance 1: bbar from matc_lut and ltc from matc_ltc, both at
 // their texcoords for (NdotV, roughness).
 vec3 matc_ltc_quad_light(MatcFresnelCoefficients c, vec4 bbar, vec4 ltc, vec3 N, vec3 V, vec3 P,
@@ -224,29 +218,4 @@ vec3 matc_ltc_sphere_light(MatcFresnelCoefficients c, vec4 bbar, vec4 ltc, vec3 
          matc_fresnel_preintegrated(c, bbar);
 }
 
-// The quality level (the lobe's shape and the Fresnel follow the light across the lobe), with
-// the roughness the table texels were read at: a quad light ...
-vec3 matc_ltc_quad_light_following(MatcFresnelCoefficients c, vec4 bbar, vec4 ltc, float roughness,
-                                   vec3 N, vec3 V, vec3 P, vec3 q0, vec3 q1, vec3 q2, vec3 q3) {
-  return matc_ltc_following(
-      c, bbar, ltc, dot(N, V), roughness,
-      matc_ltc_quad_polygon(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3));
-}
-
-// ... a disk light ...
-vec3 matc_ltc_disk_light_following(MatcFresnelCoefficients c, vec4 bbar, vec4 ltc, float roughness,
-                                   vec3 N, vec3 V, vec3 P, vec3 centre, vec3 normal,
-                                   float radius) {
-  return matc_ltc_following(
-      c, bbar, ltc, dot(N, V), roughness,
-      matc_ltc_disk_polygon(matc_ltc_transform(N, V, ltc), P, centre, normal, radius));
-}
-
-// ... and a sphere light.
-vec3 matc_ltc_sphere_light_following(MatcFresnelCoefficients c, vec4 bbar, vec4 ltc,
-                                     float roughness, vec3 N, vec3 V, vec3 P, vec3 centre,
-                                     float radius) {
-  return matc_ltc_following(
-      c, bbar, ltc, dot(N, V), roughness,
-      matc_ltc_sphere_polygon(matc_ltc_transform(N, V, ltc), P, centre, radius));
-}
+{{following_lights}}

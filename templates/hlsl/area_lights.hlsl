@@ -202,13 +202,7 @@ float3 matc_ltc_following_radiance(float3 geometry, float4 bbar, float3 f_light,
   return geometry.x * lerp(bbar.x * f_light, fbar, geometry.z);
 }
 
-float3 matc_ltc_following(MatcFresnelCoefficients c, float4 bbar, float4 ltc, float NdotV,
-                          float roughness, MatcLtcPolygon polygon) {
-  float3 geometry = matc_ltc_following_geometry(polygon, ltc, NdotV, roughness, bbar.x);
-  return matc_ltc_following_radiance(geometry, bbar, matc_fresnel(c, geometry.y),
-                                     matc_fresnel_preintegrated(c, bbar));
-}
-
+{{following}}
 // Radiance from a quad light of radiance 1: bbar from matc_lut and ltc from matc_ltc, both at
 // their texcoords for (NdotV, roughness).
 float3 matc_ltc_quad_light(MatcFresnelCoefficients c, float4 bbar, float4 ltc, float3 N, float3 V, float3 P,
@@ -231,30 +225,4 @@ float3 matc_ltc_sphere_light(MatcFresnelCoefficients c, float4 bbar, float4 ltc,
          matc_fresnel_preintegrated(c, bbar);
 }
 
-// The quality level (the lobe's shape and the Fresnel follow the light across the lobe), with
-// the roughness the table texels were read at: a quad light ...
-float3 matc_ltc_quad_light_following(MatcFresnelCoefficients c, float4 bbar, float4 ltc,
-                                     float roughness, float3 N, float3 V, float3 P, float3 q0,
-                                     float3 q1, float3 q2, float3 q3) {
-  return matc_ltc_following(
-      c, bbar, ltc, dot(N, V), roughness,
-      matc_ltc_quad_polygon(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3));
-}
-
-// ... a disk light ...
-float3 matc_ltc_disk_light_following(MatcFresnelCoefficients c, float4 bbar, float4 ltc,
-                                     float roughness, float3 N, float3 V, float3 P,
-                                     float3 centre, float3 normal, float radius) {
-  return matc_ltc_following(
-      c, bbar, ltc, dot(N, V), roughness,
-      matc_ltc_disk_polygon(matc_ltc_transform(N, V, ltc), P, centre, normal, radius));
-}
-
-// ... and a sphere light.
-float3 matc_ltc_sphere_light_following(MatcFresnelCoefficients c, float4 bbar, float4 ltc,
-                                       float roughness, float3 N, float3 V, float3 P,
-                                       float3 centre, float radius) {
-  return matc_ltc_following(
-      c, bbar, ltc, dot(N, V), roughness,
-      matc_ltc_sphere_polygon(matc_ltc_transform(N, V, ltc), P, centre, radius));
-}
+{{following_lights}}

@@ -209,13 +209,7 @@ fn matc_ltc_following_radiance(geometry: vec3f, bbar: vec4f, f_light: vec3f,
   return geometry.x * mix(bbar.x * f_light, fbar, geometry.z);
 }
 
-fn matc_ltc_following(c: MatcFresnelCoefficients, bbar: vec4f, ltc: vec4f, NdotV: f32,
-                      roughness: f32, polygon: MatcLtcPolygon) -> vec3f {
-  let geometry = matc_ltc_following_geometry(polygon, ltc, NdotV, roughness, bbar.x);
-  return matc_ltc_following_radiance(geometry, bbar, matc_fresnel(c, geometry.y),
-                                     matc_fresnel_preintegrated(c, bbar));
-}
-
+{{following}}
 // Radiance from a quad light of radiance 1: bbar from matc_lut and ltc from matc_ltc, both at
 // their texcoords for (NdotV, roughness).
 fn matc_ltc_quad_light(c: MatcFresnelCoefficients, bbar: vec4f, ltc: vec4f, N: vec3f, V: vec3f,
@@ -238,30 +232,4 @@ fn matc_ltc_sphere_light(c: MatcFresnelCoefficients, bbar: vec4f, ltc: vec4f, N:
          matc_fresnel_preintegrated(c, bbar);
 }
 
-// The quality level (the lobe's shape and the Fresnel follow the light across the lobe), with
-// the roughness the table texels were read at: a quad light ...
-fn matc_ltc_quad_light_following(c: MatcFresnelCoefficients, bbar: vec4f, ltc: vec4f,
-                                 roughness: f32, N: vec3f, V: vec3f, P: vec3f, q0: vec3f,
-                                 q1: vec3f, q2: vec3f, q3: vec3f) -> vec3f {
-  return matc_ltc_following(
-      c, bbar, ltc, dot(N, V), roughness,
-      matc_ltc_quad_polygon(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3));
-}
-
-// ... a disk light ...
-fn matc_ltc_disk_light_following(c: MatcFresnelCoefficients, bbar: vec4f, ltc: vec4f,
-                                 roughness: f32, N: vec3f, V: vec3f, P: vec3f, centre: vec3f,
-                                 normal: vec3f, radius: f32) -> vec3f {
-  return matc_ltc_following(
-      c, bbar, ltc, dot(N, V), roughness,
-      matc_ltc_disk_polygon(matc_ltc_transform(N, V, ltc), P, centre, normal, radius));
-}
-
-// ... and a sphere light.
-fn matc_ltc_sphere_light_following(c: MatcFresnelCoefficients, bbar: vec4f, ltc: vec4f,
-                                   roughness: f32, N: vec3f, V: vec3f, P: vec3f, centre: vec3f,
-                                   radius: f32) -> vec3f {
-  return matc_ltc_following(
-      c, bbar, ltc, dot(N, V), roughness,
-      matc_ltc_sphere_polygon(matc_ltc_transform(N, V, ltc), P, centre, radius));
-}
+{{following_lights}}

@@ -6,8 +6,9 @@
 // RGBA32F target read back as floats. Textured metals too: coefficients
 // from the coefficient table (an RG32F texture) for a few per-channel (r, g). Everything is
 // compared with the CPU runtime (`matc eval`) at matc validate's tolerances: F and the closed form
-// 1e-5, Fbar and anything through the coefficient table 1e-4.
-//   node check-webgl2.mjs MATC MATERIALS_DIR
+// 1e-5, Fbar and anything through the coefficient table 1e-4. With --basis auto, a per-material
+// build: each material through its own basis' functions and its layer of the wider table.
+//   node check-webgl2.mjs MATC MATERIALS_DIR [--basis auto]
 import { mkdtempSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
@@ -18,7 +19,8 @@ import {
   largestDifference, validationQueries,
 } from "./shader-cases.mjs";
 
-const [matc, materialsDir] = process.argv.slice(2);
+const [matc, materialsDir, ...rest] = process.argv.slice(2);
+const basisOptions = rest[0] === "--basis" ? ["--basis", rest[1]] : [];
 
 // The page: uploads the table and the queries, compiles one program per case, renders, reads
 // back and writes the pixels (base64 floats) into <pre id="result"> as JSON.
@@ -46,7 +48,7 @@ try {
     return t;
   };
   const count = data.queries.length / 4;
-  texture(0, data.lutSize, data.lutSize, floats(data.lut), gl.LINEAR);
+  texture(0, data.lutWidth, data.lutHeight, floats(data.lut), gl.LINEAR);
   texture(1, count, 1, new Float32Array(data.queries), gl.NEAREST);
   // The coefficient table's (c_2, c_3) texels, widened to RGBA.
   const table = floats(data.table);
@@ -110,7 +112,8 @@ document.getElementById("result").textContent = JSON.stringify(out);
 // material's constant or the coefficient table's result.
 const kPrelude = "#version 300 es\nprecision highp float;\nprecision highp int;\n" +
                  "precision highp sampler2D;\n";
-const main = (coefficients) => `
+// `suffix`: the material's basis' functions in a per-material build ("_f82"), else none.
+const main = (coefficients, suffix = "") => `
 uniform sampler2D matc_lut;
 uniform sampler2D matc_queries;
 uniform sampler2D matc_coefficient_table;
@@ -124,10 +127,10 @@ void main() {
   vec3 g = matc_edge_tint;
   MatcFresnelCoefficients c = ${coefficients};
   vec3 value = pixel.y == 0
-      ? matc_fresnel(c, query.x)
+      ? matc_fresnel${suffix}(c, query.x)
       : matc_fresnel_preintegrated(c, pixel.y == 1
-            ? texture(matc_lut, matc_lut_texcoord(query.y, query.z))
-            : matc_preintegrated_basis_analytic(query.y, query.z));
+            ? texture(matc_lut, matc_lut_texcoord${suffix}(query.y, query.z))
+            : matc_preintegrated_basis_analytic${suffix}(query.y, query.z));
   matc_result = vec4(value, 1.0);
 }
 `;
@@ -159,10 +162,17 @@ try {
   const queries = validationQueries();
   const { materials, textured, library } = compileAndEvaluate(
       matc, materialsDir, join(dir, "out"), "glsl",
-      ["--lut-precision", "f32", "--coefficient-table-precision", "f32"], queries);
+      ["--lut-precision", "f32", "--coefficient-table-precision", "f32", ...basisOptions], queries);
+  const layers = JSON.parse(readFileSync(join(dir, "out", "matc_lut.bin.json"), "utf8")).layers;
+  const suffix = (basis) => (layers && basis !== layers[0].basis ? `_${basis}` : "");
   const cases = materials.map((m) => ({
     name: m.name, F: m.F, Fbar: m.Fbar, FbarAnalytic: m.FbarAnalytic, tolerance: kFresnelTolerance,
-    source: m.snippet + (m.coated ? coatedMain(m.name) : main(`matc_coefficients_${m.name}`)) }));
+    source: m.snippet + (m.coated ? coatedMain(m.name)
+                                  : main(`matc_coefficients_${m.name}`, suffix(m.basis))) }));
+  if (basisOptions.length) {
+    const bases = new Set(materials.map((m) => m.basis));
+    check(bases.size > 1, `--basis auto gave every material one basis (${[...bases]})`);
+  }
   for (const metal of textured) {
     cases.push({ name: metal.name, F: metal.F, Fbar: metal.Fbar, FbarAnalytic: metal.FbarAnalytic,
                  tolerance: kPreintegratedTolerance,
@@ -174,7 +184,8 @@ try {
   const data = {
     prelude: kPrelude, library, queries: Array.from(queries.flat),
     cases: cases.map(({ name, source, uniforms }) => ({ name, source, uniforms })),
-    lut: lut.toString("base64"), lutSize: Math.round(Math.sqrt(lut.length / 16)),
+    lut: lut.toString("base64"), lutHeight: Math.round(Math.sqrt(lut.length / 16 / (layers?.length ?? 1))),
+    lutWidth: Math.round(Math.sqrt(lut.length / 16 / (layers?.length ?? 1))) * (layers?.length ?? 1),
     table: table.toString("base64"), tableSize: Math.round(Math.sqrt(table.length / 8)),
   };
   const html = "<!doctype html><html><body><pre id=\"result\">not run</pre>\n" +

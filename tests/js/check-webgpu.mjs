@@ -10,7 +10,9 @@
 // - glTF's metal-rough mix of gold with glTF's dielectric (matc_metal_rough);
 // and everything is compared with the CPU runtime (`matc eval`) at matc validate's tolerances.
 // examples/web/specular.wgsl (docs/shaders.md shows it) must give Fbar with energy compensation,
-// and the library with an embedded table (--embed-lut) must compile too.
+// and the library with an embedded table (--embed-lut) must compile too. A per-material build
+// (--basis auto) runs every bare example through its basis' functions and its layer of the
+// side-by-side table, and the F82-tint example under a quad light (its _f82 area-light function).
 //   VK_ICD_FILENAMES=/usr/lib/chromium/vk_swiftshader_icd.json \
 //     node check-webgpu.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
 import { mkdtempSync, readFileSync, rmSync } from "node:fs";
@@ -54,12 +56,13 @@ ${body}}
 
 // Three results per query: F(mu), Fbar(NdotV, roughness) through the table and Fbar from the
 // table's closed form, for the coefficients `coefficients`.
-const fresnelKernel = (coefficients) => perQueryKernel(`  let c = ${coefficients};
-  let bbar = textureSampleLevel(matc_lut, matc_linear, matc_lut_texcoord(query.y, query.z), 0.0);
-  matc_results[3u * i] = vec4f(matc_fresnel(c, query.x), 1.0);
+// `suffix`: a per-material build's functions of the material's basis ("_f82"), else none.
+const fresnelKernel = (coefficients, suffix = "") => perQueryKernel(`  let c = ${coefficients};
+  let bbar = textureSampleLevel(matc_lut, matc_linear, matc_lut_texcoord${suffix}(query.y, query.z), 0.0);
+  matc_results[3u * i] = vec4f(matc_fresnel${suffix}(c, query.x), 1.0);
   matc_results[3u * i + 1u] = vec4f(matc_fresnel_preintegrated(c, bbar), 1.0);
   matc_results[3u * i + 2u] = vec4f(matc_fresnel_preintegrated(
-                                        c, matc_preintegrated_basis_analytic(query.y, query.z)), 1.0);`);
+                                        c, matc_preintegrated_basis_analytic${suffix}(query.y, query.z)), 1.0);`);
 
 // The same for coated material `name` through its own functions: both lobes summed, the coat's
 // texel sampled at the coat's roughness.
@@ -76,11 +79,11 @@ const coatedKernel = (name) => perQueryKernel(`  let bbar = textureSampleLevel(m
 
 // One result per query: a quad light of radiance 1 seen from the origin (`light` names the
 // one-shape function or the quality level's, which also takes the roughness).
-const quadLightKernel = (coefficients, quad, light = "matc_ltc_quad_light") => {
-  const roughnessArgument = light.endsWith("_following") ? "query.z, " : "";
+const quadLightKernel = (coefficients, quad, light = "matc_ltc_quad_light", suffix = "") => {
+  const roughnessArgument = light.includes("_following") ? "query.z, " : "";
   const vertices = quad.split(";").map((v) => `vec3f(${v.split(",").map(Number).map((x) => x.toFixed(6)).join(", ")})`);
   return perQueryKernel(`  let V = vec3f(sqrt(max(1.0 - query.y * query.y, 0.0)), 0.0, query.y);
-  let bbar = textureSampleLevel(matc_lut, matc_linear, matc_lut_texcoord(query.y, query.z), 0.0);
+  let bbar = textureSampleLevel(matc_lut, matc_linear, matc_lut_texcoord${suffix}(query.y, query.z), 0.0);
   let ltc = textureSampleLevel(matc_ltc, matc_linear, matc_ltc_texcoord(query.y, query.z), 0.0);
   matc_results[i] = vec4f(${light}(${coefficients}, bbar, ltc, ${roughnessArgument}vec3f(0.0, 0.0, 1.0),
                                   V, vec3f(0.0), ${vertices.join(", ")}), 1.0);
@@ -103,12 +106,14 @@ try {
   const cases = compileAndEvaluate(matc, materialsDir, out, "wgsl", options, queries,
                                    ["ltc", "json"]);
 
-  const texture = (file, format, texelBytes) => {
-    const bytes = readFileSync(join(out, file));
-    const size = Math.round(Math.sqrt(bytes.length / texelBytes));
-    const t = device.createTexture({ size: [size, size], format,
+  // A table file as a texture: square, or `layers` squares side by side.
+  const texture = (file, format, texelBytes, directory = out, layers = 1) => {
+    const bytes = readFileSync(join(directory, file));
+    const size = Math.round(Math.sqrt(bytes.length / texelBytes / layers));
+    const t = device.createTexture({ size: [size * layers, size], format,
                                      usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
-    device.queue.writeTexture({ texture: t }, bytes, { bytesPerRow: size * texelBytes }, [size, size]);
+    device.queue.writeTexture({ texture: t }, bytes, { bytesPerRow: size * layers * texelBytes },
+                              [size * layers, size]);
     return t;
   };
   const textures = [texture("matc_lut.bin", "rgba16float", 8),
@@ -300,6 +305,44 @@ fn main(@builtin(global_invocation_id) id: vec3u) {
                               "let bbar = matc_preintegrated_basis_embedded(query.y, query.z);"),
                    queries.flat.subarray(0, 256), 2);
     check(true, "matc_coefficients_from_f0 compiles");
+  });
+  // A per-material build: the same checks through each material's basis and layer.
+  await attempt("per-material build", async () => {
+    const autoOptions = [...options, "--basis", "auto"];
+    const autoOut = join(dir, "auto");
+    const auto = compileAndEvaluate(matc, materialsDir, autoOut, "wgsl", autoOptions, queries,
+                                    ["ltc", "json"]);
+    const layers = JSON.parse(readFileSync(join(autoOut, "matc_lut.bin.json"), "utf8")).layers;
+    check(layers?.length === 2, "a per-material build's table has two layers");
+    const oneBasisTable = textures[0];
+    textures[0] = texture("matc_lut.bin", "rgba16float", 8, autoOut, layers.length);
+    const suffix = (basis) => (basis === layers[0].basis ? "" : `_${basis}`);
+    for (const material of auto.materials.filter((m) => !m.coated)) {
+      const values = await dispatch(
+        auto.library + material.snippet +
+          fresnelKernel(`matc_coefficients_${material.name}`, suffix(material.basis)),
+        queries.flat, 3);
+      report(`${material.name} (--basis auto: ${material.basis})`,
+             [["F", largestDifference(values, material.F, 12, 0)],
+              ["Fbar", largestDifference(values, material.Fbar, 12, 4)],
+              ["Fbar_analytic", largestDifference(values, material.FbarAnalytic, 12, 8)]],
+             { F: kFresnelTolerance, Fbar: kPreintegratedTolerance, Fbar_analytic: kClosedFormTolerance });
+    }
+    const tinted = auto.materials.find((m) => m.basis !== layers[0].basis);
+    check(tinted !== undefined, "--basis auto gave some example a second basis");
+    const quad = kQuads[1];
+    const expected = JSON.parse(run(matc, [
+      "eval", join(materialsDir, `${tinted.name}.json`), ...autoOptions, "--ndotv", ndotv.join(","),
+      "--roughness", roughness.join(","), "--quad-light", quad, "--no-reference"]));
+    const following = await dispatch(
+      auto.library + tinted.snippet +
+        quadLightKernel(`matc_coefficients_${tinted.name}`, quad,
+                        `matc_ltc_quad_light_following${suffix(tinted.basis)}`, suffix(tinted.basis)),
+      lightQueries, 1);
+    report(`${tinted.name} (--basis auto), quad light ${quad}`,
+           [["L_following", largestDifference(following, expected.L_ltc_following, 4, 0)]],
+           { L_following: kPreintegratedTolerance });
+    textures[0] = oneBasisTable;
   });
   check(errors.length === 0, `WebGPU errors: ${errors.join("; ")}`);
 } finally {

@@ -63,7 +63,7 @@ export function compileAndEvaluate(matc, materialsDir, out, language, options, q
   const materials = files.map((file) => {
     const evaluated = evaluate([file]);
     // A coated material's F and Fbar are its two lobes' sum (docs/coating.md).
-    return { name: evaluated.name, F: evaluated.F, Fbar: evaluated.Fbar,
+    return { name: evaluated.name, basis: evaluated.basis, F: evaluated.F, Fbar: evaluated.Fbar,
              FbarAnalytic: evaluated.Fbar_analytic, coated: "coat" in evaluated,
              snippet: readFileSync(join(out, `${evaluated.name}.${language}`), "utf8") };
   });

@@ -209,6 +209,13 @@ std::string analytic_lut_source(ShaderLanguage language, runtime::BasisKind basi
         analytic_lut_fields_source(language, runtime::shipped_analytic_lut(basis))}});
 }
 
+// The area-light functions that evaluate F (the quality level's, whose Fresnel follows the light):
+// the first basis' (`suffix` empty) or a further layer's, with `suffix` on their names.
+std::string area_light_following_source(ShaderLanguage language, std::string_view suffix,
+                                        std::string_view part) {
+  return fill_template(template_path(language, part), {{"suffix", std::string(suffix)}});
+}
+
 std::string area_light_source(ShaderLanguage language, std::size_t ltc_size) {
   constexpr double kSides = static_cast<double>(runtime::kDiskLightSides);
   const double step = 2.0 * std::numbers::pi / kSides;
@@ -218,7 +225,10 @@ std::string area_light_source(ShaderLanguage language, std::size_t ltc_size) {
        {"disk_sides", std::to_string(runtime::kDiskLightSides)},
        {"disk_angle_step", float_literal(step)},
        {"disk_circumradius_scale",
-        float_literal(std::sqrt(2.0 * std::numbers::pi / (kSides * std::sin(step))))}});
+        float_literal(std::sqrt(2.0 * std::numbers::pi / (kSides * std::sin(step))))},
+       {"following", area_light_following_source(language, "", "area_lights_following")},
+       {"following_lights",
+        area_light_following_source(language, "", "area_lights_following_lights")}});
 }
 
 // matc_lut_texcoord: over the whole table, or over its first layer of several.
@@ -248,8 +258,9 @@ std::string basis_layers_source(ShaderLanguage language, const ShaderLibraryOpti
           options.analytic_lut ? "\n" + analytic_lut_source(language, basis, suffix) : ""},
          {"area_light",
           options.area_light_functions
-              ? "\n" + fill_template(template_path(language, "basis_layer_area_light"),
-                                     {{"basis", name}})
+              ? "\n" + area_light_following_source(language, suffix, "area_lights_following") +
+                    "\n" +
+                    area_light_following_source(language, suffix, "area_lights_following_lights")
               : ""}});
   }
   return out;

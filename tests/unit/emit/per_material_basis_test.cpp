@@ -99,7 +99,8 @@ TEST(PerMaterialBuild, EachMaterialIsCompiledAgainstItsBasisAndItsSnippetCallsIt
     EXPECT_NE(library.find("matc_fresnel_f82"), std::string::npos);
     EXPECT_NE(library.find("matc_lut_texcoord_f82"), std::string::npos);
     EXPECT_NE(library.find("matc_preintegrated_basis_analytic_f82"), std::string::npos);
-    EXPECT_NE(library.find("matc_ltc_following_f82"), std::string::npos);
+    EXPECT_NE(library.find("matc_ltc_following_f82("), std::string::npos);
+    EXPECT_NE(library.find("matc_ltc_quad_light_following_f82("), std::string::npos);
     const std::string snippet = build.material_source(language, compiled);
     EXPECT_TRUE(snippet.find("matc_fresnel_sum_f82(") != std::string::npos ||
                 snippet.find("matc_fresnel_f82(") != std::string::npos)

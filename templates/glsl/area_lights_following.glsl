@@ -1,6 +1,6 @@
-vec3 matc_ltc_following_{{basis}}(MatcFresnelCoefficients c, vec4 bbar, vec4 ltc, float NdotV,
+vec3 matc_ltc_following{{suffix}}(MatcFresnelCoefficients c, vec4 bbar, vec4 ltc, float NdotV,
                         float roughness, MatcLtcPolygon polygon) {
   vec3 geometry = matc_ltc_following_geometry(polygon, ltc, NdotV, roughness, bbar.x);
-  return matc_ltc_following_radiance(geometry, bbar, matc_fresnel_{{basis}}(c, geometry.y),
+  return matc_ltc_following_radiance(geometry, bbar, matc_fresnel{{suffix}}(c, geometry.y),
                                      matc_fresnel_preintegrated(c, bbar));
 }
