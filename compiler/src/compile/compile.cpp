@@ -274,9 +274,9 @@ void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics
   } else if (f82_material) {
     advice =
         "a tint well below 1 dips F82-tint's curve near grazing in a shape a basis fitted to "
-        "conductors does not follow (docs/accuracy.md): compile with --basis f82, which holds "
-        "every F82-tint curve, or raise the tint, or give the metal's n, k (\"ior\" or "
-        "\"spectral\")";
+        "conductors does not follow (docs/accuracy.md): compile with --basis auto, which gives "
+        "it the f82 basis that holds every F82-tint curve (or --basis f82 for the whole build), "
+        "or raise the tint, or give the metal's n, k (\"ior\" or \"spectral\")";
   } else {
     advice = "check the input values; curves this far from measured metals fit poorly";
   }

@@ -31,11 +31,13 @@ SharedTables::SharedTables(const SharedTableOptions& options)
 const SharedTables::Baked& SharedTables::baked() const {
   std::call_once(lazy_->once, [this] {
     Baked baked;
+    std::vector<runtime::BasisView> bases;
+    for (const runtime::BasisKind basis : options_.layers)
+      bases.push_back(runtime::shipped_basis(basis));
+    baked.layers = bake_luts(bases, options_.lut);
     std::vector<const Lut*> stored;
-    for (const runtime::BasisKind basis : options_.layers) {
-      baked.layers.push_back(bake_lut(runtime::shipped_basis(basis), options_.lut));
-      baked.stored.push_back(stored_as(baked.layers.back().lut, options_.lut_precision));
-    }
+    for (const BakedLut& layer : baked.layers)
+      baked.stored.push_back(stored_as(layer.lut, options_.lut_precision));
     for (const Lut& layer : baked.stored)
       stored.push_back(&layer);
     baked.atlas = side_by_side(stored);
@@ -58,9 +60,8 @@ const Lut& SharedTables::stored_lut(runtime::BasisKind basis) const {
 
 LutReference SharedTables::lut_reference() const {
   const bool layered = options_.layers.size() > 1;
-  const auto known = layered ? std::optional<std::string_view>()
-                             : default_lut_hash(options_.layers.front(), options_.format,
-                                                options_.lut_precision, options_.lut);
+  const auto known = default_lut_hash(options_.layers.front(), options_.format,
+                                      options_.lut_precision, options_.lut, layered);
   return {
       shared_file_name(OutputKind::lut, options_.format), options_.lut.size,
       known ? std::string(*known) : baked().hash,

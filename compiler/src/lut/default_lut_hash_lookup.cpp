@@ -7,12 +7,13 @@
 namespace matc {
 
 std::optional<std::string_view> default_lut_hash(runtime::BasisKind basis, LutFormat format,
-                                                 LutPrecision precision,
-                                                 const LutOptions& options) {
+                                                 LutPrecision precision, const LutOptions& options,
+                                                 bool layered) {
   if (options.size != kDefaultLutSize || options.samples != kDefaultLutSamples) return std::nullopt;
   static const std::vector<DefaultLutHash> hashes = checked_in_default_lut_hashes();
   for (const DefaultLutHash& entry : hashes) {
-    if (entry.basis == basis && entry.format == format && entry.precision == precision)
+    if (entry.basis == basis && entry.format == format && entry.precision == precision &&
+        entry.layered == layered)
       return std::string_view(entry.hash);
   }
   return std::nullopt;
@@ -26,6 +27,24 @@ std::vector<DefaultLutHash> compute_default_lut_hashes() {
       for (const LutPrecision precision : kLutPrecisions)
         hashes.push_back(
             {basis, format, precision, hash_of_bytes(encode_lut(baked, format, precision))});
+    }
+  }
+  std::vector<runtime::BasisView> bases;
+  for (const runtime::BasisKind basis : runtime::kPerMaterialBases)
+    bases.push_back(runtime::shipped_basis(basis));
+  const std::vector<BakedLut> layers = bake_luts(bases, {});
+  for (const LutPrecision precision : kLutPrecisions) {
+    std::vector<Lut> stored;
+    for (const BakedLut& layer : layers)
+      stored.push_back(stored_as(layer.lut, precision));
+    std::vector<const Lut*> pointers;
+    for (const Lut& layer : stored)
+      pointers.push_back(&layer);
+    const LutAtlas atlas = side_by_side(pointers);
+    for (const LutFormat format : kLutFormats) {
+      if (format == LutFormat::header) continue;
+      hashes.push_back({runtime::kPerMaterialBases.front(), format, precision,
+                        hash_of_bytes(encode_lut_atlas(atlas, format, precision)), true});
     }
   }
   return hashes;
@@ -43,9 +62,10 @@ std::string default_lut_hashes_source(const std::vector<DefaultLutHash>& hashes)
       "  return {{\n",
       kVersion, kDefaultLutSize, kDefaultLutSize, kDefaultLutSamples);
   for (const DefaultLutHash& entry : hashes) {
-    out += fmt::format("    {{BasisKind::{}, LutFormat::{}, LutPrecision::{}, \"{}\"}},\n",
-                       runtime::basis_name(entry.basis), lut_format_name(entry.format),
-                       lut_precision_name(entry.precision), entry.hash);
+    out +=
+        fmt::format("    {{BasisKind::{}, LutFormat::{}, LutPrecision::{}, \"{}\"{}}},\n",
+                    runtime::basis_name(entry.basis), lut_format_name(entry.format),
+                    lut_precision_name(entry.precision), entry.hash, entry.layered ? ", true" : "");
   }
   out += "  };\n}\n\n}  // namespace matc\n";
   return out;

@@ -32,11 +32,19 @@ Lut stored_as(Lut lut, LutPrecision precision) {
 }
 
 BakedLut bake_lut(const runtime::BasisView& basis, const LutOptions& options) {
-  BakedLut baked;
-  baked.lut = preintegrate_lut(basis, options);
-  baked.basis = basis.kind;
-  baked.average_albedo = average_albedo(baked.lut);
-  baked.basis_averages = basis_hemispherical_averages(basis);
+  return std::move(bake_luts({&basis, 1}, options).front());
+}
+
+std::vector<BakedLut> bake_luts(std::span<const runtime::BasisView> bases,
+                                const LutOptions& options) {
+  std::vector<Lut> tables = preintegrate_luts(bases, options);
+  std::vector<BakedLut> baked(bases.size());
+  for (std::size_t b = 0; b < bases.size(); ++b) {
+    baked[b].lut = std::move(tables[b]);
+    baked[b].basis = bases[b].kind;
+    baked[b].average_albedo = average_albedo(baked[b].lut);
+    baked[b].basis_averages = basis_hemispherical_averages(bases[b]);
+  }
   return baked;
 }
 

@@ -27,6 +27,9 @@ struct BakedLut {
 };
 
 BakedLut bake_lut(const runtime::BasisView& basis, const LutOptions& options);
+// The same for several bases at once (preintegrate_luts: the GGX samples shared).
+std::vector<BakedLut> bake_luts(std::span<const runtime::BasisView> bases,
+                                const LutOptions& options);
 
 // The table as a file of this precision stores it (texels rounded through half for f16), so CPU
 // evaluation can sample exactly what a renderer loads.
