@@ -128,7 +128,8 @@ function quadLightsAtProbes(matc, args, ndotv, roughness, rect) {
 
 // Compiles what the pages load into dir: out/ (the probe materials, every table in f32), baked/
 // (`matc bake` of kBaked, f32), and the builds that must be refused: json-only/ (no shader
-// library, no table), mixed-table/ (the extended basis' table beside powers coefficients) and
+// library, no table), mixed-table/ (the extended basis' table beside powers coefficients),
+// per-material/ (a --basis auto build) and
 // out/beryllium_extended.json (extended-basis coefficients beside powers tables), and
 // out/copper_lacquered_without_snippet.json (a coated material without its shader snippet).
 export function prepareProbeBuilds(matc, materialsDir, dir) {
@@ -144,6 +145,9 @@ export function prepareProbeBuilds(matc, materialsDir, dir) {
   const extended = join(dir, "extended");
   run(matc, ["-q", "-o", extended, "--basis", "extended", "--emit", "glsl,json,lut",
              "--lut-precision", "f32", materialFiles[1]]);
+  // A per-material build (--basis auto), which the integrations refuse so far.
+  run(matc, ["-q", "-o", join(dir, "per-material"), "--basis", "auto", "--emit", "glsl,wgsl,json,lut",
+             materialFiles[1]]);
   cpSync(out, join(dir, "mixed-table"), { recursive: true });
   for (const file of ["matc_lut.ktx2", "matc_lut.ktx2.json"]) {
     cpSync(join(extended, file), join(dir, "mixed-table", file));
@@ -152,7 +156,7 @@ export function prepareProbeBuilds(matc, materialsDir, dir) {
   // A coated material whose snippet the build lacks.
   cpSync(join(out, `${kProbeCoated}.json`), join(out, `${kProbeCoated}_without_snippet.json`));
   return { out, roots: { out, baked: join(dir, "baked"), "json-only": join(dir, "json-only"),
-                         "mixed-table": join(dir, "mixed-table") } };
+                         "mixed-table": join(dir, "mixed-table"), "per-material": join(dir, "per-material") } };
 }
 
 // The renders a page makes: every material at every roughness under each light, and under the rect
@@ -319,6 +323,7 @@ export const kFailures = {
   missing_directory: "is this a matc output directory",
   no_glsl_no_lut: "output (the shader library); compile with --emit",
   table_of_another_basis: "a table of basis extended",
+  per_material_build: "a per-material build (matc --basis auto)",
   coefficients_of_another_basis: "do not belong together",
   unknown_material: "is unobtainium one of this build's materials",
   engine_changed: "changed (0 matches for the text the patch",

@@ -95,6 +95,13 @@ export async function loadMatcBuildFiles(url, { language = "glsl" } = {}) {
   if (manifest.matc_version !== kMatcVersion) {
     throw new MatcWebError(`${manifestUrl}: written by matc ${manifest.matc_version}; this integration reads matc ${kMatcVersion}`);
   }
+  if (manifest.basis === "auto") {
+    // A table of several layers and materials of several bases (docs/lut.md): the integrations
+    // read one basis' build so far (issue #66).
+    throw new MatcWebError(`${manifestUrl}: a per-material build (matc --basis auto), whose table holds a ` +
+                           "layer per basis; the web integrations read a one-basis build so far: compile " +
+                           "with --basis NAME (powers, the default, or f82 for F82-tint looks)");
+  }
   const emitted = new Set(manifest.emit ?? []);
   for (const [needed, why] of [[language, "the shader library"], ["lut", "the preintegrated table"],
                                ["json", "the materials' coefficients"]]) {
