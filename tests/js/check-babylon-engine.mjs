@@ -7,7 +7,7 @@
 // (tests/js/engine-probes.mjs has the scene
 // and the CPU side). Then the inputs that must fail, as for three.js, with a Babylon whose patched
 // shader changed.
-//   node check-babylon-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
+//   node check-babylon-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR [--compile-in-page | --basis-auto]
 import { readFileSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -53,8 +53,8 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
                          edgeTintMap: constant(scene, config.textured.edgeTint) }),
       baked: async () => ({ baked: { c2Map: await baked(scene, "probe_c2.ktx2"), c3Map: await baked(scene, "probe_c3.ktx2"),
                                      f0Map: await baked(scene, "probe_f0.ktx2") } }),
-      schlick: () => ({ schlick: { basis: build.basis, zeroF0Coefficients: config.schlick.zeroF0Coefficients } }),
-      f0table: () => ({ material: { name: "f0_table_probe", basis: build.basis, coefficients: config.f0Table.coefficients[0], coat: null },
+      schlick: () => ({ schlick: { basis: config.schlick.basis, zeroF0Coefficients: config.schlick.zeroF0Coefficients } }),
+      f0table: () => ({ material: { name: "f0_table_probe", basis: config.f0Table.basis, coefficients: config.f0Table.coefficients[0], coat: null },
                       f0Table: { coefficients: config.f0Table.coefficients } }),
       [config.f0TableCoated.name]: () => coatedTable,
     };

@@ -12,7 +12,7 @@
 // inputs that must fail: a build without
 // the files the integration needs, a table of another basis than the build or the coefficients,
 // and a three.js whose patched chunk changed; each must throw and write to the console.
-//   node check-three-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
+//   node check-three-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR [--compile-in-page | --basis-auto]
 import { modulePage, threeVersion } from "./browser-page.mjs";
 import { kProbeSize, kThreeJsProbeTerms, runProbeCheck } from "./engine-probes.mjs";
 
@@ -48,8 +48,8 @@ import { coatedF0TableSource, probeBuild } from "/checks/page-probe-build.mjs";
                        edgeTintMap: constant(config.textured.edgeTint) };
   sources.baked = { baked: { c2Map: await baked("probe_c2.ktx2"), c3Map: await baked("probe_c3.ktx2"),
                              f0Map: await baked("probe_f0.ktx2") } };
-  sources.schlick = { schlick: { basis: build.basis, zeroF0Coefficients: config.schlick.zeroF0Coefficients } };
-  sources.f0table = { material: { name: "f0_table_probe", basis: build.basis, coefficients: config.f0Table.coefficients[0], coat: null },
+  sources.schlick = { schlick: { basis: config.schlick.basis, zeroF0Coefficients: config.schlick.zeroF0Coefficients } };
+  sources.f0table = { material: { name: "f0_table_probe", basis: config.f0Table.basis, coefficients: config.f0Table.coefficients[0], coat: null },
                       f0Table: { coefficients: config.f0Table.coefficients } };
   // The coated F0-table metal, at the material's colour too.
   sources[config.f0TableCoated.name] = await coatedF0TableSource(build, config);

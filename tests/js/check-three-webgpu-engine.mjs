@@ -6,7 +6,7 @@
 // table, a `matc bake` result and a Schlick metal of the material's colour, against the CPU
 // runtime to 1e-4. WebGPU's adapter and device do not settle under Chromium's virtual time: the
 // page runs in real time and posts its result.
-//   node check-three-webgpu-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
+//   node check-three-webgpu-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR [--compile-in-page | --basis-auto]
 import { modulePage, threeVersion } from "./browser-page.mjs";
 import { kProbeSize, kThreeJsProbeTerms, runProbeCheck } from "./engine-probes.mjs";
 
@@ -43,8 +43,8 @@ import { coatedF0TableSource, probeBuild } from "/checks/page-probe-build.mjs";`
   const sources = {
     textured: { reflectivityMap: constant(config.textured.reflectivity), edgeTintMap: constant(config.textured.edgeTint) },
     baked: { baked: { c2Map: await baked("probe_c2.ktx2"), c3Map: await baked("probe_c3.ktx2"), f0Map: await baked("probe_f0.ktx2") } },
-    schlick: { schlick: { basis: build.basis, zeroF0Coefficients: config.schlick.zeroF0Coefficients } },
-    f0table: { material: { name: "f0_table_probe", basis: build.basis, coefficients: config.f0Table.coefficients[0], coat: null },
+    schlick: { schlick: { basis: config.schlick.basis, zeroF0Coefficients: config.schlick.zeroF0Coefficients } },
+    f0table: { material: { name: "f0_table_probe", basis: config.f0Table.basis, coefficients: config.f0Table.coefficients[0], coat: null },
                       f0Table: { coefficients: config.f0Table.coefficients } },
   };
   // The coated F0-table metal, at the material's colour too.

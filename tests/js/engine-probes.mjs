@@ -65,6 +65,11 @@ const kF0TableCoated = { name: "f0_table_coated_probe", coat: { weight: 0.7, ior
                                 factor: [0.3, 0.3, 0.3] };
 const kF0TableCoatedMaterial = (name, f0) => ({ ...kF0TableMaterial(name, f0), coat: kF0TableCoated.coat });
 
+// ["--basis", "auto"] for a per-material build (runProbeCheck's --basis-auto), else nothing: what
+// every compile and evaluation of the probe materials adds (the builds that must be refused keep
+// their own options).
+let gBasisOptions = [];
+
 // Vector helpers (double precision; the GPU's float32 stays well within the tolerance).
 export const sub = (a, b) => a.map((x, i) => x - b[i]);
 export const add = (a, b) => a.map((x, i) => x + b[i]);
@@ -110,7 +115,7 @@ const list = (values) => values.join(",");
 // Fbar at (NdotV, roughness) and F at the point light's v.h (`terms`).
 function evaluateAtProbes(matc, args, ndotv, roughness, terms) {
   return JSON.parse(run(matc, [
-    "eval", ...args, "--lut-precision", "f32", "--no-reference", "--ndotv", list(ndotv),
+    "eval", ...args, ...gBasisOptions, "--lut-precision", "f32", "--no-reference", "--ndotv", list(ndotv),
     "--roughness", list(ndotv.map(() => roughness)), "--mu", list(terms.map((t) => t.vdoth))]));
 }
 
@@ -121,21 +126,20 @@ function quadLightsAtProbes(matc, args, ndotv, roughness, rect) {
   return kProbePixels.map((pixel, i) => {
     const quad = rect.corners.map((corner) => toShadingFrame(corner, pixel).join(",")).join(";");
     return JSON.parse(run(matc, [
-      "eval", ...args, "--lut-precision", "f32", "--ndotv", String(ndotv[i]),
+      "eval", ...args, ...gBasisOptions, "--lut-precision", "f32", "--ndotv", String(ndotv[i]),
       "--roughness", String(roughness), "--quad-light", quad, "--no-reference"]));
   });
 }
 
 // Compiles what the pages load into dir: out/ (the probe materials, every table in f32), baked/
 // (`matc bake` of kBaked, f32), and the builds that must be refused: json-only/ (no shader
-// library, no table), mixed-table/ (the extended basis' table beside powers coefficients),
-// per-material/ (a --basis auto build) and
+// library, no table), mixed-table/ (the extended basis' table beside powers coefficients) and
 // out/beryllium_extended.json (extended-basis coefficients beside powers tables), and
 // out/copper_lacquered_without_snippet.json (a coated material without its shader snippet).
 export function prepareProbeBuilds(matc, materialsDir, dir) {
   const out = join(dir, "out");
   const materialFiles = [...kProbeMaterials, kProbeCoated].map((name) => join(materialsDir, `${name}.json`));
-  run(matc, ["-q", "-o", out, "--emit", "glsl,wgsl,json,lut,ltc,coefficient-table",
+  run(matc, ["-q", "-o", out, "--emit", "glsl,wgsl,json,lut,ltc,coefficient-table", ...gBasisOptions,
              "--lut-precision", "f32", "--coefficient-table-precision", "f32", ...materialFiles,
              f0TableCoatedFile(join(dir, "f0_table_coated_factor"), kF0TableCoated.factor)]);
   run(matc, ["bake", "-q", "--reflectivity", kBaked.reflectivity.join(","), "--edge-tint",
@@ -145,9 +149,6 @@ export function prepareProbeBuilds(matc, materialsDir, dir) {
   const extended = join(dir, "extended");
   run(matc, ["-q", "-o", extended, "--basis", "extended", "--emit", "glsl,json,lut",
              "--lut-precision", "f32", materialFiles[1]]);
-  // A per-material build (--basis auto), which the integrations refuse so far.
-  run(matc, ["-q", "-o", join(dir, "per-material"), "--basis", "auto", "--emit", "glsl,wgsl,json,lut",
-             materialFiles[1]]);
   cpSync(out, join(dir, "mixed-table"), { recursive: true });
   for (const file of ["matc_lut.ktx2", "matc_lut.ktx2.json"]) {
     cpSync(join(extended, file), join(dir, "mixed-table", file));
@@ -156,7 +157,7 @@ export function prepareProbeBuilds(matc, materialsDir, dir) {
   // A coated material whose snippet the build lacks.
   cpSync(join(out, `${kProbeCoated}.json`), join(out, `${kProbeCoated}_without_snippet.json`));
   return { out, roots: { out, baked: join(dir, "baked"), "json-only": join(dir, "json-only"),
-                         "mixed-table": join(dir, "mixed-table"), "per-material": join(dir, "per-material") } };
+                         "mixed-table": join(dir, "mixed-table") } };
 }
 
 // The renders a page makes: every material at every roughness under each light, and under the rect
@@ -323,7 +324,6 @@ export const kFailures = {
   missing_directory: "is this a matc output directory",
   no_glsl_no_lut: "output (the shader library); compile with --emit",
   table_of_another_basis: "a table of basis extended",
-  per_material_build: "a per-material build (matc --basis auto)",
   coefficients_of_another_basis: "do not belong together",
   unknown_material: "is unobtainium one of this build's materials",
   engine_changed: "changed (0 matches for the text the patch",
@@ -367,9 +367,9 @@ function f0TableOf(matc, dir, material) {
     writeFileSync(file, JSON.stringify(material(`entry_${i}`, Array(3).fill((i / 32) ** 4))));
     return file;
   });
-  run(matc, ["-q", "-o", join(dir, "out"), "--emit", "json", ...files]);
+  run(matc, ["-q", "-o", join(dir, "out"), "--emit", "json", ...gBasisOptions, ...files]);
   const compiled = files.map((_, i) => JSON.parse(readFileSync(join(dir, "out", `entry_${i}.json`), "utf8")));
-  return { coefficients: compiled.map((entry) => entry.coefficients),
+  return { basis: compiled[0].basis.name, coefficients: compiled.map((entry) => entry.coefficients),
            ...(compiled[0].coat ? { underCoatCoefficients: compiled.map((entry) => entry.coat.under_coat_coefficients) } : {}) };
 }
 
@@ -386,7 +386,7 @@ function f0TableCoatedFile(dir, f0) {
 function f0TableCoatedAtColour(matc, dir) {
   const file = f0TableCoatedFile(join(dir, "f0_table_coated_colour"), kF0Table.f0);
   const compiledIn = join(dir, "f0_table_coated_colour", "out");
-  run(matc, ["-q", "-o", compiledIn, "--emit", "json", file]);
+  run(matc, ["-q", "-o", compiledIn, "--emit", "json", ...gBasisOptions, file]);
   return { file, compiledIn };
 }
 
@@ -397,13 +397,14 @@ function schlickFile(dir) {
   return file;
 }
 
-// The coefficients at F0 = 0 of Schlick's curve, compiled by matc (the build's default basis),
-// for the { schlick } source.
+// The coefficients at F0 = 0 of Schlick's curve, compiled by matc (the build's basis for it: the
+// default, or f82 in a per-material build), and that basis, for the { schlick } source.
 function zeroF0Coefficients(matc, dir) {
   const file = join(dir, "zero_f0.json");
   writeFileSync(file, JSON.stringify({ ...kSchlickMaterial([0, 0, 0]), name: "zero_f0" }));
-  run(matc, ["-q", "-o", join(dir, "zero_f0"), "--emit", "json", file]);
-  return JSON.parse(readFileSync(join(dir, "zero_f0", "zero_f0.json"), "utf8")).coefficients;
+  run(matc, ["-q", "-o", join(dir, "zero_f0"), "--emit", "json", ...gBasisOptions, file]);
+  const compiled = JSON.parse(readFileSync(join(dir, "zero_f0", "zero_f0.json"), "utf8"));
+  return { basis: compiled.basis.name, zeroF0Coefficients: compiled.coefficients };
 }
 
 // The whole check for one engine: builds, the page (engine.page(config) -> HTML, which renders
@@ -413,8 +414,12 @@ function zeroF0Coefficients(matc, dir) {
 // options (realTime, browserArgs).
 // With --compile-in-page after them, webDir is the staged npm package (build/npm) and the page
 // compiles the probe materials itself (tests/js/page-probe-build.mjs); the renders are those of
-// compiled materials (the textured and baked sources are the build directory's).
+// compiled materials (the textured and baked sources are the build directory's). With
+// --basis-auto, every probe material is compiled and evaluated in a per-material build (matc
+// --basis auto): the measured metals on the table's first layer, the F82-tint ones (the Schlick
+// and F0-table metals) through the f82 basis' functions and layer.
 export async function runProbeCheck(engine, [matc, materialsDir, webDir, mode]) {
+  gBasisOptions = mode === "--basis-auto" ? ["--basis", "auto"] : [];
   const dir = mkdtempSync(join(tmpdir(), "matc-engine-probes-"));
   try {
     const { out, roots } = prepareProbeBuilds(matc, materialsDir, dir);
@@ -425,7 +430,7 @@ export async function runProbeCheck(engine, [matc, materialsDir, webDir, mode]) 
       materials.map((name) => [name, readFileSync(join(materialsDir, `${name}.json`), "utf8")]));
     const config = { materials, coated: kProbeCoated, pixels: kProbePixels, renders, point: kPointLight,
                      rect: engine.rect?.light, textured: kTextured, compileInPage, materialTexts,
-                     schlick: { color: kSchlick.f0, zeroF0Coefficients: zeroF0Coefficients(matc, dir) },
+                     schlick: { color: kSchlick.f0, ...zeroF0Coefficients(matc, dir) },
                      f0Table: { color: kF0Table.f0, ...f0TableOf(matc, join(dir, "f0_table_entries"), kF0TableMaterial) },
                      f0TableCoated: { name: kF0TableCoated.name,
                                       ...f0TableOf(matc, join(dir, "f0_table_coated_entries"), kF0TableCoatedMaterial) } };
@@ -438,7 +443,8 @@ export async function runProbeCheck(engine, [matc, materialsDir, webDir, mode]) 
                                       coatedFiles: { [kF0TableCoated.name]: f0TableCoatedAtColour(matc, dir) } });
     const worst = compareProbes(result.renders ?? {}, expected);
     const refused = checkFailures(result.failures ?? {});
-    console.log(`${engine.label} with matc's Fresnel${compileInPage ? " (materials compiled in the page)" : ""}: ` +
+    console.log(`${engine.label} with matc's Fresnel${compileInPage ? " (materials compiled in the page)" : ""}` +
+                `${gBasisOptions.length ? " (a per-material build, --basis auto)" : ""}: ` +
                 `${renders.length} renders x ` +
                 `${kProbePixels.length} probes, largest difference from the CPU runtime ` +
                 `${worst.toExponential(2)}; ${refused} bad inputs checked`);

@@ -22,7 +22,6 @@ export async function checkBadInputs(out, { loadMatcBuild, build, material, coat
   await failure("missing_directory", () => loadMatcBuild("/nothing-here/"));
   await failure("no_glsl_no_lut", () => loadMatcBuild("/json-only/"));
   await failure("table_of_another_basis", () => loadMatcBuild("/mixed-table/"));
-  await failure("per_material_build", () => loadMatcBuild("/per-material/"));
   await failure("coefficients_of_another_basis", () => build.loadMaterial("beryllium_extended"));
   await failure("unknown_material", () => build.loadMaterial("unobtainium"));
   await failure("engine_changed", () => {

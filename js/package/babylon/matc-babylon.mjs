@@ -18,7 +18,8 @@ import { Vector3, Vector4 } from "@babylonjs/core/Maths/math.vector.js";
 import { AbstractEngine } from "@babylonjs/core/Engines/abstractEngine.js";
 import "@babylonjs/core/Shaders/pbr.fragment.js";  // registers the shader text the anchors are checked against
 import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, checkCoatedAreaLights, declarationsGlsl,
-         f0TableTexels, kF0TableEntries, matcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind }
+         f0TableTexels, kF0TableEntries, matcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind,
+         basisDefine, buildBases, sourceBasis }
   from "../matc-build.mjs";
 
 export { MatcWebError };
@@ -40,9 +41,9 @@ const kPixelSetup = `${pixelSetupGlsl({ uv: "vMainUV1", baseColour: "surfaceAlbe
 // Declarations: the matc library, the tables, the globals the patched light paths read (the
 // vector uniforms come through the plugin's uniform block), the lobes' functions (a coated
 // material's from its snippet), the rect-area-light terms and a coated material's coat lobe.
-const kDeclarations = (library, material) => `
+const kDeclarations = (library, material, build) => `
 #ifdef MATC_FRESNEL
-${declarationsGlsl(library, { uniforms: false })}
+${declarationsGlsl(library, { uniforms: false, build })}
 ${lobesGlsl(material)}
 #ifdef MATC_METAL_ROUGH
 // glTF's metal-rough model per pixel (docs/gltf.md): Babylon's own dielectric lobe mixed with
@@ -72,7 +73,7 @@ vec3 matc_rect_area_light(vec3 N, vec3 V, vec3 P, float roughness, vec3 centre, 
 	if (!matc_rect_corners(P, centre, halfWidth, halfHeight, q0, q1, q2, q3)) return vec3(0.0);
 	vec4 ltc = texture2D(matc_ltc, matc_ltc_texcoord(absEps(dot(N, V)), roughness));
 #ifdef MATC_QUALITY_LTC
-	return matc_ltc_quad_light_following(matc_c, matc_bbar, ltc, roughness, N, V, P, q0, q1, q2, q3);
+	return matc_source_ltc_quad_light_following(matc_c, matc_bbar, ltc, roughness, N, V, P, q0, q1, q2, q3);
 #else
 	return matc_ltc_quad_integral(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3) * matc_base_preintegrated();
 #endif
@@ -276,7 +277,7 @@ function floatTexture(data, width, height, format, type, sampling, scene) {
 }
 
 function tableTexture(table, scene) {
-  return floatTexture(table.data, table.size, table.size,
+  return floatTexture(table.data, table.size, table.height,
                       table.channels === 4 ? Constants.TEXTUREFORMAT_RGBA : Constants.TEXTUREFORMAT_RG,
                       table.half ? Constants.TEXTURETYPE_HALF_FLOAT : Constants.TEXTURETYPE_FLOAT,
                       Texture.BILINEAR_SAMPLINGMODE, scene);
@@ -320,7 +321,9 @@ function preparePlugin(material, build, source, areaLights, metalRough) {
   const colour = (value) => new Vector3(...rgbOf(value));
   const rows = kind === "material" ? source.material.coefficients : kind === "schlick" ? source.schlick.zeroF0Coefficients : null;
   const f0Table = kind === "f0Table" ? f0TableTexture(source.f0Table, material.getScene()) : null;
-  return { build, source, kind, areaLights, metalRough, f0Table, coat, coatId: coat ? coatIdOf(source.material.coat.snippet) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
+  // A per-material build: the define of the source's basis (null for the first; basis-layers.mjs).
+  const basisDefineName = basisDefine(build, sourceBasis(build, source));
+  return { build, source, kind, areaLights, metalRough, f0Table, coat, basisDefineName, coatId: coat ? coatIdOf(source.material.coat.snippet) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
            coefficients: rows && rows.map((row) => new Vector4(...row)) };
 }
 
@@ -350,7 +353,8 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
             { MATC_FRESNEL: false, MATC_SOURCE_UNIFORM: false, MATC_SOURCE_SCHLICK: false,
               MATC_SOURCE_F0_TABLE: false, MATC_SOURCE_TABLE: false,
               MATC_SOURCE_BAKED: false, MATC_BAKED_F0: false, MATC_ENGINE_LTC: false,
-              MATC_QUALITY_LTC: false, MATC_COATED: false, MATC_COAT_ID: 0, MATC_METAL_ROUGH: false });
+              MATC_QUALITY_LTC: false, MATC_COATED: false, MATC_COAT_ID: 0, MATC_METAL_ROUGH: false,
+              ...Object.fromEntries(buildBases(build).slice(1).map((basis) => [basisDefine(build, basis), false])) });
       Object.assign(this, pendingPlugin);
     } finally {
       pendingPlugin = null;
@@ -379,6 +383,10 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
     defines.MATC_COATED = Boolean(this.coat);
     defines.MATC_COAT_ID = this.coatId;
     defines.MATC_METAL_ROUGH = Boolean(this.metalRough);
+    for (const basis of buildBases(this.build).slice(1)) {
+      const name = basisDefine(this.build, basis);
+      defines[name] = name === this.basisDefineName;
+    }
     if (this.kind === "table" || this.kind === "baked") {
       defines._needUVs = true;
       defines.MAINUV1 = true;
@@ -437,7 +445,7 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
   getCustomCode(shaderType) {
     if (shaderType !== "fragment") return null;
     const { build, source } = this.build ? this : pendingPlugin;
-    const code = { CUSTOM_FRAGMENT_DEFINITIONS: kDeclarations(build.library, source.material) };
+    const code = { CUSTOM_FRAGMENT_DEFINITIONS: kDeclarations(build.library, source.material, build) };
     for (const patch of kPatches) code[`!${shaderRegex(patch.anchor)}`] = patch.replacement;
     return code;
   }

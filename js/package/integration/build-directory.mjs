@@ -44,9 +44,9 @@ const kVkFormats = {
   97: { channels: 4, half: true }, 109: { channels: 4, half: false },  // R16G16B16A16, R32G32B32A32
 };
 
-// A table: { size, channels, half, data } with data a Float32Array or a Uint16Array of half
+// A table: { size (its width), height, channels, half, data } with data a Float32Array or a Uint16Array of half
 // floats, row-major, first row = texcoord v = 0. From a KTX2 file or raw texels (`--lut raw`).
-async function loadTable(url, entry, channels) {
+async function loadTable(url, entry, channels, layers = 1) {
   const hint = "rerun matc with this output directory";
   const bytes = new Uint8Array(await (await fetchChecked(url, hint)).arrayBuffer());
   let table;
@@ -70,18 +70,27 @@ async function loadTable(url, entry, channels) {
   } else if (entry.file.endsWith(".bin")) {
     const half = entry.precision === "f16";
     const texels = bytes.byteLength / (channels * (half ? 2 : 4));
-    const size = Math.round(Math.sqrt(texels));
+    const height = Math.round(Math.sqrt(texels / layers));
     const buffer = bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength);
-    table = { size, height: size, channels, half, data: half ? new Uint16Array(buffer) : new Float32Array(buffer) };
+    table = { size: height * layers, height, channels, half, data: half ? new Uint16Array(buffer) : new Float32Array(buffer) };
   } else {
     throw new MatcWebError(`${url}: the web integrations read KTX2 and raw tables, not ${entry.file} ` +
                            "(compile with --lut ktx2 or --lut raw)");
   }
-  if (table.size !== entry.size || table.height !== entry.size || table.data.length !== entry.size * entry.size * channels) {
+  const width = entry.size * layers;
+  if (table.size !== width || table.height !== entry.size || table.data.length !== width * entry.size * channels) {
     throw new MatcWebError(`${url}: ${table.size}x${table.height} texels, the manifest says ` +
-                           `${entry.size}x${entry.size}; ${hint}`);
+                           `${width}x${entry.size}; ${hint}`);
   }
   return table;
+}
+
+// A per-material build's manifest.lut_layers: the bases of its table's layers, in order.
+function checkedLayers(layers, where) {
+  if (!Array.isArray(layers) || layers.length < 2 || !layers.every((basis) => /^[a-z0-9]+$/.test(basis))) {
+    throw new MatcWebError(`${where}: a per-material build (basis auto) without its lut_layers; rerun matc`);
+  }
+  return layers;
 }
 
 // Reads a matc build directory (`matc -o DIR`, with glsl, json and lut among --emit; ltc for area
@@ -95,13 +104,6 @@ export async function loadMatcBuildFiles(url, { language = "glsl" } = {}) {
   if (manifest.matc_version !== kMatcVersion) {
     throw new MatcWebError(`${manifestUrl}: written by matc ${manifest.matc_version}; this integration reads matc ${kMatcVersion}`);
   }
-  if (manifest.basis === "auto") {
-    // A table of several layers and materials of several bases (docs/lut.md): the integrations
-    // read one basis' build so far (issue #66).
-    throw new MatcWebError(`${manifestUrl}: a per-material build (matc --basis auto), whose table holds a ` +
-                           "layer per basis; the web integrations read a one-basis build so far: compile " +
-                           "with --basis NAME (powers, the default, or f82 for F82-tint looks)");
-  }
   const emitted = new Set(manifest.emit ?? []);
   for (const [needed, why] of [[language, "the shader library"], ["lut", "the preintegrated table"],
                                ["json", "the materials' coefficients"]]) {
@@ -112,15 +114,18 @@ export async function loadMatcBuildFiles(url, { language = "glsl" } = {}) {
   }
   const library = await (await fetchChecked(at(`matc_fresnel.${language}`), `compile with --emit ${language}`)).text();
   const sidecar = await fetchJson(at(`${manifest.lut.file}.json`), "compile with --emit lut");
+  // A per-material build (matc --basis auto): the table holds a layer per basis side by side
+  // (docs/lut.md) and each material names its basis, one of them.
+  const layers = manifest.basis === "auto" ? checkedLayers(manifest.lut_layers, manifestUrl) : null;
   if (sidecar.basis !== manifest.basis || sidecar.matc_version !== manifest.matc_version) {
     throw new MatcWebError(`${at(manifest.lut.file)}: a table of basis ${sidecar.basis} from matc ` +
                            `${sidecar.matc_version}, but the build is basis ${manifest.basis} from matc ` +
                            `${manifest.matc_version}; rerun matc with this output directory`);
   }
   return {
-    url: base.href, manifest, language, library, basis: manifest.basis,
+    url: base.href, manifest, language, library, basis: manifest.basis, layers,
     materialsByName: true,  // loadMaterial(name): the build's <name>.json and snippet
-    lut: await loadTable(at(manifest.lut.file), manifest.lut, 4),
+    lut: await loadTable(at(manifest.lut.file), manifest.lut, 4, layers?.length ?? 1),
     ltc: emitted.has("ltc") ? await loadTable(at(manifest.ltc_table.file), manifest.ltc_table, 4) : null,
     coefficientTable: emitted.has("coefficient-table")
         ? await loadTable(at(manifest.coefficient_table.file), manifest.coefficient_table, 2) : null,
@@ -130,7 +135,8 @@ export async function loadMatcBuildFiles(url, { language = "glsl" } = {}) {
       const file = at(`${name}.json`);
       const material = await fetchJson(file, `is ${name} one of this build's materials?`);
       const basis = material.basis?.name;
-      if (basis !== manifest.basis || material.matc_version !== manifest.matc_version) {
+      if (!(layers ? layers.includes(basis) : basis === manifest.basis) ||
+          material.matc_version !== manifest.matc_version) {
         throw new MatcWebError(`${file}: coefficients of basis ${basis} from matc ${material.matc_version}, ` +
                                `but the build's tables are basis ${manifest.basis} from matc ` +
                                `${manifest.matc_version}: they do not belong together`);

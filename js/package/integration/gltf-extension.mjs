@@ -2,6 +2,7 @@
 // read into what build.loadMaterial gives, its coated snippet from a build directory or matc's
 // template, and which of an asset's materials become matc metals (gltfMetals).
 import { coatedSnippet } from "../coated-snippet.mjs";
+import { buildBases, holdsBasis } from "./basis-layers.mjs";
 import { checkedFiniteRows, checkedZeroF0Rows, finiteRows } from "./coefficient-rows.mjs";
 import { MatcWebError } from "./errors.mjs";
 import { checkedF0Table } from "./f0-table.mjs";
@@ -50,7 +51,7 @@ async function extensionCoatedMaterial(build, extension, rows) {
     maxError: rgb(extension.maxError, `${kGltfFresnelExtension}.maxError`), coat: checked,
   });
   const { coatCoefficients: _, ...materialCoat } = checked;
-  return { name: extension.name, basis: build.basis, coefficients: rows, coat: { ...materialCoat, snippet } };
+  return { name: extension.name, basis: extension.basis, coefficients: rows, coat: { ...materialCoat, snippet } };
 }
 
 // A glTF material's MATC_materials_fresnel (`extension`) as build.loadMaterial gives a material:
@@ -63,9 +64,10 @@ async function extensionCoatedMaterial(build, extension, rows) {
 // that name differs.
 export async function gltfExtensionMaterial(build, extension) {
   const version = build.manifest?.matc_version;
-  if (extension?.basis !== build.basis || extension?.matcVersion !== version) {
+  if (!holdsBasis(build, extension?.basis) || extension?.matcVersion !== version) {
     throw new MatcWebError(`its ${kGltfFresnelExtension} holds coefficients of basis ${extension?.basis} from ` +
-                           `matc ${extension?.matcVersion}; the build's tables are basis ${build.basis} from matc ${version}`);
+                           `matc ${extension?.matcVersion}; the build's tables are basis ` +
+                           `${buildBases(build).join(", ")} from matc ${version}`);
   }
   if (!isSnippetName(extension.name)) {
     throw new MatcWebError(`its ${kGltfFresnelExtension}.name is not the identifier matc writes`);
@@ -80,7 +82,7 @@ export async function gltfExtensionMaterial(build, extension) {
     perPixel.f0Table = checkedF0Table(extension.f0Table, Boolean(extension.coat), `${kGltfFresnelExtension}.f0Table`);
   }
   if (!extension.coat) {
-    return { name: extension.name, basis: build.basis, coefficients: rows, coat: null, ...perPixel };
+    return { name: extension.name, basis: extension.basis, coefficients: rows, coat: null, ...perPixel };
   }
   const inDirectory = build.materialsByName &&
                       (build.manifest.materials ?? []).some((material) => material?.name === extension.name);

@@ -1,15 +1,18 @@
 // The GLSL both WebGL integrations (three/matc-three.mjs, babylon/matc-babylon.mjs) put into their
 // engine's physical shader: the declarations, the lobes' functions and the pixel's coefficients.
+import { basisAliasesGlsl } from "./basis-layers.mjs";
 
 // Declarations of the tables and the globals the patched light paths read; `uniforms` adds the
 // coefficient sources' vector uniforms (engines that bind them through a uniform block declare
 // those themselves).
-export function declarationsGlsl(library, { uniforms }) {
+// `build` (loadMatcBuild's): a per-material build's aliases of each basis' functions follow the
+// library (basis-layers.mjs).
+export function declarationsGlsl(library, { uniforms, build }) {
   const vectors = uniforms ? "\tuniform vec4 matc_red;\n\tuniform vec4 matc_green;\n\tuniform vec4 matc_blue;\n" : "";
   const colours = uniforms ? "\tuniform vec3 matc_reflectivity;\n\tuniform vec3 matc_edge_tint;\n" : "";
   return `
 ${library}
-uniform sampler2D matc_lut;
+${basisAliasesGlsl(build)}uniform sampler2D matc_lut;
 uniform sampler2D matc_ltc;
 #if defined(MATC_SOURCE_TABLE)
 	uniform sampler2D matc_coefficient_table;
@@ -39,7 +42,7 @@ vec4 matc_bbar;                  // and its texel of matc_lut, set before the li
 export function lobesGlsl(material) {
   if (!material?.coat) {
     return `
-vec3 matc_base_fresnel(float mu) { return matc_fresnel(matc_c, mu); }
+vec3 matc_base_fresnel(float mu) { return matc_source_fresnel(matc_c, mu); }
 vec3 matc_base_preintegrated() { return matc_fresnel_preintegrated(matc_c, matc_bbar); }
 vec3 matc_base_compensation() { return matc_energy_compensation(matc_c, matc_bbar); }
 float matc_coat_transmission() { return 1.0; }  // no coat over the engine's dielectric
@@ -105,7 +108,7 @@ export function pixelSetupGlsl({ uv, baseColour, ndotv, roughness, coatRoughness
 #else
 	matc_c = MatcFresnelCoefficients(matc_red, matc_green, matc_blue);
 #endif
-	matc_bbar = texture(matc_lut, matc_lut_texcoord(${ndotv}, ${roughness}));
+	matc_bbar = texture(matc_lut, matc_source_lut_texcoord(${ndotv}, ${roughness}));
 #ifdef MATC_COATED
 	matc_ndotv = ${ndotv};
 	matc_coat_bbar = texture(matc_lut, matc_lut_texcoord(matc_ndotv, ${coatRoughness}));

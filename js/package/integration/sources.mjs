@@ -1,5 +1,6 @@
 // The options and coefficient sources the integrations' useMatcFresnel takes, checked against the
 // build: areaLights, colour options, and the source's kind.
+import { buildBases, holdsBasis } from "./basis-layers.mjs";
 import { checkedZeroF0Rows } from "./coefficient-rows.mjs";
 import { MatcWebError } from "./errors.mjs";
 import { checkedF0Table } from "./f0-table.mjs";
@@ -31,8 +32,8 @@ export function checkAreaLights(areaLights, allowed = ["matc", "quality", "engin
 export function sourceKind(build, source) {
   if (source?.schlick) {
     const { basis, zeroF0Coefficients } = source.schlick;
-    if (basis !== build.basis) {
-      throw new MatcWebError(`schlick: coefficients of basis ${basis}, the build's tables are ${build.basis}`);
+    if (!holdsBasis(build, basis)) {
+      throw new MatcWebError(`schlick: coefficients of basis ${basis}, the build's tables are ${buildBases(build).join(", ")}`);
     }
     checkedZeroF0Rows(zeroF0Coefficients, "schlick");
     return "schlick";
@@ -42,9 +43,9 @@ export function sourceKind(build, source) {
     checkedF0Table(source.f0Table, Boolean(source.material.coat), "f0Table");
   }
   if (source?.material) {
-    if (source.material.basis !== build.basis) {
+    if (!holdsBasis(build, source.material.basis)) {
       throw new MatcWebError(`${source.material.name}: coefficients of basis ${source.material.basis}, ` +
-                             `the build's tables are ${build.basis}`);
+                             `the build's tables are ${buildBases(build).join(", ")}`);
     }
     return source.f0Table ? "f0Table" : "material";
   }
@@ -62,11 +63,17 @@ export function sourceKind(build, source) {
     if (!source.baked.c2Map || !source.baked.c3Map) {
       throw new MatcWebError("baked coefficients need c2Map and c3Map (matc bake)");
     }
-    if (source.baked.basis && source.baked.basis !== build.basis) {
-      throw new MatcWebError(`baked coefficients of basis ${source.baked.basis}, the build's tables are ${build.basis}`);
+    if (source.baked.basis && source.baked.basis !== buildBases(build)[0]) {
+      throw new MatcWebError(`baked coefficients of basis ${source.baked.basis}, the build's tables are ${buildBases(build)[0]}`);
     }
     return "baked";
   }
   throw new MatcWebError("useMatcFresnel needs { material }, { material, f0Table }, { schlick }, " +
                          "{ reflectivityMap, edgeTintMap } or { baked }");
+}
+
+// The basis a source's coefficients are in (its material's, its Schlick rows'; the coefficient
+// table's and bakes' are the build's first).
+export function sourceBasis(build, source) {
+  return source?.schlick?.basis ?? source?.material?.basis ?? buildBases(build)[0];
 }

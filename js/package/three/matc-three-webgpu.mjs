@@ -17,8 +17,8 @@ import { BRDF_GGX, BRDF_Lambert, F_Schlick, LTC_Evaluate, LTC_Uv, clearcoatNorma
          positionViewDirection, roughness, specularColor, specularF90, step, texture, textureLoad, uniform, uv,
          vec3, vec4, wgsl, wgslFn } from "three/tsl";
 import { f0TableTexture, sampleTrilinearly, tableTexture } from "./textures.mjs";
-import { MatcWebError, checkAnchors, checkAreaLights, checkCoatedAreaLights, matcBuildFiles, rgbOf,
-         sourceKind } from "../matc-build.mjs";
+import { MatcWebError, basisSuffix, buildBases, checkAnchors, checkAreaLights, checkCoatedAreaLights,
+         matcBuildFiles, rgbOf, sourceBasis, sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -75,13 +75,12 @@ export async function loadMatcBuild(source) {
   const entry = (name, parameters, result, call) =>
     wgslFn(`fn ${name}(${rows}, ${parameters}) -> ${result} { return ${call}; }`, [library]);
   const functions = {
-    fresnel: entry("matc_three_fresnel", "mu: f32", "vec3f", `matc_fresnel(${coefficients}, mu)`),
+
     preintegrated: entry("matc_three_preintegrated", "bbar: vec4f", "vec3f",
                          `matc_fresnel_preintegrated(${coefficients}, bbar)`),
     compensation: entry("matc_three_compensation", "bbar: vec4f", "vec3f",
                         `matc_energy_compensation(${coefficients}, bbar)`),
-    lutTexcoord: wgslFn("fn matc_three_lut_texcoord(ndotv: f32, roughness: f32) -> vec2f { " +
-                        "return matc_lut_texcoord(ndotv, roughness); }", [library]),
+
     // Textured metals: one channel's c_0..c_3 from its r and the coefficient table's texel.
     tableTexcoord: wgslFn("fn matc_three_table_texcoord(r: f32, g: f32) -> vec2f { " +
                           "return matc_coefficient_table_texcoord(r, g); }", [library]),
@@ -120,11 +119,29 @@ export async function loadMatcBuild(source) {
                                     "q0: vec3f, q1: vec3f, q2: vec3f, q3: vec3f) -> f32 { return " +
                                     "matc_ltc_quad_integral(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3); }",
                                     [library]);
-    functions.quadLightFollowing = entry(
-        "matc_three_quad_light_following", "bbar: vec4f, ltc: vec4f, roughness: f32, N: vec3f, V: vec3f, " +
-        "P: vec3f, q0: vec3f, q1: vec3f, q2: vec3f, q3: vec3f", "vec3f",
-        `matc_ltc_quad_light_following(${coefficients}, bbar, ltc, roughness, N, V, P, q0, q1, q2, q3)`);
   }
+  // What a material's basis changes (its F, its layer of the table, its quality-level area light):
+  // the first basis' for `functions`, each further layer's of a per-material build (matc --basis
+  // auto) by basis in functionsByBasis.
+  const basisFunctions = (basis) => {
+    const suffix = basisSuffix(files, basis);
+    const own = {
+      fresnel: entry(`matc_three_fresnel${suffix}`, "mu: f32", "vec3f", `matc_fresnel${suffix}(${coefficients}, mu)`),
+      lutTexcoord: wgslFn(`fn matc_three_lut_texcoord${suffix}(ndotv: f32, roughness: f32) -> vec2f { ` +
+                          `return matc_lut_texcoord${suffix}(ndotv, roughness); }`, [library]),
+    };
+    if (ltc) {
+      own.quadLightFollowing = entry(
+          `matc_three_quad_light_following${suffix}`, "bbar: vec4f, ltc: vec4f, roughness: f32, N: vec3f, " +
+          "V: vec3f, P: vec3f, q0: vec3f, q1: vec3f, q2: vec3f, q3: vec3f", "vec3f",
+          `matc_ltc_quad_light_following${suffix}(${coefficients}, bbar, ltc, roughness, N, V, P, q0, q1, q2, q3)`);
+    }
+    return own;
+  };
+  const bases = buildBases(files);
+  Object.assign(functions, basisFunctions(bases[0]));
+  const functionsByBasis = Object.fromEntries(
+      bases.slice(1).map((basis) => [basis, { ...functions, ...basisFunctions(basis) }]));
   const loadMaterial = files.loadMaterial;
   // A coated material's lobes: its own snippet (<name>.wgsl) through wgslFn. The base lobe's
   // take the coefficient rows in air and under the coat (layerRows): the material's own, or a
@@ -153,7 +170,7 @@ export async function loadMatcBuild(source) {
   };
   // withCoatFunctions: for a coated material made elsewhere with this build's WGSL snippet (a glTF
   // metal's from its MATC_materials_fresnel, ./matc-gltf-webgpu.mjs).
-  return { ...files, lut, ltc, coefficientTable, functions, withCoatFunctions,
+  return { ...files, lut, ltc, coefficientTable, functions, functionsByBasis, withCoatFunctions,
            async loadMaterial(name) { return withCoatFunctions(await loadMaterial(name)); } };
 }
 
@@ -476,7 +493,7 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc", m
   checkLightingModel();
   const { underCoat, ...rows } = coefficientRows(build, source);
   const coat = source?.material?.coat ? coatOf(source.material, material, areaLights, underCoat) : null;
-  const matc = { rows, functions: build.functions, lut: build.lut, ltc: build.ltc, url: build.url, areaLights, coat,
+  const matc = { rows, functions: build.functionsByBasis?.[sourceBasis(build, source)] ?? build.functions, lut: build.lut, ltc: build.ltc, url: build.url, areaLights, coat,
                  source, metalRough };
   if (!metalRough) {
     material.metalness = 1;

@@ -13,7 +13,7 @@
 import * as THREE from "three";
 import { f0TableTexture, sampleTrilinearly, tableTexture } from "./textures.mjs";
 import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, checkCoatedAreaLights, declarationsGlsl,
-         matcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind } from "../matc-build.mjs";
+         matcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind, basisDefine, sourceBasis } from "../matc-build.mjs";
 
 export { MatcWebError };
 
@@ -31,7 +31,7 @@ const kMainShader = "meshphysical_frag";
 // Appended to lights_physical_pars_fragment's declarations: the matc library, the tables and
 // what the patched light paths read (this pixel's coefficients and preintegrated basis, set in
 // main()), the lobes' functions (a coated material's from its snippet) and the image-lighting term.
-const kDeclarations = (library, material) => `${declarationsGlsl(library, { uniforms: true })}
+const kDeclarations = (library, material, build) => `${declarationsGlsl(library, { uniforms: true, build })}
 ${lobesGlsl(material)}
 // Image lighting: the preintegrated Fresnel sum_i c_i bbar_i with matc's multiple scattering
 // (Turquin's 1 + F0 (1 - E) / E, E = bbar_0), as the CPU runtime computes it.
@@ -74,7 +74,7 @@ export const kPatches = [
   {
     chunk: "lights_physical_pars_fragment",
     anchor: "uniform sampler2D dfgLUT;\n",
-    replacement: (library, material) => `uniform sampler2D dfgLUT;\n${kDeclarations(library, material)}`,
+    replacement: (library, material, build) => `uniform sampler2D dfgLUT;\n${kDeclarations(library, material, build)}`,
     what: "declarations: matc_fresnel.glsl, the tables, this pixel's coefficients (and a coated material's snippet)",
   },
   {
@@ -171,7 +171,7 @@ export const kPatches = [
       "\t\tvec4 matc_ltc_texel = texture2D( matc_ltc, matc_ltc_texcoord( saturate( dot( normal, viewDir ) ), roughness ) );\n" +
       "\t\tbool matc_lit = dot( cross( rectCoords[ 1 ] - rectCoords[ 0 ], rectCoords[ 3 ] - rectCoords[ 0 ] ), position - rectCoords[ 0 ] ) >= 0.0;\n" +
       "#ifdef MATC_QUALITY_LTC\n" +
-      "\t\tif ( matc_lit ) reflectedLight.directSpecular += lightColor * matc_ltc_quad_light_following( matc_c, matc_bbar, " +
+      "\t\tif ( matc_lit ) reflectedLight.directSpecular += lightColor * matc_source_ltc_quad_light_following( matc_c, matc_bbar, " +
       "matc_ltc_texel, roughness, normal, viewDir, position, rectCoords[ 0 ], rectCoords[ 1 ], rectCoords[ 2 ], rectCoords[ 3 ] );\n" +
       "#else\n" +
       "\t\tif ( matc_lit ) reflectedLight.directSpecular += lightColor * matc_base_preintegrated() * matc_ltc_quad_integral( " +
@@ -226,8 +226,8 @@ export const kPatches = [
 ];
 
 // Applies the patches to the given chunks (name -> source) for `material` (build.loadMaterial's, or null for maps and bakes), throwing
-// when an anchor is not found exactly once.
-export function patchChunks(chunks, library, material = null) {
+// when an anchor is not found exactly once. `build`: a per-material build's aliases (basis-layers.mjs).
+export function patchChunks(chunks, library, material = null, build = {}) {
   const tested = `three.js r${kTestedThreeRevisions.join(", r")}`;
   checkAnchors(`three.js r${THREE.REVISION}`, chunks, kPatches.map((patch) => ({ ...patch, source: patch.chunk })),
                tested);
@@ -235,7 +235,7 @@ export function patchChunks(chunks, library, material = null) {
   for (const patch of kPatches) {
     const source = patched[patch.chunk] ?? chunks[patch.chunk];
     patched[patch.chunk] = source.replace(anchorPattern(patch.anchor),
-                                          () => `\n${patch.replacement(library, material)}\n`);
+                                          () => `\n${patch.replacement(library, material, build)}\n`);
   }
   return patched;
 }
@@ -326,7 +326,7 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc", m
   }
   if (coat) checkCoatedAreaLights(source.material, areaLights);
   // Checked now, so that a changed engine fails here and not at the first frame.
-  const { [kMainShader]: main, ...chunks } = patchChunks(THREE.ShaderChunk, build.library, source.material);
+  const { [kMainShader]: main, ...chunks } = patchChunks(THREE.ShaderChunk, build.library, source.material, build);
   Object.assign(uniforms, { matc_lut: { value: build.lut }, matc_ltc: { value: build.ltc ?? build.lut } });
   if (!metalRough) {
     material.metalness = 1;
@@ -336,6 +336,9 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc", m
   if (metalRough) material.defines.MATC_METAL_ROUGH = "";
   if (uv) material.defines.USE_UV = "";
   if (f0) material.defines.MATC_BAKED_F0 = "";
+  // A per-material build: the source's basis' functions (and its layer of the table).
+  const layerDefine = basisDefine(build, sourceBasis(build, source));
+  if (layerDefine) material.defines[layerDefine] = "";
   if (areaLights === "engine") material.defines.MATC_ENGINE_LTC = "";
   if (areaLights === "quality") material.defines.MATC_QUALITY_LTC = "";
   if (coat) {

@@ -15,7 +15,7 @@ function floatTexture(THREE, data, width, height, format, type, filter) {
 
 // A matc table (matc-build.mjs) as a linearly filtered, clamped float texture.
 export function tableTexture(THREE, table) {
-  return floatTexture(THREE, table.data, table.size, table.size, table.channels === 4 ? THREE.RGBAFormat : THREE.RGFormat,
+  return floatTexture(THREE, table.data, table.size, table.height, table.channels === 4 ? THREE.RGBAFormat : THREE.RGFormat,
                       table.half ? THREE.HalfFloatType : THREE.FloatType, THREE.LinearFilter);
 }
 
