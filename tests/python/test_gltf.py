@@ -14,7 +14,8 @@ COSINES = [0.0, 0.1, 1.0 / 7.0, 0.5, 1.0]
 
 
 def test_the_bytes_are_matc_gltfs(tmp_path):
-    for options, arguments in (({}, []), ({"basis": "f82"}, ["--basis", "f82"])):
+    for options, arguments in (({}, []), ({"basis": "f82"}, ["--basis", "f82"]),
+                               ({"basis": "auto"}, ["--basis", "auto"])):
         written = tmp_path / "trim_matc.gltf"
         run_matc("gltf", "-q", TRIM, "-o", written, *arguments)
         asset = matc.compile_gltf(TRIM, **options)
@@ -55,6 +56,17 @@ def test_the_metals_are_compiled_as_compile_compiles_them():
         assert [str(d) for d in compiled.diagnostics] == [
             str(d) for d in matc.compile(material, basis="f82").diagnostics]
     assert asset.materials[1].coat is not None
+
+
+def test_a_per_material_build_gives_each_metal_its_basis():
+    # --basis auto: the edge-coloured chrome (F82-tint) takes f82, the lacquered copper powers, and
+    # each extension names its own.
+    asset = matc.compile_gltf(TRIM, basis="auto")
+    document = json.loads(asset.bytes)
+    bases = [m["extensions"]["MATC_materials_fresnel"]["basis"] for m in document["materials"][:2]]
+    assert bases == [m.basis for m in asset.materials] == ["f82", "powers"]
+    for compiled, material in zip(asset.materials, matc.load(TRIM)):
+        assert compiled.coefficients.tolist() == matc.compile(material, basis="auto").coefficients.tolist()
 
 
 def test_refusals_are_the_clis(tmp_path):

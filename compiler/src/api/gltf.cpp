@@ -32,33 +32,39 @@ void require_gltf_path(std::string_view path) {
 
 GltfAsset compile_imported(std::string_view bytes, const std::string& path,
                            const CompileOptions& options, const FileLoader& loader) {
-  const runtime::BasisKind basis = basis_of(options);
-  color_options_of(options);  // an option outside its names throws before any work
+  basis_choice_of(options);   // an option outside its names throws before any work
+  color_options_of(options);  // likewise
   DocumentImport imported = import_document(bytes, path, loader);
   throw_if_errors(imported.diagnostics);
   const std::vector<Diagnostic> notes = public_diagnostics(imported.diagnostics);
   GltfAsset asset;
   asset.notes = notes;
   std::map<std::size_t, nlohmann::ordered_json> extensions;
-  // The coefficients at F0 = 0 of Schlick's curve, for the textured metals (the same for each).
-  std::optional<CompiledMaterial> zero_f0;
+  // The coefficients at F0 = 0 of Schlick's curve, for the textured metals (the same for each),
+  // in each basis a metal is compiled against (one, unless --basis auto).
+  std::map<runtime::BasisKind, CompiledMaterial> zero_f0;
   for (ImportedMaterial& material : imported.materials) {
     const std::size_t index = material.document_index;
     const bool per_pixel_f0 = material.per_pixel_f0;
     Material value(std::make_shared<const matc::Material>(std::move(material.material)), notes);
     asset.materials.push_back(compile(value, options));
-    if (per_pixel_f0 && !zero_f0) {
-      zero_f0 = compile(parse_materials(kZeroF0Schlick, "zero_f0.json").front(), options);
+    const matc::CompiledMaterial& compiled = asset.materials.back().value();
+    const runtime::BasisView basis = runtime::shipped_basis(compiled.basis);
+    if (per_pixel_f0 && !zero_f0.contains(compiled.basis)) {
+      CompileOptions in_basis = options;
+      in_basis.basis = std::string(runtime::basis_name(compiled.basis));
+      zero_f0.emplace(compiled.basis,
+                      compile(parse_materials(kZeroF0Schlick, "zero_f0.json").front(), in_basis));
     }
     // A working space or a gamut mapping that mixes the channels leaves the table out: each
     // entry compiles the three channels at one F0.
     std::optional<runtime::F0Table> f0_table;
-    const matc::CompiledMaterial& compiled = asset.materials.back().value();
     if (material.f0_table && has_f0_table(compiled.material, compiled.color))
-      f0_table = compile_f0_table(compiled.material, runtime::shipped_basis(basis), compiled.color);
-    extensions.emplace(index, gltf_fresnel_extension(compiled, runtime::shipped_basis(basis),
-                                                     per_pixel_f0 ? &zero_f0->value() : nullptr,
-                                                     f0_table ? &*f0_table : nullptr));
+      f0_table = compile_f0_table(compiled.material, basis, compiled.color);
+    extensions.emplace(index, gltf_fresnel_extension(
+                                  compiled, basis,
+                                  per_pixel_f0 ? &zero_f0.at(compiled.basis).value() : nullptr,
+                                  f0_table ? &*f0_table : nullptr));
   }
   Diagnostics diagnostics;
   std::optional<GltfWithExtensions> written = gltf_with_fresnel_extensions(
