@@ -345,6 +345,21 @@ const throwsWith = (call, pattern, what) => {
   }
 };
 throwsWith(() => gold.fresnel([0.5, 2]), /mu: element 1 is 2; a number in \[0, 1\]/, "mu out of range");
+// A per-material library in the page needs the layered table the package does not ship yet.
+{
+  const { compiledMatcBuildFiles } = await import(path.join(work, "node_modules", "matc", "matc-build.mjs"));
+  const consoleError = console.error;
+  console.error = () => {};
+  try {
+    await compiledMatcBuildFiles(matc_, { options: { basis: "auto" } });
+    check(false, "compiledMatcBuildFiles with basis auto: no error");
+  } catch (error) {
+    check(/basis "auto" \(a basis per material\) needs a table of a layer per basis/.test(error.message),
+          `compiledMatcBuildFiles with basis auto: ${error.message}`);
+  } finally {
+    console.error = consoleError;
+  }
+}
 throwsWith(() => gold.fresnel([NaN]), /mu: element 0 is nan/, "NaN");
 throwsWith(() => gold.fresnel("0.5"), /mu: a number or an array/, "a string mu");
 throwsWith(() => gold.fbar([0.5], [0.5, 0.5]), /one roughness per NdotV/, "fbar lengths");

@@ -153,6 +153,12 @@ export async function loadMatcBuildFiles(url, { language = "glsl" } = {}) {
 // with their .json beside them, as `matc -o --lut raw` writes them), and `loadMaterial(compiled)`
 // taking a CompiledMaterial instead of a name.
 export async function compiledMatcBuildFiles(matc, { language = "glsl", options = {}, tables = tableFiles.raw } = {}) {
+  if (options.basis === "auto") {
+    // The package's tables hold one basis; a per-material library reads a table of two layers.
+    throw new MatcWebError("compiledMatcBuildFiles: basis \"auto\" (a basis per material) needs a table " +
+                           "of a layer per basis, which the package does not ship yet; compile with " +
+                           "matc --basis auto -o DIR and load that directory, or give basis NAME");
+  }
   const texts = matc.textOutputs(options);
   const library = texts.librarySource(language);
   const table = async (url, channels) => {
