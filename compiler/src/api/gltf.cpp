@@ -61,10 +61,10 @@ GltfAsset compile_imported(std::string_view bytes, const std::string& path,
     std::optional<runtime::F0Table> f0_table;
     if (material.f0_table && has_f0_table(compiled.material, compiled.color))
       f0_table = compile_f0_table(compiled.material, basis, compiled.color);
-    extensions.emplace(index, gltf_fresnel_extension(
-                                  compiled, basis,
-                                  per_pixel_f0 ? &zero_f0.at(compiled.basis).value() : nullptr,
-                                  f0_table ? &*f0_table : nullptr));
+    extensions.emplace(
+        index, gltf_fresnel_extension(compiled, basis,
+                                      per_pixel_f0 ? &zero_f0.at(compiled.basis).value() : nullptr,
+                                      f0_table ? &*f0_table : nullptr));
   }
   Diagnostics diagnostics;
   std::optional<GltfWithExtensions> written = gltf_with_fresnel_extensions(

@@ -49,10 +49,6 @@ BuildOptions checked(BuildOptions options) {
       throw std::invalid_argument(
           "--embed-lut holds one basis' table: give --basis NAME with it, not --basis auto");
     }
-    if (options.lut_format == LutFormat::header) {
-      throw std::invalid_argument(
-          "--lut header holds one basis' table: give --basis NAME with it, not --basis auto");
-    }
   }
   return options;
 }

@@ -44,7 +44,8 @@ const SharedTables::Baked& SharedTables::baked() const {
     baked.file_bytes =
         options_.layers.size() == 1
             ? encode_lut(baked.layers.front(), options_.format, options_.lut_precision)
-            : encode_lut_atlas(baked.atlas, options_.format, options_.lut_precision);
+            : encode_layered_lut(baked.layers, baked.atlas, options_.format,
+                                 options_.lut_precision);
     baked.hash = hash_of_bytes(baked.file_bytes);  // once: headers and the manifest name it
     lazy_->baked = std::move(baked);
   });
@@ -76,10 +77,9 @@ std::vector<OutputFile> SharedTables::files(const std::set<OutputKind>& emit) co
     files.push_back({name + ".json", std::move(manifest)});
   };
   if (emit.contains(OutputKind::lut) && options_.layers.size() > 1) {
-    for (OutputFile& file : layered_lut_output_files(
-             baked().layers, baked().atlas, options_.format, options_.lut_precision,
-             shared_file_name(OutputKind::lut, options_.format)))
-      files.push_back(std::move(file));
+    add(OutputKind::lut, baked().file_bytes,
+        format_json(layered_lut_manifest(baked().layers, baked().atlas, options_.format,
+                                         options_.lut_precision)));
   } else if (emit.contains(OutputKind::lut)) {
     add(OutputKind::lut, baked().file_bytes,
         format_json(lut_manifest(lut(), options_.format, options_.lut_precision)));

@@ -43,9 +43,11 @@ std::vector<DefaultLutHash> checked_in_default_lut_hashes() {
     {BasisKind::powers, LutFormat::ktx2, LutPrecision::f16, "009491f5896e6ac7", true},
     {BasisKind::powers, LutFormat::dds, LutPrecision::f16, "b1e66c3af8640630", true},
     {BasisKind::powers, LutFormat::raw, LutPrecision::f16, "e60ff51a559db635", true},
+    {BasisKind::powers, LutFormat::header, LutPrecision::f16, "43a5432e180cd816", true},
     {BasisKind::powers, LutFormat::ktx2, LutPrecision::f32, "95f73c5b952f85a4", true},
     {BasisKind::powers, LutFormat::dds, LutPrecision::f32, "64b4f9e858c5689f", true},
     {BasisKind::powers, LutFormat::raw, LutPrecision::f32, "2f850068fca421c9", true},
+    {BasisKind::powers, LutFormat::header, LutPrecision::f32, "8c50d4bcde12a388", true},
   };
 }
 

@@ -42,9 +42,8 @@ std::vector<DefaultLutHash> compute_default_lut_hashes() {
       pointers.push_back(&layer);
     const LutAtlas atlas = side_by_side(pointers);
     for (const LutFormat format : kLutFormats) {
-      if (format == LutFormat::header) continue;
       hashes.push_back({runtime::kPerMaterialBases.front(), format, precision,
-                        hash_of_bytes(encode_lut_atlas(atlas, format, precision)), true});
+                        hash_of_bytes(encode_layered_lut(layers, atlas, format, precision)), true});
     }
   }
   return hashes;

@@ -4,7 +4,7 @@
 // tables. A run that only names the table (a material's C header, the manifest) then needs no
 // bake: per-material build actions stay cheap (docs/scaling.md). A per-material build's table
 // (--basis auto: runtime::kPerMaterialBases side by side, lut_atlas.h) has its own entries,
-// `layered`, named by its first basis, in every format but the header.
+// `layered`, named by its first basis.
 #pragma once
 
 #include <optional>

@@ -110,13 +110,17 @@ std::string encode_lut_atlas(const LutAtlas& atlas, LutFormat format, LutPrecisi
     case LutFormat::header:
       break;
   }
-  throw std::invalid_argument("a layered table has no header format");
+  throw std::invalid_argument("encode_lut_atlas: the header is encode_layered_lut's");
 }
 
-std::vector<OutputFile> layered_lut_output_files(std::span<const BakedLut> layers,
-                                                 const LutAtlas& atlas, LutFormat format,
-                                                 LutPrecision precision,
-                                                 std::string_view file_name) {
+std::string encode_layered_lut(std::span<const BakedLut> layers, const LutAtlas& atlas,
+                               LutFormat format, LutPrecision precision) {
+  if (format == LutFormat::header) return encode_layered_lut_header(layers, atlas, precision);
+  return encode_lut_atlas(atlas, format, precision);
+}
+
+nlohmann::ordered_json layered_lut_manifest(std::span<const BakedLut> layers, const LutAtlas& atlas,
+                                            LutFormat format, LutPrecision precision) {
   nlohmann::ordered_json manifest = lut_manifest(layers.front(), format, precision);
   manifest["size"] = {atlas.width(), atlas.size};
   manifest["basis"] = "auto";
@@ -134,8 +138,7 @@ std::vector<OutputFile> layered_lut_output_files(std::span<const BakedLut> layer
       "linear filtering, clamp to edge, at (k size + u (size - 1) + 0.5) / (layers size) across "
       "for layer k and (roughness (size - 1) + 0.5) / size down";
   manifest["energy_compensation"]["basis_hemispherical_averages"] = "per layer (layers[k])";
-  return {{std::string(file_name), encode_lut_atlas(atlas, format, precision)},
-          {fmt::format("{}.json", file_name), format_json(manifest)}};
+  return manifest;
 }
 
 std::vector<OutputFile> lut_output_files(const BakedLut& baked, LutFormat format,

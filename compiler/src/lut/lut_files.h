@@ -43,13 +43,14 @@ std::string encode_lut(const BakedLut& baked, LutFormat format, LutPrecision pre
 std::vector<OutputFile> lut_output_files(const BakedLut& baked, LutFormat format,
                                          LutPrecision precision, std::string_view file_name);
 
-// A layered table (--basis auto: lut_atlas.h) as the file `file_name` in a texture format (not
-// the header) and its manifest, which names each layer's basis and columns. `atlas` holds the
-// layers as stored (stored_as), `layers` their bakes in the same order.
-std::vector<OutputFile> layered_lut_output_files(std::span<const BakedLut> layers,
-                                                 const LutAtlas& atlas, LutFormat format,
-                                                 LutPrecision precision,
-                                                 std::string_view file_name);
+// A layered table (--basis auto: lut_atlas.h): the file's bytes in `format` and its manifest,
+// which names each layer's basis and columns. `atlas` holds the layers as stored (stored_as),
+// `layers` their bakes in the same order.
+std::string encode_layered_lut(std::span<const BakedLut> layers, const LutAtlas& atlas,
+                               LutFormat format, LutPrecision precision);
+nlohmann::ordered_json layered_lut_manifest(std::span<const BakedLut> layers, const LutAtlas& atlas,
+                                            LutFormat format, LutPrecision precision);
+// The texture formats' bytes of an atlas (not the header, which encode_layered_lut writes).
 std::string encode_lut_atlas(const LutAtlas& atlas, LutFormat format, LutPrecision precision);
 
 // The "layout" of a manifest for a square table with rows roughness and columns

@@ -131,10 +131,23 @@ TEST(PerMaterialBuild, OptionsThatHoldOneBasisAreRefused) {
   BuildOptions embedded = small_options(true);
   embedded.embedded_lut_size = 8;
   EXPECT_THROW(Build{embedded}, std::invalid_argument);
-  BuildOptions header = small_options(true);
-  header.lut_format = LutFormat::header;
-  EXPECT_THROW(Build{header}, std::invalid_argument);
   EXPECT_THROW(Build{small_options(true, runtime::BasisKind::f82)}, std::invalid_argument);
+}
+
+// The C++ header of the table holds both layers side by side, with their count and bases.
+TEST(PerMaterialBuild, TheHeaderHoldsEveryLayer) {
+  BuildOptions options = small_options(true);
+  options.lut_format = LutFormat::header;
+  const Build build(options);
+  bool found = false;
+  for (const OutputFile& file : build.shared_outputs()) {
+    if (file.name != "matc_lut.h") continue;
+    found = true;
+    EXPECT_NE(file.bytes.find("kLayers = 2;"), std::string::npos);
+    EXPECT_NE(file.bytes.find("kLayerBases[kLayers] = {\"powers\", \"f82\"};"), std::string::npos);
+    EXPECT_NE(file.bytes.find("kTexels[2048]"), std::string::npos);  // 32 x 16 texels x 4
+  }
+  EXPECT_TRUE(found);
 }
 
 TEST(PerMaterialBuild, TheManifestNamesEachLayer) {
