@@ -600,19 +600,23 @@ TEST_F(MatcCli, BasisOptionSelectsTheBasisEverywhereItIsRecorded) {
   EXPECT_EQ(run({"--basis", "schlick", "good.json"}).exit_code, 2);
 }
 
-// A low-tint F82-tint material: the default basis warns and names --basis f82; with it, the
-// curve is held (no warning) and c_3 = 0, as F82-tint lies in span{b_1, b_2}.
+// A low-tint F82-tint material: the default basis warns and names --basis auto (which gives it
+// f82); with --basis f82 or auto, the curve is held (no warning) and c_3 = 0, as F82-tint lies in
+// span{b_1, b_2}.
 TEST_F(MatcCli, F82BasisHoldsTheF82TintMaterialTheDefaultWarnsAbout) {
   write_file(dir_ / "m.json", R"({"name": "m", "f82_tint": {"f0": 0.9, "tint": 0.2}})");
   const CommandResult by_default = run({"-o", "default", "--emit", "json", "m.json"});
   ASSERT_EQ(by_default.exit_code, 0) << by_default.err;
-  EXPECT_NE(by_default.err.find("compile with --basis f82"), std::string::npos) << by_default.err;
-  const CommandResult f82 = run({"-o", "f82", "--emit", "json", "--basis", "f82", "m.json"});
-  ASSERT_EQ(f82.exit_code, 0) << f82.err;
-  EXPECT_EQ(f82.err.find("warning"), std::string::npos) << f82.err;
-  const auto compiled = nlohmann::json::parse(read_file(dir_ / "f82" / "m.json"));
-  EXPECT_LT(std::abs(compiled["coefficients"][0][3].get<double>()), 1e-4);
-  EXPECT_LE(compiled["accuracy"]["decomposition"]["max"][0].get<double>(), 0.002);
+  EXPECT_NE(by_default.err.find("compile with --basis auto"), std::string::npos) << by_default.err;
+  for (const std::string basis : {"f82", "auto"}) {
+    const CommandResult held = run({"-o", basis, "--emit", "json", "--basis", basis, "m.json"});
+    ASSERT_EQ(held.exit_code, 0) << held.err;
+    EXPECT_EQ(held.err.find("warning"), std::string::npos) << held.err;
+    const auto compiled = nlohmann::json::parse(read_file(dir_ / basis / "m.json"));
+    EXPECT_EQ(compiled["basis"]["name"], "f82");
+    EXPECT_LT(std::abs(compiled["coefficients"][0][3].get<double>()), 1e-4);
+    EXPECT_LE(compiled["accuracy"]["decomposition"]["max"][0].get<double>(), 0.002);
+  }
 }
 
 TEST_F(MatcCli, ColourSpaceIsRecordedAndChangesSpectralNumbers) {
