@@ -90,17 +90,18 @@ vulkan_tests="Vulkan|DeviceValidation|validate_on_device|Validat"
 # matc validate per example material runs one code path with other numbers (10 s each here): the
 # sanitized run keeps a measured bare metal, a coated one, the embedded table and MaterialX, and
 # leaves the rest to the plain build.
-validate_once="validate_on_device_(aluminium|beryllium|chromium|figure2_edge_tint|gold|gold_measured_file|gold_rgb_ior|iron|silver|tinted_steel|titanium|f82_basis|acescg_desaturated)$"
+validate_once="validate_on_device_(aluminium|aluminium_brushed_openpbr|beryllium|chromium|figure2_edge_tint|gold|gold_measured_file|gold_rgb_ior|iron|silver|tinted_steel|titanium|f82_basis|acescg_desaturated)$"
 # The package test installs instrumented static libraries, which a plain consumer cannot link.
 # The per-material Ninja test checks build edges, not memory, the two-writer test files between
 # processes, and output_hashes checks bytes
 # the plain build's run already compares (the same code paths run in MatcCli under sanitizers):
 # once, unsanitised, is their budget. So is it for the browser and Dawn checks (pages in
-# Chromium, WGSL on Dawn, three.js and Babylon.js against the CPU runtime): their time goes to the
+# Chromium, WGSL on Dawn, three.js and Babylon.js against the CPU runtime, in a one-basis build and
+# a per-material one): their time goes to the
 # uninstrumented browser and to `matc eval` runs some 40 times slower under the sanitizers (445 s
 # of the sanitized run's 1150 s of test time before they left it), while the matc code they call
 # runs sanitized in MatcCli and the bad-input catalogue.
-browser_tests="_in_browser|_against_reference|_on_dawn"
+browser_tests="_in_browser|_against_reference|_on_dawn|_engine_per_material_basis"
 # The docs blocks print the main suite's studies again (150 s of test time here, accuracy's alone
 # 53 s): the text is checked once, in the plain build, and the studies' code runs under the
 # sanitizers through their unit tests (accuracy_test, coat_test, coated_compile_test, ...). So do
