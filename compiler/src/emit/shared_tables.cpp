@@ -31,16 +31,10 @@ SharedTables::SharedTables(const SharedTableOptions& options)
 const SharedTables::Baked& SharedTables::baked() const {
   std::call_once(lazy_->once, [this] {
     Baked baked;
-    std::vector<runtime::BasisView> bases;
-    for (const runtime::BasisKind basis : options_.layers)
-      bases.push_back(runtime::shipped_basis(basis));
-    baked.layers = bake_luts(bases, options_.lut);
-    std::vector<const Lut*> stored;
+    baked.layers = bake_luts(options_.layers, options_.lut);
     for (const BakedLut& layer : baked.layers)
       baked.stored.push_back(stored_as(layer.lut, options_.lut_precision));
-    for (const Lut& layer : baked.stored)
-      stored.push_back(&layer);
-    baked.atlas = side_by_side(stored);
+    baked.atlas = side_by_side(baked.stored);
     baked.file_bytes =
         options_.layers.size() == 1
             ? encode_lut(baked.layers.front(), options_.format, options_.lut_precision)

@@ -29,18 +29,12 @@ std::vector<DefaultLutHash> compute_default_lut_hashes() {
             {basis, format, precision, hash_of_bytes(encode_lut(baked, format, precision))});
     }
   }
-  std::vector<runtime::BasisView> bases;
-  for (const runtime::BasisKind basis : runtime::kPerMaterialBases)
-    bases.push_back(runtime::shipped_basis(basis));
-  const std::vector<BakedLut> layers = bake_luts(bases, {});
+  const std::vector<BakedLut> layers = bake_luts(runtime::kPerMaterialBases, {});
   for (const LutPrecision precision : kLutPrecisions) {
     std::vector<Lut> stored;
     for (const BakedLut& layer : layers)
       stored.push_back(stored_as(layer.lut, precision));
-    std::vector<const Lut*> pointers;
-    for (const Lut& layer : stored)
-      pointers.push_back(&layer);
-    const LutAtlas atlas = side_by_side(pointers);
+    const LutAtlas atlas = side_by_side(stored);
     for (const LutFormat format : kLutFormats) {
       hashes.push_back({runtime::kPerMaterialBases.front(), format, precision,
                         hash_of_bytes(encode_layered_lut(layers, atlas, format, precision)), true});

@@ -21,7 +21,7 @@ struct DefaultLutHash {
   runtime::BasisKind basis = runtime::kDefaultBasis;
   LutFormat format = LutFormat::ktx2;
   LutPrecision precision = LutPrecision::f32;
-  std::string hash;  // hash_of_bytes of encode_lut(...) (encode_lut_atlas(...) when layered)
+  std::string hash;  // hash_of_bytes of encode_lut(...) (encode_layered_lut(...) when layered)
   bool layered = false;
 };
 

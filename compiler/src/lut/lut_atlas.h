@@ -21,6 +21,6 @@ struct LutAtlas {
 };
 
 // The layers in order; all must share one size.
-LutAtlas side_by_side(std::span<const Lut* const> layers);
+LutAtlas side_by_side(std::span<const Lut> layers);
 
 }  // namespace matc

@@ -17,8 +17,21 @@ namespace matc {
 
 namespace {
 
-formats::TexelImage image_of(const Lut& lut) {
-  return {lut.size, lut.size, runtime::kBasisSize, lut.texels};
+// A table's texels (`width` x `height` RGBA) in a texture format: KTX2, DDS or raw.
+std::string encode_texture(std::size_t width, std::size_t height, std::span<const float> texels,
+                           LutFormat format, LutPrecision precision) {
+  const formats::TexelImage image{width, height, runtime::kBasisSize, texels};
+  switch (format) {
+    case LutFormat::ktx2:
+      return formats::encode_ktx2({&image, 1}, precision);
+    case LutFormat::dds:
+      return formats::encode_dds({&image, 1}, precision);
+    case LutFormat::raw:
+      return formats::texel_bytes(texels, precision);
+    case LutFormat::header:
+      break;
+  }
+  throw std::invalid_argument("encode_texture: the header is written from the bakes");
 }
 
 }  // namespace
@@ -48,22 +61,17 @@ std::vector<BakedLut> bake_luts(std::span<const runtime::BasisView> bases,
   return baked;
 }
 
+std::vector<BakedLut> bake_luts(std::span<const runtime::BasisKind> bases,
+                                const LutOptions& options) {
+  std::vector<runtime::BasisView> views;
+  for (const runtime::BasisKind basis : bases)
+    views.push_back(runtime::shipped_basis(basis));
+  return bake_luts(views, options);
+}
+
 std::string encode_lut(const BakedLut& baked, LutFormat format, LutPrecision precision) {
-  switch (format) {
-    case LutFormat::ktx2: {
-      const formats::TexelImage image = image_of(baked.lut);
-      return formats::encode_ktx2({&image, 1}, precision);
-    }
-    case LutFormat::dds: {
-      const formats::TexelImage image = image_of(baked.lut);
-      return formats::encode_dds({&image, 1}, precision);
-    }
-    case LutFormat::raw:
-      return formats::texel_bytes(baked.lut.texels, precision);
-    case LutFormat::header:
-      return encode_lut_header(baked, precision);
-  }
-  return {};
+  if (format == LutFormat::header) return encode_lut_header(baked, precision);
+  return encode_texture(baked.lut.size, baked.lut.size, baked.lut.texels, format, precision);
 }
 
 nlohmann::ordered_json roughness_table_layout(std::string_view columns_from_ndotv,
@@ -98,25 +106,10 @@ nlohmann::ordered_json lut_manifest(const BakedLut& baked, LutFormat format,
   return manifest;
 }
 
-std::string encode_lut_atlas(const LutAtlas& atlas, LutFormat format, LutPrecision precision) {
-  const formats::TexelImage image{atlas.width(), atlas.size, runtime::kBasisSize, atlas.texels};
-  switch (format) {
-    case LutFormat::ktx2:
-      return formats::encode_ktx2({&image, 1}, precision);
-    case LutFormat::dds:
-      return formats::encode_dds({&image, 1}, precision);
-    case LutFormat::raw:
-      return formats::texel_bytes(atlas.texels, precision);
-    case LutFormat::header:
-      break;
-  }
-  throw std::invalid_argument("encode_lut_atlas: the header is encode_layered_lut's");
-}
-
 std::string encode_layered_lut(std::span<const BakedLut> layers, const LutAtlas& atlas,
                                LutFormat format, LutPrecision precision) {
   if (format == LutFormat::header) return encode_layered_lut_header(layers, atlas, precision);
-  return encode_lut_atlas(atlas, format, precision);
+  return encode_texture(atlas.width(), atlas.size, atlas.texels, format, precision);
 }
 
 nlohmann::ordered_json layered_lut_manifest(std::span<const BakedLut> layers, const LutAtlas& atlas,

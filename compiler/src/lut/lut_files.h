@@ -27,8 +27,11 @@ struct BakedLut {
 };
 
 BakedLut bake_lut(const runtime::BasisView& basis, const LutOptions& options);
-// The same for several bases at once (preintegrate_luts: the GGX samples shared).
+// The same for several bases at once (preintegrate_luts: the GGX samples shared), and for
+// shipped bases by kind.
 std::vector<BakedLut> bake_luts(std::span<const runtime::BasisView> bases,
+                                const LutOptions& options);
+std::vector<BakedLut> bake_luts(std::span<const runtime::BasisKind> bases,
                                 const LutOptions& options);
 
 // The table as a file of this precision stores it (texels rounded through half for f16), so CPU
@@ -50,9 +53,6 @@ std::string encode_layered_lut(std::span<const BakedLut> layers, const LutAtlas&
                                LutFormat format, LutPrecision precision);
 nlohmann::ordered_json layered_lut_manifest(std::span<const BakedLut> layers, const LutAtlas& atlas,
                                             LutFormat format, LutPrecision precision);
-// The texture formats' bytes of an atlas (not the header, which encode_layered_lut writes).
-std::string encode_lut_atlas(const LutAtlas& atlas, LutFormat format, LutPrecision precision);
-
 // The "layout" of a manifest for a square table with rows roughness and columns
 // u = `columns_from_ndotv` (the LUT's sqrt(NdotV), the LTC table's 1 - sqrt(1 - NdotV)), with
 // `channels` floats per texel.
