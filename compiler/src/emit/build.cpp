@@ -87,16 +87,6 @@ runtime::BasisView Build::basis_for(const Material& material) const {
   return runtime::shipped_basis(chosen_basis(material, basis_choice()));
 }
 
-std::size_t Build::lut_layer(runtime::BasisKind basis) const {
-  const auto& layers = tables_.layers();
-  const auto found = std::find(layers.begin(), layers.end(), basis);
-  if (found == layers.end()) {
-    throw std::invalid_argument(
-        fmt::format("this build's table holds no layer of the {} basis", basis_name(basis)));
-  }
-  return static_cast<std::size_t>(found - layers.begin());
-}
-
 std::vector<OutputFile> Build::shared_outputs() const {
   std::vector<OutputFile> files;
   const auto& emit = options_.emit;

@@ -53,7 +53,7 @@ class Build {
   // The bases of the table's layers, in order (one unless --basis auto), and where `basis` is
   // among them (std::invalid_argument if the table holds none of it).
   const std::vector<runtime::BasisKind>& lut_layers() const { return tables_.layers(); }
-  std::size_t lut_layer(runtime::BasisKind basis) const;
+  std::size_t lut_layer(runtime::BasisKind basis) const { return tables_.layer_of(basis); }
   // The table is baked on first use (the LUT file, a header or the manifest naming its hash,
   // validation): a run that writes none of those never pays for it.
   const BakedLut& lut() const { return tables_.lut(); }

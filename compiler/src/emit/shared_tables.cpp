@@ -46,11 +46,17 @@ const SharedTables::Baked& SharedTables::baked() const {
   return *lazy_->baked;
 }
 
-const Lut& SharedTables::stored_lut(runtime::BasisKind basis) const {
+std::size_t SharedTables::layer_of(runtime::BasisKind basis) const {
   const auto layer = std::find(options_.layers.begin(), options_.layers.end(), basis);
-  if (layer == options_.layers.end())
-    throw std::invalid_argument(fmt::format("the table holds no {} layer", basis_name(basis)));
-  return baked().stored[static_cast<std::size_t>(layer - options_.layers.begin())];
+  if (layer == options_.layers.end()) {
+    throw std::invalid_argument(
+        fmt::format("this build's table holds no layer of the {} basis", basis_name(basis)));
+  }
+  return static_cast<std::size_t>(layer - options_.layers.begin());
+}
+
+const Lut& SharedTables::stored_lut(runtime::BasisKind basis) const {
+  return baked().stored[layer_of(basis)];
 }
 
 LutReference SharedTables::lut_reference() const {

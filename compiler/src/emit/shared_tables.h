@@ -47,6 +47,8 @@ class SharedTables {
   // Every layer side by side as stored: the texture the file holds.
   const LutAtlas& stored_atlas() const { return baked().atlas; }
   const std::vector<runtime::BasisKind>& layers() const { return options_.layers; }
+  // Where `basis` is among them (std::invalid_argument if the table holds none of it).
+  std::size_t layer_of(runtime::BasisKind basis) const;
   const Lut* embedded_lut() const { return embedded_lut_ ? &*embedded_lut_ : nullptr; }
   const CoefficientTable& stored_coefficient_table() const { return stored_coefficient_table_; }
   // The preintegrated table's file name and hash, as headers and the manifest name it (the
