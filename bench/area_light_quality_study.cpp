@@ -244,7 +244,7 @@ int main(int argc, char** argv) {
                "Also score the quality level's blend with other weights");
   CLI11_PARSE(app, argc, argv);
 
-  const matc::Build build(matc::BuildOptions{});
+  const matc::Build build(matc::one_basis_build());
   const matc::ComparisonLobes lobes(build.basis().samples());
   const matc::Lut schlick_lut = matc::preintegrate_lut(lobes.view(), {});
   const Inputs inputs{build, schlick_lut, views, samples};

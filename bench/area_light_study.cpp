@@ -360,7 +360,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
-  const matc::Build build(matc::BuildOptions{});
+  const matc::Build build(matc::one_basis_build());
   const matc::ComparisonLobes lobes(build.basis().samples());
   const matc::Lut lobe_lut = matc::preintegrate_lut(lobes.view(), {});
   std::vector<matc::CompiledMaterial> materials;

@@ -45,7 +45,8 @@ MIXED=1 generate_materials "$work/mixed" "$count"
 
 j1=$(measure j1 "$work/out1" "$matc" -q -j 1 -o "$work/out1" "$work"/materials/*.json)
 j2=$(measure j2 "$work/out2" "$matc" -q -j 2 -o "$work/out2" "$work"/materials/*.json)
-auto=$(measure auto "$work/out5" "$matc" -q -j 2 --basis auto -o "$work/out5" "$work"/mixed/*.json)
+auto=$(measure auto "$work/out5" "$matc" -q -j 2 -o "$work/out5" "$work"/mixed/*.json)
+powers=$(measure powers "$work/out6" "$matc" -q -j 2 --basis powers -o "$work/out6" "$work"/materials/*.json)
 small=$(measure small "$work/out3" "$matc" -q -j 2 -o "$work/out3" "$work"/small/*.json)
 single=$(measure single "$work/out4" "$matc" -q -j 1 -o "$work/out4" "$work/small/m000001.json")
 
@@ -87,18 +88,21 @@ read -r _ j1_s j1_mb j1_cpu j1_user <<<"$j1"
 read -r _ j2_s j2_mb j2_cpu j2_user <<<"$j2"
 read -r _ small_s small_mb small_cpu small_user <<<"$small"
 read -r _ auto_s auto_mb auto_cpu auto_user <<<"$auto"
+read -r _ powers_s powers_mb powers_cpu powers_user <<<"$powers"
 read -r _ single_s single_mb single_cpu single_user <<<"$single"
 read -r _ cli_s _ <<<"$baseline"
 read -r _ disk_s _ <<<"$disk_only"
 rate() { awk -v n="$1" -v s="$2" 'BEGIN { printf("%.0f", n / s) }'; }
 echo "Measured on $(nproc) CPU(s), $count generated artistic materials, every output (GLSL, HLSL,"
-echo "SPIR-V, C header, JSON, the 128x128 table, the manifest); the least of three runs each:"
+echo "SPIR-V, C header, JSON, the table (a 128x128 layer per basis), the manifest); the least of three"
+echo "runs each:"
 echo
 echo "| run | time (s) | CPU, user + system (s) | of it user (s) | materials/s | peak memory (MiB) |"
 echo "|---|---:|---:|---:|---:|---:|"
 echo "| \`matc -j 1\` | $j1_s | $j1_cpu | $j1_user | $(rate "$count" "$j1_s") | $j1_mb |"
 echo "| \`matc -j 2\` | $j2_s | $j2_cpu | $j2_user | $(rate "$count" "$j2_s") | $j2_mb |"
-echo "| \`matc -j 2 --basis auto\`, half of them F82-tint looks (a basis per material, the table's two layers) | $auto_s | $auto_cpu | $auto_user | $(rate "$count" "$auto_s") | $auto_mb |"
+echo "| \`matc -j 2\`, half of them F82-tint looks (each its basis: \`f82\` for those, \`powers\` for the rest) | $auto_s | $auto_cpu | $auto_user | $(rate "$count" "$auto_s") | $auto_mb |"
+echo "| \`matc -j 2 --basis powers\` (one basis, the table's one layer) | $powers_s | $powers_cpu | $powers_user | $(rate "$count" "$powers_s") | $powers_mb |"
 echo "| \`matc -j 2\`, $((count / 10)) materials | $small_s | $small_cpu | $small_user | $(rate $((count / 10)) "$small_s") | $small_mb |"
 echo "| \`matc\`, one material (process start, table bake, compile) | $single_s | $single_cpu | $single_user | $(rate 1 "$single_s") | $single_mb |"
 echo "| writing the -j 2 run's $files files alone (perl: write a temporary, rename), no compile | $disk_s | - | - | - | - |"

@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
       matc::read_material_file(MATC_EXAMPLES_DIR "/figure2_edge_tint.json");
   const matc::CompiledMaterial material =
       matc::compile_material(*parsed.material, matc::runtime::shipped_basis());
-  const matc::Build build(matc::BuildOptions{});
+  const matc::Build build(matc::one_basis_build());
   const matc::ComparisonLobes lobes(matc::runtime::shipped_basis().samples());
   const matc::Lut lobe_lut = matc::preintegrate_lut(lobes.view(), {});
 

@@ -45,9 +45,15 @@ struct Comparison {
   // Ours with this basis instead of the default (the fitted bases' piecewise polynomials).
   std::optional<matc::runtime::BasisKind> basis = std::nullopt;
   bool tinted_coat = false;  // ours_coated under a tinted coat instead of a clear one
+  // Ours in a default build (a basis per material, the table a layer per basis side by side)
+  // instead of a one-basis build, and ours of an F82-tint material (in a default build, the f82
+  // basis and layer) instead of the Gulbrandsen example's. The baseline is the one-basis powers
+  // build's with the Gulbrandsen example either way.
+  bool default_build = false;
+  bool f82_tint_material = false;
 };
 
-const std::array<Comparison, 27> kComparisons = {{
+const std::array<Comparison, 33> kComparisons = {{
     {"F alone, compiled coefficients", FresnelQuantity::direct, FresnelModel::ours,
      FresnelModel::schlick, std::nullopt},
     {"one GGX light, compiled coefficients", FresnelQuantity::ggx_light, FresnelModel::ours,
@@ -58,6 +64,17 @@ const std::array<Comparison, 27> kComparisons = {{
     {"one GGX light, compiled coefficients, `--basis f82` (closed form m^5, mu m^6, mu m^11)",
      FresnelQuantity::ggx_light, FresnelModel::ours, FresnelModel::schlick, std::nullopt, true,
      matc::runtime::BasisKind::f82},
+    // Issue #66: the default build gives each material its basis.
+    {"one GGX light, default build (a basis per material): a Gulbrandsen or measured metal, "
+     "`powers`",
+     FresnelQuantity::ggx_light, FresnelModel::ours, FresnelModel::schlick, 1.15, true,
+     std::nullopt, false, true, false},
+    {"one GGX light, default build: an F82-tint material (OpenPBR's brushed aluminium), `f82`",
+     FresnelQuantity::ggx_light, FresnelModel::ours, FresnelModel::schlick, 1.15, true,
+     std::nullopt, false, true, true},
+    {"one GGX light, `--basis f82` (one layer): the same F82-tint material",
+     FresnelQuantity::ggx_light, FresnelModel::ours, FresnelModel::schlick, std::nullopt, true,
+     matc::runtime::BasisKind::f82, false, false, true},
     {"one GGX light, textured: coefficient table from r, g maps vs F0 map",
      FresnelQuantity::ggx_light, FresnelModel::table, FresnelModel::schlick_textured, 1.5},
     {"one GGX light, textured: baked F0, C2, C3 maps vs F0 map", FresnelQuantity::ggx_light,
@@ -72,6 +89,16 @@ const std::array<Comparison, 27> kComparisons = {{
      std::nullopt},
     {"split-sum image light (environment and table fetches)", FresnelQuantity::preintegrated,
      FresnelModel::ours, FresnelModel::schlick, 1.10},
+    {"split-sum image light, default build: a Gulbrandsen or measured metal on the table's "
+     "`powers` layer",
+     FresnelQuantity::preintegrated, FresnelModel::ours, FresnelModel::schlick, 1.10, true,
+     std::nullopt, false, true, false},
+    {"split-sum image light, default build: an F82-tint material on the table's `f82` layer",
+     FresnelQuantity::preintegrated, FresnelModel::ours, FresnelModel::schlick, 1.10, true,
+     std::nullopt, false, true, true},
+    {"split-sum image light, `--basis f82` (one layer): the same F82-tint material",
+     FresnelQuantity::preintegrated, FresnelModel::ours, FresnelModel::schlick, std::nullopt, true,
+     matc::runtime::BasisKind::f82, false, false, true},
     {"split-sum image light, textured: coefficient table vs F0 map", FresnelQuantity::preintegrated,
      FresnelModel::table, FresnelModel::schlick_textured, std::nullopt},
     {"split-sum image light, textured: baked maps vs F0 map", FresnelQuantity::preintegrated,
@@ -197,6 +224,8 @@ int main(int argc, char** argv) {
 
   const matc::ParseResult parsed =
       matc::read_material_file(MATC_EXAMPLES_DIR "/figure2_edge_tint.json");
+  const matc::ParseResult f82_tint_parsed =
+      matc::read_material_file(MATC_EXAMPLES_DIR "/aluminium_brushed_openpbr.json");
   // One build (library and compiled material) per basis the rows use.
   // The coated rows' material: the same metal under a clear lacquer (index 1.5, roughness 0.1),
   // or under the examples' copper_lacquered coat, tinted.
@@ -209,39 +238,52 @@ int main(int argc, char** argv) {
     matc::CompiledMaterial material;
     matc::CompiledMaterial coated;
     matc::CompiledMaterial tinted;
+    matc::CompiledMaterial f82_tint;
   };
-  std::map<matc::runtime::BasisKind, std::unique_ptr<BasisBuild>> builds;
+  // A build per basis the rows force, and the default build (a basis per material).
+  using BuildKey = std::pair<matc::runtime::BasisKind, bool>;  // (basis, default build)
+  std::map<BuildKey, std::unique_ptr<BasisBuild>> builds;
   for (const Comparison& row : kComparisons) {
-    const matc::runtime::BasisKind kind = row.basis.value_or(matc::runtime::kDefaultBasis);
-    if (builds.contains(kind)) continue;
-    matc::BuildOptions options;
-    options.basis = kind;
-    matc::Build build(options);
-    matc::CompiledMaterial material = matc::compile_material(*parsed.material, build.basis());
-    matc::CompiledMaterial coated = matc::compile_material(clear_material, build.basis());
-    matc::CompiledMaterial tinted = matc::compile_material(tinted_material, build.basis());
-    builds[kind] = std::make_unique<BasisBuild>(
-        BasisBuild{std::move(build), std::move(material), std::move(coated), std::move(tinted)});
+    const BuildKey build_key{row.basis.value_or(matc::runtime::kDefaultBasis), row.default_build};
+    if (builds.contains(build_key)) continue;
+    matc::Build build(build_key.second ? matc::BuildOptions{}
+                                       : matc::one_basis_build(build_key.first));
+    const auto compiled = [&build](const matc::Material& material) {
+      return matc::compile_material(material, build.basis_for(material));
+    };
+    builds[build_key] = std::make_unique<BasisBuild>(
+        BasisBuild{std::move(build), compiled(*parsed.material), compiled(clear_material),
+                   compiled(tinted_material), compiled(*f82_tint_parsed.material)});
   }
   const matc::SpirvWords vertex = matc::compile_fullscreen_stage(
       matc::fullscreen_vertex_source(), matc::ShaderStage::vertex, "fullscreen.vert");
-  // Each variant's SPIR-V once; every family compiles the same modules.
-  using VariantKey = std::tuple<FresnelModel, FresnelQuantity, matc::runtime::BasisKind, bool>;
+  // Each variant's SPIR-V once; every family compiles the same modules. The key: model,
+  // quantity, basis, tinted coat, default build, F82-tint material.
+  using VariantKey =
+      std::tuple<FresnelModel, FresnelQuantity, matc::runtime::BasisKind, bool, bool, bool>;
   const auto key = [](const Comparison& row, FresnelModel model) {
-    return VariantKey{model, row.quantity, row.basis.value_or(matc::runtime::kDefaultBasis),
-                      matc::draws_coated_material(model) && row.tinted_coat};
+    const bool ours = model == row.ours;
+    return VariantKey{
+        model,
+        row.quantity,
+        ours ? row.basis.value_or(matc::runtime::kDefaultBasis) : matc::runtime::kDefaultBasis,
+        matc::draws_coated_material(model) && row.tinted_coat,
+        ours && row.default_build,
+        ours && row.f82_tint_material};
   };
   std::map<VariantKey, matc::SpirvWords> fragments;
   for (const Comparison& row : kComparisons) {
     for (const FresnelModel model : {row.ours, row.baseline}) {
-      if (fragments.contains(key(row, model))) continue;
-      const BasisBuild& basis_build = *builds.at(std::get<2>(key(row, model)));
-      fragments[key(row, model)] = matc::compile_fullscreen_stage(
-          matc::cost_pass_source(basis_build.build,
-                                 !matc::draws_coated_material(model) ? basis_build.material
-                                 : row.tinted_coat                   ? basis_build.tinted
-                                                                     : basis_build.coated,
-                                 model, row.quantity, 1280, 720),
+      const VariantKey variant = key(row, model);
+      if (fragments.contains(variant)) continue;
+      const BasisBuild& basis_build = *builds.at({std::get<2>(variant), std::get<4>(variant)});
+      const matc::CompiledMaterial& material = std::get<5>(variant) ? basis_build.f82_tint
+                                               : !matc::draws_coated_material(model)
+                                                   ? basis_build.material
+                                               : row.tinted_coat ? basis_build.tinted
+                                                                 : basis_build.coated;
+      fragments[variant] = matc::compile_fullscreen_stage(
+          matc::cost_pass_source(basis_build.build, material, model, row.quantity, 1280, 720),
           matc::ShaderStage::fragment, "cost_pass.frag");
     }
   }

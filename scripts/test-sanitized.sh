@@ -101,7 +101,7 @@ validate_once="validate_on_device_(aluminium|aluminium_brushed_openpbr|beryllium
 # uninstrumented browser and to `matc eval` runs some 40 times slower under the sanitizers (445 s
 # of the sanitized run's 1150 s of test time before they left it), while the matc code they call
 # runs sanitized in MatcCli and the bad-input catalogue.
-browser_tests="_in_browser|_against_reference|_on_dawn|_engine_per_material_basis"
+browser_tests="_in_browser|_against_reference|_on_dawn|_engine_one_basis"
 # The docs blocks print the main suite's studies again (150 s of test time here, accuracy's alone
 # 53 s): the text is checked once, in the plain build, and the studies' code runs under the
 # sanitizers through their unit tests (accuracy_test, coat_test, coated_compile_test, ...). So do

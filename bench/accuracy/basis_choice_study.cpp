@@ -20,6 +20,7 @@
 #include <fmt/core.h>
 
 #include "compile/basis_choice.h"
+#include "default_basis.h"
 #include "error_totals.h"
 #include "f82_tint_look.h"
 #include "fit/accuracy.h"
@@ -38,11 +39,9 @@ using matc::runtime::BasisKind;
 constexpr std::array<BasisKind, 4> kBases = {BasisKind::powers, BasisKind::extended,
                                              BasisKind::paper, BasisKind::f82};
 
-// The basis `matc --basis auto` gives a bare material of this model.
+// The basis a default build (`--basis auto`) gives a bare material of this model.
 BasisKind rule_for(matc::MaterialModel model) {
-  matc::Material material;
-  material.model = std::move(model);
-  return matc::per_material_basis(material);
+  return matc::bench::default_basis_for(std::move(model));
 }
 
 // A family of curves and the basis the rule gives them.

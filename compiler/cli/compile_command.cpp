@@ -167,14 +167,6 @@ Command register_compile(CLI::App& app) {
                "Run each material's GLSL and HLSL shaders on a Vulkan device (lavapipe) against "
                "the CPU runtime before writing its files");
   add_device_options(app, options->device);
-  // A table of several layers has no embedded copy (yet): refused before any work, as a usage
-  // error.
-  app.parse_complete_callback([options] {
-    if (options->lut.basis != "auto") return;
-    if (options->embed_lut)
-      throw CLI::ValidationError(
-          "--embed-lut", "embeds one basis' table: give --basis NAME with it, not --basis auto");
-  });
   return {&app, [options] { return run_compile_command(*options); }, true};
 }
 

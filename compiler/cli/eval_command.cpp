@@ -40,8 +40,8 @@ void add_evaluation_options(CLI::App& app, api::EvaluationOptions& options) {
       ->check(CLI::Range(std::size_t{1}, api::kMaxLutSamples));
   add_name_option(app, "--lut-precision", options.lut_precision, "lut_precision",
                   kLutPrecisionHelp);
-  add_name_option(app, "--basis", options.compile.basis, "build_basis",
-                  std::string(kBasisHelp) + kPerMaterialBasisHelp, api::option_default("basis"));
+  add_name_option(app, "--basis", options.compile.basis, "build_basis", kBuildBasisHelp,
+                  api::option_default("build_basis"));
   add_name_option(app, "--coefficient-table-precision", options.coefficient_table_precision,
                   "lut_precision", kCoefficientTablePrecisionHelp, "f16");
   add_color_name_options(app, options.compile);

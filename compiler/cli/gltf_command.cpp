@@ -105,8 +105,8 @@ Command register_gltf(CLI::App& app) {
                    "The asset written (.glb for a .glb, .gltf for a .gltf; the files a .gltf "
                    "names beside it are copied beside the output when it is in another folder)")
       ->required();
-  add_name_option(*command, "--basis", options->compile.basis, "build_basis",
-                  std::string(kBasisHelp) + kPerMaterialBasisHelp, api::option_default("basis"));
+  add_name_option(*command, "--basis", options->compile.basis, "build_basis", kBuildBasisHelp,
+                  api::option_default("build_basis"));
   add_color_name_options(*command, options->compile);
   command->add_flag("-q,--quiet", options->quiet, "No summary line");
   return {command, [options] { return run_gltf(*options); }, true};

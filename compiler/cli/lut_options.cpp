@@ -16,8 +16,8 @@ void add_lut_options(CLI::App& app, LutCliOptions& options, const std::string& p
   add_name_option(app, "--" + prefix + "precision", options.precision, "lut_precision",
                   kLutPrecisionHelp);
   if (per_material_basis) {
-    add_name_option(app, "--basis", options.basis, "build_basis",
-                    std::string(kBasisHelp) + kPerMaterialBasisHelp, api::option_default("basis"));
+    add_name_option(app, "--basis", options.basis, "build_basis", kBuildBasisHelp,
+                    api::option_default("build_basis"));
   } else {
     add_name_option(app, "--basis", options.basis, "basis", kBasisHelp);
   }

@@ -87,7 +87,8 @@ Command register_report(CLI::App& app) {
       ->required();
   command->add_option("-o,--output", options->output_directory, "Output directory")
       ->capture_default_str();
-  add_name_option(*command, "--basis", options->compile.basis, "basis", kBasisHelp);
+  add_name_option(*command, "--basis", options->compile.basis, "build_basis", kBuildBasisHelp,
+                  api::option_default("build_basis"));
   add_color_name_options(*command, options->compile);
 
   return {command, [options] { return run_report(*options); }, true};

@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
-    MaterialRenderer renderer(settings, matc::BuildOptions{}, matc::area_light_render_source,
+    MaterialRenderer renderer(settings, matc::one_basis_build(), matc::area_light_render_source,
                               "area_light_render.frag", /*with_ltc=*/true);
     std::filesystem::create_directories(settings.output);
     fmt::print(

@@ -210,7 +210,7 @@ int main(int argc, char** argv) {
     options.f0 = true;
     const matc::BakedCoefficients baked = matc::bake_coefficients(*inputs, options);
 
-    const matc::Build build(matc::BuildOptions{});
+    const matc::Build build(matc::one_basis_build());
     const matc::vulkan::Context context(
         matc::vulkan::ContextOptions{settings.validation, settings.device});
     const auto width = static_cast<std::uint32_t>(inputs->width);

@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
-    MaterialRenderer renderer(settings, matc::BuildOptions{}, matc::coated_render_source,
+    MaterialRenderer renderer(settings, matc::one_basis_build(), matc::coated_render_source,
                               "coated_render.frag", /*with_ltc=*/false,
                               {kCoatedEstimateCount, kOursBaseFbar});  // lookups from 6
     std::filesystem::create_directories(settings.output);

@@ -37,9 +37,8 @@ struct ComparisonSettings : RenderSettings {
 };
 
 matc::BuildOptions build_options(const ComparisonSettings& settings) {
-  matc::BuildOptions options;
-  options.basis = *matc::runtime::basis_from_name(settings.basis);
-  return options;
+  // One layer: the renders bind matc's table and Schlick's lobe table alike.
+  return matc::one_basis_build(*matc::runtime::basis_from_name(settings.basis));
 }
 
 }  // namespace

@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
   const fs::path& output = settings.output;
 
   try {
-    const matc::Build build(matc::BuildOptions{});
+    const matc::Build build(matc::one_basis_build());
     const matc::vulkan::Context context(
         matc::vulkan::ContextOptions{settings.validation, settings.device});
     const matc::ComparisonLobes lobes(matc::runtime::shipped_basis().samples());

@@ -10,10 +10,13 @@
 //     roughness: 0.3,
 //   });
 export function createMatcMaterial(THREE, { library, material, name, lut, roughness }) {
-  const size = Math.round(Math.sqrt(lut.length / 4));
+  // A default build's table holds a layer per basis side by side (the library says how many, and
+  // each material's snippet samples its own layer: matc_lut_texcoord_<name>); --basis NAME, one.
+  const layers = Number(/#define MATC_LUT_LAYERS (\d+)/.exec(library)?.[1] ?? 1);
+  const size = Math.round(Math.sqrt(lut.length / 4 / layers));
   // RGBA float32 texels, roughness 0 in the first row; linear filtering of float32 textures needs
   // OES_texture_float_linear, which three.js enables when the device has it.
-  const table = new THREE.DataTexture(lut, size, size, THREE.RGBAFormat, THREE.FloatType);
+  const table = new THREE.DataTexture(lut, size * layers, size, THREE.RGBAFormat, THREE.FloatType);
   table.minFilter = THREE.LinearFilter;
   table.magFilter = THREE.LinearFilter;
   table.wrapS = THREE.ClampToEdgeWrapping;
@@ -41,7 +44,11 @@ ${material}
       out vec4 matc_color;
       void main() {
         float NdotV = clamp(dot(normalize(matc_normal), normalize(matc_view)), 0.0, 1.0);
+#ifdef MATC_LUT_LAYERS
+        vec4 bbar = texture(matc_lut, matc_lut_texcoord_${name}(NdotV, matc_roughness));
+#else
         vec4 bbar = texture(matc_lut, matc_lut_texcoord(NdotV, matc_roughness));
+#endif
         // Image-based specular for a white environment: Fbar with multiple scattering.
         vec3 specular = matc_fresnel_preintegrated_${name}(bbar) *
                         matc_energy_compensation(matc_coefficients_${name}, bbar);

@@ -21,7 +21,8 @@ export declare class MatcError extends Error {
 }
 
 export interface CompileOptions {
-  /** --basis: "powers" (default), "extended", "paper" or "f82". */
+  /** --basis: "auto" (default: each material the basis that holds its curve), or one basis for
+   *  every material: "powers", "extended", "paper" or "f82". */
   basis?: string;
   /** --color-space, e.g. "lin_rec709" (default) or "acescg". */
   colorSpace?: string;
@@ -95,6 +96,9 @@ export declare class TextOutputs extends Disposable {
   librarySource(language: ShaderLanguage): string;
   materialSource(language: ShaderLanguage, compiled: CompiledMaterial): string;
   materialJson(compiled: CompiledMaterial): string;
+  /** "auto" (a basis per material: the library reads a table of a layer per basis) or the one
+   *  basis every material is compiled against. */
+  readonly basis: string;
 }
 
 export declare class Matc {

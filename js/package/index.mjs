@@ -139,6 +139,9 @@ export class TextOutputs extends Handle {
     return unwrapped(this.handle.materialSource(checkedString(language, "language"), compiledHandle(compiled)));
   }
   materialJson(compiled) { return unwrapped(this.handle.materialJson(compiledHandle(compiled))); }
+  // The build's basis: "auto" (a basis per material, a table of a layer per basis) or the one
+  // basis every material is compiled against; the tables the library reads are of that basis.
+  get basis() { return this.handle.basis(); }
 }
 
 function compiledHandle(compiled) {

@@ -186,6 +186,7 @@ class JsTextOutputs {
   val material_json(const JsCompiled& compiled) const {
     return guarded([&] { return val(texts_.material_json(compiled.compiled())); });
   }
+  std::string basis() const { return texts_.basis(); }
 
  private:
   matc::api::TextOutputs texts_;
@@ -286,7 +287,8 @@ EMSCRIPTEN_BINDINGS(matc) {
   emscripten::class_<JsTextOutputs>("TextOutputs")
       .function("librarySource", &JsTextOutputs::library_source)
       .function("materialSource", &JsTextOutputs::material_source)
-      .function("materialJson", &JsTextOutputs::material_json);
+      .function("materialJson", &JsTextOutputs::material_json)
+      .function("basis", &JsTextOutputs::basis);
   emscripten::function("parseMaterials", &parse_materials);
   emscripten::function("compile", &compile);
   emscripten::function("textOutputs", &text_outputs);

@@ -106,7 +106,15 @@ void register_build(py::module_& module) {
           "The shared files (name to bytes): library, tables and their descriptions")
       .def_property_readonly(
           "lut", [](const Build& b) { return without_gil([&] { return b.lut(); }); },
-          "The preintegrated table as matc_lut.* stores it (baked on first use)")
+          "The preintegrated table's first layer as matc_lut.* stores it (baked on first use)")
+      .def(
+          "lut_layer",
+          [](const Build& b, const std::string& basis) {
+            return without_gil([&] { return b.lut(basis); });
+          },
+          py::arg("basis"),
+          "The preintegrated table's layer of `basis` (a default build holds powers then f82 side "
+          "by side in matc_lut.*) as it stores it")
       .def_property_readonly(
           "coefficient_table",
           [](const Build& b) { return without_gil([&] { return b.coefficient_table(); }); },

@@ -70,7 +70,7 @@ void register_commands(py::module_& module) {
              py::arg("coefficient_table_precision") = "f16", py::arg("basis") = defaults.basis,
              py::arg("color_space") = defaults.color_space,
              py::arg("gamut_mapping") = defaults.gamut_mapping);
-  module.def("describe_basis", &basis_dict, py::arg("basis") = defaults.basis,
+  module.def("describe_basis", &basis_dict, py::arg("basis") = api::option_default("basis"),
              "A shipped basis as `matc basis` shows it: its samples (mu, b_0..b_3), probes, and "
              "its shader polynomials' error against the table");
   module.def(

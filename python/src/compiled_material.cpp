@@ -142,7 +142,7 @@ void register_compiled_material(py::module_& module) {
         });
       },
       py::arg("coefficients"), py::arg("mu"),
-      py::arg("basis") = api::default_compile_options().basis,
+      py::arg("basis") = api::option_default("basis"),
       "F(mu) for any (3, 4) coefficients (a coefficient table's, a texture's) as the shaders "
       "compute it");
 

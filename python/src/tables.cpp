@@ -9,6 +9,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
+#include "matc/api/options.h"
 #include "matc/api/tables.h"
 #include "numpy_arrays.h"
 
@@ -78,7 +79,7 @@ void register_tables(py::module_& module) {
         const py::gil_scoped_release release;  // a bake takes a while; another may be running
         return api::preintegrated_table({basis, size, samples, precision});
       },
-      py::arg("basis") = api::default_compile_options().basis,
+      py::arg("basis") = api::option_default("basis"),
       py::arg("size") = api::kDefaultLutSize, py::arg("samples") = api::kDefaultLutSamples,
       py::arg("precision") = "f32",
       "The preintegrated table as matc writes it (f16: rounded as the file stores it); baked once "
@@ -112,7 +113,7 @@ void register_tables(py::module_& module) {
       [](const std::string& basis, const std::string& precision) {
         return api::coefficient_table(basis, precision);
       },
-      py::arg("basis") = api::default_compile_options().basis, py::arg("precision") = "f16",
+      py::arg("basis") = api::option_default("basis"), py::arg("precision") = "f16",
       "The basis' coefficient table as matc_coefficient_table.* stores it (f16 by default).");
 }
 

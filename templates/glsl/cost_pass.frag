@@ -175,7 +175,7 @@ void main() {
   vec3 V = vec3(0.0, 1.0, 0.0);
   vec3 P = vec3(2.0 * uv.x - 1.0, 0.0, 2.0 * uv.y - 1.0);
   float ndotv = dot(N, V);
-  vec4 texel = textureLod(sampler2D(matc_lut, matc_lut_sampler), matc_lut_texcoord(ndotv, uv.y), 0.0);
+  vec4 texel = textureLod(sampler2D(matc_lut, matc_lut_sampler), {{lut_texcoord}}(ndotv, uv.y), 0.0);
   vec4 ltc = textureLod(sampler2D(matc_ltc, matc_lut_sampler), matc_ltc_texcoord(ndotv, uv.y), 0.0);
   vec3 q0 = vec3(-1.0, 2.0, -1.5), q1 = vec3(1.0, 2.0, -1.5);
   vec3 q2 = vec3(1.0, 2.5, -0.5), q3 = vec3(-1.0, 2.5, -0.5);
@@ -210,7 +210,7 @@ void main() {
   vec3 o = R / (abs(R.x) + abs(R.y) + abs(R.z));
   vec2 env_uv = (o.y >= 0.0 ? o.xz : (1.0 - abs(o.zx)) * sign(o.xz)) * 0.5 + 0.5;
   vec3 radiance = textureLod(sampler2D(environment, matc_lut_sampler), env_uv, uv.y * 6.0).rgb;
-  vec4 texel = textureLod(sampler2D(matc_lut, matc_lut_sampler), matc_lut_texcoord(NoV, uv.y), 0.0);
+  vec4 texel = textureLod(sampler2D(matc_lut, matc_lut_sampler), {{lut_texcoord}}(NoV, uv.y), 0.0);
 #if MATC_COST_COAT
   // The coat lobe: the environment and the table again, at the coat's roughness.
   vec3 coat_radiance =

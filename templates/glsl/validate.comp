@@ -19,7 +19,7 @@ void main() {
   vec4 embedded = vec4(0.0);
 #ifdef MATC_EMBEDDED_LUT_SIZE
   embedded = vec4(matc_fresnel_preintegrated_{{name}}(
-                      matc_preintegrated_basis_embedded(query.y, query.z)), 1.0);
+                      matc_preintegrated_basis_embedded{{suffix}}(query.y, query.z)), 1.0);
 #endif
   matc_results[4u * i] = vec4(matc_fresnel_{{name}}(query.x), 1.0);
   matc_results[4u * i + 1u] = vec4(matc_fresnel_preintegrated_{{name}}(bbar), 1.0);

@@ -5,4 +5,4 @@
 float2 matc_lut_texcoord_{{basis}}(float NdotV, float roughness) {
   return matc_lut_layer_texcoord(NdotV, roughness, {{layer}}.0);
 }
-{{analytic_lut}}{{area_light}}
+{{analytic_lut}}{{area_light}}{{embedded_lut}}

@@ -6,9 +6,11 @@
 #define MATC_LUT_LAYERS {{lut_layers}}
 float2 matc_lut_layer_texcoord(float NdotV, float roughness, float layer) {
   float2 axes = float2(sqrt(saturate(NdotV)), saturate(roughness));
-  float2 texcoord =
-      axes * (float(MATC_LUT_SIZE - 1) / float(MATC_LUT_SIZE)) + 0.5 / float(MATC_LUT_SIZE);
-  return float2((texcoord.x + layer) / float(MATC_LUT_LAYERS), texcoord.y);
+  // ((axes (size - 1) + 0.5) / size + (layer, 0)) / (layers, 1), written as one multiply-add:
+  // with `layer` a constant, as its callers give it, no more than one layer's costs.
+  float2 size = float2(float(MATC_LUT_SIZE * MATC_LUT_LAYERS), float(MATC_LUT_SIZE));
+  return axes * (float(MATC_LUT_SIZE - 1) / size) +
+         (float2(0.5 + layer * float(MATC_LUT_SIZE), 0.5) / size);
 }
 // The first layer: that of matc_basis and matc_fresnel above.
 float2 matc_lut_texcoord(float NdotV, float roughness) {

@@ -17,7 +17,7 @@ void main(uint3 id : SV_DispatchThreadID) {
   float4 embedded = 0.0;
 #ifdef MATC_EMBEDDED_LUT_SIZE
   embedded = float4(matc_fresnel_preintegrated_{{name}}(
-                        matc_preintegrated_basis_embedded(query.y, query.z)), 1.0);
+                        matc_preintegrated_basis_embedded{{suffix}}(query.y, query.z)), 1.0);
 #endif
   matc_results[4 * i] = float4(matc_fresnel_{{name}}(query.x), 1.0);
   matc_results[4 * i + 1] = float4(matc_fresnel_preintegrated_{{name}}(bbar), 1.0);

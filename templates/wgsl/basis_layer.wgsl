@@ -5,4 +5,4 @@
 fn matc_lut_texcoord_{{basis}}(NdotV: f32, roughness: f32) -> vec2f {
   return matc_lut_layer_texcoord(NdotV, roughness, {{layer}}.0);
 }
-{{analytic_lut}}{{area_light}}
+{{analytic_lut}}{{area_light}}{{embedded_lut}}

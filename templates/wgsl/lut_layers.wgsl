@@ -6,8 +6,10 @@
 const MATC_LUT_LAYERS: i32 = {{lut_layers}};
 fn matc_lut_layer_texcoord(NdotV: f32, roughness: f32, layer: f32) -> vec2f {
   let axes = vec2f(sqrt(clamp(NdotV, 0.0, 1.0)), clamp(roughness, 0.0, 1.0));
-  let texcoord = axes * (f32(MATC_LUT_SIZE - 1) / f32(MATC_LUT_SIZE)) + 0.5 / f32(MATC_LUT_SIZE);
-  return vec2f((texcoord.x + layer) / f32(MATC_LUT_LAYERS), texcoord.y);
+  // ((axes (size - 1) + 0.5) / size + (layer, 0)) / (layers, 1), written as one multiply-add:
+  // with `layer` a constant, as its callers give it, no more than one layer's costs.
+  let size = vec2f(f32(MATC_LUT_SIZE * MATC_LUT_LAYERS), f32(MATC_LUT_SIZE));
+  return axes * (f32(MATC_LUT_SIZE - 1) / size) + (vec2f(0.5 + layer * f32(MATC_LUT_SIZE), 0.5) / size);
 }
 // The first layer: that of matc_basis and matc_fresnel above.
 fn matc_lut_texcoord(NdotV: f32, roughness: f32) -> vec2f {

@@ -560,6 +560,7 @@ TEST_F(MatcCli, BasisOptionSelectsTheBasisEverywhereItIsRecorded) {
     EXPECT_EQ(result.exit_code, 0) << result.err;
   };
   build("default", {});
+  build("powers", {"--basis", "powers"});
   build("extended", {"--basis", "extended"});
   build("paper", {"--basis", "paper"});
   build("f82", {"--basis", "f82"});
@@ -569,9 +570,14 @@ TEST_F(MatcCli, BasisOptionSelectsTheBasisEverywhereItIsRecorded) {
   const auto lut = [&](const std::string& out) {
     return nlohmann::json::parse(read_file(dir_ / out / "matc_lut.ktx2.json"));
   };
+  // The default gives each material its basis (powers for this one) and the table a layer each.
   EXPECT_EQ(material("default")["basis"]["name"], "powers");
   EXPECT_EQ(material("default")["basis"]["solve"], "minimax");
-  EXPECT_EQ(lut("default")["basis"], "powers");
+  EXPECT_EQ(material("default")["basis"]["lut_layer"], 0);
+  EXPECT_EQ(lut("default")["basis"], "auto");
+  EXPECT_EQ(material("powers")["basis"]["name"], "powers");
+  EXPECT_FALSE(material("powers")["basis"].contains("lut_layer"));
+  EXPECT_EQ(lut("powers")["basis"], "powers");
   EXPECT_EQ(material("extended")["basis"]["name"], "extended");
   EXPECT_EQ(material("extended")["basis"]["solve"], "minimax");
   EXPECT_EQ(lut("extended")["basis"], "extended");
@@ -581,10 +587,10 @@ TEST_F(MatcCli, BasisOptionSelectsTheBasisEverywhereItIsRecorded) {
   EXPECT_EQ(material("f82")["basis"]["name"], "f82");
   EXPECT_EQ(material("f82")["basis"]["solve"], "minimax");
   EXPECT_EQ(lut("f82")["basis"], "f82");
-  for (const std::string out : {"default", "extended", "paper", "f82"}) {
+  for (const std::string out : {"default", "powers", "extended", "paper", "f82"}) {
     const std::string name = out == "default" ? "powers" : out;
     const auto manifest = nlohmann::json::parse(read_file(dir_ / out / "matc_manifest.json"));
-    EXPECT_EQ(manifest["basis"], name);
+    EXPECT_EQ(manifest["basis"], out == "default" ? "auto" : name);
     EXPECT_NE(read_file(dir_ / out / "good.h").find("#define MATC_good_BASIS \"" + name + "\""),
               std::string::npos);
   }
@@ -600,16 +606,19 @@ TEST_F(MatcCli, BasisOptionSelectsTheBasisEverywhereItIsRecorded) {
   EXPECT_EQ(run({"--basis", "schlick", "good.json"}).exit_code, 2);
 }
 
-// A low-tint F82-tint material: the default basis warns and names --basis auto (which gives it
-// f82); with --basis f82 or auto, the curve is held (no warning) and c_3 = 0, as F82-tint lies in
-// span{b_1, b_2}.
-TEST_F(MatcCli, F82BasisHoldsTheF82TintMaterialTheDefaultWarnsAbout) {
+// A low-tint F82-tint material: by default (a basis per material, as --basis auto) and with --basis
+// f82 the curve is held (no warning) and c_3 = 0, as F82-tint lies in span{b_1, b_2}; --basis
+// powers forced on it warns and names --basis auto.
+TEST_F(MatcCli, F82BasisHoldsTheF82TintMaterialPowersWarnsAbout) {
   write_file(dir_ / "m.json", R"({"name": "m", "f82_tint": {"f0": 0.9, "tint": 0.2}})");
-  const CommandResult by_default = run({"-o", "default", "--emit", "json", "m.json"});
-  ASSERT_EQ(by_default.exit_code, 0) << by_default.err;
-  EXPECT_NE(by_default.err.find("compile with --basis auto"), std::string::npos) << by_default.err;
-  for (const std::string basis : {"f82", "auto"}) {
-    const CommandResult held = run({"-o", basis, "--emit", "json", "--basis", basis, "m.json"});
+  const CommandResult forced =
+      run({"-o", "powers", "--emit", "json", "--basis", "powers", "m.json"});
+  ASSERT_EQ(forced.exit_code, 0) << forced.err;
+  EXPECT_NE(forced.err.find("compile with --basis auto"), std::string::npos) << forced.err;
+  for (const std::string basis : {"default", "f82", "auto"}) {
+    std::vector<std::string> args = {"-o", basis, "--emit", "json", "m.json"};
+    if (basis != "default") args.insert(args.begin(), {"--basis", basis});
+    const CommandResult held = run(args);
     ASSERT_EQ(held.exit_code, 0) << held.err;
     EXPECT_EQ(held.err.find("warning"), std::string::npos) << held.err;
     const auto compiled = nlohmann::json::parse(read_file(dir_ / basis / "m.json"));

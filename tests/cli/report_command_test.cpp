@@ -14,10 +14,15 @@ TEST_F(MatcCli, ReportWritesAPlotAndSamplesPerMaterialAndAnIndex) {
     EXPECT_TRUE(fs::exists(dir_ / "rep" / name)) << name;
   const std::string index = read_file(dir_ / "rep" / "index.html");
   EXPECT_NE(index.find("src=\"Gold.svg\""), std::string::npos);
-  EXPECT_NE(index.find("basis <code>powers</code>"), std::string::npos);
+  // The default gives each material its basis: measured gold powers.
+  EXPECT_NE(index.find("basis <code>auto</code>"), std::string::npos);
   const std::string first = read_file(dir_ / "rep" / "Gold.svg");
+  EXPECT_NE(first.find("basis powers"), std::string::npos);
   ASSERT_EQ(run({"report", "-o", "rep", "good.json", "gold.json"}).exit_code, 0);
   EXPECT_EQ(read_file(dir_ / "rep" / "Gold.svg"), first) << "same inputs, same bytes";
+  write_file(dir_ / "tinted.json", R"({"name": "tinted", "f82_tint": {"f0": 0.9, "tint": 0.3}})");
+  ASSERT_EQ(run({"report", "-o", "tinted", "tinted.json"}).exit_code, 0);
+  EXPECT_NE(read_file(dir_ / "tinted" / "tinted.svg").find("basis f82"), std::string::npos);
   ASSERT_EQ(run({"report", "-o", "paper", "--basis", "paper", "gold.json"}).exit_code, 0);
   EXPECT_NE(read_file(dir_ / "paper" / "index.html").find("basis <code>paper</code>"),
             std::string::npos);

@@ -7,7 +7,7 @@
 // (tests/js/engine-probes.mjs has the scene
 // and the CPU side). Then the inputs that must fail, as for three.js, with a Babylon whose patched
 // shader changed.
-//   node check-babylon-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR [--compile-in-page | --basis-auto]
+//   node check-babylon-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR [--compile-in-page | --one-basis]
 import { readFileSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";

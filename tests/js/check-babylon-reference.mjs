@@ -139,7 +139,7 @@ ${environmentCubeFaces.toString()}
     const uniforms = ["world", "viewProjection", "cameraPosition", "viewMatrix", "reference_roughness",
       "reference_f0", "reference_point_position", "reference_point_intensity", "reference_rect_origin",
       "reference_rect_u", "reference_rect_v", "reference_rect_normal", "reference_rect_intensity",
-      "reference_environment_samples", "reference_rect_side", "reference_lut_size", "reference_textured",
+      "reference_environment_samples", "reference_rect_side", "reference_lut_size", "reference_lut_layers", "reference_textured",
       "reference_coated", "reference_coat_roughness"];
     const shader = new ShaderMaterial("reference", scene, { vertexSource: config.babylonVertexShader,
       fragmentSource: config.fragmentPrelude + config.fragmentShader },
@@ -159,7 +159,8 @@ ${environmentCubeFaces.toString()}
     shader.setFloat("reference_rect_intensity", sceneConfig.rect.intensity);
     shader.setInt("reference_environment_samples", sceneConfig.samples.environment);
     shader.setInt("reference_rect_side", sceneConfig.samples.rectSide);
-    shader.setFloat("reference_lut_size", build.lut.getSize().width);
+    shader.setFloat("reference_lut_size", build.lut.getSize().height);
+    shader.setFloat("reference_lut_layers", build.lut.getSize().width / build.lut.getSize().height);
     shader.setInt("reference_textured", textured ? 1 : 0);
     shader.setInt("reference_coated", material.coatRoughness === undefined ? 0 : 1);
     shader.setFloat("reference_coat_roughness", material.coatRoughness ?? 0);

@@ -257,7 +257,9 @@ try {
       worstAssetMix = Math.max(worstAssetMix, d);
       check(d <= 1e-5, `the asset view's ${name}, ${light}: ${d} from (1 - ${m}) three.js's own + ${m} matc's metal`);
     }
-    check(difference(assetRender("engine", "Metal Full", light), metal) > 1e-3, "the asset view: three.js's own metal equals matc's");
+    // That the view draws matc's metals, not three.js's own, is the `mixed` check above (matc's
+    // define on each): a glTF metal is Schlick's curve, which a default build compiles exactly
+    // (the f82 basis), so the two metals' renders may now agree.
   }
   const coated = result.cases.coated;
   check(coated?.labels?.[1]?.includes("F0 in coat"), `coated: the comparison's label ${coated?.labels}`);

@@ -12,7 +12,7 @@
 // inputs that must fail: a build without
 // the files the integration needs, a table of another basis than the build or the coefficients,
 // and a three.js whose patched chunk changed; each must throw and write to the console.
-//   node check-three-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR [--compile-in-page | --basis-auto]
+//   node check-three-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR [--compile-in-page | --one-basis]
 import { modulePage, threeVersion } from "./browser-page.mjs";
 import { kProbeSize, kThreeJsProbeTerms, runProbeCheck } from "./engine-probes.mjs";
 

@@ -6,7 +6,7 @@
 // table, a `matc bake` result and a Schlick metal of the material's colour, against the CPU
 // runtime to 1e-4. WebGPU's adapter and device do not settle under Chromium's virtual time: the
 // page runs in real time and posts its result.
-//   node check-three-webgpu-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR [--compile-in-page | --basis-auto]
+//   node check-three-webgpu-engine.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR [--compile-in-page | --one-basis]
 import { modulePage, threeVersion } from "./browser-page.mjs";
 import { kProbeSize, kThreeJsProbeTerms, runProbeCheck } from "./engine-probes.mjs";
 

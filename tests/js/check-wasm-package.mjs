@@ -8,6 +8,7 @@ import { execFileSync, spawnSync } from "node:child_process";
 import fs from "node:fs";
 import { tmpdir } from "node:os";
 import path from "node:path";
+import { fileURLToPath } from "node:url";
 import { gzipSync } from "node:zlib";
 import { check, finish } from "./report.mjs";
 
@@ -345,19 +346,33 @@ const throwsWith = (call, pattern, what) => {
   }
 };
 throwsWith(() => gold.fresnel([0.5, 2]), /mu: element 1 is 2; a number in \[0, 1\]/, "mu out of range");
-// A per-material library in the page needs the layered table the package does not ship yet.
+// The in-page build reads the package's staged tables: the default build's, a layer per basis
+// (Node's fetch reads no file: URL, so one is given here), each material on its basis' layer; a
+// one-basis library is refused with those tables, before it could read them at the wrong width.
 {
   const { compiledMatcBuildFiles } = await import(path.join(work, "node_modules", "matc", "matc-build.mjs"));
-  const consoleError = console.error;
-  console.error = () => {};
+  const nodeFetch = globalThis.fetch;
+  globalThis.fetch = async (url) => (String(url).startsWith("file:")
+      ? new Response(fs.readFileSync(fileURLToPath(url))) : nodeFetch(url));
   try {
-    await compiledMatcBuildFiles(matc_, { options: { basis: "auto" } });
-    check(false, "compiledMatcBuildFiles with basis auto: no error");
-  } catch (error) {
-    check(/basis "auto" \(a basis per material\) needs a table of a layer per basis/.test(error.message),
-          `compiledMatcBuildFiles with basis auto: ${error.message}`);
+    const files = await compiledMatcBuildFiles(matc_);
+    check(files.basis === "auto" && files.layers?.join() === "powers,f82" && files.lut.size === 256 &&
+          files.lut.height === 128, `the package's tables: basis ${files.basis}, layers ${files.layers}, ` +
+          `${files.lut.size}x${files.lut.height}`);
+    const tinted = matc_.compile(matc_.parseMaterial({ name: "tinted", f82_tint: { f0: 0.9, tint: 0.5 } }));
+    const loaded = await files.loadMaterial(tinted);
+    check(loaded.basis === "f82" && (await files.loadMaterial(gold)).basis === "powers",
+          `in-page materials' bases: ${loaded.basis}, gold's`);
+    tinted.dispose();
+    try {
+      await compiledMatcBuildFiles(matc_, { options: { basis: "powers" } });
+      check(false, "compiledMatcBuildFiles of basis powers with the package's tables: no error");
+    } catch (error) {
+      check(/a table of basis auto, but options.basis gives basis powers/.test(error.message),
+            `compiledMatcBuildFiles of basis powers: ${error.message}`);
+    }
   } finally {
-    console.error = consoleError;
+    globalThis.fetch = nodeFetch;
   }
 }
 throwsWith(() => gold.fresnel([NaN]), /mu: element 0 is nan/, "NaN");

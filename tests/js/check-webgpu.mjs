@@ -10,9 +10,10 @@
 // - glTF's metal-rough mix of gold with glTF's dielectric (matc_metal_rough);
 // and everything is compared with the CPU runtime (`matc eval`) at matc validate's tolerances.
 // examples/web/specular.wgsl (docs/shaders.md shows it) must give Fbar with energy compensation,
-// and the library with an embedded table (--embed-lut) must compile too. A per-material build
-// (--basis auto) runs every bare example through its basis' functions and its layer of the
-// side-by-side table, and the F82-tint example under a quad light (its _f82 area-light function).
+// and the library with an embedded table (--embed-lut, a copy of each layer) must compile too.
+// These run in a one-basis build (--basis powers); the default build (a basis per material) runs
+// every bare example through its basis' functions and its layer of the side-by-side table, and the
+// F82-tint example under a quad light (its _f82 area-light function).
 //   VK_ICD_FILENAMES=/usr/lib/chromium/vk_swiftshader_icd.json \
 //     node check-webgpu.mjs MATC MATERIALS_DIR EXAMPLES_WEB_DIR
 import { mkdtempSync, readFileSync, rmSync } from "node:fs";
@@ -100,7 +101,8 @@ try {
   const errors = [];
   device.addEventListener("uncapturederror", (event) => errors.push(event.error.message));
 
-  const options = ["--lut-precision", "f16", "--coefficient-table-precision", "f16"];
+  const precision = ["--lut-precision", "f16", "--coefficient-table-precision", "f16"];
+  const options = [...precision, "--basis", "powers"];
   const queries = validationQueries();
   const out = join(dir, "out");
   const cases = compileAndEvaluate(matc, materialsDir, out, "wgsl", options, queries,
@@ -248,7 +250,8 @@ try {
   // The documented example: specular_gold(NdotV, roughness) = Fbar (1 + F0 (1 - E) / E), E the
   // table's directional albedo (Fbar of r = 1 from the coefficient-table path). Compared
   // relative to the value (E is small at grazing, where the scale is large), from NdotV = 0.1.
-  await attempt("examples/web/specular.wgsl", async () => {
+  // In the default build (a basis per material, its layered table bound): `built` its cases.
+  const checkSpecularExample = async (built, builtOut, builtOptions) => {
     const kernel = `
 @group(0) @binding(0) var<storage, read> matc_queries: array<vec4f>;
 @group(0) @binding(1) var<storage, read_write> matc_results: array<vec4f>;
@@ -263,13 +266,13 @@ fn main(@builtin(global_invocation_id) id: vec3u) {
   matc_results[i] = vec4f(specular_gold(matc_queries[i].y, matc_queries[i].z), 1.0);
 }
 `;
-    const gold = cases.materials.find((m) => m.name === "gold");
-    const values = await dispatch(cases.library + gold.snippet +
+    const gold = built.materials.find((m) => m.name === "gold");
+    const values = await dispatch(built.library + gold.snippet +
                                   readFileSync(join(webDir, "specular.wgsl"), "utf8") + kernel,
                                   queries.flat, 1);
-    const f0 = JSON.parse(readFileSync(join(out, "gold.json"), "utf8")).coefficients.map((c) => c[0]);
+    const f0 = JSON.parse(readFileSync(join(builtOut, "gold.json"), "utf8")).coefficients.map((c) => c[0]);
     const albedo = JSON.parse(run(matc, [
-      "eval", "--reflectivity", "1", "--edge-tint", "1", ...options, "--no-reference",
+      "eval", "--reflectivity", "1", "--edge-tint", "1", ...builtOptions, "--no-reference",
       "--ndotv", Array.from(queries.ndotv).join(","),
       "--roughness", Array.from(queries.roughness).join(",")])).Fbar_table;
     let worst = 0, where = 0;
@@ -286,7 +289,7 @@ fn main(@builtin(global_invocation_id) id: vec3u) {
     }
     report("examples/web/specular.wgsl (relative)", [["specular", { max_abs: worst, query: where }]],
            { specular: kPreintegratedTolerance });
-  });
+  };
 
   // The embedded table (a constant array indexed at run time) must compile.
   await attempt("embedded table", async () => {
@@ -299,6 +302,12 @@ fn main(@builtin(global_invocation_id) id: vec3u) {
                               "let bbar = matc_preintegrated_basis_embedded(query.y, query.z);"),
                    queries.flat.subarray(0, 256), 2);
     check(true, "embedded table compiles");
+    // The default build embeds each layer: the f82 basis' copy compiles too.
+    await dispatch(library + fresnelKernel("matc_coefficients_from_baked(vec3f(0.9), vec3f(0.01), vec3f(0.0))")
+                     .replace("let bbar = textureSampleLevel(matc_lut, matc_linear, matc_lut_texcoord(query.y, query.z), 0.0);",
+                              "let bbar = matc_preintegrated_basis_embedded_f82(query.y, query.z);"),
+                   queries.flat.subarray(0, 256), 2);
+    check(true, "the f82 layer's embedded table compiles");
     // matc_coefficients_from_f0 compiles in WGSL too (its values: the engines' probe checks).
     await dispatch(library + fresnelKernel("matc_coefficients_from_f0(matc_coefficients_from_baked(vec3f(0.0), vec3f(0.3), vec3f(0.9)), vec3f(0.9))")
                      .replace("let bbar = textureSampleLevel(matc_lut, matc_linear, matc_lut_texcoord(query.y, query.z), 0.0);",
@@ -306,9 +315,10 @@ fn main(@builtin(global_invocation_id) id: vec3u) {
                    queries.flat.subarray(0, 256), 2);
     check(true, "matc_coefficients_from_f0 compiles");
   });
-  // A per-material build: the same checks through each material's basis and layer.
+  // The default build, a basis per material: the same checks through each material's basis and
+  // layer.
   await attempt("per-material build", async () => {
-    const autoOptions = [...options, "--basis", "auto"];
+    const autoOptions = precision;
     const autoOut = join(dir, "auto");
     const auto = compileAndEvaluate(matc, materialsDir, autoOut, "wgsl", autoOptions, queries,
                                     ["ltc", "json"]);
@@ -322,14 +332,14 @@ fn main(@builtin(global_invocation_id) id: vec3u) {
         auto.library + material.snippet +
           fresnelKernel(`matc_coefficients_${material.name}`, suffix(material.basis)),
         queries.flat, 3);
-      report(`${material.name} (--basis auto: ${material.basis})`,
+      report(`${material.name} (default build: ${material.basis})`,
              [["F", largestDifference(values, material.F, 12, 0)],
               ["Fbar", largestDifference(values, material.Fbar, 12, 4)],
               ["Fbar_analytic", largestDifference(values, material.FbarAnalytic, 12, 8)]],
              { F: kFresnelTolerance, Fbar: kPreintegratedTolerance, Fbar_analytic: kClosedFormTolerance });
     }
     const tinted = auto.materials.find((m) => m.basis !== layers[0].basis);
-    check(tinted !== undefined, "--basis auto gave some example a second basis");
+    check(tinted !== undefined, "the default build gave some example a second basis");
     const quad = kQuads[1];
     const expected = JSON.parse(run(matc, [
       "eval", join(materialsDir, `${tinted.name}.json`), ...autoOptions, "--ndotv", ndotv.join(","),
@@ -339,9 +349,10 @@ fn main(@builtin(global_invocation_id) id: vec3u) {
         quadLightKernel(`matc_coefficients_${tinted.name}`, quad,
                         `matc_ltc_quad_light_following${suffix(tinted.basis)}`, suffix(tinted.basis)),
       lightQueries, 1);
-    report(`${tinted.name} (--basis auto), quad light ${quad}`,
+    report(`${tinted.name} (default build), quad light ${quad}`,
            [["L_following", largestDifference(following, expected.L_ltc_following, 4, 0)]],
            { L_following: kPreintegratedTolerance });
+    await attempt("examples/web/specular.wgsl", () => checkSpecularExample(auto, autoOut, autoOptions));
     textures[0] = oneBasisTable;
   });
   check(errors.length === 0, `WebGPU errors: ${errors.join("; ")}`);

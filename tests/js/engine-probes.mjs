@@ -65,7 +65,7 @@ const kF0TableCoated = { name: "f0_table_coated_probe", coat: { weight: 0.7, ior
                                 factor: [0.3, 0.3, 0.3] };
 const kF0TableCoatedMaterial = (name, f0) => ({ ...kF0TableMaterial(name, f0), coat: kF0TableCoated.coat });
 
-// ["--basis", "auto"] for a per-material build (runProbeCheck's --basis-auto), else nothing: what
+// ["--basis", "powers"] for a one-basis build (runProbeCheck's --one-basis), else nothing: what
 // every compile and evaluation of the probe materials adds (the builds that must be refused keep
 // their own options).
 let gBasisOptions = [];
@@ -414,12 +414,13 @@ function zeroF0Coefficients(matc, dir) {
 // options (realTime, browserArgs).
 // With --compile-in-page after them, webDir is the staged npm package (build/npm) and the page
 // compiles the probe materials itself (tests/js/page-probe-build.mjs); the renders are those of
-// compiled materials (the textured and baked sources are the build directory's). With
-// --basis-auto, every probe material is compiled and evaluated in a per-material build (matc
-// --basis auto): the measured metals on the table's first layer, the F82-tint ones (the Schlick
-// and F0-table metals) through the f82 basis' functions and layer.
+// compiled materials (the textured and baked sources are the build directory's). By default every
+// probe material is compiled and evaluated as a default build does, a basis per material: the
+// measured metals on the table's first layer, the F82-tint ones (the Schlick and F0-table metals)
+// through the f82 basis' functions and layer. With --one-basis, in a one-basis build (matc --basis
+// powers): every metal on one layer and the first basis' functions.
 export async function runProbeCheck(engine, [matc, materialsDir, webDir, mode]) {
-  gBasisOptions = mode === "--basis-auto" ? ["--basis", "auto"] : [];
+  gBasisOptions = mode === "--one-basis" ? ["--basis", "powers"] : [];
   const dir = mkdtempSync(join(tmpdir(), "matc-engine-probes-"));
   try {
     const { out, roots } = prepareProbeBuilds(matc, materialsDir, dir);
@@ -444,7 +445,7 @@ export async function runProbeCheck(engine, [matc, materialsDir, webDir, mode]) 
     const worst = compareProbes(result.renders ?? {}, expected);
     const refused = checkFailures(result.failures ?? {});
     console.log(`${engine.label} with matc's Fresnel${compileInPage ? " (materials compiled in the page)" : ""}` +
-                `${gBasisOptions.length ? " (a per-material build, --basis auto)" : ""}: ` +
+                `${gBasisOptions.length ? " (a one-basis build, --basis powers)" : ""}: ` +
                 `${renders.length} renders x ` +
                 `${kProbePixels.length} probes, largest difference from the CPU runtime ` +
                 `${worst.toExponential(2)}; ${refused} bad inputs checked`);

@@ -136,7 +136,8 @@ uniform vec3 reference_rect_normal;
 uniform float reference_rect_intensity;
 uniform int reference_environment_samples;
 uniform int reference_rect_side;
-uniform float reference_lut_size;
+uniform float reference_lut_size;    // a layer's width and height (the table's height)
+uniform float reference_lut_layers;  // layers side by side (a default build: a basis each)
 in vec3 reference_position;
 in vec3 reference_normal;
 in vec2 reference_uv;
@@ -325,8 +326,10 @@ void main() {
   vec2 shift = pixel_shift();
   vec3 base = lobe_radiance(n, v, roughness, 0, shift);
   // Turquin's multiple scattering of the (base) lobe, as the engine materials apply it.
+  // E is the same in every layer (b_0 = 1): the first layer's.
   float size = reference_lut_size;
   vec2 lut_uv = vec2(sqrt(clamp(nv, 0.0, 1.0)), roughness) * ((size - 1.0) / size) + 0.5 / size;
+  lut_uv.x /= reference_lut_layers;
   float e = max(texture(reference_albedo, lut_uv).x, 1e-4);
   vec3 compensation = 1.0 + f0 * (1.0 - e) / e;
   vec3 coat = reference_coated == 1 ? lobe_radiance(n, v, coat_roughness, 1, shift) : vec3(0.0);

@@ -27,7 +27,7 @@ export async function probeBuild(out, config, loadMatcBuild, { language = "glsl"
   };
   await refused("a material's name", () => build.loadMaterial(config.materials[0]), /takes a CompiledMaterial/);
   await refused("another basis", () => build.loadMaterial(compile(config.materials[0], { basis: "extended" })),
-                /compiled with basis extended, but the tables are powers/);
+                /compiled with basis extended, but the tables are auto \(powers, f82\)/);
   return { build, directoryBuild, loadProbeMaterial: (name) => build.loadMaterial(compile(name)) };
 }
 

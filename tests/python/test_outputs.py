@@ -32,9 +32,19 @@ def test_tables_hold_the_texels_of_the_written_files(tmp_path):
     run_matc("-q", "--lut", "raw", "--emit", "lut,coefficient-table", "-o", tmp_path, GOLD)
     lut = matc.preintegrated_table()
     assert lut.texels.shape == (128, 128, 4) and lut.texels.dtype == np.float32
-    written = np.fromfile(tmp_path / "matc_lut.bin", dtype="<f4").reshape(128, 128, 4)
-    np.testing.assert_array_equal(lut.texels, written)
-    np.testing.assert_array_equal(matc.Build().lut.texels, written)
+    # The default build's table: a layer per basis side by side, powers' then f82's.
+    written = np.fromfile(tmp_path / "matc_lut.bin", dtype="<f4").reshape(128, 256, 4)
+    np.testing.assert_array_equal(lut.texels, written[:, :128])
+    np.testing.assert_array_equal(matc.preintegrated_table(basis="f82").texels, written[:, 128:])
+    build = matc.Build()
+    np.testing.assert_array_equal(build.lut.texels, written[:, :128])
+    assert build.lut_layer("f82").basis == "f82"
+    np.testing.assert_array_equal(build.lut_layer("f82").texels, written[:, 128:])
+    with pytest.raises(ValueError, match="no layer of the extended basis"):
+        build.lut_layer("extended")
+    run_matc("-q", "--lut", "raw", "--emit", "lut", "--basis", "powers", "-o", tmp_path / "one", GOLD)
+    one = np.fromfile(tmp_path / "one" / "matc_lut.bin", dtype="<f4").reshape(128, 128, 4)
+    np.testing.assert_array_equal(matc.Build(basis="powers").lut.texels, one)
     table = matc.coefficient_table()
     stored = np.fromfile(tmp_path / "matc_coefficient_table.bin", dtype="<f2").astype(np.float32)
     np.testing.assert_array_equal(table.texels, stored.reshape(table.size, table.size, 2))

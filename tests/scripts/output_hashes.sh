@@ -17,9 +17,10 @@ for format in ktx2 dds raw header; do
     "$matc" -q -o "$work/compile_${format}_$basis" --lut "$format" --basis "$basis" "${materials[@]}" 2>/dev/null
   done
 done
-# A basis per material: the table a layer per basis, each material's outputs its own basis'.
+# The default, a basis per material (--basis auto): the table a layer per basis, each material's
+# outputs its own basis'.
 for format in ktx2 raw header; do
-  "$matc" -q -o "$work/compile_${format}_auto" --lut "$format" --basis auto "${materials[@]}" 2>/dev/null
+  "$matc" -q -o "$work/compile_${format}_auto" --lut "$format" "${materials[@]}" 2>/dev/null
 done
 "$matc" -q -o "$work/compile_embedded" --embed-lut --embed-lut-size 8 --emit glsl,hlsl,spirv,header \
   "${materials[@]}" 2>/dev/null

@@ -61,11 +61,12 @@ BatchResult compile_batch(const Build& build, std::span<const BatchSource> sourc
   for (const std::string& dependency : options.extra_dependencies)
     batch.extra_dependencies.emplace_back(dependency);
   batch.cancel = std::move(cancel);
-  const runtime::BasisKind basis = build.value().options().basis;
   if (options.check_material) {
-    batch.check_material = [&options, basis](const matc::CompiledMaterial& compiled) {
+    // Each material with the basis it was compiled against (its own in a per-material build).
+    batch.check_material = [&options, &build](const matc::CompiledMaterial& compiled) {
       return options.check_material(
-          public_compiled(std::make_shared<const matc::CompiledMaterial>(compiled), basis, {}));
+          public_compiled(std::make_shared<const matc::CompiledMaterial>(compiled),
+                          build.value().basis_choice(), {}));
     };
   }
   std::optional<MemoryOutput> memory;

@@ -93,10 +93,13 @@ std::vector<OutputFile> Build::shared_files() const {
   return public_files(build_->shared_outputs());
 }
 
-PreintegratedTable Build::lut() const {
+PreintegratedTable Build::lut(std::string_view basis) const {
+  const runtime::BasisKind layer = basis.empty()
+                                       ? build_->lut_layers().front()
+                                       : checked_option_value<runtime::BasisKind>("basis", basis);
   // Shares the build's table, which lives as long as the build: the table keeps the build alive.
-  std::shared_ptr<const matc::Lut> lut(build_, &build_->stored_lut());
-  return {std::move(lut), options_.compile.basis, options_.lut_precision};
+  std::shared_ptr<const matc::Lut> lut(build_, &build_->stored_lut(layer));
+  return {std::move(lut), std::string(runtime::basis_name(layer)), options_.lut_precision};
 }
 
 CoefficientTable Build::coefficient_table() const {

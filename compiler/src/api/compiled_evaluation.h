@@ -7,6 +7,7 @@
 #include <mutex>
 #include <vector>
 
+#include "compile/basis_choice.h"
 #include "compile/compile.h"
 #include "matc/api/compiled_material.h"
 #include "matc/runtime/basis.h"
@@ -19,6 +20,7 @@ namespace matc::api {
 // on first use: a compile whose curves nobody evaluates does not pay for them.
 struct CompiledMaterial::Evaluation {
   runtime::BasisKind basis = runtime::kDefaultBasis;
+  bool per_material_build = true;  // compiled as a default build does: its basis its own
   ColorOptions color;
   std::shared_ptr<const matc::Material> material;
 
@@ -38,9 +40,9 @@ struct CompiledMaterial::Evaluation {
   mutable Curves curves_;
 };
 
-// The public value of `compiled`, compiled by the library with `basis` and its colour options;
-// its diagnostics are `diagnostics`.
+// The public value of `compiled`, compiled by the library in a build of `choice` (its basis the
+// one compiled.basis names) and its colour options; its diagnostics are `diagnostics`.
 CompiledMaterial public_compiled(std::shared_ptr<const matc::CompiledMaterial> compiled,
-                                 runtime::BasisKind basis, std::vector<Diagnostic> diagnostics);
+                                 const BasisChoice& choice, std::vector<Diagnostic> diagnostics);
 
 }  // namespace matc::api

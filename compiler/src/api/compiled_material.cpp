@@ -144,7 +144,8 @@ bool CompiledMaterial::fresnel_nonnegative() const {
 }
 
 std::string CompiledMaterial::json() const {
-  return format_json(compiled_material_json(*value_, runtime::shipped_basis(evaluation_->basis)));
+  return format_json(compiled_material_json(*value_, runtime::shipped_basis(evaluation_->basis),
+                                            evaluation_->per_material_build));
 }
 
 Accuracy CompiledMaterial::accuracy() const {
@@ -258,7 +259,7 @@ void CompiledMaterial::fbar(std::span<const double> ndotv, std::span<const doubl
 }
 
 CompileOptions default_compile_options() {
-  return {std::string(runtime::basis_name(runtime::kDefaultBasis)),
+  return {std::string(option_name(BasisChoice{})),
           std::string(color_space_name(kDefaultColorSpace)),
           std::string(gamut_mapping_name(GamutMapping::none))};
 }
@@ -297,9 +298,10 @@ namespace {
 // The evaluations of `compiled` (compiled with `basis`): its exact curves made from the material
 // the compiled value holds, shared with it.
 std::shared_ptr<const CompiledMaterial::Evaluation> evaluation_of(
-    const std::shared_ptr<const matc::CompiledMaterial>& compiled, runtime::BasisKind basis) {
+    const std::shared_ptr<const matc::CompiledMaterial>& compiled, const BasisChoice& choice) {
   auto evaluation = std::make_shared<CompiledMaterial::Evaluation>();
-  evaluation->basis = basis;
+  evaluation->basis = compiled->basis;
+  evaluation->per_material_build = choice.per_material;
   evaluation->color = compiled->color;
   evaluation->material = std::shared_ptr<const matc::Material>(compiled, &compiled->material);
   return evaluation;
@@ -308,8 +310,8 @@ std::shared_ptr<const CompiledMaterial::Evaluation> evaluation_of(
 }  // namespace
 
 CompiledMaterial public_compiled(std::shared_ptr<const matc::CompiledMaterial> compiled,
-                                 runtime::BasisKind basis, std::vector<Diagnostic> diagnostics) {
-  auto evaluation = evaluation_of(compiled, basis);
+                                 const BasisChoice& choice, std::vector<Diagnostic> diagnostics) {
+  auto evaluation = evaluation_of(compiled, choice);
   Material material(evaluation->material, {});
   return CompiledMaterial(std::move(material), std::move(compiled), std::move(evaluation),
                           std::move(diagnostics));
@@ -317,11 +319,11 @@ CompiledMaterial public_compiled(std::shared_ptr<const matc::CompiledMaterial> c
 
 CompiledMaterial compile(const Material& material, const CompileOptions& options) {
   const matc::Material& value = material.value();
-  const runtime::BasisKind basis = basis_for(value, options);
+  const BasisChoice choice = basis_choice_of(options);
   const ColorOptions color = color_options_of(options);
   auto compiled = std::make_shared<const matc::CompiledMaterial>(
-      compile_material(value, runtime::shipped_basis(basis), color));
-  auto evaluation = evaluation_of(compiled, basis);
+      compile_material(value, runtime::shipped_basis(chosen_basis(value, choice)), color));
+  auto evaluation = evaluation_of(compiled, choice);
   Diagnostics diagnostics;
   warn_if_poor_fit(*compiled, diagnostics);
   note_if_out_of_unit_range(*compiled, diagnostics);

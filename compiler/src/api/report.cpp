@@ -16,7 +16,7 @@
 namespace matc::api {
 
 Report report(std::span<const Material> materials, const CompileOptions& options) {
-  const runtime::BasisKind kind = basis_of(options);
+  const BasisChoice choice = basis_choice_of(options);
   const ColorOptions color = color_options_of(options);
   Diagnostics names_used;
   UniqueNames names;
@@ -24,14 +24,15 @@ Report report(std::span<const Material> materials, const CompileOptions& options
     names.claim(material.value(), "a report", names_used);
   throw_if_errors(names_used);
 
-  const runtime::BasisView basis = runtime::shipped_basis(kind);
-  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(kind);
   Report out;
   Diagnostics fits;
   std::vector<ReportEntry> entries;
   for (const Material& material : materials) {
     const matc::Material& value = material.value();
-    const matc::CompiledMaterial compiled = compile_material(value, basis, color);
+    const runtime::BasisKind kind = chosen_basis(value, choice);
+    const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(kind);
+    const matc::CompiledMaterial compiled =
+        compile_material(value, runtime::shipped_basis(kind), color);
     warn_if_poor_fit(compiled, fits);
     const MaterialCurves curves = sample_material_curves(compiled, shader_basis);
     const std::string source = std::filesystem::path(value.source_path).filename().string();
@@ -48,7 +49,7 @@ Report report(std::span<const Material> materials, const CompileOptions& options
     entries.push_back(
         {value.name, source, compiled.coat ? compiled.coat->layered_f0 : compiled.f0, accuracy});
   }
-  out.files.push_back({"index.html", report_index_html(entries, runtime::basis_name(kind))});
+  out.files.push_back({"index.html", report_index_html(entries, option_name(choice))});
   out.diagnostics = public_diagnostics(fits);
   return out;
 }

@@ -13,7 +13,8 @@ TextOutputs::TextOutputs(const CompileOptions& options) {
   build.per_material_basis = basis.per_material;
   build.color = color_options_of(options);
   // `matc`'s default build: the default coefficient table, no embedded LUT.
-  texts_ = std::make_shared<const matc::TextOutputs>(build, kDefaultCoefficientTableSize, nullptr);
+  texts_ = std::make_shared<const matc::TextOutputs>(build, kDefaultCoefficientTableSize,
+                                                     std::span<const Lut>{});
   basis_ = std::string(option_name(basis));
   color_key_ = color_key_of(build.color);
 }

@@ -8,11 +8,11 @@
 
 namespace matc {
 
-// A build's choice: one basis forced on every material (`--basis NAME`), or each material its
-// own among runtime::kPerMaterialBases (`--basis auto`).
+// A build's choice: each material its own among runtime::kPerMaterialBases (`--basis auto`, the
+// default), or one basis forced on every material (`--basis NAME`).
 struct BasisChoice {
-  runtime::BasisKind forced = runtime::kDefaultBasis;
-  bool per_material = false;
+  runtime::BasisKind forced = runtime::kDefaultBasis;  // also the first layer's under auto
+  bool per_material = true;
 
   bool operator==(const BasisChoice&) const = default;
 };

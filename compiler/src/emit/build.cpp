@@ -8,6 +8,7 @@
 
 #include "base/content_hash.h"
 #include "base/json_format.h"
+#include "emit/layer_suffix.h"
 #include "emit/library_module.h"
 #include "emit/material_module_template.h"
 #include "emit/material_snippet.h"
@@ -45,10 +46,6 @@ BuildOptions checked(BuildOptions options) {
                       runtime::basis_name(runtime::kPerMaterialBases.front()),
                       runtime::basis_name(options.basis)));
     }
-    if (options.embedded_lut_size != 0) {
-      throw std::invalid_argument(
-          "--embed-lut holds one basis' table: give --basis NAME with it, not --basis auto");
-    }
   }
   return options;
 }
@@ -73,7 +70,7 @@ SharedTableOptions table_options(const BuildOptions& options) {
 Build::Build(BuildOptions options)
     : options_(checked(std::move(options))),
       tables_(table_options(options_)),
-      texts_(options_, tables_.stored_coefficient_table().size(), tables_.embedded_lut()) {}
+      texts_(options_, tables_.stored_coefficient_table().size(), tables_.embedded_luts()) {}
 
 runtime::BasisView Build::basis() const {
   return runtime::shipped_basis(options_.basis);
@@ -98,9 +95,13 @@ std::vector<OutputFile> Build::shared_outputs() const {
   }
   if (emit.contains(OutputKind::spirv)) {
     const std::string name = shared_file_name(OutputKind::spirv, options_.lut_format);
-    files.push_back(
-        {name, spirv_file_bytes(compile_library_module(library_source(ShaderLanguage::glsl), name,
-                                                       shared_library_exports(embedded_lut())))});
+    std::vector<std::string> further_layer_suffixes;
+    for (std::size_t layer = 1; layer < lut_layers().size(); ++layer)
+      further_layer_suffixes.push_back(layer_suffix(lut_layers()[layer]));
+    files.push_back({name, spirv_file_bytes(compile_library_module(
+                               library_source(ShaderLanguage::glsl), name,
+                               shared_library_exports(!tables_.embedded_luts().empty(),
+                                                      further_layer_suffixes)))});
   }
   for (OutputFile& table : tables_.files(emit))
     files.push_back(std::move(table));
@@ -118,8 +119,8 @@ SpirvWords Build::material_library_module(const CompiledMaterial& compiled,
   const std::span<const std::uint32_t> template_words = checked_in_material_module_template(
       compiled.basis, compiled.fresnel_nonnegative, options_.per_material_basis);
   // The checked-in template is an uncoated material's module; a coated one is compiled.
-  if (options_.lut.size == kDefaultLutSize && !embedded_lut() && !template_words.empty() &&
-      !compiled.coat)
+  if (options_.lut.size == kDefaultLutSize && tables_.embedded_luts().empty() &&
+      !template_words.empty() && !compiled.coat)
     return patch_material_module(template_words, compiled);
   return compile_material_library_module(compiled, inputs_hash);
 }

@@ -62,7 +62,8 @@ class Build {
   // `basis`' layer of it, and every layer side by side (the texture the file holds).
   const Lut& stored_lut(runtime::BasisKind basis) const { return tables_.stored_lut(basis); }
   const LutAtlas& stored_atlas() const { return tables_.stored_atlas(); }
-  const Lut* embedded_lut() const { return tables_.embedded_lut(); }
+  // --embed-lut's table of `basis`' layer; null without one.
+  const Lut* embedded_lut(runtime::BasisKind basis) const { return tables_.embedded_lut(basis); }
   // The basis' coefficient table as the written file stores it (the preintegrated table's format,
   // coefficient_table_precision): what a shader samples for textured metals.
   const CoefficientTable& stored_coefficient_table() const {

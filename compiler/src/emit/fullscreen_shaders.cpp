@@ -155,6 +155,10 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
        {"library", build.library_source(ShaderLanguage::glsl)},
        {"material", build.material_source(ShaderLanguage::glsl, compiled)},
        {"name", compiled.material.name},
+       // A default build's bare material samples its own layer of the table.
+       {"lut_texcoord", build.options().per_material_basis && !compiled.coat
+                            ? "matc_lut_texcoord_" + compiled.material.name
+                            : std::string("matc_lut_texcoord")},
        {"f0", f0_list(compiled)},
        {"coat_roughness", float_literal(coat_roughness)},
        {"coat_weight", float_literal(coat_weight)},

@@ -29,7 +29,8 @@ std::string spirv_file_bytes(const SpirvWords& words) {
   return bytes;
 }
 
-std::vector<std::string> shared_library_exports(bool embedded_lut) {
+std::vector<std::string> shared_library_exports(
+    bool embedded_lut, std::span<const std::string> further_layer_suffixes) {
   std::vector<std::string> names = {"matc_basis",
                                     "matc_fresnel",
                                     "matc_lut_texcoord",
@@ -54,6 +55,16 @@ std::vector<std::string> shared_library_exports(bool embedded_lut) {
                                     "matc_ltc_disk_light_following",
                                     "matc_ltc_sphere_light_following"};
   if (embedded_lut) names.emplace_back("matc_preintegrated_basis_embedded");
+  // What templates/<language>/basis_layer.* defines again per further layer.
+  for (const std::string& suffix : further_layer_suffixes) {
+    for (const std::string_view layer_function :
+         {"matc_basis", "matc_fresnel", "matc_lut_texcoord", "matc_preintegrated_basis_analytic",
+          "matc_ltc_quad_light_following", "matc_ltc_disk_light_following",
+          "matc_ltc_sphere_light_following"}) {
+      names.push_back(fmt::format("{}{}", layer_function, suffix));
+    }
+    if (embedded_lut) names.push_back("matc_preintegrated_basis_embedded" + suffix);
+  }
   return names;
 }
 

@@ -18,8 +18,10 @@ SpirvWords compile_library_module(std::string glsl_source, const std::string& na
 // The words as a .spv file stores them (little-endian).
 std::string spirv_file_bytes(const SpirvWords& words);
 
-// The names a library module exports: the shared library's, and one material's.
-std::vector<std::string> shared_library_exports(bool embedded_lut);
+// The names a library module exports: the shared library's (with each further layer's functions,
+// `further_layer_suffixes` such as "_f82", of a per-material build), and one material's.
+std::vector<std::string> shared_library_exports(
+    bool embedded_lut, std::span<const std::string> further_layer_suffixes = {});
 // A coated material (docs/coating.md) exports its coat lobe's two functions too.
 std::vector<std::string> material_library_exports(std::string_view material_name,
                                                   bool coated = false);

@@ -74,7 +74,7 @@ ordered_json coefficient_rows_json(const runtime::Coefficients& coefficients) {
 }
 
 ordered_json compiled_material_json(const CompiledMaterial& compiled,
-                                    const runtime::BasisView& basis) {
+                                    const runtime::BasisView& basis, bool per_material_build) {
   const Material& material = compiled.material;
   ordered_json out;
   out["matc_version"] = kVersion;
@@ -129,6 +129,8 @@ ordered_json compiled_material_json(const CompiledMaterial& compiled,
     basis_json["solve"] = "minimax";
     basis_json["minimax_cosines"] = kMinimaxCosines;
   }
+  // Where its bbar is in the table (layers side by side, matc_lut.*.json).
+  if (per_material_build) basis_json["lut_layer"] = runtime::per_material_layer(basis.kind);
   out["basis"] = std::move(basis_json);
   out["coefficients"] = coefficient_rows_json(compiled.coefficients);
   out["energy_compensation"] = {{"F_avg", rgb_json(compiled.average_fresnel)}};

@@ -13,7 +13,10 @@ namespace matc {
 nlohmann::ordered_json rgb_json(const Rgb& rgb);
 nlohmann::ordered_json coefficient_rows_json(const runtime::Coefficients& coefficients);
 
+// `per_material_build`: the build gives each material its basis (--basis auto, the default); the
+// JSON then names the material's layer of the table too (basis.lut_layer).
 nlohmann::ordered_json compiled_material_json(const CompiledMaterial& compiled,
-                                              const runtime::BasisView& basis);
+                                              const runtime::BasisView& basis,
+                                              bool per_material_build);
 
 }  // namespace matc

@@ -46,9 +46,7 @@ SpirvWords patch_material_module(std::span<const std::uint32_t> template_words,
 std::vector<MaterialModuleTemplate> compile_material_module_templates() {
   std::vector<MaterialModuleTemplate> templates;
   for (const runtime::BasisKind basis : runtime::kShippedBases) {
-    BuildOptions options;
-    options.basis = basis;
-    const Build build(options);
+    const Build build(one_basis_build(basis));
     for (const bool nonnegative : {false, true}) {
       // Only the closed forms' curves can be proven non-negative (fit/nonnegative_curve.h).
       if (nonnegative && !runtime::is_closed_form(basis)) continue;
@@ -56,9 +54,7 @@ std::vector<MaterialModuleTemplate> compile_material_module_templates() {
                            build.compile_material_library_module(template_material(nonnegative))});
     }
   }
-  BuildOptions per_material;
-  per_material.per_material_basis = true;
-  const Build build(per_material);
+  const Build build(BuildOptions{});  // the default: a basis per material
   for (const runtime::BasisKind basis : runtime::kPerMaterialBases) {
     for (const bool nonnegative : {false, true}) {
       templates.push_back(

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "emit/layer_suffix.h"
 #include "matc/version.h"
 #include "material/parse.h"
 
@@ -94,7 +95,7 @@ std::string coated_snippet_source(ShaderLanguage language, const CompiledMateria
 
 std::string basis_function_suffix(const CompiledMaterial& compiled, bool per_material_build) {
   if (!per_material_build || compiled.basis == runtime::kPerMaterialBases.front()) return "";
-  return "_" + std::string(runtime::basis_name(compiled.basis));
+  return layer_suffix(compiled.basis);
 }
 
 std::string material_snippet_source(ShaderLanguage language, const CompiledMaterial& compiled,

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "emit/layer_suffix.h"
 #include "emit/template.h"
 #include "matc/runtime/analytic_lut.h"
 #include "matc/runtime/powers_basis.h"
@@ -30,11 +31,16 @@ std::string vector_rows(ShaderLanguage language, std::span<const double> values,
   return out;
 }
 
-std::string embedded_lut_source(ShaderLanguage language, const Lut& lut) {
+// `suffix` and `of_basis` name a further layer's copy ("_f82", " of the f82 basis"), empty for the
+// first basis'.
+std::string embedded_lut_source(ShaderLanguage language, const Lut& lut, const std::string& suffix,
+                                const std::string& of_basis) {
   const std::vector<double> texels(lut.texels.begin(), lut.texels.end());
   return fill_template(
       template_path(language, "embedded_lut"),
-      {{"embedded_size", std::to_string(lut.size)},
+      {{"suffix", suffix},
+       {"of_basis", of_basis},
+       {"embedded_size", std::to_string(lut.size)},
        {"embedded_texels", std::to_string(lut.size * lut.size)},
        {"embedded_texel_values", vector_rows(language, texels, runtime::kBasisSize)}});
 }
@@ -245,7 +251,7 @@ std::string basis_layers_source(ShaderLanguage language, const ShaderLibraryOpti
   for (std::size_t k = 0; k < options.further_layers.size(); ++k) {
     const runtime::BasisKind basis = options.further_layers[k];
     const std::string name(runtime::basis_name(basis));
-    const std::string suffix = "_" + name;
+    const std::string suffix = layer_suffix(basis);
     const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(basis);
     if (!shader_basis.is_closed_form())
       throw std::logic_error("a table's further layers are closed forms");
@@ -261,7 +267,11 @@ std::string basis_layers_source(ShaderLanguage language, const ShaderLibraryOpti
               ? "\n" + area_light_following_source(language, suffix, "area_lights_following") +
                     "\n" +
                     area_light_following_source(language, suffix, "area_lights_following_lights")
-              : ""}});
+              : ""},
+         {"embedded_lut", options.embedded_luts.empty()
+                              ? ""
+                              : embedded_lut_source(language, options.embedded_luts[k + 1], suffix,
+                                                    " of the " + name + " basis")}});
   }
   return out;
 }
@@ -292,7 +302,9 @@ std::string shader_library_source(ShaderLanguage language, const runtime::Shader
        {"analytic_lut",
         options.analytic_lut ? analytic_lut_source(language, *options.analytic_lut, "") : ""},
        {"embedded_lut",
-        options.embedded_lut ? embedded_lut_source(language, *options.embedded_lut) : ""}});
+        options.embedded_luts.empty()
+            ? ""
+            : embedded_lut_source(language, options.embedded_luts.front(), "", "")}});
 }
 
 }  // namespace matc

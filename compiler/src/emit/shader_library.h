@@ -2,6 +2,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -19,8 +20,9 @@ struct ShaderLibraryOptions {
   std::size_t lut_size = LutOptions{}.size;  // the table the build writes (MATC_LUT_SIZE)
   // The coefficient table's width and height (MATC_COEFFICIENT_TABLE_SIZE).
   std::size_t coefficient_table_size = kDefaultCoefficientTableSize;
-  // A small table to embed as a constant array (--embed-lut); null for none.
-  const Lut* embedded_lut = nullptr;
+  // Small tables to embed as constant arrays (--embed-lut), the first basis' then one per further
+  // layer; empty for none.
+  std::span<const Lut> embedded_luts;
   // The textured-metal functions (coefficient table, inverse Gulbrandsen mapping).
   bool coefficient_table_functions = true;
   // The area-light functions (LTC quad, disk and sphere lights) and the LTC table's size

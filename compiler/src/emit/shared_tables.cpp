@@ -23,8 +23,10 @@ SharedTables::SharedTables(const SharedTableOptions& options)
           stored_coefficient_table_, options.format, options.coefficient_table_precision)),
       ltc_file_bytes_(encode_ltc_table(runtime::shipped_ltc_table(), options.format)) {
   if (options_.embedded_lut_size != 0) {
-    embedded_lut_ = preintegrate_lut(runtime::shipped_basis(options_.layers.front()),
-                                     {options_.embedded_lut_size, options_.lut.samples});
+    for (const runtime::BasisKind basis : options_.layers) {
+      embedded_luts_.push_back(preintegrate_lut(
+          runtime::shipped_basis(basis), {options_.embedded_lut_size, options_.lut.samples}));
+    }
   }
 }
 
@@ -57,6 +59,10 @@ std::size_t SharedTables::layer_of(runtime::BasisKind basis) const {
 
 const Lut& SharedTables::stored_lut(runtime::BasisKind basis) const {
   return baked().stored[layer_of(basis)];
+}
+
+const Lut* SharedTables::embedded_lut(runtime::BasisKind basis) const {
+  return embedded_luts_.empty() ? nullptr : &embedded_luts_[layer_of(basis)];
 }
 
 LutReference SharedTables::lut_reference() const {

@@ -8,6 +8,7 @@
 #include <mutex>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,7 @@ namespace matc {
 // What decides the tables' bytes (a build's options, less those of the shaders).
 struct SharedTableOptions {
   // The preintegrated table's bases: one, or a layer each side by side (--basis auto). The
-  // coefficient and embedded tables are the first's.
+  // coefficient table is the first's; the embedded table has a copy of each layer.
   std::vector<runtime::BasisKind> layers = {runtime::kDefaultBasis};
   LutOptions lut;
   LutFormat format = LutFormat::ktx2;
@@ -49,7 +50,9 @@ class SharedTables {
   const std::vector<runtime::BasisKind>& layers() const { return options_.layers; }
   // Where `basis` is among them (std::invalid_argument if the table holds none of it).
   std::size_t layer_of(runtime::BasisKind basis) const;
-  const Lut* embedded_lut() const { return embedded_lut_ ? &*embedded_lut_ : nullptr; }
+  // --embed-lut's tables, one per layer (empty without it), and `basis`' of them (null without).
+  std::span<const Lut> embedded_luts() const { return embedded_luts_; }
+  const Lut* embedded_lut(runtime::BasisKind basis) const;
   const CoefficientTable& stored_coefficient_table() const { return stored_coefficient_table_; }
   // The preintegrated table's file name and hash, as headers and the manifest name it (the
   // default table's hash is checked in: naming it needs no bake).
@@ -75,7 +78,7 @@ class SharedTables {
   const Baked& baked() const;
 
   SharedTableOptions options_;
-  std::optional<Lut> embedded_lut_;
+  std::vector<Lut> embedded_luts_;
   std::shared_ptr<LazyBake> lazy_ = std::make_shared<LazyBake>();
   CoefficientTable stored_coefficient_table_;
   std::string coefficient_table_file_bytes_;

@@ -27,7 +27,7 @@ std::string options_key_of(const BuildOptions& options) {
 }  // namespace
 
 TextOutputs::TextOutputs(const BuildOptions& options, std::size_t coefficient_table_size,
-                         const Lut* embedded_lut)
+                         std::span<const Lut> embedded_luts)
     : per_material_(options.per_material_basis),
       options_key_(options_key_of(options)),
       color_key_(fmt::format("color {} gamut {}", color_space_name(options.color.working_space),
@@ -36,7 +36,7 @@ TextOutputs::TextOutputs(const BuildOptions& options, std::size_t coefficient_ta
   ShaderLibraryOptions library_options;
   library_options.lut_size = options.lut.size;
   library_options.coefficient_table_size = coefficient_table_size;
-  library_options.embedded_lut = embedded_lut;
+  library_options.embedded_luts = embedded_luts;
   library_options.ltc_size = runtime::shipped_ltc_table().size;
   library_options.analytic_lut = options.basis;
   if (per_material_) {
@@ -89,13 +89,7 @@ std::string TextOutputs::material_source(ShaderLanguage language,
 std::string TextOutputs::material_json(const CompiledMaterial& compiled,
                                        std::string_view inputs_hash) const {
   nlohmann::ordered_json json =
-      compiled_material_json(compiled, runtime::shipped_basis(compiled.basis));
-  if (per_material_) {
-    // Where its bbar is in the table (layers side by side, matc_lut.*.json).
-    const auto& layers = runtime::kPerMaterialBases;
-    json["basis"]["lut_layer"] = static_cast<std::size_t>(
-        std::find(layers.begin(), layers.end(), compiled.basis) - layers.begin());
-  }
+      compiled_material_json(compiled, runtime::shipped_basis(compiled.basis), per_material_);
   json["inputs_hash"] = std::string(inputs_hash);
   return format_json(json);
 }

@@ -17,9 +17,9 @@ namespace matc {
 class TextOutputs {
  public:
   // `coefficient_table_size`: the build's coefficient table's width (MATC_COEFFICIENT_TABLE_SIZE);
-  // `embedded_lut`: --embed-lut's table, or null; it must outlive this.
+  // `embedded_luts`: --embed-lut's tables, one per layer, or none; they must outlive this.
   TextOutputs(const BuildOptions& options, std::size_t coefficient_table_size,
-              const Lut* embedded_lut);
+              std::span<const Lut> embedded_luts);
 
   // The hash of the options the shared files derive from.
   const std::string& inputs_hash() const { return inputs_hash_; }

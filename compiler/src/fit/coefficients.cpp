@@ -1,5 +1,6 @@
 #include "fit/coefficients.h"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "fit/minimax.h"
@@ -34,6 +35,9 @@ runtime::Coefficients solve_coefficients_at_probes(const ReflectanceCurve& curve
 
 namespace {
 
+// Fitted coefficients smaller than this are rounding noise (see solve_by_fit).
+constexpr double kNegligibleCoefficient = 1e-12;
+
 // (c_2, c_3) fitted to the residual after c_0 + c_1 b_1, by Lawson's iterations (0: least squares).
 // A curve with its own grazing value (a metal seen through a coat) has c_1 fitted too: such a
 // curve is flat near grazing, where b_1 is steep, so pinning F(0) costs more than it keeps.
@@ -59,8 +63,15 @@ runtime::Coefficients solve_by_fit(const ReflectanceCurve& curve,
   }
   runtime::Coefficients coefficients{};
   for (std::size_t c = 0; c < 3; ++c) {
-    const Eigen::VectorXd fit =
+    Eigen::VectorXd fit =
         near_minimax_fit(design, residual.col(static_cast<Eigen::Index>(c)), iterations);
+    // A coefficient the curve does not need (c_3 of an F82-tint curve in the f82 basis, whose
+    // span holds it) comes out as rounding noise near 1e-16, which differs between builds of the
+    // same code (native, WebAssembly) and would print: it is 0, far below what a float32 shader
+    // resolves.
+    for (Eigen::Index i = 0; i < fit.size(); ++i) {
+      if (std::abs(fit(i)) < kNegligibleCoefficient) fit(i) = 0.0;
+    }
     if (fit_c1) {
       coefficients[c] = {f0[c], fit(0), fit(1), fit(2)};
     } else {

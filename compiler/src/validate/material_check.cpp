@@ -51,7 +51,7 @@ class MaterialCheck final : public DeviceCheck {
     // The material's basis, its layer of the table and its closed form.
     const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(compiled_.basis);
     const runtime::LutView table = build_.stored_lut(compiled_.basis).view();
-    const Lut* embedded = build_.embedded_lut();
+    const Lut* embedded = build_.embedded_lut(compiled_.basis);
     const runtime::AnalyticLutCoefficients& analytic =
         runtime::shipped_analytic_lut(compiled_.basis);
     if (compiled_.coat) return compare_coated(results, shader_basis, table, embedded, analytic);

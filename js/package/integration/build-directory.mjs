@@ -153,29 +153,34 @@ export async function loadMatcBuildFiles(url, { language = "glsl" } = {}) {
 // with their .json beside them, as `matc -o --lut raw` writes them), and `loadMaterial(compiled)`
 // taking a CompiledMaterial instead of a name.
 export async function compiledMatcBuildFiles(matc, { language = "glsl", options = {}, tables = tableFiles.raw } = {}) {
-  if (options.basis === "auto") {
-    // The package's tables hold one basis; a per-material library reads a table of two layers.
-    throw new MatcWebError("compiledMatcBuildFiles: basis \"auto\" (a basis per material) needs a table " +
-                           "of a layer per basis, which the package does not ship yet; compile with " +
-                           "matc --basis auto -o DIR and load that directory, or give basis NAME");
-  }
   const texts = matc.textOutputs(options);
   const library = texts.librarySource(language);
+  // A table's sidecar gives its height; a layered one (basis auto) its layers' bases too.
   const table = async (url, channels) => {
     const sidecar = await fetchJson(`${url}.json`, "the package's tables are in its tables/ folder");
-    const entry = { file: url, size: sidecar.size?.[0], precision: sidecar.precision };
-    return { sidecar, table: await loadTable(url, entry, channels) };
+    const layers = sidecar.basis === "auto"
+        ? checkedLayers(sidecar.layers?.map?.((layer) => layer?.basis), `${url}.json`) : null;
+    const entry = { file: url, size: sidecar.size?.[1] ?? sidecar.size?.[0], precision: sidecar.precision };
+    return { sidecar, layers, table: await loadTable(url, entry, channels, layers?.length ?? 1) };
   };
   const lut = await table(tables.lut, 4);
-  const basis = lut.sidecar.basis;
-  if (lut.sidecar.matc_version !== kMatcVersion) {
-    throw new MatcWebError(`${tables.lut}: a table from matc ${lut.sidecar.matc_version}; this integration ` +
+  const { basis, matc_version: version } = lut.sidecar;
+  if (version !== kMatcVersion) {
+    throw new MatcWebError(`${tables.lut}: a table from matc ${version}; this integration ` +
                            `reads matc ${kMatcVersion}`);
   }
+  if (basis !== texts.basis) {
+    // A per-material library reads a table of a layer per basis, a one-basis library one layer.
+    throw new MatcWebError(`${tables.lut}: a table of basis ${basis}, but options.basis gives basis ` +
+                           `${texts.basis}; give tables of that basis (matc --basis ${texts.basis} ` +
+                           "--lut raw -o DIR) or leave options.basis out for the package's");
+  }
+  const layers = lut.layers;
   const url = `matc:compiled/${language}/${basis}`;
   return {
-    url, manifest: { matc_version: kMatcVersion, basis, emit: [language, "json", "lut", "ltc", "coefficient-table"] },
-    language, library, basis, lut: lut.table,
+    url, manifest: { matc_version: kMatcVersion, basis, ...(layers ? { lut_layers: layers } : {}),
+                     emit: [language, "json", "lut", "ltc", "coefficient-table"] },
+    language, library, basis, layers, lut: lut.table,
     ltc: tables.ltc ? (await table(tables.ltc, 4)).table : null,
     coefficientTable: tables.coefficientTable ? (await table(tables.coefficientTable, 2)).table : null,
     // { name, basis, coefficients, coat } of a CompiledMaterial, as loadMatcBuildFiles' loadMaterial
@@ -184,9 +189,9 @@ export async function compiledMatcBuildFiles(matc, { language = "glsl", options 
       if (typeof compiled?.fresnel !== "function" || !Array.isArray(compiled.coefficients)) {
         throw new MatcWebError("loadMaterial of a compiled build takes a CompiledMaterial (matc.compile())");
       }
-      if (compiled.basis !== basis) {
+      if (!(layers ? layers.includes(compiled.basis) : compiled.basis === basis)) {
         throw new MatcWebError(`${compiled.name}: compiled with basis ${compiled.basis}, but the tables ` +
-                               `are ${basis}`);
+                               `are ${basis}${layers ? ` (${layers.join(", ")})` : ""}`);
       }
       const rows = (values) => values.map((row) => Array.from(row));
       const coat = compiled.coat && {
@@ -194,7 +199,8 @@ export async function compiledMatcBuildFiles(matc, { language = "glsl", options 
         color: Array.from(compiled.coat.color), underCoatCoefficients: rows(compiled.coat.underCoatCoefficients),
         snippet: texts.materialSource(language, compiled),
       };
-      return { name: compiled.name, basis, coefficients: rows(compiled.coefficients), coat: coat ?? null };
+      return { name: compiled.name, basis: compiled.basis, coefficients: rows(compiled.coefficients),
+               coat: coat ?? null };
     },
   };
 }

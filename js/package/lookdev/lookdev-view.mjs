@@ -124,11 +124,12 @@ export class LookdevView {
 
   // Shows a compiled material: `loaded` (build.loadMaterial(compiled) of the build's language),
   // `compiled` (its CompiledMaterial, for three.js's own metal) and the roughness. A bare metal
-  // after a bare metal changes uniforms only; a coated one gets a program of its own (its
-  // constants are in its snippet).
+  // after a bare metal of the same basis changes uniforms only; a coated one, or one of another
+  // basis (its functions and its layer of the table), gets a program of its own.
   setMaterial(loaded, compiled, roughness) {
     const current = this.matcMaterial;
-    if (current && !loaded.coat && !current.userData.matc.source.material.coat) {
+    const shown = current?.userData.matc.source.material;
+    if (current && !loaded.coat && !shown.coat && shown.basis === loaded.basis) {
       const { matc_red: red, matc_green: green, matc_blue: blue } = current.userData.matc.uniforms;
       [red, green, blue].forEach((uniform, c) => uniform.value.set(...loaded.coefficients[c]));
       current.userData.matc.source = { material: loaded };

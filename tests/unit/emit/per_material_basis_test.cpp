@@ -10,6 +10,7 @@
 #include "compile/basis_choice.h"
 #include "compile/compile.h"
 #include "emit/build.h"
+#include "lut/preintegrate.h"
 #include "matc/runtime/lut.h"
 #include "material/parse.h"
 #include "optics/presets.h"
@@ -127,11 +128,32 @@ TEST(PerMaterialBuild, OneBasisBuildsAreUnchanged) {
             std::string::npos);
 }
 
-TEST(PerMaterialBuild, OptionsThatHoldOneBasisAreRefused) {
-  BuildOptions embedded = small_options(true);
-  embedded.embedded_lut_size = 8;
-  EXPECT_THROW(Build{embedded}, std::invalid_argument);
+// The first layer is powers': a per-material build that names another first basis is refused.
+TEST(PerMaterialBuild, AFirstBasisOtherThanPowersIsRefused) {
   EXPECT_THROW(Build{small_options(true, runtime::BasisKind::f82)}, std::invalid_argument);
+}
+
+// --embed-lut embeds each layer as its own array: the first basis' under the first layer's names,
+// f82's under its suffix, each exactly that basis' table at the embedded size (an F82-tint
+// material's snippet reads the second).
+TEST(PerMaterialBuild, EmbedsEachLayersTable) {
+  BuildOptions options = small_options(true);
+  options.embedded_lut_size = 8;
+  const Build build(options);
+  for (const runtime::BasisKind basis : runtime::kPerMaterialBases) {
+    const Lut* embedded = build.embedded_lut(basis);
+    ASSERT_NE(embedded, nullptr);
+    EXPECT_EQ(embedded->size, 8u);
+    EXPECT_EQ(embedded->texels, preintegrate_lut(runtime::shipped_basis(basis), {8, 64}).texels);
+  }
+  EXPECT_NE(build.embedded_lut(runtime::BasisKind::powers)->texels,
+            build.embedded_lut(runtime::BasisKind::f82)->texels);
+  for (const ShaderLanguage language : kShaderLanguages) {
+    const std::string& library = build.library_source(language);
+    EXPECT_NE(library.find("matc_preintegrated_basis_embedded("), std::string::npos);
+    EXPECT_NE(library.find("matc_preintegrated_basis_embedded_f82("), std::string::npos);
+    EXPECT_NE(library.find("MATC_EMBEDDED_LUT_f82"), std::string::npos);
+  }
 }
 
 // The C++ header of the table holds both layers side by side, with their count and bases.

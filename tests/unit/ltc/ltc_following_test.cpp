@@ -24,7 +24,7 @@ using matc::runtime::dot;
 using matc::runtime::normalize;
 
 const matc::Build& default_build() {
-  static const matc::Build build(matc::BuildOptions{});
+  static const matc::Build build(matc::one_basis_build());
   return build;
 }
 

@@ -116,6 +116,7 @@ TEST(DeviceValidation, CoefficientTablePathMatchesTheCpuRuntime) {
   for (const auto basis : matc::runtime::kShippedBases) {
     for (const auto precision : {matc::LutPrecision::f32, matc::LutPrecision::f16}) {
       matc::BuildOptions options = small_build();
+      options.per_material_basis = false;
       options.basis = basis;
       options.coefficient_table_precision = precision;
       const matc::Build build(options);

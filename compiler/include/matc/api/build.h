@@ -54,8 +54,10 @@ class Build {
   // shared ones (the libraries, the tables and their descriptions), as `matc` writes them.
   std::vector<OutputFile> material_files(const CompiledMaterial& compiled) const;
   std::vector<OutputFile> shared_files() const;
-  // The tables as this build's files store them.
-  PreintegratedTable lut() const;
+  // The tables as this build's files store them: the preintegrated table's layer of `basis` (empty:
+  // the first; a default build holds a layer per basis, "powers" then "f82", side by side in its
+  // file; another basis throws std::invalid_argument), and the coefficient table.
+  PreintegratedTable lut(std::string_view basis = {}) const;
   CoefficientTable coefficient_table() const;
   // The head of matc_manifest.json (version, inputs hash, options, the tables' files), as JSON.
   std::string description() const;

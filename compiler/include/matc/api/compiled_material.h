@@ -28,11 +28,14 @@ using CoefficientRows = std::array<std::array<double, 4>, 3>;
 // The names the options take are the CLI's (--basis, --color-space, --gamut-mapping); empty means
 // the default. A name outside them throws std::invalid_argument naming the option and the names.
 struct CompileOptions {
+  // "auto" (the default: each material the shipped basis that holds its curve, docs/accuracy.md)
+  // or one basis for every material ("powers", "f82", ...).
   std::string basis;
   std::string color_space;
   std::string gamut_mapping;
 };
-// The options' defaults by name.
+// The options' defaults by name: basis "auto" (a basis per material); where one basis is meant
+// (tables, describe_basis), option_default("basis"), "powers".
 CompileOptions default_compile_options();
 
 // Max and RMS |F - exact| per channel over the accuracy samples: the decomposition's, Schlick's
@@ -152,7 +155,8 @@ class CompiledMaterial {
 CompiledMaterial compile(const Material& material, const CompileOptions& options = {});
 
 // F at cosines mu for any coefficients (a coefficient table's, a texture's) as the shaders compute
-// it with `basis` (empty: the default): 3 values per cosine. Each coefficient must be finite.
+// it with `basis` (one basis; empty: "powers"): 3 values per cosine. Each coefficient must be
+// finite.
 std::vector<double> fresnel_from_coefficients(const CoefficientRows& coefficients,
                                               std::span<const double> mu,
                                               std::string_view basis = {});

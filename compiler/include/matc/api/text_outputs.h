@@ -25,6 +25,9 @@ class TextOutputs {
   const std::string& library_source(std::string_view language) const;
   std::string material_source(std::string_view language, const CompiledMaterial& compiled) const;
   std::string material_json(const CompiledMaterial& compiled) const;
+  // The build's basis option: "auto" (a basis per material, a table of a layer per basis) or the
+  // basis every material is compiled against. The tables these texts read are of that basis.
+  const std::string& basis() const { return basis_; }
 
  private:
   std::shared_ptr<const matc::TextOutputs> texts_;

@@ -55,6 +55,12 @@ inline constexpr std::array<BasisKind, 2> kPerMaterialBases = {BasisKind::powers
 constexpr bool is_per_material_basis(BasisKind kind) {
   return kind == BasisKind::powers || kind == BasisKind::f82;
 }
+// Its layer in a per-material build's table (`kind` one of them).
+constexpr std::size_t per_material_layer(BasisKind kind) {
+  return kind == BasisKind::f82 ? 1 : 0;
+}
+static_assert(kPerMaterialBases[per_material_layer(BasisKind::powers)] == BasisKind::powers &&
+              kPerMaterialBases[per_material_layer(BasisKind::f82)] == BasisKind::f82);
 
 // "powers", "extended", "paper", "f82": the names `--basis` accepts and outputs record.
 std::string_view basis_name(BasisKind kind);
