@@ -42,6 +42,10 @@ def test_tables_hold_the_texels_of_the_written_files(tmp_path):
     np.testing.assert_array_equal(build.lut_layer("f82").texels, written[:, 128:])
     with pytest.raises(ValueError, match="no layer of the extended basis"):
         build.lut_layer("extended")
+    # Hostile names: refused with the name escaped and the names the option takes.
+    for name, shown in (("x\x1b[31m", r"'x\\x1B\[31m'"), ("auto", "'auto'")):
+        with pytest.raises(ValueError, match=rf"basis: {shown} is not one of powers, extended"):
+            build.lut_layer(name)
     run_matc("-q", "--lut", "raw", "--emit", "lut", "--basis", "powers", "-o", tmp_path / "one", GOLD)
     one = np.fromfile(tmp_path / "one" / "matc_lut.bin", dtype="<f4").reshape(128, 128, 4)
     np.testing.assert_array_equal(matc.Build(basis="powers").lut.texels, one)
