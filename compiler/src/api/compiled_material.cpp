@@ -295,8 +295,8 @@ const CompiledMaterial::Evaluation::Curves& CompiledMaterial::Evaluation::curves
 
 namespace {
 
-// The evaluations of `compiled` (compiled with `basis`): its exact curves made from the material
-// the compiled value holds, shared with it.
+// The evaluations of `compiled` (compiled in a build of `choice`): its exact curves made from the
+// material the compiled value holds, shared with it.
 std::shared_ptr<const CompiledMaterial::Evaluation> evaluation_of(
     const std::shared_ptr<const matc::CompiledMaterial>& compiled, const BasisChoice& choice) {
   auto evaluation = std::make_shared<CompiledMaterial::Evaluation>();
