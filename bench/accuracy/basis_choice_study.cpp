@@ -19,7 +19,6 @@
 
 #include <fmt/core.h>
 
-#include "compile/basis_choice.h"
 #include "default_basis.h"
 #include "error_totals.h"
 #include "f82_tint_look.h"
@@ -38,11 +37,6 @@ using matc::runtime::BasisKind;
 
 constexpr std::array<BasisKind, 4> kBases = {BasisKind::powers, BasisKind::extended,
                                              BasisKind::paper, BasisKind::f82};
-
-// The basis a default build (`--basis auto`) gives a bare material of this model.
-BasisKind rule_for(matc::MaterialModel model) {
-  return matc::bench::default_basis_for(std::move(model));
-}
 
 // A family of curves and the basis the rule gives them.
 struct Family {
@@ -65,8 +59,8 @@ double worst_channel(const matc::ErrorStats& stats) {
 
 std::vector<Family> families() {
   std::vector<Family> out;
-  const BasisKind spectral_rule = rule_for(matc::SpectralInput{});
-  const BasisKind f82_tint_rule = rule_for(matc::F82TintInput{});
+  const BasisKind spectral_rule = matc::bench::default_basis_for(matc::SpectralInput{});
+  const BasisKind f82_tint_rule = matc::bench::default_basis_for(matc::F82TintInput{});
   Family measured{"the 23 reliable measured metals (exact spectral curves)", spectral_rule, {}};
   Family measured_f82{
       "the same metals as F82-tint looks (their own F0 and F82)", f82_tint_rule, {}};
@@ -113,15 +107,18 @@ std::vector<Family> families() {
   }
   out.push_back(std::move(schlick));
 
-  Family artistic{"Gulbrandsen (r, g), 200 random (r < 0.99)", rule_for(matc::ArtisticInput{}), {}};
+  Family artistic{"Gulbrandsen (r, g), 200 random (r < 0.99)",
+                  matc::bench::default_basis_for(matc::ArtisticInput{}),
+                  {}};
   for (const auto& [r, g] : matc::bench::random_artistic_inputs(200, 0.99)) {
     const matc::ComplexIor ior = matc::gulbrandsen_to_ior({r, g});
     artistic.curves.push_back(std::make_unique<matc::IorCurve>(std::array{ior, ior, ior}));
   }
   out.push_back(std::move(artistic));
 
-  Family conductors{
-      "complex indices, 200 random conductors (n 0.05-3, k 0.5-8)", rule_for(matc::IorInput{}), {}};
+  Family conductors{"complex indices, 200 random conductors (n 0.05-3, k 0.5-8)",
+                    matc::bench::default_basis_for(matc::IorInput{}),
+                    {}};
   matc::bench::UnitDraws index_draws(6602);
   for (int i = 0; i < 200; ++i) {
     const matc::ComplexIor ior{0.05 + 2.95 * index_draws(), 0.5 + 7.5 * index_draws()};

@@ -5,6 +5,7 @@
 
 #include <fmt/core.h>
 
+#include "emit/material_snippet.h"
 #include "emit/template.h"
 #include "matc/version.h"
 #include "optics/coat.h"
@@ -155,10 +156,9 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
        {"library", build.library_source(ShaderLanguage::glsl)},
        {"material", build.material_source(ShaderLanguage::glsl, compiled)},
        {"name", compiled.material.name},
-       // A default build's bare material samples its own layer of the table.
-       {"lut_texcoord", build.options().per_material_basis && !compiled.coat
-                            ? "matc_lut_texcoord_" + compiled.material.name
-                            : std::string("matc_lut_texcoord")},
+       // Its basis' layer of the table, as the validation kernel samples it.
+       {"lut_texcoord",
+        "matc_lut_texcoord" + basis_function_suffix(compiled, build.options().per_material_basis)},
        {"f0", f0_list(compiled)},
        {"coat_roughness", float_literal(coat_roughness)},
        {"coat_weight", float_literal(coat_weight)},

@@ -23,10 +23,10 @@ SharedTables::SharedTables(const SharedTableOptions& options)
           stored_coefficient_table_, options.format, options.coefficient_table_precision)),
       ltc_file_bytes_(encode_ltc_table(runtime::shipped_ltc_table(), options.format)) {
   if (options_.embedded_lut_size != 0) {
-    for (const runtime::BasisKind basis : options_.layers) {
-      embedded_luts_.push_back(preintegrate_lut(
-          runtime::shipped_basis(basis), {options_.embedded_lut_size, options_.lut.samples}));
-    }
+    // Every layer's copy over one set of GGX samples, as the full-size table is baked.
+    for (BakedLut& layer :
+         bake_luts(options_.layers, {options_.embedded_lut_size, options_.lut.samples}))
+      embedded_luts_.push_back(std::move(layer.lut));
   }
 }
 

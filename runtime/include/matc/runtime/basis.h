@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -55,12 +56,12 @@ inline constexpr std::array<BasisKind, 2> kPerMaterialBases = {BasisKind::powers
 constexpr bool is_per_material_basis(BasisKind kind) {
   return kind == BasisKind::powers || kind == BasisKind::f82;
 }
-// Its layer in a per-material build's table (`kind` one of them).
+// Its layer in a per-material build's table: its place in kPerMaterialBases (`kind` one of them).
 constexpr std::size_t per_material_layer(BasisKind kind) {
-  return kind == BasisKind::f82 ? 1 : 0;
+  for (std::size_t layer = 0; layer < kPerMaterialBases.size(); ++layer)
+    if (kPerMaterialBases[layer] == kind) return layer;
+  throw std::invalid_argument("per_material_layer: not one of the per-material bases");
 }
-static_assert(kPerMaterialBases[per_material_layer(BasisKind::powers)] == BasisKind::powers &&
-              kPerMaterialBases[per_material_layer(BasisKind::f82)] == BasisKind::f82);
 
 // "powers", "extended", "paper", "f82": the names `--basis` accepts and outputs record.
 std::string_view basis_name(BasisKind kind);
