@@ -249,6 +249,8 @@ console.log(`${cases} catalogue cases through the JS API`);
     [{ name: "a;b" }, /name is not the identifier matc writes/],
     [{ name: "a__b" }, /name is not the identifier matc writes/],
     [{ name: "_trim" }, /name is not the identifier matc writes/],
+    [{ name: "sum" }, /name is not the identifier matc writes/],
+    [{ name: "f82" }, /name is not the identifier matc writes/],
     [{ name: "t".repeat(65) }, /name is not the identifier matc writes/],
     [{ basis: "paper" }, /holds coefficients of basis paper/],
   ];

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "base/identifier_names.h"
 #include "material/gltf_import.h"
 #include "material/materialx_import.h"
 
@@ -96,15 +97,36 @@ std::string DocumentNames::claim_unique(const std::string& document_name,
                                         const std::string& description, Diagnostics& diagnostics) {
   const std::string name = sanitized_material_name(document_name);
   const std::string name_key = material_name_key(name);
+  // A taken key whose names' identifiers `key`'s might meet (ignoring case: a derived name keeps
+  // clear of them all).
+  const auto neighbour_in = [](const auto& keys, const std::string& key) {
+    for (const IdentifierNeighbour& neighbour : identifier_neighbours(key))
+      if (keys.contains(neighbour.name)) return true;
+    return false;
+  };
   const auto taken = taken_.find(name_key);
-  if (taken == taken_.end() && !shared_stems.contains(name_key))
+  // Identifiers keep case: 'steel' meets 'preintegrated_steel', not 'Preintegrated_steel'.
+  const IdentifierNeighbour* neighbour = nullptr;
+  const std::vector<IdentifierNeighbour> neighbours = identifier_neighbours(name);
+  for (const IdentifierNeighbour& candidate : neighbours) {
+    const auto other = taken_.find(material_name_key(candidate.name));
+    if (!neighbour && other != taken_.end() && other->second.name == candidate.name)
+      neighbour = &candidate;
+  }
+  if (taken == taken_.end() && !neighbour && !shared_stems.contains(name_key))
     return claim(document_name, location, field, description, diagnostics);
-  const bool clash = taken != taken_.end();
-  const std::string why =
-      clash ? fmt::format("'{}' is '{}' ({}) ignoring case", name, taken->second.name,
-                          taken->second.description)
-            : fmt::format("'{}' names the files every build writes once ({}.*) ignoring case", name,
-                          name_key);
+  std::string why;
+  if (taken != taken_.end()) {
+    why = fmt::format("'{}' is '{}' ({}) ignoring case", name, taken->second.name,
+                      taken->second.description);
+  } else if (neighbour) {
+    const First& other = taken_.at(material_name_key(neighbour->name));
+    why = fmt::format("'{}' and '{}' ({}) would both define {}", name, other.name,
+                      other.description, neighbour->identifier);
+  } else {
+    why = fmt::format("'{}' names the files every build writes once ({}.*) ignoring case", name,
+                      name_key);
+  }
   // `<stem>_<n>` within the length limit, never with "__" (the stem loses a trailing '_').
   std::string stem = name;
   for (int n = 2;; ++n) {
@@ -114,12 +136,16 @@ std::string DocumentNames::claim_unique(const std::string& document_name,
       stem.pop_back();
     const std::string derived = stem + suffix;
     const std::string key = material_name_key(derived);
-    if (taken_.contains(key) || reserved.contains(key) || shared_stems.contains(key)) continue;
+    if (taken_.contains(key) || reserved.contains(key) || shared_stems.contains(key) ||
+        neighbour_in(taken_, key) || neighbour_in(reserved, key))
+      continue;
+    const std::string_view rule =
+        taken != taken_.end() ? "material names that differ ignoring case (they name files)"
+        : neighbour ? "material names that differ by more than a 'preintegrated_' or 'textured_' "
+                      "in front (it is part of the generated names)"
+                    : "a material name other than the shared files' (matc_lut, matc_fresnel, ...)";
     diagnostics.note(location, field, fmt::format("imported as '{}': {}", derived, why),
-                     clash ? "material names that differ ignoring case (they name files); the "
-                             "glTF loaders match materials by index"
-                           : "a material name other than the shared files' (matc_lut, "
-                             "matc_fresnel, ...); the glTF loaders match materials by index");
+                     fmt::format("{}; the glTF loaders match materials by index", rule));
     taken_.emplace(key, First{derived, description});
     return derived;
   }

@@ -76,8 +76,9 @@ class DocumentNames {
   std::string claim(const std::string& document_name, const SourceLocation& location,
                     const std::string& field, const std::string& description,
                     Diagnostics& diagnostics);
-  // The same for a format whose names need not be unique (glTF): a name taken already, or one of
-  // `shared_stems` (the keys of the files every build writes once: matc_lut, ...), becomes
+  // The same for a format whose names need not be unique (glTF): a name taken already, one whose
+  // generated identifiers a taken name's would define too ('steel', 'preintegrated_steel'), or one
+  // of `shared_stems` (the keys of the files every build writes once: matc_lut, ...), becomes
   // `<name>_<n>`, with the smallest n from 2 whose name is free and none of `reserved` (the keys
   // of names the document's later materials hold) or `shared_stems`, with a note saying so.
   std::string claim_unique(const std::string& document_name, const std::set<std::string>& reserved,

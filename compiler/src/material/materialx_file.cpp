@@ -1,6 +1,7 @@
 // The parts of MaterialX reading that need no XML parser: names and extensions.
 #include <cctype>
 
+#include "base/identifier_names.h"
 #include "material/materialx_import.h"
 
 namespace matc {
@@ -17,6 +18,7 @@ std::string sanitized_material_name(std::string_view name) {
   if (out.empty()) return "material";
   if (!std::isalpha(static_cast<unsigned char>(out.front()))) out = "m_" + out;
   if (out.size() > kMaxMaterialNameLength) out.resize(kMaxMaterialNameLength);
+  if (!identifier_taken_by_library(out).empty()) out += "_material";  // those names are short
   return out;  // no "__": runs of '_' were folded, and leading ones dropped
 }
 

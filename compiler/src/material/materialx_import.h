@@ -27,7 +27,8 @@ MaterialXImport import_materialx(std::string_view text, const std::string& path)
 bool is_materialx_path(std::string_view path);
 
 // `name` made to follow matc's name rule (kMaterialNameRule): other characters become '_', runs
-// of '_' one, a name that does not start with a letter gets "m_" before it, at most 64 characters.
+// of '_' one, a name that does not start with a letter gets "m_" before it, at most 64 characters;
+// a name the shared library takes ("sum": kNamesTakenByLibrary) gets "_material" after it.
 std::string sanitized_material_name(std::string_view name);
 
 }  // namespace matc

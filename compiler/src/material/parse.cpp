@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "base/echoed_text.h"
+#include "base/identifier_names.h"
 #include "located_json_reader.h"
 #include "material/located_json.h"
 #include "optics/presets.h"
@@ -397,6 +398,9 @@ std::optional<std::string> material_name_problem(std::string_view name) {
         "'{}' would make generated names such as matc_fresnel_{} contain '__', "
         "which GLSL reserves",
         name, name);
+  }
+  if (const std::string_view identifier = identifier_taken_by_library(name); !identifier.empty()) {
+    return fmt::format("'{}' would make {}, which the shared library defines", name, identifier);
   }
   return std::nullopt;
 }

@@ -47,7 +47,8 @@ ParseResult read_material_file(const std::string& path, const FileLoader& loader
 // What material_name_problem accepts, as diagnostics word it (bake assets follow the same rule:
 // names become file stems and generated identifiers).
 inline constexpr std::string_view kMaterialNameRule =
-    "a name matching [A-Za-z][A-Za-z0-9_]*, at most 64 characters, without '__'";
+    "a name matching [A-Za-z][A-Za-z0-9_]*, at most 64 characters, without '__', and none of "
+    "the shared library's (f82, sum, preintegrated, from_f0, ...: docs/material-format.md)";
 
 // Why `name` is not a valid material name, or nullopt if it is.
 std::optional<std::string> material_name_problem(std::string_view name);

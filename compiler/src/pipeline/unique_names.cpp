@@ -1,7 +1,9 @@
 #include "pipeline/unique_names.h"
 
-#include <fmt/core.h>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include "base/identifier_names.h"
 #include "material/parse.h"
 
 namespace matc {
@@ -14,8 +16,24 @@ bool UniqueNames::claim(const Material& material, std::string_view scope,
 bool UniqueNames::claim(const std::string& name, const std::string& path,
                         const SourceLocation& location, std::string_view scope,
                         Diagnostics& diagnostics) {
-  const auto [first, inserted] = first_use_.try_emplace(
-      material_name_key(name), FirstUse{path, location.line, location.column});
+  const std::string key = material_name_key(name);
+  // 'steel' and 'preintegrated_steel' would both define matc_fresnel_preintegrated_steel
+  // (identifiers keep case: 'Preintegrated_steel' would not).
+  for (const IdentifierNeighbour& neighbour : identifier_neighbours(name)) {
+    const auto other = first_use_.find(material_name_key(neighbour.name));
+    if (other == first_use_.end() || other->second.name != neighbour.name) continue;
+    diagnostics.error(
+        location, "name",
+        fmt::format("'{}' and the material of {} ({}:{}) would both define {}", name,
+                    other->second.path, other->second.line, other->second.column,
+                    neighbour.identifier),
+        fmt::format("no two names within {} that differ by a '{}' in front, ignoring case (it "
+                    "is part of the generated names)",
+                    scope, fmt::join(kIdentifierInfixes, "', '")));
+    return false;
+  }
+  const auto [first, inserted] =
+      first_use_.try_emplace(key, FirstUse{name, path, location.line, location.column});
   if (inserted) return true;
   diagnostics.error(
       location, "name",

@@ -22,12 +22,13 @@ class UniqueNames {
              std::string_view scope, Diagnostics& diagnostics);
 
  private:
-  struct FirstUse {  // kept small: a batch of 100,000 materials holds one per material
+  struct FirstUse {    // kept small: a batch of 100,000 materials holds one per material
+    std::string name;  // as given: generated identifiers keep its case
     std::string path;
     std::size_t line = 0;
     std::size_t column = 0;
   };
-  std::map<std::string, FirstUse> first_use_;  // lowercase name -> where it was first used
+  std::map<std::string, FirstUse> first_use_;  // lowercase name -> its first use
 };
 
 }  // namespace matc

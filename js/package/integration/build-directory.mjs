@@ -219,11 +219,21 @@ export async function matcBuildFiles(source, language) {
   return source;
 }
 
+// Names whose snippets would define one of the shared library's identifiers again ("sum" would
+// make matc_fresnel_sum): kNamesTakenByLibrary in compiler/src/base/identifier_names.h, which
+// GeneratedIdentifiers.JavaScriptListIsTheLibrarys holds equal to this one.
+const kNamesTakenByLibrary = new Set([
+  "f82", "following", "following_f82", "from_baked", "from_f0", "from_f0_entries", "from_f0_table",
+  "from_table", "from_table_texture", "preintegrated", "preintegrated_sum", "sum", "sum_f82",
+]);
+
 // Whether `name` is a material name matc writes (material_name_problem in
 // compiler/src/material/parse.cpp): an identifier of at most 64 characters, not starting with "_"
-// and without "__" (its snippets' functions are matc_<kind>_<name>, and GLSL reserves "__").
+// and without "__" (its snippets' functions are matc_<kind>_<name>, and GLSL reserves "__"), and
+// none of the library's.
 export const isSnippetName = (name) => typeof name === "string" && name.length <= 64 &&
-                                /^[A-Za-z][A-Za-z0-9_]*$/.test(name) && !name.includes("__");
+                                /^[A-Za-z][A-Za-z0-9_]*$/.test(name) && !name.includes("__") &&
+                                !kNamesTakenByLibrary.has(name);
 
 // A coated material's coat (its <name>.json's coat section) and its shader snippet, whose
 // functions the integrations call for both lobes: { weight, ior, roughness, color,

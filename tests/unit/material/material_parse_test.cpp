@@ -121,7 +121,9 @@ TEST(MaterialParse, EveryErrorInAFileIsReportedInOrder) {
   EXPECT_FALSE(result.material);
   EXPECT_EQ(all_diagnostics(result),
             "materials/m.json:2:11: error: name: 'bad name' is not an identifier (' ' at position "
-            "4); a name matching [A-Za-z][A-Za-z0-9_]*, at most 64 characters, without '__'\n"
+            "4); a name matching [A-Za-z][A-Za-z0-9_]*, at most 64 characters, without '__', and "
+            "none of the shared library's (f82, sum, preintegrated, from_f0, ...: "
+            "docs/material-format.md)\n"
             "materials/m.json:3:33: error: artistic.reflectivity[0]: 1.2 is out of range; a "
             "number in [0, 1)\n"
             "materials/m.json:3:62: error: artistic.edge_tint: -1 is out of range; a number in "
