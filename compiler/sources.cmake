@@ -32,6 +32,7 @@ set(MATC_CORE_SOURCES
   src/material/load_file.cpp
   src/material/memory_files.cpp
   src/material/material.cpp
+  src/material/basis_pin.cpp
   src/material/materialx_file.cpp
   src/material/materialx_import.cpp
   src/material/materialx_document.cpp

@@ -11,6 +11,7 @@
 #include "base/echoed_text.h"
 #include "base/shared_file_stems.h"
 #include "gltf_asset.h"
+#include "material/basis_pin.h"
 #include "material/materialx_import.h"
 
 namespace matc {
@@ -194,6 +195,7 @@ class Importer {
           coat ? "a clear coat" : "an edge colour"));
     }
     if (coat) material_json["coat"] = std::move(*coat);
+    if (!basis_pin(field, source, coat.has_value(), material_json)) return;
     for (const std::string_view name : kNotCarriedExtensions)
       if (extension(source.extensions, name)) not_carried.push_back(std::string(name));
     if (!not_carried.empty()) {
@@ -216,6 +218,26 @@ class Importer {
       result_.materials.back().per_pixel_f0 = per_pixel_f0;
       result_.materials.back().f0_table = textured && !per_pixel_f0;
     }
+  }
+
+  // The material's basis pin, extras.matc_basis (material/basis_pin.h), into `material_json`;
+  // false after an error.
+  bool basis_pin(const std::string& field, const tinygltf::Material& source, bool coated,
+                 ordered_json& material_json) {
+    const std::string key(kBasisPinAttribute);
+    if (!source.extras.IsObject() || !source.extras.Has(key)) return true;
+    const tinygltf::Value& given = source.extras.Get(key);
+    if (!given.IsString()) {
+      error(field, fmt::format("extras.{} is not a string", key), basis_pin_rule());
+      return false;
+    }
+    const BasisPin pin = read_basis_pin(given.Get<std::string>(), coated ? "coat" : "");
+    if (pin.problem) {
+      error(field, fmt::format("extras.{}: {}", key, pin.problem->problem), pin.problem->allowed);
+      return false;
+    }
+    material_json["basis"] = runtime::basis_name(*pin.basis);
+    return true;
   }
 
   // Partial or textured metalness: the compile carries the metal, and glTF's mix with the

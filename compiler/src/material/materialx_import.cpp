@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/echoed_text.h"
+#include "material/basis_pin.h"
 #include "materialx_document.h"
 #include "materialx_models.h"
 #include "suggestion.h"
@@ -220,6 +221,19 @@ class MaterialXImporter {
           "a film on a bare metal (docs/material-format.md, \"film\")");
     } else if (film.block) {
       material_json["film"] = *film.block;
+    }
+    if (shader.material->has_attribute(kBasisPinAttribute)) {
+      const std::string_view layered = material_json.contains("coat")   ? "coat"
+                                       : material_json.contains("film") ? "film"
+                                                                        : "";
+      const BasisPin pin = read_basis_pin(shader.material->attribute(kBasisPinAttribute), layered);
+      if (pin.problem) {
+        result_.diagnostics.error(document_.at(*shader.material),
+                                  fmt::format("{}.{}", element_name, kBasisPinAttribute),
+                                  pin.problem->problem, pin.problem->allowed);
+        return;
+      }
+      material_json["basis"] = runtime::basis_name(*pin.basis);
     }
     if (material_json["name"].get<std::string>().empty()) return;  // a name clash, reported
     add_imported_material(result_, material_json, document_.path(), document_.at(*shader.material),

@@ -12,6 +12,7 @@
 #include "base/echoed_text.h"
 #include "base/identifier_names.h"
 #include "located_json_reader.h"
+#include "material/basis_pin.h"
 #include "material/located_json.h"
 #include "optics/presets.h"
 #include "suggestion.h"
@@ -186,38 +187,20 @@ class MaterialReader : LocatedJsonReader {
     return film;
   }
 
-  // A pinned basis: one a per-material build's table holds, and f82 only on a bare metal (the
-  // coat's and the film's shader paths use the build's first basis).
+  // A pinned basis (material/basis_pin.h).
   std::optional<runtime::BasisKind> read_basis(const json& root) {
     const std::string pointer = "/basis";
     const json& value = root["basis"];
-    const std::string allowed = fmt::format(
-        "one of {} (the bases a per-material build's table holds; the fitted bases serve whole "
-        "builds: --basis NAME)",
-        runtime::per_material_basis_names());
     if (!value.is_string()) {
-      error(pointer, fmt::format("is {}", describe_type(value)), allowed);
+      error(pointer, fmt::format("is {}", describe_type(value)), basis_pin_rule());
       return std::nullopt;
     }
-    const std::string name = value.get<std::string>();
-    const auto kind = runtime::basis_from_name(name);
-    if (!kind || !runtime::is_per_material_basis(*kind)) {
-      error(pointer,
-            kind ? fmt::format("'{}' is a fitted basis", name)
-                 : fmt::format("unknown basis '{}'", echoed(name)),
-            allowed);
-      return std::nullopt;
-    }
-    if (*kind != runtime::kDefaultBasis && (root.contains("coat") || root.contains("film"))) {
-      error(pointer,
-            fmt::format("pins '{}' on a metal with a {}", name,
-                        root.contains("coat") ? "coat" : "film"),
-            fmt::format("'{}': a coated or filmed metal takes the build's first basis; drop the "
-                        "pin, or force one basis on the whole build with --basis {}",
-                        runtime::basis_name(runtime::kDefaultBasis), name));
-      return std::nullopt;
-    }
-    return kind;
+    const std::string_view layered = root.contains("coat")   ? "coat"
+                                     : root.contains("film") ? "film"
+                                                             : "";
+    const BasisPin pin = read_basis_pin(value.get<std::string>(), layered);
+    if (pin.problem) error(pointer, pin.problem->problem, pin.problem->allowed);
+    return pin.basis;
   }
 
   std::optional<ColorSpace> read_color_space(const json& value) {

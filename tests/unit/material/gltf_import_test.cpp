@@ -6,6 +6,8 @@
 #include <cstring>
 #include <map>
 
+#include <fmt/format.h>
+
 #include "compile/compile.h"
 #include "diagnostic_text.h"
 #include "glb_bytes.h"
@@ -168,6 +170,30 @@ TEST(GltfImport, CollidingNamesTakeDerivedUniqueNames) {
 
 // A glTF material named like a file every build writes once (matc_lut.ktx2, matc_fresnel.glsl,
 // matc_manifest.json, in any case) takes a derived name with a note: valid glTF, imported.
+// extras.matc_basis pins the material's basis (material/basis_pin.h), as "basis" in a file does.
+TEST(GltfImport, ABasisPinInExtrasIsTheMaterialFilesBasis) {
+  const auto metal = [](const std::string& extras) {
+    return import_gltf(asset(R"({"name": "Trim", "pbrMetallicRoughness": {"baseColorFactor":
+                                 [0.9, 0.6, 0.3, 1]})" +
+                             extras + "}"),
+                       "a.gltf");
+  };
+  const auto unpinned = metal(R"(, "extras": {"author": "x"})");
+  ASSERT_EQ(unpinned.materials.size(), 1u) << all_diagnostics(unpinned);
+  EXPECT_FALSE(unpinned.materials[0].material.basis.has_value());
+  for (const runtime::BasisKind basis : runtime::kPerMaterialBases) {
+    const auto imported =
+        metal(fmt::format(R"(, "extras": {{"matc_basis": "{}"}})", runtime::basis_name(basis)));
+    ASSERT_EQ(imported.materials.size(), 1u) << all_diagnostics(imported);
+    EXPECT_EQ(imported.materials[0].material.basis, basis);
+  }
+  const auto refused = metal(R"(, "extras": {"matc_basis": "paper"})");
+  EXPECT_TRUE(refused.materials.empty());
+  EXPECT_NE(all_diagnostics(refused).find("extras.matc_basis: 'paper' is a fitted basis"),
+            std::string::npos)
+      << all_diagnostics(refused);
+}
+
 TEST(GltfImport, NamesOfSharedFilesTakeDerivedNames) {
   const auto imported = import_gltf(
       asset(R"({"name": "matc_lut"}, {"name": "MATC_Fresnel"}, {"name": "matc_manifest"},

@@ -2,6 +2,8 @@
 // spaces, and the located problems of bad documents.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include "compile/compile.h"
 #include "diagnostic_text.h"
 #include "material/materialx_import.h"
@@ -103,6 +105,34 @@ TEST(MaterialXImport, OpenPbrMetalIsAnF82TintMaterialFittedClosely) {
   // Issue #17's target (0.002) with the basis made for F82-tint looks.
   const auto with_f82 = compile_material(material, runtime::shipped_basis(runtime::BasisKind::f82));
   EXPECT_LT(worst_channel(with_f82.accuracy.decomposition.max_abs), 0.002);
+}
+
+// A material's basis pin, the matc_basis attribute of its <surfacematerial>, lands in the
+// material file's "basis"; without it the build's rule chooses (compile/basis_choice.h).
+TEST(MaterialXImport, ABasisPinOnTheMaterialIsTheMaterialFilesBasis) {
+  const std::string open_pbr =
+      surface("open_pbr_surface", input("base_color", "color3", "0.926, 0.721, 0.504") +
+                                      input("base_metalness", "float", "1"));
+  const auto pinned = [&](const std::string& attribute) {
+    std::string text = document(open_pbr);
+    const std::string tag = "type=\"material\"";
+    text.replace(text.find(tag), tag.size(), tag + attribute);
+    return import_materialx(text, "o.mtlx");
+  };
+  const auto unpinned = pinned("");
+  ASSERT_EQ(unpinned.materials.size(), 1u) << all_diagnostics(unpinned);
+  EXPECT_FALSE(unpinned.materials[0].material.basis.has_value());
+  for (const runtime::BasisKind basis : runtime::kPerMaterialBases) {
+    const auto imported = pinned(fmt::format(" matc_basis=\"{}\"", runtime::basis_name(basis)));
+    ASSERT_EQ(imported.materials.size(), 1u) << all_diagnostics(imported);
+    EXPECT_EQ(imported.materials[0].material.basis, basis);
+    EXPECT_NE(imported.materials[0].json.find("\"basis\""), std::string::npos);
+  }
+  const auto fitted = pinned(" matc_basis=\"extended\"");
+  EXPECT_TRUE(fitted.materials.empty());
+  EXPECT_NE(all_diagnostics(fitted).find("Metal.matc_basis: 'extended' is a fitted basis"),
+            std::string::npos)
+      << all_diagnostics(fitted);
 }
 
 // Inputs that are not carried are named only when they would change the look: weights at 0,
