@@ -126,12 +126,14 @@ set(MATC_NATIVE_SOURCES
   src/bake/openexr_decode.cpp
   src/emit/material_module_template.cpp
   src/generated/material_module_templates.cpp
+  src/generated/library_module_cache.cpp
   src/emit/c_header.cpp
   src/emit/validation_kernel.cpp
   src/emit/fullscreen_shaders.cpp
   src/emit/build.cpp
   src/emit/shared_tables.cpp
   src/emit/library_module.cpp
+  src/emit/library_module_cache.cpp
   src/emit/manifest_writer.cpp
   src/report/material_curves.cpp
   src/report/fresnel_plot.cpp

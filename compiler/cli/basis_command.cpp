@@ -160,6 +160,12 @@ std::vector<Command> register_basis(CLI::App& app) {
       "C++ source of those templates (what per-material SPIR-V is patched from)",
       "compiler/src/generated/material_module_templates.cpp",
       api::CheckedInSource::material_modules, false);
+  add_source_command(
+      "library-modules",
+      "Compile the default build's shared library module (matc_fresnel.spv) and write the C++ "
+      "source that keeps it, keyed by what its compile reads (a build that matches skips glslang)",
+      "compiler/src/generated/library_module_cache.cpp", api::CheckedInSource::library_modules,
+      false);
   const auto [ltc_table_command, ltc_table] = add_source_command(
       "ltc-table",
       "Refit the LTC table of GGX (inverse matrices over NdotV and roughness, for area lights) "

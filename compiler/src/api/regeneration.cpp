@@ -8,6 +8,7 @@
 
 #include "basis/basis_fit.h"
 #include "checked_options.h"
+#include "emit/library_module_cache.h"
 #include "emit/material_module_template.h"
 #include "fit/coefficient_table.h"
 #include "ltc/ltc_fit.h"
@@ -61,6 +62,14 @@ RegeneratedSource material_modules() {
           {}};
 }
 
+RegeneratedSource library_modules() {
+  const std::vector<CachedLibraryModule> modules = compile_cached_library_modules();
+  return {library_module_cache_source(modules),
+          fmt::format("compiled {} shared library module{}", modules.size(),
+                      modules.size() == 1 ? "" : "s"),
+          {}};
+}
+
 std::string ltc_quality_csv(const LtcTable& table, std::size_t samples, unsigned threads) {
   const std::vector<double> polygon = ltc_polygon_errors(table.view(), samples, threads);
   std::string csv = "x,y,ndotv,roughness,l1_distance,cubed_distance,polygon_error\n";
@@ -107,6 +116,8 @@ RegeneratedSource regenerate_source(CheckedInSource source, const RegenerationOp
       return lut_hashes();
     case CheckedInSource::material_modules:
       return material_modules();
+    case CheckedInSource::library_modules:
+      return library_modules();
     case CheckedInSource::ltc_table:
       return ltc_table(options);
   }

@@ -94,18 +94,23 @@ std::vector<OutputFile> Build::shared_outputs() const {
     }
   }
   if (emit.contains(OutputKind::spirv)) {
-    const std::string name = shared_file_name(OutputKind::spirv, options_.lut_format);
-    std::vector<std::string> further_layer_suffixes;
-    for (std::size_t layer = 1; layer < lut_layers().size(); ++layer)
-      further_layer_suffixes.push_back(layer_suffix(lut_layers()[layer]));
-    files.push_back({name, spirv_file_bytes(compile_library_module(
-                               library_source(ShaderLanguage::glsl), name,
-                               shared_library_exports(!tables_.embedded_luts().empty(),
-                                                      further_layer_suffixes)))});
+    LibraryModuleInputs inputs = shared_library_module_inputs();
+    files.push_back(
+        {inputs.name, spirv_file_bytes(compile_library_module(std::move(inputs.glsl_source),
+                                                              inputs.name, inputs.exports))});
   }
   for (OutputFile& table : tables_.files(emit))
     files.push_back(std::move(table));
   return files;
+}
+
+Build::LibraryModuleInputs Build::shared_library_module_inputs() const {
+  std::vector<std::string> further_layer_suffixes;
+  for (std::size_t layer = 1; layer < lut_layers().size(); ++layer)
+    further_layer_suffixes.push_back(layer_suffix(lut_layers()[layer]));
+  return {library_source(ShaderLanguage::glsl),
+          shared_file_name(OutputKind::spirv, options_.lut_format),
+          shared_library_exports(!tables_.embedded_luts().empty(), further_layer_suffixes)};
 }
 
 SpirvWords Build::material_library_module(const CompiledMaterial& compiled) const {

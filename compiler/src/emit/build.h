@@ -91,6 +91,15 @@ class Build {
   // <name>.{glsl,hlsl,spv,h,json} as selected.
   MaterialOutputs material_outputs(const CompiledMaterial& compiled) const;
 
+  // What the shared library module (matc_fresnel.spv) is compiled from: its GLSL, its name and the
+  // functions it exports (emit/library_module.h).
+  struct LibraryModuleInputs {
+    std::string glsl_source;
+    std::string name;
+    std::vector<std::string> exports;
+  };
+  LibraryModuleInputs shared_library_module_inputs() const;
+
   // The linkable library module of one material (exports matc_fresnel_<name> and
   // matc_fresnel_preintegrated_<name>), optimised and validated.
   SpirvWords material_library_module(const CompiledMaterial& compiled) const;

@@ -15,6 +15,7 @@ enum class CheckedInSource {
   analytic_lut,       // <basis>_analytic_lut_table.cpp: the closed form of the default table
   lut_hashes,         // default_lut_hashes.cpp: every basis' default table files' hashes
   material_modules,   // material_module_templates.cpp: the SPIR-V each material is patched from
+  library_modules,    // library_module_cache.cpp: the default build's matc_fresnel.spv
   ltc_table,          // ltc_table.cpp: GGX's LTC inverse matrices
 };
 
