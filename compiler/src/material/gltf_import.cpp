@@ -36,13 +36,18 @@ constexpr std::string_view kClearcoat = "KHR_materials_clearcoat";
 constexpr std::string_view kClearcoatIor = "KHR_materials_clearcoat_ior";
 constexpr std::string_view kSpecular = "KHR_materials_specular";
 constexpr std::string_view kEdgeColor = "EXT_materials_specular_edge_color";
+constexpr std::string_view kIridescence = "KHR_materials_iridescence";
 
 // Material extensions that change a metal's reflectance in ways matc does not carry (named in
 // a note when present), and those that make the material something other than a metal.
-constexpr std::array<std::string_view, 8> kNotCarriedExtensions{
-    "KHR_materials_iridescence",  "KHR_materials_anisotropy", "KHR_materials_sheen",
-    "KHR_materials_transmission", "KHR_materials_volume",     "KHR_materials_diffuse_transmission",
-    "KHR_materials_dispersion",   "KHR_materials_coat"};
+constexpr std::array<std::string_view, 7> kNotCarriedExtensions{
+    "KHR_materials_anisotropy",
+    "KHR_materials_sheen",
+    "KHR_materials_transmission",
+    "KHR_materials_volume",
+    "KHR_materials_diffuse_transmission",
+    "KHR_materials_dispersion",
+    "KHR_materials_coat"};
 constexpr std::array<std::string_view, 2> kNotMetalExtensions{"KHR_materials_pbrSpecularGlossiness",
                                                               "KHR_materials_unlit"};
 
@@ -179,10 +184,20 @@ class Importer {
     std::optional<ordered_json> coat;
     if (!read_coat(field, source, coat, not_carried)) return;
     metalness_notes(pbr, coat.has_value(), not_carried);
+    std::optional<ordered_json> film;
+    if (!read_film(field, source, film, not_carried)) return;
+    if (film && coat) {
+      not_carried.push_back(
+          fmt::format("{} under {} (a film under a coat is not modelled: the film is left out)",
+                      kIridescence, kClearcoat));
+    } else if (film) {
+      material_json["film"] = std::move(*film);
+    }
     // A textured Schlick metal is carried per pixel (its coefficients are linear in F0); an edge
-    // colour or a coat makes the curve's shape depend on F0 otherwise.
+    // colour, a coat or a film makes the curve's shape depend on F0 otherwise.
     const bool textured = pbr.baseColorTexture.index >= 0;
-    const bool per_pixel_f0 = textured && tint == Rgb{1, 1, 1} && !coat;
+    const bool per_pixel_f0 =
+        textured && tint == Rgb{1, 1, 1} && !coat && !material_json.contains("film");
     if (per_pixel_f0) {
       not_carried.push_back(
           "baseColorTexture (compiled at baseColorFactor; `matc gltf` writes the coefficients at "
@@ -192,10 +207,13 @@ class Importer {
           "baseColorTexture (compiled at baseColorFactor; under {} the curve is not linear in F0: "
           "`matc gltf` writes the coefficients at 33 values of F0, between which the npm "
           "package's loaders and native shaders interpolate a pixel's)",
-          coat ? "a clear coat" : "an edge colour"));
+          coat                             ? "a clear coat"
+          : material_json.contains("film") ? "a thin film"
+                                           : "an edge colour"));
     }
     if (coat) material_json["coat"] = std::move(*coat);
-    if (!basis_pin(field, source, coat.has_value(), material_json)) return;
+    const std::string_view layered = coat ? "coat" : material_json.contains("film") ? "film" : "";
+    if (!basis_pin(field, source, layered, material_json)) return;
     for (const std::string_view name : kNotCarriedExtensions)
       if (extension(source.extensions, name)) not_carried.push_back(std::string(name));
     if (!not_carried.empty()) {
@@ -222,8 +240,8 @@ class Importer {
 
   // The material's basis pin, extras.matc_basis (material/basis_pin.h), into `material_json`;
   // false after an error.
-  bool basis_pin(const std::string& field, const tinygltf::Material& source, bool coated,
-                 ordered_json& material_json) {
+  bool basis_pin(const std::string& field, const tinygltf::Material& source,
+                 std::string_view layered, ordered_json& material_json) {
     const std::string key(kBasisPinAttribute);
     if (!source.extras.IsObject() || !source.extras.Has(key)) return true;
     const tinygltf::Value& given = source.extras.Get(key);
@@ -231,7 +249,7 @@ class Importer {
       error(field, fmt::format("extras.{} is not a string", key), basis_pin_rule());
       return false;
     }
-    const BasisPin pin = read_basis_pin(given.Get<std::string>(), coated ? "coat" : "");
+    const BasisPin pin = read_basis_pin(given.Get<std::string>(), layered);
     if (pin.problem) {
       error(field, fmt::format("extras.{}: {}", key, pin.problem->problem), pin.problem->allowed);
       return false;
@@ -293,6 +311,56 @@ class Importer {
     if (has_texture(*specular, "specularTexture") || has_texture(*specular, "specularColorTexture"))
       not_carried.push_back(std::string(kSpecular) +
                             "'s textures (the edge colour is its factors)");
+    return true;
+  }
+
+  // KHR_materials_iridescence: a film of coverage iridescenceFactor, index iridescenceIor (1.3)
+  // and thickness iridescenceThicknessMaximum (400 nm), what the extension's film is without its
+  // thickness texture. The textures are noted (a thickness per pixel needs the film in the
+  // shader). No film when the factor is 0.
+  bool read_film(const std::string& field, const tinygltf::Material& source,
+                 std::optional<ordered_json>& film, std::vector<std::string>& not_carried) {
+    const tinygltf::Value* iridescence = extension(source.extensions, kIridescence);
+    if (!iridescence || !iridescence->IsObject()) return true;
+    const std::string where_field = fmt::format("{}: {}", field, kIridescence);
+    double factor = 0, ior = 1.3, minimum = 100, maximum = 400;
+    if (!number(where_field, *iridescence, "iridescenceFactor", factor) ||
+        !number(where_field, *iridescence, "iridescenceIor", ior) ||
+        !number(where_field, *iridescence, "iridescenceThicknessMinimum", minimum) ||
+        !number(where_field, *iridescence, "iridescenceThicknessMaximum", maximum))
+      return false;
+    const std::string name(kIridescence);
+    const std::string thickness_range = fmt::format(
+        "a thickness in [0, {}] nanometres (the films matc compiles)", kMaxFilmThicknessNm);
+    if (!in_range(field, name + ".iridescenceFactor", factor, 0, 1)) return false;
+    if (!(minimum >= 0 && minimum <= kMaxFilmThicknessNm)) {
+      error(field, fmt::format("{}.iridescenceThicknessMinimum is {}", name, minimum),
+            thickness_range);
+      return false;
+    }
+    if (!(maximum >= 0 && maximum <= kMaxFilmThicknessNm)) {
+      error(field, fmt::format("{}.iridescenceThicknessMaximum is {}", name, maximum),
+            thickness_range);
+      return false;
+    }
+    if (!(ior >= 1)) {
+      error(field, fmt::format("{}.iridescenceIor is {}", name, ior), "a film index of at least 1");
+      return false;
+    }
+    if (factor == 0) return true;  // no film
+    if (ior > kMaxFilmIor) {
+      note(field, fmt::format("{}.iridescenceIor {} clamped to {} (the film indices matc compiles)",
+                              name, ior, kMaxFilmIor));
+      ior = kMaxFilmIor;
+    }
+    if (has_texture(*iridescence, "iridescenceTexture"))
+      not_carried.push_back(name + "'s iridescenceTexture (the film's coverage is its factor)");
+    if (has_texture(*iridescence, "iridescenceThicknessTexture"))
+      not_carried.push_back(fmt::format(
+          "{}'s iridescenceThicknessTexture (compiled at iridescenceThicknessMaximum, {} nm: a "
+          "thickness per pixel needs the film evaluated in the shader)",
+          name, maximum));
+    film = ordered_json{{"weight", factor}, {"ior", ior}, {"thickness", maximum}};
     return true;
   }
 

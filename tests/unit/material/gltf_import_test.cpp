@@ -120,7 +120,11 @@ TEST(GltfImport, WhatIsNotCarriedGetsANoteNamingTheMaterialAndTheProperty) {
             std::string::npos)
       << text;
   EXPECT_NE(text.find("baseColorTexture"), std::string::npos);
-  EXPECT_NE(text.find("KHR_materials_iridescence"), std::string::npos);
+  // The film makes the curve's shape depend on F0: the texture goes through the F0 table.
+  EXPECT_NE(text.find("under a thin film the curve is not linear in F0"), std::string::npos)
+      << text;
+  ASSERT_TRUE(imported.materials[0].material.film.has_value());
+  EXPECT_TRUE(imported.materials[0].f0_table);
   EXPECT_NE(text.find("materials[1] \"Rubber\": not imported: not a metal"), std::string::npos);
 }
 
@@ -170,6 +174,76 @@ TEST(GltfImport, CollidingNamesTakeDerivedUniqueNames) {
 
 // A glTF material named like a file every build writes once (matc_lut.ktx2, matc_fresnel.glsl,
 // matc_manifest.json, in any case) takes a derived name with a note: valid glTF, imported.
+// KHR_materials_iridescence on a metal is the material's film: coverage iridescenceFactor, index
+// iridescenceIor (1.3), thickness iridescenceThicknessMaximum (400 nm), as the extension's film is
+// without its thickness texture, whose per-pixel thickness is named as not carried.
+TEST(GltfImport, IridescenceBecomesTheFilm) {
+  const auto metal = [](const std::string& iridescence, const std::string& rest = "") {
+    return import_gltf(
+        asset(R"({"name": "Trim", "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.45, 1]},
+                  "extensions": {"KHR_materials_iridescence": )" +
+              iridescence + rest + "}}"),
+        "a.gltf");
+  };
+  const auto given = metal(
+      R"({"iridescenceFactor": 0.75, "iridescenceIor": 2.2, "iridescenceThicknessMinimum": 50,
+          "iridescenceThicknessMaximum": 300})");
+  ASSERT_EQ(given.materials.size(), 1u) << all_diagnostics(given);
+  ASSERT_TRUE(given.materials[0].material.film.has_value());
+  EXPECT_EQ(given.materials[0].material.film->weight, 0.75);
+  EXPECT_EQ(given.materials[0].material.film->ior, 2.2);
+  EXPECT_EQ(given.materials[0].material.film->thickness_nm, 300.0);
+  EXPECT_EQ(all_diagnostics(given), "");
+
+  const auto defaults = metal(R"({"iridescenceFactor": 1})");
+  ASSERT_EQ(defaults.materials.size(), 1u) << all_diagnostics(defaults);
+  EXPECT_EQ(defaults.materials[0].material.film->ior, 1.3);
+  EXPECT_EQ(defaults.materials[0].material.film->thickness_nm, 400.0);
+
+  const auto off = metal(R"({"iridescenceIor": 1.5})");  // the factor's default is 0
+  ASSERT_EQ(off.materials.size(), 1u) << all_diagnostics(off);
+  EXPECT_FALSE(off.materials[0].material.film.has_value());
+
+  const auto textured =
+      metal(R"({"iridescenceFactor": 1, "iridescenceThicknessTexture": {"index": 0}})");
+  ASSERT_EQ(textured.materials.size(), 1u) << all_diagnostics(textured);
+  EXPECT_NE(all_diagnostics(textured).find("iridescenceThicknessTexture (compiled at "
+                                           "iridescenceThicknessMaximum, 400 nm"),
+            std::string::npos)
+      << all_diagnostics(textured);
+
+  const auto dense = metal(R"({"iridescenceFactor": 1, "iridescenceIor": 3.5})");
+  ASSERT_EQ(dense.materials.size(), 1u) << all_diagnostics(dense);
+  EXPECT_EQ(dense.materials[0].material.film->ior, kMaxFilmIor);
+  EXPECT_NE(all_diagnostics(dense).find("iridescenceIor 3.5 clamped to 3"), std::string::npos);
+
+  // Under a clear coat the film is left out, with a note (a film under a coat is not modelled).
+  const auto coated = import_gltf(
+      asset(
+          R"({"name": "Trim", "extensions": {"KHR_materials_iridescence": {"iridescenceFactor": 1},
+                "KHR_materials_clearcoat": {"clearcoatFactor": 1}}})"),
+      "a.gltf");
+  ASSERT_EQ(coated.materials.size(), 1u) << all_diagnostics(coated);
+  EXPECT_FALSE(coated.materials[0].material.film.has_value());
+  EXPECT_TRUE(coated.materials[0].material.coat.has_value());
+  EXPECT_NE(all_diagnostics(coated).find("the film is left out"), std::string::npos);
+
+  // What matc cannot compile is a located error naming the property.
+  for (const auto& [bad, message] : std::vector<std::pair<std::string, std::string>>{
+           {R"({"iridescenceFactor": 1.5})", "iridescenceFactor is 1.5"},
+           {R"({"iridescenceFactor": 1, "iridescenceThicknessMaximum": 5000})",
+            "iridescenceThicknessMaximum is 5000"},
+           {R"({"iridescenceFactor": 1, "iridescenceThicknessMinimum": -1})",
+            "iridescenceThicknessMinimum is -1"},
+           {R"({"iridescenceFactor": 1, "iridescenceIor": 0.9})", "iridescenceIor is 0.9"},
+           {R"({"iridescenceFactor": "1"})", "iridescenceFactor is not a number"}}) {
+    const auto refused = metal(bad);
+    EXPECT_TRUE(refused.materials.empty()) << bad;
+    EXPECT_NE(all_diagnostics(refused).find(message), std::string::npos)
+        << bad << ": " << all_diagnostics(refused);
+  }
+}
+
 // extras.matc_basis pins the material's basis (material/basis_pin.h), as "basis" in a file does.
 TEST(GltfImport, ABasisPinInExtrasIsTheMaterialFilesBasis) {
   const auto metal = [](const std::string& extras) {
