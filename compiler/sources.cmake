@@ -125,6 +125,7 @@ set(MATC_NATIVE_SOURCES
   src/bake/image_map.cpp
   src/bake/openexr_decode.cpp
   src/emit/material_module_template.cpp
+  src/emit/word_array_source.cpp
   src/generated/material_module_templates.cpp
   src/generated/library_module_cache.cpp
   src/emit/c_header.cpp

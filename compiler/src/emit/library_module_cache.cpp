@@ -5,6 +5,7 @@
 #include "base/content_hash.h"
 #include "emit/build.h"
 #include "emit/library_module.h"
+#include "emit/word_array_source.h"
 #include "matc/version.h"
 
 namespace matc {
@@ -40,14 +41,8 @@ std::string library_module_cache_source(std::span<const CachedLibraryModule> mod
       "namespace matc {{\n"
       "namespace {{\n\n",
       kVersion);
-  for (std::size_t m = 0; m < modules.size(); ++m) {
-    out += fmt::format("constexpr std::uint32_t kModule{}[{}] = {{\n", m, modules[m].words.size());
-    for (std::size_t i = 0; i < modules[m].words.size(); ++i) {
-      out += fmt::format("{}{:#010x},", i % 8 == 0 ? "  " : " ", modules[m].words[i]);
-      if (i % 8 == 7 || i + 1 == modules[m].words.size()) out += "\n";
-    }
-    out += "};\n\n";
-  }
+  for (std::size_t m = 0; m < modules.size(); ++m)
+    out += word_array_source(fmt::format("kModule{}", m), modules[m].words);
   out +=
       "}  // namespace\n\n"
       "std::span<const std::uint32_t> checked_in_library_module(std::string_view key) {\n";

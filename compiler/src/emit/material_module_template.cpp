@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "emit/build.h"
+#include "emit/word_array_source.h"
 #include "matc/runtime/shader_basis.h"
 #include "matc/version.h"
 #include "spirv/module_patch.h"
@@ -81,15 +82,8 @@ std::string material_module_templates_source(std::span<const MaterialModuleTempl
                        entry.fresnel_nonnegative ? "_nonnegative" : "",
                        entry.per_material_build ? "_per_material" : "");
   };
-  for (const MaterialModuleTemplate& entry : templates) {
-    out +=
-        fmt::format("constexpr std::uint32_t {}[{}] = {{\n", array_name(entry), entry.words.size());
-    for (std::size_t i = 0; i < entry.words.size(); ++i) {
-      out += fmt::format("{}{:#010x},", i % 8 == 0 ? "  " : " ", entry.words[i]);
-      if (i % 8 == 7 || i + 1 == entry.words.size()) out += "\n";
-    }
-    out += "};\n\n";
-  }
+  for (const MaterialModuleTemplate& entry : templates)
+    out += word_array_source(array_name(entry), entry.words);
   out +=
       "}  // namespace\n\n"
       "std::span<const std::uint32_t> checked_in_material_module_template(runtime::BasisKind "
