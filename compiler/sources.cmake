@@ -57,6 +57,7 @@ set(MATC_CORE_SOURCES
   src/compile/compile.cpp
   src/compile/basis_choice.cpp
   src/compile/f0_table.cpp
+  src/compile/film_tables.cpp
   src/emit/template.cpp
   src/emit/shader_literals.cpp
   src/emit/material_json.cpp
