@@ -27,8 +27,8 @@ bool UniqueNames::claim(const std::string& name, const std::string& path,
         fmt::format("'{}' and the material of {} ({}:{}) would both define {}", name,
                     other->second.path, other->second.line, other->second.column,
                     neighbour.identifier),
-        fmt::format("no two names within {} that differ by a '{}' in front, ignoring case (it "
-                    "is part of the generated names)",
+        fmt::format("no two names within {} that differ only by a '{}' in front (it is part "
+                    "of the generated names)",
                     scope, fmt::join(kIdentifierInfixes, "', '")));
     return false;
   }
