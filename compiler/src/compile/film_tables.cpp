@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "lut/microfacet_samples.h"
+#include "lut/split_sum_reference.h"
 
 namespace matc {
 namespace {
@@ -22,6 +23,16 @@ double roughness_coordinate(double roughness) {
   return std::sqrt(std::max(roughness - FilmTables::kMinRoughness, 0.0) /
                    (1.0 - FilmTables::kMinRoughness));
 }
+
+// The F table as a curve, what the split sums of its nodes integrate.
+class FresnelTableCurve final : public ReflectanceCurve {
+ public:
+  explicit FresnelTableCurve(const FilmTables& tables) : tables_(tables) {}
+  Rgb at(double mu) const override { return tables_.fresnel_at(mu); }
+
+ private:
+  const FilmTables& tables_;
+};
 
 }  // namespace
 
@@ -66,24 +77,14 @@ FilmTables bake_film_tables(const ReflectanceCurve& curve, std::size_t samples) 
   FilmTables tables;
   for (std::size_t i = 0; i < FilmTables::kCosineNodes; ++i)
     tables.fresnel[i] = curve.at(film_table_cosine(i));
+  const FresnelTableCurve table(tables);
   const HammersleySet set(samples);
-  std::vector<float> vdoth(samples), weight(samples);
   tables.preintegrated.reserve(FilmTables::kViewNodes * FilmTables::kRoughnessNodes);
   for (std::size_t j = 0; j < FilmTables::kRoughnessNodes; ++j) {
     for (std::size_t i = 0; i < FilmTables::kViewNodes; ++i) {
       const double ndotv = std::max(film_table_view_cosine(i), kMinIntegratedNdotV);
-      sample_microfacet_reflections(set, ndotv, film_table_roughness(j), vdoth.data(),
-                                    weight.data());
-      Rgb sum{};
-      for (std::size_t k = 0; k < samples; ++k) {
-        if (weight[k] <= 0.0f) continue;
-        const Rgb f = tables.fresnel_at(vdoth[k]);
-        for (std::size_t c = 0; c < 3; ++c)
-          sum[c] += static_cast<double>(weight[k]) * f[c];
-      }
-      for (double& value : sum)
-        value /= static_cast<double>(samples);
-      tables.preintegrated.push_back(sum);
+      tables.preintegrated.push_back(
+          SplitSumEstimator(set, ndotv, film_table_roughness(j)).integrate(table));
     }
   }
   return tables;

@@ -10,6 +10,7 @@
 #include "base/json_format.h"
 #include "emit/layer_suffix.h"
 #include "emit/library_module.h"
+#include "emit/library_module_cache.h"
 #include "emit/material_module_template.h"
 #include "emit/material_snippet.h"
 #include "matc/runtime/shader_basis.h"
@@ -96,8 +97,8 @@ std::vector<OutputFile> Build::shared_outputs() const {
   if (emit.contains(OutputKind::spirv)) {
     LibraryModuleInputs inputs = shared_library_module_inputs();
     files.push_back(
-        {inputs.name, spirv_file_bytes(compile_library_module(std::move(inputs.glsl_source),
-                                                              inputs.name, inputs.exports))});
+        {inputs.name, spirv_file_bytes(cached_or_compiled_library_module(
+                          std::move(inputs.glsl_source), inputs.name, inputs.exports))});
   }
   for (OutputFile& table : tables_.files(emit))
     files.push_back(std::move(table));

@@ -4,7 +4,6 @@
 
 #include <fmt/format.h>
 
-#include "emit/library_module_cache.h"
 #include "spirv/linkage.h"
 #include "spirv/spirv_tools.h"
 
@@ -12,14 +11,6 @@ namespace matc {
 
 SpirvWords compile_library_module(std::string glsl_source, const std::string& name,
                                   std::span<const std::string> exports) {
-  const std::span<const std::uint32_t> cached =
-      checked_in_library_module(library_module_key(glsl_source, name, exports));
-  if (!cached.empty()) return SpirvWords(cached.begin(), cached.end());
-  return compile_library_module_uncached(std::move(glsl_source), name, exports);
-}
-
-SpirvWords compile_library_module_uncached(std::string glsl_source, const std::string& name,
-                                           std::span<const std::string> exports) {
   glsl_source.insert(0, "#version 450\n");
   glsl_source.append("\nvoid main() {}\n");
   const SpirvWords compiled = compile_to_spirv({ShaderLanguage::glsl, std::move(glsl_source), name,

@@ -12,13 +12,8 @@
 
 namespace matc {
 
-// The checked-in module where one was compiled from exactly these inputs
-// (emit/library_module_cache.h), else a compile.
 SpirvWords compile_library_module(std::string glsl_source, const std::string& name,
                                   std::span<const std::string> exports);
-// Always a compile (what the cache is made of).
-SpirvWords compile_library_module_uncached(std::string glsl_source, const std::string& name,
-                                           std::span<const std::string> exports);
 
 // The words as a .spv file stores them (little-endian).
 std::string spirv_file_bytes(const SpirvWords& words);

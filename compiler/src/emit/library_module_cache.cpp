@@ -23,11 +23,19 @@ std::string library_module_key(std::string_view glsl_source, std::string_view na
   return fmt::format("{}-{}", hash_of_bytes(inputs), inputs.size());
 }
 
+SpirvWords cached_or_compiled_library_module(std::string glsl_source, const std::string& name,
+                                             std::span<const std::string> exports) {
+  const std::span<const std::uint32_t> cached =
+      checked_in_library_module(library_module_key(glsl_source, name, exports));
+  if (!cached.empty()) return SpirvWords(cached.begin(), cached.end());
+  return compile_library_module(std::move(glsl_source), name, exports);
+}
+
 std::vector<CachedLibraryModule> compile_cached_library_modules() {
   const Build build{BuildOptions{}};
   const Build::LibraryModuleInputs inputs = build.shared_library_module_inputs();
   return {{library_module_key(inputs.glsl_source, inputs.name, inputs.exports),
-           compile_library_module_uncached(inputs.glsl_source, inputs.name, inputs.exports)}};
+           compile_library_module(inputs.glsl_source, inputs.name, inputs.exports)}};
 }
 
 std::string library_module_cache_source(std::span<const CachedLibraryModule> modules) {

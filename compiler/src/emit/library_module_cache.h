@@ -24,6 +24,12 @@ std::string library_module_key(std::string_view glsl_source, std::string_view na
 // The checked-in module of this key, or an empty span.
 std::span<const std::uint32_t> checked_in_library_module(std::string_view key);
 
+// The shared library module: the checked-in one where it was compiled from exactly these inputs,
+// else compile_library_module's (the only caller that can find one: a material's module is never
+// in the cache, so its compile does not hash its source).
+SpirvWords cached_or_compiled_library_module(std::string glsl_source, const std::string& name,
+                                             std::span<const std::string> exports);
+
 struct CachedLibraryModule {
   std::string key;
   SpirvWords words;

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "lut/microfacet_samples.h"
-
 namespace matc {
 
 TabulatedCurve::TabulatedCurve(const ReflectanceCurve& curve, std::size_t count) {
@@ -25,9 +23,11 @@ Rgb TabulatedCurve::at(double mu) const {
 }
 
 SplitSumEstimator::SplitSumEstimator(double ndotv, double roughness, std::size_t samples)
-    : vdoth_(samples), weight_(samples) {
-  sample_microfacet_reflections(HammersleySet(samples), ndotv, roughness, vdoth_.data(),
-                                weight_.data());
+    : SplitSumEstimator(HammersleySet(samples), ndotv, roughness) {}
+
+SplitSumEstimator::SplitSumEstimator(const HammersleySet& set, double ndotv, double roughness)
+    : vdoth_(set.size()), weight_(set.size()) {
+  sample_microfacet_reflections(set, ndotv, roughness, vdoth_.data(), weight_.data());
 }
 
 Rgb SplitSumEstimator::integrate(const ReflectanceCurve& curve) const {

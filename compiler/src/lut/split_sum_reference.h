@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "lut/microfacet_samples.h"
 #include "optics/reflectance_curve.h"
 
 namespace matc {
@@ -28,6 +29,8 @@ class TabulatedCurve final : public ReflectanceCurve {
 class SplitSumEstimator {
  public:
   SplitSumEstimator(double ndotv, double roughness, std::size_t samples = kReferenceSamples);
+  // The same over a set of points shared by many estimators (a table's nodes).
+  SplitSumEstimator(const HammersleySet& set, double ndotv, double roughness);
   // E_h[F(V.H) G2/G1] per channel.
   Rgb integrate(const ReflectanceCurve& curve) const;
 

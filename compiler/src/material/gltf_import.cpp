@@ -330,19 +330,17 @@ class Importer {
         !number(where_field, *iridescence, "iridescenceThicknessMaximum", maximum))
       return false;
     const std::string name(kIridescence);
-    const std::string thickness_range = fmt::format(
-        "a thickness in [0, {}] nanometres (the films matc compiles)", kMaxFilmThicknessNm);
-    if (!in_range(field, name + ".iridescenceFactor", factor, 0, 1)) return false;
-    if (!(minimum >= 0 && minimum <= kMaxFilmThicknessNm)) {
-      error(field, fmt::format("{}.iridescenceThicknessMinimum is {}", name, minimum),
-            thickness_range);
+    const auto thickness_in_range = [&](const char* key, double nm) {
+      if (nm >= 0 && nm <= kMaxFilmThicknessNm) return true;
+      error(field, fmt::format("{}.{} is {}", name, key, nm),
+            fmt::format("a thickness in [0, {}] nanometres (the films matc compiles)",
+                        kMaxFilmThicknessNm));
       return false;
-    }
-    if (!(maximum >= 0 && maximum <= kMaxFilmThicknessNm)) {
-      error(field, fmt::format("{}.iridescenceThicknessMaximum is {}", name, maximum),
-            thickness_range);
+    };
+    if (!in_range(field, name + ".iridescenceFactor", factor, 0, 1) ||
+        !thickness_in_range("iridescenceThicknessMinimum", minimum) ||
+        !thickness_in_range("iridescenceThicknessMaximum", maximum))
       return false;
-    }
     if (!(ior >= 1)) {
       error(field, fmt::format("{}.iridescenceIor is {}", name, ior), "a film index of at least 1");
       return false;
