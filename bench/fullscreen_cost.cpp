@@ -141,6 +141,7 @@ int main(int argc, char** argv) {
             continue;
           case matc::CostPassResource::material_map:
           case matc::CostPassResource::environment:
+          case matc::CostPassResource::film_table:
             bindings.push_back(matc::vulkan::Binding::sampled_image(binding.binding, material_map));
             continue;
         }

@@ -58,6 +58,7 @@ set(MATC_CORE_SOURCES
   src/compile/basis_choice.cpp
   src/compile/f0_table.cpp
   src/compile/film_tables.cpp
+  src/lut/split_sum_reference.cpp
   src/emit/template.cpp
   src/emit/shader_literals.cpp
   src/emit/material_json.cpp
@@ -102,15 +103,16 @@ set(MATC_NATIVE_SOURCES
   src/base/exclusive_file.cpp
   src/base/pending_file.cpp
   src/lut/analytic_lut_fit.cpp
-  src/lut/split_sum_reference.cpp
   src/lut/comparison_lobes.cpp
   src/formats/texel_bytes.cpp
   src/formats/ktx2_writer.cpp
   src/formats/dds_writer.cpp
+  src/formats/texture_file.cpp
   src/lut/header_writer.cpp
   src/lut/layered_reference.cpp
   src/lut/lut_files.cpp
   src/lut/coefficient_table_files.cpp
+  src/lut/film_table_files.cpp
   src/lut/default_lut_hash_lookup.cpp
   src/generated/default_lut_hashes.cpp
   src/ltc/ggx_lobe.cpp

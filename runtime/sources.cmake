@@ -28,5 +28,6 @@ set(MATC_RUNTIME_SOURCES
   src/ltc_following.cpp
   src/baked_coefficients.cpp
   src/f0_table.cpp
+  src/film_table.cpp
   src/coefficient_table.cpp
   src/analytic_lut.cpp)

@@ -23,7 +23,7 @@ typedef struct MatcFresnelCoefficients {
 static const MatcFresnelCoefficients matc_coefficients_{{name}} = {
     {{red_c}},
     {{green_c}},
-    {{blue_c}}};{{coat_block}}
+    {{blue_c}}};{{coat_block}}{{film_block}}
 
 /* The preintegrated table these coefficients are sampled with. */
 #define MATC_{{name}}_LUT_FILE "{{lut_file}}"

@@ -9,6 +9,9 @@
 // 7 the prefiltered environment of the image-light pass (an octahedral map). Coated variants
 // (MATC_COST_COAT 1 ours coated, 2 ours bare under a Schlick coat lobe, 3 Filament's clear coat)
 // shade two lobes, the coat's at its own roughness, in the GGX-light and image-light passes.
+// Filmed variants (MATC_COST_FILM 1 ours from the film's table at binding 8, 2 the film's Airy
+// sum over a dielectric base of index from F0, as glTF engines shade KHR_materials_iridescence)
+// run in the GGX-light and image-light passes.
 {{defines}}
 {{library}}
 {{material}}
@@ -32,6 +35,9 @@ layout(set = 0, binding = 6) uniform texture2D map_c;
 #if MATC_COST_IMAGE_LIGHT
 layout(set = 0, binding = 7) uniform texture2D environment;
 #endif
+#if MATC_COST_FILM == 1
+layout(set = 0, binding = 8) uniform texture2D film_table;
+#endif
 layout(location = 0) out vec4 colour;
 
 const float PI = 3.14159265358979;
@@ -42,6 +48,62 @@ vec3 matc_cost_schlick(vec3 f0, float mu) {
   float m2 = m * m;
   return f0 + (vec3(1.0) - f0) * (m2 * m2 * m);
 }
+
+#if MATC_COST_FILM == 2
+// Belcour and Barla (2017), "A Practical Extension to Microfacet Theory for the Modeling of
+// Varying Iridescence", as glTF's KHR_materials_iridescence is shaded by engines (the Khronos
+// sample viewer's evalIridescence): air, a film of index n_f and thickness d, and a dielectric
+// base of index (1 + sqrt(F0)) / (1 - sqrt(F0)) per channel, Schlick's curve at each interface,
+// the first two orders of the Airy sum in Fourier space against Gaussian fits of the CIE
+// matching functions. Written here from the paper, for its cost.
+vec3 matc_cost_film_sensitivity(float path_difference_nm, vec3 shift) {
+  float phase = 6.28318530718 * path_difference_nm * 1e-9;
+  const vec3 amplitude = vec3(5.4856e-13, 4.4201e-13, 5.2481e-13);
+  const vec3 position = vec3(1.6810e+06, 1.7953e+06, 2.2084e+06);
+  const vec3 variance = vec3(4.3278e+09, 9.3046e+09, 6.6121e+09);
+  vec3 xyz = amplitude * sqrt(6.28318530718 * variance) * cos(position * phase + shift) *
+             exp(-phase * phase * variance);
+  xyz.x += 9.7470e-14 * sqrt(6.28318530718 * 4.5282e+09) * cos(2.2399e+06 * phase + shift.x) *
+           exp(-4.5282e+09 * phase * phase);
+  xyz /= 1.0685e-7;
+  const mat3 xyz_to_rec709 = mat3(3.2404542, -0.9692660, 0.0556434, -1.5371385, 1.8760108,
+                                  -0.2040259, -0.4985314, 0.0415560, 1.0572252);
+  return xyz_to_rec709 * xyz;
+}
+
+vec3 matc_cost_film_over_dielectric(vec3 f0, float cos_theta1) {
+  const float film_ior_given = {{film_ior}};
+  const float thickness = {{film_thickness}};
+  // The film's index fades to air's below 30 nm, as the engines do.
+  float film_ior = mix(1.0, film_ior_given, smoothstep(0.0, 30.0, thickness));
+  float sin_theta2_sq = (1.0 - cos_theta1 * cos_theta1) / (film_ior * film_ior);
+  float cos_theta2_sq = 1.0 - sin_theta2_sq;
+  if (cos_theta2_sq < 0.0) return vec3(1.0);
+  float cos_theta2 = sqrt(cos_theta2_sq);
+  float r0 = (film_ior - 1.0) / (film_ior + 1.0);
+  float r12 = matc_cost_schlick(vec3(r0 * r0), cos_theta1).x;
+  float t121 = 1.0 - r12;
+  float phi12 = film_ior < 1.0 ? 3.14159265359 : 0.0;
+  float phi21 = 3.14159265359 - phi12;
+  vec3 sqrt_f0 = sqrt(clamp(f0, 0.0, 0.9999));
+  vec3 base_ior = (1.0 + sqrt_f0) / (1.0 - sqrt_f0);
+  vec3 r1 = (base_ior - film_ior) / (base_ior + film_ior);
+  vec3 r23 = matc_cost_schlick(r1 * r1, cos_theta2);
+  vec3 phi23 = mix(vec3(0.0), vec3(3.14159265359), lessThan(base_ior, vec3(film_ior)));
+  float path_difference = 2.0 * film_ior * thickness * cos_theta2;
+  vec3 phi = vec3(phi21) + phi23;
+  vec3 r123_sq = clamp(r12 * r23, 1e-5, 0.9999);
+  vec3 r123 = sqrt(r123_sq);
+  vec3 rs = t121 * t121 * r23 / (vec3(1.0) - r123_sq);
+  vec3 intensity = vec3(r12) + rs;
+  vec3 cm = rs - t121;
+  for (int m = 1; m <= 2; ++m) {
+    cm *= r123;
+    intensity += cm * 2.0 * matc_cost_film_sensitivity(float(m) * path_difference, float(m) * phi);
+  }
+  return max(intensity, vec3(0.0));
+}
+#endif
 
 void main() {
   // Every pixel a different (NdotV, roughness), like the pixels of a shaded object.
@@ -110,6 +172,26 @@ void main() {
 #define COST_FRESNEL_PREINTEGRATED(TEXEL)                                                      \
   matc_metal_rough(vec3(0.04) * COST_ENGINE_DFG.x + vec3(0.96) * COST_ENGINE_DFG.y,           \
                    matc_fresnel_preintegrated(c, (TEXEL)), metalness)
+#elif MATC_COST_FILM == 1
+// A filmed metal: F and Fbar from its own table (image light at the pass' NdotV and roughness).
+#define COST_FRESNEL(MU) \
+  matc_fresnel_{{name}}(MATC_FILM_FRESNEL(sampler2D(film_table, matc_lut_sampler), (MU)))
+#define COST_FRESNEL_PREINTEGRATED(TEXEL) \
+  matc_fresnel_preintegrated_{{name}}(     \
+      MATC_FILM_PREINTEGRATED(sampler2D(film_table, matc_lut_sampler), NoV, uv.y))
+#elif MATC_COST_FILM == 2
+// The engines' iridescence: Schlick's curve mixed with the film's by the film's coverage; for
+// image light the film's F at NdotV in place of F0 in Schlick's split sum.
+#define COST_FILM_F0 vec3({{f0}})
+#define COST_FRESNEL(MU)                                             \
+  mix(matc_cost_schlick(COST_FILM_F0, (MU)),                         \
+      matc_cost_film_over_dielectric(COST_FILM_F0, (MU)), {{film_weight}})
+#define COST_FRESNEL_PREINTEGRATED(TEXEL)                                                      \
+  (mix(COST_FILM_F0, matc_cost_film_over_dielectric(COST_FILM_F0, NoV), {{film_weight}}) *   \
+       (TEXEL).x +                                                                            \
+   (vec3(1.0) - mix(COST_FILM_F0, matc_cost_film_over_dielectric(COST_FILM_F0, NoV),         \
+                    {{film_weight}})) *                                                       \
+       (TEXEL).y)
 #elif MATC_COST_TABLE || MATC_COST_BAKED || MATC_COST_FROM_F0 || MATC_COST_F0_TABLE
 #define COST_FRESNEL(MU) matc_fresnel(c, (MU))
 #define COST_FRESNEL_PREINTEGRATED(TEXEL) matc_fresnel_preintegrated(c, (TEXEL))

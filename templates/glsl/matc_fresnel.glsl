@@ -63,6 +63,24 @@ vec3 matc_dielectric_fresnel(vec3 f0, vec3 f90, float VdotH) {
   float m2 = m * m;
   return f0 + (f90 - f0) * (m2 * m2 * m);
 }
+
+// ---- Metals under a thin film: their own table (docs/thin-film.md). ----
+// A filmed metal's <name>.film.<ext>, 65 x 18 texels: row 0 F over sqrt(mu), rows 1-17 the
+// preintegrated F over sqrt(NdotV) and sqrt((roughness - 0.05) / 0.95), texel centres on the
+// nodes. Sample it as the preintegrated table (linear, clamp to edge) at these coordinates; its
+// rgb is F (or Fbar) itself.
+vec2 matc_film_fresnel_texcoord(float mu) {
+  return vec2(sqrt(clamp(mu, 0.0, 1.0)) * (64.0 / 65.0) + 0.5 / 65.0, 0.5 / 18.0);
+}
+vec2 matc_film_preintegrated_texcoord(float NdotV, float roughness) {
+  float x = sqrt(clamp(NdotV, 0.0, 1.0));
+  float y = sqrt(clamp((roughness - 0.05) * (1.0 / 0.95), 0.0, 1.0));
+  return vec2(x * (64.0 / 65.0) + 0.5 / 65.0, y * (16.0 / 18.0) + 1.5 / 18.0);
+}
+// The fetches: TABLE is a sampler2D expression (in Vulkan GLSL sampler2D(texture, sampler), which
+// must appear at its point of use, hence macros).
+#define MATC_FILM_FRESNEL(TABLE, MU) textureLod(TABLE, matc_film_fresnel_texcoord(MU), 0.0)
+#define MATC_FILM_PREINTEGRATED(TABLE, NDOTV, ROUGHNESS) textureLod(TABLE, matc_film_preintegrated_texcoord((NDOTV), (ROUGHNESS)), 0.0)
 {{coefficient_table}}
 {{area_lights}}
 {{analytic_lut}}

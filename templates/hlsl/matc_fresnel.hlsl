@@ -63,6 +63,28 @@ float3 matc_dielectric_fresnel(float3 f0, float3 f90, float VdotH) {
   float m2 = m * m;
   return f0 + (f90 - f0) * (m2 * m2 * m);
 }
+
+// ---- Metals under a thin film: their own table (docs/thin-film.md). ----
+// A filmed metal's <name>.film.<ext>, 65 x 18 texels: row 0 F over sqrt(mu), rows 1-17 the
+// preintegrated F over sqrt(NdotV) and sqrt((roughness - 0.05) / 0.95), texel centres on the
+// nodes. Sample it as the preintegrated table (linear, clamp to edge) at these coordinates; its
+// rgb is F (or Fbar) itself.
+float2 matc_film_fresnel_texcoord(float mu) {
+  return float2(sqrt(saturate(mu)) * (64.0 / 65.0) + 0.5 / 65.0, 0.5 / 18.0);
+}
+float2 matc_film_preintegrated_texcoord(float NdotV, float roughness) {
+  float x = sqrt(saturate(NdotV));
+  float y = sqrt(saturate((roughness - 0.05) * (1.0 / 0.95)));
+  return float2(x * (64.0 / 65.0) + 0.5 / 65.0, y * (16.0 / 18.0) + 1.5 / 18.0);
+}
+// The fetches from TABLE (a Texture2D) through SAMPLER (a SamplerState).
+float4 matc_film_fresnel(Texture2D<float4> table, SamplerState table_sampler, float mu) {
+  return table.SampleLevel(table_sampler, matc_film_fresnel_texcoord(mu), 0.0);
+}
+float4 matc_film_preintegrated(Texture2D<float4> table, SamplerState table_sampler, float NdotV,
+                               float roughness) {
+  return table.SampleLevel(table_sampler, matc_film_preintegrated_texcoord(NdotV, roughness), 0.0);
+}
 {{coefficient_table}}
 {{area_lights}}
 {{analytic_lut}}

@@ -63,6 +63,29 @@ fn matc_dielectric_fresnel(f0: vec3f, f90: vec3f, VdotH: f32) -> vec3f {
   let m2 = m * m;
   return f0 + (f90 - f0) * (m2 * m2 * m);
 }
+
+// ---- Metals under a thin film: their own table (docs/thin-film.md). ----
+// A filmed metal's <name>.film.<ext>, 65 x 18 texels: row 0 F over sqrt(mu), rows 1-17 the
+// preintegrated F over sqrt(NdotV) and sqrt((roughness - 0.05) / 0.95), texel centres on the
+// nodes. Sample it as the preintegrated table (linear, clamp to edge) at these coordinates; its
+// rgb is F (or Fbar) itself. An rgba32float table needs the device feature "float32-filterable".
+fn matc_film_fresnel_texcoord(mu: f32) -> vec2f {
+  return vec2f(sqrt(clamp(mu, 0.0, 1.0)) * (64.0 / 65.0) + 0.5 / 65.0, 0.5 / 18.0);
+}
+fn matc_film_preintegrated_texcoord(NdotV: f32, roughness: f32) -> vec2f {
+  let x = sqrt(clamp(NdotV, 0.0, 1.0));
+  let y = sqrt(clamp((roughness - 0.05) * (1.0 / 0.95), 0.0, 1.0));
+  return vec2f(x * (64.0 / 65.0) + 0.5 / 65.0, y * (16.0 / 18.0) + 1.5 / 18.0);
+}
+// The fetches (GLSL's MATC_FILM_FRESNEL and MATC_FILM_PREINTEGRATED).
+fn matc_film_fresnel(table: texture_2d<f32>, table_sampler: sampler, mu: f32) -> vec4f {
+  return textureSampleLevel(table, table_sampler, matc_film_fresnel_texcoord(mu), 0.0);
+}
+fn matc_film_preintegrated(table: texture_2d<f32>, table_sampler: sampler, NdotV: f32,
+                           roughness: f32) -> vec4f {
+  return textureSampleLevel(table, table_sampler, matc_film_preintegrated_texcoord(NdotV, roughness),
+                            0.0);
+}
 {{coefficient_table}}
 {{area_lights}}
 {{analytic_lut}}

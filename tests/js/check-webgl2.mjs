@@ -88,6 +88,12 @@ try {
       gl.uniform1i(gl.getUniformLocation(program, "matc_coefficient_table"), 2);
       for (const [name, value] of Object.entries(material.uniforms || {}))
         gl.uniform3fv(gl.getUniformLocation(program, name), value);
+      // A filmed metal's own table (65 x 18 RGBA32F, linear filtering) on unit 4.
+      if (material.film) {
+        texture(4, 65, 18, floats(material.film), gl.LINEAR);
+        gl.uniform1i(gl.getUniformLocation(program, "matc_film"), 4);
+        gl.activeTexture(gl.TEXTURE0);
+      }
       gl.drawArrays(gl.TRIANGLES, 0, 3);
       const pixels = new Float32Array(count * 3 * 4);
       gl.readPixels(0, 0, count, 3, gl.RGBA, gl.FLOAT, pixels);
@@ -158,6 +164,22 @@ void main() {
 }
 `;
 
+// The same for filmed material `name` through its own table (docs/thin-film.md): row 0 F(mu),
+// rows 1 and 2 Fbar(NdotV, roughness), both fetched from the table (it has no closed form).
+const filmMain = (name) => `
+uniform sampler2D matc_film;
+uniform sampler2D matc_queries;
+out vec4 matc_result;
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 query = texelFetch(matc_queries, ivec2(pixel.x, 0), 0);  // mu, NdotV, roughness
+  vec3 value = pixel.y == 0
+      ? matc_fresnel_${name}(MATC_FILM_FRESNEL(matc_film, query.x))
+      : matc_fresnel_preintegrated_${name}(MATC_FILM_PREINTEGRATED(matc_film, query.y, query.z));
+  matc_result = vec4(value, 1.0);
+}
+`;
+
 const dir = mkdtempSync(join(tmpdir(), "matc-webgl2-"));
 try {
   const queries = validationQueries();
@@ -166,10 +188,14 @@ try {
       ["--lut-precision", "f32", "--coefficient-table-precision", "f32", ...basisOptions], queries);
   const layers = JSON.parse(readFileSync(join(dir, "out", "matc_lut.bin.json"), "utf8")).layers;
   const suffix = (basis) => (layers && basis !== layers[0].basis ? `_${basis}` : "");
-  const cases = materials.map((m) => ({
+  const cases = materials.map((m) => m.filmed ? {
+    // Sampled: the table's tolerance; rows 1 and 2 both Fbar.
+    name: m.name, F: m.F, Fbar: m.Fbar, FbarAnalytic: m.Fbar, tolerance: kPreintegratedTolerance,
+    film: readFileSync(join(dir, "out", `${m.name}.film.bin`)).toString("base64"),
+    source: m.snippet + filmMain(m.name) } : {
     name: m.name, F: m.F, Fbar: m.Fbar, FbarAnalytic: m.FbarAnalytic, tolerance: kFresnelTolerance,
     source: m.snippet + (m.coated ? coatedMain(m.name)
-                                  : main(`matc_coefficients_${m.name}`, suffix(m.basis))) }));
+                                  : main(`matc_coefficients_${m.name}`, suffix(m.basis))) });
   const bases = new Set(materials.map((m) => m.basis));
   if (basisOptions.length) {
     check(bases.size === 1 && !layers, `--basis ${basisOptions[1]} gave bases ${[...bases]}`);
@@ -186,7 +212,7 @@ try {
   const table = readFileSync(join(dir, "out", "matc_coefficient_table.bin"));
   const data = {
     prelude: kPrelude, library, queries: Array.from(queries.flat),
-    cases: cases.map(({ name, source, uniforms }) => ({ name, source, uniforms })),
+    cases: cases.map(({ name, source, uniforms, film }) => ({ name, source, uniforms, film })),
     lut: lut.toString("base64"), lutHeight: Math.round(Math.sqrt(lut.length / 16 / (layers?.length ?? 1))),
     lutWidth: Math.round(Math.sqrt(lut.length / 16 / (layers?.length ?? 1))) * (layers?.length ?? 1),
     table: table.toString("base64"), tableSize: Math.round(Math.sqrt(table.length / 8)),

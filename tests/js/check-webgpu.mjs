@@ -41,6 +41,7 @@ const kBindings = `
 @group(0) @binding(3) var matc_coefficient_table: texture_2d<f32>;
 @group(0) @binding(4) var matc_ltc: texture_2d<f32>;
 @group(0) @binding(5) var matc_linear: sampler;
+@group(0) @binding(6) var matc_film: texture_2d<f32>;
 `;
 
 // A compute kernel over the queries (mu, NdotV, roughness each): `body` runs for query i.
@@ -77,6 +78,12 @@ const coatedKernel = (name) => perQueryKernel(`  let bbar = textureSampleLevel(m
                                     matc_coat_fresnel_preintegrated_${name}(coat_bbar), 1.0);
   matc_results[3u * i + 2u] = vec4f(matc_fresnel_preintegrated_${name}(analytic, coat_analytic, query.y) +
                                     matc_coat_fresnel_preintegrated_${name}(coat_analytic), 1.0);`);
+
+// Two results per query for filmed material `name` (docs/thin-film.md): F(mu) and Fbar(NdotV,
+// roughness) from its own table, bound at binding 6.
+const filmKernel = (name) => perQueryKernel(`  matc_results[2u * i] = vec4f(matc_fresnel_${name}(matc_film_fresnel(matc_film, matc_linear, query.x)), 1.0);
+  matc_results[2u * i + 1u] = vec4f(matc_fresnel_preintegrated_${name}(
+                                        matc_film_preintegrated(matc_film, matc_linear, query.y, query.z)), 1.0);`);
 
 // One result per query: a quad light of radiance 1 seen from the origin (`light` names the
 // one-shape function or the quality level's, which also takes the roughness).
@@ -121,13 +128,25 @@ try {
   const textures = [texture("matc_lut.bin", "rgba16float", 8),
                     texture("matc_coefficient_table.bin", "rg16float", 4),
                     texture("matc_ltc.bin", "rgba32float", 16)];
+  // A filmed metal's table (65 x 18), bound at binding 6; other kernels see a placeholder.
+  const filmTexture = (name, directory = out) => {
+    const bytes = readFileSync(join(directory, `${name}.film.bin`));
+    const t = device.createTexture({ size: [65, 18], format: "rgba16float",
+                                     usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
+    check(bytes.length === 65 * 18 * 8, `${name}.film.bin holds 65 x 18 RGBA16F texels`);
+    device.queue.writeTexture({ texture: t }, bytes, { bytesPerRow: 65 * 8 }, [65, 18]);
+    return t;
+  };
+  const placeholder = device.createTexture({ size: [1, 1], format: "rgba16float",
+                                             usage: GPUTextureUsage.TEXTURE_BINDING });
+  let film = placeholder;
   const sampler = device.createSampler({ magFilter: "linear", minFilter: "linear",
                                          addressModeU: "clamp-to-edge", addressModeV: "clamp-to-edge" });
   const layout = device.createBindGroupLayout({ entries: [
     { binding: 0, visibility: GPUShaderStage.COMPUTE, buffer: { type: "read-only-storage" } },
     { binding: 1, visibility: GPUShaderStage.COMPUTE, buffer: { type: "storage" } },
-    ...[2, 3, 4].map((binding) => ({ binding, visibility: GPUShaderStage.COMPUTE,
-                                     texture: { sampleType: "float" } })),
+    ...[2, 3, 4, 6].map((binding) => ({ binding, visibility: GPUShaderStage.COMPUTE,
+                                        texture: { sampleType: "float" } })),
     { binding: 5, visibility: GPUShaderStage.COMPUTE, sampler: { type: "filtering" } },
   ] });
 
@@ -149,7 +168,7 @@ try {
     const group = device.createBindGroup({ layout, entries: [
       { binding: 0, resource: { buffer: input } }, { binding: 1, resource: { buffer: output } },
       ...textures.map((t, k) => ({ binding: 2 + k, resource: t.createView() })),
-      { binding: 5, resource: sampler }] });
+      { binding: 5, resource: sampler }, { binding: 6, resource: film.createView() }] });
     const encoder = device.createCommandEncoder();
     const pass = encoder.beginComputePass();
     pass.setPipeline(pipeline);
@@ -177,8 +196,22 @@ try {
     }
   };
 
+  // A filmed metal through its own table: F and Fbar both sampled, hence the table's tolerance.
+  const checkFilmed = async (built, material, directory, label) => {
+    film = filmTexture(material.name, directory);
+    try {
+      const values = await dispatch(built.library + material.snippet + filmKernel(material.name),
+                                    queries.flat, 2);
+      report(label, [["F", largestDifference(values, material.F, 8, 0)],
+                     ["Fbar", largestDifference(values, material.Fbar, 8, 4)]],
+             { F: kPreintegratedTolerance, Fbar: kPreintegratedTolerance });
+    } finally {
+      film = placeholder;
+    }
+  };
   for (const material of cases.materials) {
     await attempt(material.name, async () => {
+      if (material.filmed) return checkFilmed(cases, material, out, `${material.name} (film table)`);
       const kernel = material.coated ? coatedKernel(material.name)
                                      : fresnelKernel(`matc_coefficients_${material.name}`);
       const values = await dispatch(cases.library + material.snippet + kernel, queries.flat, 3);
@@ -328,6 +361,10 @@ fn main(@builtin(global_invocation_id) id: vec3u) {
     textures[0] = texture("matc_lut.bin", "rgba16float", 8, autoOut, layers.length);
     const suffix = (basis) => (basis === layers[0].basis ? "" : `_${basis}`);
     for (const material of auto.materials.filter((m) => !m.coated)) {
+      if (material.filmed) {
+        await checkFilmed(auto, material, autoOut, `${material.name} (default build, film table)`);
+        continue;
+      }
       const values = await dispatch(
         auto.library + material.snippet +
           fresnelKernel(`matc_coefficients_${material.name}`, suffix(material.basis)),

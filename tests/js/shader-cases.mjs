@@ -62,9 +62,11 @@ export function compileAndEvaluate(matc, materialsDir, out, language, options, q
     "--ndotv", list(queries.ndotv), "--roughness", list(queries.roughness)]));
   const materials = files.map((file) => {
     const evaluated = evaluate([file]);
-    // A coated material's F and Fbar are its two lobes' sum (docs/coating.md).
+    // A coated material's F and Fbar are its two lobes' sum (docs/coating.md); a filmed one's
+    // come from its own table, <name>.film.<ext> (docs/thin-film.md), and it has no closed form.
     return { name: evaluated.name, basis: evaluated.basis, F: evaluated.F, Fbar: evaluated.Fbar,
              FbarAnalytic: evaluated.Fbar_analytic, coated: "coat" in evaluated,
+             filmed: "film_table" in evaluated,
              snippet: readFileSync(join(out, `${evaluated.name}.${language}`), "utf8") };
   });
   const textured = kTexturedMetals.map(([reflectivity, edgeTint]) => {

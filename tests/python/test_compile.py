@@ -127,3 +127,15 @@ def test_a_film_changes_the_exact_curve_and_none_is_the_bare_metal():
     f0 = filmed.exact([1.0])[0]
     assert f0[2] > 2 * f0[0] and f0[2] > 2 * f0[1]
     assert filmed.ior is None
+
+
+def test_a_thick_film_is_evaluated_through_its_own_table():
+    # 300 nm oscillates with the angle: the 4-term fit misses it, the film's table
+    # (docs/thin-film.md) is what fresnel() and fbar() read.
+    filmed = matc.compile({"name": "ti", "spectral": {"preset": "Ti"},
+                           "film": {"ior": 2.3, "thickness": 300}})
+    mu = np.linspace(0.05, 1.0, 96)
+    assert np.max(np.abs(filmed.fresnel(mu) - filmed.exact(mu))) < 0.004
+    assert np.max(filmed.accuracy["max_error"]) < 0.004
+    fbar = filmed.fbar([0.5, 0.9], [0.3, 0.6])
+    assert fbar.shape == (2, 3) and np.all((fbar > 0) & (fbar < 1))

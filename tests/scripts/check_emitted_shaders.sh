@@ -31,8 +31,17 @@ for snippet in *.glsl; do
   name=${snippet%.glsl}
   # A coated material's (docs/coating.md) preintegrated base takes the coat's texel and NdotV
   # too, and it has the coat lobe's function beside it.
+  glsl_f="matc_fresnel_$name(values[i].x)"
+  hlsl_f="matc_fresnel_$name(v.x)"
   glsl_fbar="matc_fresnel_preintegrated_$name(bbar)"
   hlsl_fbar="matc_fresnel_preintegrated_$name(bbar)"
+  # A filmed metal's (docs/thin-film.md) take its own table's texels.
+  if grep -q "film_texel" "$snippet"; then
+    glsl_f="matc_fresnel_$name(MATC_FILM_FRESNEL(matc_film, values[i].x))"
+    hlsl_f="matc_fresnel_$name(matc_film_fresnel(matc_film, matc_lut_sampler, v.x))"
+    glsl_fbar="matc_fresnel_preintegrated_$name(MATC_FILM_PREINTEGRATED(matc_film, values[i].y, values[i].z))"
+    hlsl_fbar="matc_fresnel_preintegrated_$name(matc_film_preintegrated(matc_film, matc_lut_sampler, v.y, v.z))"
+  fi
   if grep -q "matc_coat_fresnel_$name" "$snippet"; then
     glsl_fbar="(matc_fresnel_preintegrated_$name(bbar, bbar, values[i].y) + matc_coat_fresnel_$name(values[i].x))"
     hlsl_fbar="(matc_fresnel_preintegrated_$name(bbar, bbar, v.y) + matc_coat_fresnel_$name(v.x))"
@@ -45,10 +54,11 @@ for snippet in *.glsl; do
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) buffer Data { vec4 values[]; };
 layout(binding = 1) uniform sampler2D matc_lut;
+layout(binding = 2) uniform sampler2D matc_film;
 void main() {
   uint i = gl_GlobalInvocationID.x;
   vec4 bbar = texture(matc_lut, matc_lut_texcoord(values[i].y, values[i].z));
-  values[i] = vec4(matc_fresnel_$name(values[i].x) + $glsl_fbar *
+  values[i] = vec4($glsl_f + $glsl_fbar *
                    matc_energy_compensation(matc_coefficients_$name, bbar) +
                    matc_preintegrated_basis_embedded(values[i].y, values[i].z).xyz, 1.0);
 }
@@ -62,6 +72,7 @@ GLSL
     -e 's/gl_GlobalInvocationID.x/0u/' -e 's/values\[i\]/gl_FragCoord/g' \
     -e 's/^  gl_FragCoord = vec4/  matc_colour = vec4/' "$work/$name.comp" |
     sed -e '/^layout(binding = 1)/c uniform sampler2D matc_lut;\nout vec4 matc_colour;' \
+      -e '/^layout(binding = 2)/c uniform sampler2D matc_film;' \
       >"$work/$name.frag"
   check "$name.glsl (GLSL 330)" glslangValidator "$work/$name.frag"
 
@@ -72,11 +83,12 @@ GLSL
 RWStructuredBuffer<float4> values : register(u0);
 Texture2D<float4> matc_lut : register(t1);
 SamplerState matc_lut_sampler : register(s2);
+Texture2D<float4> matc_film : register(t3);
 [numthreads(64, 1, 1)]
 void main(uint3 id : SV_DispatchThreadID) {
   float4 v = values[id.x];
   float4 bbar = matc_lut.SampleLevel(matc_lut_sampler, matc_lut_texcoord(v.y, v.z), 0.0);
-  values[id.x] = float4(matc_fresnel_$name(v.x) + $hlsl_fbar *
+  values[id.x] = float4($hlsl_f + $hlsl_fbar *
                         matc_energy_compensation(matc_coefficients_$name, bbar) +
                         matc_preintegrated_basis_embedded(v.y, v.z).xyz, 1.0);
 }

@@ -18,6 +18,7 @@
 #include "lut/preintegrate.h"
 #include "matc/api/tables.h"
 #include "matc/runtime/coat.h"
+#include "matc/runtime/film_table.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/lut.h"
 #include "matc/runtime/shader_basis.h"
@@ -60,7 +61,7 @@ void check_rgb_size(std::span<double> rgb, std::size_t count) {
 }
 
 // Fbar at each pair from `table` into rgb, as the shaders fetch it (a coated material's lobes
-// summed).
+// summed; a filmed one's from its own tables, whatever the table).
 void fbar_from_table(const matc::CompiledMaterial& compiled, std::span<const double> ndotv,
                      std::span<const double> roughness, const runtime::LutView& table,
                      std::span<double> rgb) {
@@ -68,7 +69,9 @@ void fbar_from_table(const matc::CompiledMaterial& compiled, std::span<const dou
   check_rgb_size(rgb, ndotv.size());
   for (std::size_t i = 0; i < ndotv.size(); ++i) {
     const Rgb value =
-        compiled.coat
+        compiled.film_table
+            ? runtime::film_preintegrated(*compiled.film_table, ndotv[i], roughness[i])
+        : compiled.coat
             ? runtime::evaluate_coated_fbar(compiled.coefficients, compiled.coat->coefficients,
                                             table, ndotv[i], roughness[i])
                   .total()
@@ -150,8 +153,10 @@ std::string CompiledMaterial::json() const {
 
 Accuracy CompiledMaterial::accuracy() const {
   const FitAccuracy& fit = value_->accuracy;
-  return {fit.samples,     fit.decomposition.max_abs, fit.decomposition.rms, fit.schlick.max_abs,
-          fit.schlick.rms, fit.f82_tint.max_abs,      fit.f82_tint.rms};
+  // What the shaders compute: a filmed metal's tables, else the decomposition.
+  const ErrorStats& ours = shader_fresnel_error(*value_);
+  return {fit.samples,     ours.max_abs,         ours.rms,        fit.schlick.max_abs,
+          fit.schlick.rms, fit.f82_tint.max_abs, fit.f82_tint.rms};
 }
 
 std::optional<Coat> CompiledMaterial::coat() const {
@@ -181,6 +186,14 @@ void CompiledMaterial::fresnel(std::span<const double> mu, std::span<double> rgb
       const Rgb value = runtime::evaluate_coated_fresnel(value_->coefficients, coat->coefficients,
                                                          shader_basis, mu[i])
                             .total();
+      for (std::size_t c = 0; c < 3; ++c)
+        rgb[3 * i + c] = value[c];
+    }
+    return;
+  }
+  if (const auto& film = value_->film_table) {
+    for (std::size_t i = 0; i < mu.size(); ++i) {
+      const Rgb value = runtime::film_fresnel(*film, mu[i]);
       for (std::size_t c = 0; c < 3; ++c)
         rgb[3 * i + c] = value[c];
     }

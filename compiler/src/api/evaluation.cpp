@@ -20,10 +20,12 @@
 #include "ltc/polygon_light.h"
 #include "lut/coefficient_table_files.h"
 #include "lut/comparison_lobes.h"
+#include "lut/film_table_files.h"
 #include "lut/lut_files.h"
 #include "lut/split_sum_reference.h"
 #include "matc/runtime/analytic_lut.h"
 #include "matc/runtime/coefficient_table.h"
+#include "matc/runtime/film_table.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/ltc_following.h"
 #include "matc/runtime/lut.h"
@@ -182,10 +184,62 @@ void add_quad_light_description(const EvaluationInputs& options, const std::vect
   if (options.reference) out["quad_light"]["reference_samples"] = options.light_samples;
 }
 
+// A filmed metal (docs/thin-film.md): F and Fbar from its tables as its shader functions read
+// them, beside the exact curve and the split sum of it.
+void add_filmed(const EvaluationInputs& options, const CompiledMaterial& compiled,
+                ordered_json& out) {
+  if (options.quad) {
+    throw std::invalid_argument(
+        "quad_light: a filmed metal's area lights are not compiled yet (its image light and "
+        "direct lights are); evaluate without a quad light");
+  }
+  // The table as a file of the table's precision stores it, what a renderer samples.
+  const runtime::FilmTable table = stored_as(*compiled.film_table, options.precision);
+  const auto curve = make_reflectance_curve(compiled.material, compiled.color);
+  out["film_table"] = {{"size", {runtime::FilmTable::kWidth, runtime::FilmTable::kHeight}},
+                       {"precision", lut_precision_name(options.precision)}};
+  if (!options.mu.empty()) {
+    out["mu"] = options.mu;
+    ordered_json ours = ordered_json::array(), exact = ordered_json::array();
+    for (const double mu : options.mu) {
+      ours.push_back(runtime::film_fresnel(table, mu));
+      exact.push_back(curve->at(mu));
+    }
+    out["F"] = std::move(ours);
+    out["F_exact"] = std::move(exact);
+  }
+  if (!options.ndotv.empty()) {
+    out["ndotv"] = options.ndotv;
+    out["roughness"] = options.roughness;
+    ordered_json fbar = ordered_json::array();
+    for (std::size_t i = 0; i < options.ndotv.size(); ++i)
+      fbar.push_back(runtime::film_preintegrated(table, options.ndotv[i], options.roughness[i]));
+    out["Fbar"] = std::move(fbar);
+    if (options.reference) {
+      const TabulatedCurve tabulated(*curve);
+      ordered_json reference = ordered_json::array();
+      for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
+        reference.push_back(
+            SplitSumEstimator(options.ndotv[i], options.roughness[i]).integrate(tabulated));
+      }
+      out["Fbar_reference"] = std::move(reference);
+    }
+  }
+  if (options.metalness) add_metal_rough(options, filmed_metal_lobes(table), out);
+}
+
 // A bare metal's F, Fbar and quad light.
 std::string evaluate_bare(const EvaluationInputs& options, const Material& material) {
   const runtime::BasisView basis = runtime::shipped_basis(options.basis);
   const ColorOptions color = options.color;
+  if (has_visible_film(material)) {
+    ordered_json out;
+    out["name"] = material.name;
+    out["basis"] = runtime::basis_name(basis.kind);
+    out["color_space"] = color_space_name(color.working_space);
+    add_filmed(options, compile_material(material, basis, color), out);
+    return format_json(out);
+  }
   if (material.coat) {
     ordered_json out;
     out["name"] = material.name;

@@ -67,6 +67,9 @@ struct MetalRoughLobes {
 MetalRoughLobes bare_metal_lobes(const runtime::Coefficients& coefficients,
                                  runtime::BasisKind basis, const Lut& lut);
 
+// A filmed metal's lobe: its tables (runtime/film_table.h; kept alive by the caller).
+MetalRoughLobes filmed_metal_lobes(const runtime::FilmTable& table);
+
 // glTF's metal-rough model at `inputs.metalness` (docs/gltf.md): F and Fbar of the metal mixed
 // with glTF's default dielectric (F0 0.04, F90 1; Schlick's curve, its split sum from a table
 // baked like matc's), as matc_metal_rough and matc_dielectric_fresnel compute them (under a coat,

@@ -34,6 +34,17 @@ MetalRoughLobes bare_metal_lobes(const runtime::Coefficients& coefficients,
   };
 }
 
+MetalRoughLobes filmed_metal_lobes(const runtime::FilmTable& table) {
+  return {
+      .fresnel = [&table](double mu) -> runtime::CoatedFresnel {
+        return {.base = runtime::film_fresnel(table, mu)};
+      },
+      .fbar = [&table](double ndotv, double roughness) -> runtime::CoatedFresnel {
+        return {.base = runtime::film_preintegrated(table, ndotv, roughness)};
+      },
+  };
+}
+
 void add_metal_rough(const EvaluationInputs& inputs, const MetalRoughLobes& metal,
                      ordered_json& out) {
   const double metalness = *inputs.metalness;

@@ -7,6 +7,7 @@
 
 #include <fmt/core.h>
 
+#include "compile/film_tables.h"
 #include "fit/coefficients.h"
 #include "fit/nonnegative_curve.h"
 #include "lut/energy.h"
@@ -52,11 +53,6 @@ ThinFilm thin_film_of(const FilmInput& film) {
   return {film.ior, film.thickness_nm, film.weight};
 }
 
-// A film of 0 nm, or of no coverage, is the bare metal: its curve, bit for bit.
-bool has_visible_film(const Material& material) {
-  return material.film && material.film->thickness_nm > 0.0 && material.film->weight > 0.0;
-}
-
 // `curve` with `color`'s gamut mapping applied. `sampled` is the same curve, cached where the
 // caller has a cache, to find how far to map; `saturation` gets what the mapping kept (1:
 // unchanged).
@@ -75,6 +71,11 @@ std::unique_ptr<ReflectanceCurve> apply_gamut_mapping(std::unique_ptr<Reflectanc
 }
 
 }  // namespace
+
+// Its curve is then the bare metal's, bit for bit.
+bool has_visible_film(const Material& material) {
+  return material.film && material.film->thickness_nm > 0.0 && material.film->weight > 0.0;
+}
 
 ColorSpace input_color_space(const Material& material, ColorSpace working_space) {
   return material.color_space.value_or(working_space);
@@ -197,6 +198,29 @@ CompiledCoat compile_coat(const Material& material, const runtime::Coefficients&
 
 }  // namespace
 
+namespace {
+
+// The film table's F against `curve` at the accuracy grid's cosines.
+ErrorStats measure_film_table(const ReflectanceCurve& curve, const runtime::FilmTable& table) {
+  ErrorStats stats;
+  Rgb squares{};
+  for (std::size_t j = 0; j < kAccuracySamples; ++j) {
+    const double mu = static_cast<double>(j) / static_cast<double>(kAccuracySamples - 1);
+    const Rgb exact = curve.at(mu);
+    const Rgb ours = runtime::film_fresnel(table, mu);
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double error = std::abs(ours[c] - exact[c]);
+      stats.max_abs[c] = std::max(stats.max_abs[c], error);
+      squares[c] += error * error;
+    }
+  }
+  for (std::size_t c = 0; c < 3; ++c)
+    stats.rms[c] = std::sqrt(squares[c] / static_cast<double>(kAccuracySamples));
+  return stats;
+}
+
+}  // namespace
+
 static_assert((kAccuracySamples - 1) % (kMinimaxCosines - 1) == 0,
               "the minimax solve's cosines must lie on the accuracy grid AccuracyGridCurve caches");
 
@@ -241,7 +265,15 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
     compiled.coat =
         compile_coat(material, compiled.coefficients, curve, basis, color.working_space);
   }
+  if (has_visible_film(material)) {
+    compiled.film_table = bake_film_table(curve);
+    compiled.film_table_error = measure_film_table(curve, *compiled.film_table);
+  }
   return compiled;
+}
+
+const ErrorStats& shader_fresnel_error(const CompiledMaterial& compiled) {
+  return compiled.film_table ? compiled.film_table_error : compiled.accuracy.decomposition;
 }
 
 }  // namespace matc
@@ -251,6 +283,8 @@ namespace matc {
 void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics) {
   // A coated material is judged whole (docs/coating.md): under a full coat its bare curve, which
   // a high-reflectivity, low-edge-tint metal makes hard to fit, is never seen.
+  // A filmed metal's shaders read its table, which holds the film within 0.003 (FilmTables.*).
+  if (compiled.film_table) return;
   const FitAccuracy& accuracy = compiled.coat ? compiled.coat->layered_accuracy : compiled.accuracy;
   const auto worst = [](const ErrorStats& stats) {
     return *std::max_element(stats.max_abs.begin(), stats.max_abs.end());
@@ -261,12 +295,7 @@ void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics
   const double f82 = worst(accuracy.f82_tint);
   std::string advice;
   const bool f82_material = std::holds_alternative<F82TintInput>(compiled.material.model);
-  if (has_visible_film(compiled.material)) {
-    advice =
-        "a film's interference makes F oscillate with angle, which the 4-term basis holds for "
-        "films up to about 50 nm (docs/accuracy.md, \"Thin films over metals\"): a thinner film "
-        "fits; the F the shaders compute is the fit's";
-  } else if (std::holds_alternative<ArtisticInput>(compiled.material.model)) {
+  if (std::holds_alternative<ArtisticInput>(compiled.material.model)) {
     advice =
         "high reflectivity with a low edge tint makes curves like a high-index dielectric's, which "
         "no 4-term basis follows: lower the reflectivity or raise the edge tint, or give the "
@@ -280,13 +309,11 @@ void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics
   } else {
     advice = "check the input values; curves this far from measured metals fit poorly";
   }
-  if (!f82_material && !has_visible_film(compiled.material) && (f82 < ours || schlick < ours)) {
+  if (!f82_material && (f82 < ours || schlick < ours)) {
     advice += fmt::format("; for this curve {} is closer", f82 <= schlick ? "F82-tint" : "Schlick");
   }
   diagnostics.warning(
-      compiled.material.name_location,
-      has_visible_film(compiled.material) ? std::string("film")
-                                          : std::string(model_key(compiled.material.model)),
+      compiled.material.name_location, std::string(model_key(compiled.material.model)),
       fmt::format("poor fit{}: max |F - exact| = {:.3f} (Schlick {:.3f}, F82-tint {:.3f}; the "
                   "measured metals stay under 0.02)",
                   compiled.coat ? " of the coated surface" : "", ours, schlick, f82),

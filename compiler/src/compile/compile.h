@@ -9,6 +9,7 @@
 #include "fit/accuracy.h"
 #include "matc/runtime/basis.h"
 #include "matc/runtime/coat.h"
+#include "matc/runtime/film_table.h"
 #include "matc/runtime/fresnel.h"
 #include "material/material.h"
 #include "optics/gamut.h"
@@ -65,7 +66,19 @@ struct CompiledMaterial {
   // material's own shader functions leave out the clamp at 0.
   bool fresnel_nonnegative = false;
   std::optional<CompiledCoat> coat;  // from the material's `coat` block
+  // A filmed metal's own tables (runtime/film_table.h): what its shader functions read for F and
+  // Fbar, the 4-term fit not holding a film's interference. Its coefficients still give F0 (energy
+  // compensation) and the glTF extension's. Absent without a visible film.
+  std::optional<runtime::FilmTable> film_table;
+  ErrorStats film_table_error;  // the table's F against the exact curve, on the accuracy grid
 };
+
+// Whether a material's film shows: a film of 0 nm, or of no coverage, is the bare metal.
+bool has_visible_film(const Material& material);
+
+// What the shader functions of a compiled material compute, against its exact curve: the film
+// table's, or else the decomposition's.
+const ErrorStats& shader_fresnel_error(const CompiledMaterial& compiled);
 
 // The space a material's RGB values are in: its own color_space, or else the working space.
 ColorSpace input_color_space(const Material& material, ColorSpace working_space);

@@ -13,6 +13,7 @@
 #include "emit/library_module_cache.h"
 #include "emit/material_module_template.h"
 #include "emit/material_snippet.h"
+#include "lut/film_table_files.h"
 #include "matc/runtime/shader_basis.h"
 #include "matc/version.h"
 #include "material/parse.h"
@@ -122,9 +123,11 @@ SpirvWords Build::material_library_module(const CompiledMaterial& compiled,
                                           std::string_view inputs_hash) const {
   // The template was compiled for the default table size (MATC_LUT_SIZE is in the module) and
   // no embedded table; it is empty in a bootstrap build.
+  // A filmed metal's functions read its table: no coefficient and no clamp in its module.
+  const bool filmed = compiled.film_table.has_value();
   const std::span<const std::uint32_t> template_words = checked_in_material_module_template(
-      compiled.basis, compiled.fresnel_nonnegative, options_.per_material_basis);
-  // The checked-in template is an uncoated material's module; a coated one is compiled.
+      compiled.basis, compiled.fresnel_nonnegative && !filmed, options_.per_material_basis, filmed);
+  // The checked-in templates are bare and filmed materials' modules; a coated one is compiled.
   if (options_.lut.size == kDefaultLutSize && tables_.embedded_luts().empty() &&
       !template_words.empty() && !compiled.coat)
     return patch_material_module(template_words, compiled);
@@ -175,6 +178,12 @@ MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const 
   if (emit.contains(OutputKind::json)) {
     out.files.push_back({material_file_name(OutputKind::json, name),
                          texts_.material_json(compiled, out.inputs_hash)});
+  }
+  // A filmed metal's own table goes with the tables, in their format and precision.
+  if (compiled.film_table && emit.contains(OutputKind::lut)) {
+    out.files.push_back({film_table_file_name(name, options_.lut_format),
+                         encode_film_table(*compiled.film_table, options_.lut_format,
+                                           options_.lut_precision, name)});
   }
   return out;
 }

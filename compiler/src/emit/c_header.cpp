@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "emit/material_snippet.h"
+#include "lut/film_table_files.h"
 
 namespace matc {
 namespace {
@@ -29,6 +30,28 @@ std::string coat_block(const CompiledMaterial& compiled) {
       compiled.material.name, c_float_literal(c.weight), compiled.material.name,
       c_float_literal(c.roughness), compiled.material.name, c_float_literal(c.ior),
       compiled.material.name, float_list(c.color, true));
+}
+
+// A filmed metal's table (runtime/film_table.h), which its functions read instead of the
+// coefficients; nothing for a metal without a film.
+std::string film_block(const CompiledMaterial& compiled, LutPrecision precision) {
+  if (!compiled.film_table) return "";
+  const std::vector<float> texels =
+      runtime::film_table_texels(stored_as(*compiled.film_table, precision));
+  std::string rows;
+  for (std::size_t i = 0; i < texels.size(); ++i) {
+    rows.append(i % 8 == 0 ? "    " : " ");
+    rows.append(c_float_literal(texels[i]) + ",");
+    if (i % 8 == 7 && i + 1 < texels.size()) rows.append("\n");
+  }
+  return fmt::format(
+      "\n\n/* Under a thin film (docs/thin-film.md): F and Fbar come from the film's own table, "
+      "the texels\n * of {0}.film.<ext> ({1} x {2} RGBA, row after row; upload it as that "
+      "texture). The\n * coefficients above are the 4-term fit's, for F0. */\n"
+      "#define MATC_{0}_FILM_TABLE_WIDTH {1}\n#define MATC_{0}_FILM_TABLE_HEIGHT {2}\n"
+      "static const float matc_film_table_{0}[{3}] = {{\n{4}}};",
+      compiled.material.name, runtime::FilmTable::kWidth, runtime::FilmTable::kHeight,
+      texels.size(), rows);
 }
 
 }  // namespace
@@ -59,7 +82,8 @@ std::string material_c_header(const CompiledMaterial& compiled, std::string_view
                             : ""},
                  {"spirv_word_count", std::to_string(library_module.size())},
                  {"spirv_words", words},
-                 {"coat_block", coat_block(compiled)}});
+                 {"coat_block", coat_block(compiled)},
+                 {"film_block", film_block(compiled, lut.precision)}});
   return fill_template("c/material.h", values);
 }
 

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "compile/compile.h"
+#include "formats/table_format.h"
 #include "spirv/shader_compiler.h"
 
 namespace matc {
@@ -17,6 +18,7 @@ struct LutReference {
   std::size_t size = 0;
   std::string hash;   // hash_of_bytes of that file
   std::string basis;  // the basis it integrates (and the coefficients were solved for)
+  LutPrecision precision = LutPrecision::f32;  // its texels' (and a film table's)
 };
 
 // `lut_layer`: the material's layer of a per-material build's table (--basis auto), else none.

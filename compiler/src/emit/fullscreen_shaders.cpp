@@ -47,6 +47,8 @@ int material_map_count(FresnelModel model) {
     case FresnelModel::ours_coated:
     case FresnelModel::ours_with_schlick_coat:
     case FresnelModel::schlick_clear_coat:
+    case FresnelModel::film_table:
+    case FresnelModel::film_airy_dielectric_base:
       break;
   }
   return 0;
@@ -59,6 +61,10 @@ bool reads_f0_table(FresnelModel model) {
 }
 
 }  // namespace
+
+bool draws_filmed_material(FresnelModel model) {
+  return model == FresnelModel::film_table || model == FresnelModel::film_airy_dielectric_base;
+}
 
 bool draws_coated_material(FresnelModel model) {
   return model == FresnelModel::ours_coated || model == FresnelModel::f0_table_coated ||
@@ -76,6 +82,7 @@ std::vector<CostPassBinding> cost_pass_bindings(FresnelModel model, FresnelQuant
     bindings.push_back({4 + static_cast<std::uint32_t>(map), CostPassResource::material_map});
   if (quantity == FresnelQuantity::preintegrated)
     bindings.push_back({7, CostPassResource::environment});
+  if (model == FresnelModel::film_table) bindings.push_back({8, CostPassResource::film_table});
   return bindings;
 }
 
@@ -100,6 +107,15 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
     coat = 3;
   if (coat == 1 && !compiled.coat)
     throw std::invalid_argument("cost pass: a coated model needs a coated material");
+  // 0: no film; 1: ours from the film's table; 2: the Airy sum over a dielectric base.
+  const int film = model == FresnelModel::film_table                  ? 1
+                   : model == FresnelModel::film_airy_dielectric_base ? 2
+                                                                      : 0;
+  if (film == 1 && !compiled.film_table)
+    throw std::invalid_argument("cost pass: the film-table model needs a filmed material");
+  if (film != 0 && quantity != FresnelQuantity::ggx_light &&
+      quantity != FresnelQuantity::preintegrated)
+    throw std::invalid_argument("cost pass: a film is costed in a GGX light and image light");
   // The coat lobe's roughness and weight: the coated material's, else a lacquer's 0.1 and 1.
   const double coat_roughness = compiled.coat ? compiled.coat->input.roughness : 0.1;
   const double coat_weight = compiled.coat ? compiled.coat->input.weight : 1.0;
@@ -124,6 +140,9 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
   if (model == FresnelModel::f0_table_coated_metal_rough)
     model_name =
         "ours, coated, per pixel through an F0 table, mixed with the dielectric under the coat";
+  if (model == FresnelModel::film_table) model_name = "ours, filmed, from the film's table";
+  if (model == FresnelModel::film_airy_dielectric_base)
+    model_name = "a film's Airy sum over a dielectric base (glTF engines' iridescence)";
   const char* quantity_name = "Fbar";
   if (quantity == FresnelQuantity::direct) quantity_name = "F";
   if (quantity == FresnelQuantity::ggx_light) quantity_name = "one GGX light";
@@ -137,22 +156,22 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
       {{"version", kVersion},
        {"variant", fmt::format("{} {}", model_name, quantity_name)},
        {"defines",
-        fmt::format("#define MATC_COST_SCHLICK {}\n#define MATC_COST_TABLE {}\n#define "
-                    "MATC_COST_BAKED {}\n#define MATC_COST_FROM_F0 {}\n#define MATC_COST_F0_TABLE "
-                    "{}\n#define MATC_COST_MAPS "
-                    "{}\n#define MATC_COST_DIRECT "
-                    "{}\n#define MATC_COST_GGX_LIGHT {}\n#define MATC_COST_QUAD_LIGHT {}\n#define "
-                    "MATC_COST_QUAD_LIGHT_FOLLOWING {}\n#define MATC_COST_CLOSED_FORM {}\n#define "
-                    "MATC_COST_IMAGE_LIGHT {}\n#define MATC_COST_COAT {}\n#define "
-                    "MATC_COST_METAL_ROUGH {}",
-                    flag(schlick), flag(model == FresnelModel::table),
-                    flag(model == FresnelModel::baked), flag(from_f0), flag(reads_f0_table(model)),
-                    material_map_count(model), flag(quantity == FresnelQuantity::direct),
-                    flag(quantity == FresnelQuantity::ggx_light),
-                    flag(quantity == FresnelQuantity::quad_light),
-                    flag(quantity == FresnelQuantity::quad_light_following),
-                    flag(quantity == FresnelQuantity::preintegrated_closed_form),
-                    flag(quantity == FresnelQuantity::preintegrated), coat, flag(metal_rough))},
+        fmt::format(
+            "#define MATC_COST_SCHLICK {}\n#define MATC_COST_TABLE {}\n#define "
+            "MATC_COST_BAKED {}\n#define MATC_COST_FROM_F0 {}\n#define MATC_COST_F0_TABLE "
+            "{}\n#define MATC_COST_MAPS "
+            "{}\n#define MATC_COST_DIRECT "
+            "{}\n#define MATC_COST_GGX_LIGHT {}\n#define MATC_COST_QUAD_LIGHT {}\n#define "
+            "MATC_COST_QUAD_LIGHT_FOLLOWING {}\n#define MATC_COST_CLOSED_FORM {}\n#define "
+            "MATC_COST_IMAGE_LIGHT {}\n#define MATC_COST_COAT {}\n#define "
+            "MATC_COST_METAL_ROUGH {}\n#define MATC_COST_FILM {}",
+            flag(schlick), flag(model == FresnelModel::table), flag(model == FresnelModel::baked),
+            flag(from_f0), flag(reads_f0_table(model)), material_map_count(model),
+            flag(quantity == FresnelQuantity::direct), flag(quantity == FresnelQuantity::ggx_light),
+            flag(quantity == FresnelQuantity::quad_light),
+            flag(quantity == FresnelQuantity::quad_light_following),
+            flag(quantity == FresnelQuantity::preintegrated_closed_form),
+            flag(quantity == FresnelQuantity::preintegrated), coat, flag(metal_rough), film)},
        {"library", build.library_source(ShaderLanguage::glsl)},
        {"material", build.material_source(ShaderLanguage::glsl, compiled)},
        {"name", compiled.material.name},
@@ -162,6 +181,11 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
        {"f0", f0_list(compiled)},
        {"coat_roughness", float_literal(coat_roughness)},
        {"coat_weight", float_literal(coat_weight)},
+       {"film_ior", float_literal(compiled.material.film ? compiled.material.film->ior : 1.5)},
+       {"film_thickness",
+        float_literal(compiled.material.film ? compiled.material.film->thickness_nm : 0.0)},
+       {"film_weight",
+        float_literal(compiled.material.film ? compiled.material.film->weight : 0.0)},
        {"width", std::to_string(width)},
        {"height", std::to_string(height)}});
 }

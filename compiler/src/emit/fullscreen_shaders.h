@@ -49,7 +49,12 @@ enum class FresnelModel {
   schlick_metal_rough,
   from_f0_metal_rough,
   schlick_clear_coat_metal_rough,
-  f0_table_coated_metal_rough
+  f0_table_coated_metal_rough,
+  // A metal under a thin film: ours from its own table (docs/thin-film.md), against Belcour and
+  // Barla's 2017 evaluation over a dielectric base of index from F0, as glTF engines' iridescence
+  // (the Khronos sample viewer's evalIridescence) shades it, written here from the paper.
+  film_table,
+  film_airy_dielectric_base
 };
 // F alone (mu from the pixel); F inside one GGX punctual light (D, height-correlated Smith V, F,
 // NdotL); image-based light: preintegrated Fbar from one table fetch times the prefiltered
@@ -76,12 +81,15 @@ enum class CostPassResource {
   coefficient_table,
   ltc_table,
   material_map,
-  environment
+  environment,
+  film_table
 };
 struct CostPassBinding {
   std::uint32_t binding = 0;
   CostPassResource resource = CostPassResource::table;
 };
+// Whether a model draws a filmed material (its table, or its film over a dielectric base).
+bool draws_filmed_material(FresnelModel model);
 // Whether a model draws a coated material's two lobes (ours coated, at its coefficients or per
 // pixel through its F0 table): its cost pass needs a coated material.
 bool draws_coated_material(FresnelModel model);

@@ -60,6 +60,21 @@ ordered_json coat_json(const CompiledCoat& coat) {
             {"coat_max", coat.coat_max_error}}}};
 }
 
+// A filmed metal's tables (runtime/film_table.h): what its shader functions read for F and Fbar.
+ordered_json film_table_json(const runtime::FilmTable& table) {
+  ordered_json fresnel = ordered_json::array(), preintegrated = ordered_json::array();
+  for (const Rgb& node : table.fresnel)
+    fresnel.push_back(rgb_json(node));
+  for (const Rgb& node : table.preintegrated)
+    preintegrated.push_back(rgb_json(node));
+  return {{"layout",
+           "fresnel: F at mu = (i / 63)^2; preintegrated: Fbar at NdotV = (i / 64)^2 and "
+           "roughness 0.05 + 0.95 (j / 16)^2, entry 65 j + i; read linearly and bilinearly "
+           "between nodes, as the shaders do"},
+          {"fresnel", std::move(fresnel)},
+          {"preintegrated", std::move(preintegrated)}};
+}
+
 }  // namespace
 
 ordered_json rgb_json(const Rgb& rgb) {
@@ -142,6 +157,10 @@ ordered_json compiled_material_json(const CompiledMaterial& compiled,
                      {"schlick", error_stats_json(compiled.accuracy.schlick)},
                      {"f82_tint", error_stats_json(compiled.accuracy.f82_tint)}};
   if (compiled.coat) out["coat"] = coat_json(*compiled.coat);
+  if (compiled.film_table) {
+    out["accuracy"]["film_table"] = error_stats_json(compiled.film_table_error);
+    out["film_table"] = film_table_json(*compiled.film_table);
+  }
   return out;
 }
 

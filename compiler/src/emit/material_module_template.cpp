@@ -18,7 +18,8 @@ std::array<float, 12> material_module_placeholders() {
   return values;
 }
 
-CompiledMaterial template_material(bool fresnel_nonnegative, runtime::BasisKind basis) {
+CompiledMaterial template_material(bool fresnel_nonnegative, runtime::BasisKind basis,
+                                   bool filmed) {
   CompiledMaterial compiled;
   compiled.basis = basis;
   compiled.fresnel_nonnegative = fresnel_nonnegative;
@@ -28,12 +29,18 @@ CompiledMaterial template_material(bool fresnel_nonnegative, runtime::BasisKind 
   for (std::size_t c = 0; c < 3; ++c)
     for (std::size_t i = 0; i < 4; ++i)
       compiled.coefficients[c][i] = placeholders[c * 4 + i];
+  if (filmed) {
+    compiled.material.film = FilmInput{1.0, 1.5, 100.0};
+    compiled.film_table.emplace();
+  }
   return compiled;
 }
 
 SpirvWords patch_material_module(std::span<const std::uint32_t> template_words,
                                  const CompiledMaterial& compiled) {
   ModulePatch patch{std::string(kTemplateMaterialName), compiled.material.name, {}};
+  if (compiled.film_table)
+    return patch_module(SpirvWords(template_words.begin(), template_words.end()), patch);
   const std::array<float, 12> placeholders = material_module_placeholders();
   for (std::size_t c = 0; c < 3; ++c) {
     for (std::size_t i = 0; i < 4; ++i) {
@@ -54,6 +61,9 @@ std::vector<MaterialModuleTemplate> compile_material_module_templates() {
       templates.push_back({basis, nonnegative, false,
                            build.compile_material_library_module(template_material(nonnegative))});
     }
+    templates.push_back(
+        {basis, false, false,
+         build.compile_material_library_module(template_material(false, basis, true)), true});
   }
   const Build build(BuildOptions{});  // the default: a basis per material
   for (const runtime::BasisKind basis : runtime::kPerMaterialBases) {
@@ -63,6 +73,11 @@ std::vector<MaterialModuleTemplate> compile_material_module_templates() {
            build.compile_material_library_module(template_material(nonnegative, basis))});
     }
   }
+  // A filmed metal takes a per-material build's first basis.
+  const runtime::BasisKind first = runtime::kPerMaterialBases.front();
+  templates.push_back({first, false, true,
+                       build.compile_material_library_module(template_material(false, first, true)),
+                       true});
   return templates;
 }
 
@@ -78,9 +93,10 @@ std::string material_module_templates_source(std::span<const MaterialModuleTempl
       "namespace {{\n\n",
       kVersion);
   const auto array_name = [](const MaterialModuleTemplate& entry) {
-    return fmt::format("k{}{}{}", runtime::basis_name(entry.basis),
+    return fmt::format("k{}{}{}{}", runtime::basis_name(entry.basis),
                        entry.fresnel_nonnegative ? "_nonnegative" : "",
-                       entry.per_material_build ? "_per_material" : "");
+                       entry.per_material_build ? "_per_material" : "",
+                       entry.filmed ? "_filmed" : "");
   };
   for (const MaterialModuleTemplate& entry : templates)
     out += word_array_source(array_name(entry), entry.words);
@@ -91,14 +107,15 @@ std::string material_module_templates_source(std::span<const MaterialModuleTempl
       "                                                                   bool "
       "fresnel_nonnegative,\n"
       "                                                                   bool "
-      "per_material_build) {\n";
+      "per_material_build,\n"
+      "                                                                   bool filmed) {\n";
   for (const MaterialModuleTemplate& entry : templates) {
     out += fmt::format(
         "  if (basis == runtime::BasisKind::{} && fresnel_nonnegative == {} &&\n"
-        "      per_material_build == {})\n"
+        "      per_material_build == {} && filmed == {})\n"
         "    return {};\n",
         runtime::basis_name(entry.basis), entry.fresnel_nonnegative, entry.per_material_build,
-        array_name(entry));
+        entry.filmed, array_name(entry));
   }
   // A basis without a checked-in module (a new one, before `matc basis material-modules`) is
   // compiled instead.

@@ -27,9 +27,11 @@ inline constexpr std::string_view kTemplateMaterialName = "MATC_TEMPLATE_MATERIA
 std::array<float, 12> material_module_placeholders();
 
 // The placeholder material whose module is the template: its functions clamp at 0, or (for
-// materials whose curve matc proved non-negative) not; compiled against `basis`.
+// materials whose curve matc proved non-negative) not; compiled against `basis`. A filmed one's
+// functions read its table's texels (docs/thin-film.md): no coefficient enters its module.
 CompiledMaterial template_material(bool fresnel_nonnegative = false,
-                                   runtime::BasisKind basis = runtime::kDefaultBasis);
+                                   runtime::BasisKind basis = runtime::kDefaultBasis,
+                                   bool filmed = false);
 
 // The checked-in template of a basis and clamp, in a one-basis build or a per-material one
 // (--basis auto, whose library and snippets differ); empty in a bootstrap build, and for a
@@ -37,7 +39,8 @@ CompiledMaterial template_material(bool fresnel_nonnegative = false,
 // holds the closed forms only).
 std::span<const std::uint32_t> checked_in_material_module_template(runtime::BasisKind basis,
                                                                    bool fresnel_nonnegative,
-                                                                   bool per_material_build);
+                                                                   bool per_material_build,
+                                                                   bool filmed = false);
 
 // `compiled`'s module from a template.
 SpirvWords patch_material_module(std::span<const std::uint32_t> template_words,
@@ -48,6 +51,7 @@ struct MaterialModuleTemplate {
   bool fresnel_nonnegative = false;
   bool per_material_build = false;
   SpirvWords words;
+  bool filmed = false;
 };
 // Compiles the templates of every shipped basis, clamped, and of the closed forms unclamped, in
 // one-basis builds, and of the per-material bases in a per-material build (glslang): what the

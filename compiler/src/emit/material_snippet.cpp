@@ -21,8 +21,7 @@ TemplateValues material_template_values(const CompiledMaterial& compiled,
     throw std::logic_error(
         fmt::format("material name '{}' reached the emitter: {}", name, *problem));
   const auto& c = compiled.coefficients;
-  const double worst = *std::max_element(compiled.accuracy.decomposition.max_abs.begin(),
-                                         compiled.accuracy.decomposition.max_abs.end());
+  const double worst = worst_channel(shader_fresnel_error(compiled).max_abs);
   return {
       {"name", name},
       {"version", kVersion},
@@ -91,6 +90,21 @@ std::string coated_snippet_source(ShaderLanguage language, const CompiledMateria
   return fill_template(template_path(language, "material_coated"), values);
 }
 
+// A filmed metal's snippet (templates/<language>/material_film.*): its F and Fbar from its own
+// table's texels (runtime/film_table.h), its coefficients kept for F0.
+std::string film_snippet_source(ShaderLanguage language, const CompiledMaterial& compiled,
+                                TemplateValues values) {
+  const FilmInput& film = *compiled.material.film;
+  for (const char* unused : {"fresnel", "fresnel_preintegrated", "clamp_note"})
+    values.erase(unused);
+  values["film_ior"] = fmt::format("{}", film.ior);
+  values["film_thickness"] = fmt::format("{}", film.thickness_nm);
+  values["film_weight"] = fmt::format("{}", film.weight);
+  values["fit_max_error"] =
+      fmt::format("{:.4f}", worst_channel(compiled.accuracy.decomposition.max_abs));
+  return fill_template(template_path(language, "material_film"), values);
+}
+
 }  // namespace
 
 std::string basis_function_suffix(const CompiledMaterial& compiled, bool per_material_build) {
@@ -120,6 +134,7 @@ std::string material_snippet_source(ShaderLanguage language, const CompiledMater
                            {"basis", std::string(runtime::basis_name(compiled.basis))},
                            {"suffix", suffix}})
           : "";
+  if (compiled.film_table) return film_snippet_source(language, compiled, std::move(values));
   return fill_template(template_path(language, "material"), values);
 }
 

@@ -69,10 +69,10 @@ LutReference SharedTables::lut_reference() const {
   const bool layered = options_.layers.size() > 1;
   const auto known = default_lut_hash(options_.layers.front(), options_.format,
                                       options_.lut_precision, options_.lut, layered);
-  return {
-      shared_file_name(OutputKind::lut, options_.format), options_.lut.size,
-      known ? std::string(*known) : baked().hash,
-      layered ? std::string("auto") : std::string(runtime::basis_name(options_.layers.front()))};
+  return {shared_file_name(OutputKind::lut, options_.format), options_.lut.size,
+          known ? std::string(*known) : baked().hash,
+          layered ? std::string("auto") : std::string(runtime::basis_name(options_.layers.front())),
+          options_.lut_precision};
 }
 
 std::vector<OutputFile> SharedTables::files(const std::set<OutputKind>& emit) const {

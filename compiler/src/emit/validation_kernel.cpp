@@ -19,15 +19,23 @@ SpirvWords vulkan_compute_module(ShaderLanguage language, std::string source,
 
 }  // namespace
 
+MaterialKernel material_kernel_of(const CompiledMaterial& compiled) {
+  if (compiled.coat) return MaterialKernel::coated;
+  return compiled.film_table ? MaterialKernel::filmed : MaterialKernel::bare;
+}
+
 std::string validation_kernel_source(ShaderLanguage language, std::string_view library,
                                      std::string_view material, std::string_view material_name,
-                                     bool coated, std::string_view basis_suffix) {
+                                     MaterialKernel kind, std::string_view basis_suffix) {
   const bool glsl = language == ShaderLanguage::glsl;
   TemplateValues values = {{"version", kVersion},
                            {"name", std::string(material_name)},
                            {"library", std::string(library)},
                            {"material", std::string(material)}};
-  if (!coated) {
+  // A film's tables are its own: its kernel samples no table.
+  if (kind == MaterialKernel::filmed)
+    return fill_template(glsl ? "glsl/validate_film.comp" : "hlsl/validate_film.hlsl", values);
+  if (kind == MaterialKernel::bare) {
     values["suffix"] = std::string(basis_suffix);
     return fill_template(glsl ? "glsl/validate.comp" : "hlsl/validate.hlsl", values);
   }
@@ -57,7 +65,7 @@ SpirvWords material_validation_module(const Build& build, ShaderLanguage languag
       language,
       validation_kernel_source(language, build.library_source(language),
                                build.material_source(language, compiled), name,
-                               compiled.coat.has_value(),
+                               material_kernel_of(compiled),
                                basis_function_suffix(compiled, build.options().per_material_basis)),
       fmt::format("{}.validate{}", name, shader_file_extension(language)));
 }

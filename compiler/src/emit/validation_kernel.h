@@ -32,13 +32,21 @@ inline constexpr std::size_t kValidationResultsPerQuery = 4;
 // a fifth: kCoatedValidationQuad's light on both lobes (the LTC table at binding 5), and a sixth:
 // glTF's metal-rough mix under the coat (matc_metal_rough_<name>) with the coat's transmission.
 inline constexpr std::size_t kCoatedValidationResultsPerQuery = 6;
+// A filmed material's kernel (templates/*/validate_film.*) writes two: F and Fbar, both from the
+// film's tables.
+inline constexpr std::size_t kFilmValidationResultsPerQuery = 2;
 // A quad light in the shading frame (normal +z, view in the xz-plane towards +x, shading point
 // at the origin), on the reflection's side and tilted.
 inline constexpr std::array<runtime::Vec3, 4> kCoatedValidationQuad = {
     {{-0.5, -1.0, 1.5}, {-2.0, -1.0, 0.5}, {-2.0, 1.0, 0.5}, {-0.5, 1.0, 1.5}}};
+// The kind of kernel a material's check runs.
+enum class MaterialKernel { bare, coated, filmed };
+MaterialKernel material_kernel_of(const CompiledMaterial& compiled);
+
 std::string validation_kernel_source(ShaderLanguage language, std::string_view library,
                                      std::string_view material, std::string_view material_name,
-                                     bool coated = false, std::string_view basis_suffix = "");
+                                     MaterialKernel kind = MaterialKernel::bare,
+                                     std::string_view basis_suffix = "");
 
 // The coefficient-table path's kernel (templates/*/validate_table.*): bindings 0 queries (four vec4
 // each: r.rgb and mu, g.rgb and NdotV, n.rgb and roughness, k.rgb), 1 results (eight vec4: F and

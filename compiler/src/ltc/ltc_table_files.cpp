@@ -2,10 +2,8 @@
 
 #include <fmt/format.h>
 
-#include "formats/dds_writer.h"
 #include "formats/header_arrays.h"
-#include "formats/ktx2_writer.h"
-#include "formats/texel_bytes.h"
+#include "formats/texture_file.h"
 #include "matc/version.h"
 
 namespace matc {
@@ -34,18 +32,9 @@ std::string encode_header(const runtime::LtcTableView& table) {
 }  // namespace
 
 std::string encode_ltc_table(const runtime::LtcTableView& table, LutFormat format) {
-  const formats::TexelImage image{table.size, table.size, runtime::kLtcChannels, table.texels};
-  switch (format) {
-    case LutFormat::ktx2:
-      return formats::encode_ktx2({&image, 1}, LutPrecision::f32);
-    case LutFormat::dds:
-      return formats::encode_dds({&image, 1}, LutPrecision::f32);
-    case LutFormat::raw:
-      return formats::texel_bytes(table.texels, LutPrecision::f32);
-    case LutFormat::header:
-      return encode_header(table);
-  }
-  return {};
+  if (format == LutFormat::header) return encode_header(table);
+  return formats::encode_texture_file({table.size, table.size, runtime::kLtcChannels, table.texels},
+                                      format, LutPrecision::f32);
 }
 
 nlohmann::ordered_json ltc_table_manifest(const runtime::LtcTableView& table, LutFormat format) {

@@ -4,10 +4,9 @@
 
 #include <fmt/format.h>
 
-#include "formats/dds_writer.h"
 #include "formats/header_arrays.h"
-#include "formats/ktx2_writer.h"
 #include "formats/texel_bytes.h"
+#include "formats/texture_file.h"
 #include "matc/version.h"
 
 namespace matc {
@@ -60,21 +59,8 @@ CoefficientTable stored_coefficient_table(runtime::BasisKind basis, LutPrecision
 std::string encode_coefficient_table(const CoefficientTable& table, LutFormat format,
                                      LutPrecision precision) {
   if (!table.shipped_layout()) throw std::logic_error("only the shipped table layout is written");
-  switch (format) {
-    case LutFormat::ktx2: {
-      const formats::TexelImage image = image_of(table);
-      return formats::encode_ktx2({&image, 1}, precision);
-    }
-    case LutFormat::dds: {
-      const formats::TexelImage image = image_of(table);
-      return formats::encode_dds({&image, 1}, precision);
-    }
-    case LutFormat::raw:
-      return formats::texel_bytes(table.texels, precision);
-    case LutFormat::header:
-      return encode_header(table, precision);
-  }
-  return {};
+  if (format == LutFormat::header) return encode_header(table, precision);
+  return formats::encode_texture_file(image_of(table), format, precision);
 }
 
 nlohmann::ordered_json coefficient_table_manifest(const CoefficientTable& table, LutFormat format,

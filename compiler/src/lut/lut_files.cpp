@@ -6,9 +6,8 @@
 #include <fmt/format.h>
 
 #include "base/json_format.h"
-#include "formats/dds_writer.h"
-#include "formats/ktx2_writer.h"
 #include "formats/texel_bytes.h"
+#include "formats/texture_file.h"
 #include "header_writer.h"
 #include "lut/energy.h"
 #include "matc/version.h"
@@ -20,18 +19,8 @@ namespace {
 // A table's texels (`width` x `height` RGBA) in a texture format: KTX2, DDS or raw.
 std::string encode_texture(std::size_t width, std::size_t height, std::span<const float> texels,
                            LutFormat format, LutPrecision precision) {
-  const formats::TexelImage image{width, height, runtime::kBasisSize, texels};
-  switch (format) {
-    case LutFormat::ktx2:
-      return formats::encode_ktx2({&image, 1}, precision);
-    case LutFormat::dds:
-      return formats::encode_dds({&image, 1}, precision);
-    case LutFormat::raw:
-      return formats::texel_bytes(texels, precision);
-    case LutFormat::header:
-      break;
-  }
-  throw std::invalid_argument("encode_texture: the header is written from the bakes");
+  return formats::encode_texture_file({width, height, runtime::kBasisSize, texels}, format,
+                                      precision);
 }
 
 }  // namespace

@@ -76,7 +76,7 @@ class AreaLightCheck final : public DeviceCheck {
   SpirvWords kernel(ShaderLanguage language) const override {
     return area_light_validation_module(build_, language);
   }
-  KernelTables tables() const override { return {true, true}; }
+  KernelTables tables() const override { return {true, true, {}}; }
   std::size_t query_count() const override { return queries_.size(); }
 
   std::vector<float> packed_queries() const override {

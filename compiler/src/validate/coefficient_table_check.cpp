@@ -50,7 +50,7 @@ class CoefficientTableCheck final : public DeviceCheck {
   SpirvWords kernel(ShaderLanguage language) const override {
     return table_validation_module(build_, language);
   }
-  KernelTables tables() const override { return {true, false}; }
+  KernelTables tables() const override { return {true, false, {}}; }
   std::size_t query_count() const override { return queries_.size(); }
 
   std::vector<float> packed_queries() const override {

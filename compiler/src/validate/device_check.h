@@ -62,6 +62,7 @@ struct CheckResult {
 struct KernelTables {
   bool coefficient_table = false;  // binding 4
   bool ltc = false;                // binding 5
+  std::vector<float> film;         // binding 6: a filmed metal's table (film_table_texels)
 };
 
 class DeviceCheck {

@@ -1,8 +1,10 @@
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include "fit/coefficient_table.h"
 #include "lut/preintegrate.h"
+#include "matc/runtime/film_table.h"
 #include "matc/runtime/ltc.h"
 #include "matc/vulkan/buffer.h"
 #include "matc/vulkan/compute_kernel.h"
@@ -44,7 +46,7 @@ struct DeviceValidator::Device {
   // but not read back), its results read back.
   std::vector<float> run(const SpirvWords& module, std::vector<float> packed,
                          std::size_t query_count, std::size_t result_vec4s_per_query,
-                         KernelTables tables) const {
+                         const KernelTables& tables) const {
     const std::size_t groups = (query_count + kWorkgroupSize - 1) / kWorkgroupSize;
     const std::size_t padded = groups * kWorkgroupSize;
     packed.resize(packed.size() / query_count * padded, 0.0f);
@@ -60,6 +62,12 @@ struct DeviceValidator::Device {
     if (tables.coefficient_table)
       bindings.push_back(vulkan::Binding::sampled_image(4, coefficient_table));
     if (tables.ltc) bindings.push_back(vulkan::Binding::sampled_image(5, ltc));
+    std::optional<vulkan::Image> film;
+    if (!tables.film.empty()) {
+      film.emplace(context, static_cast<std::uint32_t>(runtime::FilmTable::kWidth),
+                   static_cast<std::uint32_t>(runtime::FilmTable::kHeight), tables.film);
+      bindings.push_back(vulkan::Binding::sampled_image(6, *film));
+    }
     const vulkan::ComputeKernel kernel(context, module, bindings);
     kernel.dispatch(static_cast<std::uint32_t>(groups));
     return result_buffer.read<float>(query_count * result_vec4s_per_query * 4);

@@ -4,8 +4,10 @@
 
 #include "emit/validation_kernel.h"
 #include "largest_difference.h"
+#include "lut/film_table_files.h"
 #include "matc/runtime/analytic_lut.h"
 #include "matc/runtime/coat.h"
+#include "matc/runtime/film_table.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/lut.h"
@@ -22,7 +24,10 @@ class MaterialCheck final : public DeviceCheck {
  public:
   MaterialCheck(const Build& build, const CompiledMaterial& compiled,
                 const ValidationTolerance& tolerance)
-      : build_(build), compiled_(compiled), tolerance_(tolerance), queries_(validation_queries()) {}
+      : build_(build), compiled_(compiled), tolerance_(tolerance), queries_(validation_queries()) {
+    if (compiled.film_table)
+      stored_film_ = stored_as(*compiled.film_table, build.options().lut_precision);
+  }
 
   std::string subject() const override { return compiled_.material.name; }
 
@@ -41,11 +46,24 @@ class MaterialCheck final : public DeviceCheck {
   }
 
   std::size_t result_vec4s_per_query() const override {
-    return compiled_.coat ? kCoatedValidationResultsPerQuery : kValidationResultsPerQuery;
+    switch (material_kernel_of(compiled_)) {
+      case MaterialKernel::coated:
+        return kCoatedValidationResultsPerQuery;
+      case MaterialKernel::filmed:
+        return kFilmValidationResultsPerQuery;
+      case MaterialKernel::bare:
+        break;
+    }
+    return kValidationResultsPerQuery;
   }
 
-  // A coated material's kernel lights both lobes with a quad light through the LTC table.
-  KernelTables tables() const override { return {false, compiled_.coat.has_value()}; }
+  // A coated material's kernel lights both lobes with a quad light through the LTC table; a
+  // filmed one's samples its own table.
+  KernelTables tables() const override {
+    KernelTables tables{false, compiled_.coat.has_value(), {}};
+    if (stored_film_) tables.film = runtime::film_table_texels(*stored_film_);
+    return tables;
+  }
 
   std::vector<CheckedQuantity> compare(std::span<const float> results) const override {
     // The material's basis, its layer of the table and its closed form.
@@ -55,6 +73,7 @@ class MaterialCheck final : public DeviceCheck {
     const runtime::AnalyticLutCoefficients& analytic =
         runtime::shipped_analytic_lut(compiled_.basis);
     if (compiled_.coat) return compare_coated(results, shader_basis, table, embedded, analytic);
+    if (stored_film_) return compare_filmed(results, *stored_film_);
     const runtime::Coefficients& c = compiled_.coefficients;
     CheckedQuantity fresnel{"F", tolerance_.fresnel};
     CheckedQuantity preintegrated{"Fbar", tolerance_.preintegrated};
@@ -94,6 +113,22 @@ class MaterialCheck final : public DeviceCheck {
   }
 
  private:
+  // A filmed material's F and Fbar, from its table as the file stores it, through the sampler.
+  std::vector<CheckedQuantity> compare_filmed(std::span<const float> results,
+                                              const runtime::FilmTable& film) const {
+    // Both through the sampler, whose weights may carry as few as 8 bits.
+    CheckedQuantity fresnel{"F", tolerance_.preintegrated};
+    CheckedQuantity preintegrated{"Fbar", tolerance_.preintegrated};
+    for (std::size_t i = 0; i < queries_.size(); ++i) {
+      const ValidationQuery& q = queries_[i];
+      const float* result = &results[i * kFilmValidationResultsPerQuery * 4];
+      record_largest(fresnel, runtime::film_fresnel(film, q.mu), result, i);
+      record_largest(preintegrated, runtime::film_preintegrated(film, q.ndotv, q.roughness),
+                     result + 4, i);
+    }
+    return {fresnel, preintegrated};
+  }
+
   // Both lobes of a coated material (runtime/coat.h): the base's RGB and the coat's F, each
   // direct and through the three tables.
   std::vector<CheckedQuantity> compare_coated(
@@ -163,6 +198,7 @@ class MaterialCheck final : public DeviceCheck {
   const CompiledMaterial& compiled_;
   ValidationTolerance tolerance_;
   std::vector<ValidationQuery> queries_;
+  std::optional<runtime::FilmTable> stored_film_;  // a filmed metal's table as its file holds it
 };
 
 }  // namespace

@@ -27,7 +27,24 @@ TEST(FilmCompile, NoThicknessOrNoCoverageIsTheBareMetalBitForBit) {
     const CompiledMaterial same = compile_material(titanium(film), basis);
     EXPECT_EQ(same.coefficients, bare.coefficients);
     EXPECT_EQ(same.f0, bare.f0);
+    EXPECT_FALSE(same.film_table);  // the bare metal's shaders, not a table
   }
+}
+
+// A film the basis cannot hold (300 nm oscillates with the angle) compiles to its own table, which
+// the shaders read: the table's error is what the outputs report, and it is no poor fit.
+TEST(FilmCompile, CarriesItsOwnTableWhichHoldsTheFilm) {
+  const auto& basis = runtime::shipped_basis();
+  const CompiledMaterial compiled = compile_material(titanium(FilmInput{1.0, 2.3, 300.0}), basis);
+  ASSERT_TRUE(compiled.film_table);
+  const double fit = worst_channel(compiled.accuracy.decomposition.max_abs);
+  const double table = worst_channel(compiled.film_table_error.max_abs);
+  EXPECT_GT(fit, 0.05);     // the 4-term fit misses it
+  EXPECT_LT(table, 0.004);  // the table does not (the target is 0.01)
+  EXPECT_EQ(&shader_fresnel_error(compiled), &compiled.film_table_error);
+  Diagnostics diagnostics;
+  warn_if_poor_fit(compiled, diagnostics);
+  EXPECT_TRUE(diagnostics.items().empty());
 }
 
 TEST(FilmCompile, FitsTheFilmsCurveAndReportsHowClosely) {

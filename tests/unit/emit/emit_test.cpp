@@ -348,10 +348,11 @@ TEST(Build, WgslOutputsAreCompleteWgsl) {
 TEST(MaterialModuleTemplates, CheckedInTemplatesAreCurrent) {
   for (const MaterialModuleTemplate& entry : compile_material_module_templates()) {
     const std::span<const std::uint32_t> checked_in = checked_in_material_module_template(
-        entry.basis, entry.fresnel_nonnegative, entry.per_material_build);
+        entry.basis, entry.fresnel_nonnegative, entry.per_material_build, entry.filmed);
     EXPECT_TRUE(
         std::equal(entry.words.begin(), entry.words.end(), checked_in.begin(), checked_in.end()))
-        << runtime::basis_name(entry.basis) << (entry.fresnel_nonnegative ? ", no clamp" : "");
+        << runtime::basis_name(entry.basis) << (entry.fresnel_nonnegative ? ", no clamp" : "")
+        << (entry.filmed ? ", filmed" : "");
   }
 }
 

@@ -101,7 +101,8 @@ class CompiledMaterial {
 
   // Curves at cosines mu in [0, 1]: 3 values (R, G, B) per cosine. A cosine outside [0, 1] or
   // not a number throws std::invalid_argument naming `mu` and its index.
-  // F as the shaders compute it (a coated material's both lobes summed).
+  // F as the shaders compute it (a coated material's both lobes summed; a filmed metal's from its
+  // own table, docs/thin-film.md).
   std::vector<double> fresnel(std::span<const double> mu) const;
   // The same into `rgb`, 3 values per cosine (std::invalid_argument for another size): no
   // allocation, for callers that evaluate in bulk.
@@ -119,7 +120,8 @@ class CompiledMaterial {
   };
   Lobes coated_fresnel(std::span<const double> mu) const;
   // The preintegrated F (split sum, the default table of this basis, baked on first use) at
-  // pairs (NdotV, roughness), both in [0, 1] and of one length: 3 values per pair.
+  // pairs (NdotV, roughness), both in [0, 1] and of one length: 3 values per pair. A filmed
+  // metal's comes from its own table, whichever table is given.
   std::vector<double> fbar(std::span<const double> ndotv, std::span<const double> roughness) const;
   // The same from `table` (matc/api/tables.h; native builds), which must integrate this
   // material's basis (std::invalid_argument otherwise).

@@ -1,0 +1,28 @@
+// A filmed metal's table (runtime/film_table.h) as the file <name>.film.<ext> an engine loads
+// beside the shared tables: KTX2, DDS, raw texels or a C++ header, in the preintegrated table's
+// format and precision (docs/thin-film.md).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "formats/table_format.h"
+#include "matc/runtime/film_table.h"
+
+namespace matc {
+
+// The table as a file of this precision stores it, so CPU evaluation reads what a renderer samples:
+// f16 rounds each value through half. f32 keeps the doubles: their rounding to float (below 6e-8)
+// is left out, so that every build of the library, the WebAssembly one among them, gives the same
+// values to the last digits (a float rounding can tip either way between two of them).
+runtime::FilmTable stored_as(runtime::FilmTable table, LutPrecision precision);
+
+// The file's bytes: film_table_texels at `precision`; the header format names its arrays after
+// `material_name`.
+std::string encode_film_table(const runtime::FilmTable& table, LutFormat format,
+                              LutPrecision precision, std::string_view material_name);
+
+// "<name>.film.<ext>" (a material's name has no dot: it clashes with no other file).
+std::string film_table_file_name(std::string_view material_name, LutFormat format);
+
+}  // namespace matc

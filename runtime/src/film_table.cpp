@@ -1,0 +1,81 @@
+#include "matc/runtime/film_table.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "texel_axis.h"
+
+namespace matc::runtime {
+namespace {
+
+double squared_node(std::size_t i, std::size_t nodes) {
+  const double u = static_cast<double>(i) / static_cast<double>(nodes - 1);
+  return u * u;
+}
+
+}  // namespace
+
+double film_table_cosine(std::size_t i) {
+  return squared_node(i, FilmTable::kCosineNodes);
+}
+
+double film_table_view_cosine(std::size_t i) {
+  return squared_node(i, FilmTable::kViewNodes);
+}
+
+double film_table_roughness(std::size_t j) {
+  return FilmTable::kMinRoughness +
+         (1.0 - FilmTable::kMinRoughness) * squared_node(j, FilmTable::kRoughnessNodes);
+}
+
+double film_cosine_coordinate(double mu) {
+  return std::sqrt(unit_clamp(mu));
+}
+
+// Uniform in sqrt(roughness - 0.05): denser towards a mirror, where the lobe's average of F
+// leaves F(NdotV) fastest.
+double film_roughness_coordinate(double roughness) {
+  const double above = roughness - FilmTable::kMinRoughness;
+  return std::sqrt(unit_clamp(above / (1.0 - FilmTable::kMinRoughness)));
+}
+
+std::vector<float> film_table_texels(const FilmTable& table) {
+  std::vector<float> texels;
+  texels.reserve(FilmTable::kWidth * FilmTable::kHeight * 4);
+  const auto append = [&texels](const Rgb& value) {
+    texels.insert(texels.end(), {static_cast<float>(value[0]), static_cast<float>(value[1]),
+                                 static_cast<float>(value[2]), 1.0f});
+  };
+  for (const Rgb& node : table.fresnel)
+    append(node);
+  for (const Rgb& node : table.preintegrated)
+    append(node);
+  return texels;
+}
+
+Rgb film_fresnel(const FilmTable& table, double mu) {
+  const auto [left, weight] =
+      texel_axis_position(film_cosine_coordinate(mu), FilmTable::kCosineNodes);
+  const Rgb& a = table.fresnel[left];
+  const Rgb& b = table.fresnel[left + 1];
+  return {a[0] + weight * (b[0] - a[0]), a[1] + weight * (b[1] - a[1]),
+          a[2] + weight * (b[2] - a[2])};
+}
+
+Rgb film_preintegrated(const FilmTable& table, double ndotv, double roughness) {
+  const auto [x, tx] = texel_axis_position(film_cosine_coordinate(ndotv), FilmTable::kViewNodes);
+  const auto [y, ty] =
+      texel_axis_position(film_roughness_coordinate(roughness), FilmTable::kRoughnessNodes);
+  const auto at = [&](std::size_t column, std::size_t row, std::size_t c) {
+    return table.preintegrated[row * FilmTable::kViewNodes + column][c];
+  };
+  Rgb out{};
+  for (std::size_t c = 0; c < 3; ++c) {
+    const double bottom = at(x, y, c) + tx * (at(x + 1, y, c) - at(x, y, c));
+    const double top = at(x, y + 1, c) + tx * (at(x + 1, y + 1, c) - at(x, y + 1, c));
+    out[c] = bottom + ty * (top - bottom);
+  }
+  return out;
+}
+
+}  // namespace matc::runtime

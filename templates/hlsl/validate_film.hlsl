@@ -1,0 +1,20 @@
+// matc {{version}}: the compute kernel that checks filmed material {{name}} on a Vulkan device
+// against the CPU runtime. For each query (mu, NdotV, roughness, -) it writes F(mu) and the
+// preintegrated F at (NdotV, roughness), both from the film's table (binding 6) through the
+// table sampler.
+{{library}}
+{{material}}
+[[vk::binding(0, 0)]] StructuredBuffer<float4> matc_queries : register(t0);
+[[vk::binding(1, 0)]] RWStructuredBuffer<float4> matc_results : register(u1);
+[[vk::binding(3, 0)]] SamplerState matc_lut_sampler : register(s3);
+[[vk::binding(6, 0)]] Texture2D<float4> matc_film : register(t6);
+
+[numthreads(64, 1, 1)]
+void main(uint3 id : SV_DispatchThreadID) {
+  uint i = id.x;
+  float4 query = matc_queries[i];
+  float4 direct = matc_film_fresnel(matc_film, matc_lut_sampler, query.x);
+  float4 image = matc_film_preintegrated(matc_film, matc_lut_sampler, query.y, query.z);
+  matc_results[2 * i] = float4(matc_fresnel_{{name}}(direct), 1.0);
+  matc_results[2 * i + 1] = float4(matc_fresnel_preintegrated_{{name}}(image), 1.0);
+}
