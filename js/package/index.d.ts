@@ -70,6 +70,14 @@ export interface Coat {
   layeredMaxError: Float64Array;
 }
 
+/** A filmed metal's own table (docs/thin-film.md): width x height RGBA texels, row after row, as
+ *  <name>.film.<ext> holds them at f32; row 0 F over sqrt(mu), rows 1-17 Fbar. */
+export interface FilmTable {
+  width: number;
+  height: number;
+  texels: Float32Array;
+}
+
 export declare class CompiledMaterial extends Disposable {
   readonly material: Material;
   readonly name: string;
@@ -79,6 +87,8 @@ export declare class CompiledMaterial extends Disposable {
   readonly f82: Float64Array;
   readonly accuracy: Accuracy;
   readonly coat: Coat | null;
+  /** A filmed metal's table, which its shaders sample for F and Fbar; null without a film. */
+  readonly filmTable: FilmTable | null;
   readonly diagnostics: Diagnostic[];
   /** F as the shaders compute it: 3 values (R, G, B) per cosine in [0, 1]. */
   fresnel(mu: Numbers): Float64Array;

@@ -116,7 +116,7 @@ export class CompiledMaterial extends Handle {
   constructor(handle, material) {
     super(handle);
     this.material = material;
-    // name, basis, coefficients, f0, f82, accuracy, coat, diagnostics
+    // name, basis, coefficients, f0, f82, accuracy, coat, filmTable, diagnostics
     Object.assign(this, handle.describe());
   }
   // Each curve: 3 values (R, G, B) per cosine mu in [0, 1], in one Float64Array.

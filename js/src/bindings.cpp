@@ -140,6 +140,18 @@ class JsCompiled {
     } else {
       out.set("coat", val::null());
     }
+    // A filmed metal's own table (docs/thin-film.md), RGBA texels to upload as a texture.
+    if (const std::optional<matc::api::FilmTable> film = compiled_.film_table()) {
+      val table = val::object();
+      table.set("width", static_cast<double>(film->width));
+      table.set("height", static_cast<double>(film->height));
+      table.set("texels",
+                val::global("Float32Array")
+                    .new_(emscripten::typed_memory_view(film->texels.size(), film->texels.data())));
+      out.set("filmTable", table);
+    } else {
+      out.set("filmTable", val::null());
+    }
     out.set("diagnostics", diagnostics_of(compiled_.diagnostics()));
     return out;
   }

@@ -141,8 +141,7 @@ void register_compiled_material(py::module_& module) {
           copy_rows(api::fresnel_from_coefficients(values, {cosines, count}, basis), rgb);
         });
       },
-      py::arg("coefficients"), py::arg("mu"),
-      py::arg("basis") = api::option_default("basis"),
+      py::arg("coefficients"), py::arg("mu"), py::arg("basis") = api::option_default("basis"),
       "F(mu) for any (3, 4) coefficients (a coefficient table's, a texture's) as the shaders "
       "compute it");
 
@@ -182,6 +181,17 @@ void register_compiled_material(py::module_& module) {
           "coat", &coat_dict,
           "A coated material's coat (docs/coating.md): its inputs, the under-coat and coat "
           "coefficients and the layered max error; None for a bare metal")
+      .def_property_readonly(
+          "film_table",
+          [](const CompiledMaterial& r) -> py::object {
+            std::optional<matc::api::FilmTable> film = r.film_table();
+            if (!film) return py::none();
+            py::array_t<float> texels({film->height, film->width, std::size_t{4}});
+            std::copy(film->texels.begin(), film->texels.end(), texels.mutable_data());
+            return texels;
+          },
+          "A filmed metal's own table (docs/thin-film.md): (18, 65, 4) float32 RGBA texels, "
+          "row 0 F over sqrt(mu), rows 1-17 Fbar; None without a film")
       .def_property_readonly("saturation", &CompiledMaterial::saturation)
       .def_property_readonly("fresnel_nonnegative", &CompiledMaterial::fresnel_nonnegative)
       .def_property_readonly(

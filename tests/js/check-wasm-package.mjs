@@ -425,6 +425,19 @@ check(lobes.base.length === 6 && lobes.coat.length === 2 &&
       total.every((v, i) => Math.abs(v - (lobes.base[i] + lobes.coat[Math.floor(i / 3)])) < 1e-15),
       "a coated material's lobes sum to its F");
 throwsWith(() => gold.coatedFresnel([0.5]), /has no coat/, "lobes of a bare metal");
+// A filmed metal's own table (docs/thin-film.md): RGBA texels to upload, row 0 its F at
+// mu = (i / 64)^2, as fresnel() reads them.
+const filmed = matc_.compile(matc_.parseMaterial({ name: "f", spectral: { preset: "Ti" },
+                                                   film: { ior: 2.3, thickness: 300 } }));
+const film = filmed.filmTable;
+const nodes = Array.from({ length: 65 }, (_, i) => (i / 64) ** 2);
+const direct = filmed.fresnel(nodes);
+check(film && film.width === 65 && film.height === 18 && film.texels instanceof Float32Array &&
+      film.texels.length === 65 * 18 * 4 &&
+      nodes.every((_, i) => [0, 1, 2].every((c) => Math.abs(film.texels[4 * i + c] - direct[3 * i + c]) < 1e-6)),
+      "a filmed metal's table: 65 x 18 RGBA, row 0 its F");
+check(gold.filmTable === null, "a bare metal has no film table");
+filmed.dispose();
 gold.dispose();
 throwsWith(() => gold.fresnel(0.5), /used after dispose/, "after dispose()");
 

@@ -139,3 +139,10 @@ def test_a_thick_film_is_evaluated_through_its_own_table():
     assert np.max(filmed.accuracy["max_error"]) < 0.004
     fbar = filmed.fbar([0.5, 0.9], [0.3, 0.6])
     assert fbar.shape == (2, 3) and np.all((fbar > 0) & (fbar < 1))
+    # The table itself, as <name>.film.<ext> holds it: row 0 is F at mu = (i / 64)^2.
+    table = filmed.film_table
+    assert table.shape == (18, 65, 4) and table.dtype == np.float32
+    nodes = (np.arange(65) / 64.0) ** 2
+    np.testing.assert_allclose(table[0, :, :3], filmed.fresnel(nodes), atol=1e-6)
+    np.testing.assert_array_equal(table[:, :, 3], 1.0)
+    assert matc.compile({"name": "ti", "spectral": {"preset": "Ti"}}).film_table is None

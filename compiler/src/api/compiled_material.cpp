@@ -151,6 +151,12 @@ std::string CompiledMaterial::json() const {
                                             evaluation_->per_material_build));
 }
 
+std::optional<FilmTable> CompiledMaterial::film_table() const {
+  if (!value_->film_table) return std::nullopt;
+  return FilmTable{runtime::FilmTable::kWidth, runtime::FilmTable::kHeight,
+                   runtime::film_table_texels(*value_->film_table)};
+}
+
 Accuracy CompiledMaterial::accuracy() const {
   const FitAccuracy& fit = value_->accuracy;
   // What the shaders compute: a filmed metal's tables, else the decomposition.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <span>
@@ -73,6 +74,16 @@ struct Coat {
   Rgb layered_max_error{};                    // the shaders' layering against the exact one
 };
 
+// A filmed metal's own table (docs/thin-film.md): width x height RGBA texels, row after row, as
+// <name>.film.<ext> holds them at f32. Row 0 is F over sqrt(mu), rows 1 to 17 the preintegrated F
+// over sqrt(NdotV) and sqrt((roughness - 0.05) / 0.95); sample it with the shaders'
+// matc_film_fresnel_texcoord and matc_film_preintegrated_texcoord.
+struct FilmTable {
+  std::size_t width = 0;
+  std::size_t height = 0;
+  std::vector<float> texels;
+};
+
 class CompiledMaterial {
  public:
   const Material& material() const { return material_; }
@@ -84,6 +95,8 @@ class CompiledMaterial {
   Rgb average_fresnel() const;  // the decomposed F's cosine-weighted average
   Accuracy accuracy() const;
   std::optional<Coat> coat() const;
+  // A filmed metal's table, which its shaders sample for F and Fbar; none without a film.
+  std::optional<FilmTable> film_table() const;
   // The working colour space and gamut mapping it was compiled in, by the options' names.
   std::string color_space() const;
   std::string gamut_mapping() const;
