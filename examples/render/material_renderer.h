@@ -47,8 +47,8 @@ class MaterialRenderer {
   std::optional<std::vector<CompiledMaterial>> compile_all(const std::string& file) const;
 
   // Whether a render of bare metals (matc_render, matc_area_light_render; `coated` false) or of
-  // coated ones (matc_coated_render) draws `compiled`; if not, false with an error on standard
-  // error naming the render that does.
+  // coated ones (matc_coated_render) draws `compiled` (none draws a filmed metal yet); if not,
+  // false with an error on standard error naming the render that does.
   static bool draws(const std::string& file, const CompiledMaterial& compiled, bool coated);
 
   // Every estimate of one material, linear RGB, indexed by method.
