@@ -1,11 +1,14 @@
 #include "material_renderer.h"
 
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include <fmt/core.h>
 
 #include "emit/fullscreen_shaders.h"
+#include "lut/film_table_files.h"
+#include "matc/runtime/film_table.h"
 #include "matc/runtime/ltc.h"
 #include "matc/vulkan/fullscreen_pass.h"
 #include "material/material_input.h"
@@ -89,14 +92,14 @@ std::optional<std::vector<CompiledMaterial>> MaterialRenderer::compile_all(
   return compiled;
 }
 
-bool MaterialRenderer::draws(const std::string& file, const CompiledMaterial& compiled,
-                             bool coated) {
-  // A filmed metal's functions read its own table (docs/thin-film.md), which these renders do
-  // not bind yet.
-  if (compiled.film_table) {
+bool MaterialRenderer::draws(const std::string& file, const CompiledMaterial& compiled, bool coated,
+                             bool filmed) {
+  // A filmed metal's functions read its own table (docs/thin-film.md), which only matc_render
+  // binds.
+  if (compiled.film_table && !filmed) {
     fmt::print(stderr,
-               "{}: error: {} has a film: its shaders read its own table, which the comparison "
-               "renders do not draw yet (docs/thin-film.md)\n",
+               "{}: error: {} has a film: its shaders read its own table, which only matc_render "
+               "draws (docs/thin-film.md)\n",
                file, compiled.material.name);
     return false;
   }
@@ -125,6 +128,15 @@ std::vector<Panel> MaterialRenderer::render(const CompiledMaterial& compiled) {
                                            vulkan::Binding::separate_sampler(2, sampler_),
                                            vulkan::Binding::storage_buffer(3, curve_)};
   if (ltc_table_) bindings.push_back(vulkan::Binding::sampled_image(4, *ltc_table_));
+  // A filmed metal's own table, as its file stores it (the comparison render reads it at 4).
+  std::optional<vulkan::Image> film;
+  if (compiled.film_table) {
+    film.emplace(context_, static_cast<std::uint32_t>(runtime::FilmTable::kWidth),
+                 static_cast<std::uint32_t>(runtime::FilmTable::kHeight),
+                 runtime::film_table_texels(
+                     stored_as(*compiled.film_table, build_.options().lut_precision)));
+    bindings.push_back(vulkan::Binding::sampled_image(4, *film));
+  }
   vulkan::FullscreenPass pass(context_, vertex_, fragment, bindings, settings_.size, settings_.size,
                               sizeof(PanelConstants));
   const auto roughness =

@@ -47,9 +47,10 @@ class MaterialRenderer {
   std::optional<std::vector<CompiledMaterial>> compile_all(const std::string& file) const;
 
   // Whether a render of bare metals (matc_render, matc_area_light_render; `coated` false) or of
-  // coated ones (matc_coated_render) draws `compiled` (none draws a filmed metal yet); if not,
-  // false with an error on standard error naming the render that does.
-  static bool draws(const std::string& file, const CompiledMaterial& compiled, bool coated);
+  // coated ones (matc_coated_render) draws `compiled`, filmed metals only where `filmed`
+  // (matc_render); if not, false with an error on standard error naming the render that does.
+  static bool draws(const std::string& file, const CompiledMaterial& compiled, bool coated,
+                    bool filmed = false);
 
   // Every estimate of one material, linear RGB, indexed by method.
   std::vector<Panel> render(const CompiledMaterial& compiled);

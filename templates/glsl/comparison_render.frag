@@ -8,9 +8,12 @@
 //   3: Schlick's preintegrated Fresnel, from the ComparisonLobes table
 //   4: ours, matc_fresnel_preintegrated_{{name}} from our table
 //   5: ours from the table's closed form, matc_preintegrated_basis_analytic (no fetch)
+// A filmed metal (MATC_RENDER_FILM 1) reads its own table at binding 4 for both 4 and 5: it has no
+// closed form (docs/thin-film.md).
 // Each pass writes (sum, weight) for its share of the samples; the host adds passes up and
 // divides, and multiplies radiance by a Fresnel factor for the split-sum images. Background
 // pixels write a negative weight.
+{{film}}
 {{library}}
 {{material}}
 layout(set = 0, binding = 0) uniform texture2D matc_lut;
@@ -18,6 +21,9 @@ layout(set = 0, binding = 1) uniform texture2D lobe_lut;  // ComparisonLobes: x 
 layout(set = 0, binding = 2) uniform sampler matc_lut_sampler;
 // The exact RGB curve at mu_j = j / (n - 1), linearly interpolated.
 layout(std430, set = 0, binding = 3) readonly buffer ExactCurve { vec4 exact_curve[]; };
+#if MATC_RENDER_FILM
+layout(set = 0, binding = 4) uniform texture2D film_table;
+#endif
 layout(push_constant) uniform Panel {
   int method;
   uint first_sample;
@@ -90,12 +96,15 @@ void main() {
     if (panel.method == 3) {
       vec4 lobes = textureLod(sampler2D(lobe_lut, matc_lut_sampler), texcoord, 0.0);
       sum = F0 * lobes.x + (vec3(1.0) - F0) * lobes.y;
-    } else if (panel.method == 5) {
-      sum = matc_fresnel_preintegrated_{{name}}(
-          matc_preintegrated_basis_analytic(n.z, panel.roughness));
     } else {
+#if MATC_RENDER_FILM
+      sum = matc_fresnel_preintegrated_{{name}}(MATC_FILM_PREINTEGRATED(
+          sampler2D(film_table, matc_lut_sampler), n.z, panel.roughness));
+#else
       sum = matc_fresnel_preintegrated_{{name}}(
-          textureLod(sampler2D(matc_lut, matc_lut_sampler), texcoord, 0.0));
+          panel.method == 5 ? matc_preintegrated_basis_analytic(n.z, panel.roughness)
+                            : textureLod(sampler2D(matc_lut, matc_lut_sampler), texcoord, 0.0));
+#endif
     }
     weight = 1.0;
   }

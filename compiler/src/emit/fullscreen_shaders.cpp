@@ -215,8 +215,10 @@ std::string material_render_source(std::string_view template_name, const Build& 
 std::string comparison_render_source(const Build& build, const CompiledMaterial& compiled,
                                      std::size_t curve_size, std::uint32_t width,
                                      std::uint32_t height) {
-  return material_render_source("glsl/comparison_render.frag", build, compiled, curve_size, width,
-                                height);
+  // A filmed metal's Fbar is its own table's (bound at 4).
+  return material_render_source(
+      "glsl/comparison_render.frag", build, compiled, curve_size, width, height,
+      {{"film", fmt::format("#define MATC_RENDER_FILM {}", compiled.film_table ? 1 : 0)}});
 }
 
 std::string area_light_render_source(const Build& build, const CompiledMaterial& compiled,
