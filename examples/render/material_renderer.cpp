@@ -133,8 +133,7 @@ std::vector<Panel> MaterialRenderer::render(const CompiledMaterial& compiled) {
   if (compiled.film_table) {
     film.emplace(context_, static_cast<std::uint32_t>(runtime::FilmTable::kWidth),
                  static_cast<std::uint32_t>(runtime::FilmTable::kHeight),
-                 runtime::film_table_texels(
-                     stored_as(*compiled.film_table, build_.options().lut_precision)));
+                 stored_film_texels(*compiled.film_table, build_.options().lut_precision));
     bindings.push_back(vulkan::Binding::sampled_image(4, *film));
   }
   vulkan::FullscreenPass pass(context_, vertex_, fragment, bindings, settings_.size, settings_.size,

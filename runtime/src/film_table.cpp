@@ -8,6 +8,14 @@
 namespace matc::runtime {
 namespace {
 
+// The rows of Fbar as sample_bilinear reads a table.
+struct PreintegratedRows {
+  const std::vector<Rgb>& nodes;
+  const Rgb& texel(std::size_t x, std::size_t y) const {
+    return nodes[y * FilmTable::kViewNodes + x];
+  }
+};
+
 double squared_node(std::size_t i, std::size_t nodes) {
   const double u = static_cast<double>(i) / static_cast<double>(nodes - 1);
   return u * u;
@@ -63,19 +71,9 @@ Rgb film_fresnel(const FilmTable& table, double mu) {
 }
 
 Rgb film_preintegrated(const FilmTable& table, double ndotv, double roughness) {
-  const auto [x, tx] = texel_axis_position(film_cosine_coordinate(ndotv), FilmTable::kViewNodes);
-  const auto [y, ty] =
-      texel_axis_position(film_roughness_coordinate(roughness), FilmTable::kRoughnessNodes);
-  const auto at = [&](std::size_t column, std::size_t row, std::size_t c) {
-    return table.preintegrated[row * FilmTable::kViewNodes + column][c];
-  };
-  Rgb out{};
-  for (std::size_t c = 0; c < 3; ++c) {
-    const double bottom = at(x, y, c) + tx * (at(x + 1, y, c) - at(x, y, c));
-    const double top = at(x, y + 1, c) + tx * (at(x + 1, y + 1, c) - at(x, y + 1, c));
-    out[c] = bottom + ty * (top - bottom);
-  }
-  return out;
+  return sample_bilinear<3>(PreintegratedRows{table.preintegrated}, FilmTable::kViewNodes,
+                            FilmTable::kRoughnessNodes, film_cosine_coordinate(ndotv),
+                            film_roughness_coordinate(roughness));
 }
 
 }  // namespace matc::runtime

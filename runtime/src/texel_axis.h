@@ -22,13 +22,14 @@ inline std::pair<std::size_t, double> texel_axis_position(double u, std::size_t 
   return {left, position - static_cast<double>(left)};
 }
 
-// Bilinear filtering of a table whose texel(x, y) returns Channels floats, at coordinates (u, v)
-// in [0, 1] along both axes, exactly as a sampler with the convention above reads it.
+// Bilinear filtering of a width x height table whose texel(x, y) returns Channels floats, at
+// coordinates (u, v) in [0, 1] along both axes, exactly as a sampler with the convention above
+// reads it.
 template <std::size_t Channels, typename Table>
-std::array<double, Channels> sample_bilinear(const Table& table, std::size_t size, double u,
-                                             double v) {
-  const auto [x, tx] = texel_axis_position(u, size);
-  const auto [y, ty] = texel_axis_position(v, size);
+std::array<double, Channels> sample_bilinear(const Table& table, std::size_t width,
+                                             std::size_t height, double u, double v) {
+  const auto [x, tx] = texel_axis_position(u, width);
+  const auto [y, ty] = texel_axis_position(v, height);
   const auto t00 = table.texel(x, y);
   const auto t10 = table.texel(x + 1, y);
   const auto t01 = table.texel(x, y + 1);
@@ -40,6 +41,13 @@ std::array<double, Channels> sample_bilinear(const Table& table, std::size_t siz
     result[i] = bottom + ty * (top - bottom);
   }
   return result;
+}
+
+// The same for a square table.
+template <std::size_t Channels, typename Table>
+std::array<double, Channels> sample_bilinear(const Table& table, std::size_t size, double u,
+                                             double v) {
+  return sample_bilinear<Channels>(table, size, size, u, v);
 }
 
 }  // namespace matc::runtime

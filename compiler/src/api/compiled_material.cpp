@@ -30,15 +30,21 @@ namespace matc::api {
 
 namespace {
 
+// rgb_at(mu) at each cosine into `rgb`, 3 values per cosine (the caller checked both).
 template <typename RgbAt>
-std::vector<double> rgb_per_cosine(std::span<const double> mu, const RgbAt& rgb_at) {
-  check_unit_interval("mu", mu);
-  std::vector<double> rgb(3 * mu.size());
+void write_rgb_per_cosine(std::span<const double> mu, std::span<double> rgb, const RgbAt& rgb_at) {
   for (std::size_t i = 0; i < mu.size(); ++i) {
     const Rgb value = rgb_at(mu[i]);
     for (std::size_t c = 0; c < 3; ++c)
       rgb[3 * i + c] = value[c];
   }
+}
+
+template <typename RgbAt>
+std::vector<double> rgb_per_cosine(std::span<const double> mu, const RgbAt& rgb_at) {
+  check_unit_interval("mu", mu);
+  std::vector<double> rgb(3 * mu.size());
+  write_rgb_per_cosine(mu, rgb, rgb_at);
   return rgb;
 }
 
@@ -188,21 +194,16 @@ void CompiledMaterial::fresnel(std::span<const double> mu, std::span<double> rgb
   check_rgb_size(rgb, mu.size());
   const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(evaluation_->basis);
   if (const auto& coat = value_->coat) {
-    for (std::size_t i = 0; i < mu.size(); ++i) {
-      const Rgb value = runtime::evaluate_coated_fresnel(value_->coefficients, coat->coefficients,
-                                                         shader_basis, mu[i])
-                            .total();
-      for (std::size_t c = 0; c < 3; ++c)
-        rgb[3 * i + c] = value[c];
-    }
+    write_rgb_per_cosine(mu, rgb, [&](double cosine) {
+      return runtime::evaluate_coated_fresnel(value_->coefficients, coat->coefficients,
+                                              shader_basis, cosine)
+          .total();
+    });
     return;
   }
   if (const auto& film = value_->film_table) {
-    for (std::size_t i = 0; i < mu.size(); ++i) {
-      const Rgb value = runtime::film_fresnel(*film, mu[i]);
-      for (std::size_t c = 0; c < 3; ++c)
-        rgb[3 * i + c] = value[c];
-    }
+    write_rgb_per_cosine(mu, rgb,
+                         [&](double cosine) { return runtime::film_fresnel(*film, cosine); });
     return;
   }
   runtime::evaluate_fresnel(value_->coefficients, shader_basis, mu, rgb);

@@ -232,29 +232,20 @@ void add_filmed(const EvaluationInputs& options, const CompiledMaterial& compile
 std::string evaluate_bare(const EvaluationInputs& options, const Material& material) {
   const runtime::BasisView basis = runtime::shipped_basis(options.basis);
   const ColorOptions color = options.color;
+  ordered_json out;
+  out["name"] = material.name;
+  out["basis"] = runtime::basis_name(basis.kind);
+  out["color_space"] = color_space_name(color.working_space);
   if (has_visible_film(material)) {
-    ordered_json out;
-    out["name"] = material.name;
-    out["basis"] = runtime::basis_name(basis.kind);
-    out["color_space"] = color_space_name(color.working_space);
     add_filmed(options, compile_material(material, basis, color), out);
     return format_json(out);
   }
   if (material.coat) {
-    ordered_json out;
-    out["name"] = material.name;
-    out["basis"] = runtime::basis_name(basis.kind);
-    out["color_space"] = color_space_name(color.working_space);
     add_coated(options, compile_material(material, basis, color), basis, out);
     return format_json(out);
   }
   const auto curve = make_reflectance_curve(material, color);
   const LabelledCoefficients coefficients = {{"", solve_coefficients(*curve, basis)}};
-
-  ordered_json out;
-  out["name"] = material.name;
-  out["basis"] = runtime::basis_name(basis.kind);
-  out["color_space"] = color_space_name(color.working_space);
   if (!options.mu.empty()) add_direct_fresnel(options, *curve, coefficients, out);
   std::optional<SplitSumInputs> inputs;
   if (!options.ndotv.empty()) {

@@ -173,20 +173,10 @@ CompiledCoat compile_coat(const Material& material, const runtime::Coefficients&
   // Evaluated once on the accuracy grid: the loop below and the Schlick and F82-tint rows read it.
   const LayeredCurve layered_exact(in_air, under_grid, input.weight, input.ior, input.color);
   const AccuracyGridCurve layered(layered_exact);
-  Rgb squares{};
-  for (std::size_t j = 0; j < kAccuracySamples; ++j) {
-    const double mu = static_cast<double>(j) / static_cast<double>(kAccuracySamples - 1);
-    const Rgb exact = layered.at(mu);
-    const Rgb ours =
-        runtime::evaluate_coated_fresnel(in_air_fit, coat.coefficients, shader_basis, mu).total();
-    for (std::size_t c = 0; c < 3; ++c) {
-      const double error = std::abs(ours[c] - std::max(0.0, exact[c]));
-      coat.layered_error.max_abs[c] = std::max(coat.layered_error.max_abs[c], error);
-      squares[c] += error * error;
-    }
-  }
-  for (std::size_t c = 0; c < 3; ++c)
-    coat.layered_error.rms[c] = std::sqrt(squares[c] / static_cast<double>(kAccuracySamples));
+  coat.layered_error = measure_on_accuracy_grid(layered, [&](double mu) {
+    return runtime::evaluate_coated_fresnel(in_air_fit, coat.coefficients, shader_basis, mu)
+        .total();
+  });
   coat.layered_f0 = layered.at(1.0);
   coat.layered_f82 = layered.at(kF82MuBar);
   // Schlick's and F82-tint's rows measure the layered curve itself; the decomposition's row is
@@ -194,29 +184,6 @@ CompiledCoat compile_coat(const Material& material, const runtime::Coefficients&
   coat.layered_accuracy = measure_accuracy(layered, in_air_fit, shader_basis);
   coat.layered_accuracy.decomposition = coat.layered_error;
   return coat;
-}
-
-}  // namespace
-
-namespace {
-
-// The film table's F against `curve` at the accuracy grid's cosines.
-ErrorStats measure_film_table(const ReflectanceCurve& curve, const runtime::FilmTable& table) {
-  ErrorStats stats;
-  Rgb squares{};
-  for (std::size_t j = 0; j < kAccuracySamples; ++j) {
-    const double mu = static_cast<double>(j) / static_cast<double>(kAccuracySamples - 1);
-    const Rgb exact = curve.at(mu);
-    const Rgb ours = runtime::film_fresnel(table, mu);
-    for (std::size_t c = 0; c < 3; ++c) {
-      const double error = std::abs(ours[c] - exact[c]);
-      stats.max_abs[c] = std::max(stats.max_abs[c], error);
-      squares[c] += error * error;
-    }
-  }
-  for (std::size_t c = 0; c < 3; ++c)
-    stats.rms[c] = std::sqrt(squares[c] / static_cast<double>(kAccuracySamples));
-  return stats;
 }
 
 }  // namespace
@@ -267,7 +234,9 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
   }
   if (has_visible_film(material)) {
     compiled.film_table = bake_film_table(curve);
-    compiled.film_table_error = measure_film_table(curve, *compiled.film_table);
+    const runtime::FilmTable& table = *compiled.film_table;
+    compiled.film_table_error = measure_on_accuracy_grid(
+        curve, [&table](double mu) { return runtime::film_fresnel(table, mu); });
   }
   return compiled;
 }

@@ -36,8 +36,7 @@ std::string coat_block(const CompiledMaterial& compiled) {
 // coefficients; nothing for a metal without a film.
 std::string film_block(const CompiledMaterial& compiled, LutPrecision precision) {
   if (!compiled.film_table) return "";
-  const std::vector<float> texels =
-      runtime::film_table_texels(stored_as(*compiled.film_table, precision));
+  const std::vector<float> texels = stored_film_texels(*compiled.film_table, precision);
   std::string rows;
   for (std::size_t i = 0; i < texels.size(); ++i) {
     rows.append(i % 8 == 0 ? "    " : " ");

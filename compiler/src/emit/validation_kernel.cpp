@@ -32,7 +32,7 @@ std::string validation_kernel_source(ShaderLanguage language, std::string_view l
                            {"name", std::string(material_name)},
                            {"library", std::string(library)},
                            {"material", std::string(material)}};
-  // A film's tables are its own: its kernel samples no table.
+  // A filmed metal's kernel samples its own table, not the preintegrated one.
   if (kind == MaterialKernel::filmed)
     return fill_template(glsl ? "glsl/validate_film.comp" : "hlsl/validate_film.hlsl", values);
   if (kind == MaterialKernel::bare) {

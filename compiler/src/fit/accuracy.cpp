@@ -6,37 +6,27 @@
 #include "optics/fresnel.h"
 
 namespace matc {
-namespace {
 
-class ErrorAccumulator {
- public:
-  void add(const Rgb& approximation, const Rgb& exact) {
-    for (std::size_t c = 0; c < 3; ++c) {
-      const double error = std::abs(approximation[c] - exact[c]);
-      stats_.max_abs[c] = std::max(stats_.max_abs[c], error);
-      sum_squares_[c] += error * error;
-    }
-    ++count_;
+void ErrorAccumulator::add(const Rgb& approximation, const Rgb& exact) {
+  for (std::size_t c = 0; c < 3; ++c) {
+    const double error = std::abs(approximation[c] - exact[c]);
+    stats_.max_abs[c] = std::max(stats_.max_abs[c], error);
+    sum_squares_[c] += error * error;
   }
-  ErrorStats finish() const {
-    ErrorStats result = stats_;
-    for (std::size_t c = 0; c < 3; ++c) {
-      result.rms[c] = std::sqrt(sum_squares_[c] / static_cast<double>(count_));
-    }
-    return result;
-  }
+  ++count_;
+}
 
- private:
-  ErrorStats stats_;
-  Rgb sum_squares_{};
-  std::size_t count_ = 0;
-};
+ErrorStats ErrorAccumulator::finish() const {
+  ErrorStats result = stats_;
+  for (std::size_t c = 0; c < 3; ++c) {
+    result.rms[c] = std::sqrt(sum_squares_[c] / static_cast<double>(count_));
+  }
+  return result;
+}
 
 double accuracy_grid_mu(std::size_t j) {
   return static_cast<double>(j) / static_cast<double>(kAccuracySamples - 1);
 }
-
-}  // namespace
 
 AccuracyGridCurve::AccuracyGridCurve(const ReflectanceCurve& exact) : exact_(exact) {
   values_.reserve(kAccuracySamples);

@@ -22,6 +22,37 @@ struct ErrorStats {
   Rgb rms{};      // root mean square over the same points
 };
 
+// Max and RMS of |approximation - exact| per channel, one cosine at a time.
+class ErrorAccumulator {
+ public:
+  void add(const Rgb& approximation, const Rgb& exact);
+  ErrorStats finish() const;
+
+ private:
+  ErrorStats stats_;
+  Rgb sum_squares_{};
+  std::size_t count_ = 0;
+};
+
+// The accuracy grid's cosine j, mu_j = j / (kAccuracySamples - 1).
+double accuracy_grid_mu(std::size_t j);
+
+// `approximation(mu)` (an Rgb) against `exact` clamped at 0 over the accuracy grid: what the
+// shaders compute for a material, however they compute it.
+template <typename Approximation>
+ErrorStats measure_on_accuracy_grid(const ReflectanceCurve& exact,
+                                    const Approximation& approximation) {
+  ErrorAccumulator errors;
+  for (std::size_t j = 0; j < kAccuracySamples; ++j) {
+    const double mu = accuracy_grid_mu(j);
+    Rgb reference = exact.at(mu);
+    for (double& value : reference)
+      value = value > 0.0 ? value : 0.0;
+    errors.add(approximation(mu), reference);
+  }
+  return errors.finish();
+}
+
 // An exact curve evaluated once at the accuracy grid's cosines, which include the minimax solve's
 // (kMinimaxCosines - 1 divides kAccuracySamples - 1): solving and measuring a spectral material
 // then integrate each spectrum once. Other cosines go to the exact curve, which must outlive this.

@@ -60,10 +60,14 @@ stored_as(runtime::FilmTable table, LutPrecision precision) {
   return table;
 }
 
+std::vector<float> stored_film_texels(const runtime::FilmTable& table, LutPrecision precision) {
+  return runtime::film_table_texels(stored_as(table, precision));
+}
+
 std::string encode_film_table(const runtime::FilmTable& table, LutFormat format,
                               LutPrecision precision, std::string_view material_name) {
   using runtime::FilmTable;
-  const std::vector<float> texels = runtime::film_table_texels(stored_as(table, precision));
+  const std::vector<float> texels = stored_film_texels(table, precision);
   if (format == LutFormat::header) return encode_header(texels, precision, material_name);
   return formats::encode_texture_file({FilmTable::kWidth, FilmTable::kHeight, 4, texels}, format,
                                       precision);

@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "formats/table_format.h"
 #include "matc/runtime/film_table.h"
@@ -17,7 +18,11 @@ namespace matc {
 // values to the last digits (a float rounding can tip either way between two of them).
 runtime::FilmTable stored_as(runtime::FilmTable table, LutPrecision precision);
 
-// The file's bytes: film_table_texels at `precision`; the header format names its arrays after
+// Its texels as the file holds them (runtime::film_table_texels of stored_as): what a renderer
+// uploads.
+std::vector<float> stored_film_texels(const runtime::FilmTable& table, LutPrecision precision);
+
+// The file's bytes: stored_film_texels at `precision`; the header format names its arrays after
 // `material_name`.
 std::string encode_film_table(const runtime::FilmTable& table, LutFormat format,
                               LutPrecision precision, std::string_view material_name);
