@@ -67,10 +67,15 @@ ordered_json film_table_json(const runtime::FilmTable& table) {
     fresnel.push_back(rgb_json(node));
   for (const Rgb& node : table.preintegrated)
     preintegrated.push_back(rgb_json(node));
+  // The layout's numbers come from the table's constants, so the text cannot fall behind them.
+  using runtime::FilmTable;
   return {{"layout",
-           "fresnel: F at mu = (i / 63)^2; preintegrated: Fbar at NdotV = (i / 64)^2 and "
-           "roughness 0.05 + 0.95 (j / 16)^2, entry 65 j + i; read linearly and bilinearly "
-           "between nodes, as the shaders do"},
+           fmt::format("fresnel: F at mu = (i / {})^2; preintegrated: Fbar at NdotV = (i / {})^2 "
+                       "and roughness {} + {} (j / {})^2, entry {} j + i; read linearly and "
+                       "bilinearly between nodes, as the shaders do",
+                       FilmTable::kCosineNodes - 1, FilmTable::kViewNodes - 1,
+                       FilmTable::kMinRoughness, 1.0 - FilmTable::kMinRoughness,
+                       FilmTable::kRoughnessNodes - 1, FilmTable::kViewNodes)},
           {"fresnel", std::move(fresnel)},
           {"preintegrated", std::move(preintegrated)}};
 }
