@@ -130,13 +130,29 @@ std::array<Vec3, kDiskLightSides> sphere_light_polygon(const Vec3& point, const 
   return disk_light_polygon(centre, towards, disk_radius);
 }
 
+namespace {
+
+// A preintegrated Fresnel times the LTC integral of the polygon: what the shaders compute.
+Rgb scaled_by_ltc_integral(Rgb fbar, const LtcTableView& ltc, double ndotv, double roughness,
+                           std::span<const Vec3> vertices) {
+  const double integral = ltc_polygon_integral(sample_ltc(ltc, ndotv, roughness), vertices);
+  for (double& channel : fbar)
+    channel *= integral;
+  return fbar;
+}
+
+}  // namespace
+
 Rgb polygon_light_ltc(const Coefficients& coefficients, const LutView& lut, const LtcTableView& ltc,
                       double ndotv, double roughness, std::span<const Vec3> vertices) {
-  const double integral = ltc_polygon_integral(sample_ltc(ltc, ndotv, roughness), vertices);
-  Rgb radiance = evaluate_fbar(coefficients, lut, ndotv, roughness);
-  for (double& channel : radiance)
-    channel *= integral;
-  return radiance;
+  return scaled_by_ltc_integral(evaluate_fbar(coefficients, lut, ndotv, roughness), ltc, ndotv,
+                                roughness, vertices);
+}
+
+Rgb film_polygon_light_ltc(const FilmTable& table, const LtcTableView& ltc, double ndotv,
+                           double roughness, std::span<const Vec3> vertices) {
+  return scaled_by_ltc_integral(film_preintegrated(table, ndotv, roughness), ltc, ndotv, roughness,
+                                vertices);
 }
 
 }  // namespace matc::runtime

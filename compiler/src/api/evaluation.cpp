@@ -184,15 +184,45 @@ void add_quad_light_description(const EvaluationInputs& options, const std::vect
   if (options.reference) out["quad_light"]["reference_samples"] = options.light_samples;
 }
 
+// A filmed metal's quad light: LTC times the film table's Fbar, as an engine multiplies
+// matc_ltc_quad_integral by the film's preintegrated texel (there is no quality level for films:
+// it follows the 4-term basis across the lobe), beside LTC times the exact split sum and the
+// exact integral of the film's curve.
+void add_film_quad_light(const EvaluationInputs& options, const std::vector<Vec3>& quad,
+                         const runtime::FilmTable& table, const ReflectanceCurve& curve,
+                         ordered_json& out) {
+  const runtime::LtcTableView ltc = runtime::shipped_ltc_table();
+  add_quad_light_description(options, quad, ltc, out);
+  const TabulatedCurve tabulated(curve);
+  ordered_json ours = ordered_json::array(), exact_fresnel = ordered_json::array(),
+               reference = ordered_json::array(), standard_error = ordered_json::array();
+  for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
+    const double ndotv = options.ndotv[i], roughness = options.roughness[i];
+    ours.push_back(runtime::film_polygon_light_ltc(table, ltc, ndotv, roughness, quad));
+    if (!options.reference) continue;
+    const double integral =
+        runtime::ltc_polygon_integral(runtime::sample_ltc(ltc, ndotv, roughness), quad);
+    runtime::Rgb with_exact = SplitSumEstimator(ndotv, roughness).integrate(tabulated);
+    for (double& channel : with_exact)
+      channel *= integral;
+    exact_fresnel.push_back(with_exact);
+    const AreaLightEstimate estimate = integrate_polygon_light(
+        GgxLobe(ndotv, roughness), quad, [&](double mu) { return tabulated.at(mu); },
+        options.light_samples);
+    reference.push_back(estimate.mean);
+    standard_error.push_back(estimate.standard_error);
+  }
+  out["L_ltc"] = std::move(ours);
+  if (!options.reference) return;
+  out["L_ltc_exact_fresnel"] = std::move(exact_fresnel);
+  out["L_reference"] = std::move(reference);
+  out["L_reference_standard_error"] = std::move(standard_error);
+}
+
 // A filmed metal (docs/thin-film.md): F and Fbar from its tables as its shader functions read
 // them, beside the exact curve and the split sum of it.
 void add_filmed(const EvaluationInputs& options, const CompiledMaterial& compiled,
                 ordered_json& out) {
-  if (options.quad) {
-    throw std::invalid_argument(
-        "quad_light: a filmed metal's area lights are not compiled yet (its image light and "
-        "direct lights are); evaluate without a quad light");
-  }
   // The table as a file of the table's precision stores it, what a renderer samples.
   const runtime::FilmTable table = stored_as(*compiled.film_table, options.precision);
   const auto curve = make_reflectance_curve(compiled.material, compiled.color);
@@ -225,6 +255,7 @@ void add_filmed(const EvaluationInputs& options, const CompiledMaterial& compile
       out["Fbar_reference"] = std::move(reference);
     }
   }
+  if (options.quad) add_film_quad_light(options, *options.quad, table, *curve, out);
   if (options.metalness) add_metal_rough(options, filmed_metal_lobes(table), out);
 }
 

@@ -344,6 +344,29 @@ TEST(PublicEvaluation, OptionsCheckedAndTheJsonIsTheEvaluation) {
   EXPECT_NE(table_path.find("\"F_table\""), std::string::npos) << table_path;
 }
 
+// A filmed metal's quad light is LTC times its own table's Fbar (as an engine multiplies
+// matc_ltc_quad_integral by the film's preintegrated texel): one integral for the three channels,
+// and near the exact integral of the film's curve (LTC's own error: the film's is its table's).
+TEST(PublicEvaluation, FilmedMetalQuadLightIsLtcTimesItsTable) {
+  matc::api::EvaluationOptions options;
+  options.ndotv = {0.5, 0.8};
+  options.roughness = {0.3, 0.6};
+  options.quad_light = matc::api::parse_quad_light("-0.5,-1,1.5; -2,-1,0.5; -2,1,0.5; -0.5,1,1.5");
+  const nlohmann::json out =
+      nlohmann::json::parse(matc::api::evaluate(example("titanium_anodised_blue.json"), options));
+  ASSERT_TRUE(out.contains("L_ltc")) << out.dump();
+  EXPECT_FALSE(out.contains("L_ltc_following"));  // the quality level follows the 4-term basis
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double integral = out["L_ltc"][i][0].get<double>() / out["Fbar"][i][0].get<double>();
+    for (std::size_t c = 0; c < 3; ++c) {
+      EXPECT_NEAR(out["L_ltc"][i][c].get<double>(), integral * out["Fbar"][i][c].get<double>(),
+                  1e-12);
+      EXPECT_NEAR(out["L_ltc"][i][c].get<double>(), out["L_reference"][i][c].get<double>(), 0.005)
+          << "point " << i << ", channel " << c;
+    }
+  }
+}
+
 TEST(PublicOptions, NamesAreTheRegistrys) {
   EXPECT_EQ(matc::api::option_names("basis"),
             (std::vector<std::string>{"powers", "extended", "paper", "f82"}));

@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <span>
 
+#include "matc/runtime/film_table.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/lut.h"
 #include "matc/runtime/vec3.h"
@@ -107,5 +108,10 @@ std::array<Vec3, kDiskLightSides> sphere_light_polygon(const Vec3& point, const 
 // I_ltc(polygon) * Fbar per channel, Fbar = sum_i c_i bbar_i from the preintegrated table.
 Rgb polygon_light_ltc(const Coefficients& coefficients, const LutView& lut, const LtcTableView& ltc,
                       double ndotv, double roughness, std::span<const Vec3> vertices);
+
+// The same for a filmed metal (docs/thin-film.md): I_ltc(polygon) times its own table's Fbar, as
+// an engine multiplies matc_ltc_quad_integral by the film's preintegrated texel.
+Rgb film_polygon_light_ltc(const FilmTable& table, const LtcTableView& ltc, double ndotv,
+                           double roughness, std::span<const Vec3> vertices);
 
 }  // namespace matc::runtime
