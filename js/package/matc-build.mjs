@@ -8,12 +8,13 @@
 //   - f0-table.mjs, coefficient-rows.mjs: F0 tables and coefficient rows, checked;
 //   - sources.mjs: useMatcFresnel's options and coefficient sources, checked;
 //   - basis-layers.mjs: a per-material build's bases (matc --basis auto) and each one's functions.
-export { compiledMatcBuildFiles, loadMatcBuildFiles, matcBuildFiles } from "./integration/build-directory.mjs";
+export { compiledMatcBuildFiles, kFilmTableHeight, kFilmTableWidth, loadMatcBuildFiles, matcBuildFiles }
+  from "./integration/build-directory.mjs";
 export { MatcWebError, kMatcVersion } from "./integration/errors.mjs";
 export { f0TableTexels, kF0TableEntries } from "./integration/f0-table.mjs";
 export { checkGltfLoaderOptions, gltfExtensionMaterial, gltfMetals, isGltfMetalRough, kGltfFresnelExtension }
   from "./integration/gltf-extension.mjs";
 export { declarationsGlsl, lobesGlsl, pixelSetupGlsl } from "./integration/physical-glsl.mjs";
 export { anchorPattern, checkAnchors, countAnchor } from "./integration/shader-patches.mjs";
-export { checkAreaLights, checkCoatedAreaLights, rgbOf, sourceBasis, sourceKind } from "./integration/sources.mjs";
+export { checkAreaLights, checkIridescence, checkLayeredAreaLights, rgbOf, sourceBasis, sourceKind } from "./integration/sources.mjs";
 export { basisAliasesGlsl, basisDefine, basisSuffix, buildBases, holdsBasis } from "./integration/basis-layers.mjs";

@@ -73,7 +73,7 @@ import { checkBadInputs, recordConsoleErrors } from "/checks/page-bad-inputs.mjs
   const original = ShaderStore.IncludesShadersStore.lightFragment;
   await checkBadInputs(out, {
     loadMatcBuild: (url) => loadMatcBuild(url, scene), build: directoryBuild, material: materials.beryllium,
-    coated: materials[config.coated],
+    coated: materials[config.coated], filmed: materials[config.filmed],
     texture: constant(scene, [1, 1, 1]),
     useMatc: (source, options) => useMatcFresnel(new PBRMaterial("refused", scene), build, source, options),
     changeEngine: () => {

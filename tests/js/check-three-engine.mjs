@@ -65,7 +65,7 @@ import { coatedF0TableSource, probeBuild } from "/checks/page-probe-build.mjs";
   }
   const original = THREE.ShaderChunk.lights_physical_pars_fragment;
   await checkBadInputs(out, {
-    loadMatcBuild, build: directoryBuild, material: sources.beryllium.material, coated: sources[config.coated].material,
+    loadMatcBuild, build: directoryBuild, material: sources.beryllium.material, coated: sources[config.coated].material, filmed: sources[config.filmed].material,
     texture: constant([1, 1, 1]),
     useMatc: (source, options) => useMatcFresnel(new THREE.MeshPhysicalMaterial(), build, source, options),
     changeEngine: () => {

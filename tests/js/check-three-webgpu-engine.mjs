@@ -62,7 +62,7 @@ import { coatedF0TableSource, probeBuild } from "/checks/page-probe-build.mjs";`
   const lightingModel = THREE.PhysicalLightingModel.prototype;
   const original = lightingModel.indirectSpecular;
   await checkBadInputs(out, {
-    loadMatcBuild, build: directoryBuild, material: materials.beryllium, coated: materials[config.coated], texture: white,
+    loadMatcBuild, build: directoryBuild, material: materials.beryllium, coated: materials[config.coated], filmed: materials[config.filmed], texture: white,
     useMatc: (source, options) => useMatcFresnel(new THREE.MeshPhysicalNodeMaterial(), build, source, options),
     changeEngine: () => {
       // A three.js whose metal image lighting no longer goes through computeMultiscattering.

@@ -18,6 +18,9 @@ export const kProbeRoughness = [0.3, 0.7];
 export const kProbeMaterials = ["figure2_edge_tint", "beryllium"];
 // A coated metal (measured copper under a tinted lacquer of roughness 0.1): both lobes.
 export const kProbeCoated = "copper_lacquered";
+// A filmed metal (measured titanium under a 45 nm anodic film, docs/thin-film.md): F and Fbar from
+// its own table.
+export const kProbeFilmed = "titanium_anodised_blue";
 export const kPointLight = { position: [0.3, 0.2, 0.8], intensity: 0.7 };
 // A rect area light above the probe plane: centre, size and radiance (each engine places its
 // corners: three.js's looks at the origin, Babylon's faces -z).
@@ -138,7 +141,7 @@ function quadLightsAtProbes(matc, args, ndotv, roughness, rect) {
 // out/copper_lacquered_without_snippet.json (a coated material without its shader snippet).
 export function prepareProbeBuilds(matc, materialsDir, dir) {
   const out = join(dir, "out");
-  const materialFiles = [...kProbeMaterials, kProbeCoated].map((name) => join(materialsDir, `${name}.json`));
+  const materialFiles = [...kProbeMaterials, kProbeCoated, kProbeFilmed].map((name) => join(materialsDir, `${name}.json`));
   run(matc, ["-q", "-o", out, "--emit", "glsl,wgsl,json,lut,ltc,coefficient-table", ...gBasisOptions,
              "--lut-precision", "f32", "--coefficient-table-precision", "f32", ...materialFiles,
              f0TableCoatedFile(join(dir, "f0_table_coated_factor"), kF0TableCoated.factor)]);
@@ -161,8 +164,9 @@ export function prepareProbeBuilds(matc, materialsDir, dir) {
 }
 
 // The renders a page makes: every material at every roughness under each light, and under the rect
-// light at the quality level (render.areaLights, useMatcFresnel's option); the textured and baked
-// metals under the environment and the point light.
+// light at the quality level (render.areaLights, useMatcFresnel's option); the filmed metal at
+// every roughness under each light (matc's LTC: the quality level takes bare metals); the textured
+// and baked metals under the environment and the point light.
 export function probeRenders() {
   const renders = [];
   for (const source of kProbeMaterials) {
@@ -173,6 +177,11 @@ export function probeRenders() {
       // The rect light at the quality level (areaLights "quality").
       renders.push({ key: `${source} rect quality r=${roughness}`, source, light: "rect", roughness,
                      areaLights: "quality" });
+    }
+  }
+  for (const roughness of kProbeRoughness) {
+    for (const light of ["environment", "point", "rect"]) {
+      renders.push({ key: `${kProbeFilmed} ${light} r=${roughness}`, source: kProbeFilmed, light, roughness, areaLights: "matc" });
     }
   }
   for (const source of [...kColourSources, kF0TableCoated.name]) {
@@ -195,7 +204,7 @@ export function probeRenders() {
 // coatedFiles[name] = { file, compiledIn } a coated one's material file and compiled folder instead.
 // coatLobeOnly: a coated metal's coat lobe alone (what lies over whatever is under the coat).
 export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibility, rect, renders,
-                                 bare = kProbeMaterials, coated = [kProbeCoated], coatedFiles = {},
+                                 bare = [...kProbeMaterials, kProbeFilmed], coated = [kProbeCoated], coatedFiles = {},
                                  coatLobeOnly = false }) {
   const wanted = new Set(renders.map((render) => render.key));
   const ndotv = kProbePixels.map((pixel) => Math.fround(dot(kNormal, viewAt(pixel))));
@@ -333,6 +342,8 @@ export const kFailures = {
   coated_f0_table_without_under_coat: "f0Table: a coated metal's table needs underCoatCoefficients",
   unknown_area_light_option: 'areaLights: "fast"; allowed: "matc", "quality", "engine"',
   coated_quality_area_lights: "is coated: the quality-level area lights take bare metals",
+  filmed_quality_area_lights: "is filmed: the quality-level area lights take bare metals",
+  filmed_f0_table: "is filmed: its own table holds the film over one metal",
   coated_without_snippet: "a coated material needs its own shader snippet",
 };
 
@@ -424,12 +435,12 @@ export async function runProbeCheck(engine, [matc, materialsDir, webDir, mode]) 
   const dir = mkdtempSync(join(tmpdir(), "matc-engine-probes-"));
   try {
     const { out, roots } = prepareProbeBuilds(matc, materialsDir, dir);
-    const materials = [...kProbeMaterials, kProbeCoated];
+    const materials = [...kProbeMaterials, kProbeCoated, kProbeFilmed];
     const compileInPage = mode === "--compile-in-page";
     const renders = probeRenders().filter((render) => !compileInPage || materials.includes(render.source));
     const materialTexts = Object.fromEntries(
       materials.map((name) => [name, readFileSync(join(materialsDir, `${name}.json`), "utf8")]));
-    const config = { materials, coated: kProbeCoated, pixels: kProbePixels, renders, point: kPointLight,
+    const config = { materials, coated: kProbeCoated, filmed: kProbeFilmed, pixels: kProbePixels, renders, point: kPointLight,
                      rect: engine.rect?.light, textured: kTextured, compileInPage, materialTexts,
                      schlick: { color: kSchlick.f0, ...zeroF0Coefficients(matc, dir) },
                      f0Table: { color: kF0Table.f0, ...f0TableOf(matc, join(dir, "f0_table_entries"), kF0TableMaterial) },

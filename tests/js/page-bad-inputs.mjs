@@ -8,7 +8,7 @@ export function recordConsoleErrors(out) {
   console.error = (...args) => { out.consoleErrors.push(args.join(" ")); consoleError(...args); };
 }
 
-export async function checkBadInputs(out, { loadMatcBuild, build, material, coated, useMatc, changeEngine, texture }) {
+export async function checkBadInputs(out, { loadMatcBuild, build, material, coated, filmed, useMatc, changeEngine, texture }) {
   out.failures = {};
   const failure = async (key, action) => {
     const before = out.consoleErrors.length;
@@ -42,5 +42,10 @@ export async function checkBadInputs(out, { loadMatcBuild, build, material, coat
   await failure("coated_f0_table_without_under_coat", () =>
     useMatc({ material: coated, f0Table: { coefficients: Array.from({ length: 33 }, () => coated.coefficients) } }));
   await failure("coated_quality_area_lights", () => useMatc({ material: coated }, { areaLights: "quality" }));
+  // The quality level follows the 4-term basis across the lobe, which a film's table is not.
+  await failure("filmed_quality_area_lights", () => useMatc({ material: filmed }, { areaLights: "quality" }));
+  // A film's table holds one metal: its F0 is not followed per pixel.
+  await failure("filmed_f0_table", () =>
+    useMatc({ material: filmed, f0Table: { coefficients: Array.from({ length: 33 }, () => filmed.coefficients) } }));
   await failure("coated_without_snippet", () => build.loadMaterial(`${coated.name}_without_snippet`));
 }

@@ -17,7 +17,7 @@ import { ShaderStore } from "@babylonjs/core/Engines/shaderStore.js";
 import { Vector3, Vector4 } from "@babylonjs/core/Maths/math.vector.js";
 import { AbstractEngine } from "@babylonjs/core/Engines/abstractEngine.js";
 import "@babylonjs/core/Shaders/pbr.fragment.js";  // registers the shader text the anchors are checked against
-import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, checkCoatedAreaLights, declarationsGlsl,
+import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, checkIridescence, checkLayeredAreaLights, declarationsGlsl,
          f0TableTexels, kF0TableEntries, matcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind,
          basisDefine, buildBases, sourceBasis }
   from "../matc-build.mjs";
@@ -316,24 +316,37 @@ function preparePlugin(material, build, source, areaLights, metalRough) {
   checkAnchors(`@babylonjs/core ${version}`, shaderSources(), kPatches, tested);
   const kind = sourceKind(build, source);
   const coat = source.material?.coat;
+  const film = source.material?.film ?? null;
   // Babylon's rect lights have no coat lobe of their own: matc's LTC draws it.
-  if (coat) checkCoatedAreaLights(source.material, areaLights, ["matc"]);
+  checkLayeredAreaLights(source.material, areaLights, ["matc"]);
   const colour = (value) => new Vector3(...rgbOf(value));
   const rows = kind === "material" ? source.material.coefficients : kind === "schlick" ? source.schlick.zeroF0Coefficients : null;
   const f0Table = kind === "f0Table" ? f0TableTexture(source.f0Table, material.getScene()) : null;
   // A per-material build: the define of the source's basis (null for the first; basis-layers.mjs).
   const basisDefineName = basisDefine(build, sourceBasis(build, source));
-  return { build, source, kind, areaLights, metalRough, f0Table, coat, basisDefineName, coatId: coat ? coatIdOf(source.material.coat.snippet) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
+  return { build, source, kind, areaLights, metalRough, f0Table, coat, film, basisDefineName,
+           filmTable: film && filmTexture(film.table, material.getScene()),
+           snippetId: coat || film ? snippetIdOf((coat ?? film).snippet) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
            coefficients: rows && rows.map((row) => new Vector4(...row)) };
 }
 
-// Babylon keys its compiled effects on the defines: each coated material's snippet (its constants)
-// gets a number of its own; by text, not name, so that a material recompiled under the same name
-// with another coat gets a new effect.
-const kCoatIds = new Map();
-function coatIdOf(snippet) {
-  if (!kCoatIds.has(snippet)) kCoatIds.set(snippet, kCoatIds.size + 1);
-  return kCoatIds.get(snippet);
+// Babylon keys its compiled effects on the defines: each coated or filmed material's snippet (its
+// constants) gets a number of its own; by text, not name, so that a material recompiled under the
+// same name with another coat or film gets a new effect.
+const kSnippetIds = new Map();
+function snippetIdOf(snippet) {
+  if (!kSnippetIds.has(snippet)) kSnippetIds.set(snippet, kSnippetIds.size + 1);
+  return kSnippetIds.get(snippet);
+}
+
+// A filmed metal's table (build.loadMaterial's film.table) as a texture of `scene`, made once per
+// table and scene: every material drawing the metal shares it.
+const kFilmTextures = new WeakMap();
+function filmTexture(table, scene) {
+  const byScene = kFilmTextures.get(table) ?? new Map();
+  kFilmTextures.set(table, byScene);
+  if (!byScene.has(scene)) byScene.set(scene, tableTexture(table, scene));
+  return byScene.get(scene);
 }
 
 // Babylon's base class asks for the shader code while it constructs the plugin, before the
@@ -353,7 +366,7 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
             { MATC_FRESNEL: false, MATC_SOURCE_UNIFORM: false, MATC_SOURCE_SCHLICK: false,
               MATC_SOURCE_F0_TABLE: false, MATC_SOURCE_TABLE: false,
               MATC_SOURCE_BAKED: false, MATC_BAKED_F0: false, MATC_ENGINE_LTC: false,
-              MATC_QUALITY_LTC: false, MATC_COATED: false, MATC_COAT_ID: 0, MATC_METAL_ROUGH: false,
+              MATC_QUALITY_LTC: false, MATC_COATED: false, MATC_FILMED: false, MATC_SNIPPET_ID: 0, MATC_METAL_ROUGH: false,
               ...Object.fromEntries(buildBases(build).slice(1).map((basis) => [basisDefine(build, basis), false])) });
       Object.assign(this, pendingPlugin);
     } finally {
@@ -381,7 +394,8 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
     defines.MATC_ENGINE_LTC = this.areaLights === "engine";
     defines.MATC_QUALITY_LTC = this.areaLights === "quality";
     defines.MATC_COATED = Boolean(this.coat);
-    defines.MATC_COAT_ID = this.coatId;
+    defines.MATC_FILMED = Boolean(this.film);
+    defines.MATC_SNIPPET_ID = this.snippetId;
     defines.MATC_METAL_ROUGH = Boolean(this.metalRough);
     for (const basis of buildBases(this.build).slice(1)) {
       const name = basisDefine(this.build, basis);
@@ -405,11 +419,11 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
 
   getSamplers(samplers) {
     samplers.push("matc_lut", "matc_ltc", "matc_coefficient_table", "matc_reflectivity_map", "matc_edge_tint_map",
-                  "matc_c2_map", "matc_c3_map", "matc_f0_map", "matc_f0_table");
+                  "matc_c2_map", "matc_c3_map", "matc_f0_map", "matc_f0_table", "matc_film_table");
   }
 
   isReadyForSubMesh() {
-    const textures = [this.build.lut, this.build.ltc, ...this._sourceTextures()].filter(Boolean);
+    const textures = [this.build.lut, this.build.ltc, this.filmTable, ...this._sourceTextures()].filter(Boolean);
     return textures.every((texture) => texture.isReady());
   }
 
@@ -429,6 +443,7 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
     uniformBuffer.updateVector3("matc_edge_tint", this.edgeTint);
     uniformBuffer.setTexture("matc_lut", this.build.lut);
     uniformBuffer.setTexture("matc_ltc", this.build.ltc ?? this.build.lut);
+    if (this.filmTable) uniformBuffer.setTexture("matc_film_table", this.filmTable);
     if (this.kind === "table") {
       uniformBuffer.setTexture("matc_coefficient_table", this.build.coefficientTable);
       uniformBuffer.setTexture("matc_reflectivity_map", this.source.reflectivityMap);
@@ -465,10 +480,10 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc", m
   if (!material?.getClassName || !["PBRMaterial"].includes(material.getClassName())) {
     throw new MatcWebError("useMatcFresnel takes a Babylon.js PBRMaterial");
   }
-  if (material.iridescence?.isEnabled) {
-    throw new MatcWebError("iridescence replaces the base Fresnel; it cannot be combined with matc's");
-  }
+  checkIridescence(Boolean(material.iridescence?.isEnabled), source?.material?.film);
   material.matcFresnel = new MatcFresnelPlugin(material, build, source, areaLights, metalRough);
+  // A filmed metal: matc's film in place of Babylon's iridescence.
+  if (material.matcFresnel.film) material.iridescence.isEnabled = false;
   const coat = material.matcFresnel.coat;
   if (coat) {
     // The coat's lobe and layering are the compiled material's (weight, index, colour, roughness):

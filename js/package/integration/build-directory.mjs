@@ -46,6 +46,8 @@ const kVkFormats = {
 
 // A table: { size (its width), height, channels, half, data } with data a Float32Array or a Uint16Array of half
 // floats, row-major, first row = texcoord v = 0. From a KTX2 file or raw texels (`--lut raw`).
+// `entry`: { file, size, precision } of a square table (`layers` of them side by side), or
+// { file, width, height, precision } of another shape (a filmed metal's table).
 async function loadTable(url, entry, channels, layers = 1) {
   const hint = "rerun matc with this output directory";
   const bytes = new Uint8Array(await (await fetchChecked(url, hint)).arrayBuffer());
@@ -69,18 +71,24 @@ async function loadTable(url, entry, channels, layers = 1) {
               data: format.half ? new Uint16Array(buffer) : new Float32Array(buffer) };
   } else if (entry.file.endsWith(".bin")) {
     const half = entry.precision === "f16";
-    const texels = bytes.byteLength / (channels * (half ? 2 : 4));
-    const height = Math.round(Math.sqrt(texels / layers));
+    const bytesPerValue = half ? 2 : 4;
+    if (bytes.byteLength % (channels * bytesPerValue) !== 0) {
+      throw new MatcWebError(`${url}: ${bytes.byteLength} bytes, not whole ${channels}-channel texels; ${hint}`);
+    }
+    const texels = bytes.byteLength / (channels * bytesPerValue);
+    const height = entry.height ?? Math.round(Math.sqrt(texels / layers));
     const buffer = bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength);
-    table = { size: height * layers, height, channels, half, data: half ? new Uint16Array(buffer) : new Float32Array(buffer) };
+    table = { size: Math.round(texels / height), height, channels, half,
+              data: half ? new Uint16Array(buffer) : new Float32Array(buffer) };
   } else {
     throw new MatcWebError(`${url}: the web integrations read KTX2 and raw tables, not ${entry.file} ` +
                            "(compile with --lut ktx2 or --lut raw)");
   }
-  const width = entry.size * layers;
-  if (table.size !== width || table.height !== entry.size || table.data.length !== width * entry.size * channels) {
+  const width = entry.width ?? entry.size * layers;
+  const height = entry.height ?? entry.size;
+  if (table.size !== width || table.height !== height || table.data.length !== width * height * channels) {
     throw new MatcWebError(`${url}: ${table.size}x${table.height} texels, the manifest says ` +
-                           `${width}x${entry.size}; ${hint}`);
+                           `${width}x${height}; ${hint}`);
   }
   return table;
 }
@@ -141,8 +149,10 @@ export async function loadMatcBuildFiles(url, { language = "glsl" } = {}) {
                                `but the build's tables are basis ${manifest.basis} from matc ` +
                                `${manifest.matc_version}: they do not belong together`);
       }
+      const film = material.film_table
+          ? await loadFilm(material, manifest, at, language, file) : null;
       return { name: material.name, basis, coefficients: checkedRows(material.coefficients, file, "coefficients"),
-               coat: material.coat ? await loadCoat(material, at(`${name}.${language}`), file) : null };
+               coat: material.coat ? await loadCoat(material, at(`${name}.${language}`), file) : null, film };
     },
   };
 }
@@ -199,8 +209,14 @@ export async function compiledMatcBuildFiles(matc, { language = "glsl", options 
         color: Array.from(compiled.coat.color), underCoatCoefficients: rows(compiled.coat.underCoatCoefficients),
         snippet: texts.materialSource(language, compiled),
       };
+      // A filmed metal's table as the library holds it (f32) and its snippet, which samples it.
+      const filmTable = compiled.filmTable;
+      const film = filmTable && {
+        table: { size: filmTable.width, height: filmTable.height, channels: 4, half: false, data: filmTable.texels },
+        snippet: texts.materialSource(language, compiled),
+      };
       return { name: compiled.name, basis: compiled.basis, coefficients: rows(compiled.coefficients),
-               coat: coat ?? null };
+               coat: coat ?? null, film: film ?? null };
     },
   };
 }
@@ -234,6 +250,31 @@ const kNamesTakenByLibrary = new Set([
 export const isSnippetName = (name) => typeof name === "string" && name.length <= 64 &&
                                 /^[A-Za-z][A-Za-z0-9_]*$/.test(name) && !name.includes("__") &&
                                 !kNamesTakenByLibrary.has(name);
+
+// The width and height of a filmed metal's table (FilmTable in runtime/include/matc/runtime/film_table.h).
+export const kFilmTableWidth = 65;
+export const kFilmTableHeight = 18;
+
+// A filmed metal's table (<name>.film.<ext>, the file the manifest lists for it, at the table's
+// precision) and its shader snippet, which samples it (docs/thin-film.md): { table, snippet }.
+async function loadFilm(material, manifest, at, language, file) {
+  if (!isSnippetName(material.name)) {
+    throw new MatcWebError(`${file}: name "${material.name}" is not the identifier matc's snippets use`);
+  }
+  const entry = (manifest.materials ?? []).find((listed) => listed?.name === material.name);
+  const tableFile = entry?.files?.map?.((written) => written?.file)
+                        .find((name) => typeof name === "string" && name.startsWith(`${material.name}.film.`));
+  if (!tableFile) {
+    throw new MatcWebError(`${file}: a filmed metal, but the manifest lists no ${material.name}.film.<ext> ` +
+                           "(its own table); compile with --emit lut among the outputs");
+  }
+  const table = await loadTable(at(tableFile), { file: tableFile, width: kFilmTableWidth, height: kFilmTableHeight,
+                                                 precision: manifest.lut?.precision }, 4);
+  const snippet = await (await fetchChecked(at(`${material.name}.${language}`),
+                                            "a filmed metal needs its own shader snippet; compile with the shader " +
+                                            "language among --emit")).text();
+  return { table, snippet };
+}
 
 // A coated material's coat (its <name>.json's coat section) and its shader snippet, whose
 // functions the integrations call for both lobes: { weight, ior, roughness, color,

@@ -30,16 +30,33 @@ ${colours}#elif defined(MATC_SOURCE_F0_TABLE)
 ${vectors}#endif
 MatcFresnelCoefficients matc_c;  // this pixel's coefficients
 vec4 matc_bbar;                  // and its texel of matc_lut, set before the lights
+#ifdef MATC_FILMED
+	uniform highp sampler2D matc_film_table;  // a filmed metal's own table (docs/thin-film.md)
+	vec4 matc_film_bbar;                      // its Fbar texel at the pixel's (NdotV, roughness)
+#endif
 `;
 }
 
 // What the patched light paths call for the base lobe, and for a coated material's coat lobe
-// (docs/coating.md): the library's functions on this pixel's coefficients, or, for a material
+// (docs/coating.md): the library's functions on this pixel's coefficients, for a filmed metal its
+// snippet's on its own table (matc_film_table, MATC_FILMED), or, for a material
 // loaded with a coat (build.loadMaterial), its own snippet's (<name>.glsl: the metal seen through
 // the coat, attenuated and tinted by it, and the coat's dielectric Fresnel with its weight).
 // matc_coat_bbar is matc_lut's texel at the coat's roughness and matc_ndotv the pixel's NdotV,
 // set before the lights with the rest.
 export function lobesGlsl(material) {
+  if (material?.film) {
+    // A filmed metal (docs/thin-film.md): F and Fbar from its own table, sampled by its snippet's
+    // functions; its 4-term coefficients (matc_c) give F0 for the multiple scattering.
+    const name = material.name;
+    return `
+${material.film.snippet}
+vec3 matc_base_fresnel(float mu) { return matc_fresnel_${name}(MATC_FILM_FRESNEL(matc_film_table, mu)); }
+vec3 matc_base_preintegrated() { return matc_fresnel_preintegrated_${name}(matc_film_bbar); }
+vec3 matc_base_compensation() { return matc_energy_compensation(matc_c, matc_bbar); }
+float matc_coat_transmission() { return 1.0; }  // no coat over the engine's dielectric
+`;
+  }
   if (!material?.coat) {
     return `
 vec3 matc_base_fresnel(float mu) { return matc_source_fresnel(matc_c, mu); }
@@ -109,6 +126,9 @@ export function pixelSetupGlsl({ uv, baseColour, ndotv, roughness, coatRoughness
 	matc_c = MatcFresnelCoefficients(matc_red, matc_green, matc_blue);
 #endif
 	matc_bbar = texture(matc_lut, matc_source_lut_texcoord(${ndotv}, ${roughness}));
+#ifdef MATC_FILMED
+	matc_film_bbar = MATC_FILM_PREINTEGRATED(matc_film_table, ${ndotv}, ${roughness});
+#endif
 #ifdef MATC_COATED
 	matc_ndotv = ${ndotv};
 	matc_coat_bbar = texture(matc_lut, matc_lut_texcoord(matc_ndotv, ${coatRoughness}));

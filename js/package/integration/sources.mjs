@@ -5,14 +5,27 @@ import { checkedZeroF0Rows } from "./coefficient-rows.mjs";
 import { MatcWebError } from "./errors.mjs";
 import { checkedF0Table } from "./f0-table.mjs";
 
-// Checks the areaLights option against what a coated material takes in an integration
-// (`allowed`): the quality level's area lights take bare metals.
-export function checkCoatedAreaLights(material, areaLights, allowed = ["matc", "engine"]) {
-  if (allowed.includes(areaLights)) return;
+// Checks the areaLights option against what a coated material (`allowed`) or a filmed one takes in
+// an integration: the quality level's area lights take bare metals (they follow the 4-term basis
+// across the lobe, which a film's table is not).
+export function checkLayeredAreaLights(material, areaLights, allowed = ["matc", "engine"]) {
+  if (!material?.coat && !material?.film) return;
+  const permitted = material.coat ? allowed : ["matc", "engine"];
+  if (permitted.includes(areaLights)) return;
   const why = areaLights === "quality" ? "the quality-level area lights take bare metals"
                                        : `its coat lobe needs matc's LTC on rect lights (areaLights "${areaLights}")`;
-  throw new MatcWebError(`${material.name} is coated: ${why}; use areaLights ` +
-                         allowed.map((value) => `"${value}"`).join(" or "));
+  throw new MatcWebError(`${material.name} is ${material.coat ? "coated" : "filmed"}: ${why}; use areaLights ` +
+                         permitted.map((value) => `"${value}"`).join(" or "));
+}
+
+// The engine's own iridescence (glTF's KHR_materials_iridescence: the film over a dielectric base)
+// replaces the base Fresnel: a filmed matc metal takes its place (the integrations switch the
+// engine's off), a bare one cannot be combined with it.
+export function checkIridescence(engineIridescence, film) {
+  if (engineIridescence && !film) {
+    throw new MatcWebError("iridescence replaces the base Fresnel; it cannot be combined with matc's " +
+                           "(a matc material with a film takes its place)");
+  }
 }
 
 // A colour option of a source (reflectivity, edgeTint): [r, g, b], one grey value, or 1 when absent.
@@ -40,6 +53,10 @@ export function sourceKind(build, source) {
   }
   if (source?.f0Table) {
     if (!source.material) throw new MatcWebError("an F0 table (f0Table) comes with its { material }");
+    if (source.material.film) {
+      throw new MatcWebError(`${source.material.name} is filmed: its own table holds the film over one metal, ` +
+                             "so its F0 is not followed per pixel (f0Table)");
+    }
     checkedF0Table(source.f0Table, Boolean(source.material.coat), "f0Table");
   }
   if (source?.material) {

@@ -39,13 +39,14 @@ export function matcGltfPlugin({ matc = null, build, compile = {}, areaLights = 
     matc, build, compile, what: "matcGltfPlugin (WebGPU)",
     make: (material, source, metalRough) => {
       if (!material.isMeshStandardMaterial) throw new MatcWebError("three.js built no MeshStandardMaterial for it");
-      // A coated metal made from the extension carries its snippet; this build makes its functions.
-      if (source.material?.coat && !source.material.coat.functions) build.withCoatFunctions(source.material);
+      // A coated or filmed metal made from the extension carries its snippet; this build makes its functions.
+      const layer = source.material?.coat ?? source.material?.film;
+      if (layer && !layer.functions) build.withSnippetFunctions(source.material);
       return useMatcFresnel(nodeMaterialOf(material), build, source, { areaLights, metalRough });
     },
   });
   // A build of matc/three (WebGL: GLSL) passes the shared check; its metals could not draw here.
-  if (typeof build.withCoatFunctions !== "function") {
+  if (typeof build.withSnippetFunctions !== "function") {
     throw new MatcWebError("matcGltfPlugin (WebGPU) takes matc/three/webgpu's loadMatcBuild(...), a WGSL build");
   }
   return plugin;

@@ -16,8 +16,8 @@ import { BRDF_GGX, BRDF_Lambert, F_Schlick, LTC_Evaluate, LTC_Uv, clearcoatNorma
          diffuseColor, diffuseContribution, float, mat3, ivec2, metalness, normalView, positionView,
          positionViewDirection, roughness, specularColor, specularF90, step, texture, textureLoad, uniform, uv,
          vec3, vec4, wgsl, wgslFn } from "three/tsl";
-import { f0TableTexture, sampleTrilinearly, tableTexture } from "./textures.mjs";
-import { MatcWebError, basisSuffix, buildBases, checkAnchors, checkAreaLights, checkCoatedAreaLights,
+import { f0TableTexture, filmTexture, sampleTrilinearly, tableTexture } from "./textures.mjs";
+import { MatcWebError, basisSuffix, buildBases, checkAnchors, checkAreaLights, checkIridescence, checkLayeredAreaLights,
          matcBuildFiles, rgbOf, sourceBasis, sourceKind } from "../matc-build.mjs";
 
 export { MatcWebError };
@@ -146,7 +146,8 @@ export async function loadMatcBuild(source) {
   // A coated material's lobes: its own snippet (<name>.wgsl) through wgslFn. The base lobe's
   // take the coefficient rows in air and under the coat (layerRows): the material's own, or a
   // textured metal's per pixel from its F0 table (the snippet's matc_fresnel_textured_<name>).
-  const withCoatFunctions = (material) => {
+  const withSnippetFunctions = (material) => {
+    if (material.film) return withFilmFunctions(material);
     if (!material.coat) return material;
     const snippet = wgsl(material.coat.snippet);
     const name = material.name;
@@ -168,10 +169,29 @@ export async function loadMatcBuild(source) {
     };
     return material;
   };
-  // withCoatFunctions: for a coated material made elsewhere with this build's WGSL snippet (a glTF
+  // A filmed metal's lobe: its snippet's functions on texels of its own table (docs/thin-film.md),
+  // read where the library's matc_film_*_texcoord put them.
+  const withFilmFunctions = (material) => {
+    const snippet = wgsl(material.film.snippet);
+    const name = material.name;
+    const fn = (code) => wgslFn(code, [library, snippet]);
+    material.film.texture = filmTexture(THREE, material.film.table);
+    material.film.functions = {
+      fresnelTexcoord: wgslFn("fn matc_three_film_fresnel_texcoord(mu: f32) -> vec2f { " +
+                              "return matc_film_fresnel_texcoord(mu); }", [library]),
+      preintegratedTexcoord: wgslFn("fn matc_three_film_preintegrated_texcoord(ndotv: f32, roughness: f32) -> vec2f { " +
+                                    "return matc_film_preintegrated_texcoord(ndotv, roughness); }", [library]),
+      fresnel: fn(`fn matc_three_film_fresnel_${name}(film_texel: vec4f) -> vec3f { ` +
+                  `return matc_fresnel_${name}(film_texel); }`),
+      preintegrated: fn(`fn matc_three_film_preintegrated_${name}(film_texel: vec4f) -> vec3f { ` +
+                        `return matc_fresnel_preintegrated_${name}(film_texel); }`),
+    };
+    return material;
+  };
+  // withSnippetFunctions: for a coated (or filmed) material made elsewhere with this build's WGSL snippet (a glTF
   // metal's from its MATC_materials_fresnel, ./matc-gltf-webgpu.mjs).
-  return { ...files, lut, ltc, coefficientTable, functions, functionsByBasis, withCoatFunctions,
-           async loadMaterial(name) { return withCoatFunctions(await loadMaterial(name)); } };
+  return { ...files, lut, ltc, coefficientTable, functions, functionsByBasis, withSnippetFunctions,
+           async loadMaterial(name) { return withSnippetFunctions(await loadMaterial(name)); } };
 }
 
 // A coated material's base-lobe arguments: the rows in air and under the coat, by parameter name.
@@ -212,6 +232,11 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
         this.matcCoatPreintegrated = coat.functions.coatPreintegrated({ coat_bbar: coatBbar }).toConst("matc_coat_preintegrated");
         // glTF's metal-rough model under the coat: what three's dielectric reflects times this.
         this.matcTransmission = coat.functions.transmission({ ndotv }).toConst("matc_coat_transmission");
+      } else if (this.matc.film) {
+        // A filmed metal: its table's Fbar texel at (NdotV, roughness).
+        const film = this.matc.film;
+        const texel = texture(film.texture, film.functions.preintegratedTexcoord({ ndotv, roughness })).level(0);
+        this.matcPreintegrated = film.functions.preintegrated({ film_texel: texel }).toConst("matc_preintegrated");
       } else {
         this.matcPreintegrated = functions.preintegrated({ ...rows, bbar: this.matcBbar }).toConst("matc_preintegrated");
       }
@@ -282,9 +307,11 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
     const halfDir = lightDirection.add(positionViewDirection).normalize();
     const dotVH = positionViewDirection.dot(halfDir).clamp();
     const ggx = BRDF_GGX({ lightDirection, f0: vec3(1), f90: float(1), roughness });
-    const coat = this.matc.coat;
+    const { coat, film } = this.matc;
     const fresnel = coat ? coat.functions.baseFresnel({ ...layerRows(this.matc.rows, coat.underCoatRows), mu: dotVH })
-                         : this.matc.functions.fresnel({ ...this.matc.rows, mu: dotVH });
+                  : film ? film.functions.fresnel({
+                    film_texel: texture(film.texture, film.functions.fresnelTexcoord({ mu: dotVH })).level(0) })
+                  : this.matc.functions.fresnel({ ...this.matc.rows, mu: dotVH });
     if (this.matc.metalRough) {
       this.metalRoughDirect({ irradiance: dotNL.mul(lightColor), ggx, fresnel, dotVH, reflectedLight });
     } else {
@@ -456,7 +483,7 @@ function coatOf(compiled, material, areaLights, underCoat = null) {
   if (!material.isMeshPhysicalNodeMaterial) {
     throw new MatcWebError(`${compiled.name} is coated: its coat lobe needs a MeshPhysicalNodeMaterial`);
   }
-  checkCoatedAreaLights(compiled, areaLights);
+  checkLayeredAreaLights(compiled, areaLights);
   if (!compiled.coat.functions) throw new MatcWebError("useMatcFresnel (WebGPU) needs this module's loadMaterial");
   material.clearcoat = 1;
   material.clearcoatRoughness = compiled.coat.roughness;
@@ -487,14 +514,19 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc", m
   if (!build?.functions) throw new MatcWebError("useMatcFresnel (WebGPU) needs this module's loadMatcBuild");
   // three's lighting model computes an iridescent material's Fresnel itself (the film over the
   // metal with its extinction taken as 0), in place of the one matc replaces.
-  if (material.iridescence > 0) {
-    throw new MatcWebError("iridescence replaces the base Fresnel; it cannot be combined with matc's");
-  }
+  // A filmed matc metal takes its place (matc's film over the metal's own index).
+  const film = source?.material?.film ?? null;
+  checkIridescence(material.iridescence > 0, film);
   checkLightingModel();
+  if (film) {
+    checkLayeredAreaLights(source.material, areaLights);
+    if (!film.functions) throw new MatcWebError("useMatcFresnel (WebGPU) needs this module's loadMaterial");
+    material.iridescence = 0;
+  }
   const { underCoat, ...rows } = coefficientRows(build, source);
   const coat = source?.material?.coat ? coatOf(source.material, material, areaLights, underCoat) : null;
   const matc = { rows, functions: build.functionsByBasis?.[sourceBasis(build, source)] ?? build.functions, lut: build.lut, ltc: build.ltc, url: build.url, areaLights, coat,
-                 source, metalRough };
+                 film, source, metalRough };
   if (!metalRough) {
     material.metalness = 1;
     material.metalnessNode = null;

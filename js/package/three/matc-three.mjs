@@ -11,8 +11,8 @@
 //   const gold = new THREE.MeshPhysicalMaterial({ roughness: 0.3 });
 //   useMatcFresnel(gold, build, { material: await build.loadMaterial("gold") });
 import * as THREE from "three";
-import { f0TableTexture, sampleTrilinearly, tableTexture } from "./textures.mjs";
-import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, checkCoatedAreaLights, declarationsGlsl,
+import { f0TableTexture, filmTexture, sampleTrilinearly, tableTexture } from "./textures.mjs";
+import { MatcWebError, anchorPattern, checkAnchors, checkAreaLights, checkIridescence, checkLayeredAreaLights, declarationsGlsl,
          matcBuildFiles, lobesGlsl, pixelSetupGlsl, rgbOf, sourceKind, basisDefine, sourceBasis } from "../matc-build.mjs";
 
 export { MatcWebError };
@@ -312,9 +312,8 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc", m
   if (!material?.isMeshStandardMaterial) {
     throw new MatcWebError("useMatcFresnel takes a MeshStandardMaterial or MeshPhysicalMaterial");
   }
-  if (material.iridescence > 0) {
-    throw new MatcWebError("iridescence replaces the base Fresnel; it cannot be combined with matc's");
-  }
+  const film = source?.material?.film;
+  checkIridescence(material.iridescence > 0, film);
   if (!kTestedThreeRevisions.includes(THREE.REVISION)) {
     console.warn(`matc-three: three.js r${THREE.REVISION} is untested (tested: r` +
                  `${kTestedThreeRevisions.join(", r")}); its chunks still match the patches`);
@@ -324,10 +323,15 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc", m
   if (coat && !material.isMeshPhysicalMaterial) {
     throw new MatcWebError(`${source.material.name} is coated: its coat lobe needs a MeshPhysicalMaterial`);
   }
-  if (coat) checkCoatedAreaLights(source.material, areaLights);
+  checkLayeredAreaLights(source.material, areaLights);
   // Checked now, so that a changed engine fails here and not at the first frame.
   const { [kMainShader]: main, ...chunks } = patchChunks(THREE.ShaderChunk, build.library, source.material, build);
   Object.assign(uniforms, { matc_lut: { value: build.lut }, matc_ltc: { value: build.ltc ?? build.lut } });
+  if (film) {
+    // A filmed metal: its own table, and matc's film in place of three's iridescence.
+    uniforms.matc_film_table = { value: filmTexture(THREE, film.table) };
+    material.iridescence = 0;
+  }
   if (!metalRough) {
     material.metalness = 1;
     material.metalnessMap = null;
@@ -336,6 +340,7 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc", m
   if (metalRough) material.defines.MATC_METAL_ROUGH = "";
   if (uv) material.defines.USE_UV = "";
   if (f0) material.defines.MATC_BAKED_F0 = "";
+  if (film) material.defines.MATC_FILMED = "";
   // A per-material build: the source's basis' functions (and its layer of the table).
   const layerDefine = basisDefine(build, sourceBasis(build, source));
   if (layerDefine) material.defines[layerDefine] = "";
@@ -370,7 +375,7 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc", m
   // A coated material's constants are in its snippet: one program per snippet (not per name: a
   // material recompiled in the page under the same name with another coat needs its own).
   material.customProgramCacheKey = () =>
-    `matc:${define}:${areaLights}:${metalRough}:${build.url}:${coat ? source.material.coat.snippet : ""}`;
+    `matc:${define}:${areaLights}:${metalRough}:${build.url}:${(coat ?? film)?.snippet ?? ""}`;
   material.needsUpdate = true;
   return material;
 }

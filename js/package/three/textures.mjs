@@ -19,6 +19,14 @@ export function tableTexture(THREE, table) {
                       table.half ? THREE.HalfFloatType : THREE.FloatType, THREE.LinearFilter);
 }
 
+// A filmed metal's table (build.loadMaterial's film.table) as a texture, made once per table: every
+// material drawing the metal shares it.
+const kFilmTextures = new WeakMap();
+export function filmTexture(THREE, table) {
+  if (!kFilmTextures.has(table)) kFilmTextures.set(table, tableTexture(THREE, table));
+  return kFilmTextures.get(table);
+}
+
 // A textured metal's F0 table (a source's f0Table, as f0TableTexels lays it out) as the unfiltered
 // RGBA32F texture MATC_COEFFICIENTS_FROM_F0_TABLE reads with texelFetch (the interpolation is the
 // shader's).
