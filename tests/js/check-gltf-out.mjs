@@ -112,6 +112,12 @@ function checkExtensions(json, build, asset) {
             extension.coat.ior === compiled.coat.input.ior && extension.coat.weight === compiled.coat.input.weight,
             `${asset}: ${extension.name}'s coat differs from <name>.json's`);
       check(sameJson(extension.maxError, compiled.coat.accuracy.layered.max), `${asset}: ${extension.name} maxError`);
+    } else if (compiled.film_table) {
+      // A filmed metal carries its film and its table's rows, as <name>.json holds them.
+      check(sameJson(extension.film.table, compiled.film_table) && extension.film.ior === compiled.input.film.ior &&
+            extension.film.thickness === compiled.input.film.thickness,
+            `${asset}: ${extension.name}'s film differs from <name>.json's`);
+      check(sameJson(extension.maxError, compiled.accuracy.film_table.max), `${asset}: ${extension.name} maxError`);
     } else {
       check(sameJson(extension.maxError, compiled.accuracy.decomposition.max), `${asset}: ${extension.name} maxError`);
     }

@@ -335,6 +335,41 @@ for (const language of ["glsl", "wgsl"]) {
     }
     compiled.dispose();
   }
+  // A filmed metal's extension (matc gltf's, from KHR_materials_iridescence on a metal): its table's
+  // rows become the texels compileGltf's material holds, to float precision; malformed members are
+  // refused with the member named.
+  const foil = JSON.stringify({ asset: { version: "2.0" }, extensionsUsed: ["KHR_materials_iridescence"], materials: [{
+    name: "Foil", pbrMetallicRoughness: { baseColorFactor: [0.9, 0.9, 0.9, 1], metallicFactor: 1 },
+    extensions: { KHR_materials_iridescence: { iridescenceFactor: 1, iridescenceThicknessMaximum: 350 } } }] });
+  const written = matc_.compileGltf(foil, "foil.gltf", { basis: "powers" });
+  const foilExtension = JSON.parse(new TextDecoder().decode(written.bytes)).materials[0].extensions.MATC_materials_fresnel;
+  const filmedMaterial = await gltfExtensionMaterial(build, foilExtension);
+  const texels = written.materials[0].filmTable.texels;
+  check(filmedMaterial.film?.table.size === 65 && filmedMaterial.film.table.height === 18 &&
+        filmedMaterial.film.table.data.every((value, i) => Math.abs(value - texels[i]) <= 6e-8 * Math.max(1, Math.abs(value))),
+        `${language}: the extension's film table is not the compiled one`);
+  const withFilm = (change) => ({ ...foilExtension, film: { ...foilExtension.film, ...change } });
+  const rowsOf = (field, edit) => ({ table: { ...foilExtension.film.table, [field]: edit(foilExtension.film.table[field]) } });
+  for (const [extension, pattern] of [
+    [{ ...foilExtension, film: 7 }, /film must be an object/],
+    [withFilm({ weight: 2 }), /film\.weight must be a number in \[0, 1\]/],
+    [withFilm({ thickness: -1 }), /film\.thickness must be a number in \[0, 2000\]/],
+    [withFilm({ ior: "1.3" }), /film\.ior must be a number in \[1, 3\]/],
+    [withFilm(rowsOf("fresnel", (rows) => rows.slice(1))), /film\.table\.fresnel must be 65 rows of 3 finite numbers/],
+    [withFilm(rowsOf("preintegrated", (rows) => [[null, 0, 0], ...rows.slice(1)])),
+     /film\.table\.preintegrated must be 1105 rows of 3 finite numbers/],
+    [withFilm({ table: null }), /film\.table\.fresnel must be 65 rows/],
+    [{ ...foilExtension, coat: {} }, /a film with a coat or per-pixel data/],
+  ]) {
+    let message = "no error";
+    try {
+      await gltfExtensionMaterial(build, extension);
+    } catch (error) {
+      message = error.message;
+    }
+    check(pattern.test(message), `${language}: MATC_materials_fresnel.film bad: ${message}`);
+  }
+  written.materials.forEach((material) => material.dispose());
 }
 
 // Arguments: refused with the argument named, the instance usable after.

@@ -18,7 +18,7 @@ function kindOf(material) {
   const matc = material.userData.matc;
   if (!matc) return "engine";
   const { source } = matc;
-  const kind = source.schlick ? "per-pixel" : (source.f0Table ? "f0-table " : "") + (source.material.coat ? "coated" : "bare");
+  const kind = source.schlick ? "per-pixel" : (source.f0Table ? "f0-table " : "") + (source.material.coat ? "coated" : source.material.film ? "filmed" : "bare");
   const template = /from MATC_materials_fresnel/.test(source.material?.coat?.snippet) ? " (template)" : "";
   return `${kind} ${matc.from}${template}`;
 }

@@ -227,6 +227,16 @@ ordered_json gltf_fresnel_extension(const CompiledMaterial& compiled,
                    {"underCoatCoefficients", coefficient_rows_json(c.under_coat)},
                    {"coatCoefficients", {c.coat[0], c.coat[1], c.coat[2], c.coat[3]}}};
   }
+  if (compiled.film_table) {
+    // A filmed metal (docs/thin-film.md): its shaders read F and Fbar from its own table, carried
+    // here so that an engine needs no other file; `coefficients` give F0.
+    const FilmInput& film = *compiled.material.film;
+    out["maxError"] = rgb_json(compiled.film_table_error.max_abs);
+    out["film"] = {{"weight", film.weight},
+                   {"ior", film.ior},
+                   {"thickness", film.thickness_nm},
+                   {"table", film_table_json(*compiled.film_table)}};
+  }
   return out;
 }
 

@@ -326,13 +326,13 @@ function preparePlugin(material, build, source, areaLights, metalRough) {
   const basisDefineName = basisDefine(build, sourceBasis(build, source));
   return { build, source, kind, areaLights, metalRough, f0Table, coat, film, basisDefineName,
            filmTable: film && filmTexture(film.table, material.getScene()),
-           snippetId: coat || film ? snippetIdOf((coat ?? film).snippet) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
+           snippetId: coat ? snippetIdOf(coat.snippet) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
            coefficients: rows && rows.map((row) => new Vector4(...row)) };
 }
 
-// Babylon keys its compiled effects on the defines: each coated or filmed material's snippet (its
-// constants) gets a number of its own; by text, not name, so that a material recompiled under the
-// same name with another coat or film gets a new effect.
+// Babylon keys its compiled effects on the defines: each coated material's snippet (its constants)
+// gets a number of its own; by text, not name, so that a material recompiled under the same name
+// with another coat gets a new effect.
 const kSnippetIds = new Map();
 function snippetIdOf(snippet) {
   if (!kSnippetIds.has(snippet)) kSnippetIds.set(snippet, kSnippetIds.size + 1);

@@ -150,7 +150,7 @@ export async function loadMatcBuildFiles(url, { language = "glsl" } = {}) {
                                `${manifest.matc_version}: they do not belong together`);
       }
       const film = material.film_table
-          ? await loadFilm(material, manifest, at, language, file) : null;
+          ? await loadFilm(material, manifest, at, file) : null;
       return { name: material.name, basis, coefficients: checkedRows(material.coefficients, file, "coefficients"),
                coat: material.coat ? await loadCoat(material, at(`${name}.${language}`), file) : null, film };
     },
@@ -209,11 +209,10 @@ export async function compiledMatcBuildFiles(matc, { language = "glsl", options 
         color: Array.from(compiled.coat.color), underCoatCoefficients: rows(compiled.coat.underCoatCoefficients),
         snippet: texts.materialSource(language, compiled),
       };
-      // A filmed metal's table as the library holds it (f32) and its snippet, which samples it.
+      // A filmed metal's table as the library holds it (f32).
       const filmTable = compiled.filmTable;
       const film = filmTable && {
         table: { size: filmTable.width, height: filmTable.height, channels: 4, half: false, data: filmTable.texels },
-        snippet: texts.materialSource(language, compiled),
       };
       return { name: compiled.name, basis: compiled.basis, coefficients: rows(compiled.coefficients),
                coat: coat ?? null, film: film ?? null };
@@ -256,11 +255,9 @@ export const kFilmTableWidth = 65;
 export const kFilmTableHeight = 18;
 
 // A filmed metal's table (<name>.film.<ext>, the file the manifest lists for it, at the table's
-// precision) and its shader snippet, which samples it (docs/thin-film.md): { table, snippet }.
-async function loadFilm(material, manifest, at, language, file) {
-  if (!isSnippetName(material.name)) {
-    throw new MatcWebError(`${file}: name "${material.name}" is not the identifier matc's snippets use`);
-  }
+// precision; docs/thin-film.md): { table }, which the integrations sample through the library's
+// matc_film_* functions (the material's snippet returns the texels as they are).
+async function loadFilm(material, manifest, at, file) {
   const entry = (manifest.materials ?? []).find((listed) => listed?.name === material.name);
   const tableFile = entry?.files?.map?.((written) => written?.file)
                         .find((name) => typeof name === "string" && name.startsWith(`${material.name}.film.`));
@@ -268,12 +265,8 @@ async function loadFilm(material, manifest, at, language, file) {
     throw new MatcWebError(`${file}: a filmed metal, but the manifest lists no ${material.name}.film.<ext> ` +
                            "(its own table); compile with --emit lut among the outputs");
   }
-  const table = await loadTable(at(tableFile), { file: tableFile, width: kFilmTableWidth, height: kFilmTableHeight,
-                                                 precision: manifest.lut?.precision }, 4);
-  const snippet = await (await fetchChecked(at(`${material.name}.${language}`),
-                                            "a filmed metal needs its own shader snippet; compile with the shader " +
-                                            "language among --emit")).text();
-  return { table, snippet };
+  return { table: await loadTable(at(tableFile), { file: tableFile, width: kFilmTableWidth, height: kFilmTableHeight,
+                                                  precision: manifest.lut?.precision }, 4) };
 }
 
 // A coated material's coat (its <name>.json's coat section) and its shader snippet, whose

@@ -6,7 +6,7 @@ import { buildBases, holdsBasis } from "./basis-layers.mjs";
 import { checkedFiniteRows, checkedZeroF0Rows, finiteRows } from "./coefficient-rows.mjs";
 import { MatcWebError } from "./errors.mjs";
 import { checkedF0Table } from "./f0-table.mjs";
-import { isSnippetName } from "./build-directory.mjs";
+import { isSnippetName, kFilmTableHeight, kFilmTableWidth } from "./build-directory.mjs";
 
 // The name of the glTF vendor extension `matc gltf` writes (docs/gltf.md).
 export const kGltfFresnelExtension = "MATC_materials_fresnel";
@@ -54,8 +54,31 @@ async function extensionCoatedMaterial(build, extension, rows) {
   return { name: extension.name, basis: extension.basis, coefficients: rows, coat: { ...materialCoat, snippet } };
 }
 
+// A filmed metal's film from its extension (docs/thin-film.md): { weight, ior, thickness, table },
+// the table's RGB rows (F at 65 cosines, Fbar at 65 x 17 nodes) as the 65 x 18 RGBA texels its
+// file holds (alpha 1), each checked as the schema has it.
+function extensionFilm(film) {
+  const what = `${kGltfFresnelExtension}.film`;
+  if (typeof film !== "object" || film === null) throw new MatcWebError(`${what} must be an object`);
+  const rows = (field, count) => {
+    const value = film.table?.[field];
+    const valid = Array.isArray(value) && value.length === count &&
+                  value.every((row) => Array.isArray(row) && row.length === 3 && row.every(Number.isFinite));
+    // Finite, not within [0, 1]: a colour outside the working space's gamut stays (docs/color-spaces.md).
+    if (!valid) throw new MatcWebError(`${what}.table.${field} must be ${count} rows of 3 finite numbers`);
+    return value;
+  };
+  const fresnel = rows("fresnel", kFilmTableWidth);
+  const preintegrated = rows("preintegrated", kFilmTableWidth * (kFilmTableHeight - 1));
+  const data = new Float32Array(kFilmTableWidth * kFilmTableHeight * 4);
+  [...fresnel, ...preintegrated].forEach((rgb, texel) => data.set([...rgb, 1], texel * 4));
+  return { weight: checkedNumber(film.weight, 0, 1, `${what}.weight`), ior: checkedNumber(film.ior, 1, 3, `${what}.ior`),
+           thickness: checkedNumber(film.thickness, 0, 2000, `${what}.thickness`),
+           table: { size: kFilmTableWidth, height: kFilmTableHeight, channels: 4, half: false, data } };
+}
+
 // A glTF material's MATC_materials_fresnel (`extension`) as build.loadMaterial gives a material:
-// { name, basis, coefficients, coat }. A bare metal's coefficients are the extension's own. A
+// { name, basis, coefficients, coat, film? }. A bare metal's coefficients are the extension's own. A
 // coated metal's two-lobe shader snippet is the build directory's when that compiled the same
 // asset (`matc -o DIR asset.glb`: its manifest lists the metal; its <name>.json and snippet,
 // checked to hold the extension's coefficients), else matc's template filled with the extension's
@@ -80,6 +103,14 @@ export async function gltfExtensionMaterial(build, extension) {
   }
   if (extension.f0Table !== undefined) {
     perPixel.f0Table = checkedF0Table(extension.f0Table, Boolean(extension.coat), `${kGltfFresnelExtension}.f0Table`);
+  }
+  if (extension.film !== undefined) {
+    if (extension.coat !== undefined || Object.keys(perPixel).length > 0) {
+      throw new MatcWebError(`its ${kGltfFresnelExtension} has a film with a coat or per-pixel data, which matc does ` +
+                             "not write (a film's table holds one metal, not under a coat)");
+    }
+    return { name: extension.name, basis: extension.basis, coefficients: rows, coat: null,
+             film: extensionFilm(extension.film) };
   }
   if (!extension.coat) {
     return { name: extension.name, basis: extension.basis, coefficients: rows, coat: null, ...perPixel };
@@ -137,6 +168,11 @@ export function gltfMetals({ matc = null, build, compile = {}, json, warn, note 
       return { schlick: { basis: metal.basis, zeroF0Coefficients: perPixel.zeroF0Coefficients } };
     }
     if (perPixel?.f0Table) return { material: metal, f0Table: perPixel.f0Table };
+    if (metal.film) {
+      note(index, "its baseColorTexture is not followed (a filmed metal's table holds the film over one metal); " +
+                  "shaded at its baseColorFactor");
+      return { material: metal };
+    }
     note(index, `its baseColorTexture is not followed (its ${kGltfFresnelExtension} has no f0Table: ` +
                 "compiled in a working space other than lin_rec709); shaded at its baseColorFactor");
     return { material: metal };

@@ -39,20 +39,19 @@ vec4 matc_bbar;                  // and its texel of matc_lut, set before the li
 
 // What the patched light paths call for the base lobe, and for a coated material's coat lobe
 // (docs/coating.md): the library's functions on this pixel's coefficients, for a filmed metal its
-// snippet's on its own table (matc_film_table, MATC_FILMED), or, for a material
+// own table's texels (matc_film_table, MATC_FILMED), or, for a material
 // loaded with a coat (build.loadMaterial), its own snippet's (<name>.glsl: the metal seen through
 // the coat, attenuated and tinted by it, and the coat's dielectric Fresnel with its weight).
 // matc_coat_bbar is matc_lut's texel at the coat's roughness and matc_ndotv the pixel's NdotV,
 // set before the lights with the rest.
 export function lobesGlsl(material) {
   if (material?.film) {
-    // A filmed metal (docs/thin-film.md): F and Fbar from its own table, sampled by its snippet's
-    // functions; its 4-term coefficients (matc_c) give F0 for the multiple scattering.
-    const name = material.name;
+    // A filmed metal (docs/thin-film.md): F and Fbar are its own table's texels (what its
+    // snippet's matc_fresnel_<name>(film_texel) returns), fetched by the library; its 4-term
+    // coefficients (matc_c) give F0 for the multiple scattering.
     return `
-${material.film.snippet}
-vec3 matc_base_fresnel(float mu) { return matc_fresnel_${name}(MATC_FILM_FRESNEL(matc_film_table, mu)); }
-vec3 matc_base_preintegrated() { return matc_fresnel_preintegrated_${name}(matc_film_bbar); }
+vec3 matc_base_fresnel(float mu) { return MATC_FILM_FRESNEL(matc_film_table, mu).rgb; }
+vec3 matc_base_preintegrated() { return matc_film_bbar.rgb; }
 vec3 matc_base_compensation() { return matc_energy_compensation(matc_c, matc_bbar); }
 float matc_coat_transmission() { return 1.0; }  // no coat over the engine's dielectric
 `;

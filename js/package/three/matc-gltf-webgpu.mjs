@@ -39,9 +39,8 @@ export function matcGltfPlugin({ matc = null, build, compile = {}, areaLights = 
     matc, build, compile, what: "matcGltfPlugin (WebGPU)",
     make: (material, source, metalRough) => {
       if (!material.isMeshStandardMaterial) throw new MatcWebError("three.js built no MeshStandardMaterial for it");
-      // A coated or filmed metal made from the extension carries its snippet; this build makes its functions.
-      const layer = source.material?.coat ?? source.material?.film;
-      if (layer && !layer.functions) build.withSnippetFunctions(source.material);
+      // A coated metal made from the extension carries its snippet; this build makes its functions.
+      if (source.material?.coat && !source.material.coat.functions) build.withSnippetFunctions(source.material);
       return useMatcFresnel(nodeMaterialOf(material), build, source, { areaLights, metalRough });
     },
   });

@@ -109,6 +109,12 @@ export async function loadMatcBuild(source) {
           `MatcFresnelCoefficients(right_red, right_green, right_blue)).${channel}; }`, [library]);
     }
   }
+  // Filmed metals: where their own table's F and Fbar texels lie (docs/thin-film.md).
+  functions.filmFresnelTexcoord = wgslFn("fn matc_three_film_fresnel_texcoord(mu: f32) -> vec2f { " +
+                                         "return matc_film_fresnel_texcoord(mu); }", [library]);
+  functions.filmPreintegratedTexcoord = wgslFn("fn matc_three_film_preintegrated_texcoord(ndotv: f32, roughness: f32) " +
+                                               "-> vec2f { return matc_film_preintegrated_texcoord(ndotv, roughness); }",
+                                               [library]);
   if (ltc) {
     // Rect area lights (the library has matc's LTC functions when the build wrote its table).
     functions.ltcTexcoord = wgslFn("fn matc_three_ltc_texcoord(ndotv: f32, roughness: f32) -> vec2f { " +
@@ -147,7 +153,6 @@ export async function loadMatcBuild(source) {
   // take the coefficient rows in air and under the coat (layerRows): the material's own, or a
   // textured metal's per pixel from its F0 table (the snippet's matc_fresnel_textured_<name>).
   const withSnippetFunctions = (material) => {
-    if (material.film) return withFilmFunctions(material);
     if (!material.coat) return material;
     const snippet = wgsl(material.coat.snippet);
     const name = material.name;
@@ -169,26 +174,7 @@ export async function loadMatcBuild(source) {
     };
     return material;
   };
-  // A filmed metal's lobe: its snippet's functions on texels of its own table (docs/thin-film.md),
-  // read where the library's matc_film_*_texcoord put them.
-  const withFilmFunctions = (material) => {
-    const snippet = wgsl(material.film.snippet);
-    const name = material.name;
-    const fn = (code) => wgslFn(code, [library, snippet]);
-    material.film.texture = filmTexture(THREE, material.film.table);
-    material.film.functions = {
-      fresnelTexcoord: wgslFn("fn matc_three_film_fresnel_texcoord(mu: f32) -> vec2f { " +
-                              "return matc_film_fresnel_texcoord(mu); }", [library]),
-      preintegratedTexcoord: wgslFn("fn matc_three_film_preintegrated_texcoord(ndotv: f32, roughness: f32) -> vec2f { " +
-                                    "return matc_film_preintegrated_texcoord(ndotv, roughness); }", [library]),
-      fresnel: fn(`fn matc_three_film_fresnel_${name}(film_texel: vec4f) -> vec3f { ` +
-                  `return matc_fresnel_${name}(film_texel); }`),
-      preintegrated: fn(`fn matc_three_film_preintegrated_${name}(film_texel: vec4f) -> vec3f { ` +
-                        `return matc_fresnel_preintegrated_${name}(film_texel); }`),
-    };
-    return material;
-  };
-  // withSnippetFunctions: for a coated (or filmed) material made elsewhere with this build's WGSL snippet (a glTF
+  // withSnippetFunctions: for a coated material made elsewhere with this build's WGSL snippet (a glTF
   // metal's from its MATC_materials_fresnel, ./matc-gltf-webgpu.mjs).
   return { ...files, lut, ltc, coefficientTable, functions, functionsByBasis, withSnippetFunctions,
            async loadMaterial(name) { return withSnippetFunctions(await loadMaterial(name)); } };
@@ -234,9 +220,8 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
         this.matcTransmission = coat.functions.transmission({ ndotv }).toConst("matc_coat_transmission");
       } else if (this.matc.film) {
         // A filmed metal: its table's Fbar texel at (NdotV, roughness).
-        const film = this.matc.film;
-        const texel = texture(film.texture, film.functions.preintegratedTexcoord({ ndotv, roughness })).level(0);
-        this.matcPreintegrated = film.functions.preintegrated({ film_texel: texel }).toConst("matc_preintegrated");
+        const coordinates = functions.filmPreintegratedTexcoord({ ndotv, roughness });
+        this.matcPreintegrated = texture(this.matc.film, coordinates).level(0).rgb.toConst("matc_preintegrated");
       } else {
         this.matcPreintegrated = functions.preintegrated({ ...rows, bbar: this.matcBbar }).toConst("matc_preintegrated");
       }
@@ -309,8 +294,7 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
     const ggx = BRDF_GGX({ lightDirection, f0: vec3(1), f90: float(1), roughness });
     const { coat, film } = this.matc;
     const fresnel = coat ? coat.functions.baseFresnel({ ...layerRows(this.matc.rows, coat.underCoatRows), mu: dotVH })
-                  : film ? film.functions.fresnel({
-                    film_texel: texture(film.texture, film.functions.fresnelTexcoord({ mu: dotVH })).level(0) })
+                  : film ? texture(film, this.matc.functions.filmFresnelTexcoord({ mu: dotVH })).level(0).rgb
                   : this.matc.functions.fresnel({ ...this.matc.rows, mu: dotVH });
     if (this.matc.metalRough) {
       this.metalRoughDirect({ irradiance: dotNL.mul(lightColor), ggx, fresnel, dotVH, reflectedLight });
@@ -517,16 +501,16 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc", m
   // A filmed matc metal takes its place (matc's film over the metal's own index).
   const film = source?.material?.film ?? null;
   checkIridescence(material.iridescence > 0, film);
+  sourceKind(build, source);  // a filmed metal's source checked before its table becomes a texture
   checkLightingModel();
   if (film) {
     checkLayeredAreaLights(source.material, areaLights);
-    if (!film.functions) throw new MatcWebError("useMatcFresnel (WebGPU) needs this module's loadMaterial");
     material.iridescence = 0;
   }
   const { underCoat, ...rows } = coefficientRows(build, source);
   const coat = source?.material?.coat ? coatOf(source.material, material, areaLights, underCoat) : null;
   const matc = { rows, functions: build.functionsByBasis?.[sourceBasis(build, source)] ?? build.functions, lut: build.lut, ltc: build.ltc, url: build.url, areaLights, coat,
-                 film, source, metalRough };
+                 film: film && filmTexture(THREE, film.table), source, metalRough };
   if (!metalRough) {
     material.metalness = 1;
     material.metalnessNode = null;

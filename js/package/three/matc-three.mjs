@@ -375,7 +375,7 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc", m
   // A coated material's constants are in its snippet: one program per snippet (not per name: a
   // material recompiled in the page under the same name with another coat needs its own).
   material.customProgramCacheKey = () =>
-    `matc:${define}:${areaLights}:${metalRough}:${build.url}:${(coat ?? film)?.snippet ?? ""}`;
+    `matc:${define}:${areaLights}:${metalRough}:${Boolean(film)}:${build.url}:${coat ? source.material.coat.snippet : ""}`;
   material.needsUpdate = true;
   return material;
 }
