@@ -1,7 +1,7 @@
 // The look-development page (js/package/lookdev/, docs/lookdev.md), served from the staged npm
 // package as a project's node_modules and driven through its controls in headless Chromium
 // (lookdev-check-page.mjs). For materials chosen as a person would (a preset, a colour-picker
-// metal in ACEScg, typed n and k, a coated metal, a pasted material file, a pasted MaterialX
+// metal in ACEScg, typed n and k, a coated metal, a filmed one, a pasted material file, a pasted MaterialX
 // document and a pasted glTF asset of several metals, one chosen, a .gltf dropped with its buffer,
 // a .glb whose metals take their metalness from a texture or a factor):
 //   - no console error or warning, no uncaught exception;
@@ -87,6 +87,15 @@ const kCases = [
             input("#coat-weight", "0.85")], lights,
     refusals: [{ key: "coat index", steps: [input("#coat-ior", "1.01")], restore: [input("#coat-ior", "1.6")],
                  messageSelector: ".message[data-for='coat.ior']", control: "#coat-ior", phrase: "coat.ior: 1.01" }] },
+  // A measured metal under a thin film (its own table in the render; three.js's iridescence of the
+  // same film beside it), the coat switched off first.
+  { key: "filmed", name: "Ti_film", bare: true,
+    steps: [{ selector: "#coated", checked: false }, input("#preset", "Ti"), input("#name", "Ti_film"),
+            { selector: "#filmed", checked: true }, input("#film-ior", "2.3"), input("#film-thickness", "300"),
+            input("#film-weight", "0.9")], lights,
+    refusals: [{ key: "film thickness", steps: [input("#film-thickness", "5000")], restore: [input("#film-thickness", "300")],
+                 messageSelector: ".message[data-for='film.thickness']", control: "#film-thickness",
+                 phrase: "film.thickness: 5000 is out of range; a number in [0, 2000]" }] },
   { key: "pasted material file", name: "pasted_steel", bare: true,
     steps: [{ paste: JSON.stringify({ name: "pasted_steel", description: "pasted", roughness: 0.3,
                                       f82_tint: { f0: [0.56, 0.57, 0.58], tint: [0.9, 0.93, 1.0] } }) }],
@@ -207,7 +216,8 @@ try {
 
     // The plotted curves against the native library.
     const { mu } = shown.series;
-    const evaluated = JSON.parse(run(matc, ["eval", file, "--mu", mu.join(","),
+    // f32: a filmed metal's F is its table's, which the page's library holds at f32.
+    const evaluated = JSON.parse(run(matc, ["eval", file, "--lut-precision", "f32", "--mu", mu.join(","),
                                             ...(testCase.colorSpace ? ["--color-space", testCase.colorSpace] : [])]));
     const native = JSON.parse(execFileSync(apiDump, {
       input: `${JSON.stringify({ text: shown.exports.material, path: `${testCase.name}.json`, mu,
@@ -263,6 +273,8 @@ try {
   }
   const coated = result.cases.coated;
   check(coated?.labels?.[1]?.includes("F0 in coat"), `coated: the comparison's label ${coated?.labels}`);
+  const filmed = result.cases.filmed;
+  check(filmed?.labels?.[1]?.includes("iridescence"), `filmed: the comparison's label ${filmed?.labels}`);
 
   // The probes, each case under its lights, against the CPU runtime at the page's compile (linear Rec.709).
   // The asset view's full metal: the material file `matc import` writes for it.

@@ -31,13 +31,13 @@ export const rgbOf = (value) => (Array.isArray(value) ? value.slice(0, 3) : [val
 export const modelOf = (material) => kModels.find((model) => model in material) ?? "spectral";
 
 // The material with its keys in the order matc's files use (name, model, roughness, colour space,
-// coat), the others kept after them.
+// coat, film), the others kept after them.
 export function ordered(material) {
   const out = { name: material.name };
   if (material.description !== undefined) out.description = material.description;
   const model = modelOf(material);
   out[model] = material[model];
-  for (const key of ["roughness", "color_space", "coat"]) {
+  for (const key of ["roughness", "color_space", "coat", "film"]) {
     if (material[key] !== undefined) out[key] = material[key];
   }
   for (const [key, value] of Object.entries(material)) {
@@ -87,3 +87,14 @@ export function modelDefaults(model, f0) {
     default: return { preset: "Cu" };
   }
 }
+
+// A material file's film block with the defaults matc compiles it with (docs/material-format.md:
+// coverage 1, index 1.4, OpenPBR's), or null without one.
+export function filmOf(material) {
+  const film = material?.film;
+  if (!film || typeof film !== "object") return null;
+  return { weight: film.weight ?? 1, ior: film.ior ?? 1.4, thickness: film.thickness ?? 0 };
+}
+
+// The film a person switches on: anodic titanium's blue (index 2.4, 45 nm).
+export const kNewFilm = { ior: 2.4, thickness: 45 };

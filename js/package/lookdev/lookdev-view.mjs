@@ -21,13 +21,19 @@ export function f0SeenFromCoat(f0, ior) {
 }
 
 // three.js's own metal for a compiled material: colour F0 (clamped to [0, 1]), metalness 1; coated:
-// the base colour mix(F0, F0 seen from the coat x coat colour, weight) under three's clearcoat.
-export function engineMetalParameters(compiled, roughness) {
+// the base colour mix(F0, F0 seen from the coat x coat colour, weight) under three's clearcoat;
+// filmed (`film`: lookdev-state.mjs's filmOf), three's iridescence of the same film over the bare
+// metal's F0 (as glTF's KHR_materials_iridescence draws it: a dielectric base of that F0).
+export function engineMetalParameters(compiled, roughness, film = null) {
   const f0 = Array.from(compiled.f0, (v) => Math.min(Math.max(v, 0), 1));
+  const iridescence = film
+    ? { iridescence: film.weight, iridescenceIOR: film.ior, iridescenceThicknessMinimum: film.thickness,
+        iridescenceThicknessMaximum: film.thickness }
+    : { iridescence: 0, iridescenceIOR: 1.3, iridescenceThicknessMinimum: 100, iridescenceThicknessMaximum: 400 };
   const coat = compiled.coat;
-  if (!coat) return { color: f0, roughness, clearcoat: 0, clearcoatRoughness: 0 };
+  if (!coat) return { color: f0, roughness, clearcoat: 0, clearcoatRoughness: 0, ...iridescence };
   const color = f0.map((v, c) => (1 - coat.weight) * v + coat.weight * f0SeenFromCoat(v, coat.ior) * coat.color[c]);
-  return { color, roughness, clearcoat: coat.weight, clearcoatRoughness: coat.roughness };
+  return { color, roughness, clearcoat: coat.weight, clearcoatRoughness: coat.roughness, ...iridescence };
 }
 
 export class LookdevView {
@@ -126,10 +132,10 @@ export class LookdevView {
   // `compiled` (its CompiledMaterial, for three.js's own metal) and the roughness. A bare metal
   // after a bare metal of the same basis changes uniforms only; a coated one, or one of another
   // basis (its functions and its layer of the table), gets a program of its own.
-  setMaterial(loaded, compiled, roughness) {
+  setMaterial(loaded, compiled, roughness, film = null) {
     const current = this.matcMaterial;
     const shown = current?.userData.matc.source.material;
-    if (current && !loaded.coat && !shown.coat && shown.basis === loaded.basis) {
+    if (current && !loaded.coat && !shown.coat && !loaded.film && !shown.film && shown.basis === loaded.basis) {
       const { matc_red: red, matc_green: green, matc_blue: blue } = current.userData.matc.uniforms;
       [red, green, blue].forEach((uniform, c) => uniform.value.set(...loaded.coefficients[c]));
       current.userData.matc.source = { material: loaded };
@@ -138,11 +144,9 @@ export class LookdevView {
       this.matcMaterial = useMatcFresnel(new THREE.MeshPhysicalMaterial({ roughness }), this.build, { material: loaded });
       current?.dispose();
     }
-    const engine = engineMetalParameters(compiled, roughness);
-    this.engineMaterial.color.setRGB(...engine.color, THREE.LinearSRGBColorSpace);
-    this.engineMaterial.roughness = engine.roughness;
-    this.engineMaterial.clearcoat = engine.clearcoat;
-    this.engineMaterial.clearcoatRoughness = engine.clearcoatRoughness;
+    const { color, ...engine } = engineMetalParameters(compiled, roughness, film);
+    this.engineMaterial.color.setRGB(...color, THREE.LinearSRGBColorSpace);
+    Object.assign(this.engineMaterial, engine);
     this.requestFrame();
   }
 

@@ -9,8 +9,8 @@ import { compiledMatcBuildFiles } from "../matc-build.mjs";
 import { loadMatcBuild } from "../three/matc-three.mjs";
 import { disposeAsset, escapedText, loadAssetPair } from "./lookdev-asset.mjs";
 import { curveSeries, drawCurves } from "./lookdev-plot.mjs";
-import { defaultState, hexToLinear, kModels, linearToHex, materialText, modelDefaults, modelOf, rgbOf,
-         stateFromHash, stateToHash } from "./lookdev-state.mjs";
+import { defaultState, filmOf, hexToLinear, kModels, kNewFilm, linearToHex, materialText, modelDefaults, modelOf,
+         rgbOf, stateFromHash, stateToHash } from "./lookdev-state.mjs";
 import { LookdevView } from "./lookdev-view.mjs";
 
 const $ = (selector) => document.querySelector(selector);
@@ -58,6 +58,12 @@ function toControls(material, colorSpace) {
   $("#coat-roughness").value = coat?.roughness ?? 0;
   $("#coat-color").value = linearToHex(coat?.color ?? 1);
   for (const input of $$("fieldset:nth-of-type(2) input:not(#coated)")) input.disabled = !coat;
+  const film = filmOf(material);
+  $("#filmed").checked = Boolean(film);
+  $("#film-weight").value = film?.weight ?? 1;
+  $("#film-ior").value = film?.ior ?? kNewFilm.ior;
+  $("#film-thickness").value = film?.thickness ?? kNewFilm.thickness;
+  for (const input of $$("#film-controls input:not(#filmed)")) input.disabled = !film;
   $("#color-space").value = colorSpace;
   showRangeValues();
 }
@@ -102,6 +108,16 @@ function fromControls(previous, changed) {
     if (changed === $("#coat-roughness")) coat.roughness = rounded(Number($("#coat-roughness").value));
     if (changed === $("#coat-color")) coat.color = hexToLinear($("#coat-color").value);
     material.coat = coat;
+  }
+  if (!$("#filmed").checked) {
+    delete material.film;
+  } else {
+    const film = { ...(previous.film ?? kNewFilm) };
+    const typed = (input) => (input.value.trim() === "" ? Number.NaN : Number(input.value));
+    if (changed === $("#film-weight")) film.weight = rounded(Number($("#film-weight").value));
+    if (changed === $("#film-ior")) film.ior = typed($("#film-ior"));
+    if (changed === $("#film-thickness")) film.thickness = typed($("#film-thickness"));
+    material.film = film;
   }
   return material;
 }
@@ -192,7 +208,8 @@ const format = (values, digits = 4) => Array.from(values, (v) => v.toFixed(digit
 function showAccuracy(compiled) {
   const a = compiled.accuracy;
   const lines = [
-    `${compiled.name}: ${compiled.material.model}${compiled.coat ? ", coated" : ""}, basis ${compiled.basis}, ` +
+    `${compiled.name}: ${compiled.material.model}${compiled.coat ? ", coated" : ""}` +
+      `${compiled.filmTable ? ", filmed (its own table; the 4-term fit below gives F0)" : ""}, basis ${compiled.basis}, ` +
       `${app.state.colorSpace}`,
     `F0            ${format(compiled.f0)}`,
     `F82           ${format(compiled.f82)}`,
@@ -225,7 +242,7 @@ async function update() {
   }
   const compiledAt = performance.now();
   const loaded = await app.build.loadMaterial(renderCompiled);
-  app.view.setMaterial(loaded, renderCompiled, material.roughness ?? 0);
+  app.view.setMaterial(loaded, renderCompiled, material.roughness ?? 0, filmOf(material));
   const uploadedAt = performance.now();
   for (const old of new Set([app.compiled, app.renderCompiled])) {
     if (old && old !== compiled && old !== renderCompiled) old.dispose();
@@ -388,7 +405,7 @@ async function start() {
   app.view.setMode(app.state.view);
   $("#view-mode").value = app.state.view;
 
-  for (const control of $$("#controls input:not(#coated), #controls select:not(#model):not(#color-space):not(#choice)")) {
+  for (const control of $$("#controls input:not(#coated):not(#filmed), #controls select:not(#model):not(#color-space):not(#choice)")) {
     control.addEventListener("input", () => {
       showRangeValues();
       app.state.material = fromControls(app.state.material, control);
@@ -401,11 +418,13 @@ async function start() {
     toControls(app.state.material, app.state.colorSpace);
     scheduleUpdate();
   });
-  $("#coated").addEventListener("change", () => {
-    app.state.material = fromControls(app.state.material, $("#coated"));
-    toControls(app.state.material, app.state.colorSpace);
-    scheduleUpdate();
-  });
+  for (const toggle of [$("#coated"), $("#filmed")]) {
+    toggle.addEventListener("change", () => {
+      app.state.material = fromControls(app.state.material, toggle);
+      toControls(app.state.material, app.state.colorSpace);
+      scheduleUpdate();
+    });
+  }
   $("#color-space").addEventListener("change", () => {
     app.state.colorSpace = $("#color-space").value;
     scheduleUpdate();
@@ -454,7 +473,8 @@ async function start() {
   app.view.onFrame = (sides) => {
     const names = app.view.showAsset
       ? { matc: "matc's glTF loader", engine: "three.js's GLTFLoader" }
-      : { matc: "matc", engine: `three.js Schlick${app.compiled?.coat ? " (F0 in coat, clearcoat)" : ""}` };
+      : { matc: "matc", engine: `three.js Schlick${app.compiled?.coat ? " (F0 in coat, clearcoat)" : ""}` +
+                                `${app.compiled?.filmTable ? " + iridescence" : ""}` };
     $("#label-left").textContent = names[sides[0]];
     $("#label-right").textContent = sides[1] ? names[sides[1]] : "";
   };
