@@ -95,11 +95,11 @@ std::optional<std::vector<CompiledMaterial>> MaterialRenderer::compile_all(
 bool MaterialRenderer::draws(const std::string& file, const CompiledMaterial& compiled, bool coated,
                              bool filmed) {
   // A filmed metal's functions read its own table (docs/thin-film.md), which only matc_render
-  // binds.
+  // and matc_area_light_render bind.
   if (compiled.film_table && !filmed) {
     fmt::print(stderr,
                "{}: error: {} has a film: its shaders read its own table, which only matc_render "
-               "draws (docs/thin-film.md)\n",
+               "and matc_area_light_render draw (docs/thin-film.md)\n",
                file, compiled.material.name);
     return false;
   }
@@ -128,13 +128,14 @@ std::vector<Panel> MaterialRenderer::render(const CompiledMaterial& compiled) {
                                            vulkan::Binding::separate_sampler(2, sampler_),
                                            vulkan::Binding::storage_buffer(3, curve_)};
   if (ltc_table_) bindings.push_back(vulkan::Binding::sampled_image(4, *ltc_table_));
-  // A filmed metal's own table, as its file stores it (the comparison render reads it at 4).
+  // A filmed metal's own table, as its file stores it (the comparison render reads it at 4, the
+  // area-light render at 5, after its LTC table).
   std::optional<vulkan::Image> film;
   if (compiled.film_table) {
     film.emplace(context_, static_cast<std::uint32_t>(runtime::FilmTable::kWidth),
                  static_cast<std::uint32_t>(runtime::FilmTable::kHeight),
                  stored_film_texels(*compiled.film_table, build_.options().lut_precision));
-    bindings.push_back(vulkan::Binding::sampled_image(4, *film));
+    bindings.push_back(vulkan::Binding::sampled_image(ltc_table_ ? 5 : 4, *film));
   }
   vulkan::FullscreenPass pass(context_, vertex_, fragment, bindings, settings_.size, settings_.size,
                               sizeof(PanelConstants));

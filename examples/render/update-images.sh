@@ -20,6 +20,10 @@ trap 'rm -f "$table"; rm -rf "$paper"' EXIT
   >"$table"
 "$root/tests/scripts/check_docs_block.sh" --update "$root/docs/rendering.md" comparison-renders-paper \
   cat "$table"
+# A metal under a thin film: the anodised titanium example through its own table.
+"$build/examples/render/matc_render" --size 256 --samples 4096 -o "$root/docs/images" \
+  "$root/examples/materials/titanium_anodised_blue.json" >"$table"
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/rendering.md" film-render cat "$table"
 # Coated metals: copper under a warm lacquer and the glTF car paint, both lobes, beside the
 # engines' F0-in-coat Schlick and three.js's clear coat.
 cmake --build "$build" --target matc_coated_render >/dev/null
@@ -41,7 +45,8 @@ trap 'rm -f "$table"; rm -rf "$paper" "$maps"' EXIT
   --reflectivity "$maps/inlaid_metals_r.png" --edge-tint "$maps/inlaid_metals_g.png" >"$table"
 "$root/tests/scripts/check_docs_block.sh" --update "$root/docs/rendering.md" baked-render cat "$table"
 # Area lights (LTC): every bare example material for the table (coated ones are the coated
-# render's), the Figure 2 material's and beryllium's images into docs/images.
+# render's; the filmed titanium through its own table), the Figure 2 material's and beryllium's
+# images into docs/images.
 cmake --build "$build" --target matc_area_light_render >/dev/null
 area=$(mktemp -d)
 trap 'rm -f "$table"; rm -rf "$paper" "$maps" "$area"' EXIT

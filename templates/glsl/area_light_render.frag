@@ -11,8 +11,11 @@
 //   4: ours, matc_ltc_quad_light with matc_coefficients_{{name}}
 //   5: ours at the quality level, matc_ltc_quad_light_following (shape and Fresnel following
 //      the light)
+// A filmed metal (MATC_RENDER_FILM 1) reads its own table at binding 5: I_ltc times its Fbar for 4,
+// and the same for 5 (the quality level follows the 4-term basis; docs/thin-film.md).
 // Each pass writes (sum, weight) for its share of the samples; the host adds passes up and
 // divides. Background pixels write a negative weight.
+{{film}}
 {{library}}
 {{material}}
 layout(set = 0, binding = 0) uniform texture2D matc_lut;
@@ -20,6 +23,9 @@ layout(set = 0, binding = 1) uniform texture2D lobe_lut;  // ComparisonLobes: x 
 layout(set = 0, binding = 2) uniform sampler matc_lut_sampler;
 layout(std430, set = 0, binding = 3) readonly buffer ExactCurve { vec4 exact_curve[]; };
 layout(set = 0, binding = 4) uniform texture2D matc_ltc;
+#if MATC_RENDER_FILM
+layout(set = 0, binding = 5) uniform texture2D film_table;
+#endif
 layout(push_constant) uniform Panel {
   int method;
   uint first_sample;
@@ -227,11 +233,18 @@ void main() {
     vec4 lobes = textureLod(sampler2D(lobe_lut, matc_lut_sampler),
                             matc_lut_texcoord(ndotv, panel.roughness), 0.0);
     sum = integral * (F0 * lobes.x + (vec3(1.0) - F0) * lobes.y);
-  } else if (panel.method == 4) {
-    sum = matc_ltc_quad_light(matc_coefficients_{{name}}, bbar, ltc, N, V, P, q0, q1, q2, q3);
   } else {
-    sum = matc_ltc_quad_light_following(matc_coefficients_{{name}}, bbar, ltc, panel.roughness, N,
-                                        V, P, q0, q1, q2, q3);
+#if MATC_RENDER_FILM
+    sum = integral * matc_fresnel_preintegrated_{{name}}(MATC_FILM_PREINTEGRATED(
+                         sampler2D(film_table, matc_lut_sampler), ndotv, panel.roughness));
+#else
+    if (panel.method == 4) {
+      sum = matc_ltc_quad_light(matc_coefficients_{{name}}, bbar, ltc, N, V, P, q0, q1, q2, q3);
+    } else {
+      sum = matc_ltc_quad_light_following(matc_coefficients_{{name}}, bbar, ltc, panel.roughness,
+                                          N, V, P, q0, q1, q2, q3);
+    }
+#endif
   }
   result = vec4(LIGHT_RADIANCE * sum, weight);
 }

@@ -224,8 +224,10 @@ std::string comparison_render_source(const Build& build, const CompiledMaterial&
 std::string area_light_render_source(const Build& build, const CompiledMaterial& compiled,
                                      std::size_t curve_size, std::uint32_t width,
                                      std::uint32_t height) {
-  return material_render_source("glsl/area_light_render.frag", build, compiled, curve_size, width,
-                                height);
+  // A filmed metal's Fbar is its own table's (bound at 5, after the LTC table).
+  return material_render_source(
+      "glsl/area_light_render.frag", build, compiled, curve_size, width, height,
+      {{"film", fmt::format("#define MATC_RENDER_FILM {}", compiled.film_table ? 1 : 0)}});
 }
 
 std::string coated_render_source(const Build& build, const CompiledMaterial& compiled,
