@@ -60,7 +60,30 @@ const clearCoatCarPaint = {
   metals: 1,
 };
 
-export const kSampleAssetShapes = [flightHelmet, compareMetallic, clearCoatCarPaint];
+// IridescenceMetallicSpheres (CC-BY 4.0): 343 unnamed metals under KHR_materials_iridescence, a
+// film over every grey base colour from 0 to 1 (sixths; the last the default factor, 1), index 1 to
+// 2 and thickness 100 to 700 nm, in the published order (thickness, then colour, then index); and
+// a textured, blended non-metal for the guides.
+const kSphereColours = [0, 1 / 6, 1 / 3, 1 / 2, 2 / 3, 5 / 6, null];
+const kSphereFilmIndices = [1, 1.17, 1.33, 1.5, 1.67, 1.83, 2];
+const iridescenceMetallicSpheres = {
+  name: "IridescenceMetallicSpheres",
+  buffers: [["IridescenceMetallicSpheres.bin", 41756]],
+  images: ["guides.png"],
+  materials: [
+    ...[100, 200, 300, 400, 500, 600, 700].flatMap((thickness) => kSphereColours.flatMap((colour) =>
+      kSphereFilmIndices.map((ior) => ({
+        pbrMetallicRoughness: { ...(colour === null ? {} : { baseColorFactor: [colour, colour, colour, 1] }), roughnessFactor: 0.1 },
+        extensions: { KHR_materials_iridescence: { iridescenceFactor: 1, iridescenceIor: ior, iridescenceThicknessMaximum: thickness } },
+      })))),
+    { name: "Guides Material", alphaMode: "BLEND", doubleSided: true,
+      pbrMetallicRoughness: { roughnessFactor: 0.5, metallicFactor: 0, baseColorTexture: { index: 0 } } },
+  ],
+  extensionsUsed: ["KHR_materials_ior", "KHR_materials_iridescence"],
+  metals: 343,
+};
+
+export const kSampleAssetShapes = [flightHelmet, compareMetallic, clearCoatCarPaint, iridescenceMetallicSpheres];
 
 // Writes `shape` into `dir` as <name>.gltf with its placeholder buffers and images; returns the
 // asset's path.

@@ -297,8 +297,12 @@ void note_if_out_of_unit_range(const CompiledMaterial& compiled, Diagnostics& di
   std::string extent = high > 1.0 ? fmt::format("reaches {:.4f}", high) : "";
   if (low < 0.0) extent += fmt::format("{}falls to {:.4f}", extent.empty() ? "" : " and ", low);
   const std::string space(color_space_name(compiled.color.working_space));
-  const bool model_overshoot =
-      low < 0.0 && std::holds_alternative<F82TintInput>(compiled.material.model);
+  // A film's interference colours leave the gamut whatever the model (IridescenceMetallicSpheres'
+  // grey F82-tint metals, tint 1, under films of 100-700 nm): only a bare F82-tint curve's dip
+  // below 0 is its correction term's.
+  const bool model_overshoot = low < 0.0 &&
+                               std::holds_alternative<F82TintInput>(compiled.material.model) &&
+                               !compiled.film_table;
   std::string message = fmt::format(
       "its Fresnel curve {} in {} ({})", extent, space,
       model_overshoot ? "F82-tint's correction term overshoots below 0 for a tint this low"
