@@ -96,11 +96,11 @@ int main(int argc, char** argv) {
           compiled.material.name,
           fmt::format("{:.3f}", compiled.material.roughness.value_or(kDefaultRoughness)), rows,
           reference, exact);
-      targets_met = targets_met &&
-                    error_against(ours, reference).mean <= error_against(schlick, reference).mean &&
-                    error_against(ours, exact).mean <= 0.1 * error_against(schlick, exact).mean &&
-                    (filmed ||
-                     error_against(quality, reference).mean <= error_against(ours, reference).mean);
+      targets_met =
+          targets_met &&
+          error_against(ours, reference).mean <= error_against(schlick, reference).mean &&
+          error_against(ours, exact).mean <= 0.1 * error_against(schlick, exact).mean &&
+          (filmed || error_against(quality, reference).mean <= error_against(ours, reference).mean);
     }
     if (!validation_clean(renderer.context())) return 1;
     if (settings.check && !targets_met) {
