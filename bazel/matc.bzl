@@ -15,11 +15,12 @@ Each action runs `matc --no-shared` (or `--shared-only`) with its inputs declare
 the spectral files it names (`data`) and the matc binary, so a remote cache keys on exactly what
 the outputs depend on. The outputs are the bytes a batch writes (docs/scaling.md). A material's
 outputs are named after its JSON "name", which Bazel cannot read at analysis time: the rule's
-name must equal it (or give `material_name`).
+name must equal it (or give `material_name`). For the same reason a filmed metal says so
+(`film = True`): its own table, <name>.film.<ext>, is then declared (docs/thin-film.md).
 """
 
 # The file names, generated from matc's output layout (`matc layout --generate bazel`).
-load(":matc_layout.bzl", "MATERIAL_EXTENSIONS", "OUTPUT_KINDS", "SHARED_FILES", "TABLE_EXTENSIONS", "TABLE_STEMS")
+load(":matc_layout.bzl", "FILM_TABLE_INFIX", "MATERIAL_EXTENSIONS", "OUTPUT_KINDS", "SHARED_FILES", "TABLE_EXTENSIONS", "TABLE_STEMS")
 
 _COMMON_ATTRS = {
     "matc": attr.label(
@@ -53,11 +54,15 @@ def _matc_material_impl(ctx):
             outputs.append(ctx.actions.declare_file(file))
     if not outputs:
         fail("matc_material: emit names no per-material output (glsl, hlsl, wgsl, spirv, header, json)")
+    # A filmed metal's own table (docs/thin-film.md), written with the tables.
+    if ctx.attr.film and "lut" in ctx.attr.emit:
+        table = "%s/%s%s%s" % (ctx.attr.out_dir, name, FILM_TABLE_INFIX, TABLE_EXTENSIONS[ctx.attr.lut_format])
+        outputs.append(ctx.actions.declare_file(table))
     _run_matc(
         ctx,
         outputs,
         [ctx.file.src] + ctx.files.data,
-        ["--no-shared", "-o", outputs[0].dirname, ctx.file.src.path],
+        ["--no-shared", "--lut", ctx.attr.lut_format, "-o", outputs[0].dirname, ctx.file.src.path],
         "Matc",
         "matc: %s" % name,
     )
@@ -69,6 +74,17 @@ matc_material = rule(
         "src": attr.label(mandatory = True, allow_single_file = [".json"], doc = "The material file."),
         "data": attr.label_list(allow_files = True, doc = "Files the material names (spectral CSVs)."),
         "material_name": attr.string(doc = "The material's JSON \"name\" (default: the rule's name)."),
+        "film": attr.bool(
+            default = False,
+            doc = "The material has a film (a \"film\" block of thickness and coverage above 0): with " +
+                  "lut among emit, its own table <name>.film.<ext> is an output too. Bazel cannot read the " +
+                  "material at analysis time; without it the table is written and left out.",
+        ),
+        "lut_format": attr.string(
+            default = "ktx2",
+            values = TABLE_EXTENSIONS.keys(),
+            doc = "The format of a filmed metal's table (matc --lut), as matc_shared's tables'.",
+        ),
     }),
     doc = "One material's own files (matc --no-shared).",
 )

@@ -33,4 +33,7 @@ TABLE_EXTENSIONS = {
     "header": ".h",
 }
 
+# A filmed metal's own table: <name>.film<table extension>, written with the tables (lut).
+FILM_TABLE_INFIX = ".film"
+
 OUTPUT_KINDS = ["glsl", "hlsl", "wgsl", "spirv", "header", "json", "lut", "coefficient-table", "ltc"]

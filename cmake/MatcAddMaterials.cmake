@@ -13,7 +13,9 @@
 # coefficient-table ltc; default all). Use one OUTPUT_DIR per call (a second call with the same one is an error):
 # every call writes the shared files matc_fresnel.*, matc_lut.*, matc_coefficient_table.* and
 # matc_ltc.*.
-# Material names are read from the files at configure time (changing one reconfigures).
+# Material names are read from the files at configure time (changing one reconfigures), and so
+# are their film blocks: a filmed metal's own table (<name>.film.<ext>, with lut among EMIT) is one
+# of its outputs (docs/thin-film.md).
 include("${CMAKE_CURRENT_LIST_DIR}/MatcOutputLayout.cmake")
 
 # _matc_json_name(<path> <caller> <kind> <out_var>): the "name" field of a JSON file (material or
@@ -36,6 +38,25 @@ function(_matc_json_name path caller kind out_var)
   endif()
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${path}")
   set(${out_var} "${_name}" PARENT_SCOPE)
+endfunction()
+
+# _matc_json_has_film(<path> <out_var>): whether a material file gives its metal a film that shows
+# (docs/thin-film.md: a thickness and a coverage above 0; matc's has_visible_film), which compiles
+# to its own table, <name>.film.<ext>. A malformed film block is matc's to refuse: it is not one.
+function(_matc_json_has_film path out_var)
+  file(READ "${path}" _json)
+  set(_film FALSE)
+  string(JSON _thickness ERROR_VARIABLE _error GET "${_json}" film thickness)
+  if(NOT _error AND _thickness MATCHES "^[0-9.eE+-]+$" AND _thickness GREATER 0)
+    string(JSON _weight ERROR_VARIABLE _weight_error GET "${_json}" film weight)
+    if(_weight_error)
+      set(_weight 1)  # a film block that names no coverage covers the metal
+    endif()
+    if(_weight MATCHES "^[0-9.eE+-]+$" AND _weight GREATER 0)
+      set(_film TRUE)
+    endif()
+  endif()
+  set(${out_var} ${_film} PARENT_SCOPE)
 endfunction()
 
 function(matc_add_materials)
@@ -114,11 +135,17 @@ function(matc_add_materials)
         list(APPEND _material_outputs "${_dir}/${_name}${_matc_material_extension_${_kind}}")
       endif()
     endforeach()
+    # A filmed metal's own table, written with the tables.
+    _matc_json_has_film("${_path}" _film)
+    if(_film AND "lut" IN_LIST ARG_EMIT)
+      list(APPEND _material_outputs
+           "${_dir}/${_name}${_matc_film_table_infix}${_matc_table_extension_${ARG_LUT_FORMAT}}")
+    endif()
     list(APPEND _outputs ${_material_outputs})
     if(ARG_PER_MATERIAL AND _material_outputs)
       add_custom_command(
         OUTPUT ${_material_outputs}
-        COMMAND matc::cli -q --no-shared --emit ${_emit} ${ARG_OPTIONS}
+        COMMAND matc::cli -q --no-shared --emit ${_emit} --lut ${ARG_LUT_FORMAT} ${ARG_OPTIONS}
                 --depfile "${_dir}/${_name}.d" -o "${_dir}" "${_path}"
         DEPENDS "${_path}" matc::cli
         DEPFILE "${_dir}/${_name}.d"

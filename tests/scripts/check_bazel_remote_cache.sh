@@ -2,7 +2,8 @@
 # bazel/matc.bzl on Debian's Bazel (bazel-bootstrap), offline, against an HTTP remote cache that
 # nginx serves on 127.0.0.1 (WebDAV PUT): the examples are built from one clean output base, then
 # from a second one. The second build must take every action from the cache, and both must write
-# the bytes a plain matc batch writes (less the manifest, which only a batch has).
+# the bytes a plain matc batch writes and every file of it (less the manifest, which only a batch
+# has; a filmed metal's own table included).
 #   check_bazel_remote_cache.sh MATC SOURCE_DIR
 set -euo pipefail
 matc=$(realpath "$1")
@@ -38,6 +39,8 @@ cp -r "$source_dir/examples/materials/." "$workspace/materials/"
     data=""
     # Spectral files a material names (examples name them under spectra/).
     if grep -q '"file"' "$file"; then data=', data = glob(["spectra/*.csv"])'; fi
+    # A filmed metal says so: its own table is then declared (Bazel cannot read the JSON).
+    if grep -q '"film"' "$file"; then data="$data, film = True"; fi
     echo "matc_material(name = \"$name\", src = \"$name.json\", matc = \"//tools:matc\"$data)"
   done
 } >"$workspace/materials/BUILD"
@@ -98,6 +101,14 @@ for base in base1 base2; do
     cmp -s "$file" "$work/batch/$(basename "$file")" ||
       { echo "FAIL: $base $(basename "$file") differs from the batch's"; exit 1; }
     outputs=$((outputs + 1))
+  done
+  # And every file of the batch's is among Bazel's (an undeclared one, a filmed metal's table
+  # without `film = True`, would be written and left out).
+  for file in "$work"/batch/*; do
+    name=$(basename "$file")
+    [[ $name == matc_manifest.json ]] && continue
+    [[ -e $bin/matc/$name || -e $bin/materials/matc/$name ]] ||
+      { echo "FAIL: $base lacks the batch's $name"; exit 1; }
   done
 done
 echo "Bazel + remote cache: $outputs outputs over two output bases, all the batch's bytes; second build all cache hits"

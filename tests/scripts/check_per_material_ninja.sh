@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# matc_add_materials(... PER_MATERIAL) with Ninja on 500 generated materials: the first build
-# runs one shared step and one step per material, a second build does nothing, and touching one
-# material reruns that material's step alone.
+# matc_add_materials(... PER_MATERIAL) with Ninja on 500 generated materials (one under a film, whose
+# own table its step declares): the first build runs one shared step and one step per material, a
+# second build does nothing, and touching one material reruns that material's step alone.
 #   check_per_material_ninja.sh MATC SOURCE_DIR
 set -euo pipefail
 matc=$(realpath "$1")
@@ -16,6 +16,9 @@ for i in $(seq -f %04g 1 "$count"); do
   printf '{"name": "m%s", "artistic": {"reflectivity": 0.%02d, "edge_tint": 0.%02d}}\n' \
     "$i" "$r" "$g" >"$work/project/materials/m$i.json"
 done
+# One of them under a film: its own table is one of its step's outputs (docs/thin-film.md).
+printf '{"name": "m%s", "artistic": {"reflectivity": 0.6, "edge_tint": 0.5}, "film": {"ior": 2.0, "thickness": 120}}\n' \
+  "$(printf %04g "$count")" >"$work/project/materials/m$(printf %04g "$count").json"
 cat >"$work/project/CMakeLists.txt" <<CMAKE
 cmake_minimum_required(VERSION 3.25)
 project(per_material LANGUAGES CXX)
@@ -26,7 +29,7 @@ file(GLOB materials CONFIGURE_DEPENDS "\${CMAKE_CURRENT_SOURCE_DIR}/materials/*.
 file(WRITE "\${CMAKE_CURRENT_BINARY_DIR}/empty.cpp" "")
 add_library(materials STATIC "\${CMAKE_CURRENT_BINARY_DIR}/empty.cpp")
 matc_add_materials(TARGET materials OUTPUT_DIR generated MATERIALS \${materials}
-                   EMIT glsl json PER_MATERIAL)
+                   EMIT glsl json lut LUT_FORMAT raw PER_MATERIAL)
 CMAKE
 cmake -S "$work/project" -B "$work/build" -G Ninja >/dev/null
 cd "$work/build"
@@ -36,6 +39,9 @@ shared=$(grep -c -- "--shared-only" <<<"$first" || true)
 echo "first build: $steps per-material steps, $shared shared step"
 [[ $steps == "$count" && $shared == 1 ]] || { echo "FAIL: expected $count and 1"; exit 1; }
 [[ $(ls generated/*.glsl | wc -l) == $((count + 1)) ]] || { echo "FAIL: missing outputs"; exit 1; }
+film_table=generated/m$(printf %04g "$count").film.bin
+[[ -f $film_table ]] && grep -q "$film_table" build.ninja ||
+  { echo "FAIL: the filmed material's table is not a declared output ($film_table)"; exit 1; }
 second=$(ninja -v)
 grep -q "no work to do" <<<"$second" || { echo "FAIL: the second build was not a no-op"; exit 1; }
 sleep 1

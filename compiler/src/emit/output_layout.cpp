@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "lut/film_table_files.h"
 #include "matc/version.h"
 
 namespace matc {
@@ -128,6 +129,8 @@ std::string output_layout_cmake_source() {
     out += fmt::format("set(_matc_table_extension_{} \"{}\")\n", lut_format_name(format),
                        lut_file_extension(format));
   }
+  // A filmed metal's own table, <name><infix><table extension>, written with the tables (lut).
+  out += fmt::format("set(_matc_film_table_infix \"{}\")\n", kFilmTableInfix);
   out += fmt::format("set(_matc_manifest_file \"{}\")\n", manifest_file_name());
   out += fmt::format("set(_matc_shared_stems {})\n", fmt::join(shared_file_stems(), " "));
   return out;
@@ -162,6 +165,10 @@ std::string output_layout_bazel_source() {
   out += dictionary("SHARED_FILES", shared) + "\n";
   out += dictionary("TABLE_STEMS", tables) + "\n";
   out += dictionary("TABLE_EXTENSIONS", extensions) + "\n";
+  out += fmt::format(
+      "# A filmed metal's own table: <name>{}<table extension>, written with the tables (lut).\n"
+      "FILM_TABLE_INFIX = \"{}\"\n\n",
+      kFilmTableInfix, kFilmTableInfix);
   std::vector<std::string> quoted;
   for (const std::string_view name : kind_names())
     quoted.push_back(fmt::format("\"{}\"", name));

@@ -74,7 +74,7 @@ std::string encode_film_table(const runtime::FilmTable& table, LutFormat format,
 }
 
 std::string film_table_file_name(std::string_view material_name, LutFormat format) {
-  return fmt::format("{}.film{}", material_name, lut_file_extension(format));
+  return fmt::format("{}{}{}", material_name, kFilmTableInfix, lut_file_extension(format));
 }
 
 }  // namespace matc

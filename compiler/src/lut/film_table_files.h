@@ -28,6 +28,10 @@ std::string encode_film_table(const runtime::FilmTable& table, LutFormat format,
                               LutPrecision precision, std::string_view material_name);
 
 // "<name>.film.<ext>" (a material's name has no dot: it clashes with no other file).
+// What sits between a filmed metal's name and its table's extension (<name>.film.ktx2); the
+// generated build-system layouts declare it from here too (emit/output_layout.cpp).
+inline constexpr std::string_view kFilmTableInfix = ".film";
+
 std::string film_table_file_name(std::string_view material_name, LutFormat format);
 
 }  // namespace matc
