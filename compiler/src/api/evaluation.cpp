@@ -96,6 +96,32 @@ void add_preintegrated_fresnel(const EvaluationInputs& options, const SplitSumIn
   if (options.reference) out["Fbar_reference"] = inputs.fbar_reference;
 }
 
+// A quad light's references at each point: LTC times the exact split sum (LTC's own error alone)
+// and the exact integral over the light of the lobe times the curve, by Monte Carlo.
+struct QuadLightReferences {
+  ordered_json exact_fresnel = ordered_json::array();
+  ordered_json reference = ordered_json::array();
+  ordered_json standard_error = ordered_json::array();
+
+  void add(const EvaluationInputs& options, std::size_t i, double integral, runtime::Rgb fbar_exact,
+           const std::vector<Vec3>& quad, const TabulatedCurve& tabulated) {
+    for (double& channel : fbar_exact)
+      channel *= integral;
+    exact_fresnel.push_back(fbar_exact);
+    const AreaLightEstimate estimate = integrate_polygon_light(
+        GgxLobe(options.ndotv[i], options.roughness[i]), quad,
+        [&](double mu) { return tabulated.at(mu); }, options.light_samples);
+    reference.push_back(estimate.mean);
+    standard_error.push_back(estimate.standard_error);
+  }
+
+  void write(ordered_json& out) {
+    out["L_ltc_exact_fresnel"] = std::move(exact_fresnel);
+    out["L_reference"] = std::move(reference);
+    out["L_reference_standard_error"] = std::move(standard_error);
+  }
+};
+
 // A quad light's radiance at each (NdotV, roughness): LTC times Fbar as the shaders compute it
 // (ours, per set of coefficients), the quality level's (the lobe's shape and the Fresnel following
 // the light, per set of coefficients), LTC times Schlick's split sum, LTC times the exact
@@ -114,8 +140,8 @@ void add_quad_light(const EvaluationInputs& options, const std::vector<Vec3>& qu
   const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(options.basis);
   std::vector<ordered_json> ours(coefficients.size(), ordered_json::array());
   std::vector<ordered_json> following(coefficients.size(), ordered_json::array());
-  ordered_json schlick = ordered_json::array(), exact_fresnel = ordered_json::array(),
-               reference = ordered_json::array(), standard_error = ordered_json::array();
+  ordered_json schlick = ordered_json::array();
+  QuadLightReferences references;
   for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
     const double ndotv = options.ndotv[i], roughness = options.roughness[i];
     const double integral =
@@ -131,27 +157,15 @@ void add_quad_light(const EvaluationInputs& options, const std::vector<Vec3>& qu
     for (std::size_t c = 0; c < 3; ++c)
       with_schlick[c] = integral * (f0[c] * lobe_values[0] + (1.0 - f0[c]) * lobe_values[1]);
     schlick.push_back(with_schlick);
-    if (!options.reference) continue;
-    const runtime::Rgb& fbar_exact = inputs.fbar_reference[i];
-    runtime::Rgb with_exact{};
-    for (std::size_t c = 0; c < 3; ++c)
-      with_exact[c] = integral * fbar_exact[c];
-    exact_fresnel.push_back(with_exact);
-    const AreaLightEstimate estimate = integrate_polygon_light(
-        GgxLobe(ndotv, roughness), quad, [&](double mu) { return tabulated.at(mu); },
-        options.light_samples);
-    reference.push_back(estimate.mean);
-    standard_error.push_back(estimate.standard_error);
+    if (options.reference)
+      references.add(options, i, integral, inputs.fbar_reference[i], quad, tabulated);
   }
   for (std::size_t k = 0; k < coefficients.size(); ++k)
     out["L_ltc" + coefficients[k].first] = std::move(ours[k]);
   for (std::size_t k = 0; k < coefficients.size(); ++k)
     out["L_ltc_following" + coefficients[k].first] = std::move(following[k]);
   out["L_ltc_schlick"] = std::move(schlick);
-  if (!options.reference) return;
-  out["L_ltc_exact_fresnel"] = std::move(exact_fresnel);
-  out["L_reference"] = std::move(reference);
-  out["L_reference_standard_error"] = std::move(standard_error);
+  if (options.reference) references.write(out);
 }
 
 // The material a (--reflectivity, --edge-tint) pair stands for: Gulbrandsen's conductor per
@@ -194,29 +208,18 @@ void add_film_quad_light(const EvaluationInputs& options, const std::vector<Vec3
   const runtime::LtcTableView ltc = runtime::shipped_ltc_table();
   add_quad_light_description(options, quad, ltc, out);
   const TabulatedCurve tabulated(curve);
-  ordered_json ours = ordered_json::array(), exact_fresnel = ordered_json::array(),
-               reference = ordered_json::array(), standard_error = ordered_json::array();
+  ordered_json ours = ordered_json::array();
+  QuadLightReferences references;
   for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
     const double ndotv = options.ndotv[i], roughness = options.roughness[i];
     ours.push_back(runtime::film_polygon_light_ltc(table, ltc, ndotv, roughness, quad));
     if (!options.reference) continue;
-    const double integral =
-        runtime::ltc_polygon_integral(runtime::sample_ltc(ltc, ndotv, roughness), quad);
-    runtime::Rgb with_exact = SplitSumEstimator(ndotv, roughness).integrate(tabulated);
-    for (double& channel : with_exact)
-      channel *= integral;
-    exact_fresnel.push_back(with_exact);
-    const AreaLightEstimate estimate = integrate_polygon_light(
-        GgxLobe(ndotv, roughness), quad, [&](double mu) { return tabulated.at(mu); },
-        options.light_samples);
-    reference.push_back(estimate.mean);
-    standard_error.push_back(estimate.standard_error);
+    references.add(options, i,
+                   runtime::ltc_polygon_integral(runtime::sample_ltc(ltc, ndotv, roughness), quad),
+                   SplitSumEstimator(ndotv, roughness).integrate(tabulated), quad, tabulated);
   }
   out["L_ltc"] = std::move(ours);
-  if (!options.reference) return;
-  out["L_ltc_exact_fresnel"] = std::move(exact_fresnel);
-  out["L_reference"] = std::move(reference);
-  out["L_reference_standard_error"] = std::move(standard_error);
+  if (options.reference) references.write(out);
 }
 
 // A filmed metal (docs/thin-film.md): F and Fbar from its tables as its shader functions read
