@@ -113,8 +113,12 @@ function checkExtensions(json, build, asset) {
             `${asset}: ${extension.name}'s coat differs from <name>.json's`);
       check(sameJson(extension.maxError, compiled.coat.accuracy.layered.max), `${asset}: ${extension.name} maxError`);
     } else if (compiled.film_table) {
-      // A filmed metal carries its film and its table's rows, as <name>.json holds them.
-      check(sameJson(extension.film.table, compiled.film_table) && extension.film.ior === compiled.input.film.ior &&
+      // A filmed metal carries its film and its table's texels: <name>.json's rows as float32.
+      const bytes = Buffer.from(extension.film.table.texels, "base64");
+      const rows = [...compiled.film_table.fresnel, ...compiled.film_table.preintegrated].flat();
+      const sameTexels = bytes.length === 4 * rows.length &&
+                         rows.every((value, i) => bytes.readFloatLE(4 * i) === Math.fround(value));
+      check(sameTexels && extension.film.ior === compiled.input.film.ior &&
             extension.film.thickness === compiled.input.film.thickness,
             `${asset}: ${extension.name}'s film differs from <name>.json's`);
       check(sameJson(extension.maxError, compiled.accuracy.film_table.max), `${asset}: ${extension.name} maxError`);

@@ -336,7 +336,7 @@ for (const language of ["glsl", "wgsl"]) {
     compiled.dispose();
   }
   // A filmed metal's extension (matc gltf's, from KHR_materials_iridescence on a metal): its table's
-  // rows become the texels compileGltf's material holds, to float precision; malformed members are
+  // texels (base64 float32) become the texels compileGltf's material holds, to float precision; malformed members are
   // refused with the member named.
   const foil = JSON.stringify({ asset: { version: "2.0" }, extensionsUsed: ["KHR_materials_iridescence"], materials: [{
     name: "Foil", pbrMetallicRoughness: { baseColorFactor: [0.9, 0.9, 0.9, 1], metallicFactor: 1 },
@@ -349,16 +349,21 @@ for (const language of ["glsl", "wgsl"]) {
         filmedMaterial.film.table.data.every((value, i) => Math.abs(value - texels[i]) <= 6e-8 * Math.max(1, Math.abs(value))),
         `${language}: the extension's film table is not the compiled one`);
   const withFilm = (change) => ({ ...foilExtension, film: { ...foilExtension.film, ...change } });
-  const rowsOf = (field, edit) => ({ table: { ...foilExtension.film.table, [field]: edit(foilExtension.film.table[field]) } });
+  const withTable = (change) => withFilm({ table: { ...foilExtension.film.table, ...change } });
+  // The texels with one value changed (a NaN: not finite).
+  const texelBytes = Buffer.from(foilExtension.film.table.texels, "base64");
+  texelBytes.writeFloatLE(NaN, 4 * 7);
+  const tableShape = /film\.table must be 65 x 18 texels, their RGB as 14040 bytes of little-endian float32 in base64/;
   for (const [extension, pattern] of [
     [{ ...foilExtension, film: 7 }, /film must be an object/],
     [withFilm({ weight: 2 }), /film\.weight must be a number in \[0, 1\]/],
     [withFilm({ thickness: -1 }), /film\.thickness must be a number in \[0, 2000\]/],
     [withFilm({ ior: "1.3" }), /film\.ior must be a number in \[1, 3\]/],
-    [withFilm(rowsOf("fresnel", (rows) => rows.slice(1))), /film\.table\.fresnel must be 65 rows of 3 finite numbers/],
-    [withFilm(rowsOf("preintegrated", (rows) => [[null, 0, 0], ...rows.slice(1)])),
-     /film\.table\.preintegrated must be 1105 rows of 3 finite numbers/],
-    [withFilm({ table: null }), /film\.table\.fresnel must be 65 rows/],
+    [withTable({ texels: foilExtension.film.table.texels.slice(4) }), tableShape],
+    [withTable({ texels: `${foilExtension.film.table.texels.slice(1)}!` }), tableShape],
+    [withTable({ width: 64 }), tableShape],
+    [withTable({ texels: texelBytes.toString("base64") }), /film\.table\.texels must be finite numbers/],
+    [withFilm({ table: null }), tableShape],
     [{ ...foilExtension, coat: {} }, /a film with a coat or per-pixel data/],
   ]) {
     let message = "no error";

@@ -60,8 +60,6 @@ ordered_json coat_json(const CompiledCoat& coat) {
             {"coat_max", coat.coat_max_error}}}};
 }
 
-}  // namespace
-
 // A filmed metal's tables (runtime/film_table.h): what its shader functions read for F and Fbar.
 ordered_json film_table_json(const runtime::FilmTable& table) {
   ordered_json fresnel = ordered_json::array(), preintegrated = ordered_json::array();
@@ -81,6 +79,8 @@ ordered_json film_table_json(const runtime::FilmTable& table) {
           {"fresnel", std::move(fresnel)},
           {"preintegrated", std::move(preintegrated)}};
 }
+
+}  // namespace
 
 ordered_json rgb_json(const Rgb& rgb) {
   return ordered_json::array({rgb[0], rgb[1], rgb[2]});

@@ -12,9 +12,6 @@ namespace matc {
 // write them.
 nlohmann::ordered_json rgb_json(const Rgb& rgb);
 nlohmann::ordered_json coefficient_rows_json(const runtime::Coefficients& coefficients);
-// A filmed metal's table as RGB rows (`fresnel`, `preintegrated`) with its layout described: the
-// <name>.json's film_table and MATC_materials_fresnel's film.table.
-nlohmann::ordered_json film_table_json(const runtime::FilmTable& table);
 
 // `per_material_build`: the build gives each material its basis (--basis auto, the default); the
 // JSON then names the material's layer of the table too (basis.lut_layer).

@@ -3,3 +3,14 @@
 // as tinygltf_config.h says.
 #define TINYGLTF_IMPLEMENTATION
 #include "tinygltf_config.h"
+
+#include "material/gltf_base64.h"
+
+namespace matc {
+
+std::string gltf_base64(std::string_view bytes) {
+  return tinygltf::base64_encode(reinterpret_cast<const unsigned char*>(bytes.data()),
+                                 static_cast<unsigned int>(bytes.size()));
+}
+
+}  // namespace matc

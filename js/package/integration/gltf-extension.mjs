@@ -55,23 +55,28 @@ async function extensionCoatedMaterial(build, extension, rows) {
 }
 
 // A filmed metal's film from its extension (docs/thin-film.md): { weight, ior, thickness, table },
-// the table's RGB rows (F at 65 cosines, Fbar at 65 x 17 nodes) as the 65 x 18 RGBA texels its
-// file holds (alpha 1), each checked as the schema has it.
+// the table's texels (base64 of little-endian float32 RGB, row after row: `matc gltf` writes them)
+// as the 65 x 18 RGBA texels its file holds (alpha 1), each member checked as the schema has it.
 function extensionFilm(film) {
   const what = `${kGltfFresnelExtension}.film`;
   if (typeof film !== "object" || film === null) throw new MatcWebError(`${what} must be an object`);
-  const rows = (field, count) => {
-    const value = film.table?.[field];
-    const valid = Array.isArray(value) && value.length === count &&
-                  value.every((row) => Array.isArray(row) && row.length === 3 && row.every(Number.isFinite));
-    // Finite, not within [0, 1]: a colour outside the working space's gamut stays (docs/color-spaces.md).
-    if (!valid) throw new MatcWebError(`${what}.table.${field} must be ${count} rows of 3 finite numbers`);
-    return value;
-  };
-  const fresnel = rows("fresnel", kFilmTableWidth);
-  const preintegrated = rows("preintegrated", kFilmTableWidth * (kFilmTableHeight - 1));
-  const data = new Float32Array(kFilmTableWidth * kFilmTableHeight * 4);
-  [...fresnel, ...preintegrated].forEach((rgb, texel) => data.set([...rgb, 1], texel * 4));
+  const table = film.table ?? {};
+  const texels = kFilmTableWidth * kFilmTableHeight;
+  const base64 = typeof table.texels === "string" && /^[A-Za-z0-9+/]*={0,2}$/.test(table.texels) ? table.texels : null;
+  const bytes = base64 !== null && base64.length === Math.ceil((texels * 12) / 3) * 4
+      ? Uint8Array.from(atob(base64), (character) => character.charCodeAt(0)) : null;
+  if (table.width !== kFilmTableWidth || table.height !== kFilmTableHeight || bytes?.length !== texels * 12) {
+    throw new MatcWebError(`${what}.table must be ${kFilmTableWidth} x ${kFilmTableHeight} texels, their RGB as ` +
+                           `${texels * 12} bytes of little-endian float32 in base64`);
+  }
+  const view = new DataView(bytes.buffer);
+  const data = new Float32Array(texels * 4);
+  for (let texel = 0; texel < texels; ++texel) {
+    for (let c = 0; c < 3; ++c) data[4 * texel + c] = view.getFloat32(12 * texel + 4 * c, true);
+    data[4 * texel + 3] = 1;
+  }
+  // Finite, not within [0, 1]: a colour outside the working space's gamut stays (docs/color-spaces.md).
+  if (!data.every(Number.isFinite)) throw new MatcWebError(`${what}.table.texels must be finite numbers`);
   return { weight: checkedNumber(film.weight, 0, 1, `${what}.weight`), ior: checkedNumber(film.ior, 1, 3, `${what}.ior`),
            thickness: checkedNumber(film.thickness, 0, 2000, `${what}.thickness`),
            table: { size: kFilmTableWidth, height: kFilmTableHeight, channels: 4, half: false, data } };
