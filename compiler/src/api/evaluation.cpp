@@ -200,14 +200,14 @@ void add_quad_light_description(const EvaluationInputs& options, const std::vect
 
 // A filmed metal's quad light: LTC times the film table's Fbar, as an engine multiplies
 // matc_ltc_quad_integral by the film's preintegrated texel (there is no quality level for films:
-// it follows the 4-term basis across the lobe), beside LTC times the exact split sum and the
-// exact integral of the film's curve.
+// it follows the 4-term basis across the lobe), beside LTC times the exact split sum
+// (`fbar_reference`, at each point) and the exact integral of the film's curve (`tabulated`),
+// both given with options.reference.
 void add_film_quad_light(const EvaluationInputs& options, const std::vector<Vec3>& quad,
-                         const runtime::FilmTable& table, const ReflectanceCurve& curve,
-                         ordered_json& out) {
+                         const runtime::FilmTable& table, const TabulatedCurve* tabulated,
+                         const std::vector<runtime::Rgb>& fbar_reference, ordered_json& out) {
   const runtime::LtcTableView ltc = runtime::shipped_ltc_table();
   add_quad_light_description(options, quad, ltc, out);
-  const TabulatedCurve tabulated(curve);
   ordered_json ours = ordered_json::array();
   QuadLightReferences references;
   for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
@@ -216,7 +216,7 @@ void add_film_quad_light(const EvaluationInputs& options, const std::vector<Vec3
     if (!options.reference) continue;
     references.add(options, i,
                    runtime::ltc_polygon_integral(runtime::sample_ltc(ltc, ndotv, roughness), quad),
-                   SplitSumEstimator(ndotv, roughness).integrate(tabulated), quad, tabulated);
+                   fbar_reference[i], quad, *tabulated);
   }
   out["L_ltc"] = std::move(ours);
   if (options.reference) references.write(out);
@@ -241,6 +241,17 @@ void add_filmed(const EvaluationInputs& options, const CompiledMaterial& compile
     out["F"] = std::move(ours);
     out["F_exact"] = std::move(exact);
   }
+  // The exact curve tabulated and its split sum at each point, made once: Fbar's reference and the
+  // quad light's read them (as SplitSumInputs does for a bare metal).
+  std::optional<TabulatedCurve> tabulated;
+  std::vector<runtime::Rgb> fbar_reference;
+  if (options.reference && !options.ndotv.empty()) {
+    tabulated.emplace(*curve);
+    for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
+      fbar_reference.push_back(
+          SplitSumEstimator(options.ndotv[i], options.roughness[i]).integrate(*tabulated));
+    }
+  }
   if (!options.ndotv.empty()) {
     out["ndotv"] = options.ndotv;
     out["roughness"] = options.roughness;
@@ -248,17 +259,12 @@ void add_filmed(const EvaluationInputs& options, const CompiledMaterial& compile
     for (std::size_t i = 0; i < options.ndotv.size(); ++i)
       fbar.push_back(runtime::film_preintegrated(table, options.ndotv[i], options.roughness[i]));
     out["Fbar"] = std::move(fbar);
-    if (options.reference) {
-      const TabulatedCurve tabulated(*curve);
-      ordered_json reference = ordered_json::array();
-      for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
-        reference.push_back(
-            SplitSumEstimator(options.ndotv[i], options.roughness[i]).integrate(tabulated));
-      }
-      out["Fbar_reference"] = std::move(reference);
-    }
+    if (options.reference) out["Fbar_reference"] = fbar_reference;
   }
-  if (options.quad) add_film_quad_light(options, *options.quad, table, *curve, out);
+  if (options.quad) {
+    add_film_quad_light(options, *options.quad, table, tabulated ? &*tabulated : nullptr,
+                        fbar_reference, out);
+  }
   if (options.metalness) add_metal_rough(options, filmed_metal_lobes(table), out);
 }
 
