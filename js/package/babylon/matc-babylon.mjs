@@ -326,17 +326,17 @@ function preparePlugin(material, build, source, areaLights, metalRough) {
   const basisDefineName = basisDefine(build, sourceBasis(build, source));
   return { build, source, kind, areaLights, metalRough, f0Table, coat, film, basisDefineName,
            filmTable: film && filmTexture(film.table, material.getScene()),
-           snippetId: coat ? snippetIdOf(coat.snippet) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
+           coatId: coat ? coatIdOf(coat.snippet) : 0, reflectivity: colour(source.reflectivity), edgeTint: colour(source.edgeTint),
            coefficients: rows && rows.map((row) => new Vector4(...row)) };
 }
 
 // Babylon keys its compiled effects on the defines: each coated material's snippet (its constants)
 // gets a number of its own; by text, not name, so that a material recompiled under the same name
 // with another coat gets a new effect.
-const kSnippetIds = new Map();
-function snippetIdOf(snippet) {
-  if (!kSnippetIds.has(snippet)) kSnippetIds.set(snippet, kSnippetIds.size + 1);
-  return kSnippetIds.get(snippet);
+const kCoatIds = new Map();
+function coatIdOf(snippet) {
+  if (!kCoatIds.has(snippet)) kCoatIds.set(snippet, kCoatIds.size + 1);
+  return kCoatIds.get(snippet);
 }
 
 // A filmed metal's table (build.loadMaterial's film.table) as a texture of `scene`, made once per
@@ -366,7 +366,7 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
             { MATC_FRESNEL: false, MATC_SOURCE_UNIFORM: false, MATC_SOURCE_SCHLICK: false,
               MATC_SOURCE_F0_TABLE: false, MATC_SOURCE_TABLE: false,
               MATC_SOURCE_BAKED: false, MATC_BAKED_F0: false, MATC_ENGINE_LTC: false,
-              MATC_QUALITY_LTC: false, MATC_COATED: false, MATC_FILMED: false, MATC_SNIPPET_ID: 0, MATC_METAL_ROUGH: false,
+              MATC_QUALITY_LTC: false, MATC_COATED: false, MATC_FILMED: false, MATC_COAT_ID: 0, MATC_METAL_ROUGH: false,
               ...Object.fromEntries(buildBases(build).slice(1).map((basis) => [basisDefine(build, basis), false])) });
       Object.assign(this, pendingPlugin);
     } finally {
@@ -395,7 +395,7 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
     defines.MATC_QUALITY_LTC = this.areaLights === "quality";
     defines.MATC_COATED = Boolean(this.coat);
     defines.MATC_FILMED = Boolean(this.film);
-    defines.MATC_SNIPPET_ID = this.snippetId;
+    defines.MATC_COAT_ID = this.coatId;
     defines.MATC_METAL_ROUGH = Boolean(this.metalRough);
     for (const basis of buildBases(this.build).slice(1)) {
       const name = basisDefine(this.build, basis);

@@ -40,12 +40,12 @@ export function matcGltfPlugin({ matc = null, build, compile = {}, areaLights = 
     make: (material, source, metalRough) => {
       if (!material.isMeshStandardMaterial) throw new MatcWebError("three.js built no MeshStandardMaterial for it");
       // A coated metal made from the extension carries its snippet; this build makes its functions.
-      if (source.material?.coat && !source.material.coat.functions) build.withSnippetFunctions(source.material);
+      if (source.material?.coat && !source.material.coat.functions) build.withCoatFunctions(source.material);
       return useMatcFresnel(nodeMaterialOf(material), build, source, { areaLights, metalRough });
     },
   });
   // A build of matc/three (WebGL: GLSL) passes the shared check; its metals could not draw here.
-  if (typeof build.withSnippetFunctions !== "function") {
+  if (typeof build.withCoatFunctions !== "function") {
     throw new MatcWebError("matcGltfPlugin (WebGPU) takes matc/three/webgpu's loadMatcBuild(...), a WGSL build");
   }
   return plugin;

@@ -152,7 +152,7 @@ export async function loadMatcBuild(source) {
   // A coated material's lobes: its own snippet (<name>.wgsl) through wgslFn. The base lobe's
   // take the coefficient rows in air and under the coat (layerRows): the material's own, or a
   // textured metal's per pixel from its F0 table (the snippet's matc_fresnel_textured_<name>).
-  const withSnippetFunctions = (material) => {
+  const withCoatFunctions = (material) => {
     if (!material.coat) return material;
     const snippet = wgsl(material.coat.snippet);
     const name = material.name;
@@ -174,10 +174,10 @@ export async function loadMatcBuild(source) {
     };
     return material;
   };
-  // withSnippetFunctions: for a coated material made elsewhere with this build's WGSL snippet (a glTF
+  // withCoatFunctions: for a coated material made elsewhere with this build's WGSL snippet (a glTF
   // metal's from its MATC_materials_fresnel, ./matc-gltf-webgpu.mjs).
-  return { ...files, lut, ltc, coefficientTable, functions, functionsByBasis, withSnippetFunctions,
-           async loadMaterial(name) { return withSnippetFunctions(await loadMaterial(name)); } };
+  return { ...files, lut, ltc, coefficientTable, functions, functionsByBasis, withCoatFunctions,
+           async loadMaterial(name) { return withCoatFunctions(await loadMaterial(name)); } };
 }
 
 // A coated material's base-lobe arguments: the rows in air and under the coat, by parameter name.
@@ -501,13 +501,12 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc", m
   // A filmed matc metal takes its place (matc's film over the metal's own index).
   const film = source?.material?.film ?? null;
   checkIridescence(material.iridescence > 0, film);
-  sourceKind(build, source);  // a filmed metal's source checked before its table becomes a texture
   checkLightingModel();
+  const { underCoat, ...rows } = coefficientRows(build, source);
   if (film) {
     checkLayeredAreaLights(source.material, areaLights);
     material.iridescence = 0;
   }
-  const { underCoat, ...rows } = coefficientRows(build, source);
   const coat = source?.material?.coat ? coatOf(source.material, material, areaLights, underCoat) : null;
   const matc = { rows, functions: build.functionsByBasis?.[sourceBasis(build, source)] ?? build.functions, lut: build.lut, ltc: build.ltc, url: build.url, areaLights, coat,
                  film: film && filmTexture(THREE, film.table), source, metalRough };
