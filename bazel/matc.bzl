@@ -76,7 +76,8 @@ matc_material = rule(
         "material_name": attr.string(doc = "The material's JSON \"name\" (default: the rule's name)."),
         "film": attr.bool(
             default = False,
-            doc = "The material has a film (a \"film\" block of thickness and coverage above 0): with " +
+            doc = "The material has a film (a \"film\" block of thickness and coverage above 0 and an index " +
+                  "other than 1): with " +
                   "lut among emit, its own table <name>.film.<ext> is an output too. Bazel cannot read the " +
                   "material at analysis time; without it the table is written and left out.",
         ),

@@ -41,7 +41,8 @@ function(_matc_json_name path caller kind out_var)
 endfunction()
 
 # _matc_json_has_film(<path> <out_var>): whether a material file gives its metal a film that shows
-# (docs/thin-film.md: a thickness and a coverage above 0; matc's has_visible_film), which compiles
+# (docs/thin-film.md: a thickness and a coverage above 0, an index other than 1; matc's
+# has_visible_film), which compiles
 # to its own table, <name>.film.<ext>. A malformed film block is matc's to refuse: it is not one.
 function(_matc_json_has_film path out_var)
   file(READ "${path}" _json)
@@ -52,7 +53,12 @@ function(_matc_json_has_film path out_var)
     if(_weight_error)
       set(_weight 1)  # a film block that names no coverage covers the metal
     endif()
-    if(_weight MATCHES "^[0-9.eE+-]+$" AND _weight GREATER 0)
+    string(JSON _ior ERROR_VARIABLE _ior_error GET "${_json}" film ior)
+    if(_ior_error)
+      set(_ior 1.4)  # OpenPBR's default film index
+    endif()
+    # A film of index 1 is air: the bare metal, no table.
+    if(_weight MATCHES "^[0-9.eE+-]+$" AND _weight GREATER 0 AND NOT _ior EQUAL 1)
       set(_film TRUE)
     endif()
   endif()

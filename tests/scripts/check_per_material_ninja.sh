@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # matc_add_materials(... PER_MATERIAL) with Ninja on 500 generated materials (one under a film, whose
-# own table its step declares): the first build runs one shared step and one step per material, a
+# own table its step declares, and one under a film of index 1, the bare metal, with no table): the
+# first build runs one shared step and one step per material, a
 # second build does nothing, and touching one material reruns that material's step alone.
 #   check_per_material_ninja.sh MATC SOURCE_DIR
 set -euo pipefail
@@ -19,6 +20,9 @@ done
 # One of them under a film: its own table is one of its step's outputs (docs/thin-film.md).
 printf '{"name": "m%s", "artistic": {"reflectivity": 0.6, "edge_tint": 0.5}, "film": {"ior": 2.0, "thickness": 120}}\n' \
   "$(printf %04g "$count")" >"$work/project/materials/m$(printf %04g "$count").json"
+# A film of index 1 is air, the bare metal: no table (declared, it would be missing and rebuilt).
+printf '{"name": "m%s", "artistic": {"reflectivity": 0.6, "edge_tint": 0.5}, "film": {"ior": 1, "thickness": 120}}\n' \
+  "$(printf %04g $((count - 1)))" >"$work/project/materials/m$(printf %04g $((count - 1))).json"
 cat >"$work/project/CMakeLists.txt" <<CMAKE
 cmake_minimum_required(VERSION 3.25)
 project(per_material LANGUAGES CXX)
@@ -42,6 +46,9 @@ echo "first build: $steps per-material steps, $shared shared step"
 film_table=generated/m$(printf %04g "$count").film.bin
 [[ -f $film_table ]] && grep -q "$film_table" build.ninja ||
   { echo "FAIL: the filmed material's table is not a declared output ($film_table)"; exit 1; }
+air_film_table=generated/m$(printf %04g $((count - 1))).film.bin
+[[ ! -e $air_film_table ]] && ! grep -q "$air_film_table" build.ninja ||
+  { echo "FAIL: a film of index 1 has a table ($air_film_table)"; exit 1; }
 second=$(ninja -v)
 grep -q "no work to do" <<<"$second" || { echo "FAIL: the second build was not a no-op"; exit 1; }
 sleep 1

@@ -1,12 +1,14 @@
 #include "compile/basis_choice.h"
 
+#include "compile/compile.h"
+
 #include <variant>
 
 namespace matc {
 
 runtime::BasisKind per_material_basis(const Material& material) {
   if (material.basis) return *material.basis;
-  const bool bare = !material.coat && !material.film;
+  const bool bare = !material.coat && !has_visible_film(material);
   if (bare && std::holds_alternative<F82TintInput>(material.model)) return runtime::BasisKind::f82;
   return runtime::BasisKind::powers;
 }

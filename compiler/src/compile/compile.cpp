@@ -72,9 +72,11 @@ std::unique_ptr<ReflectanceCurve> apply_gamut_mapping(std::unique_ptr<Reflectanc
 
 }  // namespace
 
-// Its curve is then the bare metal's, bit for bit.
+// Its curve is then the bare metal's, bit for bit. A film of index 1 is air: its Airy sum is the
+// bare metal's curve (thin_film_test), so it compiles as the bare metal too.
 bool has_visible_film(const Material& material) {
-  return material.film && material.film->thickness_nm > 0.0 && material.film->weight > 0.0;
+  return material.film && material.film->thickness_nm > 0.0 && material.film->weight > 0.0 &&
+         material.film->ior != 1.0;
 }
 
 ColorSpace input_color_space(const Material& material, ColorSpace working_space) {

@@ -73,7 +73,7 @@ struct CompiledMaterial {
   ErrorStats film_table_error;  // the table's F against the exact curve, on the accuracy grid
 };
 
-// Whether a material's film shows: a film of 0 nm, or of no coverage, is the bare metal.
+// Whether a material's film shows: a film of 0 nm, of no coverage or of index 1 is the bare metal.
 bool has_visible_film(const Material& material);
 
 // What the shader functions of a compiled material compute, against its exact curve: the film

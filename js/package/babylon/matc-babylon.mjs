@@ -476,14 +476,18 @@ export class MatcFresnelPlugin extends MaterialPluginBase {
 // Babylon's own dielectric by the pixel's metallic in every light path (under a matc coat, the
 // dielectric seen through it as glTF layers a clear coat; under Babylon's OpenPBR conductor model
 // too, whose own mix of its dielectric and metal terms becomes matc_metal_rough's).
-export function useMatcFresnel(material, build, source, { areaLights = "matc", metalRough = false } = {}) {
+// options.bareFilm: `source` is the bare metal that matc compiled from the material's film (index 1,
+// 0 nm or no coverage: docs/thin-film.md); it takes the place of Babylon's iridescence, which is
+// switched off, as a filmed metal does (the glTF loaders set it).
+export function useMatcFresnel(material, build, source, { areaLights = "matc", metalRough = false, bareFilm = false } = {}) {
   if (!material?.getClassName || !["PBRMaterial"].includes(material.getClassName())) {
     throw new MatcWebError("useMatcFresnel takes a Babylon.js PBRMaterial");
   }
-  checkIridescence(Boolean(material.iridescence?.isEnabled), source?.material?.film);
+  const replacesIridescence =
+    checkIridescence(Boolean(material.iridescence?.isEnabled), source?.material?.film, bareFilm);
   material.matcFresnel = new MatcFresnelPlugin(material, build, source, areaLights, metalRough);
-  // A filmed metal: matc's film in place of Babylon's iridescence.
-  if (material.matcFresnel.film) material.iridescence.isEnabled = false;
+  // matc's film (or the bare metal a film of index 1 is) in place of Babylon's iridescence.
+  if (replacesIridescence) material.iridescence.isEnabled = false;
   const coat = material.matcFresnel.coat;
   if (coat) {
     // The coat's lobe and layering are the compiled material's (weight, index, colour, roughness):

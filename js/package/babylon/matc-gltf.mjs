@@ -58,7 +58,7 @@ class MatcGltfLoaderExtension {
       // glTF's metal-rough mix per pixel (under a matc coat and Babylon's OpenPBR conductor model too).
       try {
         useMatcFresnel(babylonMaterial, this.build, found.source,
-                       { areaLights: this.areaLights, metalRough: found.metalRough });
+                       { areaLights: this.areaLights, metalRough: found.metalRough, bareFilm: found.bareFilm });
         babylonMaterial.metadata = { ...babylonMaterial.metadata, matc: { gltfMaterial: material.index, from: found.from } };
         this.made.push(babylonMaterial);
       } catch (error) {

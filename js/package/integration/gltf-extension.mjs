@@ -144,6 +144,16 @@ function gltfMaterialAsset(json, index) {
 
 const isGltfMetal = (material) => (material.pbrMetallicRoughness?.metallicFactor ?? 1) > 0;
 
+// Whether a material's KHR_materials_iridescence is a film matc compiles as the bare metal (its
+// has_visible_film; the importer takes the film at iridescenceThicknessMaximum): no coverage, an
+// index of 1 (air) or no thickness. glTF's defaults: factor 0, index 1.3, maximum 400 nm.
+const hasBareFilm = (material) => {
+  const film = material.extensions?.KHR_materials_iridescence;
+  return typeof film === "object" && film !== null &&
+         ((film.iridescenceFactor ?? 0) === 0 || (film.iridescenceIor ?? 1.3) === 1 ||
+          (film.iridescenceThicknessMaximum ?? 400) === 0);
+};
+
 // Whether a glTF metal's metalness varies from 1: a metallicFactor below 1 or a
 // metallicRoughnessTexture (whose blue channel scales it per pixel). Such a material is glTF's
 // metal-rough model per pixel: matc's metal mixed with the engine's dielectric (docs/gltf.md).
@@ -155,7 +165,9 @@ export const isGltfMetalRough = (material) => {
 // What the engines' glTF loaders (three/matc-gltf.mjs, babylon/matc-gltf.mjs) make of an asset's
 // materials: `metalOf(index)` resolves to { metal (as build.loadMaterial gives it), from:
 // "extension" | "compiled", source: useMatcFresnel's, metalRough: useMatcFresnel's option, set for
-// a metal (bare or coated) whose metalness is partial or textured }, or null for a material that stays the
+// a metal (bare or coated) whose metalness is partial or textured, bareFilm: useMatcFresnel's
+// option, set for a bare metal under a KHR_materials_iridescence that shows nothing (index 1, 0 nm
+// or no coverage: matc compiles it bare, and it takes the engine's iridescence's place) }, or null for a material that stays the
 // engine's. A textured metal follows the engine's base colour (factor times texture) per pixel:
 // of Schlick's curve (no edge colour, no coat) with the source { schlick }, under an edge colour
 // or a coat with { material, f0Table }; one whose extension carries neither (compiled in another
@@ -186,6 +198,7 @@ export function gltfMetals({ matc = null, build, compile = {}, json, warn, note 
   // through the coat as glTF layers a clear coat).
   const withSource = (index, metal, from, perPixel) => ({
     metal, from, source: sourceOf(index, metal, perPixel), metalRough: isGltfMetalRough(json.materials[index]),
+    bareFilm: !metal.film && hasBareFilm(json.materials[index]),
   });
   // `matc gltf` in the page: the importer decides which metals follow their texture per pixel, and
   // writes their zeroF0Coefficients, as for an asset written offline.

@@ -19,13 +19,16 @@ export function checkLayeredAreaLights(material, areaLights, allowed = ["matc", 
 }
 
 // The engine's own iridescence (glTF's KHR_materials_iridescence: the film over a dielectric base)
-// replaces the base Fresnel: a filmed matc metal takes its place (the integrations switch the
-// engine's off), a bare one cannot be combined with it.
-export function checkIridescence(engineIridescence, film) {
-  if (engineIridescence && !film) {
+// replaces the base Fresnel: a filmed matc metal takes its place, and so does a bare one compiled
+// from a film that shows nothing (`bareFilm`: index 1, 0 nm or no coverage, which matc compiles as
+// the bare metal); any other bare one cannot be combined with it. Returns whether the integration
+// switches the engine's iridescence off.
+export function checkIridescence(engineIridescence, film, bareFilm = false) {
+  if (engineIridescence && !film && !bareFilm) {
     throw new MatcWebError("iridescence replaces the base Fresnel; it cannot be combined with matc's " +
                            "(a matc material with a film takes its place)");
   }
+  return Boolean(film || bareFilm);
 }
 
 // A colour option of a source (reflectivity, edgeTint): [r, g, b], one grey value, or 1 when absent.

@@ -7,8 +7,8 @@
 // that a page loads the one its renderer needs.
 import { checkGltfLoaderOptions, gltfMetals } from "../matc-build.mjs";
 
-// make(material, source, metalRough) -> the matc material (useMatcFresnel's result); metalRough:
-// glTF's metal-rough model per pixel (gltfMetals decides it). `what` names the plugin in the
+// make(material, source, { metalRough, bareFilm }) -> the matc material (useMatcFresnel's result,
+// with those options: gltfMetals decides them). `what` names the plugin in the
 // options' error.
 export function threeGltfPlugin({ matc, build, compile, what, make }) {
   checkGltfLoaderOptions(matc, build, what);
@@ -37,7 +37,7 @@ export function threeGltfPlugin({ matc, build, compile, what, make }) {
         const found = await metals.metalOf(index);
         if (!found) continue;
         try {
-          const matcMaterial = make(material, found.source, found.metalRough);
+          const matcMaterial = make(material, found.source, { metalRough: found.metalRough, bareFilm: found.bareFilm });
           Object.assign(matcMaterial.userData.matc, { gltfMaterial: index, from: found.from });
           if (matcMaterial !== material) {
             for (const { object, slot } of places) {

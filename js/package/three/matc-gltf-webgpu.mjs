@@ -37,11 +37,11 @@ function nodeMaterialOf(material) {
 export function matcGltfPlugin({ matc = null, build, compile = {}, areaLights = "matc" }) {
   const plugin = threeGltfPlugin({
     matc, build, compile, what: "matcGltfPlugin (WebGPU)",
-    make: (material, source, metalRough) => {
+    make: (material, source, options) => {
       if (!material.isMeshStandardMaterial) throw new MatcWebError("three.js built no MeshStandardMaterial for it");
       // A coated metal made from the extension carries its snippet; this build makes its functions.
       if (source.material?.coat && !source.material.coat.functions) build.withCoatFunctions(source.material);
-      return useMatcFresnel(nodeMaterialOf(material), build, source, { areaLights, metalRough });
+      return useMatcFresnel(nodeMaterialOf(material), build, source, { areaLights, ...options });
     },
   });
   // A build of matc/three (WebGL: GLSL) passes the shared check; its metals could not draw here.

@@ -31,6 +31,6 @@ import { useMatcFresnel } from "./matc-three.mjs";
 // glTF's colours are linear Rec.709); options.areaLights: as useMatcFresnel takes it.
 export function matcGltfPlugin({ matc = null, build, compile = {}, areaLights = "matc" }) {
   return threeGltfPlugin({ matc, build, compile, what: "matcGltfPlugin",
-                           make: (material, source, metalRough) =>
-                             useMatcFresnel(material, build, source, { areaLights, metalRough }) });
+                           make: (material, source, options) =>
+                             useMatcFresnel(material, build, source, { areaLights, ...options }) });
 }

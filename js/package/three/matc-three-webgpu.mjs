@@ -490,7 +490,10 @@ function coatOf(compiled, material, areaLights, underCoat = null) {
 // metalness (and metalnessNode, a glTF metal's map), and matc's metal replaces three's metal lobe
 // only, mixed with three's own dielectric by the pixel's metalness in every light path (under a
 // matc coat, the dielectric seen through it as glTF layers a clear coat).
-export function useMatcFresnel(material, build, source, { areaLights = "matc", metalRough = false } = {}) {
+// options.bareFilm: `source` is the bare metal that matc compiled from the material's film (index 1,
+// 0 nm or no coverage: docs/thin-film.md); it takes the place of three's iridescence, which is
+// switched off, as a filmed metal does (the glTF loaders set it).
+export function useMatcFresnel(material, build, source, { areaLights = "matc", metalRough = false, bareFilm = false } = {}) {
   checkAreaLights(areaLights);
   if (!material?.isMeshStandardNodeMaterial) {
     throw new MatcWebError("useMatcFresnel (WebGPU) takes a MeshStandardNodeMaterial or MeshPhysicalNodeMaterial");
@@ -500,13 +503,11 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc", m
   // metal with its extinction taken as 0), in place of the one matc replaces.
   // A filmed matc metal takes its place (matc's film over the metal's own index).
   const film = source?.material?.film ?? null;
-  checkIridescence(material.iridescence > 0, film);
+  const replacesIridescence = checkIridescence(material.iridescence > 0, film, bareFilm);
   checkLightingModel();
   const { underCoat, ...rows } = coefficientRows(build, source);
-  if (film) {
-    checkLayeredAreaLights(source.material, areaLights);
-    material.iridescence = 0;
-  }
+  if (film) checkLayeredAreaLights(source.material, areaLights);
+  if (replacesIridescence) material.iridescence = 0;
   const coat = source?.material?.coat ? coatOf(source.material, material, areaLights, underCoat) : null;
   const matc = { rows, functions: build.functionsByBasis?.[sourceBasis(build, source)] ?? build.functions, lut: build.lut, ltc: build.ltc, url: build.url, areaLights, coat,
                  film: film && filmTexture(THREE, film.table), source, metalRough };

@@ -306,14 +306,17 @@ function sourceUniforms(build, source) {
 // against the CPU runtime), "quality" (the same with matc's quality level: the lobe's shape and
 // the Fresnel follow the light across the lobe, docs/ltc.md; a quarter more per light) or "engine"
 // (three's LTC shape with matc's Fresnel: cheaper; docs/web-engines.md measures them).
-export function useMatcFresnel(material, build, source, { areaLights = "matc", metalRough = false } = {}) {
+// options.bareFilm: `source` is the bare metal that matc compiled from the material's film (index 1,
+// 0 nm or no coverage: docs/thin-film.md); it takes the place of three's iridescence, which is
+// switched off, as a filmed metal does (the glTF loaders set it).
+export function useMatcFresnel(material, build, source, { areaLights = "matc", metalRough = false, bareFilm = false } = {}) {
   checkAreaLights(areaLights);
   checkBuild(build);
   if (!material?.isMeshStandardMaterial) {
     throw new MatcWebError("useMatcFresnel takes a MeshStandardMaterial or MeshPhysicalMaterial");
   }
   const film = source?.material?.film;
-  checkIridescence(material.iridescence > 0, film);
+  const replacesIridescence = checkIridescence(material.iridescence > 0, film, bareFilm);
   if (!kTestedThreeRevisions.includes(THREE.REVISION)) {
     console.warn(`matc-three: three.js r${THREE.REVISION} is untested (tested: r` +
                  `${kTestedThreeRevisions.join(", r")}); its chunks still match the patches`);
@@ -328,10 +331,11 @@ export function useMatcFresnel(material, build, source, { areaLights = "matc", m
   const { [kMainShader]: main, ...chunks } = patchChunks(THREE.ShaderChunk, build.library, source.material, build);
   Object.assign(uniforms, { matc_lut: { value: build.lut }, matc_ltc: { value: build.ltc ?? build.lut } });
   if (film) {
-    // A filmed metal: its own table, and matc's film in place of three's iridescence.
+    // A filmed metal: its own table.
     uniforms.matc_film_table = { value: filmTexture(THREE, film.table) };
-    material.iridescence = 0;
   }
+  // matc's film (or the bare metal a film of index 1 is) in place of three's iridescence.
+  if (replacesIridescence) material.iridescence = 0;
   if (!metalRough) {
     material.metalness = 1;
     material.metalnessMap = null;

@@ -1,6 +1,6 @@
 // Materials with a film compiled (compile/compile.h, docs/material-format.md "film"): the curve the
-// compile fits is the film's, a film of 0 nm or of no coverage is the bare metal bit for bit, and
-// the fit's accuracy is reported against the film's curve.
+// compile fits is the film's, a film of 0 nm, of no coverage or of index 1 is the bare metal bit
+// for bit, and the fit's accuracy is reported against the film's curve.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,10 +20,12 @@ Material titanium(std::optional<FilmInput> film) {
   return material;
 }
 
-TEST(FilmCompile, NoThicknessOrNoCoverageIsTheBareMetalBitForBit) {
+TEST(FilmCompile, NoThicknessNoCoverageOrIndexOneIsTheBareMetalBitForBit) {
   const auto& basis = runtime::shipped_basis();
   const CompiledMaterial bare = compile_material(titanium(std::nullopt), basis);
-  for (const FilmInput film : {FilmInput{1.0, 2.3, 0.0}, FilmInput{0.0, 2.3, 300.0}}) {
+  // A film of index 1 is air (Khronos's IridescenceMetallicSpheres has 49 such metals).
+  for (const FilmInput film :
+       {FilmInput{1.0, 2.3, 0.0}, FilmInput{0.0, 2.3, 300.0}, FilmInput{1.0, 1.0, 300.0}}) {
     const CompiledMaterial same = compile_material(titanium(film), basis);
     EXPECT_EQ(same.coefficients, bare.coefficients);
     EXPECT_EQ(same.f0, bare.f0);
