@@ -341,6 +341,7 @@ export const kFailures = {
   f0_table_without_material: "an F0 table (f0Table) comes with its { material }",
   coated_f0_table_without_under_coat: "f0Table: a coated metal's table needs underCoatCoefficients",
   unknown_area_light_option: 'areaLights: "fast"; allowed: "matc", "quality", "engine"',
+  bare_film_not_boolean: "bareFilm must be true or false, not a string",
   coated_quality_area_lights: "is coated: the quality-level area lights take bare metals",
   filmed_quality_area_lights: "is filmed: the quality-level area lights take bare metals",
   filmed_f0_table: "is filmed: its own table holds the film over one metal",

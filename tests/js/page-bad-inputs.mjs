@@ -33,6 +33,7 @@ export async function checkBadInputs(out, { loadMatcBuild, build, material, coat
     }
   });
   await failure("unknown_area_light_option", () => useMatc({ material }, { areaLights: "fast" }));
+  await failure("bare_film_not_boolean", () => useMatc({ material }, { bareFilm: "yes" }));
   await failure("textured_without_edge_tint", () => useMatc({ reflectivityMap: texture }));
   // Rows that are not a Schlick curve's at F0 = 0 (a compiled material's coefficients).
   await failure("schlick_not_zero_f0", () => useMatc({ schlick: { basis: material.basis, zeroF0Coefficients: material.coefficients } }));

@@ -24,6 +24,9 @@ export function checkLayeredAreaLights(material, areaLights, allowed = ["matc", 
 // the bare metal); any other bare one cannot be combined with it. Returns whether the integration
 // switches the engine's iridescence off.
 export function checkIridescence(engineIridescence, film, bareFilm = false) {
+  if (typeof bareFilm !== "boolean") {
+    throw new MatcWebError(`bareFilm must be true or false, not a ${typeof bareFilm}`);
+  }
   if (engineIridescence && !film && !bareFilm) {
     throw new MatcWebError("iridescence replaces the base Fresnel; it cannot be combined with matc's " +
                            "(a matc material with a film takes its place)");
