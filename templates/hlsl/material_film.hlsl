@@ -30,4 +30,29 @@ float3 matc_fresnel_{{name}}(float4 film_texel) {
 float3 matc_fresnel_preintegrated_{{name}}(float4 film_texel) {
   return film_texel.rgb;
 }
+
+#ifdef MATC_LTC_SIZE
+// Area lights of radiance 1 (docs/thin-film.md): the LTC integral times the film's preintegrated
+// F; film_texel the film table's texel at matc_film_preintegrated_texcoord(NdotV, roughness)
+// (matc_film_preintegrated), ltc from matc_ltc at (NdotV, roughness). A quad light ...
+float3 matc_ltc_quad_light_{{name}}(float4 film_texel, float4 ltc, float3 N, float3 V, float3 P,
+                                    float3 q0, float3 q1, float3 q2, float3 q3) {
+  return matc_ltc_quad_integral(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3) *
+         matc_fresnel_preintegrated_{{name}}(film_texel);
+}
+
+// ... a disk light ...
+float3 matc_ltc_disk_light_{{name}}(float4 film_texel, float4 ltc, float3 N, float3 V, float3 P,
+                                    float3 centre, float3 normal, float radius) {
+  return matc_ltc_disk_integral(matc_ltc_transform(N, V, ltc), P, centre, normal, radius) *
+         matc_fresnel_preintegrated_{{name}}(film_texel);
+}
+
+// ... and a sphere light.
+float3 matc_ltc_sphere_light_{{name}}(float4 film_texel, float4 ltc, float3 N, float3 V,
+                                      float3 P, float3 centre, float radius) {
+  return matc_ltc_sphere_integral(matc_ltc_transform(N, V, ltc), P, centre, radius) *
+         matc_fresnel_preintegrated_{{name}}(film_texel);
+}
+#endif
 {{layer_texcoord}}#endif  // MATC_MATERIAL_{{name}}

@@ -27,4 +27,27 @@ fn matc_fresnel_{{name}}(film_texel: vec4f) -> vec3f {
 fn matc_fresnel_preintegrated_{{name}}(film_texel: vec4f) -> vec3f {
   return film_texel.rgb;
 }
+
+// Area lights of radiance 1 (docs/thin-film.md): the LTC integral times the film's preintegrated
+// F; film_texel the film table's texel at matc_film_preintegrated_texcoord(NdotV, roughness)
+// (matc_film_preintegrated), ltc from matc_ltc at (NdotV, roughness). A quad light ...
+fn matc_ltc_quad_light_{{name}}(film_texel: vec4f, ltc: vec4f, N: vec3f, V: vec3f, P: vec3f,
+                                q0: vec3f, q1: vec3f, q2: vec3f, q3: vec3f) -> vec3f {
+  return matc_ltc_quad_integral(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3) *
+         matc_fresnel_preintegrated_{{name}}(film_texel);
+}
+
+// ... a disk light ...
+fn matc_ltc_disk_light_{{name}}(film_texel: vec4f, ltc: vec4f, N: vec3f, V: vec3f, P: vec3f,
+                                centre: vec3f, normal: vec3f, radius: f32) -> vec3f {
+  return matc_ltc_disk_integral(matc_ltc_transform(N, V, ltc), P, centre, normal, radius) *
+         matc_fresnel_preintegrated_{{name}}(film_texel);
+}
+
+// ... and a sphere light.
+fn matc_ltc_sphere_light_{{name}}(film_texel: vec4f, ltc: vec4f, N: vec3f, V: vec3f, P: vec3f,
+                                  centre: vec3f, radius: f32) -> vec3f {
+  return matc_ltc_sphere_integral(matc_ltc_transform(N, V, ltc), P, centre, radius) *
+         matc_fresnel_preintegrated_{{name}}(film_texel);
+}
 {{layer_texcoord}}

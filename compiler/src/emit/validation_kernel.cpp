@@ -32,17 +32,17 @@ std::string validation_kernel_source(ShaderLanguage language, std::string_view l
                            {"name", std::string(material_name)},
                            {"library", std::string(library)},
                            {"material", std::string(material)}};
-  // A filmed metal's kernel samples its own table, not the preintegrated one.
-  if (kind == MaterialKernel::filmed)
-    return fill_template(glsl ? "glsl/validate_film.comp" : "hlsl/validate_film.hlsl", values);
   if (kind == MaterialKernel::bare) {
     values["suffix"] = std::string(basis_suffix);
     return fill_template(glsl ? "glsl/validate.comp" : "hlsl/validate.hlsl", values);
   }
   std::string quad;
-  for (const runtime::Vec3& corner : kCoatedValidationQuad)
+  for (const runtime::Vec3& corner : kLayeredValidationQuad)
     quad += (quad.empty() ? "" : ", ") + vector_literal(language, corner);
   values["quad"] = quad;
+  // A filmed metal's kernel samples its own table, not the preintegrated one.
+  if (kind == MaterialKernel::filmed)
+    return fill_template(glsl ? "glsl/validate_film.comp" : "hlsl/validate_film.hlsl", values);
   return fill_template(glsl ? "glsl/validate_coated.comp" : "hlsl/validate_coated.hlsl", values);
 }
 

@@ -29,15 +29,15 @@ inline constexpr std::size_t kValidationResultsPerQuery = 4;
 // `library` and `material` are the sources of matc_fresnel.* and <name>.* in `language`. A coated
 // material's kernel (templates/*/validate_coated.*) writes the base lobe in .xyz and the coat
 // lobe in .w of the same four results, the coat's preintegrated F sampled at its roughness, then
-// a fifth: kCoatedValidationQuad's light on both lobes (the LTC table at binding 5), and a sixth:
+// a fifth: kLayeredValidationQuad's light on both lobes (the LTC table at binding 5), and a sixth:
 // glTF's metal-rough mix under the coat (matc_metal_rough_<name>) with the coat's transmission.
 inline constexpr std::size_t kCoatedValidationResultsPerQuery = 6;
-// A filmed material's kernel (templates/*/validate_film.*) writes two: F and Fbar, both from the
-// film's tables.
-inline constexpr std::size_t kFilmValidationResultsPerQuery = 2;
+// A filmed material's kernel (templates/*/validate_film.*) writes three: F and Fbar, both from the
+// film's tables, and kLayeredValidationQuad's light (the LTC table at binding 5).
+inline constexpr std::size_t kFilmValidationResultsPerQuery = 3;
 // A quad light in the shading frame (normal +z, view in the xz-plane towards +x, shading point
-// at the origin), on the reflection's side and tilted.
-inline constexpr std::array<runtime::Vec3, 4> kCoatedValidationQuad = {
+// at the origin), on the reflection's side and tilted: the coated and filmed kernels' light.
+inline constexpr std::array<runtime::Vec3, 4> kLayeredValidationQuad = {
     {{-0.5, -1.0, 1.5}, {-2.0, -1.0, 0.5}, {-2.0, 1.0, 0.5}, {-0.5, 1.0, 1.5}}};
 // The kind of kernel a material's check runs.
 enum class MaterialKernel { bare, coated, filmed };

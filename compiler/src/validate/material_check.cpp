@@ -58,9 +58,9 @@ class MaterialCheck final : public DeviceCheck {
   }
 
   // A coated material's kernel lights both lobes with a quad light through the LTC table; a
-  // filmed one's samples its own table.
+  // filmed one's samples its own table and lights it so too.
   KernelTables tables() const override {
-    KernelTables tables{false, compiled_.coat.has_value(), {}};
+    KernelTables tables{false, compiled_.coat.has_value() || stored_film_.has_value(), {}};
     if (stored_film_) tables.film = runtime::film_table_texels(*stored_film_);
     return tables;
   }
@@ -106,27 +106,33 @@ class MaterialCheck final : public DeviceCheck {
     }
     if (label == "coat transmission") return fmt::format("NdotV {:.4f}", q.ndotv);
     if (label == "L") {
-      return fmt::format("NdotV {:.4f}, roughness {:.4f}, kCoatedValidationQuad", q.ndotv,
+      return fmt::format("NdotV {:.4f}, roughness {:.4f}, kLayeredValidationQuad", q.ndotv,
                          q.roughness);
     }
     return fmt::format("NdotV {:.4f}, roughness {:.4f}", q.ndotv, q.roughness);
   }
 
  private:
-  // A filmed material's F and Fbar, from its table as the file stores it, through the sampler.
+  // A filmed material's F and Fbar, from its table as the file stores it, through the sampler,
+  // and kLayeredValidationQuad's light (runtime/ltc.h's film_polygon_light_ltc).
   std::vector<CheckedQuantity> compare_filmed(std::span<const float> results,
                                               const runtime::FilmTable& film) const {
-    // Both through the sampler, whose weights may carry as few as 8 bits.
+    // All through the sampler, whose weights may carry as few as 8 bits.
     CheckedQuantity fresnel{"F", tolerance_.preintegrated};
     CheckedQuantity preintegrated{"Fbar", tolerance_.preintegrated};
+    CheckedQuantity quad_light{"L", tolerance_.preintegrated};
     for (std::size_t i = 0; i < queries_.size(); ++i) {
       const ValidationQuery& q = queries_[i];
       const float* result = &results[i * kFilmValidationResultsPerQuery * 4];
       record_largest(fresnel, runtime::film_fresnel(film, q.mu), result, i);
       record_largest(preintegrated, runtime::film_preintegrated(film, q.ndotv, q.roughness),
                      result + 4, i);
+      record_largest(quad_light,
+                     runtime::film_polygon_light_ltc(film, runtime::shipped_ltc_table(), q.ndotv,
+                                                     q.roughness, kLayeredValidationQuad),
+                     result + 8, i);
     }
-    return {fresnel, preintegrated};
+    return {fresnel, preintegrated, quad_light};
   }
 
   // Both lobes of a coated material (runtime/coat.h): the base's RGB and the coat's F, each
@@ -166,7 +172,7 @@ class MaterialCheck final : public DeviceCheck {
       record(0, lobes, result, i);
       record_largest(quantities[8],
                      runtime::polygon_light_ltc_coated(c, coat, table, runtime::shipped_ltc_table(),
-                                                       q.ndotv, q.roughness, kCoatedValidationQuad)
+                                                       q.ndotv, q.roughness, kLayeredValidationQuad)
                          .total(),
                      result + 16, i);
       record(1, runtime::evaluate_coated_fbar(c, coat, table, q.ndotv, q.roughness), result + 4, i);
