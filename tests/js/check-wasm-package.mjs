@@ -252,7 +252,7 @@ console.log(`${cases} catalogue cases through the JS API`);
     [{ name: "sum" }, /name is not the identifier matc writes/],
     [{ name: "f82" }, /name is not the identifier matc writes/],
     [{ name: "t".repeat(65) }, /name is not the identifier matc writes/],
-    [{ basis: "paper" }, /holds coefficients of basis paper/],
+    [{ basis: "paper" }, /holds coefficients of basis "paper"/],
   ];
   for (const [change, pattern] of refusals) {
     let message = "no error";

@@ -33,6 +33,8 @@ export async function checkBadInputs(out, { loadMatcBuild, build, material, coat
     }
   });
   await failure("unknown_area_light_option", () => useMatc({ material }, { areaLights: "fast" }));
+  // Text from an argument is quoted: a line break cannot forge a console line.
+  await failure("area_light_option_escaped", () => useMatc({ material }, { areaLights: "x\nmatc: forged" }));
   await failure("bare_film_not_boolean", () => useMatc({ material }, { bareFilm: "yes" }));
   await failure("textured_without_edge_tint", () => useMatc({ reflectivityMap: texture }));
   // Rows that are not a Schlick curve's at F0 = 0 (a compiled material's coefficients).

@@ -6,7 +6,7 @@
 // nothing else.
 import { tableFiles } from "../tables.mjs";
 import { checkedRows } from "./coefficient-rows.mjs";
-import { MatcWebError, kMatcVersion } from "./errors.mjs";
+import { MatcWebError, kMatcVersion, quoted } from "./errors.mjs";
 import { rgbOf } from "./sources.mjs";
 
 async function ktx2Reader() {
@@ -141,11 +141,11 @@ export async function loadMatcBuildFiles(url, { language = "glsl" } = {}) {
     // { name, basis, coefficients: 3 rows (R, G, B) of c_0..c_3 }.
     async loadMaterial(name) {
       const file = at(`${name}.json`);
-      const material = await fetchJson(file, `is ${name} one of this build's materials?`);
+      const material = await fetchJson(file, `is ${quoted(name)} one of this build's materials?`);
       const basis = material.basis?.name;
       if (!(layers ? layers.includes(basis) : basis === manifest.basis) ||
           material.matc_version !== manifest.matc_version) {
-        throw new MatcWebError(`${file}: coefficients of basis ${basis} from matc ${material.matc_version}, ` +
+        throw new MatcWebError(`${file}: coefficients of basis ${quoted(basis)} from matc ${quoted(material.matc_version)}, ` +
                                `but the build's tables are basis ${manifest.basis} from matc ` +
                                `${manifest.matc_version}: they do not belong together`);
       }
@@ -262,7 +262,7 @@ async function loadFilm(material, manifest, at, file) {
   const tableFile = entry?.files?.map?.((written) => written?.file)
                         .find((name) => typeof name === "string" && name.startsWith(`${material.name}.film.`));
   if (!tableFile) {
-    throw new MatcWebError(`${file}: a filmed metal, but the manifest lists no ${material.name}.film.<ext> ` +
+    throw new MatcWebError(`${file}: a filmed metal, but the manifest lists no ${quoted(`${material.name}.film.<ext>`)} ` +
                            "(its own table); compile with --emit lut among the outputs");
   }
   return { table: await loadTable(at(tableFile), { file: tableFile, width: kFilmTableWidth, height: kFilmTableHeight,
@@ -278,7 +278,7 @@ async function loadCoat(material, snippetUrl, file) {
     if (typeof input[field] !== "number") throw new MatcWebError(`${file}: coat.input.${field} must be a number`);
   }
   if (!isSnippetName(material.name)) {
-    throw new MatcWebError(`${file}: name "${material.name}" is not the identifier matc's snippets use`);
+    throw new MatcWebError(`${file}: name ${quoted(material.name)} is not the identifier matc's snippets use`);
   }
   const snippet = await (await fetchChecked(snippetUrl, "a coated material needs its own shader snippet; " +
                                             "compile with the shader language among --emit")).text();

@@ -4,7 +4,7 @@
 import { coatedSnippet } from "../coated-snippet.mjs";
 import { buildBases, holdsBasis } from "./basis-layers.mjs";
 import { checkedFiniteRows, checkedZeroF0Rows, finiteRows } from "./coefficient-rows.mjs";
-import { MatcWebError } from "./errors.mjs";
+import { MatcWebError, quoted } from "./errors.mjs";
 import { checkedF0Table } from "./f0-table.mjs";
 import { isSnippetName, kFilmTableHeight, kFilmTableWidth } from "./build-directory.mjs";
 
@@ -93,8 +93,8 @@ function extensionFilm(film) {
 export async function gltfExtensionMaterial(build, extension) {
   const version = build.manifest?.matc_version;
   if (!holdsBasis(build, extension?.basis) || extension?.matcVersion !== version) {
-    throw new MatcWebError(`its ${kGltfFresnelExtension} holds coefficients of basis ${extension?.basis} from ` +
-                           `matc ${extension?.matcVersion}; the build's tables are basis ` +
+    throw new MatcWebError(`its ${kGltfFresnelExtension} holds coefficients of basis ${quoted(extension?.basis)} from ` +
+                           `matc ${quoted(extension?.matcVersion)}; the build's tables are basis ` +
                            `${buildBases(build).join(", ")} from matc ${version}`);
   }
   if (!isSnippetName(extension.name)) {

@@ -2,7 +2,7 @@
 // build: areaLights, colour options, and the source's kind.
 import { buildBases, holdsBasis } from "./basis-layers.mjs";
 import { checkedZeroF0Rows } from "./coefficient-rows.mjs";
-import { MatcWebError } from "./errors.mjs";
+import { MatcWebError, quoted } from "./errors.mjs";
 import { checkedF0Table } from "./f0-table.mjs";
 
 // Checks the areaLights option against what a coated material (`allowed`) or a filmed one takes in
@@ -14,7 +14,7 @@ export function checkLayeredAreaLights(material, areaLights, allowed = ["matc", 
   if (permitted.includes(areaLights)) return;
   const why = areaLights === "quality" ? "the quality-level area lights take bare metals"
                                        : `its coat lobe needs matc's LTC on rect lights (areaLights "${areaLights}")`;
-  throw new MatcWebError(`${material.name} is ${material.coat ? "coated" : "filmed"}: ${why}; use areaLights ` +
+  throw new MatcWebError(`${quoted(material.name)} is ${material.coat ? "coated" : "filmed"}: ${why}; use areaLights ` +
                          permitted.map((value) => `"${value}"`).join(" or "));
 }
 
@@ -42,7 +42,7 @@ export function rgbOf(value) {
 // Checks the areaLights option against the values an integration supports.
 export function checkAreaLights(areaLights, allowed = ["matc", "quality", "engine"]) {
   if (!allowed.includes(areaLights)) {
-    throw new MatcWebError(`areaLights: "${areaLights}"; allowed: ${allowed.map((value) => `"${value}"`).join(", ")}`);
+    throw new MatcWebError(`areaLights: ${quoted(areaLights)}; allowed: ${allowed.map((value) => `"${value}"`).join(", ")}`);
   }
 }
 
@@ -52,7 +52,7 @@ export function sourceKind(build, source) {
   if (source?.schlick) {
     const { basis, zeroF0Coefficients } = source.schlick;
     if (!holdsBasis(build, basis)) {
-      throw new MatcWebError(`schlick: coefficients of basis ${basis}, the build's tables are ${buildBases(build).join(", ")}`);
+      throw new MatcWebError(`schlick: coefficients of basis ${quoted(basis)}, the build's tables are ${buildBases(build).join(", ")}`);
     }
     checkedZeroF0Rows(zeroF0Coefficients, "schlick");
     return "schlick";
@@ -60,14 +60,14 @@ export function sourceKind(build, source) {
   if (source?.f0Table) {
     if (!source.material) throw new MatcWebError("an F0 table (f0Table) comes with its { material }");
     if (source.material.film) {
-      throw new MatcWebError(`${source.material.name} is filmed: its own table holds the film over one metal, ` +
+      throw new MatcWebError(`${quoted(source.material.name)} is filmed: its own table holds the film over one metal, ` +
                              "so its F0 is not followed per pixel (f0Table)");
     }
     checkedF0Table(source.f0Table, Boolean(source.material.coat), "f0Table");
   }
   if (source?.material) {
     if (!holdsBasis(build, source.material.basis)) {
-      throw new MatcWebError(`${source.material.name}: coefficients of basis ${source.material.basis}, ` +
+      throw new MatcWebError(`${quoted(source.material.name)}: coefficients of basis ${quoted(source.material.basis)}, ` +
                              `the build's tables are ${buildBases(build).join(", ")}`);
     }
     return source.f0Table ? "f0Table" : "material";
@@ -87,7 +87,7 @@ export function sourceKind(build, source) {
       throw new MatcWebError("baked coefficients need c2Map and c3Map (matc bake)");
     }
     if (source.baked.basis && source.baked.basis !== buildBases(build)[0]) {
-      throw new MatcWebError(`baked coefficients of basis ${source.baked.basis}, the build's tables are ${buildBases(build)[0]}`);
+      throw new MatcWebError(`baked coefficients of basis ${quoted(source.baked.basis)}, the build's tables are ${buildBases(build)[0]}`);
     }
     return "baked";
   }
