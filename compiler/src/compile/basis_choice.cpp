@@ -1,8 +1,8 @@
 #include "compile/basis_choice.h"
 
-#include "compile/compile.h"
-
 #include <variant>
+
+#include "compile/compile.h"
 
 namespace matc {
 
