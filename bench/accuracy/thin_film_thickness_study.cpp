@@ -31,7 +31,7 @@
 //     thick (where the orders alone hold).
 // Each cell: the worst |candidate - spectral Airy sum| over the 23 reliable measured metals, the
 // channels, 40 cosines in [0.05, 1] / in [0.2, 1], and thicknesses every 5 nm in the row's band.
-//   build/bench/matc_thin_film_thickness_study   (about 4 minutes on 2 cores;
+//   build/bench/matc_thin_film_thickness_study   (about 3 minutes on 2 cores;
 //   bench/accuracy/update-docs.sh)
 #include <algorithm>
 #include <array>
