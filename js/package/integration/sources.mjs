@@ -13,7 +13,7 @@ export function checkLayeredAreaLights(material, areaLights, allowed = ["matc", 
   const permitted = material.coat ? allowed : ["matc", "engine"];
   if (permitted.includes(areaLights)) return;
   const why = areaLights === "quality" ? "the quality-level area lights take bare metals"
-                                       : `its coat lobe needs matc's LTC on rect lights (areaLights "${areaLights}")`;
+                                       : `its coat lobe needs matc's LTC on rect lights (areaLights ${quoted(areaLights)})`;
   throw new MatcWebError(`${quoted(material.name)} is ${material.coat ? "coated" : "filmed"}: ${why}; use areaLights ` +
                          permitted.map((value) => `"${value}"`).join(" or "));
 }
