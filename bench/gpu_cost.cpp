@@ -53,7 +53,7 @@ struct Comparison {
   bool f82_tint_material = false;
 };
 
-const std::array<Comparison, 37> kComparisons = {{
+const std::array<Comparison, 38> kComparisons = {{
     {"F alone, compiled coefficients", FresnelQuantity::direct, FresnelModel::ours,
      FresnelModel::schlick, std::nullopt},
     {"one GGX light, compiled coefficients", FresnelQuantity::ggx_light, FresnelModel::ours,
@@ -154,6 +154,8 @@ const std::array<Comparison, 37> kComparisons = {{
      1.0},
     {"split-sum image light, a metal under a film: its table vs matc's bare metal",
      FresnelQuantity::preintegrated, FresnelModel::film_table, FresnelModel::ours, std::nullopt},
+    {"one quad light (LTC), a metal under a film: its table vs matc's bare metal",
+     FresnelQuantity::quad_light, FresnelModel::film_table, FresnelModel::ours, std::nullopt},
     {"split-sum image light, a metal under a film: its table vs glTF engines' iridescence",
      FresnelQuantity::preintegrated, FresnelModel::film_table,
      FresnelModel::film_airy_dielectric_base, std::nullopt},

@@ -256,14 +256,14 @@ void main() {
   vec3 N = normalize(vec3(uv.x - 0.5, 0.6, uv.y - 0.5));
   vec3 V = vec3(0.0, 1.0, 0.0);
   vec3 P = vec3(2.0 * uv.x - 1.0, 0.0, 2.0 * uv.y - 1.0);
-  float ndotv = dot(N, V);
-  vec4 texel = textureLod(sampler2D(matc_lut, matc_lut_sampler), {{lut_texcoord}}(ndotv, uv.y), 0.0);
-  vec4 ltc = textureLod(sampler2D(matc_ltc, matc_lut_sampler), matc_ltc_texcoord(ndotv, uv.y), 0.0);
+  float NoV = dot(N, V);
+  vec4 texel = textureLod(sampler2D(matc_lut, matc_lut_sampler), {{lut_texcoord}}(NoV, uv.y), 0.0);
+  vec4 ltc = textureLod(sampler2D(matc_ltc, matc_lut_sampler), matc_ltc_texcoord(NoV, uv.y), 0.0);
   vec3 q0 = vec3(-1.0, 2.0, -1.5), q1 = vec3(1.0, 2.0, -1.5);
   vec3 q2 = vec3(1.0, 2.5, -0.5), q3 = vec3(-1.0, 2.5, -0.5);
   MatcLtcPolygon polygon = matc_ltc_quad_polygon(matc_ltc_transform(N, V, ltc), P, q0, q1, q2, q3);
 #if MATC_COST_QUAD_LIGHT_FOLLOWING && !MATC_COST_SCHLICK
-  vec3 geometry = matc_ltc_following_geometry(polygon, ltc, ndotv, uv.y, texel.x);
+  vec3 geometry = matc_ltc_following_geometry(polygon, ltc, NoV, uv.y, texel.x);
   vec3 f = matc_ltc_following_radiance(geometry, texel, COST_FRESNEL(geometry.y),
                                        COST_FRESNEL_PREINTEGRATED(texel));
 #else

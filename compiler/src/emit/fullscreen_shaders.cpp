@@ -114,8 +114,9 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
   if (film == 1 && !compiled.film_table)
     throw std::invalid_argument("cost pass: the film-table model needs a filmed material");
   if (film != 0 && quantity != FresnelQuantity::ggx_light &&
-      quantity != FresnelQuantity::preintegrated)
-    throw std::invalid_argument("cost pass: a film is costed in a GGX light and image light");
+      quantity != FresnelQuantity::preintegrated && quantity != FresnelQuantity::quad_light)
+    throw std::invalid_argument(
+        "cost pass: a film is costed in a GGX light, image light and a quad light");
   // The coat lobe's roughness and weight: the coated material's, else a lacquer's 0.1 and 1.
   const double coat_roughness = compiled.coat ? compiled.coat->input.roughness : 0.1;
   const double coat_weight = compiled.coat ? compiled.coat->input.weight : 1.0;
