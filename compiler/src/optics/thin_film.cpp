@@ -46,8 +46,9 @@ struct FilmAtCosine {
     sin2 = 1.0 - cos0 * cos0;
     n1_squared = film.ior * film.ior;
     // n_1^2 - sin^2 as (n_1^2 - 1) + cos^2: near grazing, 1 - cos^2 rounds to 1 and a film of
-    // index 1 would lose its q_1 = cos (and the Airy sum become 0 / 0).
-    q1 = std::sqrt((n1_squared - 1.0) + cos0 * cos0);
+    // index 1 would lose its q_1 = cos (and the Airy sum become 0 / 0). Callers check
+    // is_propagating first.
+    q1 = std::sqrt(std::max((n1_squared - 1.0) + cos0 * cos0, 0.0));
     r01_s = (cos0 - q1) / (cos0 + q1);
     r01_p = (n1_squared * cos0 - q1) / (n1_squared * cos0 + q1);
     phase_per_inverse_nm = 4.0 * std::numbers::pi * film.thickness_nm * q1;
@@ -78,6 +79,14 @@ struct FilmAtCosine {
     return 0.5 * (airy(r01_s, r12.s) + airy(r01_p, r12.p));
   }
 
+  // Whether the film's wave propagates at this cosine: always for a film of index >= 1; a film
+  // under a coat of higher index (relative index below 1) is evanescent beyond its critical angle,
+  // where q_1 is imaginary and thin_film_reflectance's complex sum holds instead.
+  static bool is_propagating(double mu, const ThinFilm& film) {
+    const double cos0 = std::clamp(mu, 0.0, 1.0);
+    return (film.ior * film.ior - 1.0) + cos0 * cos0 >= 0.0;
+  }
+
   static Complex quotient(Complex a, Complex b) { return a * std::conj(b) / std::norm(b); }
 
   // The root with a non-negative real part, as std::sqrt takes it, without csqrt's handling of
@@ -97,6 +106,10 @@ double covered(const ThinFilm& film, double filmed, double mu, ComplexIor metal)
 }
 
 }  // namespace
+
+ThinFilm film_under_coat(const ThinFilm& film, double ambient_ior) {
+  return {film.ior / ambient_ior, film.thickness_nm * ambient_ior, film.weight};
+}
 
 double covered_reflectance(double mu, double wavelength_nm, const ThinFilm& film,
                            ComplexIor metal) {
@@ -132,8 +145,16 @@ ThinFilmCurve::ThinFilmCurve(const Spectrum& metal, const ThinFilm& film, ColorS
 
 Rgb ThinFilmCurve::at(double mu) const {
   if (!(mu > 0.0)) return {1.0, 1.0, 1.0};  // grazing, as thin_film_reflectance (weights sum to 1)
-  const FilmAtCosine at_cosine(mu, film_);
   Rgb result{};
+  if (!FilmAtCosine::is_propagating(mu, film_)) {
+    for (std::size_t i = 0; i < weights_.size(); ++i) {
+      const double f = covered_reflectance(mu, wavelength_at(i), film_, ior_[i]);
+      for (std::size_t c = 0; c < 3; ++c)
+        result[c] += weights_[i][c] * f;
+    }
+    return result;
+  }
+  const FilmAtCosine at_cosine(mu, film_);
   for (std::size_t i = 0; i < weights_.size(); ++i) {
     const Complex eta = ior_[i].eta();
     const double filmed = at_cosine.reflectance(at_cosine.metal_amplitudes(eta * eta),
@@ -151,6 +172,14 @@ ThinFilmChannelCurve::ThinFilmChannelCurve(const std::array<ComplexIor, 3>& ior,
 
 Rgb ThinFilmChannelCurve::at(double mu) const {
   if (!(mu > 0.0)) return {1.0, 1.0, 1.0};  // grazing, as thin_film_reflectance
+  if (!FilmAtCosine::is_propagating(mu, film_)) {
+    Rgb result{};
+    for (std::size_t i = 0; i < weights_.size(); ++i) {
+      for (std::size_t c = 0; c < 3; ++c)
+        result[c] += weights_[i][c] * covered_reflectance(mu, wavelength_at(i), film_, ior_[c]);
+    }
+    return result;
+  }
   // One index a channel: its amplitudes, and its bare reflectance, hold for every wavelength, and
   // a wavelength's phase holds for every channel.
   const FilmAtCosine at_cosine(mu, film_);

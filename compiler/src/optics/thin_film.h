@@ -16,10 +16,19 @@
 namespace matc {
 
 struct ThinFilm {
-  double ior = 1.5;           // the film's real index, >= 1
+  // The film's real index relative to the medium the light comes from: >= 1 in air; under a coat
+  // (film_under_coat) it may be below 1, and the film's wave is then evanescent beyond the critical
+  // angle.
+  double ior = 1.5;
   double thickness_nm = 0.0;  // 0: no film (the bare metal exactly)
   double weight = 1.0;        // coverage: the curves below mix the bare metal's F by 1 - weight
 };
+
+// The same film seen from inside a medium of index `ambient_ior` (a coat): every index relative to
+// the coat's, and the thickness scaled by it so that the phase, 4 pi d q_1 / lambda with q_1 in
+// absolute terms, is kept. With the metal's index divided by `ambient_ior` too (under_coat), the
+// functions below then give the film's reflectance at the cosine inside the coat.
+ThinFilm film_under_coat(const ThinFilm& film, double ambient_ior);
 
 // Unpolarised reflectance at cosine mu in air (clamped to [0, 1]) and wavelength `wavelength_nm`:
 //   r = (r01 + r12 e^{i delta}) / (1 + r01 r12 e^{i delta}),   delta = 4 pi d q_1 / lambda

@@ -29,14 +29,16 @@ constexpr std::array<double, 6> kCosines = {1.0, 0.8, 0.5, 0.3, 0.1, 0.02};
 // e^{-i omega t} convention: M = [[cos b, -i sin b / p1], [-i p1 sin b, cos b]] with b the film's
 // phase thickness 2 pi d n1 cos(theta_1) / lambda and p_j the polarisation's admittance
 // (n_j cos(theta_j) for s, cos(theta_j) / n_j for p). r = (p0 B - C) / (p0 B + C) with
-// (B, C) = M (1, p2). A derivation of its own: no Airy sum, no interface amplitudes.
+// (B, C) = M (1, p2). A derivation of its own: no Airy sum, no interface amplitudes, no relative
+// indices. `ambient` is the index of the medium the light comes from (a coat), `mu` the cosine in
+// it; beyond a film's critical angle cos1 is imaginary, and M does not depend on its root's sign.
 double characteristic_matrix_reflectance(double mu, double wavelength, const ThinFilm& film,
-                                         ComplexIor metal) {
-  const double sin2 = 1.0 - mu * mu;
-  const Complex n0 = 1.0, n1 = film.ior, n2 = metal.eta();
+                                         ComplexIor metal, double ambient = 1.0) {
+  const double invariant2 = ambient * ambient * (1.0 - mu * mu);  // (n0 sin theta_0)^2
+  const Complex n0 = ambient, n1 = film.ior, n2 = metal.eta();
   const Complex cos0 = mu;
-  const Complex cos1 = std::sqrt(1.0 - sin2 / (n1 * n1));
-  const Complex cos2 = std::sqrt(n2 * n2 - sin2) / n2;  // the decaying root, as n2 cos2
+  const Complex cos1 = std::sqrt(1.0 - invariant2 / (n1 * n1));
+  const Complex cos2 = std::sqrt(n2 * n2 - invariant2) / n2;  // the decaying root, as n2 cos2
   const Complex b = 2.0 * std::numbers::pi * film.thickness_nm * n1 * cos1 / wavelength;
   const auto reflectance = [&](Complex p0, Complex p1, Complex p2) {
     const Complex i(0.0, 1.0);
@@ -81,6 +83,62 @@ TEST(ThinFilm, AgreesWithTheCharacteristicMatrix) {
 
 // The film's phase repeats when its optical path grows by a wavelength: a film thicker by
 // lambda / (2 n1 cos(theta_1)) reflects the same.
+// Under a coat the film is seen from a medium of the coat's index: film_under_coat's relative
+// film over the metal's relative index must be the absolute stack, also for a film of lower index
+// than the coat's, evanescent beyond its critical angle (a direction that cannot come from air,
+// but which the Monte-Carlo layered reference reaches after a rough coat's refraction).
+TEST(ThinFilm, SeenFromInsideACoatAgreesWithTheCharacteristicMatrix) {
+  double worst = 0.0;
+  for (const double coat : {1.5, 2.0}) {
+    for (const ComplexIor metal : kMetals) {
+      const ComplexIor relative{metal.n / coat, metal.k / coat};
+      for (const double mu : kCosines) {
+        for (const ThinFilm film : {ThinFilm{1.2, 80.0}, ThinFilm{1.5, 300.0}, ThinFilm{2.3, 350.0},
+                                    ThinFilm{1.0, 120.0}}) {
+          for (const double wavelength : {380.0, 550.0, 780.0}) {
+            const double ours = matc::thin_film_reflectance(
+                mu, wavelength, matc::film_under_coat(film, coat), relative);
+            const double matrix =
+                characteristic_matrix_reflectance(mu, wavelength, film, metal, coat);
+            worst = std::max(worst, std::abs(ours - matrix));
+            ASSERT_GE(ours, 0.0);
+            ASSERT_LE(ours, 1.0);
+          }
+        }
+      }
+    }
+  }
+  // 1.2 under 2.0 has its critical cosine at 0.8, one of the cosines: there both methods divide
+  // near-zeros (q_1 = 0), and agree to 3e-9.
+  EXPECT_LT(worst, 1e-8);
+}
+
+// The curves' fast path holds while the film's wave propagates; past a relative film's critical
+// angle they take the reference's complex sum, and must still be its weighted sum.
+TEST(ThinFilmCurve, UnderACoatOfHigherIndexIsTheReferencePastTheCriticalAngle) {
+  const matc::Spectrum& gold = matc::preset_spectrum(*matc::find_metal_preset("Au"));
+  matc::Spectrum relative = gold;
+  for (std::size_t i = 0; i < relative.n.size(); ++i) {
+    relative.n[i] /= 1.6;
+    relative.k[i] /= 1.6;
+  }
+  const ThinFilm film = matc::film_under_coat({1.3, 200.0, 0.8}, 1.6);
+  const matc::ThinFilmCurve curve(relative, film);
+  const auto& weights = matc::spectral_weights(matc::kDefaultColorSpace);
+  // The critical cosine of 1.3 under 1.6 is sqrt(1 - (1.3 / 1.6)^2) = 0.58.
+  for (const double mu : {0.9, 0.6, 0.5, 0.2}) {
+    matc::Rgb sum{};
+    for (std::size_t i = 0; i < weights.size(); ++i) {
+      const double nm = matc::kCieFirstNm + static_cast<double>(i);
+      const double f = matc::covered_reflectance(mu, nm, film, relative.at(nm));
+      for (std::size_t c = 0; c < 3; ++c)
+        sum[c] += weights[i][c] * f;
+    }
+    for (std::size_t c = 0; c < 3; ++c)
+      EXPECT_NEAR(curve.at(mu)[c], sum[c], 1e-13) << mu;
+  }
+}
+
 TEST(ThinFilm, ThePhaseRepeatsEveryHalfWavelengthOfOpticalPath) {
   const ComplexIor titanium{2.54, 3.43};
   for (const double mu : {1.0, 0.6, 0.2}) {
