@@ -41,8 +41,8 @@ function(_matc_json_name path caller kind out_var)
 endfunction()
 
 # _matc_json_has_film(<path> <out_var>): whether a material file gives its metal a film that shows
-# (docs/thin-film.md: a thickness and a coverage above 0, an index other than 1; matc's
-# has_visible_film), which compiles
+# (docs/thin-film.md: a thickness and a coverage above 0, an index other than that of the medium
+# it lies in, air or a coat, "Under a coat"; matc's has_visible_film), which compiles
 # to its own table, <name>.film.<ext>. A malformed film block is matc's to refuse: it is not one.
 function(_matc_json_has_film path out_var)
   file(READ "${path}" _json)
@@ -57,8 +57,32 @@ function(_matc_json_has_film path out_var)
     if(_ior_error)
       set(_ior 1.4)  # OpenPBR's default film index
     endif()
-    # A film of index 1 is air: the bare metal, no table.
-    if(_weight MATCHES "^[0-9.eE+-]+$" AND _weight GREATER 0 AND NOT _ior EQUAL 1)
+    # A film of the index of the medium it lies in is that medium: the bare metal, no table. Under a
+    # partial coat the uncoated part sees it in air.
+    string(JSON _coat ERROR_VARIABLE _coat_error GET "${_json}" coat)
+    set(_seen_in_air TRUE)
+    set(_seen_in_coat FALSE)
+    if(NOT _coat_error)
+      string(JSON _coat_weight ERROR_VARIABLE _coat_weight_error GET "${_json}" coat weight)
+      if(NOT _coat_weight_error AND _coat_weight MATCHES "^[0-9.eE+-]+$" AND _coat_weight GREATER_EQUAL 1)
+        set(_seen_in_air FALSE)
+      elseif(_coat_weight_error)
+        set(_seen_in_air FALSE)  # a coat block that names no weight covers the metal
+      endif()
+      string(JSON _coat_ior ERROR_VARIABLE _coat_ior_error GET "${_json}" coat ior)
+      if(_coat_ior_error)
+        set(_coat_ior 1.6)  # the coat's default index
+      endif()
+      if(NOT _ior EQUAL _coat_ior)
+        set(_seen_in_coat TRUE)
+      endif()
+    endif()
+    if(_seen_in_air AND NOT _ior EQUAL 1)
+      set(_shows TRUE)
+    else()
+      set(_shows ${_seen_in_coat})
+    endif()
+    if(_weight MATCHES "^[0-9.eE+-]+$" AND _weight GREATER 0 AND _shows)
       set(_film TRUE)
     endif()
   endif()

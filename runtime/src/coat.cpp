@@ -61,16 +61,47 @@ CoatedFresnel evaluate_coated_preintegrated(const Coefficients& in_air,
           coat_lobe(coat, f)};
 }
 
-CoatedFresnel polygon_light_ltc_coated(const Coefficients& in_air, const CoatCoefficients& coat,
-                                       const LutView& lut, const LtcTableView& ltc, double ndotv,
-                                       double roughness, std::span<const Vec3> vertices) {
-  const CoatedFresnel lobes = evaluate_coated_fbar(in_air, coat, lut, ndotv, roughness);
+namespace {
+
+// Each lobe's Fbar times its LTC integral, the table read at its roughness.
+CoatedFresnel lit_by_polygon(const CoatedFresnel& lobes, const CoatCoefficients& coat,
+                             const LtcTableView& ltc, double ndotv, double roughness,
+                             std::span<const Vec3> vertices) {
   const double base = ltc_polygon_integral(sample_ltc(ltc, ndotv, roughness), vertices);
   const double coat_lobe = ltc_polygon_integral(sample_ltc(ltc, ndotv, coat.roughness), vertices);
   CoatedFresnel radiance{.coat = coat_lobe * lobes.coat};
   for (std::size_t c = 0; c < 3; ++c)
     radiance.base[c] = base * lobes.base[c];
   return radiance;
+}
+
+}  // namespace
+
+CoatedFresnel polygon_light_ltc_coated(const Coefficients& in_air, const CoatCoefficients& coat,
+                                       const LutView& lut, const LtcTableView& ltc, double ndotv,
+                                       double roughness, std::span<const Vec3> vertices) {
+  return lit_by_polygon(evaluate_coated_fbar(in_air, coat, lut, ndotv, roughness), coat, ltc, ndotv,
+                        roughness, vertices);
+}
+
+CoatedFresnel evaluate_film_coated_fresnel(const FilmTable& table, const CoatCoefficients& coat,
+                                           const ShaderBasis& basis, double mu) {
+  return {film_fresnel(table, mu),
+          coat_lobe(coat, coat_sum(coat.coat, evaluate_shader_basis(basis, mu)))};
+}
+
+CoatedFresnel evaluate_film_coated_fbar(const FilmTable& table, const CoatCoefficients& coat,
+                                        const LutView& lut, double ndotv, double roughness) {
+  return {film_preintegrated(table, ndotv, roughness),
+          coat_lobe(coat, coat_sum(coat.coat, sample_lut(lut, ndotv, coat.roughness)))};
+}
+
+CoatedFresnel film_polygon_light_ltc_coated(const FilmTable& table, const CoatCoefficients& coat,
+                                            const LutView& lut, const LtcTableView& ltc,
+                                            double ndotv, double roughness,
+                                            std::span<const Vec3> vertices) {
+  return lit_by_polygon(evaluate_film_coated_fbar(table, coat, lut, ndotv, roughness), coat, ltc,
+                        ndotv, roughness, vertices);
 }
 
 }  // namespace matc::runtime

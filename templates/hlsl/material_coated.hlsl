@@ -23,11 +23,7 @@ static const MatcFresnelCoefficients matc_under_coat_coefficients_{{name}} = {
     float4({{under_red}}),
     float4({{under_green}}),
     float4({{under_blue}})};
-// The coat's dielectric Fresnel (index {{coat_ior}}); largest |F - exact|: {{coat_max_error}}.
-static const float4 matc_coat_coefficients_{{name}} = float4({{coat}});
-static const float matc_coat_weight_{{name}} = {{coat_weight}};
-// Sample the table at this roughness for the coat lobe (perceptual, as matc_lut_texcoord takes).
-static const float matc_coat_roughness_{{name}} = {{coat_roughness}};
+{{coat_lobe_constants}}
 
 // The coat's tint over the round trip at cosine mu in air, color^(1 / mu_inside) (Beer's law;
 // 1 for a clear coat).
@@ -71,23 +67,7 @@ float3 matc_fresnel_{{name}}(float mu) {
                                        mu);
 }
 
-// The coat lobe's F for a direct light, its weight included: mu = dot(V, H).
-float matc_coat_fresnel_{{name}}(float mu) {
-  float f = clamp(dot(matc_coat_coefficients_{{name}}, matc_basis(mu)), 0.0, 1.0);
-  return matc_coat_weight_{{name}} * f;
-}
-
-// glTF's metal-rough model under this coat (docs/gltf.md): the engine's dielectric is layered as
-// glTF layers a clear coat, everything it reflects (its diffuse too) times
-// matc_coat_transmission_{{name}}(NdotV), 1 - the coat lobe's F at NdotV; the metal's part is this
-// material's base lobe (the metal through the coat). matc_metal_rough_{{name}} mixes a lobe's
-// dielectric term and this material's base lobe (F or preintegrated F) by metalness.
-float matc_coat_transmission_{{name}}(float NdotV) {
-  return 1.0 - matc_coat_fresnel_{{name}}(NdotV);
-}
-float3 matc_metal_rough_{{name}}(float3 dielectric, float3 metal, float metalness, float NdotV) {
-  return matc_metal_rough(dielectric * matc_coat_transmission_{{name}}(NdotV), metal, metalness);
-}
+{{coat_lobe_functions}}
 
 // The base lobe's preintegrated F: bbar from the table at matc_lut_texcoord(NdotV, roughness),
 // coat_bbar at matc_lut_texcoord(NdotV, matc_coat_roughness_{{name}}).
@@ -96,11 +76,7 @@ float3 matc_fresnel_preintegrated_{{name}}(float4 bbar, float4 coat_bbar, float 
       matc_coefficients_{{name}}, matc_under_coat_coefficients_{{name}}, bbar, coat_bbar, NdotV);
 }
 
-// The coat lobe's preintegrated F, its weight included.
-float matc_coat_fresnel_preintegrated_{{name}}(float4 coat_bbar) {
-  float f = clamp(dot(matc_coat_coefficients_{{name}}, coat_bbar), 0.0, 1.0);
-  return matc_coat_weight_{{name}} * f;
-}
+{{coat_lobe_preintegrated}}
 
 #ifdef MATC_LTC_SIZE
 // Area lights of radiance 1 on both lobes (docs/coating.md): each lobe's LTC integral times its

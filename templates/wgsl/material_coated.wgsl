@@ -21,11 +21,7 @@ const matc_under_coat_coefficients_{{name}} = MatcFresnelCoefficients(
     vec4f({{under_red}}),
     vec4f({{under_green}}),
     vec4f({{under_blue}}));
-// The coat's dielectric Fresnel (index {{coat_ior}}); largest |F - exact|: {{coat_max_error}}.
-const matc_coat_coefficients_{{name}} = vec4f({{coat}});
-const matc_coat_weight_{{name}} = {{coat_weight}};
-// Sample the table at this roughness for the coat lobe (perceptual, as matc_lut_texcoord takes).
-const matc_coat_roughness_{{name}} = {{coat_roughness}};
+{{coat_lobe_constants}}
 
 // The coat's tint over the round trip at cosine mu in air, color^(1 / mu_inside) (Beer's law;
 // 1 for a clear coat).
@@ -69,23 +65,7 @@ fn matc_fresnel_{{name}}(mu: f32) -> vec3f {
                                        mu);
 }
 
-// The coat lobe's F for a direct light, its weight included: mu = dot(V, H).
-fn matc_coat_fresnel_{{name}}(mu: f32) -> f32 {
-  let f = clamp(dot(matc_coat_coefficients_{{name}}, matc_basis(mu)), 0.0, 1.0);
-  return matc_coat_weight_{{name}} * f;
-}
-
-// glTF's metal-rough model under this coat (docs/gltf.md): the engine's dielectric is layered as
-// glTF layers a clear coat, everything it reflects (its diffuse too) times
-// matc_coat_transmission_{{name}}(NdotV), 1 - the coat lobe's F at NdotV; the metal's part is this
-// material's base lobe (the metal through the coat). matc_metal_rough_{{name}} mixes a lobe's
-// dielectric term and this material's base lobe (F or preintegrated F) by metalness.
-fn matc_coat_transmission_{{name}}(NdotV: f32) -> f32 {
-  return 1.0 - matc_coat_fresnel_{{name}}(NdotV);
-}
-fn matc_metal_rough_{{name}}(dielectric: vec3f, metal: vec3f, metalness: f32, NdotV: f32) -> vec3f {
-  return matc_metal_rough(dielectric * matc_coat_transmission_{{name}}(NdotV), metal, metalness);
-}
+{{coat_lobe_functions}}
 
 // The base lobe's preintegrated F: bbar from the table at matc_lut_texcoord(NdotV, roughness),
 // coat_bbar at matc_lut_texcoord(NdotV, matc_coat_roughness_{{name}}).
@@ -94,11 +74,7 @@ fn matc_fresnel_preintegrated_{{name}}(bbar: vec4f, coat_bbar: vec4f, NdotV: f32
       matc_coefficients_{{name}}, matc_under_coat_coefficients_{{name}}, bbar, coat_bbar, NdotV);
 }
 
-// The coat lobe's preintegrated F, its weight included.
-fn matc_coat_fresnel_preintegrated_{{name}}(coat_bbar: vec4f) -> f32 {
-  let f = clamp(dot(matc_coat_coefficients_{{name}}, coat_bbar), 0.0, 1.0);
-  return matc_coat_weight_{{name}} * f;
-}
+{{coat_lobe_preintegrated}}
 
 // Area lights of radiance 1 on both lobes (docs/coating.md): each lobe's LTC integral times its
 // preintegrated F; ltc and bbar at (NdotV, roughness) from matc_ltc and matc_lut, coat_ltc and

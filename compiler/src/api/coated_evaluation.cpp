@@ -1,4 +1,5 @@
 // matc::api::evaluate for a coated material (matc eval of a material with a coat).
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -7,6 +8,7 @@
 #include "compile/compile.h"
 #include "evaluation_parts.h"
 #include "ltc/area_light_reference.h"
+#include "lut/film_table_files.h"
 #include "lut/layered_reference.h"
 #include "lut/lut_files.h"
 #include "lut/split_sum_reference.h"
@@ -22,8 +24,10 @@ namespace {
 // A quad light on a coated material's two lobes: LTC per lobe times its Fbar as the shaders
 // compute it (matc_ltc_quad_light_<name>), and the exact integral of each lobe (the base's with
 // the exact layered base curve at its half vectors, the coat's with the coat's exact Fresnel).
+// `lit` gives both lobes under the light at (NdotV, roughness), as the shaders compute them.
+using LitLobes = std::function<runtime::CoatedFresnel(double ndotv, double roughness)>;
 void add_coated_quad_light(const EvaluationInputs& options, const std::vector<Vec3>& quad,
-                           const CompiledMaterial& compiled, const Lut& lut,
+                           const CompiledMaterial& compiled, const LitLobes& lit,
                            const ReflectanceCurve& in_air, const ReflectanceCurve& under,
                            ordered_json& out) {
   const CoatInput& coat = compiled.coat->input;
@@ -42,9 +46,7 @@ void add_coated_quad_light(const EvaluationInputs& options, const std::vector<Ve
                standard_error = ordered_json::array();
   for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
     const double ndotv = options.ndotv[i], roughness = options.roughness[i];
-    const runtime::CoatedFresnel lobes =
-        runtime::polygon_light_ltc_coated(compiled.coefficients, compiled.coat->coefficients,
-                                          lut.view(), ltc, ndotv, roughness, quad);
+    const runtime::CoatedFresnel lobes = lit(ndotv, roughness);
     ours.push_back(lobes.total());
     ours_base.push_back(lobes.base);
     ours_coat.push_back(lobes.coat);
@@ -88,6 +90,24 @@ void add_coated(const EvaluationInputs& options, const CompiledMaterial& compile
   const auto in_air = make_reflectance_curve(material, options.color);
   const auto under = make_under_coat_curve(material, options.color.working_space);
   const auto metal_in_coat = make_metal_in_coat_curve(material, options.color.working_space);
+  // A film under the coat: the base lobe from its table as a file of the table's precision
+  // stores it (what a renderer samples); no closed form.
+  std::optional<runtime::FilmTable> film;
+  if (compiled.film_table) {
+    film = stored_as(*compiled.film_table, options.precision);
+    out["film_table"] = {{"size", {runtime::FilmTable::kWidth, runtime::FilmTable::kHeight}},
+                         {"precision", lut_precision_name(options.precision)}};
+  }
+  const auto fresnel_lobes = [&](double mu) {
+    return film ? runtime::evaluate_film_coated_fresnel(*film, coefficients, shader_basis, mu)
+                : runtime::evaluate_coated_fresnel(compiled.coefficients, coefficients,
+                                                   shader_basis, mu);
+  };
+  const auto fbar_lobes = [&](const runtime::LutView& lut, double ndotv, double roughness) {
+    return film ? runtime::evaluate_film_coated_fbar(*film, coefficients, lut, ndotv, roughness)
+                : runtime::evaluate_coated_fbar(compiled.coefficients, coefficients, lut, ndotv,
+                                                roughness);
+  };
   out["coat"] = {{"weight", coat.input.weight},
                  {"ior", coat.input.ior},
                  {"roughness", coat.input.roughness},
@@ -105,8 +125,7 @@ void add_coated(const EvaluationInputs& options, const CompiledMaterial& compile
     const LayeredCurve base_part = layered(LayeredCurve::Part::base);
     const LayeredCurve coat_part = layered(LayeredCurve::Part::coat);
     for (const double mu : options.mu) {
-      const auto lobes =
-          runtime::evaluate_coated_fresnel(compiled.coefficients, coefficients, shader_basis, mu);
+      const auto lobes = fresnel_lobes(mu);
       total.push_back(lobes.total());
       base.push_back(lobes.base);
       coat_lobe.push_back(lobes.coat);
@@ -127,18 +146,12 @@ void add_coated(const EvaluationInputs& options, const CompiledMaterial& compile
                       ? Lut{}
                       : stored_as(preintegrate_lut(basis, options.bake), options.precision);
   if (options.metalness) {
-    add_metal_rough(options,
-                    {.fresnel =
-                         [&](double mu) {
-                           return runtime::evaluate_coated_fresnel(compiled.coefficients,
-                                                                   coefficients, shader_basis, mu);
-                         },
-                     .fbar =
-                         [&](double ndotv, double roughness) {
-                           return runtime::evaluate_coated_fbar(compiled.coefficients, coefficients,
-                                                                lut.view(), ndotv, roughness);
-                         }},
-                    out);
+    add_metal_rough(
+        options,
+        {.fresnel = fresnel_lobes,
+         .fbar = [&](double ndotv,
+                     double roughness) { return fbar_lobes(lut.view(), ndotv, roughness); }},
+        out);
   }
   if (options.ndotv.empty()) return;
   const runtime::AnalyticLutCoefficients& analytic = runtime::shipped_analytic_lut(basis.kind);
@@ -147,11 +160,11 @@ void add_coated(const EvaluationInputs& options, const CompiledMaterial& compile
                coat_lobe = ordered_json::array(), closed_form = ordered_json::array();
   for (std::size_t i = 0; i < options.ndotv.size(); ++i) {
     const double ndotv = options.ndotv[i];
-    const auto lobes = runtime::evaluate_coated_fbar(compiled.coefficients, coefficients,
-                                                     lut.view(), ndotv, options.roughness[i]);
+    const auto lobes = fbar_lobes(lut.view(), ndotv, options.roughness[i]);
     total.push_back(lobes.total());
     base.push_back(lobes.base);
     coat_lobe.push_back(lobes.coat);
+    if (film) continue;
     closed_form.push_back(
         runtime::evaluate_coated_preintegrated(
             compiled.coefficients, coefficients,
@@ -162,7 +175,7 @@ void add_coated(const EvaluationInputs& options, const CompiledMaterial& compile
   out["Fbar"] = std::move(total);
   out["Fbar_base"] = std::move(base);
   out["Fbar_coat"] = std::move(coat_lobe);
-  out["Fbar_analytic"] = std::move(closed_form);
+  if (!film) out["Fbar_analytic"] = std::move(closed_form);
   if (options.reference) {
     const TabulatedCurve in_air_exact(*in_air);
     const TabulatedCurve under_exact(*under);
@@ -181,8 +194,17 @@ void add_coated(const EvaluationInputs& options, const CompiledMaterial& compile
     out["Fbar_layered_reference"] = std::move(monte_carlo);
     out["Fbar_layered_reference_standard_error"] = std::move(standard_error);
   }
-  if (options.quad)
-    add_coated_quad_light(options, *options.quad, compiled, lut, *in_air, *under, out);
+  if (options.quad) {
+    const runtime::LtcTableView ltc = runtime::shipped_ltc_table();
+    const auto lit = [&](double ndotv, double roughness) {
+      return film ? runtime::film_polygon_light_ltc_coated(*film, coefficients, lut.view(), ltc,
+                                                           ndotv, roughness, *options.quad)
+                  : runtime::polygon_light_ltc_coated(compiled.coefficients, coefficients,
+                                                      lut.view(), ltc, ndotv, roughness,
+                                                      *options.quad);
+    };
+    add_coated_quad_light(options, *options.quad, compiled, lit, *in_air, *under, out);
+  }
 }
 
 }  // namespace matc::evaluation

@@ -276,7 +276,7 @@ std::string evaluate_bare(const EvaluationInputs& options, const Material& mater
   out["name"] = material.name;
   out["basis"] = runtime::basis_name(basis.kind);
   out["color_space"] = color_space_name(color.working_space);
-  if (has_visible_film(material)) {
+  if (has_visible_film(material) && !material.coat) {
     add_filmed(options, compile_material(material, basis, color), out);
     return format_json(out);
   }

@@ -72,11 +72,16 @@ std::unique_ptr<ReflectanceCurve> apply_gamut_mapping(std::unique_ptr<Reflectanc
 
 }  // namespace
 
-// Its curve is then the bare metal's, bit for bit. A film of index 1 is air: its Airy sum is the
-// bare metal's curve (thin_film_test), so it compiles as the bare metal too.
+// Its curve is then the bare metal's, bit for bit. A film of the index of the medium it lies in is
+// part of that medium: its Airy sum is the bare metal's curve (thin_film_test), so it compiles as
+// the bare metal too. That medium is air, or the coat: a film of index 1 under a full coat is an
+// air gap, which shows; one of the coat's index is more coat, which does not.
 bool has_visible_film(const Material& material) {
-  return material.film && material.film->thickness_nm > 0.0 && material.film->weight > 0.0 &&
-         material.film->ior != 1.0;
+  if (!material.film || !(material.film->thickness_nm > 0.0) || !(material.film->weight > 0.0))
+    return false;
+  const double ior = material.film->ior;
+  const bool seen_in_air = !material.coat || material.coat->weight < 1.0;
+  return (seen_in_air && ior != 1.0) || (material.coat && ior != material.coat->ior);
 }
 
 ColorSpace input_color_space(const Material& material, ColorSpace working_space) {
@@ -122,18 +127,30 @@ std::unique_ptr<ReflectanceCurve> make_metal_in_coat_curve(const Material& mater
                                ? working_space
                                : input_color_space(material, working_space);
   std::unique_ptr<ReflectanceCurve> metal_in_coat;
+  // A film lies between the coat and the metal: seen from the coat, every index relative to it.
+  const bool filmed = has_visible_film(material);
+  const ThinFilm film =
+      filmed ? film_under_coat(thin_film_of(*material.film), coat.ior) : ThinFilm{};
   if (const auto* spectral = std::get_if<SpectralInput>(&material.model)) {
     Spectrum relative = spectral->spectrum;
     for (std::size_t i = 0; i < relative.n.size(); ++i) {
       relative.n[i] /= coat.ior;
       relative.k[i] /= coat.ior;
     }
-    metal_in_coat = std::make_unique<SpectralCurve>(relative, space);
+    if (filmed) {
+      metal_in_coat = std::make_unique<ThinFilmCurve>(relative, film, space);
+    } else {
+      metal_in_coat = std::make_unique<SpectralCurve>(relative, space);
+    }
   } else {
     std::array<ComplexIor, 3> ior = *conductor_per_channel(material.model);
     for (auto& channel : ior)
       channel = under_coat(channel, coat.ior);
-    metal_in_coat = std::make_unique<IorCurve>(ior);
+    if (filmed) {
+      metal_in_coat = std::make_unique<ThinFilmChannelCurve>(ior, film, space);
+    } else {
+      metal_in_coat = std::make_unique<IorCurve>(ior);
+    }
   }
   if (space == working_space) return metal_in_coat;
   return std::make_unique<TransformedCurve>(std::move(metal_in_coat),
@@ -149,15 +166,14 @@ std::unique_ptr<ReflectanceCurve> make_under_coat_curve(const Material& material
 namespace {
 
 // The coat's coefficients and how close the layering from them is to the exact layered curve.
+// `under_grid` is the metal seen through the coat (make_under_coat_curve) on the accuracy grid.
 CompiledCoat compile_coat(const Material& material, const runtime::Coefficients& in_air_fit,
-                          const ReflectanceCurve& in_air, const runtime::BasisView& basis,
-                          ColorSpace working_space) {
+                          const ReflectanceCurve& in_air, const AccuracyGridCurve& under_grid,
+                          const runtime::BasisView& basis) {
   const CoatInput& input = *material.coat;
   const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(basis.kind);
   CompiledCoat coat;
   coat.input = input;
-  const auto under = make_under_coat_curve(material, working_space);
-  const AccuracyGridCurve under_grid(*under);
   coat.coefficients.under_coat = solve_coefficients(under_grid, basis);
   coat.under_coat_error =
       measure_accuracy(under_grid, coat.coefficients.under_coat, shader_basis).decomposition;
@@ -186,6 +202,28 @@ CompiledCoat compile_coat(const Material& material, const runtime::Coefficients&
   coat.layered_accuracy = measure_accuracy(layered, in_air_fit, shader_basis);
   coat.layered_accuracy.decomposition = coat.layered_error;
   return coat;
+}
+
+// A film under a coat (docs/thin-film.md): the table holds the base lobe, the film in air and under
+// the coat layered at every node as the coated shaders layer the basis' values, and the coat's
+// layered error becomes both lobes' with that table (the coat lobe's from its coefficients).
+void bake_coated_film(const Material& material, const ReflectanceCurve& in_air,
+                      const AccuracyGridCurve& under_grid, CompiledMaterial& compiled) {
+  const CoatInput& input = *material.coat;
+  compiled.film_table = bake_coated_film_table(in_air, under_grid, input);
+  const runtime::FilmTable& table = *compiled.film_table;
+  const LayeredCurve exact_base(in_air, under_grid, input.weight, input.ior, input.color,
+                                LayeredCurve::Part::base);
+  compiled.film_table_error = measure_on_accuracy_grid(
+      exact_base, [&table](double mu) { return runtime::film_fresnel(table, mu); });
+  CompiledCoat& coat = *compiled.coat;
+  const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(compiled.basis);
+  const LayeredCurve exact(in_air, under_grid, input.weight, input.ior, input.color);
+  coat.layered_error = measure_on_accuracy_grid(exact, [&](double mu) {
+    return runtime::evaluate_film_coated_fresnel(table, coat.coefficients, shader_basis, mu)
+        .total();
+  });
+  coat.layered_accuracy.decomposition = coat.layered_error;
 }
 
 }  // namespace
@@ -231,10 +269,13 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
     compiled.artistic = artistic;
   }
   if (material.coat) {
-    compiled.coat =
-        compile_coat(material, compiled.coefficients, curve, basis, color.working_space);
-  }
-  if (has_visible_film(material)) {
+    // The metal seen through the coat, evaluated once on the accuracy grid: the coat's fit and a
+    // film's table under it read it.
+    const auto under = make_under_coat_curve(material, color.working_space);
+    const AccuracyGridCurve under_grid(*under);
+    compiled.coat = compile_coat(material, compiled.coefficients, curve, under_grid, basis);
+    if (has_visible_film(material)) bake_coated_film(material, curve, under_grid, compiled);
+  } else if (has_visible_film(material)) {
     compiled.film_table = bake_film_table(curve);
     const runtime::FilmTable& table = *compiled.film_table;
     compiled.film_table_error = measure_on_accuracy_grid(

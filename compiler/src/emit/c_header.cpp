@@ -46,11 +46,14 @@ std::string film_block(const CompiledMaterial& compiled, LutPrecision precision)
   return fmt::format(
       "\n\n/* Under a thin film (docs/thin-film.md): F and Fbar come from the film's own table, "
       "the texels\n * of {0}.film.<ext> ({1} x {2} RGBA, row after row; upload it as that "
-      "texture). The\n * coefficients above are the 4-term fit's, for F0. */\n"
+      "texture). The\n * coefficients above are the 4-term fit's, for F0.{5} */\n"
       "#define MATC_{0}_FILM_TABLE_WIDTH {1}\n#define MATC_{0}_FILM_TABLE_HEIGHT {2}\n"
       "static const float matc_film_table_{0}[{3}] = {{\n{4}}};",
       compiled.material.name, runtime::FilmTable::kWidth, runtime::FilmTable::kHeight,
-      texels.size(), rows);
+      texels.size(), rows,
+      compiled.coat ? " Under the coat the table holds\n * the base lobe, the coat's "
+                      "transmission and tint included: the coat lobe is the coat's own."
+                    : "");
 }
 
 }  // namespace

@@ -254,9 +254,10 @@ ordered_json gltf_fresnel_extension(const CompiledMaterial& compiled,
   }
   if (compiled.film_table) {
     // A filmed metal (docs/thin-film.md): its shaders read F and Fbar from its own table, carried
-    // here so that an engine needs no other file; `coefficients` give F0.
+    // here so that an engine needs no other file; `coefficients` give F0. Under a coat the table
+    // is the base lobe, and maxError stays both lobes' against the exact layered curve.
     const FilmInput& film = *compiled.material.film;
-    out["maxError"] = rgb_json(compiled.film_table_error.max_abs);
+    if (!compiled.coat) out["maxError"] = rgb_json(compiled.film_table_error.max_abs);
     out["film"] = {{"weight", film.weight},
                    {"ior", film.ior},
                    {"thickness", film.thickness_nm},

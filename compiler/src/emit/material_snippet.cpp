@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "base/embedded_templates.h"
 #include "emit/layer_suffix.h"
 #include "matc/version.h"
 #include "material/parse.h"
@@ -40,6 +41,26 @@ TemplateValues material_template_values(const CompiledMaterial& compiled,
 }
 
 namespace {
+
+// A layered snippet's template (material_coated, material_film_coated) with the coat lobe's parts
+// put in: templates/<language>/coat_lobe_{constants,functions,preintegrated}, which both layered
+// snippets share. js/package/stage.mjs puts them in the same way into the templates it ships.
+std::string layered_snippet(ShaderLanguage language, std::string_view kind,
+                            const TemplateValues& values) {
+  const std::string path = template_path(language, kind);
+  std::string text(embedded_templates::file(path));
+  for (const std::string_view part :
+       {"coat_lobe_constants", "coat_lobe_functions", "coat_lobe_preintegrated"}) {
+    std::string part_text(embedded_templates::file(template_path(language, part)));
+    if (part_text.ends_with('\n')) part_text.pop_back();
+    const std::string placeholder = fmt::format("{{{{{}}}}}", part);
+    const std::size_t at = text.find(placeholder);
+    if (at == std::string::npos)
+      throw std::logic_error(fmt::format("template {}: no {}", path, placeholder));
+    text.replace(at, placeholder.size(), part_text);
+  }
+  return fill_template_text(text, values, path);
+}
 
 // A coated material's snippet (templates/<language>/material_coated.*): the metal in air, the
 // metal under the coat and the coat's own coefficients, and the layering (docs/coating.md).
@@ -87,11 +108,13 @@ std::string coated_snippet_source(ShaderLanguage language, const CompiledMateria
   values["under_coat_max_error"] =
       fmt::format("{:.4f}", worst_channel(coat.under_coat_error.max_abs));
   values["coat_max_error"] = fmt::format("{:.4f}", coat.coat_max_error);
-  return fill_template(template_path(language, "material_coated"), values);
+  return layered_snippet(language, "material_coated", values);
 }
 
 // A filmed metal's snippet (templates/<language>/material_film.*): its F and Fbar from its own
-// table's texels (runtime/film_table.h), its coefficients kept for F0.
+// table's texels (runtime/film_table.h), its coefficients kept for F0. Under a coat
+// (material_film_coated.*) the table holds the base lobe, and the coat lobe is the coated
+// snippet's.
 std::string film_snippet_source(ShaderLanguage language, const CompiledMaterial& compiled,
                                 TemplateValues values) {
   const FilmInput& film = *compiled.material.film;
@@ -102,7 +125,18 @@ std::string film_snippet_source(ShaderLanguage language, const CompiledMaterial&
   values["film_weight"] = fmt::format("{}", film.weight);
   values["fit_max_error"] =
       fmt::format("{:.4f}", worst_channel(compiled.accuracy.decomposition.max_abs));
-  return fill_template(template_path(language, "material_film"), values);
+  if (!compiled.coat) return fill_template(template_path(language, "material_film"), values);
+  const CompiledCoat& coat = *compiled.coat;
+  values["under_red"] = float_list(coat.coefficients.under_coat[0]);
+  values["under_green"] = float_list(coat.coefficients.under_coat[1]);
+  values["under_blue"] = float_list(coat.coefficients.under_coat[2]);
+  values["coat"] = float_list(coat.coefficients.coat);
+  values["coat_weight"] = float_literal(coat.coefficients.weight);
+  values["coat_roughness"] = float_literal(coat.coefficients.roughness);
+  values["coat_ior"] = fmt::format("{}", coat.coefficients.ior);
+  values["coat_max_error"] = fmt::format("{:.4f}", coat.coat_max_error);
+  values["layered_max_error"] = fmt::format("{:.4f}", worst_channel(coat.layered_error.max_abs));
+  return layered_snippet(language, "material_film_coated", values);
 }
 
 }  // namespace
@@ -118,7 +152,8 @@ std::string material_snippet_source(ShaderLanguage language, const CompiledMater
   values.erase("red_c");
   values.erase("green_c");
   values.erase("blue_c");
-  if (compiled.coat) return coated_snippet_source(language, compiled, std::move(values));
+  if (compiled.coat && !compiled.film_table)
+    return coated_snippet_source(language, compiled, std::move(values));
   // A curve matc proved non-negative needs no clamp at 0 (fit/nonnegative_curve.h).
   const bool nonnegative = compiled.fresnel_nonnegative;
   const std::string suffix = basis_function_suffix(compiled, per_material_build);

@@ -20,7 +20,8 @@ SpirvWords vulkan_compute_module(ShaderLanguage language, std::string source,
 }  // namespace
 
 MaterialKernel material_kernel_of(const CompiledMaterial& compiled) {
-  if (compiled.coat) return MaterialKernel::coated;
+  if (compiled.coat)
+    return compiled.film_table ? MaterialKernel::film_coated : MaterialKernel::coated;
   return compiled.film_table ? MaterialKernel::filmed : MaterialKernel::bare;
 }
 
@@ -43,6 +44,10 @@ std::string validation_kernel_source(ShaderLanguage language, std::string_view l
   // A filmed metal's kernel samples its own table, not the preintegrated one.
   if (kind == MaterialKernel::filmed)
     return fill_template(glsl ? "glsl/validate_film.comp" : "hlsl/validate_film.hlsl", values);
+  if (kind == MaterialKernel::film_coated) {
+    return fill_template(glsl ? "glsl/validate_film_coated.comp" : "hlsl/validate_film_coated.hlsl",
+                         values);
+  }
   return fill_template(glsl ? "glsl/validate_coated.comp" : "hlsl/validate_coated.hlsl", values);
 }
 

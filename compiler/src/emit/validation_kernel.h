@@ -35,12 +35,16 @@ inline constexpr std::size_t kCoatedValidationResultsPerQuery = 6;
 // A filmed material's kernel (templates/*/validate_film.*) writes three: F and Fbar, both from the
 // film's tables, and kLayeredValidationQuad's light (the LTC table at binding 5).
 inline constexpr std::size_t kFilmValidationResultsPerQuery = 3;
+// A filmed metal under a coat (templates/*/validate_film_coated.*) writes four: F and Fbar, the
+// base lobe from the film's table in .xyz and the coat lobe in .w, kLayeredValidationQuad's light
+// on both lobes, and the metal-rough mix under the coat with the coat's transmission (.w).
+inline constexpr std::size_t kFilmCoatedValidationResultsPerQuery = 4;
 // A quad light in the shading frame (normal +z, view in the xz-plane towards +x, shading point
 // at the origin), on the reflection's side and tilted: the coated and filmed kernels' light.
 inline constexpr std::array<runtime::Vec3, 4> kLayeredValidationQuad = {
     {{-0.5, -1.0, 1.5}, {-2.0, -1.0, 0.5}, {-2.0, 1.0, 0.5}, {-0.5, 1.0, 1.5}}};
 // The kind of kernel a material's check runs.
-enum class MaterialKernel { bare, coated, filmed };
+enum class MaterialKernel { bare, coated, filmed, film_coated };
 MaterialKernel material_kernel_of(const CompiledMaterial& compiled);
 
 std::string validation_kernel_source(ShaderLanguage language, std::string_view library,

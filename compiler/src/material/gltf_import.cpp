@@ -186,13 +186,11 @@ class Importer {
     metalness_notes(pbr, coat.has_value(), not_carried);
     std::optional<ordered_json> film;
     if (!read_film(field, source, film, not_carried)) return;
-    if (film && coat) {
-      not_carried.push_back(
-          fmt::format("{} under {} (a film under a coat is not modelled: the film is left out)",
-                      kIridescence, kClearcoat));
-    } else if (film) {
+    // The film lies under the clear coat, seen from the coat's medium (docs/thin-film.md). The
+    // extension's film of index 1 shows nothing (its formula takes the outside index for 1): under
+    // a coat matc would see an air gap in it, so it is left out.
+    if (film && !(coat && (*film)["ior"].get<double>() == 1.0))
       material_json["film"] = std::move(*film);
-    }
     // A textured Schlick metal is carried per pixel (its coefficients are linear in F0); an edge
     // colour, a coat or a film makes the curve's shape depend on F0 otherwise.
     const bool textured = pbr.baseColorTexture.index >= 0;

@@ -213,15 +213,8 @@ class MaterialXImporter {
     }
     const ImportedFilm film = read_film(shader, *model, element_name);
     if (!film.ok) return;
-    if (film.block && material_json.contains("coat")) {
-      result_.diagnostics.warning(
-          film.location, element_name,
-          "has a thin film and a coat: a film under a coat is not modelled, so the film is left "
-          "out",
-          "a film on a bare metal (docs/material-format.md, \"film\")");
-    } else if (film.block) {
-      material_json["film"] = *film.block;
-    }
+    // OpenPBR's film lies on the base, under the coat: matc sees it from the coat's medium.
+    if (film.block) material_json["film"] = *film.block;
     if (shader.material->has_attribute(kBasisPinAttribute)) {
       const std::string_view layered = material_json.contains("coat")   ? "coat"
                                        : material_json.contains("film") ? "film"

@@ -83,11 +83,6 @@ class MaterialReader : LocatedJsonReader {
     if (auto model = read_model(root)) material.model = std::move(*model);
     if (root.contains("coat")) material.coat = read_coat(root);
     if (root.contains("film")) material.film = read_film(root);
-    if (root.contains("film") && root.contains("coat")) {
-      error("/film", "is given with a coat",
-            "a film on a bare metal: a film under a coat is not modelled (the film would reflect "
-            "inside the coat, not in air); drop one of them");
-    }
     if (root.contains("basis")) material.basis = read_basis(root);
 
     if (diagnostics_.has_errors()) return std::nullopt;

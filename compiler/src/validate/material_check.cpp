@@ -51,6 +51,8 @@ class MaterialCheck final : public DeviceCheck {
         return kCoatedValidationResultsPerQuery;
       case MaterialKernel::filmed:
         return kFilmValidationResultsPerQuery;
+      case MaterialKernel::film_coated:
+        return kFilmCoatedValidationResultsPerQuery;
       case MaterialKernel::bare:
         break;
     }
@@ -72,6 +74,8 @@ class MaterialCheck final : public DeviceCheck {
     const Lut* embedded = build_.embedded_lut(compiled_.basis);
     const runtime::AnalyticLutCoefficients& analytic =
         runtime::shipped_analytic_lut(compiled_.basis);
+    if (compiled_.coat && stored_film_)
+      return compare_film_coated(results, *stored_film_, shader_basis, table);
     if (compiled_.coat) return compare_coated(results, shader_basis, table, embedded, analytic);
     if (stored_film_) return compare_filmed(results, *stored_film_);
     const runtime::Coefficients& c = compiled_.coefficients;
@@ -135,6 +139,72 @@ class MaterialCheck final : public DeviceCheck {
     return {fresnel, preintegrated, quad_light};
   }
 
+  // Both lobes of a layered result: the base's RGB (xyz) into `base`, the coat's F (w) into `coat`.
+  static void record_lobes(CheckedQuantity& base, CheckedQuantity& coat,
+                           const runtime::CoatedFresnel& expected, const float* actual,
+                           std::size_t query) {
+    record_largest(base, expected.base, actual, query);
+    const float coat_actual[3] = {actual[3], actual[3], actual[3]};
+    record_largest(coat, {expected.coat, expected.coat, expected.coat}, coat_actual, query);
+  }
+
+  // A layered kernel's glTF metal-rough result (`actual`): the mix under the coat of glTF's
+  // dielectric (F0 0.04, F90 1) at mu and the base lobe `base`, metalness = roughness, at NdotV
+  // (xyz), and the coat's transmission at NdotV (w).
+  void record_metal_rough_under_coat(CheckedQuantity& mix, CheckedQuantity& transmission,
+                                     const runtime::ShaderBasis& shader_basis,
+                                     const ValidationQuery& q, const runtime::Rgb& base,
+                                     const float* actual, std::size_t query) const {
+    constexpr runtime::Rgb kGltfDielectric{runtime::kGltfDielectricF0, runtime::kGltfDielectricF0,
+                                           runtime::kGltfDielectricF0};
+    const double expected =
+        runtime::coat_transmission(compiled_.coat->coefficients, shader_basis, q.ndotv);
+    record_largest(mix,
+                   runtime::metal_rough_under_coat(
+                       runtime::dielectric_fresnel(kGltfDielectric, {1.0, 1.0, 1.0}, q.mu), base,
+                       q.roughness, expected),
+                   actual, query);
+    const float transmission_actual[3] = {actual[3], actual[3], actual[3]};
+    record_largest(transmission, {expected, expected, expected}, transmission_actual, query);
+  }
+
+  // A filmed metal under a coat (runtime/coat.h's evaluate_film_coated_*): the base lobe from its
+  // table as the file stores it, the coat lobe from its coefficients and the bound table.
+  std::vector<CheckedQuantity> compare_film_coated(std::span<const float> results,
+                                                   const runtime::FilmTable& film,
+                                                   const runtime::ShaderBasis& shader_basis,
+                                                   const runtime::LutView& table) const {
+    const runtime::CoatCoefficients& coat = compiled_.coat->coefficients;
+    // The base's F comes through the sampler, whose weights may carry as few as 8 bits.
+    std::vector<CheckedQuantity> quantities = {
+        {"F", tolerance_.preintegrated},          {"coat F", tolerance_.fresnel},
+        {"Fbar", tolerance_.preintegrated},       {"coat Fbar", tolerance_.preintegrated},
+        {"L", tolerance_.preintegrated},          {"F(metal-rough)", tolerance_.preintegrated},
+        {"coat transmission", tolerance_.fresnel}};
+    const auto record = [&](std::size_t slot, const runtime::CoatedFresnel& expected,
+                            const float* actual, std::size_t query) {
+      record_lobes(quantities[2 * slot], quantities[2 * slot + 1], expected, actual, query);
+    };
+    for (std::size_t i = 0; i < queries_.size(); ++i) {
+      const ValidationQuery& q = queries_[i];
+      const float* result = &results[i * kFilmCoatedValidationResultsPerQuery * 4];
+      const runtime::CoatedFresnel lobes =
+          runtime::evaluate_film_coated_fresnel(film, coat, shader_basis, q.mu);
+      record(0, lobes, result, i);
+      record(1, runtime::evaluate_film_coated_fbar(film, coat, table, q.ndotv, q.roughness),
+             result + 4, i);
+      record_largest(
+          quantities[4],
+          runtime::film_polygon_light_ltc_coated(film, coat, table, runtime::shipped_ltc_table(),
+                                                 q.ndotv, q.roughness, kLayeredValidationQuad)
+              .total(),
+          result + 8, i);
+      record_metal_rough_under_coat(quantities[5], quantities[6], shader_basis, q, lobes.base,
+                                    result + 12, i);
+    }
+    return quantities;
+  }
+
   // Both lobes of a coated material (runtime/coat.h): the base's RGB and the coat's F, each
   // direct and through the three tables.
   std::vector<CheckedQuantity> compare_coated(
@@ -156,14 +226,8 @@ class MaterialCheck final : public DeviceCheck {
                                                {"coat transmission", tolerance_.fresnel}};
     const auto record = [&](std::size_t slot, const runtime::CoatedFresnel& expected,
                             const float* actual, std::size_t query) {
-      record_largest(quantities[2 * slot], expected.base, actual, query);
-      const float coat_actual[3] = {actual[3], actual[3], actual[3]};
-      record_largest(quantities[2 * slot + 1], {expected.coat, expected.coat, expected.coat},
-                     coat_actual, query);
+      record_lobes(quantities[2 * slot], quantities[2 * slot + 1], expected, actual, query);
     };
-    // glTF's dielectric (F0 0.04, F90 1), which the kernel mixes with the base lobe at mu.
-    constexpr runtime::Rgb kGltfDielectric{runtime::kGltfDielectricF0, runtime::kGltfDielectricF0,
-                                           runtime::kGltfDielectricF0};
     for (std::size_t i = 0; i < queries_.size(); ++i) {
       const ValidationQuery& q = queries_[i];
       const float* result = &results[i * kCoatedValidationResultsPerQuery * 4];
@@ -176,16 +240,8 @@ class MaterialCheck final : public DeviceCheck {
                          .total(),
                      result + 16, i);
       record(1, runtime::evaluate_coated_fbar(c, coat, table, q.ndotv, q.roughness), result + 4, i);
-      // The metal-rough mix under the coat at mu, metalness = roughness, at NdotV.
-      const double transmission = runtime::coat_transmission(coat, shader_basis, q.ndotv);
-      record_largest(quantities[9],
-                     runtime::metal_rough_under_coat(
-                         runtime::dielectric_fresnel(kGltfDielectric, {1.0, 1.0, 1.0}, q.mu),
-                         lobes.base, q.roughness, transmission),
-                     result + 20, i);
-      const float transmission_actual[3] = {result[23], result[23], result[23]};
-      record_largest(quantities[10], {transmission, transmission, transmission},
-                     transmission_actual, i);
+      record_metal_rough_under_coat(quantities[9], quantities[10], shader_basis, q, lobes.base,
+                                    result + 20, i);
       if (embedded) {
         record(2, runtime::evaluate_coated_fbar(c, coat, embedded->view(), q.ndotv, q.roughness),
                result + 8, i);

@@ -7,6 +7,7 @@
 
 #include <span>
 
+#include "matc/runtime/film_table.h"
 #include "matc/runtime/fresnel.h"
 #include "matc/runtime/ltc.h"
 #include "matc/runtime/lut.h"
@@ -80,6 +81,21 @@ CoatedFresnel evaluate_coated_fbar(const Coefficients& in_air, const CoatCoeffic
 CoatedFresnel polygon_light_ltc_coated(const Coefficients& in_air, const CoatCoefficients& coat,
                                        const LutView& lut, const LtcTableView& ltc, double ndotv,
                                        double roughness, std::span<const Vec3> vertices);
+
+// A film under the coat (docs/thin-film.md): its table holds the base lobe, the film in air and
+// under the coat layered at every node, and the coat lobe comes from the coat's coefficients as
+// for a bare metal under it. F for a direct light at mu = dot(V, H) ...
+CoatedFresnel evaluate_film_coated_fresnel(const FilmTable& table, const CoatCoefficients& coat,
+                                           const ShaderBasis& basis, double mu);
+// ... Fbar, the base's from the table at (NdotV, roughness), the coat's from `lut` at its own
+// roughness ...
+CoatedFresnel evaluate_film_coated_fbar(const FilmTable& table, const CoatCoefficients& coat,
+                                        const LutView& lut, double ndotv, double roughness);
+// ... and a polygon light of radiance 1, each lobe's LTC integral times its Fbar.
+CoatedFresnel film_polygon_light_ltc_coated(const FilmTable& table, const CoatCoefficients& coat,
+                                            const LutView& lut, const LtcTableView& ltc,
+                                            double ndotv, double roughness,
+                                            std::span<const Vec3> vertices);
 
 // What reaches a layer under the coat and comes back through it as glTF layers a clear coat
 // (KHR_materials_clearcoat), matc_coat_transmission_<name>: 1 - the coat lobe's F at NdotV, its
