@@ -30,19 +30,21 @@ function floatLiteral(value) {
 const floatList = (values) => values.map(floatLiteral).join(", ");
 
 // The snippet of the metal `name` from `template` (the coated-material template of `language`,
-// "glsl" or "wgsl") and checked
+// "glsl" or "wgsl", or with `film` the film-under-a-coat one, material_film_coated) and checked
 // extension values: `coefficients` (3 rows, the metal in air), `colorSpace`, `maxError` (3
-// numbers), and `coat` ({ weight, ior, roughness, color, underCoatCoefficients, coatCoefficients }).
+// numbers), `coat` ({ weight, ior, roughness, color, underCoatCoefficients, coatCoefficients }) and
+// `film` ({ weight, ior, thickness }: its table holds the base lobe, so the template has only the
+// coat lobe's functions and the film's description).
 // `versionNumber`: the shader library's MATC_VERSION, which the snippet checks.
-export function coatedSnippet(template, { name, coefficients, colorSpace, maxError, coat, versionNumber, version,
-                                          language = "glsl" }) {
+export function coatedSnippet(template, { name, coefficients, colorSpace, maxError, coat, film = null, versionNumber,
+                                          version, language = "glsl" }) {
   if (language !== "glsl" && language !== "wgsl") throw new Error(`matc: no coated template in ${language}`);
   const wgsl = language === "wgsl";
   const vector = wgsl ? "vec3f" : "vec3";
   const log2Colour = coat.color.map((value) => (value >= 1 ? 0 : Math.log2(Math.max(value, 1e-30))));
   const inverseIorSquared = 1 / (coat.ior * coat.ior);
   const notCarried = "(not in MATC_materials_fresnel)";
-  const values = {
+  const shared = {
     name, version, version_number: String(versionNumber), source_file: "MATC_materials_fresnel",
     inputs_hash: "of the extension", f0: coefficients.map((row) => row[0].toFixed(4)).join(", "),
     color_space: colorSpace, red: floatList(coefficients[0]), green: floatList(coefficients[1]),
@@ -50,6 +52,14 @@ export function coatedSnippet(template, { name, coefficients, colorSpace, maxErr
     under_green: floatList(coat.underCoatCoefficients[1]), under_blue: floatList(coat.underCoatCoefficients[2]),
     coat: floatList(coat.coatCoefficients), coat_weight: floatLiteral(coat.weight),
     coat_roughness: floatLiteral(coat.roughness), coat_ior: String(coat.ior),
+    layered_max_error: Math.max(...maxError).toFixed(4), coat_max_error: notCarried,
+  };
+  // The film's numbers as the compiler prints them (fmt's "{}" of a double: 45, 2.4).
+  const values = film ? {
+    ...shared, film_ior: String(film.ior), film_thickness: String(film.thickness), film_weight: String(film.weight),
+    max_error: notCarried, fit_max_error: notCarried, layer_texcoord: "",
+  } : {
+    ...shared,
     // A clear coat tints nothing: no exponentials where the common case needs none.
     tint_body: log2Colour.every((value) => value === 0)
       ? `  return ${vector}(1.0);`
@@ -58,8 +68,7 @@ export function coatedSnippet(template, { name, coefficients, colorSpace, maxErr
         `  return exp2(${vector}(${floatList(log2Colour)}) * inverse_mu_inside);`,
     // A full coat leaves nothing of the metal in air.
     base: coat.weight >= 1 ? "through" : `mix(matc_combine(in_air, values), through, matc_coat_weight_${name})`,
-    layered_max_error: Math.max(...maxError).toFixed(4),
-    under_coat_max_error: notCarried, coat_max_error: notCarried,
+    under_coat_max_error: notCarried,
   };
   const used = new Set();
   const snippet = template.replace(/\{\{(\w+)\}\}/g, (_, key) => {

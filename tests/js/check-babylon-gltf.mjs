@@ -70,9 +70,9 @@ import { babylonProbeScene, renderBabylonProbe } from "/checks/babylon-scene-pag
 await runLoaderCheck({
   engine: "Babylon.js", page, terms: kBabylonProbeTerms,
   summary: (worst) => `Babylon.js's glTF loader with matc's extension: a glTF-Transform car asset's paint (coated), ` +
-              `chrome and trims (textured, per pixel) became matc metals compiled in the page, the iridescent foil a filmed matc metal (its own table), the tyre kept Babylon's material, largest difference from the CPU runtime ` +
+              `chrome and trims (textured, per pixel) became matc metals compiled in the page, the iridescent foil a filmed matc metal (its own table), the lacquered foil a coated one (its table the base lobe), the tyre kept Babylon's material, largest difference from the CPU runtime ` +
               `${worst.compiled.toExponential(2)}; from matc gltf's asset without the compiler, every metal took ` +
-              `MATC_materials_fresnel's coefficients (the foil its film's table), the coated paint its snippet from matc's template ` +
+              `MATC_materials_fresnel's coefficients (the foils their films' tables), the coated paint its snippet from matc's template ` +
               `(${worst.extension.toExponential(2)}); with a build directory of the asset, the paint took its snippet ` +
               `from it (${worst.directory.toExponential(2)})`,
 }, process.argv.slice(2));

@@ -71,7 +71,7 @@ const cases = [
   ["film without thickness", `{"name": "a", ${ior}, "film": {"ior": 1.5}}`, false],
   ["film thickness negative", `{"name": "a", ${ior}, "film": {"thickness": -1}}`, false],
   ["film index below 1", `{"name": "a", ${ior}, "film": {"ior": 0.9, "thickness": 10}}`, false],
-  ["film under a coat", `{"name": "a", ${ior}, "coat": {}, "film": {"thickness": 10}}`, false],
+  ["film under a coat", `{"name": "a", ${ior}, "coat": {}, "film": {"thickness": 10}}`, true],
   ["basis pinned", `{"name": "a", "f82_tint": {"f0": 0.9, "tint": 0.5}, "basis": "powers"}`, true],
   ["basis f82 pinned", `{"name": "a", ${ior}, "basis": "f82"}`, true],
   ["basis fitted", `{"name": "a", ${ior}, "basis": "extended"}`, false],

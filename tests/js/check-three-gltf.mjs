@@ -5,7 +5,7 @@
 //     become matc metals (the paint a coated one, the foil a filmed one in place of three.js's
 //     iridescence), the tyre keeps three.js's material;
 //   - extension: what `matc gltf` wrote from it (MATC_materials_fresnel in each metal), with no
-//     compiler: every metal takes its coefficients from the extension (the foil its film's table), the coated paint its
+//     compiler: every metal takes its coefficients from the extension (the foils their films' tables), the coated paint its
 //     snippet from matc's template filled with the extension's values;
 //   - directory: the same with a build directory that compiled the asset (`matc -o build car.glb`)
 //     and no compiler: the paint becomes a coated metal too, its snippet from the build.
@@ -36,8 +36,8 @@ const page = (config) => modulePage(config, {
 await runLoaderCheck({
   engine: "three.js", page, terms: kThreeJsProbeTerms,
   summary: (worst) => `three.js GLTFLoader with matc's plugin: a glTF-Transform car asset's paint (coated), chrome ` +
-              `and trims (textured, per pixel) became matc metals compiled in the page, the iridescent foil a filmed matc metal (its own table), the tyre kept three.js's material, largest difference from the CPU runtime ${worst.compiled.toExponential(2)}; ` +
-              `from matc gltf's asset without the compiler, every metal took MATC_materials_fresnel's coefficients (the foil its film's table), ` +
+              `and trims (textured, per pixel) became matc metals compiled in the page, the iridescent foil a filmed matc metal (its own table), the lacquered foil a coated one (its table the base lobe), the tyre kept three.js's material, largest difference from the CPU runtime ${worst.compiled.toExponential(2)}; ` +
+              `from matc gltf's asset without the compiler, every metal took MATC_materials_fresnel's coefficients (the foils their films' tables), ` +
               `the coated paint its snippet from matc's template (${worst.extension.toExponential(2)}); ` +
               `with a build directory of the asset, the paint took its snippet from it ` +
               `(${worst.directory.toExponential(2)})`,

@@ -63,9 +63,9 @@ await runLoaderCheck({
           `a build of another module: ${webgl}`);
   },
   summary: (worst) => `three.js GLTFLoader with matc's WebGPU plugin, on WebGPURenderer: the car asset's paint (coated), ` +
-              `chrome and trims (textured, per pixel) became matc node materials compiled in the page (WGSL), the iridescent foil a filmed matc metal (its own table), the tyre kept three.js's material, largest difference from the CPU ` +
+              `chrome and trims (textured, per pixel) became matc node materials compiled in the page (WGSL), the iridescent foil a filmed matc metal (its own table), the lacquered foil a coated one (its table the base lobe), the tyre kept three.js's material, largest difference from the CPU ` +
               `runtime ${worst.compiled.toExponential(2)}; from matc gltf's asset without the compiler, every metal took ` +
-              `MATC_materials_fresnel's coefficients (the foil its film's table), the coated paint its snippet from matc's WGSL template ` +
+              `MATC_materials_fresnel's coefficients (the foils their films' tables), the coated paint its snippet from matc's WGSL template ` +
               `(${worst.extension.toExponential(2)}); with a build directory of the asset, the paint took its snippet ` +
               `from it (${worst.directory.toExponential(2)})`,
 }, process.argv.slice(2));

@@ -364,7 +364,10 @@ for (const language of ["glsl", "wgsl"]) {
     [withTable({ width: 64 }), tableShape],
     [withTable({ texels: texelBytes.toString("base64") }), /film\.table\.texels must be finite numbers/],
     [withFilm({ table: null }), tableShape],
-    [{ ...foilExtension, coat: {} }, /a film with a coat or per-pixel data/],
+    // A film under a coat is checked as any coat is (docs/thin-film.md, "Under a coat"); per-pixel
+    // data beside a film is what matc does not write.
+    [{ ...foilExtension, coat: {} }, /coat: underCoatCoefficients must be 3 rows of 4 numbers/],
+    [{ ...foilExtension, zeroF0Coefficients: [[0, 1, 0, 0], [0, 1, 0, 0], [0, 1, 0, 0]] }, /a film with per-pixel data/],
   ]) {
     let message = "no error";
     try {

@@ -180,6 +180,25 @@ void main() {
 }
 `;
 
+// The same for a filmed material under a coat (docs/thin-film.md, "Under a coat"): the base lobe
+// from its table, the coat lobe from matc_lut at the coat's roughness, summed.
+const filmCoatedMain = (name) => `
+uniform sampler2D matc_lut;
+uniform sampler2D matc_film;
+uniform sampler2D matc_queries;
+out vec4 matc_result;
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 query = texelFetch(matc_queries, ivec2(pixel.x, 0), 0);  // mu, NdotV, roughness
+  vec4 coat_bbar = texture(matc_lut, matc_lut_texcoord(query.y, matc_coat_roughness_${name}));
+  vec3 value = pixel.y == 0
+      ? matc_fresnel_${name}(MATC_FILM_FRESNEL(matc_film, query.x)) + matc_coat_fresnel_${name}(query.x)
+      : matc_fresnel_preintegrated_${name}(MATC_FILM_PREINTEGRATED(matc_film, query.y, query.z)) +
+            matc_coat_fresnel_preintegrated_${name}(coat_bbar);
+  matc_result = vec4(value, 1.0);
+}
+`;
+
 const dir = mkdtempSync(join(tmpdir(), "matc-webgl2-"));
 try {
   const queries = validationQueries();
@@ -192,7 +211,7 @@ try {
     // Sampled: the table's tolerance; rows 1 and 2 both Fbar.
     name: m.name, F: m.F, Fbar: m.Fbar, FbarAnalytic: m.Fbar, tolerance: kPreintegratedTolerance,
     film: readFileSync(join(dir, "out", `${m.name}.film.bin`)).toString("base64"),
-    source: m.snippet + filmMain(m.name) } : {
+    source: m.snippet + (m.coated ? filmCoatedMain(m.name) : filmMain(m.name)) } : {
     name: m.name, F: m.F, Fbar: m.Fbar, FbarAnalytic: m.FbarAnalytic, tolerance: kFresnelTolerance,
     source: m.snippet + (m.coated ? coatedMain(m.name)
                                   : main(`matc_coefficients_${m.name}`, suffix(m.basis))) });

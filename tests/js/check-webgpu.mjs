@@ -85,6 +85,16 @@ const filmKernel = (name) => perQueryKernel(`  matc_results[2u * i] = vec4f(matc
   matc_results[2u * i + 1u] = vec4f(matc_fresnel_preintegrated_${name}(
                                         matc_film_preintegrated(matc_film, matc_linear, query.y, query.z)), 1.0);`);
 
+// The same for a filmed material under a coat (docs/thin-film.md, "Under a coat"): the base lobe
+// from its table, the coat lobe from matc_lut at the coat's roughness, summed.
+const filmCoatedKernel = (name) => perQueryKernel(`  let coat_bbar = textureSampleLevel(matc_lut, matc_linear,
+                                     matc_lut_texcoord(query.y, matc_coat_roughness_${name}), 0.0);
+  matc_results[2u * i] = vec4f(matc_fresnel_${name}(matc_film_fresnel(matc_film, matc_linear, query.x)) +
+                               matc_coat_fresnel_${name}(query.x), 1.0);
+  matc_results[2u * i + 1u] = vec4f(matc_fresnel_preintegrated_${name}(
+                                        matc_film_preintegrated(matc_film, matc_linear, query.y, query.z)) +
+                                    matc_coat_fresnel_preintegrated_${name}(coat_bbar), 1.0);`);
+
 // One result per query: a quad light of radiance 1 seen from the origin (`light` names the
 // one-shape function or the quality level's, which also takes the roughness).
 const quadLightKernel = (coefficients, quad, light = "matc_ltc_quad_light", suffix = "") => {
@@ -200,8 +210,8 @@ try {
   const checkFilmed = async (built, material, directory, label) => {
     film = filmTexture(material.name, directory);
     try {
-      const values = await dispatch(built.library + material.snippet + filmKernel(material.name),
-                                    queries.flat, 2);
+      const kernel = material.coated ? filmCoatedKernel(material.name) : filmKernel(material.name);
+      const values = await dispatch(built.library + material.snippet + kernel, queries.flat, 2);
       report(label, [["F", largestDifference(values, material.F, 8, 0)],
                      ["Fbar", largestDifference(values, material.Fbar, 8, 4)]],
              { F: kPreintegratedTolerance, Fbar: kPreintegratedTolerance });

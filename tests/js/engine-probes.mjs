@@ -21,6 +21,9 @@ export const kProbeCoated = "copper_lacquered";
 // A filmed metal (measured titanium under a 45 nm anodic film, docs/thin-film.md): F and Fbar from
 // its own table.
 export const kProbeFilmed = "titanium_anodised_blue";
+// The same film under a clear lacquer (docs/thin-film.md, "Under a coat"): its table is the base
+// lobe, the coat lobe its snippet's.
+export const kProbeFilmCoated = "titanium_anodised_lacquered";
 export const kPointLight = { position: [0.3, 0.2, 0.8], intensity: 0.7 };
 // A rect area light above the probe plane: centre, size and radiance (each engine places its
 // corners: three.js's looks at the origin, Babylon's faces -z).
@@ -141,7 +144,8 @@ function quadLightsAtProbes(matc, args, ndotv, roughness, rect) {
 // out/copper_lacquered_without_snippet.json (a coated material without its shader snippet).
 export function prepareProbeBuilds(matc, materialsDir, dir) {
   const out = join(dir, "out");
-  const materialFiles = [...kProbeMaterials, kProbeCoated, kProbeFilmed].map((name) => join(materialsDir, `${name}.json`));
+  const materialFiles = [...kProbeMaterials, kProbeCoated, kProbeFilmed, kProbeFilmCoated]
+                          .map((name) => join(materialsDir, `${name}.json`));
   run(matc, ["-q", "-o", out, "--emit", "glsl,wgsl,json,lut,ltc,coefficient-table", ...gBasisOptions,
              "--lut-precision", "f32", "--coefficient-table-precision", "f32", ...materialFiles,
              f0TableCoatedFile(join(dir, "f0_table_coated_factor"), kF0TableCoated.factor)]);
@@ -189,8 +193,10 @@ export function probeRenders() {
       renders.push({ key: `${source} ${light} r=0.3`, source, light, roughness: 0.3 });
     }
   }
-  for (const light of ["environment", "point", "rect"]) {
-    renders.push({ key: `${kProbeCoated} ${light} r=0.3`, source: kProbeCoated, light, roughness: 0.3, areaLights: "matc" });
+  for (const source of [kProbeCoated, kProbeFilmCoated]) {
+    for (const light of ["environment", "point", "rect"]) {
+      renders.push({ key: `${source} ${light} r=0.3`, source, light, roughness: 0.3, areaLights: "matc" });
+    }
   }
   return renders;
 }
@@ -204,7 +210,8 @@ export function probeRenders() {
 // coatedFiles[name] = { file, compiledIn } a coated one's material file and compiled folder instead.
 // coatLobeOnly: a coated metal's coat lobe alone (what lies over whatever is under the coat).
 export function expectedProbes({ matc, materialsDir, out, alphaOf, coatVisibility, rect, renders,
-                                 bare = [...kProbeMaterials, kProbeFilmed], coated = [kProbeCoated], coatedFiles = {},
+                                 bare = [...kProbeMaterials, kProbeFilmed], coated = [kProbeCoated, kProbeFilmCoated],
+                                 coatedFiles = {},
                                  coatLobeOnly = false }) {
   const wanted = new Set(renders.map((render) => render.key));
   const ndotv = kProbePixels.map((pixel) => Math.fround(dot(kNormal, viewAt(pixel))));
@@ -437,7 +444,7 @@ export async function runProbeCheck(engine, [matc, materialsDir, webDir, mode]) 
   const dir = mkdtempSync(join(tmpdir(), "matc-engine-probes-"));
   try {
     const { out, roots } = prepareProbeBuilds(matc, materialsDir, dir);
-    const materials = [...kProbeMaterials, kProbeCoated, kProbeFilmed];
+    const materials = [...kProbeMaterials, kProbeCoated, kProbeFilmed, kProbeFilmCoated];
     const compileInPage = mode === "--compile-in-page";
     const renders = probeRenders().filter((render) => !compileInPage || materials.includes(render.source));
     const materialTexts = Object.fromEntries(
@@ -453,7 +460,7 @@ export async function runProbeCheck(engine, [matc, materialsDir, webDir, mode]) 
     check(result.errors.length === 0, `${engine.name}: ${result.errors.join("\n")}`);
     const expected = expectedProbes({ matc, materialsDir, out, alphaOf: engine.alphaOf,
                                       coatVisibility: engine.coatVisibility, rect: engine.rect, renders,
-                                      coated: [kProbeCoated, kF0TableCoated.name],
+                                      coated: [kProbeCoated, kProbeFilmCoated, kF0TableCoated.name],
                                       coatedFiles: { [kF0TableCoated.name]: f0TableCoatedAtColour(matc, dir) } });
     const worst = compareProbes(result.renders ?? {}, expected);
     const refused = checkFailures(result.failures ?? {});

@@ -53,12 +53,13 @@ const magentaTexture = (document, name) => document.createTexture(name)
   .setImage(pngBytes(4, 4, new Uint8Array(4 * 4 * 3).map((_, i) => (i % 3 === 1 ? 0 : 255)))).setMimeType("image/png");
 
 // car.glb: the car-paint asset (options: the metals' roughness; an iridescent foil metal too, and
-// `airFoil`: one under a film of index 1, which shows nothing and compiles bare; a textured bare trim; perPixel: the paint's texture (255, 0, 255) with red and blue of its factor on
+// `airFoil`: one under a film of index 1, which shows nothing and compiles bare; `lacqueredFoil`: a foil
+// under a clear coat, the film between coat and metal; a textured bare trim; perPixel: the paint's texture (255, 0, 255) with red and blue of its factor on
 // F0-table entries, under a partial coat (0.7: the metal in air shows through too), and an
 // edge-coloured textured trim likewise, so that a loader following
 // them per pixel shades them as the metals compiled at F0 = factor with green 0).
 export async function carAsset(path, { paintRoughness = 0.4, chromeRoughness = 0.08, foil = false, airFoil = false,
-                                       trim = false, perPixel = false } = {}) {
+                                       lacqueredFoil = false, trim = false, perPixel = false } = {}) {
   const document = new Document();
   const clearcoat = document.createExtension(KHRMaterialsClearcoat);
   const flakes = new Uint8Array(8 * 8 * 3).map((_, i) => (i % 3 === 0 ? 200 : 40) + (i % 7));
@@ -74,7 +75,7 @@ export async function carAsset(path, { paintRoughness = 0.4, chromeRoughness = 0
   const tyre = document.createMaterial("Tyre").setBaseColorFactor([0.02, 0.02, 0.02, 1])
     .setMetallicFactor(0).setRoughnessFactor(0.9);
   const materials = [paint, chrome, tyre];
-  const iridescence = (foil || airFoil) && document.createExtension(KHRMaterialsIridescence);
+  const iridescence = (foil || airFoil || lacqueredFoil) && document.createExtension(KHRMaterialsIridescence);
   if (foil) {
     materials.push(document.createMaterial("Foil").setBaseColorFactor([0.9, 0.9, 0.9, 1]).setMetallicFactor(1)
       .setRoughnessFactor(0.3).setExtension("KHR_materials_iridescence", iridescence.createIridescence().setIridescenceFactor(1)));
@@ -83,6 +84,12 @@ export async function carAsset(path, { paintRoughness = 0.4, chromeRoughness = 0
     materials.push(document.createMaterial("Air Foil").setBaseColorFactor([0.9, 0.9, 0.9, 1]).setMetallicFactor(1)
       .setRoughnessFactor(0.3).setExtension("KHR_materials_iridescence",
                                             iridescence.createIridescence().setIridescenceFactor(1).setIridescenceIOR(1)));
+  }
+  if (lacqueredFoil) {
+    materials.push(document.createMaterial("Lacquered Foil").setBaseColorFactor([0.9, 0.9, 0.9, 1]).setMetallicFactor(1)
+      .setRoughnessFactor(0.3).setExtension("KHR_materials_iridescence", iridescence.createIridescence().setIridescenceFactor(1))
+      .setExtension("KHR_materials_clearcoat", clearcoat.createClearcoat().setClearcoatFactor(1)
+        .setClearcoatRoughnessFactor(0.1)));
   }
   if (trim) {
     // A textured bare metal: every texel (255, 0, 255), exact in any sRGB decoding, so the

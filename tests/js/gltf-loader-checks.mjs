@@ -37,9 +37,12 @@ export const kThreeGltfPageSetup = `
 
 const kLights = ["environment", "point", "rect"];
 // The engine's material name -> the matc material `matc import` writes for it, per load.
-const kProbed = { compiled: { "Car Paint": "Car_Paint", Chrome: "Chrome", Trim: "Trim", "Edge Trim": "Edge_Trim", Foil: "Foil" },
-                  extension: { "Car Paint": "Car_Paint", Chrome: "Chrome", Trim: "Trim", "Edge Trim": "Edge_Trim", Foil: "Foil" },
-                  directory: { "Car Paint": "Car_Paint", Trim: "Trim", "Edge Trim": "Edge_Trim" } };
+const kProbed = { compiled: { "Car Paint": "Car_Paint", Chrome: "Chrome", Trim: "Trim", "Edge Trim": "Edge_Trim", Foil: "Foil",
+                              "Lacquered Foil": "Lacquered_Foil" },
+                  extension: { "Car Paint": "Car_Paint", Chrome: "Chrome", Trim: "Trim", "Edge Trim": "Edge_Trim", Foil: "Foil",
+                               "Lacquered Foil": "Lacquered_Foil" },
+                  directory: { "Car Paint": "Car_Paint", Trim: "Trim", "Edge Trim": "Edge_Trim",
+                               "Lacquered Foil": "Lacquered_Foil" } };
 // The textured metals (gltf-assets.mjs, perPixel): their base colour per pixel is their factor times
 // their texels (255, 0, 255), so the metal is the one `matc import` writes with green F0 0. The
 // paint's and the edge trim's other channels sit on entries of their F0 tables, which hold the
@@ -54,7 +57,8 @@ async function carAssetsForLoaders(dir, matc) {
   const assets = join(dir, "assets");
   mkdirSync(assets);
   const car = join(assets, "car.glb");
-  await carAsset(car, { paintRoughness: 0.3, chromeRoughness: 0.3, foil: true, airFoil: true, trim: true, perPixel: true });
+  await carAsset(car, { paintRoughness: 0.3, chromeRoughness: 0.3, foil: true, airFoil: true, lacqueredFoil: true,
+                        trim: true, perPixel: true });
   run(matc, ["gltf", "-q", car, "-o", join(assets, "car_matc.glb")]);
   const build = join(dir, "build");
   run(matc, ["-q", "-o", build, "--emit", "glsl,wgsl,json,lut,ltc", car]);
@@ -65,18 +69,23 @@ async function carAssetsForLoaders(dir, matc) {
 // the engine's own), how many became matc metals, and the warnings. The foil (KHR_materials_iridescence
 // on a metal) is a filmed matc metal in place of the engine's iridescence, from its own table; the
 // air foil (a film of index 1) a bare one in its place (with the engine's iridescence left on, the
-// integrations would refuse it: a warning, and the engine's material).
+// integrations would refuse it: a warning, and the engine's material). The lacquered foil (the
+// same film under a clear coat) is a coated matc metal whose film table is its base lobe; from the
+// extension alone, its snippet is the film-under-a-coat template's.
 const kLoads = {
   compiled: { kinds: { "Car Paint": "f0-table coated compiled", Chrome: "bare compiled", Tyre: "engine", Foil: "filmed compiled",
-                        "Air Foil": "bare compiled", Trim: "per-pixel compiled", "Edge Trim": "f0-table bare compiled" },
-              made: 6, warnings: [] },
+                        "Air Foil": "bare compiled", "Lacquered Foil": "coated compiled", Trim: "per-pixel compiled",
+                        "Edge Trim": "f0-table bare compiled" },
+              made: 7, warnings: [] },
   extension: { kinds: { "Car Paint": "f0-table coated extension (template)", Chrome: "bare extension", Tyre: "engine",
-                         Foil: "filmed extension", "Air Foil": "bare extension", Trim: "per-pixel extension",
+                         Foil: "filmed extension", "Air Foil": "bare extension",
+                         "Lacquered Foil": "coated extension (template)", Trim: "per-pixel extension",
                          "Edge Trim": "f0-table bare extension" },
-               made: 6, warnings: [] },
+               made: 7, warnings: [] },
   directory: { kinds: { "Car Paint": "f0-table coated extension", Chrome: "bare extension", Tyre: "engine", Foil: "filmed extension",
-                         "Air Foil": "bare extension", Trim: "per-pixel extension", "Edge Trim": "f0-table bare extension" },
-               made: 6, warnings: [] },
+                         "Air Foil": "bare extension", "Lacquered Foil": "coated extension", Trim: "per-pixel extension",
+                         "Edge Trim": "f0-table bare extension" },
+               made: 7, warnings: [] },
 };
 
 // Checks a loader page's `result` ({ kinds, made, console: lines with "-- <load>" before each
@@ -108,11 +117,11 @@ function loaderChecks({ result, engine, matc, car, dir, probed, lights, terms })
     writeFileSync(file, JSON.stringify(material));
   }
   const out = join(dir, "out");
-  const names = ["Car_Paint", "Chrome", "Trim", "Edge_Trim", "Foil"];
+  const names = ["Car_Paint", "Chrome", "Trim", "Edge_Trim", "Foil", "Lacquered_Foil"];
   run(matc, ["-q", "-o", out, "--emit", "json", ...names.map((name) => join(materials, `${name}.json`))]);
   const renders = names.flatMap((name) => lights.map((light) => ({ key: `${name} ${light} r=0.3`, light })));
   const expected = expectedProbes({ matc, materialsDir: materials, out, ...terms, renders,
-                                    bare: ["Chrome", "Trim", "Edge_Trim", "Foil"], coated: ["Car_Paint"] });
+                                    bare: ["Chrome", "Trim", "Edge_Trim", "Foil"], coated: ["Car_Paint", "Lacquered_Foil"] });
   check(Object.keys(expected).length === renders.length, `${Object.keys(expected).length} renders expected`);
   const worst = {};
   for (const [load, names] of Object.entries(probed)) {

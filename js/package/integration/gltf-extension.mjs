@@ -21,7 +21,7 @@ function checkedNumber(value, low, high, what) {
 
 // A coated metal's two-lobe snippet from its extension: the compiler's template filled with the
 // extension's values (coated-snippet.mjs), each checked here as the schema has it.
-async function extensionCoatedMaterial(build, extension, rows) {
+async function extensionCoatedMaterial(build, extension, rows, film = null) {
   const what = `${kGltfFresnelExtension}.coat`;
   const coat = extension.coat;
   if (typeof coat !== "object" || coat === null) throw new MatcWebError(`${what} must be an object`);
@@ -43,15 +43,18 @@ async function extensionCoatedMaterial(build, extension, rows) {
     underCoatCoefficients: under, coatCoefficients: coatRow,
   };
   // Imported when needed: the staged package's (stage.mjs writes it from templates/glsl/ and wgsl/).
-  const { kCoatedMaterialGlsl, kCoatedMaterialWgsl } = await import("../templates.mjs");
+  const templates = await import("../templates.mjs");
   const language = build.language ?? "glsl";
-  const snippet = coatedSnippet(language === "wgsl" ? kCoatedMaterialWgsl : kCoatedMaterialGlsl, {
+  const template = film ? (language === "wgsl" ? templates.kFilmCoatedMaterialWgsl : templates.kFilmCoatedMaterialGlsl)
+                        : (language === "wgsl" ? templates.kCoatedMaterialWgsl : templates.kCoatedMaterialGlsl);
+  const snippet = coatedSnippet(template, {
     name: extension.name, version: build.manifest.matc_version, versionNumber, coefficients: rows, language,
     colorSpace: String(extension.colorSpace).replace(/[^A-Za-z0-9_]/g, "_"),
-    maxError: rgb(extension.maxError, `${kGltfFresnelExtension}.maxError`), coat: checked,
+    maxError: rgb(extension.maxError, `${kGltfFresnelExtension}.maxError`), coat: checked, film,
   });
   const { coatCoefficients: _, ...materialCoat } = checked;
-  return { name: extension.name, basis: extension.basis, coefficients: rows, coat: { ...materialCoat, snippet } };
+  return { name: extension.name, basis: extension.basis, coefficients: rows, coat: { ...materialCoat, snippet },
+           film: film ?? null };
 }
 
 // A filmed metal's film from its extension (docs/thin-film.md): { weight, ior, thickness, table },
@@ -109,23 +112,25 @@ export async function gltfExtensionMaterial(build, extension) {
   if (extension.f0Table !== undefined) {
     perPixel.f0Table = checkedF0Table(extension.f0Table, Boolean(extension.coat), `${kGltfFresnelExtension}.f0Table`);
   }
-  if (extension.film !== undefined) {
-    if (extension.coat !== undefined || Object.keys(perPixel).length > 0) {
-      throw new MatcWebError(`its ${kGltfFresnelExtension} has a film with a coat or per-pixel data, which matc does ` +
-                             "not write (a film's table holds one metal, not under a coat)");
-    }
-    return { name: extension.name, basis: extension.basis, coefficients: rows, coat: null,
-             film: extensionFilm(extension.film) };
+  const film = extension.film === undefined ? null : extensionFilm(extension.film);
+  if (film && Object.keys(perPixel).length > 0) {
+    throw new MatcWebError(`its ${kGltfFresnelExtension} has a film with per-pixel data, which matc does ` +
+                           "not write (a film's table holds one metal)");
+  }
+  if (film && !extension.coat) {
+    return { name: extension.name, basis: extension.basis, coefficients: rows, coat: null, film };
   }
   if (!extension.coat) {
     return { name: extension.name, basis: extension.basis, coefficients: rows, coat: null, ...perPixel };
   }
   const inDirectory = build.materialsByName &&
                       (build.manifest.materials ?? []).some((material) => material?.name === extension.name);
-  if (!inDirectory) return { ...(await extensionCoatedMaterial(build, extension, rows)), ...perPixel };
+  // A film under the coat: its table (the base lobe) from the extension, its snippet the
+  // film-under-a-coat template's.
+  if (!inDirectory) return { ...(await extensionCoatedMaterial(build, extension, rows, film)), ...perPixel };
   const material = await build.loadMaterial(extension.name);
   const same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
-  if (!material.coat || !same(material.coefficients, rows) ||
+  if (!material.coat || !same(material.coefficients, rows) || Boolean(material.film) !== Boolean(film) ||
       !same(material.coat.underCoatCoefficients, extension.coat.underCoatCoefficients)) {
     throw new MatcWebError(`the build directory's ${extension.name} is not this asset's metal (its coefficients ` +
                            "differ): compile the same asset with the same options into it");
@@ -146,12 +151,18 @@ const isGltfMetal = (material) => (material.pbrMetallicRoughness?.metallicFactor
 
 // Whether a material's KHR_materials_iridescence is a film matc compiles as the bare metal (its
 // has_visible_film; the importer takes the film at iridescenceThicknessMaximum): no coverage, an
-// index of 1 (air) or no thickness. glTF's defaults: factor 0, index 1.3, maximum 400 nm.
+// index of 1 (air; under a clear coat the importer leaves it out) or no thickness, or under a full
+// clear coat the coat's own index (more coat: docs/thin-film.md, "Under a coat"). glTF's defaults:
+// factor 0, index 1.3, maximum 400 nm; a clear coat's factor 0 and index 1.5.
 const hasBareFilm = (material) => {
   const film = material.extensions?.KHR_materials_iridescence;
+  const coat = material.extensions?.KHR_materials_clearcoat;
+  const ior = film?.iridescenceIor ?? 1.3;
+  const fullCoat = (coat?.clearcoatFactor ?? 0) >= 1;
+  const coatIor = coat?.extensions?.KHR_materials_clearcoat_ior?.clearcoatIor ?? 1.5;
   return typeof film === "object" && film !== null &&
-         ((film.iridescenceFactor ?? 0) === 0 || (film.iridescenceIor ?? 1.3) === 1 ||
-          (film.iridescenceThicknessMaximum ?? 400) === 0);
+         ((film.iridescenceFactor ?? 0) === 0 || ior === 1 || (film.iridescenceThicknessMaximum ?? 400) === 0 ||
+          (fullCoat && ior === coatIor));
 };
 
 // Whether a glTF metal's metalness varies from 1: a metallicFactor below 1 or a

@@ -45,6 +45,23 @@ vec4 matc_bbar;                  // and its texel of matc_lut, set before the li
 // matc_coat_bbar is matc_lut's texel at the coat's roughness and matc_ndotv the pixel's NdotV,
 // set before the lights with the rest.
 export function lobesGlsl(material) {
+  if (material?.film && material?.coat) {
+    // A filmed metal under a coat (docs/thin-film.md, "Under a coat"): its table's texels are the
+    // base lobe, the coat's transmission and tint included; the coat lobe is its snippet's, and the
+    // base's multiple scattering a bare metal's with the filmed metal's F0 under the coat.
+    const name = material.name;
+    return `
+${material.coat.snippet}
+vec4 matc_coat_bbar;
+float matc_ndotv;
+vec3 matc_base_fresnel(float mu) { return matc_fresnel_${name}(MATC_FILM_FRESNEL(matc_film_table, mu)); }
+vec3 matc_base_preintegrated() { return matc_fresnel_preintegrated_${name}(matc_film_bbar); }
+vec3 matc_base_compensation() { return matc_energy_compensation(matc_under_coat_coefficients_${name}, matc_bbar); }
+float matc_coat_lobe_fresnel(float mu) { return matc_coat_fresnel_${name}(mu); }
+float matc_coat_transmission() { return matc_coat_transmission_${name}(matc_ndotv); }
+float matc_coat_lobe_preintegrated() { return matc_coat_fresnel_preintegrated_${name}(matc_coat_bbar); }
+`;
+  }
   if (material?.film) {
     // A filmed metal (docs/thin-film.md): F and Fbar are its own table's texels (what its
     // snippet's matc_fresnel_<name>(film_texel) returns), fetched by the library; its 4-term

@@ -159,18 +159,27 @@ export async function loadMatcBuild(source) {
     const fn = (code) => wgslFn(code, [library, snippet]);
     const rows = (prefix) => ["red", "green", "blue"].map((channel) => `${prefix}_${channel}: vec4f`).join(", ");
     const struct = (prefix) => `MatcFresnelCoefficients(${prefix}_red, ${prefix}_green, ${prefix}_blue)`;
+    const coatLobe = {
+      coatFresnel: fn(`fn matc_three_coat_fresnel_${name}(mu: f32) -> f32 { return matc_coat_fresnel_${name}(mu); }`),
+      coatPreintegrated: fn(`fn matc_three_coat_preintegrated_${name}(coat_bbar: vec4f) -> f32 ` +
+                            `{ return matc_coat_fresnel_preintegrated_${name}(coat_bbar); }`),
+      transmission: fn(`fn matc_three_coat_transmission_${name}(ndotv: f32) -> f32 ` +
+                       `{ return matc_coat_transmission_${name}(ndotv); }`),
+    };
+    // A film under the coat (docs/thin-film.md): its table is the base lobe; the snippet has the
+    // coat lobe's functions only.
+    if (material.film) {
+      material.coat.functions = coatLobe;
+      return material;
+    }
     material.coat.functions = {
+      ...coatLobe,
       baseFresnel: fn(`fn matc_three_base_fresnel_${name}(${rows("in_air")}, ${rows("under_coat")}, mu: f32) -> vec3f ` +
                       `{ return matc_fresnel_textured_${name}(${struct("in_air")}, ${struct("under_coat")}, mu); }`),
       basePreintegrated: fn(`fn matc_three_base_preintegrated_${name}(${rows("in_air")}, ${rows("under_coat")}, ` +
                             "bbar: vec4f, coat_bbar: vec4f, ndotv: f32) -> vec3f { return " +
                             `matc_fresnel_preintegrated_textured_${name}(${struct("in_air")}, ${struct("under_coat")}, ` +
                             "bbar, coat_bbar, ndotv); }"),
-      coatFresnel: fn(`fn matc_three_coat_fresnel_${name}(mu: f32) -> f32 { return matc_coat_fresnel_${name}(mu); }`),
-      coatPreintegrated: fn(`fn matc_three_coat_preintegrated_${name}(coat_bbar: vec4f) -> f32 ` +
-                            `{ return matc_coat_fresnel_preintegrated_${name}(coat_bbar); }`),
-      transmission: fn(`fn matc_three_coat_transmission_${name}(ndotv: f32) -> f32 ` +
-                       `{ return matc_coat_transmission_${name}(ndotv); }`),
     };
     return material;
   };
@@ -212,8 +221,11 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
       if (coat) {
         const coatBbar = texture(lut, functions.lutTexcoord({ ndotv, roughness: clearcoatRoughness })).toConst("matc_coat_bbar");
         this.matcCoatBbar = coatBbar;
-        this.matcPreintegrated = coat.functions.basePreintegrated({ ...layerRows(rows, coat.underCoatRows),
-                                                                    bbar: this.matcBbar, coat_bbar: coatBbar, ndotv })
+        // A film under the coat: its table's Fbar texel is the base lobe's.
+        this.matcPreintegrated = (this.matc.film
+          ? texture(this.matc.film, functions.filmPreintegratedTexcoord({ ndotv, roughness })).level(0).rgb
+          : coat.functions.basePreintegrated({ ...layerRows(rows, coat.underCoatRows),
+                                               bbar: this.matcBbar, coat_bbar: coatBbar, ndotv }))
             .toConst("matc_preintegrated");
         this.matcCoatPreintegrated = coat.functions.coatPreintegrated({ coat_bbar: coatBbar }).toConst("matc_coat_preintegrated");
         // glTF's metal-rough model under the coat: what three's dielectric reflects times this.
@@ -293,8 +305,9 @@ class MatcPhysicalLightingModel extends THREE.PhysicalLightingModel {
     const dotVH = positionViewDirection.dot(halfDir).clamp();
     const ggx = BRDF_GGX({ lightDirection, f0: vec3(1), f90: float(1), roughness });
     const { coat, film } = this.matc;
-    const fresnel = coat ? coat.functions.baseFresnel({ ...layerRows(this.matc.rows, coat.underCoatRows), mu: dotVH })
-                  : film ? texture(film, this.matc.functions.filmFresnelTexcoord({ mu: dotVH })).level(0).rgb
+    // A filmed metal's table holds its base lobe, under a coat too.
+    const fresnel = film ? texture(film, this.matc.functions.filmFresnelTexcoord({ mu: dotVH })).level(0).rgb
+                  : coat ? coat.functions.baseFresnel({ ...layerRows(this.matc.rows, coat.underCoatRows), mu: dotVH })
                   : this.matc.functions.fresnel({ ...this.matc.rows, mu: dotVH });
     if (this.matc.metalRough) {
       this.metalRoughDirect({ irradiance: dotNL.mul(lightColor), ggx, fresnel, dotVH, reflectedLight });
