@@ -13,6 +13,8 @@ trap 'rm -rf "$work"' EXIT
 artistic=$root/examples/materials/tinted_steel.json
 spectral=$root/examples/materials/copper.json
 filmed=$root/examples/materials/titanium_anodised_blue.json
+coated=$root/examples/materials/copper_lacquered.json
+film_coated=$root/examples/materials/titanium_anodised_lacquered.json
 bare_titanium=$root/examples/materials/titanium.json
 
 # Median wall time in milliseconds of `runs` runs of a command.
@@ -48,6 +50,10 @@ row "\`--no-shared\`, spectral preset" "$matc" -q -o "$work/d" --no-shared "$spe
 row "\`--no-shared\`, spectral preset (titanium)" "$matc" -q -o "$work/g" --no-shared "$bare_titanium"
 row "\`--no-shared\`, the same titanium under a 45 nm film" \
   "$matc" -q -o "$work/h" --no-shared "$filmed"
+row "\`--no-shared\`, a coated spectral preset (copper under a lacquer)" \
+  "$matc" -q -o "$work/i" --no-shared "$coated"
+row "\`--no-shared\`, the filmed titanium under a clear lacquer" \
+  "$matc" -q -o "$work/j" --no-shared "$film_coated"
 row "\`--shared-only\` (libraries, SPIR-V library, 128x128 table bake, tables)" \
   "$matc" -q -o "$work/e" --shared-only
 row "one-material batch, every output (own and shared files, manifest)" \

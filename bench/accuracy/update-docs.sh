@@ -36,6 +36,10 @@ cmake --build "$build" --target matc_thin_film_table_study matc_thin_film_rgb_st
   "$build/bench/matc_thin_film_table_study"
 "$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" thin-film-rgb-study \
   "$build/bench/matc_thin_film_rgb_study"
+# A film under a coat: the table against the shortcuts (about 25 s on 2 cores; no test reruns it).
+cmake --build "$build" --target matc_thin_film_coat_study >/dev/null
+"$root/tests/scripts/check_docs_block.sh" --update "$root/docs/accuracy.md" thin-film-coat-study \
+  "$build/bench/matc_thin_film_coat_study"
 # What a shader could evaluate for a thickness per pixel (about 3 minutes on 2 cores; no test
 # reruns it).
 cmake --build "$build" --target matc_thin_film_thickness_study >/dev/null
