@@ -42,7 +42,12 @@ for snippet in *.glsl; do
     glsl_fbar="matc_fresnel_preintegrated_$name(MATC_FILM_PREINTEGRATED(matc_film, values[i].y, values[i].z))"
     hlsl_fbar="matc_fresnel_preintegrated_$name(matc_film_preintegrated(matc_film, matc_lut_sampler, v.y, v.z))"
   fi
-  if grep -q "matc_coat_fresnel_$name" "$snippet"; then
+  # A filmed metal under a coat (docs/thin-film.md): the base lobe from its table, the coat lobe's
+  # function beside it.
+  if grep -q "matc_coat_fresnel_$name" "$snippet" && grep -q "film_texel" "$snippet"; then
+    glsl_fbar="($glsl_fbar + matc_coat_fresnel_$name(values[i].x))"
+    hlsl_fbar="($hlsl_fbar + matc_coat_fresnel_$name(v.x))"
+  elif grep -q "matc_coat_fresnel_$name" "$snippet"; then
     glsl_fbar="(matc_fresnel_preintegrated_$name(bbar, bbar, values[i].y) + matc_coat_fresnel_$name(values[i].x))"
     hlsl_fbar="(matc_fresnel_preintegrated_$name(bbar, bbar, v.y) + matc_coat_fresnel_$name(v.x))"
   fi

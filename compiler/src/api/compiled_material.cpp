@@ -66,8 +66,18 @@ void check_rgb_size(std::span<double> rgb, std::size_t count) {
   }
 }
 
+// A coated material's two lobes for a direct light at mu, as its shaders compute them: the base
+// from its coefficients, or from its film's table where a film lies under the coat.
+runtime::CoatedFresnel coated_lobes(const matc::CompiledMaterial& compiled,
+                                    const runtime::ShaderBasis& shader_basis, double mu) {
+  const runtime::CoatCoefficients& coat = compiled.coat->coefficients;
+  return compiled.film_table
+             ? runtime::evaluate_film_coated_fresnel(*compiled.film_table, coat, shader_basis, mu)
+             : runtime::evaluate_coated_fresnel(compiled.coefficients, coat, shader_basis, mu);
+}
+
 // Fbar at each pair from `table` into rgb, as the shaders fetch it (a coated material's lobes
-// summed; a filmed one's from its own tables, whatever the table).
+// summed; a filmed one's base from its own tables, whatever the table).
 void fbar_from_table(const matc::CompiledMaterial& compiled, std::span<const double> ndotv,
                      std::span<const double> roughness, const runtime::LutView& table,
                      std::span<double> rgb) {
@@ -75,7 +85,11 @@ void fbar_from_table(const matc::CompiledMaterial& compiled, std::span<const dou
   check_rgb_size(rgb, ndotv.size());
   for (std::size_t i = 0; i < ndotv.size(); ++i) {
     const Rgb value =
-        compiled.film_table
+        compiled.coat && compiled.film_table
+            ? runtime::evaluate_film_coated_fbar(*compiled.film_table, compiled.coat->coefficients,
+                                                 table, ndotv[i], roughness[i])
+                  .total()
+        : compiled.film_table
             ? runtime::film_preintegrated(*compiled.film_table, ndotv[i], roughness[i])
         : compiled.coat
             ? runtime::evaluate_coated_fbar(compiled.coefficients, compiled.coat->coefficients,
@@ -193,11 +207,9 @@ void CompiledMaterial::fresnel(std::span<const double> mu, std::span<double> rgb
   check_unit_interval("mu", mu);
   check_rgb_size(rgb, mu.size());
   const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(evaluation_->basis);
-  if (const auto& coat = value_->coat) {
+  if (value_->coat) {
     write_rgb_per_cosine(mu, rgb, [&](double cosine) {
-      return runtime::evaluate_coated_fresnel(value_->coefficients, coat->coefficients,
-                                              shader_basis, cosine)
-          .total();
+      return coated_lobes(*value_, shader_basis, cosine).total();
     });
     return;
   }
@@ -239,8 +251,7 @@ CompiledMaterial::Lobes CompiledMaterial::coated_fresnel(std::span<const double>
   const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(evaluation_->basis);
   Lobes lobes{std::vector<double>(3 * mu.size()), std::vector<double>(mu.size())};
   for (std::size_t i = 0; i < mu.size(); ++i) {
-    const runtime::CoatedFresnel f = runtime::evaluate_coated_fresnel(
-        value_->coefficients, value_->coat->coefficients, shader_basis, mu[i]);
+    const runtime::CoatedFresnel f = coated_lobes(*value_, shader_basis, mu[i]);
     for (std::size_t c = 0; c < 3; ++c)
       lobes.base[3 * i + c] = f.base[c];
     lobes.coat[i] = f.coat;

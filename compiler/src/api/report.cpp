@@ -36,9 +36,10 @@ Report report(std::span<const Material> materials, const CompileOptions& options
     warn_if_poor_fit(compiled, fits);
     const MaterialCurves curves = sample_material_curves(compiled, shader_basis);
     const std::string source = std::filesystem::path(value.source_path).filename().string();
-    // A coated material's whole surface, as its curves are (docs/coating.md).
-    const FitAccuracy& accuracy =
-        compiled.coat ? compiled.coat->layered_accuracy : compiled.accuracy;
+    // A coated material's whole surface, as its curves are (docs/coating.md); a filmed metal's
+    // shaders read its table, not the 4-term fit (docs/thin-film.md).
+    FitAccuracy accuracy = compiled.coat ? compiled.coat->layered_accuracy : compiled.accuracy;
+    if (compiled.film_table && !compiled.coat) accuracy.decomposition = compiled.film_table_error;
     const std::string subtitle = fmt::format(
         "{}, basis {}{}: worst-channel max error ours {:.4f}, Schlick {:.4f}, F82-tint {:.4f}",
         source, runtime::basis_name(kind), compiled.coat ? ", coated" : "",

@@ -28,10 +28,16 @@ MaterialCurves sample_material_curves(const CompiledMaterial& compiled,
       layered ? static_cast<const ReflectanceCurve&>(*layered) : *in_air;
   const Rgb& f0 = compiled.coat ? compiled.coat->layered_f0 : compiled.f0;
   const Rgb& f82_value = compiled.coat ? compiled.coat->layered_f82 : compiled.f82;
+  // What the shaders compute: a filmed metal's F from its table (under a coat, the base lobe's).
   const auto ours = [&](double mu) {
-    if (!compiled.coat) return runtime::evaluate_fresnel(compiled.coefficients, shader_basis, mu);
-    return runtime::evaluate_coated_fresnel(compiled.coefficients, compiled.coat->coefficients,
-                                            shader_basis, mu)
+    const auto& film = compiled.film_table;
+    if (!compiled.coat) {
+      return film ? runtime::film_fresnel(*film, mu)
+                  : runtime::evaluate_fresnel(compiled.coefficients, shader_basis, mu);
+    }
+    const runtime::CoatCoefficients& coat = compiled.coat->coefficients;
+    return (film ? runtime::evaluate_film_coated_fresnel(*film, coat, shader_basis, mu)
+                 : runtime::evaluate_coated_fresnel(compiled.coefficients, coat, shader_basis, mu))
         .total();
   };
   MaterialCurves curves;
