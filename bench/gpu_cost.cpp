@@ -53,7 +53,7 @@ struct Comparison {
   bool f82_tint_material = false;
 };
 
-const std::array<Comparison, 38> kComparisons = {{
+const std::array<Comparison, 40> kComparisons = {{
     {"F alone, compiled coefficients", FresnelQuantity::direct, FresnelModel::ours,
      FresnelModel::schlick, std::nullopt},
     {"one GGX light, compiled coefficients", FresnelQuantity::ggx_light, FresnelModel::ours,
@@ -159,6 +159,14 @@ const std::array<Comparison, 38> kComparisons = {{
     {"split-sum image light, a metal under a film: its table vs glTF engines' iridescence",
      FresnelQuantity::preintegrated, FresnelModel::film_table,
      FresnelModel::film_airy_dielectric_base, std::nullopt},
+    // A filmed metal under a coat (examples' titanium_anodised_lacquered): its table and the coat
+    // lobe, against a coated metal's two lobes.
+    {"one GGX light, a filmed metal under a coat: its table and the coat lobe vs a coated metal",
+     FresnelQuantity::ggx_light, FresnelModel::film_table_coated, FresnelModel::ours_coated,
+     std::nullopt},
+    {"split-sum image light, a filmed metal under a coat vs a coated metal",
+     FresnelQuantity::preintegrated, FresnelModel::film_table_coated, FresnelModel::ours_coated,
+     std::nullopt},
     // Issue #53: a textured glTF metal under a coat, its coefficients in air and under the coat
     // per pixel from its F0 table, against the same coated metal at its factor.
     {"one GGX light, textured glTF metal under a coat: per pixel through its F0 table (in air and "
@@ -244,6 +252,8 @@ int main(int argc, char** argv) {
       matc::read_material_file(MATC_EXAMPLES_DIR "/aluminium_brushed_openpbr.json");
   const matc::ParseResult filmed_parsed =
       matc::read_material_file(MATC_EXAMPLES_DIR "/titanium_anodised_blue.json");
+  const matc::ParseResult film_coated_parsed =
+      matc::read_material_file(MATC_EXAMPLES_DIR "/titanium_anodised_lacquered.json");
   // One build (library and compiled material) per basis the rows use.
   // The coated rows' material: the same metal under a clear lacquer (index 1.5, roughness 0.1),
   // or under the examples' copper_lacquered coat, tinted.
@@ -258,6 +268,7 @@ int main(int argc, char** argv) {
     matc::CompiledMaterial tinted;
     matc::CompiledMaterial f82_tint;
     matc::CompiledMaterial filmed;
+    matc::CompiledMaterial film_coated;
   };
   // A build per basis the rows force, and the default build (a basis per material).
   using BuildKey = std::pair<matc::runtime::BasisKind, bool>;  // (basis, default build)
@@ -273,7 +284,7 @@ int main(int argc, char** argv) {
     builds[build_key] = std::make_unique<BasisBuild>(
         BasisBuild{std::move(build), compiled(*parsed.material), compiled(clear_material),
                    compiled(tinted_material), compiled(*f82_tint_parsed.material),
-                   compiled(*filmed_parsed.material)});
+                   compiled(*filmed_parsed.material), compiled(*film_coated_parsed.material)});
   }
   const matc::SpirvWords vertex = matc::compile_fullscreen_stage(
       matc::fullscreen_vertex_source(), matc::ShaderStage::vertex, "fullscreen.vert");
@@ -298,11 +309,12 @@ int main(int argc, char** argv) {
       if (fragments.contains(variant)) continue;
       const BasisBuild& basis_build = *builds.at({std::get<2>(variant), std::get<4>(variant)});
       const matc::CompiledMaterial& material =
-          std::get<5>(variant)                  ? basis_build.f82_tint
-          : matc::draws_filmed_material(model)  ? basis_build.filmed
-          : !matc::draws_coated_material(model) ? basis_build.material
-          : row.tinted_coat                     ? basis_build.tinted
-                                                : basis_build.coated;
+          std::get<5>(variant)                       ? basis_build.f82_tint
+          : model == FresnelModel::film_table_coated ? basis_build.film_coated
+          : matc::draws_filmed_material(model)       ? basis_build.filmed
+          : !matc::draws_coated_material(model)      ? basis_build.material
+          : row.tinted_coat                          ? basis_build.tinted
+                                                     : basis_build.coated;
       fragments[variant] = matc::compile_fullscreen_stage(
           matc::cost_pass_source(basis_build.build, material, model, row.quantity, 1280, 720),
           matc::ShaderStage::fragment, "cost_pass.frag");

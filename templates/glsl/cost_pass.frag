@@ -237,6 +237,10 @@ void main() {
 #elif MATC_COST_COAT == 1 && MATC_COST_F0_TABLE
   vec3 base_f = matc_fresnel_textured_{{name}}(c, under_coat, VoH);
   float coat_f = matc_coat_fresnel_{{name}}(VoH);
+#elif MATC_COST_COAT == 1 && MATC_COST_FILM == 1
+  // A filmed metal under the coat: its table's texel is the base lobe.
+  vec3 base_f = COST_FRESNEL(VoH);
+  float coat_f = matc_coat_fresnel_{{name}}(VoH);
 #elif MATC_COST_COAT == 1
   vec3 base_f = matc_fresnel_{{name}}(VoH);
   float coat_f = matc_coat_fresnel_{{name}}(VoH);
@@ -309,6 +313,9 @@ void main() {
 #elif MATC_COST_COAT == 1 && MATC_COST_F0_TABLE
   vec3 f = matc_fresnel_preintegrated_textured_{{name}}(c, under_coat, texel, coat_texel, NoV) *
                radiance +
+           matc_coat_fresnel_preintegrated_{{name}}(coat_texel) * coat_radiance;
+#elif MATC_COST_COAT == 1 && MATC_COST_FILM == 1
+  vec3 f = COST_FRESNEL_PREINTEGRATED(texel) * radiance +
            matc_coat_fresnel_preintegrated_{{name}}(coat_texel) * coat_radiance;
 #elif MATC_COST_COAT == 1
   vec3 f = matc_fresnel_preintegrated_{{name}}(texel, coat_texel, NoV) * radiance +

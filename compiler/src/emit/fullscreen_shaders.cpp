@@ -49,6 +49,7 @@ int material_map_count(FresnelModel model) {
     case FresnelModel::schlick_clear_coat:
     case FresnelModel::film_table:
     case FresnelModel::film_airy_dielectric_base:
+    case FresnelModel::film_table_coated:
       break;
   }
   return 0;
@@ -63,12 +64,14 @@ bool reads_f0_table(FresnelModel model) {
 }  // namespace
 
 bool draws_filmed_material(FresnelModel model) {
-  return model == FresnelModel::film_table || model == FresnelModel::film_airy_dielectric_base;
+  return model == FresnelModel::film_table || model == FresnelModel::film_airy_dielectric_base ||
+         model == FresnelModel::film_table_coated;
 }
 
 bool draws_coated_material(FresnelModel model) {
   return model == FresnelModel::ours_coated || model == FresnelModel::f0_table_coated ||
-         model == FresnelModel::f0_table_coated_metal_rough;
+         model == FresnelModel::f0_table_coated_metal_rough ||
+         model == FresnelModel::film_table_coated;
 }
 
 std::vector<CostPassBinding> cost_pass_bindings(FresnelModel model, FresnelQuantity quantity) {
@@ -82,7 +85,8 @@ std::vector<CostPassBinding> cost_pass_bindings(FresnelModel model, FresnelQuant
     bindings.push_back({4 + static_cast<std::uint32_t>(map), CostPassResource::material_map});
   if (quantity == FresnelQuantity::preintegrated)
     bindings.push_back({7, CostPassResource::environment});
-  if (model == FresnelModel::film_table) bindings.push_back({8, CostPassResource::film_table});
+  if (model == FresnelModel::film_table || model == FresnelModel::film_table_coated)
+    bindings.push_back({8, CostPassResource::film_table});
   return bindings;
 }
 
@@ -108,8 +112,8 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
   if (coat == 1 && !compiled.coat)
     throw std::invalid_argument("cost pass: a coated model needs a coated material");
   // 0: no film; 1: ours from the film's table; 2: the Airy sum over a dielectric base.
-  const int film = model == FresnelModel::film_table                  ? 1
-                   : model == FresnelModel::film_airy_dielectric_base ? 2
+  const int film = model == FresnelModel::film_table || model == FresnelModel::film_table_coated ? 1
+                   : model == FresnelModel::film_airy_dielectric_base                            ? 2
                                                                       : 0;
   if (film == 1 && !compiled.film_table)
     throw std::invalid_argument("cost pass: the film-table model needs a filmed material");
@@ -131,6 +135,8 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
   if (model == FresnelModel::f0_table_coated)
     model_name = "ours, coated, per pixel from an F0 map and F0 table";
   if (model == FresnelModel::ours_with_schlick_coat) model_name = "ours under a Schlick coat lobe";
+  if (model == FresnelModel::film_table_coated)
+    model_name = "ours, a filmed metal under a coat (its table and the coat lobe)";
   if (model == FresnelModel::schlick_clear_coat) model_name = "Filament's clear coat (Schlick)";
   if (model == FresnelModel::schlick_metal_rough)
     model_name = "Schlick's metal-rough, F0 blended by a metalness map";

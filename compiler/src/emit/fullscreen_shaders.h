@@ -54,7 +54,10 @@ enum class FresnelModel {
   // Barla's 2017 evaluation over a dielectric base of index from F0, as glTF engines' iridescence
   // (the Khronos sample viewer's evalIridescence) shades it, written here from the paper.
   film_table,
-  film_airy_dielectric_base
+  film_airy_dielectric_base,
+  // A filmed metal under a coat (docs/thin-film.md, "Under a coat"): its table is the base lobe,
+  // the coat lobe the coated snippet's.
+  film_table_coated
 };
 // F alone (mu from the pixel); F inside one GGX punctual light (D, height-correlated Smith V, F,
 // NdotL); image-based light: preintegrated Fbar from one table fetch times the prefiltered
