@@ -66,16 +66,6 @@ void check_rgb_size(std::span<double> rgb, std::size_t count) {
   }
 }
 
-// A coated material's two lobes for a direct light at mu, as its shaders compute them: the base
-// from its coefficients, or from its film's table where a film lies under the coat.
-runtime::CoatedFresnel coated_lobes(const matc::CompiledMaterial& compiled,
-                                    const runtime::ShaderBasis& shader_basis, double mu) {
-  const runtime::CoatCoefficients& coat = compiled.coat->coefficients;
-  return compiled.film_table
-             ? runtime::evaluate_film_coated_fresnel(*compiled.film_table, coat, shader_basis, mu)
-             : runtime::evaluate_coated_fresnel(compiled.coefficients, coat, shader_basis, mu);
-}
-
 // Fbar at each pair from `table` into rgb, as the shaders fetch it (a coated material's lobes
 // summed; a filmed one's base from its own tables, whatever the table).
 void fbar_from_table(const matc::CompiledMaterial& compiled, std::span<const double> ndotv,
@@ -207,15 +197,10 @@ void CompiledMaterial::fresnel(std::span<const double> mu, std::span<double> rgb
   check_unit_interval("mu", mu);
   check_rgb_size(rgb, mu.size());
   const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(evaluation_->basis);
-  if (value_->coat) {
-    write_rgb_per_cosine(mu, rgb, [&](double cosine) {
-      return coated_lobes(*value_, shader_basis, cosine).total();
-    });
-    return;
-  }
-  if (const auto& film = value_->film_table) {
-    write_rgb_per_cosine(mu, rgb,
-                         [&](double cosine) { return runtime::film_fresnel(*film, cosine); });
+  // A layered or filmed material per cosine; a bare one through the span form.
+  if (value_->coat || value_->film_table) {
+    write_rgb_per_cosine(
+        mu, rgb, [&](double cosine) { return shader_fresnel(*value_, shader_basis, cosine); });
     return;
   }
   runtime::evaluate_fresnel(value_->coefficients, shader_basis, mu, rgb);
@@ -251,7 +236,7 @@ CompiledMaterial::Lobes CompiledMaterial::coated_fresnel(std::span<const double>
   const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(evaluation_->basis);
   Lobes lobes{std::vector<double>(3 * mu.size()), std::vector<double>(mu.size())};
   for (std::size_t i = 0; i < mu.size(); ++i) {
-    const runtime::CoatedFresnel f = coated_lobes(*value_, shader_basis, mu[i]);
+    const runtime::CoatedFresnel f = shader_coated_fresnel(*value_, shader_basis, mu[i]);
     for (std::size_t c = 0; c < 3; ++c)
       lobes.base[3 * i + c] = f.base[c];
     lobes.coat[i] = f.coat;

@@ -219,10 +219,8 @@ void bake_coated_film(const Material& material, const ReflectanceCurve& in_air,
   CompiledCoat& coat = *compiled.coat;
   const runtime::ShaderBasis& shader_basis = runtime::shipped_shader_basis(compiled.basis);
   const LayeredCurve exact(in_air, under_grid, input.weight, input.ior, input.color);
-  coat.layered_error = measure_on_accuracy_grid(exact, [&](double mu) {
-    return runtime::evaluate_film_coated_fresnel(table, coat.coefficients, shader_basis, mu)
-        .total();
-  });
+  coat.layered_error = measure_on_accuracy_grid(
+      exact, [&](double mu) { return shader_fresnel(compiled, shader_basis, mu); });
   coat.layered_accuracy.decomposition = coat.layered_error;
 }
 
@@ -286,6 +284,20 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
 
 const ErrorStats& shader_fresnel_error(const CompiledMaterial& compiled) {
   return compiled.film_table ? compiled.film_table_error : compiled.accuracy.decomposition;
+}
+
+runtime::CoatedFresnel shader_coated_fresnel(const CompiledMaterial& compiled,
+                                             const runtime::ShaderBasis& basis, double mu) {
+  const runtime::CoatCoefficients& coat = compiled.coat.value().coefficients;
+  return compiled.film_table
+             ? runtime::evaluate_film_coated_fresnel(*compiled.film_table, coat, basis, mu)
+             : runtime::evaluate_coated_fresnel(compiled.coefficients, coat, basis, mu);
+}
+
+Rgb shader_fresnel(const CompiledMaterial& compiled, const runtime::ShaderBasis& basis, double mu) {
+  if (compiled.coat) return shader_coated_fresnel(compiled, basis, mu).total();
+  if (compiled.film_table) return runtime::film_fresnel(*compiled.film_table, mu);
+  return runtime::evaluate_fresnel(compiled.coefficients, basis, mu);
 }
 
 }  // namespace matc

@@ -80,6 +80,14 @@ bool has_visible_film(const Material& material);
 // table's, or else the decomposition's.
 const ErrorStats& shader_fresnel_error(const CompiledMaterial& compiled);
 
+// A coated material's two lobes at mu = dot(V, H) as its shaders compute them: the base from the
+// metal's coefficients, or from its film's table where a film lies under the coat.
+runtime::CoatedFresnel shader_coated_fresnel(const CompiledMaterial& compiled,
+                                             const runtime::ShaderBasis& basis, double mu);
+// F at mu as the material's shaders compute it: its coefficients, a filmed metal's table, or a
+// coated material's two lobes summed.
+Rgb shader_fresnel(const CompiledMaterial& compiled, const runtime::ShaderBasis& basis, double mu);
+
 // The space a material's RGB values are in: its own color_space, or else the working space.
 ColorSpace input_color_space(const Material& material, ColorSpace working_space);
 

@@ -62,6 +62,21 @@ std::string layered_snippet(ShaderLanguage language, std::string_view kind,
   return fill_template_text(text, values, path);
 }
 
+// What both layered snippets fill in about the coat (the shared coat_lobe_* parts' values, the
+// under-coat fit and both lobes' error against the exact layered curve).
+void add_coat_values(const CompiledCoat& coat, TemplateValues& values) {
+  const runtime::CoatCoefficients& c = coat.coefficients;
+  values["under_red"] = float_list(c.under_coat[0]);
+  values["under_green"] = float_list(c.under_coat[1]);
+  values["under_blue"] = float_list(c.under_coat[2]);
+  values["coat"] = float_list(c.coat);
+  values["coat_weight"] = float_literal(c.weight);
+  values["coat_roughness"] = float_literal(c.roughness);
+  values["coat_ior"] = fmt::format("{}", c.ior);
+  values["coat_max_error"] = fmt::format("{:.4f}", coat.coat_max_error);
+  values["layered_max_error"] = fmt::format("{:.4f}", worst_channel(coat.layered_error.max_abs));
+}
+
 // A coated material's snippet (templates/<language>/material_coated.*): the metal in air, the
 // metal under the coat and the coat's own coefficients, and the layering (docs/coating.md).
 std::string coated_snippet_source(ShaderLanguage language, const CompiledMaterial& compiled,
@@ -74,13 +89,7 @@ std::string coated_snippet_source(ShaderLanguage language, const CompiledMateria
   std::array<double, 3> log2_color{};
   for (std::size_t i = 0; i < 3; ++i)
     log2_color[i] = c.color[i] >= 1.0 ? 0.0 : std::log2(std::max(c.color[i], 1e-30));
-  values["under_red"] = float_list(c.under_coat[0]);
-  values["under_green"] = float_list(c.under_coat[1]);
-  values["under_blue"] = float_list(c.under_coat[2]);
-  values["coat"] = float_list(c.coat);
-  values["coat_weight"] = float_literal(c.weight);
-  values["coat_roughness"] = float_literal(c.roughness);
-  values["coat_ior"] = fmt::format("{}", c.ior);
+  add_coat_values(coat, values);
   const bool clear = log2_color == std::array<double, 3>{};
   const std::string tint_vector = language == ShaderLanguage::hlsl   ? "float3"
                                   : language == ShaderLanguage::wgsl ? "vec3f"
@@ -104,10 +113,8 @@ std::string coated_snippet_source(ShaderLanguage language, const CompiledMateria
                                          "{}(matc_combine(in_air, values), through, "
                                          "matc_coat_weight_{})",
                                          language == ShaderLanguage::hlsl ? "lerp" : "mix", name);
-  values["layered_max_error"] = fmt::format("{:.4f}", worst_channel(coat.layered_error.max_abs));
   values["under_coat_max_error"] =
       fmt::format("{:.4f}", worst_channel(coat.under_coat_error.max_abs));
-  values["coat_max_error"] = fmt::format("{:.4f}", coat.coat_max_error);
   return layered_snippet(language, "material_coated", values);
 }
 
@@ -126,16 +133,7 @@ std::string film_snippet_source(ShaderLanguage language, const CompiledMaterial&
   values["fit_max_error"] =
       fmt::format("{:.4f}", worst_channel(compiled.accuracy.decomposition.max_abs));
   if (!compiled.coat) return fill_template(template_path(language, "material_film"), values);
-  const CompiledCoat& coat = *compiled.coat;
-  values["under_red"] = float_list(coat.coefficients.under_coat[0]);
-  values["under_green"] = float_list(coat.coefficients.under_coat[1]);
-  values["under_blue"] = float_list(coat.coefficients.under_coat[2]);
-  values["coat"] = float_list(coat.coefficients.coat);
-  values["coat_weight"] = float_literal(coat.coefficients.weight);
-  values["coat_roughness"] = float_literal(coat.coefficients.roughness);
-  values["coat_ior"] = fmt::format("{}", coat.coefficients.ior);
-  values["coat_max_error"] = fmt::format("{:.4f}", coat.coat_max_error);
-  values["layered_max_error"] = fmt::format("{:.4f}", worst_channel(coat.layered_error.max_abs));
+  add_coat_values(*compiled.coat, values);
   return layered_snippet(language, "material_film_coated", values);
 }
 

@@ -29,17 +29,7 @@ MaterialCurves sample_material_curves(const CompiledMaterial& compiled,
   const Rgb& f0 = compiled.coat ? compiled.coat->layered_f0 : compiled.f0;
   const Rgb& f82_value = compiled.coat ? compiled.coat->layered_f82 : compiled.f82;
   // What the shaders compute: a filmed metal's F from its table (under a coat, the base lobe's).
-  const auto ours = [&](double mu) {
-    const auto& film = compiled.film_table;
-    if (!compiled.coat) {
-      return film ? runtime::film_fresnel(*film, mu)
-                  : runtime::evaluate_fresnel(compiled.coefficients, shader_basis, mu);
-    }
-    const runtime::CoatCoefficients& coat = compiled.coat->coefficients;
-    return (film ? runtime::evaluate_film_coated_fresnel(*film, coat, shader_basis, mu)
-                 : runtime::evaluate_coated_fresnel(compiled.coefficients, coat, shader_basis, mu))
-        .total();
-  };
+  const auto ours = [&](double mu) { return shader_fresnel(compiled, shader_basis, mu); };
   MaterialCurves curves;
   for (std::size_t i = 0; i < kReportAngles; ++i) {
     const double theta = 90.0 * static_cast<double>(i) / static_cast<double>(kReportAngles - 1);
