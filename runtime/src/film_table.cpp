@@ -61,9 +61,14 @@ std::vector<float> film_table_texels(const FilmTable& table) {
   return texels;
 }
 
-Rgb film_fresnel(const FilmTable& table, double mu) {
+FilmNodePosition film_cosine_position(double mu) {
   const auto [left, weight] =
       texel_axis_position(film_cosine_coordinate(mu), FilmTable::kCosineNodes);
+  return {left, weight};
+}
+
+Rgb film_fresnel(const FilmTable& table, double mu) {
+  const auto [left, weight] = film_cosine_position(mu);
   const Rgb& a = table.fresnel[left];
   const Rgb& b = table.fresnel[left + 1];
   return {a[0] + weight * (b[0] - a[0]), a[1] + weight * (b[1] - a[1]),
@@ -74,6 +79,65 @@ Rgb film_preintegrated(const FilmTable& table, double ndotv, double roughness) {
   return sample_bilinear<3>(PreintegratedRows{table.preintegrated}, FilmTable::kViewNodes,
                             FilmTable::kRoughnessNodes, film_cosine_coordinate(ndotv),
                             film_roughness_coordinate(roughness));
+}
+
+namespace {
+
+Rgb mix(const Rgb& a, const Rgb& b, double weight) {
+  return {a[0] + weight * (b[0] - a[0]), a[1] + weight * (b[1] - a[1]),
+          a[2] + weight * (b[2] - a[2])};
+}
+
+// The two slices either side of thickness coordinate t, and the weight of the upper one.
+template <typename Read>
+Rgb between_slices(const FilmStack& stack, double thickness, const Read& read) {
+  if (stack.slices.size() == 1) return read(stack.slices.front());
+  const auto [lower, weight] = texel_axis_position(thickness, stack.slices.size());
+  return mix(read(stack.slices[lower]), read(stack.slices[lower + 1]), weight);
+}
+
+}  // namespace
+
+std::size_t film_stack_height(const FilmStack& stack) {
+  return FilmTable::kHeight * stack.slices.size();
+}
+
+std::vector<float> film_stack_texels(const FilmStack& stack) {
+  std::vector<float> texels;
+  texels.reserve(FilmTable::kWidth * film_stack_height(stack) * 4);
+  const auto append = [&texels](const Rgb& value) {
+    texels.insert(texels.end(), {static_cast<float>(value[0]), static_cast<float>(value[1]),
+                                 static_cast<float>(value[2]), 1.0f});
+  };
+  for (const FilmTable& slice : stack.slices) {
+    for (const Rgb& node : slice.fresnel)
+      append(node);
+  }
+  for (std::size_t j = 0; j < FilmTable::kRoughnessNodes; ++j) {
+    for (const FilmTable& slice : stack.slices) {
+      for (std::size_t i = 0; i < FilmTable::kViewNodes; ++i)
+        append(slice.preintegrated[j * FilmTable::kViewNodes + i]);
+    }
+  }
+  return texels;
+}
+
+double film_stack_thickness(const FilmStack& stack, std::size_t s) {
+  if (stack.slices.size() < 2) return stack.maximum_nm;
+  const double t = static_cast<double>(s) / static_cast<double>(stack.slices.size() - 1);
+  return stack.minimum_nm + t * (stack.maximum_nm - stack.minimum_nm);
+}
+
+Rgb film_stack_fresnel(const FilmStack& stack, double mu, double thickness) {
+  return between_slices(stack, thickness,
+                        [mu](const FilmTable& slice) { return film_fresnel(slice, mu); });
+}
+
+Rgb film_stack_preintegrated(const FilmStack& stack, double ndotv, double roughness,
+                             double thickness) {
+  return between_slices(stack, thickness, [ndotv, roughness](const FilmTable& slice) {
+    return film_preintegrated(slice, ndotv, roughness);
+  });
 }
 
 }  // namespace matc::runtime

@@ -81,6 +81,29 @@ vec2 matc_film_preintegrated_texcoord(float NdotV, float roughness) {
 // must appear at its point of use, hence macros).
 #define MATC_FILM_FRESNEL(TABLE, MU) textureLod(TABLE, matc_film_fresnel_texcoord(MU), 0.0)
 #define MATC_FILM_PREINTEGRATED(TABLE, NDOTV, ROUGHNESS) textureLod(TABLE, matc_film_preintegrated_texcoord((NDOTV), (ROUGHNESS)), 0.0)
+// A thickness per pixel (docs/thin-film.md "A thickness per pixel"): <name>.film.<ext> stacks the
+// tables of `slices` films uniform over the material's thickness range, 65 x 18 slices texels:
+// rows 0 to slices - 1 F, then for each roughness node j the slices rows of Fbar. `thickness` is
+// the coordinate in [0, 1] over the range (a thickness texture's green channel, as glTF's
+// iridescenceThicknessTexture); matc_film_thickness_<name> maps nanometres to it. A light is one
+// fetch, over (sqrt(mu), thickness); image light two, at the roughness nodes either side, mixed.
+vec2 matc_film_stack_fresnel_texcoord(float mu, float thickness, float slices) {
+  float s = clamp(thickness, 0.0, 1.0) * (slices - 1.0) + 0.5;
+  return vec2(sqrt(clamp(mu, 0.0, 1.0)) * (64.0 / 65.0) + 0.5 / 65.0, s / (18.0 * slices));
+}
+// xy and xz: the texcoords at the roughness nodes below and above; w: the weight of the one above.
+vec4 matc_film_stack_preintegrated_texcoords(float NdotV, float roughness, float thickness,
+                                             float slices) {
+  float x = sqrt(clamp(NdotV, 0.0, 1.0)) * (64.0 / 65.0) + 0.5 / 65.0;
+  float r = sqrt(clamp((roughness - 0.05) * (1.0 / 0.95), 0.0, 1.0)) * 16.0;
+  float j = min(floor(r), 15.0);
+  float s = clamp(thickness, 0.0, 1.0) * (slices - 1.0) + 0.5;
+  float height = 18.0 * slices;
+  return vec4(x, (slices * (1.0 + j) + s) / height, (slices * (2.0 + j) + s) / height, r - j);
+}
+#define MATC_FILM_STACK_FRESNEL(TABLE, MU, THICKNESS, SLICES) textureLod(TABLE, matc_film_stack_fresnel_texcoord((MU), (THICKNESS), (SLICES)), 0.0)
+// COORDS: matc_film_stack_preintegrated_texcoords(NdotV, roughness, thickness, slices).
+#define MATC_FILM_STACK_PREINTEGRATED(TABLE, COORDS) mix(textureLod(TABLE, (COORDS).xy, 0.0), textureLod(TABLE, (COORDS).xz, 0.0), (COORDS).w)
 {{coefficient_table}}
 {{area_lights}}
 {{analytic_lut}}

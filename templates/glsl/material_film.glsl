@@ -18,7 +18,7 @@ const MatcFresnelCoefficients matc_coefficients_{{name}} = MatcFresnelCoefficien
     vec4({{red}}),
     vec4({{green}}),
     vec4({{blue}}));
-
+{{film_stack}}
 // F for a direct light: the film table's texel at matc_film_fresnel_texcoord(mu) (mu = dot(V, H);
 // MATC_FILM_FRESNEL fetches it).
 vec3 matc_fresnel_{{name}}(vec4 film_texel) {

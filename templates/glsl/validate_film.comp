@@ -1,9 +1,10 @@
 #version 450
 // matc {{version}}: the compute kernel that checks filmed material {{name}} on a Vulkan device
-// against the CPU runtime. For each query (mu, NdotV, roughness, -) it writes F(mu) and the
-// preintegrated F at (NdotV, roughness), both from the film's table (binding 6) through the
-// table sampler, then a quad light of radiance 1 overhead (the shading frame: normal +z, view in
-// the xz-plane at NdotV) through matc_ltc.
+// against the CPU runtime. For each query (mu, NdotV, roughness, thickness) it writes F(mu) and
+// the preintegrated F at (NdotV, roughness), both from the film's table (binding 6) through the
+// table sampler (a thickness per pixel: at the thickness coordinate), then a quad light of
+// radiance 1 overhead (the shading frame: normal +z, view in the xz-plane at NdotV) through
+// matc_ltc.
 {{library}}
 {{material}}
 layout(local_size_x = 64) in;
@@ -16,8 +17,8 @@ layout(set = 0, binding = 6) uniform texture2D matc_film;
 void main() {
   uint i = gl_GlobalInvocationID.x;
   vec4 query = matc_queries[i];
-  vec4 direct = MATC_FILM_FRESNEL(sampler2D(matc_film, matc_lut_sampler), query.x);
-  vec4 image = MATC_FILM_PREINTEGRATED(sampler2D(matc_film, matc_lut_sampler), query.y, query.z);
+  vec4 direct = {{film_direct}};
+  vec4 image = {{film_image}};
   vec3 V = vec3(sqrt(max(1.0 - query.y * query.y, 0.0)), 0.0, query.y);
   vec4 ltc = textureLod(sampler2D(matc_ltc, matc_lut_sampler),
                         matc_ltc_texcoord(query.y, query.z), 0.0);

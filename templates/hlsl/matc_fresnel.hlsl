@@ -85,6 +85,37 @@ float4 matc_film_preintegrated(Texture2D<float4> table, SamplerState table_sampl
                                float roughness) {
   return table.SampleLevel(table_sampler, matc_film_preintegrated_texcoord(NdotV, roughness), 0.0);
 }
+// A thickness per pixel (docs/thin-film.md "A thickness per pixel"): <name>.film.<ext> stacks the
+// tables of `slices` films uniform over the material's thickness range, 65 x 18 slices texels:
+// rows 0 to slices - 1 F, then for each roughness node j the slices rows of Fbar. `thickness` is
+// the coordinate in [0, 1] over the range (a thickness texture's green channel, as glTF's
+// iridescenceThicknessTexture); matc_film_thickness_<name> maps nanometres to it. A light is one
+// fetch, over (sqrt(mu), thickness); image light two, at the roughness nodes either side, mixed.
+float2 matc_film_stack_fresnel_texcoord(float mu, float thickness, float slices) {
+  float s = saturate(thickness) * (slices - 1.0) + 0.5;
+  return float2(sqrt(saturate(mu)) * (64.0 / 65.0) + 0.5 / 65.0, s / (18.0 * slices));
+}
+// xy and xz: the texcoords at the roughness nodes below and above; w: the weight of the one above.
+float4 matc_film_stack_preintegrated_texcoords(float NdotV, float roughness, float thickness,
+                                               float slices) {
+  float x = sqrt(saturate(NdotV)) * (64.0 / 65.0) + 0.5 / 65.0;
+  float r = sqrt(saturate((roughness - 0.05) * (1.0 / 0.95))) * 16.0;
+  float j = min(floor(r), 15.0);
+  float s = saturate(thickness) * (slices - 1.0) + 0.5;
+  float height = 18.0 * slices;
+  return float4(x, (slices * (1.0 + j) + s) / height, (slices * (2.0 + j) + s) / height, r - j);
+}
+float4 matc_film_stack_fresnel(Texture2D<float4> table, SamplerState table_sampler, float mu,
+                               float thickness, float slices) {
+  return table.SampleLevel(table_sampler, matc_film_stack_fresnel_texcoord(mu, thickness, slices),
+                           0.0);
+}
+float4 matc_film_stack_preintegrated(Texture2D<float4> table, SamplerState table_sampler,
+                                     float NdotV, float roughness, float thickness, float slices) {
+  float4 c = matc_film_stack_preintegrated_texcoords(NdotV, roughness, thickness, slices);
+  return lerp(table.SampleLevel(table_sampler, c.xy, 0.0),
+              table.SampleLevel(table_sampler, c.xz, 0.0), c.w);
+}
 {{coefficient_table}}
 {{area_lights}}
 {{analytic_lut}}

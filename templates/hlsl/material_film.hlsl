@@ -18,7 +18,7 @@ static const MatcFresnelCoefficients matc_coefficients_{{name}} = {
     float4({{red}}),
     float4({{green}}),
     float4({{blue}})};
-
+{{film_stack}}
 // F for a direct light: the film table's texel at matc_film_fresnel_texcoord(mu) (mu = dot(V, H);
 // matc_film_fresnel fetches it).
 float3 matc_fresnel_{{name}}(float4 film_texel) {

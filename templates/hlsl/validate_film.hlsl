@@ -1,8 +1,9 @@
 // matc {{version}}: the compute kernel that checks filmed material {{name}} on a Vulkan device
-// against the CPU runtime. For each query (mu, NdotV, roughness, -) it writes F(mu) and the
-// preintegrated F at (NdotV, roughness), both from the film's table (binding 6) through the
-// table sampler, then a quad light of radiance 1 overhead (the shading frame: normal +z, view in
-// the xz-plane at NdotV) through matc_ltc.
+// against the CPU runtime. For each query (mu, NdotV, roughness, thickness) it writes F(mu) and
+// the preintegrated F at (NdotV, roughness), both from the film's table (binding 6) through the
+// table sampler (a thickness per pixel: at the thickness coordinate), then a quad light of
+// radiance 1 overhead (the shading frame: normal +z, view in the xz-plane at NdotV) through
+// matc_ltc.
 {{library}}
 {{material}}
 [[vk::binding(0, 0)]] StructuredBuffer<float4> matc_queries : register(t0);
@@ -15,8 +16,8 @@
 void main(uint3 id : SV_DispatchThreadID) {
   uint i = id.x;
   float4 query = matc_queries[i];
-  float4 direct = matc_film_fresnel(matc_film, matc_lut_sampler, query.x);
-  float4 image = matc_film_preintegrated(matc_film, matc_lut_sampler, query.y, query.z);
+  float4 direct = {{film_direct}};
+  float4 image = {{film_image}};
   float3 V = float3(sqrt(max(1.0 - query.y * query.y, 0.0)), 0.0, query.y);
   float4 ltc = matc_ltc.SampleLevel(matc_lut_sampler, matc_ltc_texcoord(query.y, query.z), 0.0);
   matc_results[3 * i] = float4(matc_fresnel_{{name}}(direct), 1.0);

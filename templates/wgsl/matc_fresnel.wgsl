@@ -86,6 +86,37 @@ fn matc_film_preintegrated(table: texture_2d<f32>, table_sampler: sampler, NdotV
   return textureSampleLevel(table, table_sampler, matc_film_preintegrated_texcoord(NdotV, roughness),
                             0.0);
 }
+// A thickness per pixel (docs/thin-film.md "A thickness per pixel"): <name>.film.<ext> stacks the
+// tables of `slices` films uniform over the material's thickness range, 65 x 18 slices texels:
+// rows 0 to slices - 1 F, then for each roughness node j the slices rows of Fbar. `thickness` is
+// the coordinate in [0, 1] over the range (a thickness texture's green channel, as glTF's
+// iridescenceThicknessTexture); matc_film_thickness_<name> maps nanometres to it. A light is one
+// fetch, over (sqrt(mu), thickness); image light two, at the roughness nodes either side, mixed.
+fn matc_film_stack_fresnel_texcoord(mu: f32, thickness: f32, slices: f32) -> vec2f {
+  let s = clamp(thickness, 0.0, 1.0) * (slices - 1.0) + 0.5;
+  return vec2f(sqrt(clamp(mu, 0.0, 1.0)) * (64.0 / 65.0) + 0.5 / 65.0, s / (18.0 * slices));
+}
+// xy and xz: the texcoords at the roughness nodes below and above; w: the weight of the one above.
+fn matc_film_stack_preintegrated_texcoords(NdotV: f32, roughness: f32, thickness: f32,
+                                           slices: f32) -> vec4f {
+  let x = sqrt(clamp(NdotV, 0.0, 1.0)) * (64.0 / 65.0) + 0.5 / 65.0;
+  let r = sqrt(clamp((roughness - 0.05) * (1.0 / 0.95), 0.0, 1.0)) * 16.0;
+  let j = min(floor(r), 15.0);
+  let s = clamp(thickness, 0.0, 1.0) * (slices - 1.0) + 0.5;
+  let height = 18.0 * slices;
+  return vec4f(x, (slices * (1.0 + j) + s) / height, (slices * (2.0 + j) + s) / height, r - j);
+}
+fn matc_film_stack_fresnel(table: texture_2d<f32>, table_sampler: sampler, mu: f32,
+                           thickness: f32, slices: f32) -> vec4f {
+  return textureSampleLevel(table, table_sampler,
+                            matc_film_stack_fresnel_texcoord(mu, thickness, slices), 0.0);
+}
+fn matc_film_stack_preintegrated(table: texture_2d<f32>, table_sampler: sampler, NdotV: f32,
+                                 roughness: f32, thickness: f32, slices: f32) -> vec4f {
+  let c = matc_film_stack_preintegrated_texcoords(NdotV, roughness, thickness, slices);
+  return mix(textureSampleLevel(table, table_sampler, c.xy, 0.0),
+             textureSampleLevel(table, table_sampler, c.xz, 0.0), c.w);
+}
 {{coefficient_table}}
 {{area_lights}}
 {{analytic_lut}}

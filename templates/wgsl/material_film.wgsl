@@ -15,7 +15,7 @@ const matc_coefficients_{{name}} = MatcFresnelCoefficients(
     vec4f({{red}}),
     vec4f({{green}}),
     vec4f({{blue}}));
-
+{{film_stack}}
 // F for a direct light: the film table's texel at matc_film_fresnel_texcoord(mu) (mu = dot(V, H);
 // matc_film_fresnel fetches it).
 fn matc_fresnel_{{name}}(film_texel: vec4f) -> vec3f {

@@ -224,6 +224,27 @@ void bake_coated_film(const Material& material, const ReflectanceCurve& in_air,
   coat.layered_accuracy.decomposition = coat.layered_error;
 }
 
+// A thickness per pixel: the stack over the film's range, each slice the material with that
+// thickness (gamut-mapped as the material is); its last slice, the film at the maximum (`curve`),
+// is the film_table the rest of matc reads, measured as a fixed film's is.
+void bake_film_stack_of(const Material& material, const ColorOptions& color,
+                        const ReflectanceCurve& curve, CompiledMaterial& compiled) {
+  const auto film_at = [&](double nm) {
+    Material slice = material;
+    slice.film->thickness_nm = nm;
+    slice.film->thickness_minimum_nm.reset();
+    return make_reflectance_curve(slice, color);
+  };
+  BakedFilmStack baked =
+      bake_film_stack(film_at, *material.film->thickness_minimum_nm, material.film->thickness_nm);
+  compiled.film_stack = std::move(baked.stack);
+  compiled.film_stack_error = baked.thickness_error;
+  compiled.film_table = compiled.film_stack->slices.back();
+  const runtime::FilmTable& table = *compiled.film_table;
+  compiled.film_table_error = measure_on_accuracy_grid(
+      curve, [&table](double mu) { return runtime::film_fresnel(table, mu); });
+}
+
 }  // namespace
 
 static_assert((kAccuracySamples - 1) % (kMinimaxCosines - 1) == 0,
@@ -273,6 +294,8 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
     const AccuracyGridCurve under_grid(*under);
     compiled.coat = compile_coat(material, compiled.coefficients, curve, under_grid, basis);
     if (has_visible_film(material)) bake_coated_film(material, curve, under_grid, compiled);
+  } else if (has_visible_film(material) && material.film->thickness_minimum_nm) {
+    bake_film_stack_of(material, color, curve, compiled);
   } else if (has_visible_film(material)) {
     compiled.film_table = bake_film_table(curve);
     const runtime::FilmTable& table = *compiled.film_table;
@@ -307,7 +330,19 @@ namespace matc {
 void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics) {
   // A coated material is judged whole (docs/coating.md): under a full coat its bare curve, which
   // a high-reflectivity, low-edge-tint metal makes hard to fit, is never seen.
-  // A filmed metal's shaders read its table, which holds the film within 0.003 (FilmTables.*).
+  // A filmed metal's shaders read its table, which holds the film within 0.003 (FilmTables.*);
+  // with a thickness per pixel, the stack may hold the thickness axis less closely.
+  if (compiled.film_stack && compiled.film_stack_error > kPoorFilmStackError) {
+    diagnostics.warning(
+        compiled.material.name_location, "film",
+        fmt::format("thickness range {}-{} nm: its {} slices hold F within {:.3f} between them "
+                    "(the target is {}: a wide range of a high-index film needs more than {} "
+                    "slices)",
+                    compiled.film_stack->minimum_nm, compiled.film_stack->maximum_nm,
+                    compiled.film_stack->slices.size(), compiled.film_stack_error,
+                    kPoorFilmStackError, kMaxFilmStackSlices),
+        "narrow the thickness range to the one the texture uses (docs/thin-film.md)");
+  }
   if (compiled.film_table) return;
   const FitAccuracy& accuracy = compiled.coat ? compiled.coat->layered_accuracy : compiled.accuracy;
   const auto worst = [](const ErrorStats& stats) {

@@ -71,6 +71,11 @@ struct CompiledMaterial {
   // compensation) and the glTF extension's. Absent without a visible film.
   std::optional<runtime::FilmTable> film_table;
   ErrorStats film_table_error;  // the table's F against the exact curve, on the accuracy grid
+  // A thickness per pixel (the film's thickness a range): the tables over the range, what its
+  // shaders sample (<name>.film.<ext>); film_table is then its last slice, the film at the
+  // range's maximum, for whatever reads the material without a thickness texture.
+  std::optional<runtime::FilmStack> film_stack;
+  double film_stack_error = 0.0;  // BakedFilmStack::thickness_error
 };
 
 // Whether a material's film shows: a film of 0 nm, of no coverage or of index 1 is the bare metal.
@@ -114,8 +119,13 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
 // 8x with the default; docs/accuracy.md) a fit is called poor.
 inline constexpr double kPoorFitMaxError = 0.05;
 
+// Above this midpoint error a thickness per pixel's stack (BakedFilmStack::thickness_error) is
+// called poor: the target for F, 0.01.
+inline constexpr double kPoorFilmStackError = 0.01;
+
 // A warning, at the material's name, when the decomposition misses the exact curve by more than
-// kPoorFitMaxError: the measured error, Schlick's and F82-tint's beside it, and what to try.
+// kPoorFitMaxError: the measured error, Schlick's and F82-tint's beside it, and what to try; or
+// when a thickness per pixel's stack misses its films by more than kPoorFilmStackError.
 void warn_if_poor_fit(const CompiledMaterial& compiled, Diagnostics& diagnostics);
 
 // A note, at the material's name, when its curve leaves [0, 1] in the working space: the extent,

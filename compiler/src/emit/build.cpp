@@ -181,9 +181,13 @@ MaterialOutputs Build::material_outputs(const CompiledMaterial& compiled) const 
   }
   // A filmed metal's own table goes with the tables, in their format and precision.
   if (compiled.film_table && emit.contains(OutputKind::lut)) {
+    // A thickness per pixel: the stack, whose last slice is film_table.
     out.files.push_back({film_table_file_name(name, options_.lut_format),
-                         encode_film_table(*compiled.film_table, options_.lut_format,
-                                           options_.lut_precision, name)});
+                         compiled.film_stack
+                             ? encode_film_table(*compiled.film_stack, options_.lut_format,
+                                                 options_.lut_precision, name)
+                             : encode_film_table(*compiled.film_table, options_.lut_format,
+                                                 options_.lut_precision, name)});
   }
   return out;
 }

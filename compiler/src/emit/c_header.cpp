@@ -36,7 +36,10 @@ std::string coat_block(const CompiledMaterial& compiled) {
 // coefficients; nothing for a metal without a film.
 std::string film_block(const CompiledMaterial& compiled, LutPrecision precision) {
   if (!compiled.film_table) return "";
-  const std::vector<float> texels = stored_film_texels(*compiled.film_table, precision);
+  const std::vector<float> texels = compiled.film_stack
+                                        ? stored_film_texels(*compiled.film_stack, precision)
+                                        : stored_film_texels(*compiled.film_table, precision);
+  const std::size_t height = texels.size() / (4 * runtime::FilmTable::kWidth);
   std::string rows;
   for (std::size_t i = 0; i < texels.size(); ++i) {
     rows.append(i % 8 == 0 ? "    " : " ");
@@ -47,13 +50,20 @@ std::string film_block(const CompiledMaterial& compiled, LutPrecision precision)
       "\n\n/* Under a thin film (docs/thin-film.md): F and Fbar come from the film's own table, "
       "the texels\n * of {0}.film.<ext> ({1} x {2} RGBA, row after row; upload it as that "
       "texture). The\n * coefficients above are the 4-term fit's, for F0.{5} */\n"
-      "#define MATC_{0}_FILM_TABLE_WIDTH {1}\n#define MATC_{0}_FILM_TABLE_HEIGHT {2}\n"
+      "#define MATC_{0}_FILM_TABLE_WIDTH {1}\n#define MATC_{0}_FILM_TABLE_HEIGHT {2}\n{6}"
       "static const float matc_film_table_{0}[{3}] = {{\n{4}}};",
-      compiled.material.name, runtime::FilmTable::kWidth, runtime::FilmTable::kHeight,
-      texels.size(), rows,
+      compiled.material.name, runtime::FilmTable::kWidth, height, texels.size(), rows,
       compiled.coat ? " Under the coat the table holds\n * the base lobe, the coat's "
                       "transmission and tint included: the coat lobe is the coat's own."
-                    : "");
+      : compiled.film_stack
+          ? fmt::format(" A thickness per pixel: {} slices of films from\n * {} to {} nm "
+                        "(docs/thin-film.md).",
+                        compiled.film_stack->slices.size(), compiled.film_stack->minimum_nm,
+                        compiled.film_stack->maximum_nm)
+          : "",
+      compiled.film_stack ? fmt::format("#define MATC_{}_FILM_SLICES {}\n", compiled.material.name,
+                                        compiled.film_stack->slices.size())
+                          : "");
 }
 
 }  // namespace

@@ -33,9 +33,12 @@ ordered_json input_json(const Material& material) {
   }
   ordered_json out = {{std::string(model_key(material.model)), input}};
   if (material.film) {
-    out["film"] = {{"weight", material.film->weight},
-                   {"ior", material.film->ior},
-                   {"thickness", material.film->thickness_nm}};
+    const FilmInput& film = *material.film;
+    out["film"] = {{"weight", film.weight}, {"ior", film.ior}, {"thickness", film.thickness_nm}};
+    if (film.thickness_minimum_nm) {
+      out["film"]["thickness"] = {{"minimum", *film.thickness_minimum_nm},
+                                  {"maximum", film.thickness_nm}};
+    }
   }
   return out;
 }
@@ -165,6 +168,22 @@ ordered_json compiled_material_json(const CompiledMaterial& compiled,
   if (compiled.film_table) {
     out["accuracy"]["film_table"] = error_stats_json(compiled.film_table_error);
     out["film_table"] = film_table_json(*compiled.film_table);
+  }
+  if (compiled.film_stack) {
+    const runtime::FilmStack& stack = *compiled.film_stack;
+    out["accuracy"]["film_stack_thickness"] = compiled.film_stack_error;
+    out["film_stack"] = {
+        {"layout",
+         fmt::format(
+             "a thickness per pixel: {0} x {1} texels, {2} slices of films uniform over the "
+             "range; rows 0 to {3}: F of each slice; row {2} + {2} j + s: Fbar of slice s "
+             "at roughness node j (docs/thin-film.md); film_table is the last slice, the "
+             "film at the maximum",
+             runtime::FilmTable::kWidth, runtime::film_stack_height(stack), stack.slices.size(),
+             stack.slices.size() - 1)},
+        {"slices", stack.slices.size()},
+        {"size", {runtime::FilmTable::kWidth, runtime::film_stack_height(stack)}},
+        {"thickness_nm", {stack.minimum_nm, stack.maximum_nm}}};
   }
   return out;
 }

@@ -130,9 +130,27 @@ std::string film_snippet_source(ShaderLanguage language, const CompiledMaterial&
   values["film_ior"] = fmt::format("{}", film.ior);
   values["film_thickness"] = fmt::format("{}", film.thickness_nm);
   values["film_weight"] = fmt::format("{}", film.weight);
+  if (compiled.film_stack) {
+    // A thickness per pixel: the stack's slice count and range, and nanometres to its coordinate.
+    const runtime::FilmStack& stack = *compiled.film_stack;
+    TemplateValues stack_values{
+        {"name", compiled.material.name},
+        {"film_slices", fmt::format("{}", stack.slices.size())},
+        {"film_minimum", fmt::format("{}", stack.minimum_nm)},
+        {"film_maximum", fmt::format("{}", stack.maximum_nm)},
+        {"film_minimum_float", float_literal(stack.minimum_nm)},
+        {"film_maximum_float", float_literal(stack.maximum_nm)},
+        {"film_stack_error", fmt::format("{:.4f}", compiled.film_stack_error)}};
+    values["film_thickness"] = fmt::format("{}-{}", stack.minimum_nm, stack.maximum_nm);
+    values["film_stack"] =
+        fill_template(template_path(language, "film_stack_constants"), stack_values);
+  }
   values["fit_max_error"] =
       fmt::format("{:.4f}", worst_channel(compiled.accuracy.decomposition.max_abs));
-  if (!compiled.coat) return fill_template(template_path(language, "material_film"), values);
+  if (!compiled.coat) {
+    values.try_emplace("film_stack", "");
+    return fill_template(template_path(language, "material_film"), values);
+  }
   add_coat_values(*compiled.coat, values);
   return layered_snippet(language, "material_film_coated", values);
 }

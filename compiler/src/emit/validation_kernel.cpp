@@ -22,6 +22,7 @@ SpirvWords vulkan_compute_module(ShaderLanguage language, std::string source,
 MaterialKernel material_kernel_of(const CompiledMaterial& compiled) {
   if (compiled.coat)
     return compiled.film_table ? MaterialKernel::film_coated : MaterialKernel::coated;
+  if (compiled.film_stack) return MaterialKernel::film_stack;
   return compiled.film_table ? MaterialKernel::filmed : MaterialKernel::bare;
 }
 
@@ -41,9 +42,39 @@ std::string validation_kernel_source(ShaderLanguage language, std::string_view l
   for (const runtime::Vec3& corner : kLayeredValidationQuad)
     quad += (quad.empty() ? "" : ", ") + vector_literal(language, corner);
   values["quad"] = quad;
-  // A filmed metal's kernel samples its own table, not the preintegrated one.
-  if (kind == MaterialKernel::filmed)
+  // A filmed metal's kernel samples its own table, not the preintegrated one; with a thickness
+  // per pixel, at the query's thickness coordinate (w).
+  if (kind == MaterialKernel::filmed || kind == MaterialKernel::film_stack) {
+    const std::string slices = fmt::format("matc_film_slices_{}", material_name);
+    const bool stack = kind == MaterialKernel::film_stack;
+    if (glsl) {
+      const std::string table = "sampler2D(matc_film, matc_lut_sampler)";
+      values["film_direct"] =
+          stack ? fmt::format("MATC_FILM_STACK_FRESNEL({}, query.x, query.w, {})", table, slices)
+                : fmt::format("MATC_FILM_FRESNEL({}, query.x)", table);
+      values["film_image"] =
+          stack ? fmt::format(
+                      "MATC_FILM_STACK_PREINTEGRATED({}, "
+                      "matc_film_stack_preintegrated_texcoords(query.y, query.z, query.w, "
+                      "{}))",
+                      table, slices)
+                : fmt::format("MATC_FILM_PREINTEGRATED({}, query.y, query.z)", table);
+    } else {
+      values["film_direct"] =
+          stack ? fmt::format(
+                      "matc_film_stack_fresnel(matc_film, matc_lut_sampler, query.x, "
+                      "query.w, {})",
+                      slices)
+                : "matc_film_fresnel(matc_film, matc_lut_sampler, query.x)";
+      values["film_image"] =
+          stack ? fmt::format(
+                      "matc_film_stack_preintegrated(matc_film, matc_lut_sampler, "
+                      "query.y, query.z, query.w, {})",
+                      slices)
+                : "matc_film_preintegrated(matc_film, matc_lut_sampler, query.y, query.z)";
+    }
     return fill_template(glsl ? "glsl/validate_film.comp" : "hlsl/validate_film.hlsl", values);
+  }
   if (kind == MaterialKernel::film_coated) {
     return fill_template(glsl ? "glsl/validate_film_coated.comp" : "hlsl/validate_film_coated.hlsl",
                          values);

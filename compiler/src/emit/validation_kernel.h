@@ -44,7 +44,8 @@ inline constexpr std::size_t kFilmCoatedValidationResultsPerQuery = 4;
 inline constexpr std::array<runtime::Vec3, 4> kLayeredValidationQuad = {
     {{-0.5, -1.0, 1.5}, {-2.0, -1.0, 0.5}, {-2.0, 1.0, 0.5}, {-0.5, 1.0, 1.5}}};
 // The kind of kernel a material's check runs.
-enum class MaterialKernel { bare, coated, filmed, film_coated };
+// film_stack: a thickness per pixel (the filmed kernel, each query's w the thickness coordinate).
+enum class MaterialKernel { bare, coated, filmed, film_stack, film_coated };
 MaterialKernel material_kernel_of(const CompiledMaterial& compiled);
 
 std::string validation_kernel_source(ShaderLanguage language, std::string_view library,

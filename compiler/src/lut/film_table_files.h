@@ -27,6 +27,13 @@ std::vector<float> stored_film_texels(const runtime::FilmTable& table, LutPrecis
 std::string encode_film_table(const runtime::FilmTable& table, LutFormat format,
                               LutPrecision precision, std::string_view material_name);
 
+// The same for a thickness per pixel: every slice stored so, and the stack's texture
+// (runtime::film_stack_texels).
+runtime::FilmStack stored_as(runtime::FilmStack stack, LutPrecision precision);
+std::vector<float> stored_film_texels(const runtime::FilmStack& stack, LutPrecision precision);
+std::string encode_film_table(const runtime::FilmStack& stack, LutFormat format,
+                              LutPrecision precision, std::string_view material_name);
+
 // "<name>.film.<ext>" (a material's name has no dot: it clashes with no other file).
 // What sits between a filmed metal's name and its table's extension (<name>.film.ktx2); the
 // generated build-system layouts declare it from here too (emit/output_layout.cpp).

@@ -75,6 +75,10 @@ struct FilmInput {
   double weight = 1.0;        // coverage in [0, 1]; a block that names a film means one
   double ior = 1.4;           // OpenPBR's thin_film_ior default, in [kMinFilmIor, kMaxFilmIor]
   double thickness_nm = 0.0;  // required, in [0, kMaxFilmThicknessNm]; 0 is the bare metal
+  // A thickness per pixel (a thickness texture): the range's minimum, below thickness_nm, which is
+  // then its maximum, and what a consumer without the texture takes (as glTF's
+  // iridescenceThicknessMaximum). Absent: one thickness.
+  std::optional<double> thickness_minimum_nm;
 };
 
 struct Material {

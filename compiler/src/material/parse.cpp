@@ -171,15 +171,66 @@ class MaterialReader : LocatedJsonReader {
     bool ok = true;
     read_block_number(*object, "/film", "weight", kUnitRange, film.weight, ok);
     read_block_number(*object, "/film", "ior", kFilmIorRange, film.ior, ok);
-    read_block_number(*object, "/film", "thickness", kFilmThicknessRange, film.thickness_nm, ok);
     if (!object->contains("thickness")) {
-      missing("/film", "thickness",
-              fmt::format("the film's thickness in nanometres, a number in {}",
-                          kFilmThicknessRange.describe()));
+      missing("/film", "thickness", thickness_rule());
+      ok = false;
+    } else if (!read_film_thickness((*object)["thickness"], film)) {
+      ok = false;
+    }
+    if (ok && film.thickness_minimum_nm && root.contains("coat")) {
+      error(
+          "/film/thickness", "is a range under a coat",
+          "one thickness under a coat (a thickness per pixel is compiled over a bare metal only)");
       ok = false;
     }
     if (!ok) return std::nullopt;
     return film;
+  }
+
+  static std::string thickness_rule() {
+    return fmt::format(
+        "the film's thickness in nanometres, a number in {0}, or for a thickness per pixel "
+        "{{\"minimum\": a, \"maximum\": b}} with a < b in {0}",
+        kFilmThicknessRange.describe());
+  }
+
+  // A number, or a range {minimum, maximum} for a thickness texture (docs/thin-film.md).
+  bool read_film_thickness(const json& value, FilmInput& film) {
+    const std::string pointer = "/film/thickness";
+    if (!value.is_object()) {
+      if (!value.is_number()) {
+        error(pointer, fmt::format("is {}", describe_type(value)), thickness_rule());
+        return false;
+      }
+      const auto nm = read_number(value, pointer, kFilmThicknessRange);
+      if (nm) film.thickness_nm = *nm;
+      return nm.has_value();
+    }
+    static constexpr std::array<std::string_view, 2> kRangeFields = {"minimum", "maximum"};
+    warn_unknown_fields(value, pointer, kRangeFields);
+    bool ok = true;
+    std::array<std::optional<double>, 2> ends;
+    for (std::size_t e = 0; e < 2; ++e) {
+      const std::string_view key = kRangeFields[e];
+      if (!value.contains(key)) {
+        missing(pointer, key,
+                fmt::format("the {} thickness of the texture's range in nanometres, a number in {}",
+                            key, kFilmThicknessRange.describe()));
+        ok = false;
+        continue;
+      }
+      ends[e] = read_number(value[std::string(key)], child(pointer, key), kFilmThicknessRange);
+      ok = ok && ends[e].has_value();
+    }
+    if (!ok) return false;
+    if (!(*ends[0] < *ends[1])) {
+      error(child(pointer, "minimum"), fmt::format("is not below the maximum ({} nm)", *ends[1]),
+            "a minimum below the maximum (one thickness is a number)");
+      return false;
+    }
+    film.thickness_minimum_nm = *ends[0];
+    film.thickness_nm = *ends[1];
+    return true;
   }
 
   // A pinned basis (material/basis_pin.h).

@@ -64,8 +64,10 @@ struct DeviceValidator::Device {
     if (tables.ltc) bindings.push_back(vulkan::Binding::sampled_image(5, ltc));
     std::optional<vulkan::Image> film;
     if (!tables.film.empty()) {
+      // 18 rows a slice: a thickness per pixel's stack is as tall as its slices make it.
+      const std::size_t height = tables.film.size() / (4 * runtime::FilmTable::kWidth);
       film.emplace(context, static_cast<std::uint32_t>(runtime::FilmTable::kWidth),
-                   static_cast<std::uint32_t>(runtime::FilmTable::kHeight), tables.film);
+                   static_cast<std::uint32_t>(height), tables.film);
       bindings.push_back(vulkan::Binding::sampled_image(6, *film));
     }
     const vulkan::ComputeKernel kernel(context, module, bindings);

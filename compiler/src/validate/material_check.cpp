@@ -1,5 +1,7 @@
 // The material check: one material's generated code (F, Fbar through the sampler, from the
 // embedded table, from the closed form) against the CPU runtime.
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "emit/validation_kernel.h"
@@ -27,6 +29,8 @@ class MaterialCheck final : public DeviceCheck {
       : build_(build), compiled_(compiled), tolerance_(tolerance), queries_(validation_queries()) {
     if (compiled.film_table)
       stored_film_ = stored_as(*compiled.film_table, build.options().lut_precision);
+    if (compiled.film_stack)
+      stored_stack_ = stored_as(*compiled.film_stack, build.options().lut_precision);
   }
 
   std::string subject() const override { return compiled_.material.name; }
@@ -40,8 +44,10 @@ class MaterialCheck final : public DeviceCheck {
   std::vector<float> packed_queries() const override {
     std::vector<float> packed;
     packed.reserve(queries_.size() * 4);
-    for (const ValidationQuery& q : queries_)
-      packed.insert(packed.end(), {q.mu, q.ndotv, q.roughness, 0.0f});
+    for (std::size_t i = 0; i < queries_.size(); ++i) {
+      const ValidationQuery& q = queries_[i];
+      packed.insert(packed.end(), {q.mu, q.ndotv, q.roughness, thickness_of(i)});
+    }
     return packed;
   }
 
@@ -50,6 +56,7 @@ class MaterialCheck final : public DeviceCheck {
       case MaterialKernel::coated:
         return kCoatedValidationResultsPerQuery;
       case MaterialKernel::filmed:
+      case MaterialKernel::film_stack:
         return kFilmValidationResultsPerQuery;
       case MaterialKernel::film_coated:
         return kFilmCoatedValidationResultsPerQuery;
@@ -63,7 +70,10 @@ class MaterialCheck final : public DeviceCheck {
   // filmed one's samples its own table and lights it so too.
   KernelTables tables() const override {
     KernelTables tables{false, compiled_.coat.has_value() || stored_film_.has_value(), {}};
-    if (stored_film_) tables.film = runtime::film_table_texels(*stored_film_);
+    if (stored_stack_)
+      tables.film = runtime::film_stack_texels(*stored_stack_);
+    else if (stored_film_)
+      tables.film = runtime::film_table_texels(*stored_film_);
     return tables;
   }
 
@@ -77,6 +87,7 @@ class MaterialCheck final : public DeviceCheck {
     if (compiled_.coat && stored_film_)
       return compare_film_coated(results, *stored_film_, shader_basis, table);
     if (compiled_.coat) return compare_coated(results, shader_basis, table, embedded, analytic);
+    if (stored_stack_) return compare_filmed(results, *stored_stack_);
     if (stored_film_) return compare_filmed(results, *stored_film_);
     const runtime::Coefficients& c = compiled_.coefficients;
     CheckedQuantity fresnel{"F", tolerance_.fresnel};
@@ -104,6 +115,13 @@ class MaterialCheck final : public DeviceCheck {
 
   std::string describe_query(std::size_t index, std::string_view label) const override {
     const ValidationQuery& q = queries_[index];
+    if (stored_stack_) {
+      // A thickness per pixel: where along the thickness too.
+      const std::string at =
+          label == "F" ? fmt::format("mu {:.4f}", q.mu)
+                       : fmt::format("NdotV {:.4f}, roughness {:.4f}", q.ndotv, q.roughness);
+      return fmt::format("{}, thickness {:.4f}", at, thickness_of(index));
+    }
     if (label == "F" || label == "coat F") return fmt::format("mu {:.4f}", q.mu);
     if (label == "F(metal-rough)") {
       return fmt::format("mu {:.4f}, NdotV {:.4f}, metalness {:.4f}", q.mu, q.ndotv, q.roughness);
@@ -117,6 +135,37 @@ class MaterialCheck final : public DeviceCheck {
   }
 
  private:
+  // A thickness per pixel's coordinate for query i (0 for other kernels, which ignore it): the
+  // golden-ratio sequence, spread over [0, 1] whatever the count, its first at the minimum.
+  float thickness_of(std::size_t i) const {
+    if (!stored_stack_) return 0.0f;
+    const double t = 0.6180339887498949 * static_cast<double>(i);
+    return static_cast<float>(t - std::floor(t));
+  }
+
+  // A thickness per pixel's F and Fbar, from its stack as the file stores it, through the sampler
+  // at each query's thickness coordinate, and kLayeredValidationQuad's light.
+  std::vector<CheckedQuantity> compare_filmed(std::span<const float> results,
+                                              const runtime::FilmStack& stack) const {
+    CheckedQuantity fresnel{"F", tolerance_.preintegrated};
+    CheckedQuantity preintegrated{"Fbar", tolerance_.preintegrated};
+    CheckedQuantity quad_light{"L", tolerance_.preintegrated};
+    for (std::size_t i = 0; i < queries_.size(); ++i) {
+      const ValidationQuery& q = queries_[i];
+      const double t = thickness_of(i);
+      const float* result = &results[i * kFilmValidationResultsPerQuery * 4];
+      record_largest(fresnel, runtime::film_stack_fresnel(stack, q.mu, t), result, i);
+      record_largest(preintegrated,
+                     runtime::film_stack_preintegrated(stack, q.ndotv, q.roughness, t), result + 4,
+                     i);
+      record_largest(quad_light,
+                     runtime::film_polygon_light_ltc(stack, runtime::shipped_ltc_table(), q.ndotv,
+                                                     q.roughness, t, kLayeredValidationQuad),
+                     result + 8, i);
+    }
+    return {fresnel, preintegrated, quad_light};
+  }
+
   // A filmed material's F and Fbar, from its table as the file stores it, through the sampler,
   // and kLayeredValidationQuad's light (runtime/ltc.h's film_polygon_light_ltc).
   std::vector<CheckedQuantity> compare_filmed(std::span<const float> results,
@@ -260,7 +309,8 @@ class MaterialCheck final : public DeviceCheck {
   const CompiledMaterial& compiled_;
   ValidationTolerance tolerance_;
   std::vector<ValidationQuery> queries_;
-  std::optional<runtime::FilmTable> stored_film_;  // a filmed metal's table as its file holds it
+  std::optional<runtime::FilmTable> stored_film_;   // a filmed metal's table as its file holds it
+  std::optional<runtime::FilmStack> stored_stack_;  // a thickness per pixel's, as its file holds it
 };
 
 }  // namespace

@@ -33,6 +33,14 @@ struct FilmTable {
   std::vector<Rgb> preintegrated;
 };
 
+// Where a direct light's split sum reads the F row: the left node and the weight of the next, as
+// film_fresnel interpolates them (a split sum of the table is linear in its nodes).
+struct FilmNodePosition {
+  std::size_t left = 0;
+  double weight = 0.0;
+};
+FilmNodePosition film_cosine_position(double mu);
+
 // The nodes: mu = (i / 64)^2, NdotV = (i / 64)^2, roughness = 0.05 + 0.95 (j / 16)^2.
 double film_table_cosine(std::size_t i);
 double film_table_view_cosine(std::size_t i);
@@ -51,5 +59,34 @@ Rgb film_fresnel(const FilmTable& table, double mu);
 // Fbar for image light at (NdotV, roughness), as matc_fresnel_preintegrated_<name>.
 // Requires preintegrated.size() == kViewNodes * kRoughnessNodes.
 Rgb film_preintegrated(const FilmTable& table, double ndotv, double roughness);
+
+// A film whose thickness varies per pixel (a thickness texture, glTF's
+// iridescenceThicknessTexture; docs/thin-film.md "A thickness per pixel"): the tables of N >= 2
+// films of thicknesses uniform over [minimum_nm, maximum_nm], read with linear interpolation over
+// the thickness too. The thickness is a coordinate t in [0, 1], as the texture's green channel:
+// minimum + t (maximum - minimum) nanometres.
+//
+// Its texture (<name>.film.<ext>) is 65 x 18 N: rows 0 to N - 1 hold each slice's F row, so a
+// direct light is one bilinear fetch over (sqrt(mu), thickness); then for each roughness node j
+// the N rows N + j N + s hold slice s's Fbar row, so image light is two bilinear fetches over
+// (sqrt(NdotV), thickness) at the roughness nodes either side, mixed. With N = 1 the layout is
+// FilmTable's.
+struct FilmStack {
+  double minimum_nm = 0.0;
+  double maximum_nm = 0.0;
+  std::vector<FilmTable> slices;  // slice s at minimum + (maximum - minimum) s / (N - 1)
+};
+
+// The texture's height, 18 N, and its texels, RGBA (A = 1), row after row from row 0.
+std::size_t film_stack_height(const FilmStack& stack);
+std::vector<float> film_stack_texels(const FilmStack& stack);
+// The thickness of slice s in nanometres.
+double film_stack_thickness(const FilmStack& stack, std::size_t s);
+
+// F and Fbar at thickness coordinate `thickness` (clamped to [0, 1], NaN read as 0), as the
+// shaders' MATC_FILM_STACK_* fetches read the texture.
+Rgb film_stack_fresnel(const FilmStack& stack, double mu, double thickness);
+Rgb film_stack_preintegrated(const FilmStack& stack, double ndotv, double roughness,
+                             double thickness);
 
 }  // namespace matc::runtime
