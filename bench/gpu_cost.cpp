@@ -53,7 +53,7 @@ struct Comparison {
   bool f82_tint_material = false;
 };
 
-const std::array<Comparison, 40> kComparisons = {{
+const std::array<Comparison, 44> kComparisons = {{
     {"F alone, compiled coefficients", FresnelQuantity::direct, FresnelModel::ours,
      FresnelModel::schlick, std::nullopt},
     {"one GGX light, compiled coefficients", FresnelQuantity::ggx_light, FresnelModel::ours,
@@ -159,6 +159,20 @@ const std::array<Comparison, 40> kComparisons = {{
     {"split-sum image light, a metal under a film: its table vs glTF engines' iridescence",
      FresnelQuantity::preintegrated, FresnelModel::film_table,
      FresnelModel::film_airy_dielectric_base, std::nullopt},
+    // A thickness per pixel (the anodised titanium example's film, index 2.4, over 20-250 nm): its
+    // stack at a thickness per pixel, against the engines' iridescence at the same thickness.
+    {"one GGX light, a thickness per pixel: its stack vs glTF engines' iridescence at that "
+     "thickness",
+     FresnelQuantity::ggx_light, FresnelModel::film_stack,
+     FresnelModel::film_airy_dielectric_base_textured, 1.0},
+    {"one GGX light, a thickness per pixel: its stack vs the film of one thickness",
+     FresnelQuantity::ggx_light, FresnelModel::film_stack, FresnelModel::film_table, std::nullopt},
+    {"split-sum image light, a thickness per pixel: its stack vs glTF engines' iridescence",
+     FresnelQuantity::preintegrated, FresnelModel::film_stack,
+     FresnelModel::film_airy_dielectric_base_textured, std::nullopt},
+    {"split-sum image light, a thickness per pixel: its stack vs the film of one thickness",
+     FresnelQuantity::preintegrated, FresnelModel::film_stack, FresnelModel::film_table,
+     std::nullopt},
     // A filmed metal under a coat (examples' titanium_anodised_lacquered): its table and the coat
     // lobe, against a coated metal's two lobes.
     {"one GGX light, a filmed metal under a coat: its table and the coat lobe vs a coated metal",
@@ -261,6 +275,10 @@ int main(int argc, char** argv) {
   clear_material.coat = matc::CoatInput{1.0, 1.5, 0.1, {1.0, 1.0, 1.0}};
   matc::Material tinted_material = *parsed.material;
   tinted_material.coat = matc::CoatInput{1.0, 1.5, 0.1, {0.95, 0.85, 0.6}};
+  // The thickness per pixel's: the anodised titanium's film over 20-250 nm.
+  matc::Material stacked_material = *filmed_parsed.material;
+  stacked_material.film->thickness_minimum_nm = 20.0;
+  stacked_material.film->thickness_nm = 250.0;
   struct BasisBuild {
     matc::Build build;
     matc::CompiledMaterial material;
@@ -269,6 +287,7 @@ int main(int argc, char** argv) {
     matc::CompiledMaterial f82_tint;
     matc::CompiledMaterial filmed;
     matc::CompiledMaterial film_coated;
+    matc::CompiledMaterial stacked;
   };
   // A build per basis the rows force, and the default build (a basis per material).
   using BuildKey = std::pair<matc::runtime::BasisKind, bool>;  // (basis, default build)
@@ -284,7 +303,8 @@ int main(int argc, char** argv) {
     builds[build_key] = std::make_unique<BasisBuild>(
         BasisBuild{std::move(build), compiled(*parsed.material), compiled(clear_material),
                    compiled(tinted_material), compiled(*f82_tint_parsed.material),
-                   compiled(*filmed_parsed.material), compiled(*film_coated_parsed.material)});
+                   compiled(*filmed_parsed.material), compiled(*film_coated_parsed.material),
+                   compiled(stacked_material)});
   }
   const matc::SpirvWords vertex = matc::compile_fullscreen_stage(
       matc::fullscreen_vertex_source(), matc::ShaderStage::vertex, "fullscreen.vert");
@@ -311,10 +331,13 @@ int main(int argc, char** argv) {
       const matc::CompiledMaterial& material =
           std::get<5>(variant)                       ? basis_build.f82_tint
           : model == FresnelModel::film_table_coated ? basis_build.film_coated
-          : matc::draws_filmed_material(model)       ? basis_build.filmed
-          : !matc::draws_coated_material(model)      ? basis_build.material
-          : row.tinted_coat                          ? basis_build.tinted
-                                                     : basis_build.coated;
+          : model == FresnelModel::film_stack ||
+                  model == FresnelModel::film_airy_dielectric_base_textured
+              ? basis_build.stacked
+          : matc::draws_filmed_material(model)  ? basis_build.filmed
+          : !matc::draws_coated_material(model) ? basis_build.material
+          : row.tinted_coat                     ? basis_build.tinted
+                                                : basis_build.coated;
       fragments[variant] = matc::compile_fullscreen_stage(
           matc::cost_pass_source(basis_build.build, material, model, row.quantity, 1280, 720),
           matc::ShaderStage::fragment, "cost_pass.frag");

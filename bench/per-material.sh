@@ -15,6 +15,7 @@ spectral=$root/examples/materials/copper.json
 filmed=$root/examples/materials/titanium_anodised_blue.json
 coated=$root/examples/materials/copper_lacquered.json
 film_coated=$root/examples/materials/titanium_anodised_lacquered.json
+film_stack=$root/tests/data/film_stack/titanium_heat_tint.json
 bare_titanium=$root/examples/materials/titanium.json
 
 # Median wall time in milliseconds of `runs` runs of a command.
@@ -54,6 +55,10 @@ row "\`--no-shared\`, a coated spectral preset (copper under a lacquer)" \
   "$matc" -q -o "$work/i" --no-shared "$coated"
 row "\`--no-shared\`, the filmed titanium under a clear lacquer" \
   "$matc" -q -o "$work/j" --no-shared "$film_coated"
+row "\`--no-shared\`, titanium under a film of a thickness per pixel (20-250 nm)" \
+  "$matc" -q -o "$work/k" --no-shared "$film_stack"
+row "\`--no-shared --emit glsl,hlsl,wgsl,json,lut\`, the same (no C header)" \
+  "$matc" -q -o "$work/l" --no-shared --emit glsl,hlsl,wgsl,json,lut "$film_stack"
 row "\`--shared-only\` (libraries, SPIR-V library, 128x128 table bake, tables)" \
   "$matc" -q -o "$work/e" --shared-only
 row "one-material batch, every output (own and shared files, manifest)" \

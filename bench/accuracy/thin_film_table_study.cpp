@@ -8,11 +8,12 @@
 //     towards grazing, where the curve turns to 1), and
 //   - a thickness texture: the same nodes over the cosine, and nodes every `step` nm over the
 //     thickness, read bilinearly (the error of the thickness axis, at the midpoints between its
-//     nodes, where linear interpolation errs most).
+//     nodes, where linear interpolation errs most), over 0-1000 nm and over glTF's default
+//     range, 100-400 nm.
 // A table's error bounds the image light's too: the split sum of a piecewise-linear curve is a
 // weighted average of its nodes (weights of the lobe, summing to at most 1), so Fbar from the
 // table is within the table's error of Fbar from the exact curve.
-//   build/bench/matc_thin_film_table_study   (about a minute on 2 cores;
+//   build/bench/matc_thin_film_table_study   (about two minutes on 2 cores;
 //   bench/accuracy/update-docs.sh)
 #include <algorithm>
 #include <array>
@@ -78,7 +79,7 @@ constexpr std::array<double, 4> kIndices = {1.2, 1.5, 2.0, 2.5};
 // Thickness bands: every 25 nm from 0 to 1000 falls in one.
 constexpr std::array<std::array<double, 2>, 4> kBands = {
     {{0.0, 100.0}, {125.0, 300.0}, {325.0, 600.0}, {625.0, 1000.0}}};
-constexpr std::array<double, 3> kThicknessSteps = {20.0, 10.0, 5.0};
+constexpr std::array<double, 4> kThicknessSteps = {20.0, 10.0, 5.0, 2.5};
 
 std::vector<const matc::Spectrum*> measured_metals() {
   std::vector<const matc::Spectrum*> metals;
@@ -113,14 +114,15 @@ std::array<double, kLayouts.size()> fixed_thickness_errors(double index,
 
 // Worst error of linear interpolation over the thickness, every `step` nm from 0 to 1000, at the
 // midpoints between nodes and 20 cosines in [0.05, 1], over the metals, for films of `index`.
-// Every node and midpoint is a multiple of 2.5 nm: each film is evaluated once.
-// The first element of each pair is over all 20 cosines, the second over cosines of 0.2 and up
+// Every node and midpoint is a multiple of 1.25 nm: each film is evaluated once.
+// The first element of each triple is over all 20 cosines, the second over cosines of 0.2 and up
 // (away from grazing, where the film's two interfaces both reflect strongly and its resonances
-// turn sharp).
-using ThicknessErrors = std::array<std::array<double, 2>, kThicknessSteps.size()>;
+// turn sharp), the third over all cosines between nodes within glTF's default range, 100-400 nm
+// (what a thickness stack over that range reads: compile/film_tables.h).
+using ThicknessErrors = std::array<std::array<double, 3>, kThicknessSteps.size()>;
 ThicknessErrors thickness_axis_errors(double index) {
-  constexpr double kGrain = 2.5;
-  constexpr int kGrains = 400;  // 1000 nm
+  constexpr double kGrain = 1.25;
+  constexpr int kGrains = 800;  // 1000 nm
   ThicknessErrors worst{};
   for (const matc::Spectrum* metal : measured_metals()) {
     std::vector<std::array<matc::Rgb, 20>> values(kGrains + 1);
@@ -140,6 +142,9 @@ ThicknessErrors thickness_axis_errors(double index) {
             const double error = std::abs(0.5 * (a[j][channel] + c[j][channel]) - b[j][channel]);
             worst[s][0] = std::max(worst[s][0], error);
             if (j >= 3) worst[s][1] = std::max(worst[s][1], error);
+            const double from_nm = kGrain * static_cast<double>(lower);
+            if (from_nm >= 100.0 && from_nm + kThicknessSteps[s] <= 400.0)
+              worst[s][2] = std::max(worst[s][2], error);
           }
         }
       }
@@ -179,16 +184,32 @@ int main() {
   fmt::print(
       "\nA thickness texture, 0-1000 nm: linear interpolation over the thickness, worst at the "
       "midpoints between nodes, over cos 0.05-1 / cos 0.2-1:\n\n| film index |");
-  for (const double step : kThicknessSteps)
-    fmt::print(" every {:.0f} nm ({} nodes) |", step, static_cast<int>(1000.0 / step) + 1);
-  fmt::print("\n|---:|");
-  for (std::size_t s = 0; s < kThicknessSteps.size(); ++s)
-    fmt::print("---:|");
-  fmt::print("\n");
+  const auto header = [](double span) {
+    for (const double step : kThicknessSteps)
+      fmt::print(" every {:g} nm ({} nodes) |", step, static_cast<int>(span / step) + 1);
+    fmt::print("\n|---:|");
+    for (std::size_t s = 0; s < kThicknessSteps.size(); ++s)
+      fmt::print("---:|");
+    fmt::print("\n");
+  };
+  header(1000.0);
+  std::vector<ThicknessErrors> errors;
+  for (auto& future : textured)
+    errors.push_back(future.get());
   for (std::size_t i = 0; i < kIndices.size(); ++i) {
     fmt::print("| {:.1f} |", kIndices[i]);
-    for (const auto& [all, away_from_grazing] : textured[i].get())
+    for (const auto& [all, away_from_grazing, gltf_range] : errors[i])
       fmt::print(" {:.4f} / {:.4f} |", all, away_from_grazing);
+    fmt::print("\n");
+  }
+  fmt::print(
+      "\nThe same over glTF's default range, 100-400 nm (what a thickness stack over it reads), "
+      "cos 0.05-1:\n\n| film index |");
+  header(300.0);
+  for (std::size_t i = 0; i < kIndices.size(); ++i) {
+    fmt::print("| {:.1f} |", kIndices[i]);
+    for (const auto& triple : errors[i])
+      fmt::print(" {:.4f} |", triple[2]);
     fmt::print("\n");
   }
   return 0;

@@ -27,6 +27,7 @@ struct EvalOptions {
   std::string quad_light;     // "x,y,z;x,y,z;x,y,z;x,y,z" in the shading frame: area-light radiance
   bool no_reference = false;  // --no-reference: no Monte-Carlo references, the shaders' values
   double metalness = 0;       // --metalness, when given: glTF's metal-rough mix
+  double film_thickness = 0;  // --film-thickness, when given: a thickness per pixel's film
   api::EvaluationOptions evaluation;
 };
 
@@ -216,11 +217,17 @@ Command register_eval(CLI::App& app) {
                        "by this metalness with glTF's dielectric (F0 0.04, F90 1), as "
                        "matc_metal_rough computes them")
           ->check(CLI::Range(0.0, 1.0));
+  CLI::Option* film_thickness_option =
+      command->add_option("--film-thickness", options->film_thickness,
+                          "a thickness per pixel (docs/thin-film.md): the film at this thickness "
+                          "in nanometres, within the material's range, as its shaders read it");
   add_evaluation_options(*command, options->evaluation);
 
   return {command,
-          [options, metalness_option] {
+          [options, metalness_option, film_thickness_option] {
             if (metalness_option->count() > 0) options->evaluation.metalness = options->metalness;
+            if (film_thickness_option->count() > 0)
+              options->evaluation.film_thickness = options->film_thickness;
             return run_eval(*options);
           },
           true};

@@ -88,11 +88,22 @@ Rgb mix(const Rgb& a, const Rgb& b, double weight) {
           a[2] + weight * (b[2] - a[2])};
 }
 
-// The two slices either side of thickness coordinate t, and the weight of the upper one.
+// The slice below thickness coordinate t and the weight of the one above, for N >= 2 slices. The
+// position is held kFilmStackInset of a slice inside the end slices, as the shaders hold it: in a
+// texture thousands of rows tall a float texcoord on the last slice's texel centre can land a
+// few ten-thousandths of a texel past it, into the next block's rows (another roughness node).
+std::pair<std::size_t, double> slice_position(const FilmStack& stack, double thickness) {
+  const double last = static_cast<double>(stack.slices.size() - 1);
+  const double position =
+      std::clamp(unit_clamp(thickness) * last, kFilmStackInset, last - kFilmStackInset);
+  const auto lower = static_cast<std::size_t>(position);
+  return {lower, position - static_cast<double>(lower)};
+}
+
 template <typename Read>
 Rgb between_slices(const FilmStack& stack, double thickness, const Read& read) {
   if (stack.slices.size() == 1) return read(stack.slices.front());
-  const auto [lower, weight] = texel_axis_position(thickness, stack.slices.size());
+  const auto [lower, weight] = slice_position(stack, thickness);
   return mix(read(stack.slices[lower]), read(stack.slices[lower + 1]), weight);
 }
 
@@ -126,6 +137,20 @@ double film_stack_thickness(const FilmStack& stack, std::size_t s) {
   if (stack.slices.size() < 2) return stack.maximum_nm;
   const double t = static_cast<double>(s) / static_cast<double>(stack.slices.size() - 1);
   return stack.minimum_nm + t * (stack.maximum_nm - stack.minimum_nm);
+}
+
+FilmTable film_stack_table_at(const FilmStack& stack, double thickness) {
+  if (stack.slices.size() == 1) return stack.slices.front();
+  const auto [lower, weight] = slice_position(stack, thickness);
+  const FilmTable& a = stack.slices[lower];
+  const FilmTable& b = stack.slices[lower + 1];
+  FilmTable table;
+  for (std::size_t i = 0; i < table.fresnel.size(); ++i)
+    table.fresnel[i] = mix(a.fresnel[i], b.fresnel[i], weight);
+  table.preintegrated.reserve(a.preintegrated.size());
+  for (std::size_t i = 0; i < a.preintegrated.size(); ++i)
+    table.preintegrated.push_back(mix(a.preintegrated[i], b.preintegrated[i], weight));
+  return table;
 }
 
 Rgb film_stack_fresnel(const FilmStack& stack, double mu, double thickness) {

@@ -155,10 +155,4 @@ Rgb film_polygon_light_ltc(const FilmTable& table, const LtcTableView& ltc, doub
                                 vertices);
 }
 
-Rgb film_polygon_light_ltc(const FilmStack& stack, const LtcTableView& ltc, double ndotv,
-                           double roughness, double thickness, std::span<const Vec3> vertices) {
-  return scaled_by_ltc_integral(film_stack_preintegrated(stack, ndotv, roughness, thickness), ltc,
-                                ndotv, roughness, vertices);
-}
-
 }  // namespace matc::runtime

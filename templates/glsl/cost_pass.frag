@@ -10,8 +10,10 @@
 // (MATC_COST_COAT 1 ours coated, 2 ours bare under a Schlick coat lobe, 3 Filament's clear coat)
 // shade two lobes, the coat's at its own roughness, in the GGX-light and image-light passes.
 // Filmed variants (MATC_COST_FILM 1 ours from the film's table at binding 8, 2 the film's Airy
-// sum over a dielectric base of index from F0, as glTF engines shade KHR_materials_iridescence)
-// run in the GGX-light and image-light passes.
+// sum over a dielectric base of index from F0, as glTF engines shade KHR_materials_iridescence;
+// with a thickness per pixel, 3 ours from the film's stack at binding 8 and 4 that Airy sum, both
+// at a thickness coordinate of uv.x, as a thickness texture gives it) run in the GGX-light and
+// image-light passes.
 {{defines}}
 {{library}}
 {{material}}
@@ -35,7 +37,7 @@ layout(set = 0, binding = 6) uniform texture2D map_c;
 #if MATC_COST_IMAGE_LIGHT
 layout(set = 0, binding = 7) uniform texture2D environment;
 #endif
-#if MATC_COST_FILM == 1
+#if MATC_COST_FILM == 1 || MATC_COST_FILM == 3
 layout(set = 0, binding = 8) uniform texture2D film_table;
 #endif
 layout(location = 0) out vec4 colour;
@@ -49,7 +51,7 @@ vec3 matc_cost_schlick(vec3 f0, float mu) {
   return f0 + (vec3(1.0) - f0) * (m2 * m2 * m);
 }
 
-#if MATC_COST_FILM == 2
+#if MATC_COST_FILM == 2 || MATC_COST_FILM == 4
 // Belcour and Barla (2017), "A Practical Extension to Microfacet Theory for the Modeling of
 // Varying Iridescence", as glTF's KHR_materials_iridescence is shaded by engines (the Khronos
 // sample viewer's evalIridescence): air, a film of index n_f and thickness d, and a dielectric
@@ -71,9 +73,8 @@ vec3 matc_cost_film_sensitivity(float path_difference_nm, vec3 shift) {
   return xyz_to_rec709 * xyz;
 }
 
-vec3 matc_cost_film_over_dielectric(vec3 f0, float cos_theta1) {
+vec3 matc_cost_film_over_dielectric(vec3 f0, float cos_theta1, float thickness) {
   const float film_ior_given = {{film_ior}};
-  const float thickness = {{film_thickness}};
   // The film's index fades to air's below 30 nm, as the engines do.
   float film_ior = mix(1.0, film_ior_given, smoothstep(0.0, 30.0, thickness));
   float sin_theta2_sq = (1.0 - cos_theta1 * cos_theta1) / (film_ior * film_ior);
@@ -179,18 +180,35 @@ void main() {
 #define COST_FRESNEL_PREINTEGRATED(TEXEL) \
   matc_fresnel_preintegrated_{{name}}(     \
       MATC_FILM_PREINTEGRATED(sampler2D(film_table, matc_lut_sampler), NoV, uv.y))
-#elif MATC_COST_FILM == 2
+#elif MATC_COST_FILM == 3
+// A thickness per pixel: F and Fbar from the film's stack at the pixel's thickness coordinate.
+#define COST_FRESNEL(MU)                                                                     \
+  matc_fresnel_{{name}}(MATC_FILM_STACK_FRESNEL(sampler2D(film_table, matc_lut_sampler), (MU), \
+                                                uv.x, matc_film_slices_{{name}}))
+#define COST_FRESNEL_PREINTEGRATED(TEXEL)                                                  \
+  matc_fresnel_preintegrated_{{name}}(MATC_FILM_STACK_PREINTEGRATED(                       \
+      sampler2D(film_table, matc_lut_sampler),                                             \
+      matc_film_stack_preintegrated_texcoords(NoV, uv.y, uv.x, matc_film_slices_{{name}})))
+#elif MATC_COST_FILM == 2 || MATC_COST_FILM == 4
 // The engines' iridescence: Schlick's curve mixed with the film's by the film's coverage; for
-// image light the film's F at NdotV in place of F0 in Schlick's split sum.
+// image light the film's F at NdotV in place of F0 in Schlick's split sum. With a thickness per
+// pixel (4), the thickness is the texture's mix of the range at uv.x.
 #define COST_FILM_F0 vec3({{f0}})
+#if MATC_COST_FILM == 4
+#define COST_FILM_THICKNESS mix({{film_minimum}}, {{film_thickness}}, uv.x)
+#else
+#define COST_FILM_THICKNESS {{film_thickness}}
+#endif
 #define COST_FRESNEL(MU)                                             \
   mix(matc_cost_schlick(COST_FILM_F0, (MU)),                         \
-      matc_cost_film_over_dielectric(COST_FILM_F0, (MU)), {{film_weight}})
-#define COST_FRESNEL_PREINTEGRATED(TEXEL)                                                      \
-  (mix(COST_FILM_F0, matc_cost_film_over_dielectric(COST_FILM_F0, NoV), {{film_weight}}) *   \
-       (TEXEL).x +                                                                            \
-   (vec3(1.0) - mix(COST_FILM_F0, matc_cost_film_over_dielectric(COST_FILM_F0, NoV),         \
-                    {{film_weight}})) *                                                       \
+      matc_cost_film_over_dielectric(COST_FILM_F0, (MU), COST_FILM_THICKNESS), {{film_weight}})
+#define COST_FRESNEL_PREINTEGRATED(TEXEL)                                                       \
+  (mix(COST_FILM_F0, matc_cost_film_over_dielectric(COST_FILM_F0, NoV, COST_FILM_THICKNESS),  \
+       {{film_weight}}) *                                                                      \
+       (TEXEL).x +                                                                             \
+   (vec3(1.0) - mix(COST_FILM_F0,                                                              \
+                    matc_cost_film_over_dielectric(COST_FILM_F0, NoV, COST_FILM_THICKNESS),    \
+                    {{film_weight}})) *                                                        \
        (TEXEL).y)
 #elif MATC_COST_TABLE || MATC_COST_BAKED || MATC_COST_FROM_F0 || MATC_COST_F0_TABLE
 #define COST_FRESNEL(MU) matc_fresnel(c, (MU))

@@ -87,8 +87,15 @@ vec2 matc_film_preintegrated_texcoord(float NdotV, float roughness) {
 // the coordinate in [0, 1] over the range (a thickness texture's green channel, as glTF's
 // iridescenceThicknessTexture); matc_film_thickness_<name> maps nanometres to it. A light is one
 // fetch, over (sqrt(mu), thickness); image light two, at the roughness nodes either side, mixed.
+// Where along the thickness axis a read lands, in texels: held 1/1024 of a slice inside the end
+// slices, since in a texture thousands of rows tall a float texcoord on the last slice's texel
+// centre can land past it, in the next block (the CPU runtime holds it so too).
+float matc_film_stack_slice(float thickness, float slices) {
+  float last = slices - 1.0;
+  return clamp(clamp(thickness, 0.0, 1.0) * last, 1.0 / 1024.0, last - 1.0 / 1024.0) + 0.5;
+}
 vec2 matc_film_stack_fresnel_texcoord(float mu, float thickness, float slices) {
-  float s = clamp(thickness, 0.0, 1.0) * (slices - 1.0) + 0.5;
+  float s = matc_film_stack_slice(thickness, slices);
   return vec2(sqrt(clamp(mu, 0.0, 1.0)) * (64.0 / 65.0) + 0.5 / 65.0, s / (18.0 * slices));
 }
 // xy and xz: the texcoords at the roughness nodes below and above; w: the weight of the one above.
@@ -97,7 +104,7 @@ vec4 matc_film_stack_preintegrated_texcoords(float NdotV, float roughness, float
   float x = sqrt(clamp(NdotV, 0.0, 1.0)) * (64.0 / 65.0) + 0.5 / 65.0;
   float r = sqrt(clamp((roughness - 0.05) * (1.0 / 0.95), 0.0, 1.0)) * 16.0;
   float j = min(floor(r), 15.0);
-  float s = clamp(thickness, 0.0, 1.0) * (slices - 1.0) + 0.5;
+  float s = matc_film_stack_slice(thickness, slices);
   float height = 18.0 * slices;
   return vec4(x, (slices * (1.0 + j) + s) / height, (slices * (2.0 + j) + s) / height, r - j);
 }

@@ -92,8 +92,15 @@ fn matc_film_preintegrated(table: texture_2d<f32>, table_sampler: sampler, NdotV
 // the coordinate in [0, 1] over the range (a thickness texture's green channel, as glTF's
 // iridescenceThicknessTexture); matc_film_thickness_<name> maps nanometres to it. A light is one
 // fetch, over (sqrt(mu), thickness); image light two, at the roughness nodes either side, mixed.
+// Where along the thickness axis a read lands, in texels: held 1/1024 of a slice inside the end
+// slices, since in a texture thousands of rows tall a float texcoord on the last slice's texel
+// centre can land past it, in the next block (the CPU runtime holds it so too).
+fn matc_film_stack_slice(thickness: f32, slices: f32) -> f32 {
+  let last = slices - 1.0;
+  return clamp(clamp(thickness, 0.0, 1.0) * last, 1.0 / 1024.0, last - 1.0 / 1024.0) + 0.5;
+}
 fn matc_film_stack_fresnel_texcoord(mu: f32, thickness: f32, slices: f32) -> vec2f {
-  let s = clamp(thickness, 0.0, 1.0) * (slices - 1.0) + 0.5;
+  let s = matc_film_stack_slice(thickness, slices);
   return vec2f(sqrt(clamp(mu, 0.0, 1.0)) * (64.0 / 65.0) + 0.5 / 65.0, s / (18.0 * slices));
 }
 // xy and xz: the texcoords at the roughness nodes below and above; w: the weight of the one above.
@@ -102,7 +109,7 @@ fn matc_film_stack_preintegrated_texcoords(NdotV: f32, roughness: f32, thickness
   let x = sqrt(clamp(NdotV, 0.0, 1.0)) * (64.0 / 65.0) + 0.5 / 65.0;
   let r = sqrt(clamp((roughness - 0.05) * (1.0 / 0.95), 0.0, 1.0)) * 16.0;
   let j = min(floor(r), 15.0);
-  let s = clamp(thickness, 0.0, 1.0) * (slices - 1.0) + 0.5;
+  let s = matc_film_stack_slice(thickness, slices);
   let height = 18.0 * slices;
   return vec4f(x, (slices * (1.0 + j) + s) / height, (slices * (2.0 + j) + s) / height, r - j);
 }

@@ -17,7 +17,7 @@ import { runPage } from "./browser-page.mjs";
 import { check, finish } from "./report.mjs";
 import {
   compileAndEvaluate, kClosedFormTolerance, kFresnelTolerance, kPreintegratedTolerance,
-  largestDifference, validationQueries,
+  largestDifference, run, validationQueries,
 } from "./shader-cases.mjs";
 
 const [matc, materialsDir, ...rest] = process.argv.slice(2);
@@ -88,9 +88,12 @@ try {
       gl.uniform1i(gl.getUniformLocation(program, "matc_coefficient_table"), 2);
       for (const [name, value] of Object.entries(material.uniforms || {}))
         gl.uniform3fv(gl.getUniformLocation(program, name), value);
-      // A filmed metal's own table (65 x 18 RGBA32F, linear filtering) on unit 4.
+      // A filmed metal's own table (65 x 18 RGBA32F, linear filtering; a thickness per pixel's
+      // stack 65 x 18 slices) on unit 4, and the stack's thickness coordinate.
       if (material.film) {
-        texture(4, 65, 18, floats(material.film), gl.LINEAR);
+        texture(4, 65, material.filmRows || 18, floats(material.film), gl.LINEAR);
+        if (material.thickness !== undefined)
+          gl.uniform1f(gl.getUniformLocation(program, "matc_thickness"), material.thickness);
         gl.uniform1i(gl.getUniformLocation(program, "matc_film"), 4);
         gl.activeTexture(gl.TEXTURE0);
       }
@@ -180,6 +183,25 @@ void main() {
 }
 `;
 
+// The same for a thickness per pixel (docs/thin-film.md "A thickness per pixel"): the stack read
+// at the thickness coordinate matc_thickness.
+const filmStackMain = (name) => `
+uniform sampler2D matc_film;
+uniform sampler2D matc_queries;
+uniform float matc_thickness;
+out vec4 matc_result;
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 query = texelFetch(matc_queries, ivec2(pixel.x, 0), 0);  // mu, NdotV, roughness
+  float slices = matc_film_slices_${name};
+  vec3 value = pixel.y == 0
+      ? matc_fresnel_${name}(MATC_FILM_STACK_FRESNEL(matc_film, query.x, matc_thickness, slices))
+      : matc_fresnel_preintegrated_${name}(MATC_FILM_STACK_PREINTEGRATED(matc_film,
+            matc_film_stack_preintegrated_texcoords(query.y, query.z, matc_thickness, slices)));
+  matc_result = vec4(value, 1.0);
+}
+`;
+
 // The same for a filmed material under a coat (docs/thin-film.md, "Under a coat"): the base lobe
 // from its table, the coat lobe from matc_lut at the coat's roughness, summed.
 const filmCoatedMain = (name) => `
@@ -227,11 +249,33 @@ try {
                  uniforms: { matc_reflectivity: metal.reflectivity, matc_edge_tint: metal.edgeTint },
                  source: main("MATC_COEFFICIENTS_FROM_TABLE(matc_coefficient_table, r, g)") });
   }
+  {
+    // A thickness per pixel: tests/data/film_stack's material at one thickness of its range,
+    // against matc eval --film-thickness.
+    const file = new URL("../data/film_stack/titanium_heat_tint.json", import.meta.url).pathname;
+    const stackOut = join(dir, "stack");
+    const options = ["--lut-precision", "f32", ...basisOptions];
+    run(matc, ["-q", "-o", stackOut, "--emit", "glsl,lut,json", "--lut", "raw", ...options, file]);
+    const described = JSON.parse(readFileSync(join(stackOut, "titanium_heat_tint.json"), "utf8"));
+    const { slices, thickness_nm: [minimum, maximum] } = described.film_stack;
+    const nm = minimum + 0.3719 * (maximum - minimum);
+    const list = (values) => Array.from(values).join(",");
+    const evaluated = JSON.parse(run(matc, [
+      "eval", file, ...options, "--no-reference", "--film-thickness", String(nm), "--mu", list(queries.mu),
+      "--ndotv", list(queries.ndotv), "--roughness", list(queries.roughness)]));
+    cases.push({ name: `titanium_heat_tint (${slices} slices, ${nm.toFixed(1)} nm)`, F: evaluated.F,
+                 Fbar: evaluated.Fbar, FbarAnalytic: evaluated.Fbar, tolerance: kPreintegratedTolerance,
+                 film: readFileSync(join(stackOut, "titanium_heat_tint.film.bin")).toString("base64"),
+                 filmRows: 18 * slices, thickness: evaluated.film_thickness.coordinate,
+                 source: readFileSync(join(stackOut, "titanium_heat_tint.glsl"), "utf8") +
+                         filmStackMain("titanium_heat_tint") });
+  }
   const lut = readFileSync(join(dir, "out", "matc_lut.bin"));
   const table = readFileSync(join(dir, "out", "matc_coefficient_table.bin"));
   const data = {
     prelude: kPrelude, library, queries: Array.from(queries.flat),
-    cases: cases.map(({ name, source, uniforms, film }) => ({ name, source, uniforms, film })),
+    cases: cases.map(({ name, source, uniforms, film, filmRows, thickness }) =>
+      ({ name, source, uniforms, film, filmRows, thickness })),
     lut: lut.toString("base64"), lutHeight: Math.round(Math.sqrt(lut.length / 16 / (layers?.length ?? 1))),
     lutWidth: Math.round(Math.sqrt(lut.length / 16 / (layers?.length ?? 1))) * (layers?.length ?? 1),
     table: table.toString("base64"), tableSize: Math.round(Math.sqrt(table.length / 8)),

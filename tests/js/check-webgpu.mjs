@@ -85,6 +85,14 @@ const filmKernel = (name) => perQueryKernel(`  matc_results[2u * i] = vec4f(matc
   matc_results[2u * i + 1u] = vec4f(matc_fresnel_preintegrated_${name}(
                                         matc_film_preintegrated(matc_film, matc_linear, query.y, query.z)), 1.0);`);
 
+// The same for a thickness per pixel (docs/thin-film.md "A thickness per pixel"): the stack read at
+// each query's thickness coordinate (w).
+const filmStackKernel = (name) => perQueryKernel(`  let slices = matc_film_slices_${name};
+  matc_results[2u * i] = vec4f(matc_fresnel_${name}(
+                                   matc_film_stack_fresnel(matc_film, matc_linear, query.x, query.w, slices)), 1.0);
+  matc_results[2u * i + 1u] = vec4f(matc_fresnel_preintegrated_${name}(matc_film_stack_preintegrated(
+                                        matc_film, matc_linear, query.y, query.z, query.w, slices)), 1.0);`);
+
 // The same for a filmed material under a coat (docs/thin-film.md, "Under a coat"): the base lobe
 // from its table, the coat lobe from matc_lut at the coat's roughness, summed.
 const filmCoatedKernel = (name) => perQueryKernel(`  let coat_bbar = textureSampleLevel(matc_lut, matc_linear,
@@ -138,13 +146,15 @@ try {
   const textures = [texture("matc_lut.bin", "rgba16float", 8),
                     texture("matc_coefficient_table.bin", "rg16float", 4),
                     texture("matc_ltc.bin", "rgba32float", 16)];
-  // A filmed metal's table (65 x 18), bound at binding 6; other kernels see a placeholder.
-  const filmTexture = (name, directory = out) => {
+  // A filmed metal's table (65 x 18; a thickness per pixel's stack 65 x 18 slices), bound at
+  // binding 6; other kernels see a placeholder.
+  const filmTexture = (name, directory = out, slices = 1) => {
     const bytes = readFileSync(join(directory, `${name}.film.bin`));
-    const t = device.createTexture({ size: [65, 18], format: "rgba16float",
+    const rows = 18 * slices;
+    const t = device.createTexture({ size: [65, rows], format: "rgba16float",
                                      usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
-    check(bytes.length === 65 * 18 * 8, `${name}.film.bin holds 65 x 18 RGBA16F texels`);
-    device.queue.writeTexture({ texture: t }, bytes, { bytesPerRow: 65 * 8 }, [65, 18]);
+    check(bytes.length === 65 * rows * 8, `${name}.film.bin holds 65 x ${rows} RGBA16F texels`);
+    device.queue.writeTexture({ texture: t }, bytes, { bytesPerRow: 65 * 8 }, [65, rows]);
     return t;
   };
   const placeholder = device.createTexture({ size: [1, 1], format: "rgba16float",
@@ -219,6 +229,35 @@ try {
       film = placeholder;
     }
   };
+  // A thickness per pixel: tests/data/film_stack's material at three thicknesses of its range,
+  // the stack sampled at each against matc eval --film-thickness.
+  await attempt("film stack", async () => {
+    const file = new URL("../data/film_stack/titanium_heat_tint.json", import.meta.url).pathname;
+    const stackOut = join(dir, "stack");
+    run(matc, ["-q", "-o", stackOut, "--emit", "wgsl,lut,json", "--lut", "raw", ...options, file]);
+    const described = JSON.parse(readFileSync(join(stackOut, "titanium_heat_tint.json"), "utf8"));
+    const { slices, thickness_nm: [minimum, maximum] } = described.film_stack;
+    const snippet = readFileSync(join(stackOut, "titanium_heat_tint.wgsl"), "utf8");
+    const library = readFileSync(join(stackOut, "matc_fresnel.wgsl"), "utf8");
+    film = filmTexture("titanium_heat_tint", stackOut, slices);
+    try {
+      for (const coordinate of [0, 0.3719, 1]) {
+        const nm = minimum + coordinate * (maximum - minimum);
+        const list = (values) => Array.from(values).join(",");
+        const evaluated = JSON.parse(run(matc, [
+          "eval", file, ...options, "--no-reference", "--film-thickness", String(nm),
+          "--mu", list(queries.mu), "--ndotv", list(queries.ndotv), "--roughness", list(queries.roughness)]));
+        const flat = Float32Array.from(queries.flat, (v, k) => (k % 4 === 3 ? evaluated.film_thickness.coordinate : v));
+        const values = await dispatch(library + snippet + filmStackKernel("titanium_heat_tint"), flat, 2);
+        report(`titanium_heat_tint (${slices} slices, ${nm.toFixed(1)} nm)`,
+               [["F", largestDifference(values, evaluated.F, 8, 0)],
+                ["Fbar", largestDifference(values, evaluated.Fbar, 8, 4)]],
+               { F: kPreintegratedTolerance, Fbar: kPreintegratedTolerance });
+      }
+    } finally {
+      film = placeholder;
+    }
+  });
   for (const material of cases.materials) {
     await attempt(material.name, async () => {
       if (material.filmed) return checkFilmed(cases, material, out, `${material.name} (film table)`);

@@ -2,6 +2,7 @@
 // adds are coated_evaluation.cpp's).
 #include "matc/api/evaluation.h"
 
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -226,10 +227,24 @@ void add_film_quad_light(const EvaluationInputs& options, const std::vector<Vec3
 // them, beside the exact curve and the split sum of it.
 void add_filmed(const EvaluationInputs& options, const CompiledMaterial& compiled,
                 ordered_json& out) {
-  // The table as a file of the table's precision stores it, what a renderer samples.
-  const runtime::FilmTable table = stored_as(*compiled.film_table, options.precision);
-  const auto curve = make_reflectance_curve(compiled.material, compiled.color);
-  out["film_table"] = {{"size", {runtime::FilmTable::kWidth, runtime::FilmTable::kHeight}},
+  // The table as a file of the table's precision stores it, what a renderer samples; a thickness
+  // per pixel's at the thickness asked for (its maximum otherwise: film_table is that slice).
+  runtime::FilmTable table = stored_as(*compiled.film_table, options.precision);
+  Material material = compiled.material;
+  if (compiled.film_stack) {
+    const runtime::FilmStack& stack = *compiled.film_stack;
+    const double nm = options.film_thickness_nm.value_or(stack.maximum_nm);
+    const double t = (nm - stack.minimum_nm) / (stack.maximum_nm - stack.minimum_nm);
+    table = runtime::film_stack_table_at(stored_as(stack, options.precision), t);
+    material.film->thickness_nm = nm;
+    material.film->thickness_minimum_nm.reset();
+    out["film_thickness"] = {{"nm", nm}, {"coordinate", t}};
+  }
+  const auto curve = make_reflectance_curve(material, compiled.color);
+  out["film_table"] = {{"size",
+                        {runtime::FilmTable::kWidth,
+                         compiled.film_stack ? runtime::film_stack_height(*compiled.film_stack)
+                                             : runtime::FilmTable::kHeight}},
                        {"precision", lut_precision_name(options.precision)}};
   if (!options.mu.empty()) {
     out["mu"] = options.mu;
@@ -377,13 +392,32 @@ evaluation::EvaluationInputs resolved(const EvaluationOptions& options) {
     check_unit_interval("metalness", std::span<const double>(&*options.metalness, 1));
     inputs.metalness = options.metalness;
   }
+  inputs.film_thickness_nm = options.film_thickness;
   return inputs;
+}
+
+// --film-thickness names a thickness within the range of a material whose film has one.
+void check_film_thickness(const matc::Material& material, const std::optional<double>& nm) {
+  if (!nm) return;
+  const auto& film = material.film;
+  if (!film || !film->thickness_minimum_nm || !has_visible_film(material)) {
+    throw std::invalid_argument(
+        "film_thickness: the material's film has no thickness range (a thickness per pixel, "
+        "docs/thin-film.md); its film is evaluated at its one thickness");
+  }
+  if (!(*nm >= *film->thickness_minimum_nm && *nm <= film->thickness_nm)) {
+    throw std::invalid_argument(
+        fmt::format("film_thickness: {} nm is outside the film's range; a thickness in [{}, {}] nm",
+                    std::isnan(*nm) ? std::string("NaN") : fmt::format("{}", *nm),
+                    *film->thickness_minimum_nm, film->thickness_nm));
+  }
 }
 
 }  // namespace
 
 std::string evaluate(const Material& material, const EvaluationOptions& options) {
   evaluation::EvaluationInputs inputs = resolved(options);
+  check_film_thickness(material.value(), options.film_thickness);
   inputs.basis = basis_for(material.value(), options.compile);
   return evaluation::evaluate_bare(inputs, material.value());
 }
@@ -395,6 +429,9 @@ std::string evaluate_artistic(const Rgb& reflectivity, const Rgb& edge_tint,
   if (options.metalness)
     throw std::invalid_argument(
         "metalness: the coefficient-table path has no metal-rough mix; evaluate a material");
+  if (options.film_thickness)
+    throw std::invalid_argument(
+        "film_thickness: the coefficient-table path has no film; evaluate a material");
   return evaluation::evaluate_table_path(resolved(options), reflectivity, edge_tint);
 }
 

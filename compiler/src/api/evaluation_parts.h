@@ -38,6 +38,7 @@ struct EvaluationInputs {
   LutPrecision coefficient_table_precision = LutPrecision::f16;
   ColorOptions color;
   std::optional<double> metalness;  // glTF's metal-rough mix with glTF's dielectric, when given
+  std::optional<double> film_thickness_nm;  // a thickness per pixel's film at this thickness
 };
 
 using nlohmann::ordered_json;

@@ -229,14 +229,19 @@ void bake_coated_film(const Material& material, const ReflectanceCurve& in_air,
 // is the film_table the rest of matc reads, measured as a fixed film's is.
 void bake_film_stack_of(const Material& material, const ColorOptions& color,
                         const ReflectanceCurve& curve, CompiledMaterial& compiled) {
-  const auto film_at = [&](double nm) {
+  const auto film_at = [&material, &color](double nm) {
     Material slice = material;
     slice.film->thickness_nm = nm;
     slice.film->thickness_minimum_nm.reset();
     return make_reflectance_curve(slice, color);
   };
+  // A film curve sweeps the thicknesses itself (ThinFilmSweep); a curve wrapped in a colour
+  // conversion or a gamut mapping is made anew at each thickness.
+  const auto at_maximum = film_at(material.film->thickness_nm);
+  const auto* sweep = dynamic_cast<const ThinFilmSweep*>(at_maximum.get());
+  const FilmRows rows = sweep ? film_rows_by_sweep(*sweep) : film_rows_by_curve(film_at);
   BakedFilmStack baked =
-      bake_film_stack(film_at, *material.film->thickness_minimum_nm, material.film->thickness_nm);
+      bake_film_stack(rows, *material.film->thickness_minimum_nm, material.film->thickness_nm);
   compiled.film_stack = std::move(baked.stack);
   compiled.film_stack_error = baked.thickness_error;
   compiled.film_table = compiled.film_stack->slices.back();

@@ -81,18 +81,7 @@ runtime::FilmTable fresnel_row(const ReflectanceCurve& curve) {
   return table;
 }
 
-using FresnelRow = std::array<Rgb, runtime::FilmTable::kCosineNodes>;
-
-// The F rows of the films at `thicknesses`, on every thread.
-std::vector<FresnelRow> fresnel_rows(
-    const std::function<std::unique_ptr<ReflectanceCurve>(double)>& film_at,
-    const std::vector<double>& thicknesses) {
-  std::vector<FresnelRow> rows(thicknesses.size());
-  fill_rows_in_parallel(thicknesses.size(), 0, [&] {
-    return [&](std::size_t s) { rows[s] = fresnel_row(*film_at(thicknesses[s])).fresnel; };
-  });
-  return rows;
-}
+using FresnelRow = FilmFresnelRow;
 
 // The largest |mean of the rows either side - the midpoint's row| over the cosine nodes from 0.05.
 double midpoint_error(const std::vector<FresnelRow>& nodes, const std::vector<FresnelRow>& mids) {
@@ -111,24 +100,43 @@ double midpoint_error(const std::vector<FresnelRow>& nodes, const std::vector<Fr
 
 }  // namespace
 
-BakedFilmStack bake_film_stack(
-    const std::function<std::unique_ptr<ReflectanceCurve>(double)>& film_at, double minimum_nm,
-    double maximum_nm, std::size_t samples) {
+FilmRows film_rows_by_sweep(const ThinFilmSweep& sweep) {
+  return [&sweep](double start_nm, double step_nm, std::size_t count) {
+    std::vector<FresnelRow> rows(count);
+    fill_rows_in_parallel(runtime::FilmTable::kCosineNodes, 0, [&] {
+      return [&, column = std::vector<Rgb>(count)](std::size_t i) mutable {
+        sweep.sweep_thickness(runtime::film_table_cosine(i), start_nm, step_nm, column);
+        for (std::size_t k = 0; k < count; ++k)
+          rows[k][i] = column[k];
+      };
+    });
+    return rows;
+  };
+}
+
+FilmRows film_rows_by_curve(std::function<std::unique_ptr<ReflectanceCurve>(double)> film_at) {
+  return [film_at = std::move(film_at)](double start_nm, double step_nm, std::size_t count) {
+    std::vector<FresnelRow> rows(count);
+    fill_rows_in_parallel(count, 0, [&] {
+      return [&](std::size_t k) {
+        rows[k] = fresnel_row(*film_at(start_nm + step_nm * static_cast<double>(k))).fresnel;
+      };
+    });
+    return rows;
+  };
+}
+
+BakedFilmStack bake_film_stack(const FilmRows& rows_at, double minimum_nm, double maximum_nm,
+                               std::size_t samples) {
   const double span = maximum_nm - minimum_nm;
   std::size_t slices = std::clamp<std::size_t>(
       static_cast<std::size_t>(std::ceil(span / kFilmStackFirstSpacingNm)) + 1, 2,
       kMaxFilmStackSlices);
-  const auto thicknesses = [&](std::size_t count, double offset) {
-    std::vector<double> out;
-    for (std::size_t s = 0; s + (offset > 0.0 ? 1 : 0) < count; ++s)
-      out.push_back(minimum_nm +
-                    span * (static_cast<double>(s) + offset) / static_cast<double>(count - 1));
-    return out;
-  };
-  std::vector<FresnelRow> nodes = fresnel_rows(film_at, thicknesses(slices, 0.0));
+  const auto spacing = [&] { return span / static_cast<double>(slices - 1); };
+  std::vector<FresnelRow> nodes = rows_at(minimum_nm, spacing(), slices);
   BakedFilmStack baked;
   for (;;) {
-    std::vector<FresnelRow> mids = fresnel_rows(film_at, thicknesses(slices, 0.5));
+    std::vector<FresnelRow> mids = rows_at(minimum_nm + 0.5 * spacing(), spacing(), slices - 1);
     baked.thickness_error = midpoint_error(nodes, mids);
     if (baked.thickness_error <= kFilmStackTarget || 2 * slices - 1 > kMaxFilmStackSlices) break;
     std::vector<FresnelRow> finer;

@@ -4,13 +4,16 @@
 // 0-1000 nm; FilmTables.* holds them on a few.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include "matc/runtime/film_table.h"
 #include "material/material.h"
 #include "optics/reflectance_curve.h"
+#include "optics/thin_film.h"
 
 namespace matc {
 
@@ -49,10 +52,20 @@ struct BakedFilmStack {
   double thickness_error = 0.0;
 };
 
-// `film_at(nm)` gives the exact curve of the film at a thickness; it is called from several
-// threads at once.
-BakedFilmStack bake_film_stack(
-    const std::function<std::unique_ptr<ReflectanceCurve>(double)>& film_at, double minimum_nm,
-    double maximum_nm, std::size_t samples = 512);
+// A film's F at the cosine nodes (runtime::film_table_cosine), at thicknesses start_nm + k step_nm
+// for k < count: what a stack tabulates.
+using FilmFresnelRow = std::array<Rgb, runtime::FilmTable::kCosineNodes>;
+using FilmRows =
+    std::function<std::vector<FilmFresnelRow>(double start_nm, double step_nm, std::size_t count)>;
+
+// Rows from `sweep` (a film curve's ThinFilmSweep: amplitudes once a cosine, phases turned a step
+// at a time), a cosine a thread.
+FilmRows film_rows_by_sweep(const ThinFilmSweep& sweep);
+// Rows from a curve per thickness, `film_at(nm)` (any film, a gamut-mapped one say), a thickness
+// a thread: film_at is called from several threads at once.
+FilmRows film_rows_by_curve(std::function<std::unique_ptr<ReflectanceCurve>(double)> film_at);
+
+BakedFilmStack bake_film_stack(const FilmRows& rows, double minimum_nm, double maximum_nm,
+                               std::size_t samples = 512);
 
 }  // namespace matc

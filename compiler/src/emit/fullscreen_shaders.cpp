@@ -50,6 +50,8 @@ int material_map_count(FresnelModel model) {
     case FresnelModel::film_table:
     case FresnelModel::film_airy_dielectric_base:
     case FresnelModel::film_table_coated:
+    case FresnelModel::film_stack:
+    case FresnelModel::film_airy_dielectric_base_textured:
       break;
   }
   return 0;
@@ -65,7 +67,8 @@ bool reads_f0_table(FresnelModel model) {
 
 bool draws_filmed_material(FresnelModel model) {
   return model == FresnelModel::film_table || model == FresnelModel::film_airy_dielectric_base ||
-         model == FresnelModel::film_table_coated;
+         model == FresnelModel::film_table_coated || model == FresnelModel::film_stack ||
+         model == FresnelModel::film_airy_dielectric_base_textured;
 }
 
 bool draws_coated_material(FresnelModel model) {
@@ -85,7 +88,8 @@ std::vector<CostPassBinding> cost_pass_bindings(FresnelModel model, FresnelQuant
     bindings.push_back({4 + static_cast<std::uint32_t>(map), CostPassResource::material_map});
   if (quantity == FresnelQuantity::preintegrated)
     bindings.push_back({7, CostPassResource::environment});
-  if (model == FresnelModel::film_table || model == FresnelModel::film_table_coated)
+  if (model == FresnelModel::film_table || model == FresnelModel::film_table_coated ||
+      model == FresnelModel::film_stack)
     bindings.push_back({8, CostPassResource::film_table});
   return bindings;
 }
@@ -111,12 +115,17 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
     coat = 3;
   if (coat == 1 && !compiled.coat)
     throw std::invalid_argument("cost pass: a coated model needs a coated material");
-  // 0: no film; 1: ours from the film's table; 2: the Airy sum over a dielectric base.
-  const int film = model == FresnelModel::film_table || model == FresnelModel::film_table_coated ? 1
-                   : model == FresnelModel::film_airy_dielectric_base                            ? 2
-                                                                      : 0;
+  // 0: no film; 1: ours from the film's table; 2: the Airy sum over a dielectric base; 3 and 4
+  // the same with a thickness per pixel (ours from the film's stack).
+  int film = 0;
+  if (model == FresnelModel::film_table || model == FresnelModel::film_table_coated) film = 1;
+  if (model == FresnelModel::film_airy_dielectric_base) film = 2;
+  if (model == FresnelModel::film_stack) film = 3;
+  if (model == FresnelModel::film_airy_dielectric_base_textured) film = 4;
   if (film == 1 && !compiled.film_table)
     throw std::invalid_argument("cost pass: the film-table model needs a filmed material");
+  if ((film == 3 || film == 4) && !compiled.film_stack)
+    throw std::invalid_argument("cost pass: a thickness per pixel needs a film's stack");
   if (film != 0 && quantity != FresnelQuantity::ggx_light &&
       quantity != FresnelQuantity::preintegrated && quantity != FresnelQuantity::quad_light)
     throw std::invalid_argument(
@@ -150,6 +159,10 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
   if (model == FresnelModel::film_table) model_name = "ours, filmed, from the film's table";
   if (model == FresnelModel::film_airy_dielectric_base)
     model_name = "a film's Airy sum over a dielectric base (glTF engines' iridescence)";
+  if (model == FresnelModel::film_stack)
+    model_name = "ours, filmed, a thickness per pixel from the film's stack";
+  if (model == FresnelModel::film_airy_dielectric_base_textured)
+    model_name = "a film's Airy sum over a dielectric base at a thickness per pixel";
   const char* quantity_name = "Fbar";
   if (quantity == FresnelQuantity::direct) quantity_name = "F";
   if (quantity == FresnelQuantity::ggx_light) quantity_name = "one GGX light";
@@ -191,6 +204,10 @@ std::string cost_pass_source(const Build& build, const CompiledMaterial& compile
        {"film_ior", float_literal(compiled.material.film ? compiled.material.film->ior : 1.5)},
        {"film_thickness",
         float_literal(compiled.material.film ? compiled.material.film->thickness_nm : 0.0)},
+       {"film_minimum", float_literal(compiled.material.film
+                                          ? compiled.material.film->thickness_minimum_nm.value_or(
+                                                compiled.material.film->thickness_nm)
+                                          : 0.0)},
        {"film_weight",
         float_literal(compiled.material.film ? compiled.material.film->weight : 0.0)},
        {"width", std::to_string(width)},

@@ -57,7 +57,11 @@ enum class FresnelModel {
   film_airy_dielectric_base,
   // A filmed metal under a coat (docs/thin-film.md, "Under a coat"): its table is the base lobe,
   // the coat lobe the coated snippet's.
-  film_table_coated
+  film_table_coated,
+  // A thickness per pixel (docs/thin-film.md): ours from the film's stack, against the same
+  // evaluation at a thickness of the range; both at a thickness coordinate that varies per pixel.
+  film_stack,
+  film_airy_dielectric_base_textured
 };
 // F alone (mu from the pixel); F inside one GGX punctual light (D, height-correlated Smith V, F,
 // NdotL); image-based light: preintegrated Fbar from one table fetch times the prefiltered

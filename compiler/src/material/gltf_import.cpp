@@ -314,8 +314,8 @@ class Importer {
 
   // KHR_materials_iridescence: a film of coverage iridescenceFactor, index iridescenceIor (1.3)
   // and thickness iridescenceThicknessMaximum (400 nm), what the extension's film is without its
-  // thickness texture. The textures are noted (a thickness per pixel needs the film in the
-  // shader). No film when the factor is 0.
+  // thickness texture. The textures are noted (a material file's thickness range compiles a
+  // thickness per pixel; the importer does not write one yet). No film when the factor is 0.
   bool read_film(const std::string& field, const tinygltf::Material& source,
                  std::optional<ordered_json>& film, std::vector<std::string>& not_carried) {
     const tinygltf::Value* iridescence = extension(source.extensions, kIridescence);
@@ -353,8 +353,9 @@ class Importer {
       not_carried.push_back(name + "'s iridescenceTexture (the film's coverage is its factor)");
     if (has_texture(*iridescence, "iridescenceThicknessTexture"))
       not_carried.push_back(fmt::format(
-          "{}'s iridescenceThicknessTexture (compiled at iridescenceThicknessMaximum, {} nm: a "
-          "thickness per pixel needs the film evaluated in the shader)",
+          "{}'s iridescenceThicknessTexture (compiled at iridescenceThicknessMaximum, {} nm; a "
+          "material file's thickness range compiles a thickness per pixel, which the importer "
+          "does not write yet: docs/thin-film.md)",
           name, maximum));
     film = ordered_json{{"weight", factor}, {"ior", ior}, {"thickness", maximum}};
     return true;

@@ -72,6 +72,12 @@ inline constexpr double kMaxFilmIor = 3.0;
 inline constexpr double kMaxFilmThicknessNm = 2000.0;
 
 struct FilmInput {
+  FilmInput() = default;
+  // A film of one thickness (the range's minimum is set apart, so that the three fields every
+  // film has read as they always did).
+  FilmInput(double weight_, double ior_, double thickness_nm_)
+      : weight(weight_), ior(ior_), thickness_nm(thickness_nm_) {}
+
   double weight = 1.0;        // coverage in [0, 1]; a block that names a film means one
   double ior = 1.4;           // OpenPBR's thin_film_ior default, in [kMinFilmIor, kMaxFilmIor]
   double thickness_nm = 0.0;  // required, in [0, kMaxFilmThicknessNm]; 0 is the bare metal

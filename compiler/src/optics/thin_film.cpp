@@ -72,9 +72,18 @@ struct FilmAtCosine {
   // Unpolarised reflectance of the film over a metal of amplitudes r12 at the phase of a
   // wavelength: |r01 + r12 e^{i delta}|^2 / |1 + r01 r12 e^{i delta}|^2 per polarisation.
   double reflectance(const Amplitudes& r12, Complex phase) const {
+    return reflectance(r12, phase.real(), phase.imag());
+  }
+  // The same in real arithmetic, the phase as (cos delta, sin delta): no std::complex product
+  // (its infinity guards) in the way of a loop over many phases being vectorised.
+  double reflectance(const Amplitudes& r12, double phase_re, double phase_im) const {
     const auto airy = [&](double first, Complex second) {
-      const Complex deeper = second * phase;
-      return std::norm(first + deeper) / std::norm(1.0 + first * deeper);
+      const double deeper_re = second.real() * phase_re - second.imag() * phase_im;
+      const double deeper_im = second.real() * phase_im + second.imag() * phase_re;
+      const double top_re = first + deeper_re;
+      const double bottom_re = 1.0 + first * deeper_re, bottom_im = first * deeper_im;
+      return (top_re * top_re + deeper_im * deeper_im) /
+             (bottom_re * bottom_re + bottom_im * bottom_im);
     };
     return 0.5 * (airy(r01_s, r12.s) + airy(r01_p, r12.p));
   }
@@ -103,6 +112,45 @@ struct FilmAtCosine {
 double covered(const ThinFilm& film, double filmed, double mu, ComplexIor metal) {
   if (film.weight == 1.0) return filmed;
   return film.weight * filmed + (1.0 - film.weight) * fresnel_exact(mu, metal);
+}
+
+// e^{i delta} at thicknesses start + k step for one wavelength: delta is linear in the thickness,
+// so each is the one before turned by e^{i rate step} (a complex product, not a sine and cosine).
+struct SweepPhases {
+  std::vector<double> re, im;
+  explicit SweepPhases(std::size_t count) : re(count), im(count) {}
+  void turn(double rate, double start_nm, double step_nm) {
+    double phase_re = std::cos(rate * start_nm), phase_im = std::sin(rate * start_nm);
+    const double turn_re = std::cos(rate * step_nm), turn_im = std::sin(rate * step_nm);
+    for (std::size_t k = 0; k < re.size(); ++k) {
+      re[k] = phase_re;
+      im[k] = phase_im;
+      const double next_re = phase_re * turn_re - phase_im * turn_im;
+      phase_im = phase_re * turn_im + phase_im * turn_re;
+      phase_re = next_re;
+    }
+  }
+};
+
+// A film of 1 nm: FilmAtCosine's phase rate is then per nanometre of thickness.
+ThinFilm per_nanometre(const ThinFilm& film) {
+  return {film.ior, 1.0, film.weight};
+}
+
+// What a sweep cannot turn phases for: grazing, where everything reflects, and a film whose wave
+// does not propagate (a film under a coat past its critical angle: not reached from air), where
+// each thickness is the curve's own sum. True when `out` is filled so.
+template <typename Curve>
+bool sweep_without_phases(const Curve& curve, const ThinFilm& film, double mu, double start_nm,
+                          double step_nm, std::span<Rgb> out) {
+  if (!(mu > 0.0)) {
+    std::fill(out.begin(), out.end(), Rgb{1.0, 1.0, 1.0});
+    return true;
+  }
+  if (FilmAtCosine::is_propagating(mu, film)) return false;
+  for (std::size_t k = 0; k < out.size(); ++k)
+    out[k] = curve.with_thickness(start_nm + step_nm * static_cast<double>(k)).at(mu);
+  return true;
 }
 
 }  // namespace
@@ -166,6 +214,35 @@ Rgb ThinFilmCurve::at(double mu) const {
   return result;
 }
 
+ThinFilmCurve ThinFilmCurve::with_thickness(double thickness_nm) const {
+  ThinFilmCurve curve = *this;
+  curve.film_.thickness_nm = thickness_nm;
+  return curve;
+}
+
+void ThinFilmCurve::sweep_thickness(double mu, double start_nm, double step_nm,
+                                    std::span<Rgb> out) const {
+  if (sweep_without_phases(*this, film_, mu, start_nm, step_nm, out)) return;
+  std::fill(out.begin(), out.end(), Rgb{});
+  const FilmAtCosine at_cosine(mu, per_nanometre(film_));
+  SweepPhases phases(out.size());
+  std::vector<double> filmed(out.size());
+  for (std::size_t i = 0; i < weights_.size(); ++i) {
+    const Complex eta = ior_[i].eta();
+    const Amplitudes r12 = at_cosine.metal_amplitudes(eta * eta);
+    const double bare = film_.weight == 1.0 ? 0.0 : fresnel_exact(mu, ior_[i]);
+    phases.turn(at_cosine.phase_per_inverse_nm / wavelength_at(i), start_nm, step_nm);
+    for (std::size_t k = 0; k < out.size(); ++k)
+      filmed[k] = at_cosine.reflectance(r12, phases.re[k], phases.im[k]);
+    for (std::size_t k = 0; k < out.size(); ++k) {
+      const double f =
+          film_.weight == 1.0 ? filmed[k] : film_.weight * filmed[k] + (1.0 - film_.weight) * bare;
+      for (std::size_t c = 0; c < 3; ++c)
+        out[k][c] += weights_[i][c] * f;
+    }
+  }
+}
+
 ThinFilmChannelCurve::ThinFilmChannelCurve(const std::array<ComplexIor, 3>& ior,
                                            const ThinFilm& film, ColorSpace space)
     : weights_(spectral_weights(space)), ior_(ior), film_(film) {}
@@ -199,6 +276,36 @@ Rgb ThinFilmChannelCurve::at(double mu) const {
   for (std::size_t c = 0; c < 3; ++c)
     result[c] = covered(film_, filmed[c], mu, ior_[c]);
   return result;
+}
+
+ThinFilmChannelCurve ThinFilmChannelCurve::with_thickness(double thickness_nm) const {
+  ThinFilmChannelCurve curve = *this;
+  curve.film_.thickness_nm = thickness_nm;
+  return curve;
+}
+
+void ThinFilmChannelCurve::sweep_thickness(double mu, double start_nm, double step_nm,
+                                           std::span<Rgb> out) const {
+  if (sweep_without_phases(*this, film_, mu, start_nm, step_nm, out)) return;
+  const FilmAtCosine at_cosine(mu, per_nanometre(film_));
+  std::array<Amplitudes, 3> r12{};
+  for (std::size_t c = 0; c < 3; ++c) {
+    const Complex eta = ior_[c].eta();
+    r12[c] = at_cosine.metal_amplitudes(eta * eta);
+  }
+  std::vector<Rgb> filmed(out.size(), Rgb{});
+  SweepPhases phases(out.size());
+  for (std::size_t i = 0; i < weights_.size(); ++i) {
+    phases.turn(at_cosine.phase_per_inverse_nm / wavelength_at(i), start_nm, step_nm);
+    for (std::size_t c = 0; c < 3; ++c) {
+      for (std::size_t k = 0; k < out.size(); ++k)
+        filmed[k][c] += weights_[i][c] * at_cosine.reflectance(r12[c], phases.re[k], phases.im[k]);
+    }
+  }
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    for (std::size_t c = 0; c < 3; ++c)
+      out[k][c] = covered(film_, filmed[k][c], mu, ior_[c]);
+  }
 }
 
 }  // namespace matc

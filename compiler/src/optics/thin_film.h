@@ -11,6 +11,7 @@
 #include "optics/spectrum.h"
 
 #include <array>
+#include <span>
 #include <vector>
 
 namespace matc {
@@ -41,12 +42,29 @@ double thin_film_reflectance(double mu, double wavelength_nm, const ThinFilm& fi
 // metal's (fresnel_exact).
 double covered_reflectance(double mu, double wavelength_nm, const ThinFilm& film, ComplexIor metal);
 
+// The same film at many thicknesses at once: what a thickness per pixel's stack tabulates
+// (compile/film_tables.h). Each wavelength's amplitudes are found once a cosine, and its phase,
+// linear in the thickness, turns by one rotation a step: a stack's rows cost a few complex
+// products a wavelength instead of a film's whole sum each.
+class ThinFilmSweep {
+ public:
+  virtual ~ThinFilmSweep() = default;
+  // F at cosine mu of the film at thicknesses start_nm + k step_nm, for k < out.size(); the
+  // film's own thickness is not used. Within 1e-12 of at() of each film (the rotations' rounding).
+  virtual void sweep_thickness(double mu, double start_nm, double step_nm,
+                               std::span<Rgb> out) const = 0;
+};
+
 // The film over a spectral metal, per wavelength, reduced to RGB as SpectralCurve reduces the bare
 // metal (CIE 1931 2-degree observer under D65 into the working space).
-class ThinFilmCurve final : public ReflectanceCurve {
+class ThinFilmCurve final : public ReflectanceCurve, public ThinFilmSweep {
  public:
   ThinFilmCurve(const Spectrum& metal, const ThinFilm& film, ColorSpace space = kDefaultColorSpace);
   Rgb at(double mu) const override;
+  // The same metal under the same film of another thickness.
+  ThinFilmCurve with_thickness(double thickness_nm) const;
+  void sweep_thickness(double mu, double start_nm, double step_nm,
+                       std::span<Rgb> out) const override;
 
  private:
   const std::vector<Rgb>& weights_;
@@ -60,11 +78,14 @@ class ThinFilmCurve final : public ReflectanceCurve {
 // that channel. Summing over the band, rather than taking one wavelength a channel, averages the
 // film's fringes as the spectral reduction does (docs/accuracy.md, "A film over an RGB metal").
 // A film of 0 nm gives fresnel_exact per channel (the weights of a channel sum to 1).
-class ThinFilmChannelCurve final : public ReflectanceCurve {
+class ThinFilmChannelCurve final : public ReflectanceCurve, public ThinFilmSweep {
  public:
   ThinFilmChannelCurve(const std::array<ComplexIor, 3>& ior, const ThinFilm& film,
                        ColorSpace space);
   Rgb at(double mu) const override;
+  ThinFilmChannelCurve with_thickness(double thickness_nm) const;
+  void sweep_thickness(double mu, double start_nm, double step_nm,
+                       std::span<Rgb> out) const override;
 
  private:
   const std::vector<Rgb>& weights_;

@@ -87,8 +87,17 @@ class MaterialCheck final : public DeviceCheck {
     if (compiled_.coat && stored_film_)
       return compare_film_coated(results, *stored_film_, shader_basis, table);
     if (compiled_.coat) return compare_coated(results, shader_basis, table, embedded, analytic);
-    if (stored_stack_) return compare_filmed(results, *stored_stack_);
-    if (stored_film_) return compare_filmed(results, *stored_film_);
+    if (stored_stack_) {
+      runtime::FilmTable at_thickness;
+      return compare_filmed(results, [&](std::size_t i) -> const runtime::FilmTable& {
+        at_thickness = runtime::film_stack_table_at(*stored_stack_, thickness_of(i));
+        return at_thickness;
+      });
+    }
+    if (stored_film_) {
+      return compare_filmed(
+          results, [&](std::size_t) -> const runtime::FilmTable& { return *stored_film_; });
+    }
     const runtime::Coefficients& c = compiled_.coefficients;
     CheckedQuantity fresnel{"F", tolerance_.fresnel};
     CheckedQuantity preintegrated{"Fbar", tolerance_.preintegrated};
@@ -143,39 +152,20 @@ class MaterialCheck final : public DeviceCheck {
     return static_cast<float>(t - std::floor(t));
   }
 
-  // A thickness per pixel's F and Fbar, from its stack as the file stores it, through the sampler
-  // at each query's thickness coordinate, and kLayeredValidationQuad's light.
-  std::vector<CheckedQuantity> compare_filmed(std::span<const float> results,
-                                              const runtime::FilmStack& stack) const {
-    CheckedQuantity fresnel{"F", tolerance_.preintegrated};
-    CheckedQuantity preintegrated{"Fbar", tolerance_.preintegrated};
-    CheckedQuantity quad_light{"L", tolerance_.preintegrated};
-    for (std::size_t i = 0; i < queries_.size(); ++i) {
-      const ValidationQuery& q = queries_[i];
-      const double t = thickness_of(i);
-      const float* result = &results[i * kFilmValidationResultsPerQuery * 4];
-      record_largest(fresnel, runtime::film_stack_fresnel(stack, q.mu, t), result, i);
-      record_largest(preintegrated,
-                     runtime::film_stack_preintegrated(stack, q.ndotv, q.roughness, t), result + 4,
-                     i);
-      record_largest(quad_light,
-                     runtime::film_polygon_light_ltc(stack, runtime::shipped_ltc_table(), q.ndotv,
-                                                     q.roughness, t, kLayeredValidationQuad),
-                     result + 8, i);
-    }
-    return {fresnel, preintegrated, quad_light};
-  }
-
   // A filmed material's F and Fbar, from its table as the file stores it, through the sampler,
-  // and kLayeredValidationQuad's light (runtime/ltc.h's film_polygon_light_ltc).
+  // and kLayeredValidationQuad's light (runtime/ltc.h's film_polygon_light_ltc). `table_at(i)`:
+  // the table query i reads (a thickness per pixel's: its stack at the query's thickness, as
+  // film_stack_table_at mixes it).
+  template <typename TableAt>
   std::vector<CheckedQuantity> compare_filmed(std::span<const float> results,
-                                              const runtime::FilmTable& film) const {
+                                              const TableAt& table_at) const {
     // All through the sampler, whose weights may carry as few as 8 bits.
     CheckedQuantity fresnel{"F", tolerance_.preintegrated};
     CheckedQuantity preintegrated{"Fbar", tolerance_.preintegrated};
     CheckedQuantity quad_light{"L", tolerance_.preintegrated};
     for (std::size_t i = 0; i < queries_.size(); ++i) {
       const ValidationQuery& q = queries_[i];
+      const runtime::FilmTable& film = table_at(i);
       const float* result = &results[i * kFilmValidationResultsPerQuery * 4];
       record_largest(fresnel, runtime::film_fresnel(film, q.mu), result, i);
       record_largest(preintegrated, runtime::film_preintegrated(film, q.ndotv, q.roughness),

@@ -31,20 +31,17 @@ double worst_channel(const Rgb& a, const Rgb& b) {
 FilmStack numbered_stack(std::size_t slices) {
   FilmStack stack{100.0, 400.0, std::vector<FilmTable>(slices)};
   for (std::size_t s = 0; s < slices; ++s) {
+    const double slice = static_cast<double>(s);
+    FilmTable& table = stack.slices[s];
+    table.preintegrated.resize(FilmTable::kViewNodes * FilmTable::kRoughnessNodes);
     for (std::size_t x = 0; x < FilmTable::kWidth; ++x) {
-      stack.slices[s].fresnel[x] = {s + 0.01 * x, s + 0.0, 0.5};
+      const double column = 0.01 * static_cast<double>(x);
+      table.fresnel[x] = {slice + column, slice, 0.5};
+      // preintegrated is NdotV fastest.
       for (std::size_t j = 0; j < FilmTable::kRoughnessNodes; ++j)
-        stack.slices[s].preintegrated.push_back({s + 0.01 * x, s + 0.01 * (j + 1), 0.5});
+        table.preintegrated[j * FilmTable::kViewNodes + x] = {
+            slice + column, slice + 0.01 * static_cast<double>(j + 1), 0.5};
     }
-  }
-  // preintegrated is NdotV fastest: reorder the rows pushed x-major above.
-  for (FilmTable& slice : stack.slices) {
-    std::vector<Rgb> rows(slice.preintegrated.size());
-    for (std::size_t x = 0; x < FilmTable::kWidth; ++x)
-      for (std::size_t j = 0; j < FilmTable::kRoughnessNodes; ++j)
-        rows[j * FilmTable::kViewNodes + x] =
-            slice.preintegrated[x * FilmTable::kRoughnessNodes + j];
-    slice.preintegrated = rows;
   }
   return stack;
 }
@@ -77,13 +74,15 @@ TEST(FilmStack, TextureStacksTheFRowsThenEachRoughnessNodesRows) {
 TEST(FilmStack, ReadsLinearlyOverTheThickness) {
   const FilmStack stack = numbered_stack(3);
   const double mu = runtime::film_table_cosine(10);
-  EXPECT_DOUBLE_EQ(runtime::film_stack_fresnel(stack, mu, 0.0)[1], 0.0);
-  EXPECT_DOUBLE_EQ(runtime::film_stack_fresnel(stack, mu, 1.0)[1], 2.0);
+  // The ends are held kFilmStackInset of a slice inside, as the shaders hold them.
+  constexpr double kInset = runtime::kFilmStackInset;
+  EXPECT_DOUBLE_EQ(runtime::film_stack_fresnel(stack, mu, 0.0)[1], kInset);
+  EXPECT_DOUBLE_EQ(runtime::film_stack_fresnel(stack, mu, 1.0)[1], 2.0 - kInset);
   EXPECT_DOUBLE_EQ(runtime::film_stack_fresnel(stack, mu, 0.25)[1], 0.5);
   EXPECT_DOUBLE_EQ(runtime::film_stack_fresnel(stack, mu, 0.75)[0], 1.6);
-  EXPECT_DOUBLE_EQ(runtime::film_stack_fresnel(stack, mu, -3.0)[1], 0.0);
-  EXPECT_DOUBLE_EQ(runtime::film_stack_fresnel(stack, mu, 7.0)[1], 2.0);
-  EXPECT_DOUBLE_EQ(runtime::film_stack_fresnel(stack, mu, std::nan(""))[1], 0.0);
+  EXPECT_DOUBLE_EQ(runtime::film_stack_fresnel(stack, mu, -3.0)[1], kInset);
+  EXPECT_DOUBLE_EQ(runtime::film_stack_fresnel(stack, mu, 7.0)[1], 2.0 - kInset);
+  EXPECT_DOUBLE_EQ(runtime::film_stack_fresnel(stack, mu, std::nan(""))[1], kInset);
   // Image light: trilinear, the roughness node 4 of slices 0 and 1 halfway.
   const double ndotv = runtime::film_table_view_cosine(20);
   const Rgb image =
@@ -91,6 +90,12 @@ TEST(FilmStack, ReadsLinearlyOverTheThickness) {
   EXPECT_NEAR(image[0], 0.5 + 0.2, 1e-12);
   EXPECT_NEAR(image[1], 0.5 + 0.05, 1e-12);
   EXPECT_DOUBLE_EQ(runtime::film_stack_thickness(stack, 1), 250.0);
+  // One film's table at a thickness reads as the stack does there.
+  const FilmTable between = runtime::film_stack_table_at(stack, 0.3);
+  EXPECT_NEAR(runtime::film_fresnel(between, mu)[1], runtime::film_stack_fresnel(stack, mu, 0.3)[1],
+              1e-15);
+  EXPECT_NEAR(runtime::film_preintegrated(between, ndotv, 0.4)[1],
+              runtime::film_stack_preintegrated(stack, ndotv, 0.4, 0.3)[1], 1e-15);
 }
 
 Material titanium_with(FilmInput film) {
@@ -99,8 +104,9 @@ Material titanium_with(FilmInput film) {
   return material;
 }
 
-// The stack's last slice is the film at the range's maximum, bit for bit what a film of that one
-// thickness compiles to: whatever reads the material without a texture sees glTF's maximum.
+// The stack's last slice is the film at the range's maximum, what a film of that one thickness
+// compiles to (within the sweep's rounding): whatever reads the material without a texture sees
+// glTF's maximum.
 TEST(FilmStackCompile, LastSliceIsTheFilmAtTheMaximum) {
   const auto& basis = runtime::shipped_basis();
   FilmInput range{1.0, 2.3, 400.0};
@@ -109,13 +115,22 @@ TEST(FilmStackCompile, LastSliceIsTheFilmAtTheMaximum) {
   const CompiledMaterial fixed = compile_material(titanium_with({1.0, 2.3, 400.0}), basis);
   ASSERT_TRUE(stacked.film_stack && stacked.film_table && fixed.film_table);
   EXPECT_FALSE(fixed.film_stack);
-  EXPECT_EQ(stacked.film_stack->slices.back().fresnel, fixed.film_table->fresnel);
-  EXPECT_EQ(stacked.film_stack->slices.back().preintegrated, fixed.film_table->preintegrated);
-  EXPECT_EQ(stacked.film_table->fresnel, fixed.film_table->fresnel);
+  // The stack's rows come from the film's sweep, within 1e-12 of each film's own sum.
+  for (std::size_t i = 0; i < FilmTable::kCosineNodes; ++i) {
+    EXPECT_LT(worst_channel(stacked.film_table->fresnel[i], fixed.film_table->fresnel[i]), 1e-12);
+    EXPECT_EQ(stacked.film_stack->slices.back().fresnel[i], stacked.film_table->fresnel[i]);
+  }
+  for (std::size_t n = 0; n < fixed.film_table->preintegrated.size(); ++n) {
+    EXPECT_LT(
+        worst_channel(stacked.film_table->preintegrated[n], fixed.film_table->preintegrated[n]),
+        1e-12);
+  }
   EXPECT_EQ(stacked.coefficients, fixed.coefficients);
-  EXPECT_EQ(stacked.film_stack->slices.front().fresnel,
-            bake_film_table(ThinFilmCurve(preset_spectrum(*find_metal_preset("Ti")), {2.3, 100.0}))
-                .fresnel);
+  const runtime::FilmTable first =
+      bake_film_table(ThinFilmCurve(preset_spectrum(*find_metal_preset("Ti")), {2.3, 100.0}));
+  for (std::size_t i = 0; i < FilmTable::kCosineNodes; ++i)
+    EXPECT_LT(worst_channel(stacked.film_stack->slices.front().fresnel[i], first.fresnel[i]),
+              1e-12);
   EXPECT_LE(stacked.film_stack_error, kFilmStackTarget);
   Diagnostics diagnostics;
   warn_if_poor_fit(stacked, diagnostics);
@@ -138,6 +153,35 @@ TEST(FilmStackCompile, ARangeTooWideForItsSlicesIsWarnedOf) {
   EXPECT_NE(diagnostics.items()[0].message.find("thickness range 0-1000 nm"), std::string::npos);
 }
 
+// A film curve's sweep over thicknesses (what the compile's stacks are made of) is each film's own
+// sum: spectral and per-channel metals, partial coverage, grazing, an evanescent film.
+TEST(FilmStackCompile, ASweepIsEachFilmsSum) {
+  const Spectrum& titanium = preset_spectrum(*find_metal_preset("Ti"));
+  const std::array<ComplexIor, 3> gold = {ComplexIor{0.18, 3.4}, ComplexIor{0.42, 2.35},
+                                          ComplexIor{1.37, 1.77}};
+  // The third is a film under a coat of higher index (film_under_coat): past its critical angle
+  // (cosines below 0.6) its wave does not propagate, and each thickness is its own sum.
+  for (const ThinFilm film :
+       {ThinFilm{2.3, 0.0, 1.0}, ThinFilm{1.3, 0.0, 0.6}, ThinFilm{0.8, 0.0, 1.0}}) {
+    const ThinFilmCurve spectral(titanium, film);
+    const ThinFilmChannelCurve channels(gold, film, kDefaultColorSpace);
+    for (const double mu : {0.0, 0.013, 0.4, 1.0}) {
+      std::vector<Rgb> swept(160), channel_swept(160);
+      spectral.sweep_thickness(mu, 7.5, 6.25, swept);
+      channels.sweep_thickness(mu, 7.5, 6.25, channel_swept);
+      for (std::size_t k = 0; k < swept.size(); ++k) {
+        ThinFilm at = film;
+        at.thickness_nm = 7.5 + 6.25 * static_cast<double>(k);
+        EXPECT_LT(worst_channel(swept[k], ThinFilmCurve(titanium, at).at(mu)), 1e-12) << k;
+        EXPECT_LT(worst_channel(channel_swept[k],
+                                ThinFilmChannelCurve(gold, at, kDefaultColorSpace).at(mu)),
+                  1e-12)
+            << k;
+      }
+    }
+  }
+}
+
 struct StackCase {
   const char* metal;
   double ior;
@@ -152,11 +196,12 @@ class FilmStackTest : public ::testing::TestWithParam<StackCase> {};
 TEST_P(FilmStackTest, HoldsTheFilmsBetweenItsSlices) {
   const StackCase& given = GetParam();
   const Spectrum& metal = preset_spectrum(*find_metal_preset(given.metal));
-  const BakedFilmStack baked = bake_film_stack(
-      [&](double nm) {
-        return std::make_unique<ThinFilmCurve>(metal, ThinFilm{given.ior, nm});
-      },
-      given.minimum_nm, given.maximum_nm);
+  // A curve per thickness here; the compile's sweep is held to it below.
+  const BakedFilmStack baked =
+      bake_film_stack(film_rows_by_curve([&](double nm) {
+                        return std::make_unique<ThinFilmCurve>(metal, ThinFilm{given.ior, nm});
+                      }),
+                      given.minimum_nm, given.maximum_nm);
   EXPECT_LE(baked.thickness_error, kFilmStackTarget);
   const double span = given.maximum_nm - given.minimum_nm;
   double direct = 0.0, image = 0.0;

@@ -40,6 +40,10 @@ struct EvaluationOptions {
   // [0, 1], with glTF's default dielectric (F0 0.04, F90 1): F_metal_rough, Fbar_metal_rough and
   // the dielectric's F_dielectric, Fbar_dielectric. Bare metals only.
   std::optional<double> metalness;
+  // A thickness per pixel (docs/thin-film.md): the film at this thickness in nanometres, within
+  // the range of a material whose film has one, read from its stack as the shaders read it at
+  // that thickness coordinate; absent: the range's maximum, as without a thickness texture.
+  std::optional<double> film_thickness;
 };
 
 // The evaluation of `material` as JSON text. Throws std::invalid_argument naming an option out of

@@ -77,6 +77,11 @@ struct FilmStack {
   std::vector<FilmTable> slices;  // slice s at minimum + (maximum - minimum) s / (N - 1)
 };
 
+// How far inside the end slices a read stays, in slices (a texel of the texture's thickness axis):
+// 1/1024, past a float texcoord's rounding in a texture 4,096 rows tall, and below 0.003 nm of
+// film between slices 2.5 nm apart.
+inline constexpr double kFilmStackInset = 1.0 / 1024.0;
+
 // The texture's height, 18 N, and its texels, RGBA (A = 1), row after row from row 0.
 std::size_t film_stack_height(const FilmStack& stack);
 std::vector<float> film_stack_texels(const FilmStack& stack);
@@ -88,5 +93,9 @@ double film_stack_thickness(const FilmStack& stack, std::size_t s);
 Rgb film_stack_fresnel(const FilmStack& stack, double mu, double thickness);
 Rgb film_stack_preintegrated(const FilmStack& stack, double ndotv, double roughness,
                              double thickness);
+// The film table at thickness coordinate `thickness` as the stack reads it: its two slices there
+// mixed node by node (the reads are linear in the nodes), so that whatever reads one film's table
+// (area lights, glTF's metal-rough mix) reads the stack at that thickness.
+FilmTable film_stack_table_at(const FilmStack& stack, double thickness);
 
 }  // namespace matc::runtime

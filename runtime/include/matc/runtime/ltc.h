@@ -113,8 +113,5 @@ Rgb polygon_light_ltc(const Coefficients& coefficients, const LutView& lut, cons
 // an engine multiplies matc_ltc_quad_integral by the film's preintegrated texel.
 Rgb film_polygon_light_ltc(const FilmTable& table, const LtcTableView& ltc, double ndotv,
                            double roughness, std::span<const Vec3> vertices);
-// ... and for a thickness per pixel, at thickness coordinate `thickness`.
-Rgb film_polygon_light_ltc(const FilmStack& stack, const LtcTableView& ltc, double ndotv,
-                           double roughness, double thickness, std::span<const Vec3> vertices);
 
 }  // namespace matc::runtime
