@@ -70,8 +70,9 @@ class FilmSplitSums {
 
 // The weights of `samples` points: those of the default count are found once per process.
 std::shared_ptr<const FilmSplitSums> film_split_sums(std::size_t samples) {
+  if (samples != 512) return std::make_shared<const FilmSplitSums>(samples);
   static const auto shared = std::make_shared<const FilmSplitSums>(std::size_t{512});
-  return samples == 512 ? shared : std::make_shared<const FilmSplitSums>(samples);
+  return shared;
 }
 
 runtime::FilmTable fresnel_row(const ReflectanceCurve& curve) {
