@@ -16,6 +16,12 @@ struct PreintegratedRows {
   }
 };
 
+// a + weight (b - a), channel by channel: how a sampler blends two texels.
+Rgb mix(const Rgb& a, const Rgb& b, double weight) {
+  return {a[0] + weight * (b[0] - a[0]), a[1] + weight * (b[1] - a[1]),
+          a[2] + weight * (b[2] - a[2])};
+}
+
 double squared_node(std::size_t i, std::size_t nodes) {
   const double u = static_cast<double>(i) / static_cast<double>(nodes - 1);
   return u * u;
@@ -69,10 +75,7 @@ FilmNodePosition film_cosine_position(double mu) {
 
 Rgb film_fresnel(const FilmTable& table, double mu) {
   const auto [left, weight] = film_cosine_position(mu);
-  const Rgb& a = table.fresnel[left];
-  const Rgb& b = table.fresnel[left + 1];
-  return {a[0] + weight * (b[0] - a[0]), a[1] + weight * (b[1] - a[1]),
-          a[2] + weight * (b[2] - a[2])};
+  return mix(table.fresnel[left], table.fresnel[left + 1], weight);
 }
 
 Rgb film_preintegrated(const FilmTable& table, double ndotv, double roughness) {
@@ -82,11 +85,6 @@ Rgb film_preintegrated(const FilmTable& table, double ndotv, double roughness) {
 }
 
 namespace {
-
-Rgb mix(const Rgb& a, const Rgb& b, double weight) {
-  return {a[0] + weight * (b[0] - a[0]), a[1] + weight * (b[1] - a[1]),
-          a[2] + weight * (b[2] - a[2])};
-}
 
 // The slice below thickness coordinate t and the weight of the one above, for N >= 2 slices. The
 // position is held kFilmStackInset of a slice inside the end slices, as the shaders hold it: in a

@@ -225,10 +225,10 @@ void bake_coated_film(const Material& material, const ReflectanceCurve& in_air,
 }
 
 // A thickness per pixel: the stack over the film's range, each slice the material with that
-// thickness (gamut-mapped as the material is); its last slice, the film at the maximum (`curve`),
-// is the film_table the rest of matc reads, measured as a fixed film's is.
+// thickness (gamut-mapped as the material is); its last slice, the film at the maximum, is the
+// film_table the rest of matc reads.
 void bake_film_stack_of(const Material& material, const ColorOptions& color,
-                        const ReflectanceCurve& curve, CompiledMaterial& compiled) {
+                        CompiledMaterial& compiled) {
   const auto film_at = [&material, &color](double nm) {
     Material slice = material;
     slice.film->thickness_nm = nm;
@@ -245,9 +245,6 @@ void bake_film_stack_of(const Material& material, const ColorOptions& color,
   compiled.film_stack = std::move(baked.stack);
   compiled.film_stack_error = baked.thickness_error;
   compiled.film_table = compiled.film_stack->slices.back();
-  const runtime::FilmTable& table = *compiled.film_table;
-  compiled.film_table_error = measure_on_accuracy_grid(
-      curve, [&table](double mu) { return runtime::film_fresnel(table, mu); });
 }
 
 }  // namespace
@@ -299,10 +296,12 @@ CompiledMaterial compile_material(const Material& material, const runtime::Basis
     const AccuracyGridCurve under_grid(*under);
     compiled.coat = compile_coat(material, compiled.coefficients, curve, under_grid, basis);
     if (has_visible_film(material)) bake_coated_film(material, curve, under_grid, compiled);
-  } else if (has_visible_film(material) && material.film->thickness_minimum_nm) {
-    bake_film_stack_of(material, color, curve, compiled);
   } else if (has_visible_film(material)) {
-    compiled.film_table = bake_film_table(curve);
+    if (material.film->thickness_minimum_nm)
+      bake_film_stack_of(material, color, compiled);
+    else
+      compiled.film_table = bake_film_table(curve);
+    // The table the shaders read without a thickness texture, against the exact curve.
     const runtime::FilmTable& table = *compiled.film_table;
     compiled.film_table_error = measure_on_accuracy_grid(
         curve, [&table](double mu) { return runtime::film_fresnel(table, mu); });

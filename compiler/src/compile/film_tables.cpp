@@ -48,8 +48,7 @@ class FilmSplitSums {
   }
 
   // Fbar at every node (NdotV fastest) of the F row `fresnel`.
-  std::vector<Rgb> preintegrate(
-      const std::array<Rgb, runtime::FilmTable::kCosineNodes>& fresnel) const {
+  std::vector<Rgb> preintegrate(const FilmFresnelRow& fresnel) const {
     using runtime::FilmTable;
     std::vector<Rgb> out(weights_.size() / FilmTable::kCosineNodes);
     for (std::size_t node = 0; node < out.size(); ++node) {
@@ -70,8 +69,8 @@ class FilmSplitSums {
 
 // The weights of `samples` points: those of the default count are found once per process.
 std::shared_ptr<const FilmSplitSums> film_split_sums(std::size_t samples) {
-  if (samples != 512) return std::make_shared<const FilmSplitSums>(samples);
-  static const auto shared = std::make_shared<const FilmSplitSums>(std::size_t{512});
+  if (samples != kFilmTableSamples) return std::make_shared<const FilmSplitSums>(samples);
+  static const auto shared = std::make_shared<const FilmSplitSums>(kFilmTableSamples);
   return shared;
 }
 
@@ -82,10 +81,9 @@ runtime::FilmTable fresnel_row(const ReflectanceCurve& curve) {
   return table;
 }
 
-using FresnelRow = FilmFresnelRow;
-
 // The largest |mean of the rows either side - the midpoint's row| over the cosine nodes from 0.05.
-double midpoint_error(const std::vector<FresnelRow>& nodes, const std::vector<FresnelRow>& mids) {
+double midpoint_error(const std::vector<FilmFresnelRow>& nodes,
+                      const std::vector<FilmFresnelRow>& mids) {
   double worst = 0.0;
   for (std::size_t s = 0; s < mids.size(); ++s) {
     for (std::size_t i = 0; i < runtime::FilmTable::kCosineNodes; ++i) {
@@ -103,7 +101,7 @@ double midpoint_error(const std::vector<FresnelRow>& nodes, const std::vector<Fr
 
 FilmRows film_rows_by_sweep(const ThinFilmSweep& sweep) {
   return [&sweep](double start_nm, double step_nm, std::size_t count) {
-    std::vector<FresnelRow> rows(count);
+    std::vector<FilmFresnelRow> rows(count);
     fill_rows_in_parallel(runtime::FilmTable::kCosineNodes, 0, [&] {
       return [&, column = std::vector<Rgb>(count)](std::size_t i) mutable {
         sweep.sweep_thickness(runtime::film_table_cosine(i), start_nm, step_nm, column);
@@ -117,7 +115,7 @@ FilmRows film_rows_by_sweep(const ThinFilmSweep& sweep) {
 
 FilmRows film_rows_by_curve(std::function<std::unique_ptr<ReflectanceCurve>(double)> film_at) {
   return [film_at = std::move(film_at)](double start_nm, double step_nm, std::size_t count) {
-    std::vector<FresnelRow> rows(count);
+    std::vector<FilmFresnelRow> rows(count);
     fill_rows_in_parallel(count, 0, [&] {
       return [&](std::size_t k) {
         rows[k] = fresnel_row(*film_at(start_nm + step_nm * static_cast<double>(k))).fresnel;
@@ -134,13 +132,13 @@ BakedFilmStack bake_film_stack(const FilmRows& rows_at, double minimum_nm, doubl
       static_cast<std::size_t>(std::ceil(span / kFilmStackFirstSpacingNm)) + 1, 2,
       kMaxFilmStackSlices);
   const auto spacing = [&] { return span / static_cast<double>(slices - 1); };
-  std::vector<FresnelRow> nodes = rows_at(minimum_nm, spacing(), slices);
+  std::vector<FilmFresnelRow> nodes = rows_at(minimum_nm, spacing(), slices);
   BakedFilmStack baked;
   for (;;) {
-    std::vector<FresnelRow> mids = rows_at(minimum_nm + 0.5 * spacing(), spacing(), slices - 1);
+    std::vector<FilmFresnelRow> mids = rows_at(minimum_nm + 0.5 * spacing(), spacing(), slices - 1);
     baked.thickness_error = midpoint_error(nodes, mids);
     if (baked.thickness_error <= kFilmStackTarget || 2 * slices - 1 > kMaxFilmStackSlices) break;
-    std::vector<FresnelRow> finer;
+    std::vector<FilmFresnelRow> finer;
     finer.reserve(2 * slices - 1);
     for (std::size_t s = 0; s < slices; ++s) {
       finer.push_back(nodes[s]);

@@ -17,12 +17,16 @@
 
 namespace matc {
 
+// GGX samples a node of a film table's Fbar rows (see bake_film_table).
+inline constexpr std::size_t kFilmTableSamples = 512;
+
 // The tables of `curve` (a filmed metal's exact curve): F at the cosine nodes, and each Fbar node
 // a split sum of the F table (read as the shaders read it) over `samples` GGX visible normals, as
 // matc's own table is baked. 512 hold FilmTables.* as 1,024 do (the nodes' spacing, not the
 // samples, sets the error: 0.0034 against 0.0035 on gold under 800 nm) at half the bake. In double
 // precision: the file rounds it (lut/film_table_files.h).
-runtime::FilmTable bake_film_table(const ReflectanceCurve& curve, std::size_t samples = 512);
+runtime::FilmTable bake_film_table(const ReflectanceCurve& curve,
+                                   std::size_t samples = kFilmTableSamples);
 
 // A film under a coat (docs/thin-film.md): the table of the base lobe. F is the exact layered base
 // (LayeredCurve's base part) at the cosine nodes; each Fbar node layers the split sums of the film
@@ -32,7 +36,7 @@ runtime::FilmTable bake_film_table(const ReflectanceCurve& curve, std::size_t sa
 // `in_air` is unused under a full coat, which leaves nothing of the metal in air.
 runtime::FilmTable bake_coated_film_table(const ReflectanceCurve& in_air,
                                           const ReflectanceCurve& under_coat, const CoatInput& coat,
-                                          std::size_t samples = 512);
+                                          std::size_t samples = kFilmTableSamples);
 
 // A thickness per pixel (docs/thin-film.md "A thickness per pixel"): the tables of films
 // uniform over [minimum_nm, maximum_nm], read linearly over the thickness between them. The
@@ -66,6 +70,6 @@ FilmRows film_rows_by_sweep(const ThinFilmSweep& sweep);
 FilmRows film_rows_by_curve(std::function<std::unique_ptr<ReflectanceCurve>(double)> film_at);
 
 BakedFilmStack bake_film_stack(const FilmRows& rows, double minimum_nm, double maximum_nm,
-                               std::size_t samples = 512);
+                               std::size_t samples = kFilmTableSamples);
 
 }  // namespace matc
